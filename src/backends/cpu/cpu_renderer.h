@@ -1,0 +1,32 @@
+// The CPU backend: renders a SceneView with oneTBB over 16x16 tiles, all cores by default.
+// Each pixel's samples are summed in a fixed order, so the image is bit-identical for any
+// thread count.
+#pragma once
+
+#include <atomic>
+#include <functional>
+
+#include "image/image.h"
+#include "render/ray_counters.h"
+#include "scene/scene_view.h"
+
+namespace candela {
+
+struct RenderResult {
+  ImageRGB image;  // mean radiance per pixel
+  RayCounters rays;
+  double seconds = 0;
+  bool cancelled = false;
+};
+
+struct CpuRenderOptions {
+  int threads = 0;  // 0: all cores
+  // Called from worker threads (serialised) with the fraction of pixels done, in [0, 1].
+  std::function<void(double)> progress;
+  // When set and true, workers stop at the next tile; the result is then marked cancelled.
+  const std::atomic<bool>* cancel = nullptr;
+};
+
+RenderResult renderCpu(const SceneView& scene, const CpuRenderOptions& options);
+
+}  // namespace candela

@@ -1,0 +1,44 @@
+// Floating-point error bounds (pbrt-v4, section 6.8): a hit point is known to lie in a small box
+// around its computed value, so secondary rays start just outside that box along the normal.
+// This replaces a scene-scale epsilon: the offset scales with the coordinates themselves.
+#pragma once
+
+#include <cmath>
+
+#include "core/vec3.h"
+
+namespace candela {
+
+constexpr float kMachineEpsilon = 0x1p-24f;  // half an ulp of 1.0f
+
+// Bound on the relative error of n chained float operations.
+CANDELA_HDI constexpr float gammaBound(int n) { return (n * kMachineEpsilon) / (1 - n * kMachineEpsilon); }
+
+CANDELA_HDI float nextFloatUp(float v) {
+  if (isinf(v) && v > 0.0f) return v;
+  if (v == -0.0f) v = 0.0f;
+  return nextafterf(v, INFINITY);
+}
+
+CANDELA_HDI float nextFloatDown(float v) {
+  if (isinf(v) && v < 0.0f) return v;
+  if (v == 0.0f) v = -0.0f;
+  return nextafterf(v, -INFINITY);
+}
+
+// Origin for a ray leaving point p (absolute error bound `error` per axis) in direction w,
+// on the side of geometric normal n that w points to.
+CANDELA_HDI Vec3 offsetRayOrigin(const Vec3& p, const Vec3& error, const Vec3& n, const Vec3& w) {
+  const float d = dot(abs(n), error);
+  Vec3 offset = n * d;
+  if (dot(w, n) < 0.0f) offset = -offset;
+  Vec3 po = p + offset;
+  // Round away from p so the offset is never lost to rounding.
+  for (int i = 0; i < 3; ++i) {
+    if (offset[i] > 0.0f) po[i] = nextFloatUp(po[i]);
+    else if (offset[i] < 0.0f) po[i] = nextFloatDown(po[i]);
+  }
+  return po;
+}
+
+}  // namespace candela

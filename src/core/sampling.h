@@ -1,0 +1,56 @@
+// Warping of uniform numbers in [0,1)^2 to directions and points, with their densities.
+// Directions are in a local frame whose +z is the normal (see core/frame.h).
+#pragma once
+
+#include <cmath>
+
+#include "core/constants.h"
+#include "core/vec3.h"
+
+namespace candela {
+
+// Concentric (Shirley–Chiu) map of the unit square onto the unit disk: low distortion.
+CANDELA_HDI void sampleUniformDisk(float u1, float u2, float* x, float* y) {
+  const float a = 2.0f * u1 - 1.0f, b = 2.0f * u2 - 1.0f;
+  if (a == 0.0f && b == 0.0f) {
+    *x = *y = 0.0f;
+    return;
+  }
+  float r, phi;
+  if (fabsf(a) > fabsf(b)) {
+    r = a;
+    phi = (kPi / 4.0f) * (b / a);
+  } else {
+    r = b;
+    phi = (kPi / 2.0f) - (kPi / 4.0f) * (a / b);
+  }
+  *x = r * cosf(phi);
+  *y = r * sinf(phi);
+}
+
+// Cosine-weighted hemisphere around +z; pdf = cos(theta) / pi.
+CANDELA_HDI Vec3 sampleCosineHemisphere(float u1, float u2) {
+  float x, y;
+  sampleUniformDisk(u1, u2, &x, &y);
+  const float z = sqrtf(fmaxf(0.0f, 1.0f - x * x - y * y));
+  return {x, y, z};
+}
+CANDELA_HDI float cosineHemispherePdf(float cosTheta) { return cosTheta > 0.0f ? cosTheta * kInvPi : 0.0f; }
+
+// Uniform direction within the cone around +z of half-angle acos(cosThetaMax);
+// pdf = 1 / (2 pi (1 - cosThetaMax)).
+CANDELA_HDI Vec3 sampleUniformCone(float u1, float u2, float cosThetaMax) {
+  const float cosTheta = (1.0f - u1) + u1 * cosThetaMax;
+  const float sinTheta = sqrtf(fmaxf(0.0f, 1.0f - cosTheta * cosTheta));
+  const float phi = 2.0f * kPi * u2;
+  return {cosf(phi) * sinTheta, sinf(phi) * sinTheta, cosTheta};
+}
+CANDELA_HDI float uniformConePdf(float cosThetaMax) { return 1.0f / (2.0f * kPi * (1.0f - cosThetaMax)); }
+
+// Power heuristic (beta = 2) weight of a strategy with density `pdfA` against one with `pdfB`.
+CANDELA_HDI float powerHeuristic(float pdfA, float pdfB) {
+  const float a = pdfA * pdfA, b = pdfB * pdfB;
+  return a / (a + b);
+}
+
+}  // namespace candela

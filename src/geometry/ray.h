@@ -1,0 +1,25 @@
+// Ray: origin + t * direction for t in (0, tMax). Directions need not be unit length.
+#pragma once
+
+#include "core/constants.h"
+#include "core/vec3.h"
+
+namespace candela {
+
+struct Ray {
+  Vec3 origin;
+  Vec3 direction;
+  float tMax = kInfinity;
+};
+
+// What traversal reports: the nearest primitive and where on it. Surface data (normals, error
+// bounds, material) is reconstructed from this afterwards, once, for the winning hit only.
+struct Hit {
+  float t = kInfinity;
+  uint32_t prim = 0xffffffffu;  // index into SceneView::primitives order (see scene_view.h)
+  float b1 = 0, b2 = 0;         // barycentrics of vertices 1 and 2 (triangles only)
+
+  CANDELA_HDI bool valid() const { return prim != 0xffffffffu; }
+};
+
+}  // namespace candela

@@ -1,0 +1,31 @@
+// Image files by extension: .png (8-bit, gamma/sRGB and exposure applied), .exr (32-bit float
+// linear RGB), .pfm (float linear RGB). Files are written to a temporary name beside the target
+// and renamed into place, so an interrupted run never leaves a half-written image.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+#include "image/image.h"
+#include "scene/scene_desc.h"
+
+namespace candela {
+
+class ImageWriteError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// True when `path` ends in an extension writeImage understands (case-insensitive).
+bool isSupportedImagePath(const std::string& path);
+
+// Throws ImageWriteError (naming the path and the reason) on failure; leaves no partial file.
+void writeImage(const std::string& path, const ImageRGB& image, const OutputDesc& output);
+
+// Reads back .pfm and .exr files (for tests and tools); throws ImageWriteError on failure.
+ImageRGB readImage(const std::string& path);
+
+// 8-bit encoding of one linear value: exposure, clamp to [0,1], then the gamma or sRGB curve.
+uint8_t encode8bit(float linear, const OutputDesc& output);
+
+}  // namespace candela

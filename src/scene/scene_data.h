@@ -1,0 +1,41 @@
+// SceneData: owns the flattened arrays and the BVH of a scene; view() is what renderers see.
+#pragma once
+
+#include <vector>
+
+#include "scene/scene_desc.h"
+#include "scene/scene_view.h"
+
+namespace candela {
+
+struct BvhStats {
+  uint32_t nodeCount = 0;
+  uint32_t leafCount = 0;
+  uint32_t maxDepth = 0;
+  double buildSeconds = 0;
+};
+
+struct SceneData {
+  std::vector<Material> materials;
+  std::vector<Sphere> spheres;
+  std::vector<Vec3> positions;
+  std::vector<Vec3> normals;
+  std::vector<Triangle> triangles;
+  std::vector<Light> lights;
+  std::vector<BvhNode> nodes;
+  std::vector<uint32_t> primIndices;
+  Vec3 environment{0.0f};
+  Camera camera;
+  RenderSettings settings;
+  BvhStats bvh;
+
+  SceneView view() const;
+  // World-space bounds of all geometry (empty scene: min > max).
+  void bounds(Vec3* lo, Vec3* hi) const;
+};
+
+// Transforms meshes to world space, resolves the camera, adds sphere lights as emissive
+// spheres and builds the BVH. The description must already be validated.
+SceneData flattenScene(const SceneDesc& desc);
+
+}  // namespace candela

@@ -1,0 +1,98 @@
+// Plain description structs: what a scene file says, validated, before flattening.
+//
+// Parsing fills these; every value here is already checked (types, ranges, names resolved to
+// materials). Raw camera fields are kept as written so that animation can change them per frame;
+// scene/camera_resolve.h turns them into the renderer's Camera.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/mat3.h"
+#include "core/vec3.h"
+#include "scene/scene_view.h"
+
+namespace candela {
+
+struct MaterialDesc {
+  MaterialType type = MaterialType::Diffuse;
+  Vec3 color{0.8f};
+  float ior = 1.5f;
+  Vec3 radiance{0.0f};
+};
+
+struct SphereDesc {
+  std::string id;     // may be empty
+  std::string where;  // JSON path, e.g. "spheres[2]", for later messages
+  Vec3 position;
+  float radius = 1;
+  MaterialDesc material;
+};
+
+// A triangle mesh in object space as read from an OBJ file (polygons already triangulated).
+struct MeshDesc {
+  std::vector<Vec3> positions;
+  std::vector<Vec3> normals;          // from the file's `vn`; may be empty
+  std::vector<Triangle> triangles;    // Triangle::material indexes `materials` below
+  std::vector<MaterialDesc> materials;  // from the MTL (Kd as diffuse), else one diffuse 0.8
+};
+
+struct ObjectDesc {
+  std::string id;
+  std::string where;
+  std::string file;  // as resolved against the scene file's folder
+  Vec3 position;
+  Vec3 rotation;     // degrees, R = Rz * Ry * Rx
+  Vec3 scale{1.0f};
+  bool smooth = true;
+  std::optional<MaterialDesc> material;  // overrides the mesh's own materials when present
+  MeshDesc mesh;
+};
+
+struct LightDesc {
+  std::string id;
+  std::string where;
+  LightType type = LightType::Point;
+  Vec3 position;
+  float radius = 0;  // sphere lights
+  float intensity = 0;  // total emitted power
+  Vec3 color{1.0f};
+};
+
+struct CameraDesc {
+  uint32_t width = 512, height = 512;
+  float fov = 60;                  // horizontal, degrees; used when `intrinsics` is absent
+  std::optional<Mat3> intrinsics;  // K in pixel coordinates (pixel centres at +0.5)
+  Vec3 position;
+  Vec3 rotation;                   // degrees, camera-to-world, R = Rz * Ry * Rx
+  std::optional<Vec3> lookAt;
+  Vec3 up{0, 1, 0};
+  std::optional<Mat3> extrinsicsR;  // world-to-camera, OpenCV axes
+  std::optional<Vec3> extrinsicsT;
+  uint32_t spp = 64;
+  float apertureRadius = 0;
+  std::optional<float> focusDistance;
+};
+
+enum class GammaCurve { Power, Srgb };
+
+struct OutputDesc {
+  GammaCurve curve = GammaCurve::Power;
+  float gamma = 2.2f;
+  float exposure = 0;  // stops
+};
+
+struct SceneDesc {
+  std::string file;  // the scene file as named by the user, prefix of every message
+  CameraDesc camera;
+  RenderSettings render;  // spp is taken from camera.spp when flattening
+  OutputDesc output;
+  std::vector<SphereDesc> spheres;
+  std::vector<ObjectDesc> objects;
+  std::vector<LightDesc> lights;
+  Vec3 environment{0.0f};
+};
+
+}  // namespace candela

@@ -1,0 +1,18 @@
+// SceneError: the one error type for a scene that cannot be rendered.
+//
+// Its message is complete and user-facing, e.g.
+//   "scene.json: spheres[2].radius: expected a positive number, got -1"
+// The CLI prints it and exits 2; Python raises it as a ValueError subclass.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+namespace candela {
+
+class SceneError : public std::runtime_error {
+ public:
+  explicit SceneError(const std::string& message) : std::runtime_error(message) {}
+};
+
+}  // namespace candela

@@ -1,0 +1,110 @@
+// SceneView: the flat, trivially copyable scene that the integrator sees.
+//
+// Arrays of plain structs + counts + indices; every name was resolved at load time. On the CPU
+// the pointers point into host memory (SceneData owns it), on CUDA into device buffers.
+//
+// Conventions:
+// - World space is right-handed, +y up. Mesh vertices are already transformed to world space.
+// - Primitive index p in [0, sphereCount) is spheres[p]; p >= sphereCount is triangle
+//   p - sphereCount. The BVH leaves index `primIndices`, which hold such primitive indices.
+// - Sphere lights also appear as spheres whose material is emissive with `lightIndex` set, so
+//   BSDF-sampled rays find them and weight them by multiple importance sampling.
+// - Camera space follows OpenCV: +x right, +y down, +z forward.
+#pragma once
+
+#include <cstdint>
+#include <type_traits>
+
+#include "core/mat3.h"
+#include "core/vec3.h"
+
+namespace candela {
+
+enum class MaterialType : uint32_t { Diffuse = 0, Mirror = 1, Glass = 2, Emissive = 3 };
+
+struct Material {
+  MaterialType type = MaterialType::Diffuse;
+  Vec3 color{0.8f};     // diffuse albedo, mirror tint or glass transmission tint
+  float ior = 1.5f;     // glass: relative index, outside -> inside
+  Vec3 radiance{0.0f};  // emissive: emitted radiance from the front side
+  int32_t lightIndex = -1;  // emissive spheres that are sphere lights: index into lights
+};
+
+struct Sphere {
+  Vec3 center;
+  float radius = 1;
+  uint32_t material = 0;
+};
+
+// Vertex indices into positions; normal indices into normals, or -1 for the face normal.
+// The face's outside is the side of (v1-v0)x(v2-v0) (counter-clockwise seen from outside).
+struct Triangle {
+  uint32_t v[3];
+  int32_t n[3];
+  uint32_t material;
+};
+
+enum class LightType : uint32_t { Point = 0, Sphere = 1 };
+
+struct Light {
+  LightType type = LightType::Point;
+  Vec3 position;
+  float radius = 0;   // sphere lights
+  Vec3 power;         // point: total power (color * intensity)
+  Vec3 radiance;      // sphere: uniform outgoing radiance color*intensity/(4 pi^2 r^2)
+  uint32_t sphere = 0;  // sphere lights: their index in SceneView::spheres
+};
+
+// Flattened BVH node, 32 bytes, depth-first order: an interior node's first child follows it,
+// `secondChild` names the other. Leaves hold primCount > 0 primitives from primIndices[offset].
+struct BvhNode {
+  Vec3 boundsMin;
+  uint32_t offset;  // leaf: first index into primIndices; interior: index of the second child
+  Vec3 boundsMax;
+  uint16_t primCount;  // 0 for interior nodes
+  uint8_t axis;        // interior: split axis, for near-child-first traversal
+  uint8_t pad;
+};
+static_assert(sizeof(BvhNode) == 32, "BvhNode must stay 32 bytes");
+
+struct Camera {
+  uint32_t width = 512, height = 512;
+  Mat3 inverseK;         // pixel (u, v, 1) -> camera-space direction with z = 1
+  Mat3 cameraToWorld;    // OpenCV camera axes -> world
+  Vec3 position;         // camera centre in world space
+  float apertureRadius = 0;
+  float focusDistance = 1;  // along camera +z
+};
+
+enum class IntegratorType : uint32_t { Path = 0, Direct = 1 };
+
+struct RenderSettings {
+  uint32_t spp = 64;
+  uint32_t maxDepth = 8;
+  IntegratorType integrator = IntegratorType::Path;
+  bool antialiasing = true;
+  uint64_t seed = 0;
+};
+
+struct SceneView {
+  const Material* materials = nullptr;
+  const Sphere* spheres = nullptr;
+  const Vec3* positions = nullptr;
+  const Vec3* normals = nullptr;
+  const Triangle* triangles = nullptr;
+  const Light* lights = nullptr;
+  const BvhNode* nodes = nullptr;
+  const uint32_t* primIndices = nullptr;
+
+  uint32_t materialCount = 0, sphereCount = 0, positionCount = 0, normalCount = 0;
+  uint32_t triangleCount = 0, lightCount = 0, nodeCount = 0;
+
+  Vec3 environment{0.0f};
+  Camera camera;
+  RenderSettings settings;
+
+  CANDELA_HDI uint32_t primitiveCount() const { return sphereCount + triangleCount; }
+};
+static_assert(std::is_trivially_copyable<SceneView>::value, "SceneView must be trivially copyable");
+
+}  // namespace candela
