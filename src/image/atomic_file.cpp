@@ -1,0 +1,87 @@
+// Whole-file I/O for image files: temporary file + fsync + rename, and whole-file reads.
+#include "image/atomic_file.h"
+
+#include <atomic>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#if defined(_WIN32)
+#include <process.h>
+#define CANDELA_GETPID _getpid
+#else
+#include <unistd.h>
+#define CANDELA_GETPID getpid
+#endif
+
+#include "image/image_io.h"
+
+namespace fs = std::filesystem;
+
+namespace candela {
+
+namespace {
+
+// Unique per process and per call, so concurrent writers never share a temporary file.
+std::string temporaryPathFor(const fs::path& target) {
+  static std::atomic<unsigned> counter{0};
+  const std::string name = "." + target.filename().string() + ".tmp-" +
+                           std::to_string(CANDELA_GETPID()) + "-" + std::to_string(counter++);
+  return (target.parent_path() / name).string();
+}
+
+[[noreturn]] void fail(const std::string& path, const std::string& reason) {
+  throw ImageWriteError(path + ": " + reason);
+}
+
+// Writes all bytes and makes them durable before the rename publishes them.
+bool writeAndSync(std::FILE* file, const std::string& bytes) {
+  if (std::fwrite(bytes.data(), 1, bytes.size(), file) != bytes.size()) return false;
+  if (std::fflush(file) != 0) return false;
+#if !defined(_WIN32)
+  if (fsync(fileno(file)) != 0) return false;
+#endif
+  return true;
+}
+
+}  // namespace
+
+void writeFileAtomically(const std::string& path, const std::string& bytes) {
+  const fs::path target(path);
+  if (target.filename().empty()) fail(path, "not a file name");
+  const fs::path dir = target.parent_path();
+  std::error_code ec;
+  if (!dir.empty() && !fs::is_directory(dir, ec))
+    fail(path, "directory '" + dir.string() + "' does not exist");
+
+  const std::string temp = temporaryPathFor(target);
+  std::FILE* file = std::fopen(temp.c_str(), "wb");
+  if (!file) fail(path, std::string("cannot create a file in that directory: ") +
+                            std::strerror(errno));
+  const bool written = writeAndSync(file, bytes);
+  const int writeErrno = errno;
+  if (std::fclose(file) != 0 || !written) {
+    const int err = written ? errno : writeErrno;
+    std::remove(temp.c_str());
+    fail(path, std::string("write failed: ") + std::strerror(err));
+  }
+  if (std::rename(temp.c_str(), path.c_str()) != 0) {
+    const int err = errno;
+    std::remove(temp.c_str());
+    fail(path, std::string("cannot replace the file: ") + std::strerror(err));
+  }
+}
+
+std::string readFileBytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) fail(path, std::string("cannot open: ") + std::strerror(errno));
+  std::ostringstream bytes;
+  bytes << in.rdbuf();
+  if (in.bad()) fail(path, "read failed");
+  return bytes.str();
+}
+
+}  // namespace candela

@@ -1,0 +1,19 @@
+// Whole-file I/O for image files: atomic replacement on write, whole reads.
+//
+// writeFileAtomically writes to a temporary file beside the target (".<name>.tmp-<pid>-<n>",
+// the same directory so that the rename cannot cross file systems) and renames it into place:
+// readers see either the old file or the complete new one, and an interrupted or failed write
+// leaves no partial file behind.
+#pragma once
+
+#include <string>
+
+namespace candela {
+
+// Throws ImageWriteError with the path and the reason (e.g. a missing directory, permission).
+void writeFileAtomically(const std::string& path, const std::string& bytes);
+
+// Throws ImageWriteError with the path and the reason.
+std::string readFileBytes(const std::string& path);
+
+}  // namespace candela

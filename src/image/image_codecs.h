@@ -1,0 +1,28 @@
+// Image codecs: in-memory conversions between ImageRGB and the bytes of one file format.
+//
+// Internal to src/image: image_io.cpp picks a codec by extension and does the file I/O, so the
+// codecs never touch the file system. They throw ImageWriteError with a reason but no path
+// (the caller prefixes the path it was working on).
+#pragma once
+
+#include <string>
+
+#include "image/image.h"
+#include "scene/scene_desc.h"
+
+namespace candela {
+
+// 8-bit RGB PNG, tone curve and exposure from `output` (see encode8bit).
+std::string encodePng(const ImageRGB& image, const OutputDesc& output);
+
+// OpenEXR, three 32-bit FLOAT channels R, G, B, lossless ZIP compression, linear values.
+std::string encodeExr(const ImageRGB& image);
+// Any scanline or tiled EXR; R, G, B are converted to float, a missing channel reads as 0.
+ImageRGB decodeExr(const std::string& bytes);
+
+// Portable float map "PF": little-endian floats, rows stored bottom-to-top.
+std::string encodePfm(const ImageRGB& image);
+// Accepts "PF" (RGB) and "Pf" (grey, replicated to RGB) in either byte order.
+ImageRGB decodePfm(const std::string& bytes);
+
+}  // namespace candela
