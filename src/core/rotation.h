@@ -1,0 +1,71 @@
+// Euler rotations as the scene contract defines them: rotate about world x by rx, then world y
+// by ry, then world z by rz, i.e. R = Rz * Ry * Rx, angles in degrees, counter-clockwise when
+// looking down the axis towards the origin.
+#pragma once
+
+#include <cmath>
+
+#include "core/constants.h"
+#include "core/mat3.h"
+
+namespace candela {
+
+inline Mat3 rotationX(float degrees) {
+  const float a = degrees * (kPi / 180.0f), c = std::cos(a), s = std::sin(a);
+  Mat3 r;
+  r.m[1][1] = c;
+  r.m[1][2] = -s;
+  r.m[2][1] = s;
+  r.m[2][2] = c;
+  return r;
+}
+
+inline Mat3 rotationY(float degrees) {
+  const float a = degrees * (kPi / 180.0f), c = std::cos(a), s = std::sin(a);
+  Mat3 r;
+  r.m[0][0] = c;
+  r.m[0][2] = s;
+  r.m[2][0] = -s;
+  r.m[2][2] = c;
+  return r;
+}
+
+inline Mat3 rotationZ(float degrees) {
+  const float a = degrees * (kPi / 180.0f), c = std::cos(a), s = std::sin(a);
+  Mat3 r;
+  r.m[0][0] = c;
+  r.m[0][1] = -s;
+  r.m[1][0] = s;
+  r.m[1][1] = c;
+  return r;
+}
+
+inline Mat3 eulerRotation(const Vec3& degrees) {
+  return rotationZ(degrees.z) * rotationY(degrees.y) * rotationX(degrees.x);
+}
+
+// Inverse of a general 3x3 matrix (host only: used for K and normal transforms).
+// Returns false when the matrix is singular.
+inline bool invert(const Mat3& a, Mat3* out) {
+  const auto& m = a.m;
+  const double c00 = double(m[1][1]) * m[2][2] - double(m[1][2]) * m[2][1];
+  const double c01 = double(m[1][2]) * m[2][0] - double(m[1][0]) * m[2][2];
+  const double c02 = double(m[1][0]) * m[2][1] - double(m[1][1]) * m[2][0];
+  const double det = m[0][0] * c00 + m[0][1] * c01 + m[0][2] * c02;
+  if (det == 0.0 || !std::isfinite(det)) return false;
+  const double inv = 1.0 / det;
+  Mat3 r;
+  r.m[0][0] = float(c00 * inv);
+  r.m[1][0] = float(c01 * inv);
+  r.m[2][0] = float(c02 * inv);
+  r.m[0][1] = float((double(m[0][2]) * m[2][1] - double(m[0][1]) * m[2][2]) * inv);
+  r.m[1][1] = float((double(m[0][0]) * m[2][2] - double(m[0][2]) * m[2][0]) * inv);
+  r.m[2][1] = float((double(m[0][1]) * m[2][0] - double(m[0][0]) * m[2][1]) * inv);
+  r.m[0][2] = float((double(m[0][1]) * m[1][2] - double(m[0][2]) * m[1][1]) * inv);
+  r.m[1][2] = float((double(m[0][2]) * m[1][0] - double(m[0][0]) * m[1][2]) * inv);
+  r.m[2][2] = float((double(m[0][0]) * m[1][1] - double(m[0][1]) * m[1][0]) * inv);
+  *out = r;
+  return true;
+}
+
+}  // namespace candela
