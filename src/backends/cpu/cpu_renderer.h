@@ -6,18 +6,10 @@
 #include <atomic>
 #include <functional>
 
-#include "image/image.h"
-#include "render/ray_counters.h"
+#include "render/render_result.h"
 #include "scene/scene_view.h"
 
 namespace candela {
-
-struct RenderResult {
-  ImageRGB image;  // mean radiance per pixel
-  RayCounters rays;
-  double seconds = 0;
-  bool cancelled = false;
-};
 
 struct CpuRenderOptions {
   int threads = 0;  // 0: all cores

@@ -1,0 +1,71 @@
+#include "backends/cpu/cpu_renderer.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
+
+#include <chrono>
+#include <memory>
+#include <mutex>
+
+#include "render/render_pixel.h"
+
+namespace candela {
+
+namespace {
+
+constexpr uint32_t kTileSize = 16;
+
+}  // namespace
+
+RenderResult renderCpu(const SceneView& scene, const CpuRenderOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  const uint32_t width = scene.camera.width, height = scene.camera.height;
+  const uint32_t spp = scene.settings.spp;
+  const uint32_t tilesX = (width + kTileSize - 1) / kTileSize;
+  const uint32_t tilesY = (height + kTileSize - 1) / kTileSize;
+
+  RenderResult result;
+  result.image = ImageRGB(width, height);
+
+  std::unique_ptr<tbb::global_control> threadLimit;
+  if (options.threads > 0)
+    threadLimit = std::make_unique<tbb::global_control>(
+        tbb::global_control::max_allowed_parallelism, size_t(options.threads));
+
+  tbb::enumerable_thread_specific<RayCounters> counters;
+  std::mutex progressMutex;
+  uint64_t pixelsDone = 0;
+  const double pixelsTotal = double(width) * height;
+  std::atomic<bool> cancelled{false};
+
+  // One tile per task: tiles are independent, so the result never depends on the schedule.
+  tbb::parallel_for(tbb::blocked_range<uint32_t>(0, tilesX * tilesY, 1),
+                    [&](const tbb::blocked_range<uint32_t>& range) {
+    RayCounters& local = counters.local();
+    for (uint32_t tile = range.begin(); tile != range.end(); ++tile) {
+      if (options.cancel && options.cancel->load(std::memory_order_relaxed)) {
+        cancelled = true;
+        return;
+      }
+      const uint32_t x0 = (tile % tilesX) * kTileSize, y0 = (tile / tilesX) * kTileSize;
+      const uint32_t x1 = std::min(x0 + kTileSize, width), y1 = std::min(y0 + kTileSize, height);
+      for (uint32_t y = y0; y < y1; ++y)
+        for (uint32_t x = x0; x < x1; ++x)
+          result.image.set(x, y, renderPixelSamples(scene, x, y, 0, spp, local) / float(spp));
+      if (options.progress) {
+        std::lock_guard<std::mutex> lock(progressMutex);
+        pixelsDone += uint64_t(x1 - x0) * (y1 - y0);
+        options.progress(double(pixelsDone) / pixelsTotal);
+      }
+    }
+  });
+
+  for (const RayCounters& c : counters) result.rays += c;
+  result.cancelled = cancelled.load();
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+}  // namespace candela

@@ -1,0 +1,29 @@
+// Camera rays: pixel position -> K^-1 -> camera space (OpenCV axes) -> world; optional thin lens.
+#pragma once
+
+#include "core/sampling.h"
+#include "geometry/ray.h"
+#include "scene/scene_view.h"
+
+namespace candela {
+
+// (px, py) in pixel coordinates (pixel (i, j) covers [i, i+1) x [j, j+1)); (lensU, lensV)
+// uniform in [0,1)^2, used only when the aperture is open. Returns a unit-direction ray.
+CANDELA_HDI Ray generateCameraRay(const Camera& cam, float px, float py, float lensU, float lensV) {
+  Vec3 dir = cam.inverseK * Vec3(px, py, 1.0f);
+  dir = dir / dir.z;  // a point on the plane z = 1 in front of the camera
+  Vec3 origin(0.0f);
+  if (cam.apertureRadius > 0.0f) {
+    // Thin lens: every ray through the lens point converges on the plane z = focusDistance.
+    float lx, ly;
+    sampleUniformDisk(lensU, lensV, &lx, &ly);
+    origin = Vec3(lx * cam.apertureRadius, ly * cam.apertureRadius, 0.0f);
+    dir = dir * cam.focusDistance - origin;
+  }
+  Ray ray;
+  ray.origin = cam.position + cam.cameraToWorld * origin;
+  ray.direction = normalize(cam.cameraToWorld * dir);
+  return ray;
+}
+
+}  // namespace candela

@@ -1,0 +1,115 @@
+// The path integrator: one iterative loop per camera sample, shared by every backend.
+//
+// Depth follows the contract: interaction k is the k-th surface hit (the first hit is 1).
+// Light reaching interaction k <= max_depth counts, by a shadow ray (next-event estimation) or
+// by the ray scattered from k hitting an emitter or the environment; nothing beyond max_depth
+// scatters. Sphere lights are reached both ways and combined with the power heuristic; point
+// lights only by shadow rays; emissive geometry only by scattered rays.
+#pragma once
+
+#include <cmath>
+
+#include "core/float_error.h"
+#include "core/rng.h"
+#include "geometry/bvh_traverse.h"
+#include "geometry/surface.h"
+#include "render/bsdf.h"
+#include "render/light_sample.h"
+#include "render/ray_counters.h"
+
+namespace candela {
+
+// Shadow rays stop this fraction short of their target (pbrt's ShadowEpsilon): relative, so it
+// holds at any scene scale.
+constexpr float kShadowEpsilon = 1e-4f;
+// Russian roulette starts after this many interactions.
+constexpr uint32_t kRouletteDepth = 3;
+constexpr uint32_t kNoPrimitive = 0xffffffffu;
+
+CANDELA_HDI Ray spawnRay(const SurfacePoint& sp, const Vec3& wi) {
+  Ray r;
+  r.origin = offsetRayOrigin(sp.p, sp.error, sp.ng, wi);
+  r.direction = wi;
+  return r;
+}
+
+// Direct light at a diffuse point from every light, each by one shadow ray.
+CANDELA_HDI Vec3 estimateDirect(const SceneView& scene, const Material& m, const SurfacePoint& sp,
+                                const Vec3& wo, SampleStream& rng, RayCounters& counters) {
+  Vec3 sum(0.0f);
+  for (uint32_t i = 0; i < scene.lightCount; ++i) {
+    const Light& light = scene.lights[i];
+    // Both numbers are drawn for every light so the stream's layout never depends on geometry.
+    const float u1 = rng.next(), u2 = rng.next();
+    LightSample ls;
+    if (!sampleLight(light, sp.p, u1, u2, &ls)) continue;
+    const Vec3 f = evalDiffuse(m, wo, sp.ng, sp.ns, ls.wi);
+    if (isBlack(f)) continue;
+    Ray shadow = spawnRay(sp, ls.wi);
+    const Vec3 target = sp.p + ls.wi * ls.distance;
+    shadow.tMax = length(target - shadow.origin) * (1.0f - kShadowEpsilon);
+    ++counters.shadow;
+    const uint32_t skip = light.type == LightType::Sphere ? light.sphere : kNoPrimitive;
+    if (intersectAny(scene, shadow, skip)) continue;
+    const float weight = ls.isDelta ? 1.0f : powerHeuristic(ls.pdf, diffusePdf(wo, sp.ng, sp.ns, ls.wi));
+    sum += f * ls.radiance * (weight / ls.pdf);
+  }
+  return sum;
+}
+
+// Radiance arriving at the camera along `ray` (one sample).
+CANDELA_HDI Vec3 traceRadiance(const SceneView& scene, Ray ray, SampleStream& rng,
+                               RayCounters& counters) {
+  Vec3 radiance(0.0f), throughput(1.0f);
+  uint32_t maxDepth = scene.settings.maxDepth;
+  bool specularBounce = true;  // the camera counts as specular: emitters seen directly count fully
+  float bsdfPdf = 0.0f;        // pdf of the last diffuse bounce, for MIS on sphere lights
+  Vec3 bouncePoint(0.0f);
+
+  for (uint32_t depth = 1;; ++depth) {
+    Hit hit;
+    if (!intersectClosest(scene, ray, &hit)) {
+      radiance += throughput * scene.environment;
+      break;
+    }
+    const SurfacePoint sp = surfaceAt(scene, ray, hit);
+    const Material& m = scene.materials[sp.material];
+    const Vec3 wo = -ray.direction;
+
+    if (m.type == MaterialType::Emissive) {
+      if (dot(wo, sp.ng) > 0.0f) {  // emitters emit from their outside only
+        float weight = 1.0f;
+        if (!specularBounce && m.lightIndex >= 0)
+          weight = powerHeuristic(bsdfPdf, sphereLightPdf(scene.lights[m.lightIndex], bouncePoint));
+        radiance += throughput * m.radiance * weight;
+      }
+      break;
+    }
+    if (depth > maxDepth) break;
+
+    if (m.type == MaterialType::Diffuse) {
+      radiance += throughput * estimateDirect(scene, m, sp, wo, rng, counters);
+      // "direct": the scattered ray below only gathers emission; nothing scatters after it.
+      if (scene.settings.integrator == IntegratorType::Direct) maxDepth = depth;
+    }
+
+    const float u1 = rng.next(), u2 = rng.next();
+    BsdfSample bs;
+    if (!sampleBsdf(m, wo, sp.ng, sp.ns, u1, u2, &bs)) break;
+    throughput *= bs.weight;
+    specularBounce = bs.specular;
+    bsdfPdf = bs.pdf;
+    bouncePoint = sp.p;
+
+    if (depth >= kRouletteDepth) {
+      const float survive = fminf(0.95f, maxComponent(throughput));
+      if (rng.next() >= survive) break;
+      throughput /= survive;
+    }
+    ray = spawnRay(sp, bs.wi);
+    ++counters.bounce;
+  }
+  return radiance;
+}
+
+}  // namespace candela

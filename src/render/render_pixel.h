@@ -1,0 +1,40 @@
+// One pixel's samples, summed in index order: the unit of work of every backend.
+#pragma once
+
+#include <cmath>
+
+#include "render/camera_ray.h"
+#include "render/integrator.h"
+
+namespace candela {
+
+// NaN fails every comparison; infinities exceed the largest float.
+CANDELA_HDI bool isFinite(const Vec3& v) {
+  return fabsf(v.x) <= kInfinity && fabsf(v.y) <= kInfinity && fabsf(v.z) <= kInfinity;
+}
+
+// Sum of the radiance of samples [sampleBegin, sampleBegin + sampleCount) of pixel (x, y).
+// Each sample's random numbers depend only on (seed, pixel, sample index, dimension).
+CANDELA_HDI Vec3 renderPixelSamples(const SceneView& scene, uint32_t x, uint32_t y,
+                                    uint32_t sampleBegin, uint32_t sampleCount,
+                                    RayCounters& counters) {
+  const uint64_t pixelIndex = uint64_t(y) * scene.camera.width + x;
+  Vec3 sum(0.0f);
+  for (uint32_t s = sampleBegin; s < sampleBegin + sampleCount; ++s) {
+    SampleStream rng(scene.settings.seed, pixelIndex, s);
+    float jx = 0.5f, jy = 0.5f;
+    if (scene.settings.antialiasing) {
+      jx = rng.next();
+      jy = rng.next();
+    }
+    const float lensU = rng.next(), lensV = rng.next();
+    const Ray ray = generateCameraRay(scene.camera, float(x) + jx, float(y) + jy, lensU, lensV);
+    ++counters.camera;
+    const Vec3 L = traceRadiance(scene, ray, rng, counters);
+    // A non-finite sample (a degenerate mesh, say) would poison the pixel; it counts as black.
+    if (isFinite(L)) sum += L;
+  }
+  return sum;
+}
+
+}  // namespace candela
