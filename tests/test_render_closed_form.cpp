@@ -1,0 +1,186 @@
+// Image tests against answers known in closed form. Tolerances come from the noise of the
+// render itself: a region's mean must lie within a few standard errors of the exact value.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <string>
+
+#include "core/constants.h"
+#include "render_test_util.h"
+
+namespace candela {
+namespace {
+
+using test::regionStats;
+using test::renderTestScene;
+
+// z-score for a two-sided test at significance ~1e-6: a correct renderer practically never fails.
+constexpr double kZ = 5.0;
+
+std::string num(double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.9g", v);
+  return buf;
+}
+
+// (a) Inside a diffuse sphere of albedo 0.5 lit by a point light at its centre: the direct
+// radiance rho*P/(4 pi^2 R^2) is 0.5 and every bounce adds half again, so L = 1 everywhere.
+TEST(ClosedForm, FurnaceInsideDiffuseSphereIsOne) {
+  const double radius = 10, power = 4 * kPi * kPi * radius * radius;  // rho P / (4pi^2R^2) = 0.5
+  const std::string scene = R"({
+    "camera": {"width": 32, "height": 32, "fov": 90, "position": [0, 0, 3], "spp": 64},
+    "render": {"max_depth": 200},
+    "spheres": [{"position": [0, 0, 0], "radius": )" + num(radius) + R"(, "color": 0.5}],
+    "lights": [{"position": [0, 0, 0], "intensity": )" + num(power) + R"(}]})";
+  const RenderResult r = renderTestScene(scene);
+  for (int c = 0; c < 3; ++c) {
+    const auto s = regionStats(r.image, 0, 0, 32, 32, c);
+    EXPECT_NEAR(s.mean, 1.0, kZ * s.standardError() + 1e-4) << "channel " << c;
+    // Every pixel is an independent estimate of 1; roulette gives the estimates a long tail,
+    // so the per-pixel bound is wide, yet far tighter than any real bias would need.
+    for (uint32_t y = 0; y < 32; ++y)
+      for (uint32_t x = 0; x < 32; ++x)
+        ASSERT_NEAR(r.image.at(x, y)[c], 1.0, 2 * kZ * s.stddev + 1e-4) << x << "," << y;
+  }
+}
+
+// Writes a large square in the plane y = 0 (two triangles facing +y) into `dir`.
+std::string writePlaneObj(const std::string& name, double half) {
+  const std::string path = ::testing::TempDir() + name;
+  std::ofstream f(path);
+  f << "v " << -half << " 0 " << -half << "\nv " << half << " 0 " << -half << "\nv " << half
+    << " 0 " << half << "\nv " << -half << " 0 " << half << "\nf 1 3 2\nf 1 4 3\n";
+  return path;
+}
+
+// (b) A point light over a diffuse plane, no other geometry: the plane cannot see itself, so a
+// pixel shows exactly rho * color * P * cos(theta) / (4 pi^2 d^2) of the point it sees.
+TEST(ClosedForm, PointLightOverDiffusePlaneMatchesContractFormula) {
+  const std::string obj = writePlaneObj("plane_b.obj", 100);
+  const double rho = 0.6, power = 1000, lightY = 4, lightX = 1;
+  const std::string scene = R"({
+    "camera": {"width": 64, "height": 48, "fov": 70, "position": [0, 6, 0],
+               "look_at": [0, 0, 0.001], "up": [0, 0, -1], "spp": 4},
+    "render": {"antialiasing": false},
+    "objects": [{"file": ")" + obj + R"(", "color": )" + num(rho) + R"(}],
+    "lights": [{"position": [)" + num(lightX) + ", " + num(lightY) + R"(, 0],
+                "intensity": )" + num(power) + R"(, "color": [1, 0.5, 0.25]}]})";
+  const SceneData data = test::loadTestScene(scene);
+  CpuRenderOptions options;
+  const RenderResult r = renderCpu(data.view(), options);
+  const Vec3 tint(1.0f, 0.5f, 0.25f);
+  int checked = 0;
+  for (uint32_t y = 4; y < 48; y += 9)
+    for (uint32_t x = 3; x < 64; x += 11) {
+      // Where the pixel centre's ray meets y = 0, computed independently of the renderer.
+      const Camera& cam = data.camera;
+      const Vec3 d = cam.cameraToWorld * (cam.inverseK * Vec3(x + 0.5f, y + 0.5f, 1.0f));
+      const double t = -cam.position.y / d.y;
+      const double px = cam.position.x + t * d.x, pz = cam.position.z + t * d.z;
+      const double dx = lightX - px, dy = lightY, dz = -pz;
+      const double d2 = dx * dx + dy * dy + dz * dz;
+      const double cosTheta = dy / std::sqrt(d2);
+      const double expected = rho * power * cosTheta / (4 * kPi * kPi * d2);
+      for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(r.image.at(x, y)[c], expected * tint[c], 2e-4 * expected) << x << "," << y;
+      ++checked;
+    }
+  EXPECT_GT(checked, 20);
+}
+
+// (c) Under a uniform environment of radiance 1 a convex object never sees itself: a diffuse
+// sphere shows its albedo, a mirror its colour, and clear glass conserves energy (every path's
+// weight is exactly 1 once it leaves). Each sphere is alone so that none sees another.
+RenderResult renderAloneInFurnace(const std::string& sphere) {
+  return renderTestScene(R"({
+    "camera": {"width": 32, "height": 32, "fov": 30, "position": [0, 0, 6], "spp": 16},
+    "render": {"max_depth": 64},
+    "environment": {"color": 1},
+    "spheres": [)" + sphere + "]}");
+}
+
+TEST(ClosedForm, UniformEnvironmentDiffuseMirrorGlass) {
+  const RenderResult diffuse =
+      renderAloneInFurnace(R"({"position": [0, 0, 0], "radius": 1, "color": [0.2, 0.5, 0.8]})");
+  const RenderResult mirror = renderAloneInFurnace(
+      R"({"position": [0, 0, 0], "radius": 1, "material": "mirror", "color": [0.9, 0.6, 0.3]})");
+  const RenderResult glass = renderAloneInFurnace(
+      R"({"position": [0, 0, 0], "radius": 1, "material": "glass", "ior": 1.5})");
+  const Vec3 albedo(0.2f, 0.5f, 0.8f), tint(0.9f, 0.6f, 0.3f);
+  // The sphere covers a disc of radius ~11 pixels around the centre (16, 16).
+  for (int c = 0; c < 3; ++c) {
+    const auto sd = regionStats(diffuse.image, 11, 11, 21, 21, c);
+    EXPECT_NEAR(sd.mean, albedo[c], kZ * sd.standardError() + 1e-5);
+    const auto sm = regionStats(mirror.image, 11, 11, 21, 21, c);
+    EXPECT_NEAR(sm.mean, tint[c], 1e-5);
+    const auto sg = regionStats(glass.image, 0, 0, 32, 32, c);  // sphere and background alike
+    EXPECT_NEAR(sg.mean, 1.0, kZ * sg.standardError() + 1e-4);
+    const auto bg = regionStats(diffuse.image, 0, 0, 32, 2, c);  // top rows see only the sky
+    EXPECT_NEAR(bg.mean, 1.0, 1e-6);
+  }
+}
+
+// (d) A sphere light seen directly shows its radiance color * I / (4 pi^2 r^2); seen in a mirror
+// it shows the same radiance (specular paths take the emission at full weight).
+TEST(ClosedForm, SphereLightSeenDirectlyAndInMirror) {
+  const double radius = 0.5, intensity = 300;
+  const double radiance = intensity / (4 * kPi * kPi * radius * radius);
+  const std::string scene = R"({
+    "camera": {"width": 48, "height": 48, "fov": 40, "position": [0, 0, 5], "spp": 4},
+    "lights": [{"type": "sphere", "position": [0, 0, 0], "radius": )" + num(radius) +
+                            R"(, "intensity": )" + num(intensity) + R"(, "color": [1, 0.5, 0.2]}]})";
+  const RenderResult r = renderTestScene(scene);
+  const Vec3 tint(1.0f, 0.5f, 0.2f);
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(r.image.at(24, 24)[c], radiance * tint[c], 1e-4 * radiance);
+  EXPECT_EQ(r.image.at(0, 0).x, 0.0f);
+
+  // The same light behind the camera, seen in a large mirror sphere ahead.
+  const std::string mirrored = R"({
+    "camera": {"width": 48, "height": 48, "fov": 40, "position": [0, 0, 5], "spp": 4},
+    "spheres": [{"position": [0, 0, -100], "radius": 50, "material": "mirror", "color": 1}],
+    "lights": [{"type": "sphere", "position": [0, 0, 40], "radius": 20, "intensity": 1e6}]})";
+  const RenderResult m = renderTestScene(mirrored);
+  const double mirroredRadiance = 1e6 / (4 * kPi * kPi * 400.0);
+  EXPECT_NEAR(m.image.at(24, 24).x, mirroredRadiance, 1e-4 * mirroredRadiance);
+}
+
+// (e) A sphere light over a diffuse plane: the irradiance from a uniform sphere of radiance L
+// fully above the horizon is pi L (r/d)^2 cos(theta), so the plane shows rho L (r/d)^2 cos.
+// Light sampling and BSDF sampling share the estimate (MIS), so this checks their weights.
+TEST(ClosedForm, SphereLightOverDiffusePlaneMatchesIrradiance) {
+  const std::string obj = writePlaneObj("plane_e.obj", 100);
+  const double rho = 0.7, radius = 0.5, intensity = 500, lightX = 3, lightY = 2;
+  const double L = intensity / (4 * kPi * kPi * radius * radius);
+  // The light sits outside the camera's view, which looks straight down at the origin.
+  const std::string scene = R"({
+    "camera": {"width": 24, "height": 24, "fov": 20, "position": [0, 8, 0],
+               "look_at": [0, 0, 0.001], "up": [0, 0, -1], "spp": 128},
+    "render": {"max_depth": 1, "antialiasing": false},
+    "objects": [{"file": ")" + obj + R"(", "color": )" + num(rho) + R"(}],
+    "lights": [{"type": "sphere", "position": [)" + num(lightX) + ", " + num(lightY) +
+                            R"(, 0], "radius": )" + num(radius) + R"(, "intensity": )" +
+                            num(intensity) + R"(}]})";
+  const SceneData data = test::loadTestScene(scene);
+  const RenderResult r = renderCpu(data.view(), CpuRenderOptions{});
+  // Each pixel's ratio to its exact value is an independent estimate of 1.
+  ImageRGB ratios(24, 24);
+  for (uint32_t y = 0; y < 24; ++y)
+    for (uint32_t x = 0; x < 24; ++x) {
+      const Camera& cam = data.camera;
+      const Vec3 d = cam.cameraToWorld * (cam.inverseK * Vec3(x + 0.5f, y + 0.5f, 1.0f));
+      const double t = -cam.position.y / d.y;
+      const double dx = lightX - (cam.position.x + t * d.x), dz = -(cam.position.z + t * d.z);
+      const double d2 = dx * dx + lightY * lightY + dz * dz;
+      const double expected = rho * L * radius * radius / d2 * (lightY / std::sqrt(d2));
+      ratios.set(x, y, r.image.at(x, y) / float(expected));
+    }
+  for (int c = 0; c < 3; ++c) {
+    const auto s = regionStats(ratios, 0, 0, 24, 24, c);
+    EXPECT_NEAR(s.mean, 1.0, kZ * s.standardError() + 1e-3);
+    EXPECT_LT(s.stddev, 0.1);  // antialiasing jitter and sampling noise only
+  }
+}
+
+}  // namespace
+}  // namespace candela
