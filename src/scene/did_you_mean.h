@@ -1,0 +1,22 @@
+// "Did you mean ...?" suggestions for misspelt keys, types and names.
+//
+// Distances are optimal-string-alignment edit distances (insertion, deletion, substitution and
+// transposition of neighbours each cost 1) between lower-cased strings, so "raduis", "Radius" and
+// "radus" all suggest "radius".
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace candela {
+
+// Edit distance between a and b, as described above (case-sensitive).
+size_t editDistance(const std::string& a, const std::string& b);
+
+// The candidate closest to `word`, or "" when none is close enough to be a likely typo: a
+// case-insensitive match, or a distance of at most 1 (words shorter than 5 characters) or 2.
+// Ties go to the earlier candidate.
+std::string closestMatch(const std::string& word, const std::vector<std::string>& candidates);
+
+}  // namespace candela

@@ -1,0 +1,253 @@
+// OBJ validation pass; see obj_scanner.h.
+#include "scene/obj_scanner.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cfloat>
+#include <cmath>
+#include <cstdlib>
+#include <string_view>
+
+#include "scene/scene_error.h"
+
+namespace candela {
+namespace {
+
+// Statements of the OBJ specification (and tinyobjloader's extensions "vw" and "t") that carry
+// nothing a path tracer uses: free-form geometry, display and grouping attributes.
+constexpr std::string_view kIgnoredStatements[] = {
+    "vp",         "cstype",    "deg",   "bmat",  "step",     "curv",     "curv2", "surf",
+    "parm",       "trim",      "hole",  "scrv",  "sp",       "end",      "con",   "g",
+    "s",          "mg",        "o",     "bevel", "c_interp", "d_interp", "lod",   "usemtl",
+    "shadow_obj", "trace_obj", "ctech", "stech", "maplib",   "usemap",   "vw",    "t"};
+
+bool isBlank(char c) { return c == ' ' || c == '\t'; }
+
+std::vector<std::string_view> tokenize(std::string_view line) {
+  std::vector<std::string_view> tokens;
+  size_t i = 0;
+  while (i < line.size()) {
+    while (i < line.size() && isBlank(line[i])) ++i;
+    const size_t start = i;
+    while (i < line.size() && !isBlank(line[i])) ++i;
+    if (i > start) tokens.push_back(line.substr(start, i - start));
+  }
+  return tokens;
+}
+
+// Text from the file, quoted for a message: shortened, with unprintable bytes escaped.
+std::string shown(std::string_view text) {
+  std::string out = "\"";
+  for (size_t i = 0; i < text.size() && i < 40; ++i) {
+    const unsigned char c = static_cast<unsigned char>(text[i]);
+    if (c >= 0x20 && c < 0x7f && c != '"' && c != '\\') {
+      out += static_cast<char>(c);
+    } else {
+      static const char kHex[] = "0123456789abcdef";
+      out += "\\x";
+      out += kHex[c >> 4];
+      out += kHex[c & 15];
+    }
+  }
+  return out + (text.size() > 40 ? "...\"" : "\"");
+}
+
+// The number grammar tinyobjloader reads: [+-] digits [. digits] [e [+-] digits], where the
+// mantissa may start or end with the dot but must hold a digit.
+bool isObjNumber(std::string_view t) {
+  size_t i = 0, digits = 0;
+  if (i < t.size() && (t[i] == '+' || t[i] == '-')) ++i;
+  for (; i < t.size() && std::isdigit(static_cast<unsigned char>(t[i])); ++i) ++digits;
+  if (i < t.size() && t[i] == '.')
+    for (++i; i < t.size() && std::isdigit(static_cast<unsigned char>(t[i])); ++i) ++digits;
+  if (digits == 0) return false;
+  if (i < t.size() && (t[i] == 'e' || t[i] == 'E')) {
+    ++i;
+    if (i < t.size() && (t[i] == '+' || t[i] == '-')) ++i;
+    size_t exponentDigits = 0;
+    for (; i < t.size() && std::isdigit(static_cast<unsigned char>(t[i])); ++i) ++exponentDigits;
+    if (exponentDigits == 0) return false;
+  }
+  return i == t.size();
+}
+
+std::string counted(long long count, const char* singular, const char* plural) {
+  return std::to_string(count) + " " + (count == 1 ? singular : plural);
+}
+
+class Scanner {
+ public:
+  explicit Scanner(const std::string& label) : label_(label) {}
+
+  void scanLine(std::string_view line, size_t number, ObjScan& out);
+
+ private:
+  [[noreturn]] void fail(const std::string& reason) const {
+    throw SceneError(label_ + ":" + std::to_string(line_) + ": " + reason);
+  }
+  void numbers(const std::vector<std::string_view>& tokens, size_t min, size_t max,
+               const char* form, std::string_view line) const;
+  void references(const std::vector<std::string_view>& tokens, size_t min, const char* form,
+                  const char* indexName, std::string_view line) const;
+  void reference(std::string_view token, const char* indexName) const;
+  void index(std::string_view digits, std::string_view token, long long count,
+             const std::string& name, const char* singular, const char* plural) const;
+  void materialLibraries(std::string_view arguments, ObjScan& out) const;
+
+  const std::string& label_;
+  size_t line_ = 0;
+  long long vertices_ = 0, texcoords_ = 0, normals_ = 0;
+};
+
+void Scanner::scanLine(std::string_view line, size_t number, ObjScan& out) {
+  line_ = number;
+  const size_t first = line.find_first_not_of(" \t");
+  if (first == std::string_view::npos || line[first] == '#') {
+    out.text += '\n';
+    return;
+  }
+  const size_t keywordEnd = std::min(line.size(), line.find_first_of(" \t", first));
+  const std::string_view keyword = line.substr(first, keywordEnd - first);
+  const bool data = keyword == "v" || keyword == "vn" || keyword == "vt" || keyword == "f" ||
+                    keyword == "l" || keyword == "p";
+  if (!data) {
+    if (keyword == "mtllib") {
+      materialLibraries(line.substr(keywordEnd), out);
+    } else if (std::find(std::begin(kIgnoredStatements), std::end(kIgnoredStatements), keyword) ==
+               std::end(kIgnoredStatements)) {
+      fail("unknown statement " + shown(keyword));
+    }
+    out.text.append(line.data(), line.size());
+    out.text += '\n';
+    return;
+  }
+  // Data lines may end in a comment; tinyobjloader would read it as a face index.
+  const std::string_view content = line.substr(0, line.find('#'));
+  std::vector<std::string_view> tokens = tokenize(content);
+  tokens.erase(tokens.begin());
+  std::string_view whole = content.substr(first);
+  while (!whole.empty() && isBlank(whole.back())) whole.remove_suffix(1);
+  if (keyword == "v") {
+    numbers(tokens, 3, 7, "a vertex \"v x y z\"", whole);
+    ++vertices_;
+  } else if (keyword == "vn") {
+    numbers(tokens, 3, 3, "a normal \"vn x y z\"", whole);
+    ++normals_;
+  } else if (keyword == "vt") {
+    numbers(tokens, 1, 3, "a texture coordinate \"vt u [v [w]]\"", whole);
+    ++texcoords_;
+  } else if (keyword == "f") {
+    references(tokens, 3, "a face with at least 3 vertices", "face index", whole);
+  } else if (keyword == "l") {
+    references(tokens, 2, "a line with at least 2 vertices", "vertex index", whole);
+  } else {
+    references(tokens, 1, "a point with at least 1 vertex", "vertex index", whole);
+  }
+  out.text.append(keyword.data(), keyword.size());
+  for (std::string_view token : tokens) {
+    out.text += ' ';
+    out.text.append(token.data(), token.size());
+  }
+  out.text += '\n';
+}
+
+void Scanner::numbers(const std::vector<std::string_view>& tokens, size_t min, size_t max,
+                      const char* form, std::string_view line) const {
+  if (tokens.size() < min || tokens.size() > max)
+    fail(std::string("expected ") + form + ", got " + shown(line));
+  for (std::string_view token : tokens) {
+    if (!isObjNumber(token)) fail("expected a number, got " + shown(token));
+    const double value = std::strtod(std::string(token).c_str(), nullptr);
+    if (!(std::fabs(value) <= FLT_MAX)) fail("expected a finite number, got " + shown(token));
+  }
+}
+
+void Scanner::references(const std::vector<std::string_view>& tokens, size_t min, const char* form,
+                         const char* indexName, std::string_view line) const {
+  if (tokens.size() < min) fail(std::string("expected ") + form + ", got " + shown(line));
+  for (std::string_view token : tokens) reference(token, indexName);
+}
+
+// One corner: v, v/vt, v//vn or v/vt/vn.
+void Scanner::reference(std::string_view token, const char* indexName) const {
+  const auto slashes = std::count(token.begin(), token.end(), '/');
+  const size_t first = token.find('/');
+  const size_t second = slashes == 2 ? token.find('/', first + 1) : std::string_view::npos;
+  const std::string_view vertex = token.substr(0, first);
+  const std::string_view texcoord =
+      slashes >= 1
+          ? token.substr(first + 1, second == std::string_view::npos ? std::string_view::npos
+                                                                     : second - first - 1)
+          : std::string_view();
+  const std::string_view normal = slashes == 2 ? token.substr(second + 1) : std::string_view();
+  const bool wellFormed = slashes <= 2 && !vertex.empty() && (slashes != 1 || !texcoord.empty()) &&
+                          (slashes != 2 || !normal.empty());
+  if (!wellFormed)
+    fail("expected a vertex reference such as 1, 1/2, 1//3 or 1/2/3, got " + shown(token));
+  index(vertex, token, vertices_, indexName, "vertex", "vertices");
+  if (!texcoord.empty())
+    index(texcoord, token, texcoords_, "texture coordinate index", "texture coordinate",
+          "texture coordinates");
+  if (!normal.empty()) index(normal, token, normals_, "normal index", "normal", "normals");
+}
+
+// A 1-based index, or negative to count back from the latest element.
+void Scanner::index(std::string_view digits, std::string_view token, long long count,
+                    const std::string& name, const char* singular, const char* plural) const {
+  size_t i = (digits[0] == '-' || digits[0] == '+') ? 1 : 0;
+  const bool numeric = i < digits.size() && digits.size() - i <= 18 &&
+                       std::all_of(digits.begin() + i, digits.end(), [](char c) {
+                         return std::isdigit(static_cast<unsigned char>(c)) != 0;
+                       });
+  if (!numeric)
+    fail("expected a vertex reference such as 1, 1/2, 1//3 or 1/2/3, got " + shown(token));
+  const long long value = std::strtoll(std::string(digits).c_str(), nullptr, 10);
+  if (value == 0) fail(name + " 0 is invalid (OBJ indices start at 1)");
+  if (value > count || value < -count)
+    fail(name + " " + std::to_string(value) + " out of range (" + counted(count, singular, plural) +
+         ")");
+}
+
+// File names after `mtllib`, separated by blanks; a backslash escapes the next character, as
+// tinyobjloader reads them.
+void Scanner::materialLibraries(std::string_view arguments, ObjScan& out) const {
+  std::string name;
+  auto flush = [&] {
+    if (!name.empty() && std::find(out.materialLibraries.begin(), out.materialLibraries.end(),
+                                   name) == out.materialLibraries.end())
+      out.materialLibraries.push_back(name);
+    name.clear();
+  };
+  for (size_t i = 0; i < arguments.size(); ++i) {
+    if (arguments[i] == '\\' && i + 1 < arguments.size()) {
+      name += arguments[++i];
+    } else if (isBlank(arguments[i])) {
+      flush();
+    } else {
+      name += arguments[i];
+    }
+  }
+  flush();
+}
+
+}  // namespace
+
+ObjScan scanObj(const std::string& text, const std::string& label) {
+  ObjScan out;
+  out.text.reserve(text.size());
+  Scanner scanner(label);
+  std::string_view rest(text);
+  if (rest.substr(0, 3) == "\xEF\xBB\xBF") rest.remove_prefix(3);  // UTF-8 byte order mark
+  size_t number = 0;
+  while (!rest.empty()) {
+    const size_t end = rest.find_first_of("\r\n");
+    const std::string_view line = rest.substr(0, end);
+    scanner.scanLine(line, ++number, out);
+    if (end == std::string_view::npos) break;
+    const bool crlf = rest[end] == '\r' && end + 1 < rest.size() && rest[end + 1] == '\n';
+    rest.remove_prefix(end + (crlf ? 2 : 1));
+  }
+  return out;
+}
+
+}  // namespace candela

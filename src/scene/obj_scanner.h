@@ -1,0 +1,23 @@
+// Validation pass over Wavefront OBJ text, ahead of tinyobjloader.
+//
+// tinyobjloader is lenient: it reads "abc" as 0, keeps face indices that point past the vertex
+// list, ignores statements it does not know, stops at a comment after a face, and reports what it
+// does refuse without a line number. This pass checks every statement first and throws SceneError
+// "<label>:<line>: <reason>" for the first fault (lines are 1-based; \n, \r\n and a lone \r all
+// end a line). It returns the text tinyobjloader should parse: the same statements with data lines
+// normalised (single spaces, trailing comments removed) and every line ending in \n.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace candela {
+
+struct ObjScan {
+  std::string text;                            // for tinyobjloader
+  std::vector<std::string> materialLibraries;  // `mtllib` file names, unique, in order of use
+};
+
+ObjScan scanObj(const std::string& text, const std::string& label);
+
+}  // namespace candela

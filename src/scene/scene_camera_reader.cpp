@@ -1,0 +1,133 @@
+// Reading the camera; see scene_camera_reader.h.
+#include "scene/scene_camera_reader.h"
+
+#include <cmath>
+#include <cstdint>
+
+namespace candela {
+namespace {
+
+constexpr uint64_t kMaxUint32 = UINT32_MAX;
+
+// K from {"fx", "fy", "cx", "cy"} or a 3x3 matrix [[fx, s, cx], [0, fy, cy], [0, 0, 1]]. A skew s
+// is kept: K^-1 handles it, and calibration tools do produce it.
+Mat3 readIntrinsics(const JsonValue& value) {
+  Mat3 k;
+  if (value.json().is_object()) {
+    JsonObject fields(value, {"fx", "fy", "cx", "cy"});
+    k.m[0][0] = fields.require("fx").positiveNumber();
+    k.m[1][1] = fields.require("fy").positiveNumber();
+    k.m[0][2] = fields.require("cx").number();
+    k.m[1][2] = fields.require("cy").number();
+    fields.finish();
+    return k;
+  }
+  if (!value.json().is_array())
+    value.failExpected("intrinsics as {\"fx\", \"fy\", \"cx\", \"cy\"} or a 3x3 matrix");
+  const std::vector<float> m = value.matrix(3, 3);
+  const std::vector<JsonValue> rows = value.elements();
+  if (!(m[0] > 0)) rows[0].elements()[0].failExpected("a positive number");
+  if (!(m[4] > 0)) rows[1].elements()[1].failExpected("a positive number");
+  if (m[3] != 0) rows[1].elements()[0].failExpected("0");
+  if (m[6] != 0 || m[7] != 0 || m[8] != 1) rows[2].failExpected("[0, 0, 1]");
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) k.m[i][j] = m[3 * i + j];
+  return k;
+}
+
+// E = [R t; 0 1], world-to-camera in OpenCV axes; R must be a rotation.
+void readExtrinsics(const JsonValue& value, CameraDesc& camera) {
+  const std::vector<float> e = value.matrix(4, 4);
+  if (e[12] != 0 || e[13] != 0 || e[14] != 0 || e[15] != 1)
+    value.elements()[3].failExpected("[0, 0, 0, 1]");
+  Mat3 r;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) r.m[i][j] = e[4 * i + j];
+  // Tolerant enough for matrices printed with 4-5 significant digits.
+  const Mat3 product = r.transposed() * r;
+  double deviation = 0;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      deviation = std::fmax(deviation, std::fabs(product.m[i][j] - (i == j ? 1.0 : 0.0)));
+  const double determinant = dot(r.column(0), cross(r.column(1), r.column(2)));
+  if (deviation > 1e-3 || determinant < 0)
+    value.failExpected("a rotation (orthonormal, determinant +1) in the upper-left 3x3 block");
+  camera.extrinsicsR = r;
+  camera.extrinsicsT = Vec3(e[3], e[7], e[11]);
+}
+
+void readPose(JsonObject& fields, CameraDesc& camera) {
+  for (const char* key : {"position", "rotation", "look_at"}) fields.exclusive("extrinsics", key);
+  fields.exclusive("rotation", "look_at");
+  if (!fields.has("look_at")) fields.reject("up", "not used without \"look_at\"");
+
+  if (std::optional<JsonValue> extrinsics = fields.get("extrinsics"))
+    readExtrinsics(*extrinsics, camera);
+  if (std::optional<JsonValue> position = fields.get("position"))
+    camera.position = position->vec3();
+  if (std::optional<JsonValue> rotation = fields.get("rotation"))
+    camera.rotation = rotation->vec3();
+  const std::optional<JsonValue> lookAt = fields.get("look_at");
+  if (!lookAt) return;
+  camera.lookAt = lookAt->vec3();
+  const std::optional<JsonValue> up = fields.get("up");
+  if (up) camera.up = up->vec3();
+
+  const Vec3 forward = *camera.lookAt - camera.position;
+  if (isBlack(forward)) lookAt->failExpected("a point other than the camera position");
+  // Parallel when the sine of the angle between them is negligible (or up is zero); in double,
+  // so that large coordinates cannot overflow.
+  const double f[3] = {forward.x, forward.y, forward.z};
+  const double u[3] = {camera.up.x, camera.up.y, camera.up.z};
+  const double c[3] = {f[1] * u[2] - f[2] * u[1], f[2] * u[0] - f[0] * u[2],
+                       f[0] * u[1] - f[1] * u[0]};
+  const double norm2 =
+      (f[0] * f[0] + f[1] * f[1] + f[2] * f[2]) * (u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+  const double sine2 = (c[0] * c[0] + c[1] * c[1] + c[2] * c[2]) / norm2;
+  if (!(sine2 > 1e-12)) {
+    if (up) up->failExpected("a direction that is not parallel to the viewing direction");
+    fields.fail("missing required key \"up\" (the view is parallel to the default up [0, 1, 0])");
+  }
+}
+
+}  // namespace
+
+CameraDesc readCamera(const JsonValue& value) {
+  JsonObject fields(
+      value, {"width", "height", "fov", "intrinsics", "position", "rotation", "look_at", "up",
+              "extrinsics", "spp", "rays", "aperture_radius", "focus_distance"});
+  CameraDesc camera;
+  if (std::optional<JsonValue> width = fields.get("width"))
+    camera.width = static_cast<uint32_t>(width->integer(1, kMaxUint32, "a positive integer"));
+  if (std::optional<JsonValue> height = fields.get("height"))
+    camera.height = static_cast<uint32_t>(height->integer(1, kMaxUint32, "a positive integer"));
+
+  fields.exclusive("fov", "intrinsics");
+  if (std::optional<JsonValue> fov = fields.get("fov")) {
+    const std::string expectation = "a number between 0 and 180 (exclusive)";
+    camera.fov = fov->number(expectation);
+    if (!(camera.fov > 0 && camera.fov < 180)) fov->failExpected(expectation);
+  }
+  if (std::optional<JsonValue> intrinsics = fields.get("intrinsics"))
+    camera.intrinsics = readIntrinsics(*intrinsics);
+
+  readPose(fields, camera);
+
+  fields.exclusive("spp", "rays");
+  std::optional<JsonValue> spp = fields.get("spp");
+  if (!spp) spp = fields.get("rays");
+  if (spp) camera.spp = static_cast<uint32_t>(spp->integer(1, kMaxUint32, "a positive integer"));
+
+  if (std::optional<JsonValue> aperture = fields.get("aperture_radius"))
+    camera.apertureRadius = aperture->nonNegativeNumber();
+  if (std::optional<JsonValue> focus = fields.get("focus_distance"))
+    camera.focusDistance = focus->positiveNumber();
+  if (camera.apertureRadius > 0 && !camera.focusDistance && !camera.lookAt)
+    fields.fail(
+        "missing required key \"focus_distance\" (an open aperture without \"look_at\" "
+        "has nothing else to focus on)");
+  fields.finish();
+  return camera;
+}
+
+}  // namespace candela

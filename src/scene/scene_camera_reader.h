@@ -1,0 +1,18 @@
+// The "camera" section of a scene file -> CameraDesc, validated but not resolved.
+//
+// Values are kept as written (fov or K, Euler rotation or look_at/up or OpenCV extrinsics) so that
+// animation can change them per frame; scene/camera_resolve.h turns them into a Camera. Checked
+// here: types and ranges, keys that exclude each other (fov/intrinsics, rotation/look_at,
+// extrinsics/position/rotation/look_at, spp/rays), a look_at that differs from the position and
+// an up that is not parallel to the view, a proper rotation in the extrinsics, and a
+// focus_distance wherever an open aperture has no look_at to focus on.
+#pragma once
+
+#include "scene/json_reader.h"
+#include "scene/scene_desc.h"
+
+namespace candela {
+
+CameraDesc readCamera(const JsonValue& value);
+
+}  // namespace candela

@@ -1,0 +1,98 @@
+// Reading spheres, objects and lights; see scene_entity_reader.h.
+#include "scene/scene_entity_reader.h"
+
+#include <filesystem>
+
+namespace candela {
+namespace {
+
+// An optional "id": a non-empty string other than "camera", which animation tracks use to name
+// the camera. Uniqueness across the scene is the loader's check.
+std::string readId(JsonObject& fields) {
+  const std::optional<JsonValue> id = fields.get("id");
+  if (!id) return "";
+  const std::string text = id->string();
+  if (text.empty()) id->failExpected("a non-empty string");
+  if (text == "camera") id->failExpected("an id other than \"camera\", which names the camera");
+  return text;
+}
+
+// A number or [sx, sy, sz]; a zero factor would flatten the mesh, a negative one mirrors it.
+Vec3 readScale(const JsonValue& value) {
+  const std::string expectation = "a non-zero number";
+  if (value.json().is_number()) {
+    const float s = value.number(expectation);
+    if (s == 0) value.failExpected(expectation);
+    return Vec3(s);
+  }
+  if (!value.json().is_array() || value.json().size() != 3)
+    value.failExpected("a non-zero number or an array of 3 non-zero numbers");
+  Vec3 scale;
+  const std::vector<JsonValue> elements = value.elements();
+  for (int i = 0; i < 3; ++i) {
+    scale[i] = elements[i].number(expectation);
+    if (scale[i] == 0) elements[i].failExpected(expectation);
+  }
+  return scale;
+}
+
+}  // namespace
+
+SphereDesc readSphere(const JsonValue& value, const MaterialLibrary& library) {
+  JsonObject fields(value, {"id", "position", "center", "radius", "material", "color", "ior"});
+  SphereDesc sphere;
+  sphere.where = value.path();
+  sphere.id = readId(fields);
+  fields.exclusive("position", "center");
+  std::optional<JsonValue> position = fields.get("position");
+  if (!position) position = fields.get("center");
+  if (!position) fields.fail("missing required key \"position\"");
+  sphere.position = position->vec3();
+  sphere.radius = fields.require("radius").positiveNumber();
+  sphere.material = readMaterialReference(fields, library).value_or(MaterialDesc{});
+  fields.finish();
+  return sphere;
+}
+
+ObjectDesc readObject(const JsonValue& value, const MaterialLibrary& library,
+                      const std::string& baseDir) {
+  JsonObject fields(
+      value, {"id", "file", "position", "rotation", "scale", "material", "color", "ior", "smooth"});
+  ObjectDesc object;
+  object.where = value.path();
+  object.id = readId(fields);
+  const JsonValue file = fields.require("file");
+  const std::string name = file.string();
+  if (name.empty()) file.failExpected("the path of an OBJ file");
+  const std::filesystem::path path(name);
+  object.file = path.is_absolute() ? name : (std::filesystem::path(baseDir) / path).string();
+  if (std::optional<JsonValue> position = fields.get("position"))
+    object.position = position->vec3();
+  if (std::optional<JsonValue> rotation = fields.get("rotation"))
+    object.rotation = rotation->vec3();
+  if (std::optional<JsonValue> scale = fields.get("scale")) object.scale = readScale(*scale);
+  if (std::optional<JsonValue> smooth = fields.get("smooth")) object.smooth = smooth->boolean();
+  object.material = readMaterialReference(fields, library);
+  fields.finish();
+  return object;
+}
+
+LightDesc readLight(const JsonValue& value) {
+  JsonObject fields(value, {"id", "type", "position", "intensity", "color", "radius"});
+  LightDesc light;
+  light.where = value.path();
+  light.id = readId(fields);
+  if (std::optional<JsonValue> type = fields.get("type"))
+    light.type = type->choice({"point", "sphere"}) == 0 ? LightType::Point : LightType::Sphere;
+  light.position = fields.require("position").vec3();
+  light.intensity = fields.require("intensity").nonNegativeNumber();
+  if (std::optional<JsonValue> color = fields.get("color")) light.color = color->colour();
+  if (light.type == LightType::Sphere)
+    light.radius = fields.require("radius").positiveNumber();
+  else
+    fields.reject("radius", "not used by a point light (only \"sphere\" lights have a radius)");
+  fields.finish();
+  return light;
+}
+
+}  // namespace candela

@@ -1,0 +1,21 @@
+// Spheres, objects and lights of a scene file -> their descriptions.
+//
+// Each reader validates one array element; `where` in the result is its JSON path. Objects come
+// back with `file` resolved against the scene file's folder and an empty mesh: the loader reads
+// the OBJ files once the whole scene text has been validated.
+#pragma once
+
+#include <string>
+
+#include "scene/json_reader.h"
+#include "scene/scene_desc.h"
+#include "scene/scene_material_reader.h"
+
+namespace candela {
+
+SphereDesc readSphere(const JsonValue& value, const MaterialLibrary& library);
+ObjectDesc readObject(const JsonValue& value, const MaterialLibrary& library,
+                      const std::string& baseDir);
+LightDesc readLight(const JsonValue& value);
+
+}  // namespace candela

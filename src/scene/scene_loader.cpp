@@ -1,0 +1,118 @@
+// The scene loader's top level; see scene_loader.h.
+#include "scene/scene_loader.h"
+
+#include <filesystem>
+#include <map>
+#include <vector>
+
+#include "scene/json_parse.h"
+#include "scene/obj_loader.h"
+#include "scene/scene_camera_reader.h"
+#include "scene/scene_entity_reader.h"
+#include "scene/scene_error.h"
+#include "scene/scene_material_reader.h"
+#include "scene/scene_render_reader.h"
+#include "scene/text_file.h"
+
+namespace candela {
+namespace {
+
+// Ids name spheres, objects and lights for animation and messages, so they must be unique.
+class IdRegistry {
+ public:
+  void add(const std::string& id, const std::string& where, const std::string& file) {
+    if (id.empty()) return;
+    const auto inserted = places_.emplace(id, where);
+    if (!inserted.second)
+      failAt(file, memberPath(where, "id"),
+             "duplicate id " + quoted(id) + ", already used by " + inserted.first->second);
+  }
+
+ private:
+  std::map<std::string, std::string> places_;  // id -> JSON path of its owner
+};
+
+// Each element of the array under `key`, read by `read`.
+template <typename Read>
+void forEachElement(JsonObject& top, const std::string& key, Read read) {
+  if (std::optional<JsonValue> array = top.get(key))
+    for (const JsonValue& element : array->elements()) read(element);
+}
+
+// The OBJ files named by the scene's objects, each read once however many objects use it. A
+// failure is reported at the object's "file" key, with the file as the scene wrote it.
+void loadMeshes(SceneDesc& scene, const std::vector<std::string>& writtenNames) {
+  std::map<std::string, const MeshDesc*> loaded;  // resolved path -> first object's mesh
+  for (size_t i = 0; i < scene.objects.size(); ++i) {
+    ObjectDesc& object = scene.objects[i];
+    const auto previous = loaded.find(object.file);
+    if (previous != loaded.end()) {
+      object.mesh = *previous->second;
+      continue;
+    }
+    try {
+      object.mesh = loadObjFile(object.file, writtenNames[i]);
+    } catch (const SceneError& error) {
+      failAt(scene.file, memberPath(object.where, "file"), error.what());
+    }
+    loaded.emplace(object.file, &object.mesh);
+  }
+}
+
+}  // namespace
+
+SceneDesc parseSceneText(const std::string& text, const std::string& fileLabel,
+                         const std::string& baseDir) {
+  const Json document = parseJson(text, fileLabel);
+  JsonObject top(
+      JsonValue(document, fileLabel, ""),
+      {"camera", "render", "materials", "spheres", "objects", "lights", "environment", "animation"},
+      "an object at the top level");
+  top.reject("animation", "animation is not supported yet");
+
+  SceneDesc scene;
+  scene.file = fileLabel;
+  scene.camera = readCamera(top.require("camera"));
+  if (std::optional<JsonValue> render = top.get("render"))
+    readRender(*render, scene.render, scene.output);
+  scene.render.spp = scene.camera.spp;
+
+  MaterialLibrary library;
+  if (std::optional<JsonValue> materials = top.get("materials"))
+    library = readMaterialLibrary(*materials);
+
+  IdRegistry ids;
+  forEachElement(top, "spheres", [&](const JsonValue& element) {
+    scene.spheres.push_back(readSphere(element, library));
+    ids.add(scene.spheres.back().id, scene.spheres.back().where, fileLabel);
+  });
+  std::vector<std::string> writtenNames;
+  forEachElement(top, "objects", [&](const JsonValue& element) {
+    scene.objects.push_back(readObject(element, library, baseDir));
+    ids.add(scene.objects.back().id, scene.objects.back().where, fileLabel);
+    writtenNames.push_back(element.json().at("file").get<std::string>());
+  });
+  forEachElement(top, "lights", [&](const JsonValue& element) {
+    scene.lights.push_back(readLight(element));
+    ids.add(scene.lights.back().id, scene.lights.back().where, fileLabel);
+  });
+
+  if (std::optional<JsonValue> environment = top.get("environment")) {
+    JsonObject fields(*environment, {"color"});
+    scene.environment = fields.require("color").colour();
+    fields.finish();
+  }
+  top.finish();
+
+  loadMeshes(scene, writtenNames);
+  return scene;
+}
+
+SceneDesc loadSceneFile(const std::string& path) {
+  std::string text, reason;
+  if (!readTextFile(path, &text, &reason))
+    throw SceneError(path + ": cannot open scene file (" + reason + ")");
+  return parseSceneText(text, path, std::filesystem::path(path).parent_path().string());
+}
+
+}  // namespace candela

@@ -1,0 +1,34 @@
+// Materials in a scene file: the named library, material objects, and what a sphere or an object
+// says about its material.
+//
+// A sphere or object names its material in one of three ways (shared/scene-format.md):
+//   "material": "red_wall"                       a material defined under top-level "materials"
+//   "material": {"type": "glass", "ior": 1.33}   inline
+//   "material": "glass", "ior": 1.33             the seed shorthand: type name, fields beside it
+// and "color" alone means a diffuse material of that colour. Fields beside "material" that the
+// chosen form does not use are errors.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <string>
+
+#include "scene/json_reader.h"
+#include "scene/scene_desc.h"
+
+namespace candela {
+
+using MaterialLibrary = std::map<std::string, MaterialDesc>;
+
+// The top-level "materials" object: name -> material object.
+MaterialLibrary readMaterialLibrary(const JsonValue& value);
+
+// A material object {"type": ..., fields of that type}.
+MaterialDesc readMaterial(const JsonValue& value);
+
+// The material that `owner` (a sphere or object) gives through its "material", "color" and "ior"
+// keys; nothing when it gives none.
+std::optional<MaterialDesc> readMaterialReference(JsonObject& owner,
+                                                  const MaterialLibrary& library);
+
+}  // namespace candela

@@ -1,0 +1,272 @@
+// OBJ loading: the variants real files come in (CRLF, relative indices, polygons, with and without
+// normals and MTL files) and malformed files, which must fail with their line, never crash.
+#include <gtest/gtest.h>
+#include <stdlib.h>
+
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "scene/obj_loader.h"
+#include "scene/scene_error.h"
+
+namespace candela {
+namespace {
+
+// A fresh folder under the system's temp folder, removed with everything in it at the end.
+class TempDir {
+ public:
+  TempDir() {
+    std::string pattern = (std::filesystem::temp_directory_path() / "candela-obj-XXXXXX").string();
+    path_ = mkdtemp(pattern.data());
+  }
+  ~TempDir() { std::filesystem::remove_all(path_); }
+  std::string write(const std::string& name, const std::string& contents) const {
+    const std::filesystem::path file = path_ / name;
+    std::ofstream(file, std::ios::binary) << contents;
+    return file.string();
+  }
+
+ private:
+  std::filesystem::path path_;
+};
+
+class ObjLoader : public ::testing::Test {
+ protected:
+  MeshDesc load(const std::string& text, const std::string& mtl = "") const {
+    if (!mtl.empty()) dir.write("m.mtl", mtl);
+    return loadObjFile(dir.write("m.obj", text), "m.obj");
+  }
+  // The message of the SceneError that loading `text` throws, or a note that it threw none.
+  std::string error(const std::string& text) const {
+    try {
+      load(text);
+    } catch (const SceneError& e) {
+      return e.what();
+    }
+    return "(no SceneError)";
+  }
+
+  TempDir dir;
+};
+
+void expectTriangle(const Triangle& t, uint32_t a, uint32_t b, uint32_t c) {
+  EXPECT_EQ(t.v[0], a);
+  EXPECT_EQ(t.v[1], b);
+  EXPECT_EQ(t.v[2], c);
+}
+
+const char* kSquare = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n";
+
+TEST_F(ObjLoader, TriangleWithoutNormalsUsesFaceNormalAndDefaultMaterial) {
+  const MeshDesc mesh = load("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  ASSERT_EQ(mesh.positions.size(), 3u);
+  EXPECT_FLOAT_EQ(mesh.positions[1].x, 1);
+  EXPECT_TRUE(mesh.normals.empty());
+  ASSERT_EQ(mesh.triangles.size(), 1u);
+  expectTriangle(mesh.triangles[0], 0, 1, 2);
+  for (int i = 0; i < 3; ++i) EXPECT_EQ(mesh.triangles[0].n[i], -1);
+  ASSERT_EQ(mesh.materials.size(), 1u);
+  EXPECT_EQ(mesh.triangles[0].material, 0u);
+  EXPECT_EQ(mesh.materials[0].type, MaterialType::Diffuse);
+  EXPECT_FLOAT_EQ(mesh.materials[0].color.y, 0.8f);
+}
+
+TEST_F(ObjLoader, QuadBecomesTwoTrianglesWithTheSameWinding) {
+  const MeshDesc mesh = load(std::string(kSquare) + "f 1 2 3 4\n");
+  ASSERT_EQ(mesh.triangles.size(), 2u);
+  for (const Triangle& t : mesh.triangles) {
+    const Vec3 n = cross(mesh.positions[t.v[1]] - mesh.positions[t.v[0]],
+                         mesh.positions[t.v[2]] - mesh.positions[t.v[0]]);
+    EXPECT_GT(n.z, 0) << "counter-clockwise seen from +z, as written";
+  }
+}
+
+TEST_F(ObjLoader, PentagonBecomesThreeTriangles) {
+  const MeshDesc mesh = load("v 0 0 0\nv 1 0 0\nv 1.5 1 0\nv 0.5 2 0\nv -0.5 1 0\nf 1 2 3 4 5\n");
+  EXPECT_EQ(mesh.triangles.size(), 3u);
+}
+
+TEST_F(ObjLoader, NegativeIndicesCountBackFromTheLatestVertex) {
+  const MeshDesc mesh =
+      load("v 9 9 9\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf -3//-1 -2//-1 -1//-1\n");
+  ASSERT_EQ(mesh.triangles.size(), 1u);
+  expectTriangle(mesh.triangles[0], 1, 2, 3);
+  for (int i = 0; i < 3; ++i) EXPECT_EQ(mesh.triangles[0].n[i], 0);
+}
+
+TEST_F(ObjLoader, CrlfAndLoneCrLineEndings) {
+  const MeshDesc crlf = load("v 0 0 0\r\nv 1 0 0\r\nv 0 1 0\r\nf 1 2 3\r\n");
+  EXPECT_EQ(crlf.triangles.size(), 1u);
+  const MeshDesc cr = load("v 0 0 0\rv 1 0 0\rv 0 1 0\rf 1 2 3\r");
+  EXPECT_EQ(cr.triangles.size(), 1u);
+  EXPECT_EQ(error("v 0 0 0\r\nv 1 0 0\r\nv 0 1 0\r\nf 1 2 4\r\n"),
+            "m.obj:4: face index 4 out of range (3 vertices)");
+}
+
+TEST_F(ObjLoader, VertexNormalsAreKeptPerCorner) {
+  const MeshDesc mesh = load(
+      "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvn 0 0 1\nvn 0 1 0\nvn 1 0 0\n"
+      "f 1/1/3 2/1/2 3/1/1\n");
+  ASSERT_EQ(mesh.normals.size(), 3u);
+  EXPECT_FLOAT_EQ(mesh.normals[2].x, 1);
+  ASSERT_EQ(mesh.triangles.size(), 1u);
+  EXPECT_EQ(mesh.triangles[0].n[0], 2);
+  EXPECT_EQ(mesh.triangles[0].n[1], 1);
+  EXPECT_EQ(mesh.triangles[0].n[2], 0);
+}
+
+TEST_F(ObjLoader, FaceWithNormalsOnSomeCornersOnlyUsesTheFaceNormal) {
+  const MeshDesc mesh = load("v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2 3//1\n");
+  ASSERT_EQ(mesh.triangles.size(), 1u);
+  for (int i = 0; i < 3; ++i) EXPECT_EQ(mesh.triangles[0].n[i], -1);
+}
+
+TEST_F(ObjLoader, MtlDiffuseColourPerFaceGroup) {
+  const MeshDesc mesh = load(std::string("mtllib m.mtl\n") + kSquare +
+                                 "f 1 2 3\n"
+                                 "usemtl red\nf 1 3 4\n"
+                                 "usemtl blue\nf 1 2 4\n"
+                                 "usemtl undefined\nf 2 3 4\n",
+                             "newmtl red\nKd 1 0 0\n\nnewmtl blue\r\nKd 0 0 1\r\n");
+  ASSERT_EQ(mesh.triangles.size(), 4u);
+  ASSERT_EQ(mesh.materials.size(), 3u);  // red, blue, and the default for the rest
+  const MaterialDesc& red = mesh.materials[mesh.triangles[1].material];
+  EXPECT_EQ(red.type, MaterialType::Diffuse);
+  EXPECT_FLOAT_EQ(red.color.x, 1);
+  EXPECT_FLOAT_EQ(red.color.z, 0);
+  const MaterialDesc& blue = mesh.materials[mesh.triangles[2].material];
+  EXPECT_FLOAT_EQ(blue.color.x, 0);
+  EXPECT_FLOAT_EQ(blue.color.z, 1);
+  for (int face : {0, 3}) {
+    const MaterialDesc& fallback = mesh.materials[mesh.triangles[face].material];
+    EXPECT_FLOAT_EQ(fallback.color.x, 0.8f);
+    EXPECT_FLOAT_EQ(fallback.color.z, 0.8f);
+  }
+}
+
+TEST_F(ObjLoader, MtlMaterialWithoutKdIsDefaultDiffuse) {
+  const MeshDesc mesh = load(std::string("mtllib m.mtl\nusemtl plain\n") + kSquare + "f 1 2 3\n",
+                             "# no colour\nnewmtl plain\nNs 10\n");
+  ASSERT_EQ(mesh.materials.size(), 1u);
+  EXPECT_EQ(mesh.triangles[0].material, 0u);
+  EXPECT_FLOAT_EQ(mesh.materials[0].color.x, 0.8f);
+}
+
+TEST_F(ObjLoader, MissingMtlFileFallsBackToTheDefaultMaterial) {
+  const MeshDesc mesh =
+      load(std::string("mtllib absent.mtl\nusemtl red\n") + kSquare + "f 1 2 3\n");
+  ASSERT_EQ(mesh.materials.size(), 1u);
+  EXPECT_FLOAT_EQ(mesh.materials[0].color.x, 0.8f);
+  EXPECT_EQ(mesh.triangles[0].material, 0u);
+}
+
+TEST_F(ObjLoader, CommentsGroupsAndIgnoredStatements) {
+  const MeshDesc mesh = load(
+      "\xEF\xBB\xBF# header\n  o thing\ng part one\ns off\nv 0 0 0 # origin\nv 1 0 0\n"
+      "v 0 1 0 1\nvt 0.5 0.5\nvp 0.1\nl 1 2\np 3\nf 1/1 2/1 3/1 # a face\n\t\n");
+  EXPECT_EQ(mesh.positions.size(), 3u);
+  EXPECT_EQ(mesh.triangles.size(), 1u);
+}
+
+TEST_F(ObjLoader, MalformedFilesNameTheLine) {
+  const std::string square(kSquare);
+  EXPECT_EQ(error(square + "f 1 2 99\n"), "m.obj:5: face index 99 out of range (4 vertices)");
+  EXPECT_EQ(error(square + "f 1 2 -5\n"), "m.obj:5: face index -5 out of range (4 vertices)");
+  EXPECT_EQ(error("f 1 2 3\nv 0 0 0\nv 1 0 0\nv 0 1 0\n"),
+            "m.obj:1: face index 1 out of range (0 vertices)");
+  EXPECT_EQ(error(square + "f 1 0 2\n"),
+            "m.obj:5: face index 0 is invalid (OBJ indices start at 1)");
+  EXPECT_EQ(error(square + "vn 0 0 1\nf 1//1 2//2 3//1\n"),
+            "m.obj:6: normal index 2 out of range (1 normal)");
+  EXPECT_EQ(error(square + "f 1/1 2/1 3/1\n"),
+            "m.obj:5: texture coordinate index 1 out of range (0 texture coordinates)");
+  EXPECT_EQ(error(square + "f 1 2\n"),
+            "m.obj:5: expected a face with at least 3 vertices, got \"f 1 2\"");
+  EXPECT_EQ(error(square + "f 1 two 3\n"),
+            "m.obj:5: expected a vertex reference such as 1, 1/2, 1//3 or 1/2/3, got \"two\"");
+  EXPECT_EQ(error(square + "f 1/ 2 3\n"),
+            "m.obj:5: expected a vertex reference such as 1, 1/2, 1//3 or 1/2/3, got \"1/\"");
+  EXPECT_EQ(error("v 0 0 0\nv 1 abc 0\n"), "m.obj:2: expected a number, got \"abc\"");
+  EXPECT_EQ(error("v 0 0\n"), "m.obj:1: expected a vertex \"v x y z\", got \"v 0 0\"");
+  EXPECT_EQ(error("v 0 0 1e39\n"), "m.obj:1: expected a finite number, got \"1e39\"");
+  EXPECT_EQ(error("vn 0 0\n"), "m.obj:1: expected a normal \"vn x y z\", got \"vn 0 0\"");
+  EXPECT_EQ(error(square + "F 1 2 3\n"), "m.obj:5: unknown statement \"F\"");
+  EXPECT_EQ(error("\x89PNG\r\n\x1a\n"), "m.obj:1: unknown statement \"\\x89PNG\"");
+}
+
+TEST_F(ObjLoader, FileWithoutFacesIsAnError) {
+  EXPECT_EQ(error(kSquare), "m.obj: expected at least one face, got none");
+  EXPECT_EQ(error(""), "m.obj: expected at least one face, got none");
+}
+
+TEST_F(ObjLoader, MissingFile) {
+  try {
+    loadObjFile("/nonexistent/candela/x.obj", "meshes/x.obj");
+    FAIL() << "no SceneError";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(std::string(e.what()), "cannot open \"meshes/x.obj\" (No such file or directory)");
+  }
+}
+
+// Random bytes and random statement soup: loading must end in a mesh or a SceneError.
+TEST_F(ObjLoader, GarbageNeverCrashes) {
+  const char* pieces[] = {"v", "vn", "vt", "f",   "l",  "p",   "g",   "usemtl", "mtllib", "#",
+                          "1", "-1", "0",  "2/1", "//", "1//", "1e9", "nan",    "-2/-1",  "\t",
+                          " ", "\n", "\r", "/",   "3",  "0.5", "x",   "\\",     "m.mtl",  "999"};
+  uint64_t state = 0x9E3779B97F4A7C15ull;
+  auto next = [&state] {
+    state ^= state << 13;
+    state ^= state >> 7;
+    state ^= state << 17;
+    return state;
+  };
+  dir.write("m.mtl", "newmtl a\nKd 0.1 0.2 0.3\n");
+  for (int round = 0; round < 1500; ++round) {
+    std::string text;
+    const bool bytes = round % 3 == 0;
+    const int length = static_cast<int>(next() % 200);
+    for (int i = 0; i < length; ++i) {
+      if (bytes) {
+        text += static_cast<char>(next() & 0xFF);
+      } else {
+        text += pieces[next() % (sizeof pieces / sizeof pieces[0])];
+        text += next() % 3 ? " " : "\n";
+      }
+    }
+    if (round % 5 == 0) text = std::string(kSquare) + text;
+    try {
+      const MeshDesc mesh = load(text);
+      for (const Triangle& t : mesh.triangles)
+        for (int i = 0; i < 3; ++i) {
+          ASSERT_LT(t.v[i], mesh.positions.size());
+          ASSERT_LT(t.n[i], static_cast<int32_t>(mesh.normals.size()));
+          ASSERT_LT(t.material, mesh.materials.size());
+        }
+    } catch (const SceneError&) {
+      // Refusing garbage is the expected outcome; crashing or accepting bad indices is not.
+    }
+  }
+}
+
+TEST(ObjAsset, CatLoadsWithItsMaterial) {
+  const std::string path = "/work/shared/assets/cat/cat.obj";
+  if (!std::filesystem::exists(path)) GTEST_SKIP() << "shared asset " << path << " is not present";
+  const MeshDesc mesh = loadObjFile(path, "cat.obj");
+  EXPECT_EQ(mesh.triangles.size(), 3954u);
+  EXPECT_EQ(mesh.positions.size(), 2247u);
+  EXPECT_EQ(mesh.normals.size(), 2152u);
+  ASSERT_EQ(mesh.materials.size(), 1u);  // "cat" from cat.mtl, used by every face
+  EXPECT_EQ(mesh.materials[0].type, MaterialType::Diffuse);
+  EXPECT_FLOAT_EQ(mesh.materials[0].color.x, 1);
+  EXPECT_FLOAT_EQ(mesh.materials[0].color.y, 1);
+  EXPECT_FLOAT_EQ(mesh.materials[0].color.z, 1);
+  for (const Triangle& t : mesh.triangles) {
+    ASSERT_EQ(t.material, 0u);
+    ASSERT_GE(t.n[0], 0);
+  }
+}
+
+}  // namespace
+}  // namespace candela

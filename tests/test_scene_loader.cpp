@@ -1,0 +1,638 @@
+// Scene loading: every error class of shared/scene-format.md pinned to its exact message, and the
+// values that each accepted form of the format turns into.
+#include <gtest/gtest.h>
+#include <stdlib.h>
+
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <string>
+
+#include "scene/did_you_mean.h"
+#include "scene/scene_error.h"
+#include "scene/scene_loader.h"
+
+namespace candela {
+namespace {
+
+// A fresh folder under the system's temp folder, removed with everything in it at the end.
+class TempDir {
+ public:
+  TempDir() {
+    std::string pattern =
+        (std::filesystem::temp_directory_path() / "candela-scene-XXXXXX").string();
+    path_ = mkdtemp(pattern.data());
+  }
+  ~TempDir() { std::filesystem::remove_all(path_); }
+  std::string path() const { return path_.string(); }
+  std::string write(const std::string& name, const std::string& contents) const {
+    const std::filesystem::path file = path_ / name;
+    std::filesystem::create_directories(file.parent_path());
+    std::ofstream(file, std::ios::binary) << contents;
+    return file.string();
+  }
+
+ private:
+  std::filesystem::path path_;
+};
+
+const char* kTriangleObj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+
+// The message of the SceneError that `load` throws, or a note that it threw none.
+std::string errorOf(const std::function<void()>& load) {
+  try {
+    load();
+  } catch (const SceneError& error) {
+    return error.what();
+  }
+  return "(no SceneError)";
+}
+
+class SceneLoader : public ::testing::Test {
+ protected:
+  SceneDesc parse(const std::string& json) const {
+    return parseSceneText(json, "s.json", dir.path());
+  }
+  std::string error(const std::string& json) const {
+    return errorOf([&] { parse(json); });
+  }
+  // A scene whose only content besides a default camera is `rest` (keys of the top level).
+  std::string errorWith(const std::string& rest) const {
+    return error(R"({"camera": {}, )" + rest + "}");
+  }
+  std::string cameraError(const std::string& camera) const {
+    return error(R"({"camera": )" + camera + "}");
+  }
+  CameraDesc camera(const std::string& camera) const {
+    return parse(R"({"camera": )" + camera + "}").camera;
+  }
+
+  TempDir dir;
+};
+
+void expectVec3(const Vec3& actual, float x, float y, float z) {
+  EXPECT_FLOAT_EQ(actual.x, x);
+  EXPECT_FLOAT_EQ(actual.y, y);
+  EXPECT_FLOAT_EQ(actual.z, z);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Errors, one test per class, each pinning the whole message.
+
+TEST_F(SceneLoader, TypoKeySuggestsTheKnownKey) {
+  EXPECT_EQ(errorWith(R"("spheres": [{"position": [0, 0, 0], "raduis": 1}])"),
+            "s.json: spheres[0].raduis: unknown key, did you mean \"radius\"?");
+  EXPECT_EQ(cameraError(R"({"Width": 64})"),
+            "s.json: camera.Width: unknown key, did you mean \"width\"?");
+}
+
+TEST_F(SceneLoader, UnknownTopLevelKey) {
+  EXPECT_EQ(errorWith(R"("lihgts": [])"), "s.json: lihgts: unknown key, did you mean \"lights\"?");
+  EXPECT_EQ(errorWith(R"("sky": {})"),
+            "s.json: sky: unknown key, expected one of \"camera\", \"render\", \"materials\", "
+            "\"spheres\", \"objects\", \"lights\", \"environment\", \"animation\"");
+}
+
+TEST_F(SceneLoader, CommentKeysAreIgnoredEverywhere) {
+  const SceneDesc scene = parse(R"({
+    "_comment": "a scene", "_version": 2,
+    "camera": {"_note": "pinhole", "width": 8},
+    "render": {"_why": "fast"},
+    "materials": {"_unused": {"type": "nonsense"}, "red": {"type": "diffuse", "_c": 1}},
+    "spheres": [{"_": 0, "position": [0, 0, 0], "radius": 1, "material": "red"}],
+    "lights": [{"_off": true, "position": [0, 5, 0], "intensity": 1}],
+    "environment": {"_": [], "color": 0}
+  })");
+  EXPECT_EQ(scene.camera.width, 8u);
+  ASSERT_EQ(scene.spheres.size(), 1u);
+  ASSERT_EQ(scene.lights.size(), 1u);
+}
+
+TEST_F(SceneLoader, JsonSyntaxErrorHasLineAndColumn) {
+  EXPECT_EQ(error("{\n  \"camera\": {\n    \"width\": 10,\n  }\n}"),
+            "s.json:4:3: invalid JSON: syntax error while parsing object key - unexpected '}'; "
+            "expected string literal");
+  EXPECT_EQ(error("{\"camera\": {} // comment\n}"),
+            "s.json:1:15: invalid JSON: syntax error while parsing object - invalid literal; last "
+            "read: '\"camera\": {} /'; expected '}'");
+  // A long token in nlohmann's "last read" is cut to its end, where the fault is.
+  EXPECT_EQ(error("{\"camera\": {}, \"abcdefghijklmnopqrstuvwxyz"),
+            "s.json:1:43: invalid JSON: syntax error while parsing object key - invalid string: "
+            "missing closing quote; last read: '...ghijklmnopqrstuvwxyz'; expected string literal");
+  EXPECT_EQ(error(""),
+            "s.json:1:1: invalid JSON: syntax error while parsing value - unexpected end of "
+            "input; expected '[', '{', or a literal");
+}
+
+TEST_F(SceneLoader, DuplicateJsonKeyIsAnError) {
+  EXPECT_EQ(errorWith(R"("spheres": [{"position": [0, 0, 0], "radius": 1, "radius": 2}])"),
+            "s.json: spheres[0].radius: duplicate key, each key may appear once per object");
+  EXPECT_EQ(errorWith(R"("_c": 1, "_c": 2)"), "(no SceneError)");
+}
+
+TEST_F(SceneLoader, TopLevelMustBeAnObject) {
+  EXPECT_EQ(error("[1, 2]"), "s.json: expected an object at the top level, got an array [1,2]");
+}
+
+TEST_F(SceneLoader, WrongType) {
+  EXPECT_EQ(cameraError(R"({"position": ["abc", 0, 0]})"),
+            "s.json: camera.position[0]: expected a number, got a string \"abc\"");
+  EXPECT_EQ(cameraError(R"({"position": [0, 0]})"),
+            "s.json: camera.position: expected an array of 3 numbers, got an array [0,0]");
+  EXPECT_EQ(errorWith(R"("spheres": {"position": [0, 0, 0]})"),
+            "s.json: spheres: expected an array, got an object {\"position\":[0,0,0]}");
+  EXPECT_EQ(errorWith(R"("render": {"antialiasing": 1})"),
+            "s.json: render.antialiasing: expected true or false, got 1");
+  EXPECT_EQ(errorWith(R"("spheres": [{"position": [0, 0, 0], "radius": 1, "color": "red"}])"),
+            "s.json: spheres[0].color: expected a colour (a number or an array of 3 numbers), got "
+            "a string \"red\"");
+}
+
+TEST_F(SceneLoader, MissingRequiredKey) {
+  EXPECT_EQ(error("{}"), "s.json: missing required key \"camera\"");
+  EXPECT_EQ(errorWith(R"("spheres": [{"position": [0, 0, 0]}])"),
+            "s.json: spheres[0]: missing required key \"radius\"");
+  EXPECT_EQ(errorWith(R"("spheres": [{"radius": 1}])"),
+            "s.json: spheres[0]: missing required key \"position\"");
+  EXPECT_EQ(errorWith(R"("objects": [{"position": [0, 0, 0]}])"),
+            "s.json: objects[0]: missing required key \"file\"");
+  EXPECT_EQ(errorWith(R"("lights": [{"position": [0, 0, 0]}])"),
+            "s.json: lights[0]: missing required key \"intensity\"");
+  EXPECT_EQ(errorWith(R"("materials": {"lamp": {"type": "emissive"}})"),
+            "s.json: materials.lamp: missing required key \"radiance\"");
+}
+
+TEST_F(SceneLoader, NumberThatOverflowsIsNotFinite) {
+  EXPECT_EQ(errorWith(R"("spheres": [{"position": [0, 0, 0], "radius": 1e400}])"),
+            "s.json: spheres[0].radius: expected a finite number, got 1e400");
+  EXPECT_EQ(cameraError(R"({"position": [0, -1e400, 0]})"),
+            "s.json: camera.position[1]: expected a finite number, got -1e400");
+  // Finite as a double, infinite as the float it is stored in.
+  EXPECT_EQ(cameraError(R"({"position": [1e39, 0, 0]})"),
+            "s.json: camera.position[0]: expected a finite number within single precision, got "
+            "1e+39");
+}
+
+TEST_F(SceneLoader, NegativeRadius) {
+  EXPECT_EQ(errorWith(R"("spheres": [{"position": [0, 0, 0], "radius": 1},)"
+                      R"(           {"position": [0, 0, 0], "radius": -1}])"),
+            "s.json: spheres[1].radius: expected a positive number, got -1");
+  EXPECT_EQ(
+      errorWith(
+          R"("lights": [{"type": "sphere", "position": [0, 0, 0], "intensity": 1, "radius": 0}])"),
+      "s.json: lights[0].radius: expected a positive number, got 0");
+}
+
+TEST_F(SceneLoader, ZeroSizedImage) {
+  EXPECT_EQ(cameraError(R"({"width": 0})"),
+            "s.json: camera.width: expected a positive integer, got 0");
+  EXPECT_EQ(cameraError(R"({"height": 2.5})"),
+            "s.json: camera.height: expected a positive integer, got 2.5");
+  EXPECT_EQ(cameraError(R"({"width": 5000000000})"),
+            "s.json: camera.width: expected a positive integer of at most 4294967295, got "
+            "5000000000");
+}
+
+TEST_F(SceneLoader, ZeroSamplesPerPixel) {
+  EXPECT_EQ(cameraError(R"({"spp": 0})"), "s.json: camera.spp: expected a positive integer, got 0");
+  EXPECT_EQ(cameraError(R"({"rays": -4})"),
+            "s.json: camera.rays: expected a positive integer, got -4");
+  EXPECT_EQ(cameraError(R"({"spp": 4, "rays": 4})"),
+            "s.json: camera: expected either \"spp\" or \"rays\", got both");
+}
+
+TEST_F(SceneLoader, UnknownMaterialType) {
+  EXPECT_EQ(errorWith(R"("materials": {"m": {"type": "metal"}})"),
+            "s.json: materials.m.type: expected one of \"diffuse\", \"mirror\", \"glass\", "
+            "\"emissive\", got a string \"metal\"");
+  EXPECT_EQ(
+      errorWith(
+          R"("spheres": [{"position": [0, 0, 0], "radius": 1, "material": {"type": "glas"}}])"),
+      "s.json: spheres[0].material.type: expected one of \"diffuse\", \"mirror\", \"glass\", "
+      "\"emissive\", got a string \"glas\", did you mean \"glass\"?");
+}
+
+TEST_F(SceneLoader, UnknownLightType) {
+  EXPECT_EQ(errorWith(R"("lights": [{"type": "spot", "position": [0, 0, 0], "intensity": 1}])"),
+            "s.json: lights[0].type: expected \"point\" or \"sphere\", got a string \"spot\"");
+}
+
+TEST_F(SceneLoader, UnknownNamedMaterial) {
+  const std::string materials =
+      R"("materials": {"red": {"type": "diffuse", "color": [1, 0, 0]}}, )";
+  EXPECT_EQ(errorWith(materials +
+                      R"("spheres": [{"position": [0, 0, 0], "radius": 1, "material": "rde"}])"),
+            "s.json: spheres[0].material: unknown material \"rde\", did you mean \"red\"?");
+  EXPECT_EQ(errorWith(materials +
+                      R"("spheres": [{"position": [0, 0, 0], "radius": 1, "material": "chrome"}])"),
+            "s.json: spheres[0].material: unknown material \"chrome\", expected \"diffuse\", "
+            "\"mirror\", \"glass\" or a name defined under \"materials\"");
+  EXPECT_EQ(
+      errorWith(R"("spheres": [{"position": [0, 0, 0], "radius": 1, "material": "emissive"}])"),
+      "s.json: spheres[0].material: unknown material \"emissive\", expected \"diffuse\", "
+      "\"mirror\", \"glass\" or a name defined under \"materials\"; an emissive material is "
+      "written as an object: {\"type\": \"emissive\", \"radiance\": ...}");
+}
+
+TEST_F(SceneLoader, UnusedMaterialFields) {
+  EXPECT_EQ(errorWith(R"("spheres": [{"position": [0, 0, 0], "radius": 1,)"
+                      R"(             "material": "diffuse", "ior": 1.5}])"),
+            "s.json: spheres[0].ior: not used by a \"diffuse\" material");
+  EXPECT_EQ(
+      errorWith(
+          R"("materials": {"r": {"type": "diffuse"}},)"
+          R"("spheres": [{"position": [0, 0, 0], "radius": 1, "material": "r", "color": 1}])"),
+      "s.json: spheres[0].color: not used with the named material \"r\"");
+  EXPECT_EQ(errorWith(R"("spheres": [{"position": [0, 0, 0], "radius": 1,)"
+                      R"(             "material": {"type": "glass"}, "ior": 1.3}])"),
+            "s.json: spheres[0].ior: not used beside an inline material (put it inside "
+            "\"material\")");
+  EXPECT_EQ(errorWith(R"("spheres": [{"position": [0, 0, 0], "radius": 1, "ior": 1.3}])"),
+            "s.json: spheres[0].ior: not used without a \"glass\" material");
+  EXPECT_EQ(errorWith(R"("materials": {"l": {"type": "emissive", "radiance": 1, "color": 1}})"),
+            "s.json: materials.l.color: not used by an \"emissive\" material");
+  EXPECT_EQ(errorWith(R"("lights": [{"position": [0, 0, 0], "intensity": 1, "radius": 1}])"),
+            "s.json: lights[0].radius: not used by a point light (only \"sphere\" lights have a "
+            "radius)");
+}
+
+TEST_F(SceneLoader, InvalidColourAndIor) {
+  EXPECT_EQ(
+      errorWith(R"("spheres": [{"position": [0, 0, 0], "radius": 1, "color": [1, -0.5, 0]}])"),
+      "s.json: spheres[0].color[1]: expected a non-negative number, got -0.5");
+  EXPECT_EQ(errorWith(R"("materials": {"g": {"type": "glass", "ior": 0}})"),
+            "s.json: materials.g.ior: expected a positive number, got 0");
+  EXPECT_EQ(errorWith(R"("lights": [{"position": [0, 0, 0], "intensity": -1}])"),
+            "s.json: lights[0].intensity: expected a non-negative number, got -1");
+}
+
+TEST_F(SceneLoader, MissingObjFile) {
+  EXPECT_EQ(errorWith(R"("objects": [{"file": "meshes/x.obj"}])"),
+            "s.json: objects[0].file: cannot open \"meshes/x.obj\" (No such file or directory)");
+}
+
+TEST_F(SceneLoader, MalformedObjFileNamesItsLine) {
+  dir.write("meshes/bad.obj", "# four vertices\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 99\n");
+  EXPECT_EQ(errorWith(R"("objects": [{"file": "meshes/bad.obj"}])"),
+            "s.json: objects[0].file: meshes/bad.obj:6: face index 99 out of range (4 vertices)");
+}
+
+TEST_F(SceneLoader, JsonIsValidatedBeforeMeshesLoad) {
+  EXPECT_EQ(
+      errorWith(R"("objects": [{"file": "missing.obj"}], "lights": [{"positon": [0, 0, 0]}])"),
+      "s.json: lights[0].positon: unknown key, did you mean \"position\"?");
+}
+
+TEST_F(SceneLoader, DuplicateId) {
+  EXPECT_EQ(errorWith(R"("spheres": [{"position": [0, 0, 0], "radius": 1},
+                                    {"id": "lamp", "position": [0, 0, 0], "radius": 1}],
+                         "lights": [{"id": "lamp", "position": [0, 0, 0], "intensity": 1}])"),
+            "s.json: lights[0].id: duplicate id \"lamp\", already used by spheres[1]");
+  EXPECT_EQ(errorWith(R"("lights": [{"id": "camera", "position": [0, 0, 0], "intensity": 1}])"),
+            "s.json: lights[0].id: expected an id other than \"camera\", which names the camera, "
+            "got a string \"camera\"");
+}
+
+TEST_F(SceneLoader, ConflictingCameraKeys) {
+  EXPECT_EQ(cameraError(R"({"fov": 40, "intrinsics": {"fx": 1, "fy": 1, "cx": 0, "cy": 0}})"),
+            "s.json: camera: expected either \"fov\" or \"intrinsics\", got both");
+  EXPECT_EQ(cameraError(R"({"rotation": [0, 0, 0], "look_at": [0, 0, -1]})"),
+            "s.json: camera: expected either \"rotation\" or \"look_at\", got both");
+  EXPECT_EQ(
+      cameraError(R"({"position": [0, 0, 0],)"
+                  R"( "extrinsics": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]})"),
+      "s.json: camera: expected either \"extrinsics\" or \"position\", got both");
+  EXPECT_EQ(cameraError(R"({"up": [0, 0, 1]})"), "s.json: camera.up: not used without \"look_at\"");
+}
+
+TEST_F(SceneLoader, InvalidCameraGeometry) {
+  EXPECT_EQ(cameraError(R"({"position": [1, 2, 3], "look_at": [1, 2, 3]})"),
+            "s.json: camera.look_at: expected a point other than the camera position, got an "
+            "array [1,2,3]");
+  EXPECT_EQ(cameraError(R"({"look_at": [0, 0, -5], "up": [0, 0, 2]})"),
+            "s.json: camera.up: expected a direction that is not parallel to the viewing "
+            "direction, got an array [0,0,2]");
+  EXPECT_EQ(cameraError(R"({"look_at": [0, -5, 0]})"),
+            "s.json: camera: missing required key \"up\" (the view is parallel to the default up "
+            "[0, 1, 0])");
+  EXPECT_EQ(cameraError(R"({"fov": 180})"),
+            "s.json: camera.fov: expected a number between 0 and 180 (exclusive), got 180");
+  EXPECT_EQ(cameraError(R"({"aperture_radius": 0.1})"),
+            "s.json: camera: missing required key \"focus_distance\" (an open aperture without "
+            "\"look_at\" has nothing else to focus on)");
+  EXPECT_EQ(cameraError(R"({"aperture_radius": -0.1})"),
+            "s.json: camera.aperture_radius: expected a non-negative number, got -0.1");
+}
+
+TEST_F(SceneLoader, InvalidCameraMatrices) {
+  EXPECT_EQ(
+      cameraError(R"({"extrinsics": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 1, 1]]})"),
+      "s.json: camera.extrinsics[3]: expected [0, 0, 0, 1], got an array [0,0,1,1]");
+  EXPECT_EQ(
+      cameraError(R"({"extrinsics": [[2, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]})"),
+      "s.json: camera.extrinsics: expected a rotation (orthonormal, determinant +1) in the "
+      "upper-left 3x3 block, got an array [[2,0,0,0],[0,1,0,0],[0,0,1,0],[0,0,0,1]]");
+  EXPECT_EQ(cameraError(R"({"extrinsics": [[1, 0, 0], [0, 1, 0], [0, 0, 1]]})"),
+            "s.json: camera.extrinsics: expected a 4x4 matrix (an array of 4 rows of 4 numbers), "
+            "got an array [[1,0,0],[0,1,0],[0,0,1]]");
+  EXPECT_EQ(cameraError(R"({"intrinsics": [[100, 0, 32], [0, 100, 24], [0, 0, 2]]})"),
+            "s.json: camera.intrinsics[2]: expected [0, 0, 1], got an array [0,0,2]");
+  EXPECT_EQ(cameraError(R"({"intrinsics": {"fx": 100, "fy": 100, "cx": 32}})"),
+            "s.json: camera.intrinsics: missing required key \"cy\"");
+}
+
+TEST_F(SceneLoader, InvalidRenderSettings) {
+  EXPECT_EQ(errorWith(R"("render": {"max_depth": 0})"),
+            "s.json: render.max_depth: expected a positive integer, got 0");
+  EXPECT_EQ(errorWith(R"("render": {"integrator": "pth"})"),
+            "s.json: render.integrator: expected \"path\" or \"direct\", got a string \"pth\", did "
+            "you mean \"path\"?");
+  EXPECT_EQ(errorWith(R"("render": {"seed": -1})"),
+            "s.json: render.seed: expected a non-negative integer, got -1");
+  EXPECT_EQ(errorWith(R"("render": {"gamma": "sRGB"})"),
+            "s.json: render.gamma: expected a positive number or \"srgb\", got a string \"sRGB\", "
+            "did you mean \"srgb\"?");
+  EXPECT_EQ(errorWith(R"("render": {"gamma": 0})"),
+            "s.json: render.gamma: expected a positive number or \"srgb\", got 0");
+}
+
+TEST_F(SceneLoader, InvalidObjectKeys) {
+  EXPECT_EQ(errorWith(R"("objects": [{"file": "a.obj", "scale": [1, 0, 1]}])"),
+            "s.json: objects[0].scale[1]: expected a non-zero number, got 0");
+  EXPECT_EQ(errorWith(R"("objects": [{"file": "a.obj", "smooth": "yes"}])"),
+            "s.json: objects[0].smooth: expected true or false, got a string \"yes\"");
+  EXPECT_EQ(errorWith(R"("spheres": [{"position": [0, 0, 0], "center": [0, 0, 0], "radius": 1}])"),
+            "s.json: spheres[0]: expected either \"position\" or \"center\", got both");
+}
+
+TEST_F(SceneLoader, AnimationIsNotSupportedYet) {
+  EXPECT_EQ(errorWith(R"("animation": {"frames": 2})"),
+            "s.json: animation: animation is not supported yet");
+}
+
+TEST_F(SceneLoader, SceneFileThatCannotBeOpened) {
+  const std::string missing = dir.path() + "/nothing.json";
+  EXPECT_EQ(errorOf([&] { loadSceneFile(missing); }),
+            missing + ": cannot open scene file (No such file or directory)");
+  EXPECT_EQ(errorOf([&] { loadSceneFile(dir.path()); }),
+            dir.path() + ": cannot open scene file (Is a directory)");
+}
+
+// ---------------------------------------------------------------------------------------------
+// Accepted scenes.
+
+TEST_F(SceneLoader, DefaultsFollowTheContract) {
+  const SceneDesc scene = parse(R"({"camera": {},
+      "spheres": [{"position": [1, 2, 3], "radius": 2}],
+      "lights": [{"position": [0, 9, 0], "intensity": 100}]})");
+  EXPECT_EQ(scene.file, "s.json");
+  const CameraDesc& c = scene.camera;
+  EXPECT_EQ(c.width, 512u);
+  EXPECT_EQ(c.height, 512u);
+  EXPECT_FLOAT_EQ(c.fov, 60);
+  EXPECT_FALSE(c.intrinsics);
+  expectVec3(c.position, 0, 0, 0);
+  expectVec3(c.rotation, 0, 0, 0);
+  EXPECT_FALSE(c.lookAt);
+  expectVec3(c.up, 0, 1, 0);
+  EXPECT_FALSE(c.extrinsicsR);
+  EXPECT_FALSE(c.extrinsicsT);
+  EXPECT_EQ(c.spp, 64u);
+  EXPECT_FLOAT_EQ(c.apertureRadius, 0);
+  EXPECT_FALSE(c.focusDistance);
+
+  EXPECT_EQ(scene.render.spp, 64u);
+  EXPECT_EQ(scene.render.maxDepth, 8u);
+  EXPECT_EQ(scene.render.integrator, IntegratorType::Path);
+  EXPECT_TRUE(scene.render.antialiasing);
+  EXPECT_EQ(scene.render.seed, 0u);
+  EXPECT_EQ(scene.output.curve, GammaCurve::Power);
+  EXPECT_FLOAT_EQ(scene.output.gamma, 2.2f);
+  EXPECT_FLOAT_EQ(scene.output.exposure, 0);
+
+  ASSERT_EQ(scene.spheres.size(), 1u);
+  EXPECT_EQ(scene.spheres[0].where, "spheres[0]");
+  EXPECT_EQ(scene.spheres[0].id, "");
+  expectVec3(scene.spheres[0].position, 1, 2, 3);
+  EXPECT_EQ(scene.spheres[0].material.type, MaterialType::Diffuse);
+  expectVec3(scene.spheres[0].material.color, 0.8f, 0.8f, 0.8f);
+
+  ASSERT_EQ(scene.lights.size(), 1u);
+  EXPECT_EQ(scene.lights[0].type, LightType::Point);
+  EXPECT_FLOAT_EQ(scene.lights[0].intensity, 100);
+  expectVec3(scene.lights[0].color, 1, 1, 1);
+  expectVec3(scene.environment, 0, 0, 0);
+}
+
+TEST_F(SceneLoader, RenderSettings) {
+  const SceneDesc scene = parse(R"({"camera": {"rays": 16},
+      "render": {"max_depth": 3, "integrator": "direct", "antialiasing": false,
+                 "seed": 18446744073709551615, "gamma": "srgb", "exposure": -17.59}})");
+  EXPECT_EQ(scene.render.spp, 16u);
+  EXPECT_EQ(scene.render.maxDepth, 3u);
+  EXPECT_EQ(scene.render.integrator, IntegratorType::Direct);
+  EXPECT_FALSE(scene.render.antialiasing);
+  EXPECT_EQ(scene.render.seed, UINT64_MAX);
+  EXPECT_EQ(scene.output.curve, GammaCurve::Srgb);
+  EXPECT_FLOAT_EQ(scene.output.exposure, -17.59f);
+  EXPECT_FLOAT_EQ(parse(R"({"camera": {}, "render": {"gamma": 1.8}})").output.gamma, 1.8f);
+}
+
+TEST_F(SceneLoader, CameraWithFovAndEulerRotation) {
+  const CameraDesc c = camera(R"({"width": 640, "height": 480.0, "fov": 45, "position": [0, 0, 55],
+                                  "rotation": [10, 20, 30], "spp": 4})");
+  EXPECT_EQ(c.width, 640u);
+  EXPECT_EQ(c.height, 480u);
+  EXPECT_FLOAT_EQ(c.fov, 45);
+  expectVec3(c.position, 0, 0, 55);
+  expectVec3(c.rotation, 10, 20, 30);
+  EXPECT_EQ(c.spp, 4u);
+}
+
+TEST_F(SceneLoader, CameraWithIntrinsicsObject) {
+  const CameraDesc c =
+      camera(R"({"intrinsics": {"fx": 500, "fy": 400, "cx": 320.5, "cy": 240.5}})");
+  ASSERT_TRUE(c.intrinsics);
+  const float expected[3][3] = {{500, 0, 320.5f}, {0, 400, 240.5f}, {0, 0, 1}};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) EXPECT_FLOAT_EQ(c.intrinsics->m[i][j], expected[i][j]);
+}
+
+TEST_F(SceneLoader, CameraWithIntrinsicsMatrix) {
+  const CameraDesc c = camera(R"({"intrinsics": [[500, 0.5, 320], [0, 400, 240], [0, 0, 1]]})");
+  ASSERT_TRUE(c.intrinsics);
+  const float expected[3][3] = {{500, 0.5f, 320}, {0, 400, 240}, {0, 0, 1}};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) EXPECT_FLOAT_EQ(c.intrinsics->m[i][j], expected[i][j]);
+}
+
+TEST_F(SceneLoader, CameraWithLookAt) {
+  const CameraDesc c = camera(R"({"position": [1, 2, 3], "look_at": [0, 0, 0], "up": [0, 0, 1],
+                                  "aperture_radius": 0.5})");
+  expectVec3(c.position, 1, 2, 3);
+  ASSERT_TRUE(c.lookAt);
+  expectVec3(*c.lookAt, 0, 0, 0);
+  expectVec3(c.up, 0, 0, 1);
+  EXPECT_FLOAT_EQ(c.apertureRadius, 0.5f);
+  EXPECT_FALSE(c.focusDistance);  // the distance to look_at, resolved later
+}
+
+TEST_F(SceneLoader, CameraWithExtrinsics) {
+  // A half turn about x (OpenCV looking down -z of the world from [0, 0, 55]) and t = -R c.
+  const CameraDesc c = camera(R"({"extrinsics": [[1, 0, 0, 0], [0, -1, 0, 0], [0, 0, -1, 55],
+                                                 [0, 0, 0, 1]],
+                                  "aperture_radius": 1, "focus_distance": 50})");
+  ASSERT_TRUE(c.extrinsicsR);
+  ASSERT_TRUE(c.extrinsicsT);
+  const float expected[3][3] = {{1, 0, 0}, {0, -1, 0}, {0, 0, -1}};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) EXPECT_FLOAT_EQ(c.extrinsicsR->m[i][j], expected[i][j]);
+  expectVec3(*c.extrinsicsT, 0, 0, 55);
+  ASSERT_TRUE(c.focusDistance);
+  EXPECT_FLOAT_EQ(*c.focusDistance, 50);
+}
+
+TEST_F(SceneLoader, MaterialForms) {
+  const SceneDesc scene = parse(R"({"camera": {},
+      "materials": {"red": {"type": "diffuse", "color": [0.9, 0.1, 0.1]},
+                    "glass": {"type": "mirror"},
+                    "lamp": {"type": "emissive", "radiance": [4, 3, 2]}},
+      "spheres": [
+        {"position": [0, 0, 0], "radius": 1, "material": "red"},
+        {"position": [0, 0, 0], "radius": 1,
+         "material": {"type": "glass", "ior": 1.33, "color": 0.9}},
+        {"position": [0, 0, 0], "radius": 1, "material": "mirror", "color": [0.5, 0.6, 0.7]},
+        {"position": [0, 0, 0], "radius": 1, "material": "diffuse"},
+        {"position": [0, 0, 0], "radius": 1, "color": 0.25},
+        {"position": [0, 0, 0], "radius": 1, "material": "glass"},
+        {"position": [0, 0, 0], "radius": 1, "material": "lamp"}]})");
+  ASSERT_EQ(scene.spheres.size(), 7u);
+  const MaterialDesc& named = scene.spheres[0].material;
+  EXPECT_EQ(named.type, MaterialType::Diffuse);
+  expectVec3(named.color, 0.9f, 0.1f, 0.1f);
+
+  const MaterialDesc& inlined = scene.spheres[1].material;
+  EXPECT_EQ(inlined.type, MaterialType::Glass);
+  EXPECT_FLOAT_EQ(inlined.ior, 1.33f);
+  expectVec3(inlined.color, 0.9f, 0.9f, 0.9f);
+
+  const MaterialDesc& shorthand = scene.spheres[2].material;
+  EXPECT_EQ(shorthand.type, MaterialType::Mirror);
+  expectVec3(shorthand.color, 0.5f, 0.6f, 0.7f);
+
+  EXPECT_EQ(scene.spheres[3].material.type, MaterialType::Diffuse);
+  expectVec3(scene.spheres[3].material.color, 0.8f, 0.8f, 0.8f);
+
+  EXPECT_EQ(scene.spheres[4].material.type, MaterialType::Diffuse);
+  expectVec3(scene.spheres[4].material.color, 0.25f, 0.25f, 0.25f);
+
+  // The library's "glass" (a mirror) wins over the shorthand of the same name.
+  EXPECT_EQ(scene.spheres[5].material.type, MaterialType::Mirror);
+
+  EXPECT_EQ(scene.spheres[6].material.type, MaterialType::Emissive);
+  expectVec3(scene.spheres[6].material.radiance, 4, 3, 2);
+}
+
+TEST_F(SceneLoader, ShorthandDefaults) {
+  const SceneDesc scene = parse(R"({"camera": {}, "spheres": [
+      {"center": [0, 0, 0], "radius": 1, "material": "glass"},
+      {"center": [0, 0, 0], "radius": 1, "material": "glass", "ior": 0.75},
+      {"center": [0, 0, 0], "radius": 1, "material": "mirror"}]})");
+  EXPECT_EQ(scene.spheres[0].material.type, MaterialType::Glass);
+  EXPECT_FLOAT_EQ(scene.spheres[0].material.ior, 1.5f);
+  expectVec3(scene.spheres[0].material.color, 1, 1, 1);
+  EXPECT_FLOAT_EQ(scene.spheres[1].material.ior, 0.75f);
+  expectVec3(scene.spheres[2].material.color, 1, 1, 1);
+}
+
+TEST_F(SceneLoader, LightsAndEnvironment) {
+  const SceneDesc scene = parse(R"({"camera": {},
+      "lights": [{"id": "key", "type": "sphere", "position": [1, 2, 3], "radius": 0.5,
+                  "intensity": 1e10, "color": [1, 0.5, 0.25]},
+                 {"type": "point", "position": [0, 0, 0], "intensity": 0, "color": 2}],
+      "environment": {"color": [0.1, 0.2, 0.3]}})");
+  ASSERT_EQ(scene.lights.size(), 2u);
+  const LightDesc& sphere = scene.lights[0];
+  EXPECT_EQ(sphere.id, "key");
+  EXPECT_EQ(sphere.where, "lights[0]");
+  EXPECT_EQ(sphere.type, LightType::Sphere);
+  expectVec3(sphere.position, 1, 2, 3);
+  EXPECT_FLOAT_EQ(sphere.radius, 0.5f);
+  EXPECT_FLOAT_EQ(sphere.intensity, 1e10f);
+  expectVec3(sphere.color, 1, 0.5f, 0.25f);
+  EXPECT_EQ(scene.lights[1].type, LightType::Point);
+  expectVec3(scene.lights[1].color, 2, 2, 2);
+  expectVec3(scene.environment, 0.1f, 0.2f, 0.3f);
+}
+
+TEST_F(SceneLoader, ObjectsResolveFilesAndKeepTheirOwnMaterials) {
+  dir.write("meshes/tri.obj", kTriangleObj);
+  const SceneDesc scene = parse(R"({"camera": {}, "objects": [
+      {"id": "a", "file": "meshes/tri.obj", "position": [1, 2, 3], "rotation": [0, 90, 0],
+       "scale": [2, -1, 3], "smooth": false},
+      {"file": "meshes/tri.obj", "scale": 0.5, "color": [0.2, 0.3, 0.4]},
+      {"file": "meshes/tri.obj", "material": "glass", "ior": 1.2}]})");
+  ASSERT_EQ(scene.objects.size(), 3u);
+  const ObjectDesc& a = scene.objects[0];
+  EXPECT_EQ(a.id, "a");
+  EXPECT_EQ(a.where, "objects[0]");
+  EXPECT_EQ(a.file, (std::filesystem::path(dir.path()) / "meshes/tri.obj").string());
+  expectVec3(a.position, 1, 2, 3);
+  expectVec3(a.rotation, 0, 90, 0);
+  expectVec3(a.scale, 2, -1, 3);
+  EXPECT_FALSE(a.smooth);
+  EXPECT_FALSE(a.material);  // the mesh's own (here the default) materials apply
+  EXPECT_EQ(a.mesh.triangles.size(), 1u);
+
+  expectVec3(scene.objects[1].scale, 0.5f, 0.5f, 0.5f);
+  EXPECT_TRUE(scene.objects[1].smooth);
+  ASSERT_TRUE(scene.objects[1].material);
+  EXPECT_EQ(scene.objects[1].material->type, MaterialType::Diffuse);
+  expectVec3(scene.objects[1].material->color, 0.2f, 0.3f, 0.4f);
+
+  ASSERT_TRUE(scene.objects[2].material);
+  EXPECT_EQ(scene.objects[2].material->type, MaterialType::Glass);
+  EXPECT_FLOAT_EQ(scene.objects[2].material->ior, 1.2f);
+}
+
+TEST_F(SceneLoader, LoadSceneFileResolvesObjFilesNextToTheScene) {
+  dir.write("scenes/meshes/tri.obj", kTriangleObj);
+  const std::string path = dir.write(
+      "scenes/one.json", R"({"camera": {"width": 32}, "objects": [{"file": "meshes/tri.obj"}]})");
+  const SceneDesc scene = loadSceneFile(path);
+  EXPECT_EQ(scene.file, path);
+  EXPECT_EQ(scene.camera.width, 32u);
+  ASSERT_EQ(scene.objects.size(), 1u);
+  EXPECT_EQ(scene.objects[0].mesh.positions.size(), 3u);
+
+  const std::string bad = dir.write("scenes/bad.json", R"({"camera": {"width": -3}})");
+  EXPECT_EQ(errorOf([&] { loadSceneFile(bad); }),
+            bad + ": camera.width: expected a positive integer, got -3");
+}
+
+TEST_F(SceneLoader, KeysThatAreNotIdentifiersAreQuotedInPaths) {
+  EXPECT_EQ(errorWith(R"("materials": {"red wall": {"type": "diffuse", "color": -1}})"),
+            "s.json: materials[\"red wall\"].color: expected a non-negative number, got -1");
+}
+
+TEST(DidYouMean, EditDistanceCountsTranspositionsOnce) {
+  EXPECT_EQ(editDistance("radius", "radius"), 0u);
+  EXPECT_EQ(editDistance("raduis", "radius"), 1u);
+  EXPECT_EQ(editDistance("colour", "color"), 1u);
+  EXPECT_EQ(editDistance("", "abc"), 3u);
+  EXPECT_EQ(editDistance("kitten", "sitting"), 3u);
+}
+
+TEST(DidYouMean, SuggestsOnlyCloseCandidates) {
+  const std::vector<std::string> keys = {"position", "radius", "fov", "id"};
+  EXPECT_EQ(closestMatch("raduis", keys), "radius");
+  EXPECT_EQ(closestMatch("RADIUS", keys), "radius");
+  EXPECT_EQ(closestMatch("postion", keys), "position");
+  EXPECT_EQ(closestMatch("fvo", keys), "fov");
+  EXPECT_EQ(closestMatch("size", keys), "");
+  EXPECT_EQ(closestMatch("colour", keys), "");
+}
+
+}  // namespace
+}  // namespace candela
