@@ -1,0 +1,162 @@
+// CUDA entry points: upload, the progressive render kernel and the host loop. All rendering
+// logic is the shared integrator; this file only maps pixels to threads.
+#include "backends/cuda/cuda_renderer.h"
+
+#include <chrono>
+
+#include "backends/cuda/cuda_check.h"
+#include "backends/cuda/device_buffer.h"
+#include "render/render_pixel.h"
+
+namespace candela {
+
+std::string formatBytes(size_t bytes) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.1f MiB", double(bytes) / (1024.0 * 1024.0));
+  return buf;
+}
+
+void throwCudaError(cudaError_t err, const char* call, const char* file, int line) {
+  throw CudaError(std::string("CUDA error: ") + cudaGetErrorString(err) + " in " + call + " (" +
+                  file + ":" + std::to_string(line) + ")");
+}
+
+bool cudaBackendAvailable(std::string* reason) {
+  int count = 0;
+  const cudaError_t err = cudaGetDeviceCount(&count);
+  if (err != cudaSuccess) {
+    cudaGetLastError();
+    if (reason) *reason = std::string("no usable CUDA device (") + cudaGetErrorString(err) + ")";
+    return false;
+  }
+  if (count == 0) {
+    if (reason) *reason = "no CUDA device found";
+    return false;
+  }
+  return true;
+}
+
+namespace {
+
+constexpr int kBlockWidth = 16, kBlockHeight = 8;
+
+// Ray counts are summed per warp before one atomic add, so counting costs next to nothing.
+__device__ void addCounters(unsigned long long* global, const RayCounters& c) {
+  unsigned long long v[3] = {c.camera, c.bounce, c.shadow};
+  for (int i = 0; i < 3; ++i) {
+    for (int offset = 16; offset > 0; offset /= 2) v[i] += __shfl_down_sync(0xffffffffu, v[i], offset);
+    if ((threadIdx.x + threadIdx.y * blockDim.x) % 32 == 0) atomicAdd(&global[i], v[i]);
+  }
+}
+
+__global__ void renderPassKernel(SceneView scene, uint32_t sampleBegin, uint32_t sampleCount,
+                                 float3* accumulation, unsigned long long* rayCounts) {
+  const uint32_t x = blockIdx.x * blockDim.x + threadIdx.x;
+  const uint32_t y = blockIdx.y * blockDim.y + threadIdx.y;
+  RayCounters counters;
+  if (x < scene.camera.width && y < scene.camera.height) {
+    const Vec3 sum = renderPixelSamples(scene, x, y, sampleBegin, sampleCount, counters);
+    float3& acc = accumulation[size_t(y) * scene.camera.width + x];
+    acc.x += sum.x;
+    acc.y += sum.y;
+    acc.z += sum.z;
+  }
+  addCounters(rayCounts, counters);  // every lane takes part in the shuffle
+}
+
+}  // namespace
+
+struct CudaScene::Impl {
+  DeviceBuffer<Material> materials;
+  DeviceBuffer<Sphere> spheres;
+  DeviceBuffer<Vec3> positions, normals;
+  DeviceBuffer<Triangle> triangles;
+  DeviceBuffer<Light> lights;
+  DeviceBuffer<BvhNode> nodes;
+  DeviceBuffer<uint32_t> primIndices;
+  SceneView view;
+};
+
+CudaScene::CudaScene(const SceneData& scene) : impl_(new Impl) {
+  std::string reason;
+  if (!cudaBackendAvailable(&reason)) throw CudaError(reason);
+  Impl& d = *impl_;
+  d.materials.upload(scene.materials);
+  d.spheres.upload(scene.spheres);
+  d.positions.upload(scene.positions);
+  d.normals.upload(scene.normals);
+  d.triangles.upload(scene.triangles);
+  d.lights.upload(scene.lights);
+  d.nodes.upload(scene.nodes);
+  d.primIndices.upload(scene.primIndices);
+  d.view = scene.view();  // counts, camera and settings; pointers replaced below
+  d.view.materials = d.materials.get();
+  d.view.spheres = d.spheres.get();
+  d.view.positions = d.positions.get();
+  d.view.normals = d.normals.get();
+  d.view.triangles = d.triangles.get();
+  d.view.lights = d.lights.get();
+  d.view.nodes = d.nodes.get();
+  d.view.primIndices = d.primIndices.get();
+}
+
+CudaScene::~CudaScene() = default;
+
+RenderResult CudaScene::render(const CudaRenderOptions& options) const {
+  const auto start = std::chrono::steady_clock::now();
+  const SceneView& view = impl_->view;
+  const uint32_t width = view.camera.width, height = view.camera.height;
+  const uint32_t spp = view.settings.spp;
+  const uint32_t perPass = options.samplesPerPass > 0 ? options.samplesPerPass : 1;
+
+  DeviceBuffer<float3> accumulation(size_t(width) * height);
+  accumulation.zero();
+  DeviceBuffer<unsigned long long> rayCounts(3);
+  rayCounts.zero();
+
+  cudaEvent_t passDone;
+  CANDELA_CUDA_CHECK(cudaEventCreateWithFlags(&passDone, cudaEventBlockingSync | cudaEventDisableTiming));
+  const dim3 block(kBlockWidth, kBlockHeight);
+  const dim3 grid((width + kBlockWidth - 1) / kBlockWidth, (height + kBlockHeight - 1) / kBlockHeight);
+
+  RenderResult result;
+  uint32_t pass = 0;
+  for (uint32_t begin = 0; begin < spp; begin += perPass, ++pass) {
+    if (options.cancel && options.cancel->load()) {
+      result.cancelled = true;
+      break;
+    }
+    const uint32_t count = spp - begin < perPass ? spp - begin : perPass;
+    renderPassKernel<<<grid, block>>>(view, begin, count, accumulation.get(), rayCounts.get());
+    cudaError_t err = cudaGetLastError();
+    if (err == cudaSuccess) err = cudaEventRecord(passDone);
+    if (err == cudaSuccess) err = cudaEventSynchronize(passDone);  // sleeps, does not spin
+    if (err != cudaSuccess) {
+      cudaEventDestroy(passDone);
+      throw CudaError("CUDA kernel failed while rendering " + options.sceneLabel + " (pass " +
+                      std::to_string(pass) + ", samples " + std::to_string(begin) + "-" +
+                      std::to_string(begin + count - 1) + "): " + cudaGetErrorString(err));
+    }
+    if (options.progress) options.progress(double(begin + count) / spp);
+  }
+  cudaEventDestroy(passDone);
+
+  std::vector<float3> sums;
+  accumulation.download(&sums);
+  std::vector<unsigned long long> counts;
+  rayCounts.download(&counts);
+  result.image = ImageRGB(width, height);
+  const float inv = 1.0f / float(spp);
+  for (size_t i = 0; i < sums.size(); ++i) {
+    result.image.pixels[3 * i] = sums[i].x * inv;
+    result.image.pixels[3 * i + 1] = sums[i].y * inv;
+    result.image.pixels[3 * i + 2] = sums[i].z * inv;
+  }
+  result.rays.camera = counts[0];
+  result.rays.bounce = counts[1];
+  result.rays.shadow = counts[2];
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+}  // namespace candela
