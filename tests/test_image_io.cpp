@@ -1,7 +1,6 @@
 // Image files: float round trips, PFM orientation, the 8-bit encoding formulas, PNG bytes on
 // disk, and the failure guarantees of writeImage (no partial file, no stray temporary file).
 #include <gtest/gtest.h>
-
 #include <unistd.h>
 
 #include <algorithm>
@@ -63,8 +62,8 @@ class ImageIoTest : public ::testing::Test {
 ImageRGB testImage(uint32_t w, uint32_t h) {
   ImageRGB image(w, h);
   for (size_t i = 0; i < image.pixels.size(); ++i)
-    image.pixels[i] = float(i) * 0.1f - 1.0f + (i % 7 == 0 ? 1e-30f : 0.0f) +
-                      (i % 11 == 0 ? 3.4e30f : 0.0f);
+    image.pixels[i] =
+        float(i) * 0.1f - 1.0f + (i % 7 == 0 ? 1e-30f : 0.0f) + (i % 11 == 0 ? 3.4e30f : 0.0f);
   return image;
 }
 
@@ -148,8 +147,8 @@ TEST(Encode8bit, Srgb) {
   OutputDesc out;
   out.curve = GammaCurve::Srgb;
   for (float l : kSamples) EXPECT_EQ(encode8bit(l, out), expectedSrgb(l)) << l;
-  EXPECT_EQ(encode8bit(0.002f, out), 7);    // linear segment: 0.02584 * 255 = 6.59
-  EXPECT_EQ(encode8bit(0.18f, out), 118);   // mid grey
+  EXPECT_EQ(encode8bit(0.002f, out), 7);   // linear segment: 0.02584 * 255 = 6.59
+  EXPECT_EQ(encode8bit(0.18f, out), 118);  // mid grey
   EXPECT_EQ(encode8bit(2.0f, out), 255);
 }
 

@@ -59,8 +59,8 @@ void writeFileAtomically(const std::string& path, const std::string& bytes) {
 
   const std::string temp = temporaryPathFor(target);
   std::FILE* file = std::fopen(temp.c_str(), "wb");
-  if (!file) fail(path, std::string("cannot create a file in that directory: ") +
-                            std::strerror(errno));
+  if (!file)
+    fail(path, std::string("cannot create a file in that directory: ") + std::strerror(errno));
   const bool written = writeAndSync(file, bytes);
   const int writeErrno = errno;
   if (std::fclose(file) != 0 || !written) {

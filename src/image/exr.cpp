@@ -64,8 +64,8 @@ ImageRGB decodeExr(const std::string& bytes) {
     Imf::FrameBuffer frame;
     for (int c = 0; c < 3; ++c) {
       char* base = reinterpret_cast<char*>(image.pixels.data() + c);
-      frame.insert(kChannels[c], Imf::Slice::Make(Imf::FLOAT, base, window, xStride, yStride,
-                                                  1, 1, /*fillValue=*/0.0));
+      frame.insert(kChannels[c], Imf::Slice::Make(Imf::FLOAT, base, window, xStride, yStride, 1, 1,
+                                                  /*fillValue=*/0.0));
     }
     file.setFrameBuffer(frame);
     file.readPixels(window.min.y, window.max.y);

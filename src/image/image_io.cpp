@@ -45,18 +45,24 @@ bool isSupportedImagePath(const std::string& path) {
 void writeImage(const std::string& path, const ImageRGB& image, const OutputDesc& output) {
   const ImageFormat format = formatOf(path);
   if (format == ImageFormat::Unknown) unsupported(path, ".png, .exr or .pfm");
-  if (image.width == 0 || image.height == 0)
-    throw ImageWriteError(path + ": the image is empty");
+  if (image.width == 0 || image.height == 0) throw ImageWriteError(path + ": the image is empty");
   if (image.pixels.size() != size_t(3) * image.width * image.height)
     throw ImageWriteError(path + ": pixel buffer does not match the image size");
 
   std::string bytes;
   try {
     switch (format) {
-      case ImageFormat::Png: bytes = encodePng(image, output); break;
-      case ImageFormat::Exr: bytes = encodeExr(image); break;
-      case ImageFormat::Pfm: bytes = encodePfm(image); break;
-      case ImageFormat::Unknown: break;  // rejected above
+      case ImageFormat::Png:
+        bytes = encodePng(image, output);
+        break;
+      case ImageFormat::Exr:
+        bytes = encodeExr(image);
+        break;
+      case ImageFormat::Pfm:
+        bytes = encodePfm(image);
+        break;
+      case ImageFormat::Unknown:
+        break;  // rejected above
     }
   } catch (const ImageWriteError& e) {
     throw ImageWriteError(path + ": " + e.what());

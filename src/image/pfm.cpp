@@ -37,8 +37,8 @@ float readFloat(const unsigned char* p, bool littleEndian) {
 }  // namespace
 
 std::string encodePfm(const ImageRGB& image) {
-  std::string out = "PF\n" + std::to_string(image.width) + " " + std::to_string(image.height) +
-                    "\n-1.0\n";
+  std::string out =
+      "PF\n" + std::to_string(image.width) + " " + std::to_string(image.height) + "\n-1.0\n";
   out.reserve(out.size() + 4 * image.pixels.size());
   for (uint32_t row = image.height; row-- > 0;) {
     const float* p = image.pixels.data() + size_t(3) * image.width * row;
