@@ -1,0 +1,35 @@
+// The seam between the CLI and the render backends: choosing one, and running it.
+//
+// chooseBackend is the one place that decides what `--backend auto` means and whether CUDA is
+// available (the macro CANDELA_HAS_CUDA is defined only when the CUDA backend is built).
+#pragma once
+
+#include <atomic>
+#include <functional>
+#include <string>
+
+#include "render/render_result.h"
+#include "scene/scene_data.h"
+
+namespace candela::cli {
+
+enum class Backend { Auto, Cpu, Cuda };
+
+const char* backendName(Backend backend);
+
+// "auto", "cpu" or "cuda" (any case); false for anything else.
+bool backendFromName(const std::string& name, Backend* backend);
+
+// Resolves Auto and checks availability; throws CliError (exit 1) for a backend not built.
+Backend chooseBackend(Backend requested);
+
+struct RenderControl {
+  int threads = 0;                            // CPU worker threads, 0: all cores
+  std::function<void(double)> progress;       // fraction done, called serialised
+  const std::atomic<bool>* cancel = nullptr;  // stop early when it becomes true
+};
+
+// Renders on a backend returned by chooseBackend.
+RenderResult renderScene(Backend backend, const SceneData& scene, const RenderControl& control);
+
+}  // namespace candela::cli
