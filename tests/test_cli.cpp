@@ -19,6 +19,10 @@
 
 #include "image/image_io.h"
 
+#if defined(CANDELA_HAS_CUDA)
+#include "backends/cuda/cuda_renderer.h"
+#endif
+
 extern char** environ;  // for posix_spawn
 
 namespace fs = std::filesystem;
@@ -166,12 +170,33 @@ TEST_F(CliTest, CudaBackendIsRefusedWithoutCuda) {
       << r.err;
   EXPECT_FALSE(fs::exists(path("x.png")));
 }
+#else
+TEST_F(CliTest, CudaBackendWithoutGpuFailsClearly) {
+  std::string reason;
+  if (candela::cudaBackendAvailable(&reason)) GTEST_SKIP() << "a GPU is present";
+  writeFile("tiny.json", kTinyScene);
+  const RunResult r = run("render tiny.json --backend cuda -o x.png");
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_EQ(r.err.rfind("candela: error: --backend cuda: ", 0), 0u) << r.err;
+  EXPECT_FALSE(fs::exists(path("x.png")));
+}
+
+TEST_F(CliTest, AutoFallsBackToCpuWithANoteWithoutGpu) {
+  std::string reason;
+  if (candela::cudaBackendAvailable(&reason)) GTEST_SKIP() << "a GPU is present";
+  writeFile("tiny.json", kTinyScene);
+  const RunResult r = run("render tiny.json -o x.png");
+  EXPECT_EQ(r.exitCode, 0);
+  EXPECT_EQ(r.err.rfind("candela: note: no usable GPU", 0), 0u) << r.err;
+  EXPECT_TRUE(fs::exists(path("x.png")));
+}
 #endif
 
 TEST_F(CliTest, UnwritableOutputExitsOne) {
   writeFile("tiny.json", kTinyScene);
   writeFile("plain", "a file where the output's folder should be");
-  const RunResult r = run("render tiny.json -o plain/x.png");
+  // --backend cpu: `auto` may add a one-line note that no GPU was found.
+  const RunResult r = run("render tiny.json --backend cpu -o plain/x.png");
   EXPECT_EQ(r.exitCode, 1);
   EXPECT_EQ(r.err.rfind("candela: error: plain/x.png: ", 0), 0u) << r.err;
   EXPECT_EQ(countLines(r.err), 1u) << r.err;
@@ -199,7 +224,8 @@ TEST_F(CliTest, InfoPrintsTheSceneCounts) {
 
 TEST_F(CliTest, TinyRenderWritesTheImageAndASummary) {
   writeFile("tiny.json", kTinyScene);
-  const RunResult r = run("render tiny.json -o img/tiny.pfm --spp 2 --seed 7 --max-depth 3");
+  const RunResult r =
+      run("render tiny.json --backend cpu -o img/tiny.pfm --spp 2 --seed 7 --max-depth 3");
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const candela::ImageRGB image = candela::readImage(path("img/tiny.pfm").string());
   EXPECT_EQ(image.width, 16u);
@@ -247,7 +273,8 @@ TEST_F(CliTest, InterruptStopsWithoutWritingAnImage) {
                     output = path("long.png").string();
   char* argv[] = {const_cast<char*>(binary.c_str()), const_cast<char*>("render"),
                   const_cast<char*>(scene.c_str()),  const_cast<char*>("-o"),
-                  const_cast<char*>(output.c_str()), nullptr};
+                  const_cast<char*>(output.c_str()), const_cast<char*>("--backend"),
+                  const_cast<char*>("cpu"),          nullptr};
   pid_t pid = 0;
   ASSERT_EQ(posix_spawn(&pid, binary.c_str(), &actions, nullptr, argv, environ), 0);
   posix_spawn_file_actions_destroy(&actions);

@@ -8,6 +8,10 @@
 #include "apps/cli/cli_error.h"
 #include "backends/cpu/cpu_renderer.h"
 
+#if defined(CANDELA_HAS_CUDA)
+#include "backends/cuda/cuda_renderer.h"
+#endif
+
 namespace candela::cli {
 
 const char* backendName(Backend backend) {
@@ -36,21 +40,32 @@ bool backendFromName(const std::string& name, Backend* backend) {
   return false;
 }
 
-Backend chooseBackend(Backend requested) {
+Backend chooseBackend(Backend requested, std::string* note) {
   switch (requested) {
-    case Backend::Auto:
-      // The CPU until the CUDA backend can render; then: CUDA when a device is present.
+    case Backend::Auto: {
+#if defined(CANDELA_HAS_CUDA)
+      std::string reason;
+      if (cudaBackendAvailable(&reason)) return Backend::Cuda;
+      if (note) *note = "no usable GPU (" + reason + "), rendering on the CPU";
+#else
+      (void)note;  // a CPU-only build has nothing to fall back from
+#endif
       return Backend::Cpu;
+    }
     case Backend::Cpu:
       return Backend::Cpu;
-    case Backend::Cuda:
+    case Backend::Cuda: {
 #if defined(CANDELA_HAS_CUDA)
+      std::string reason;
+      if (!cudaBackendAvailable(&reason))
+        throw CliError(kExitFailure, "--backend cuda: no usable GPU: " + reason);
       return Backend::Cuda;
 #else
       throw CliError(kExitFailure,
                      "the CUDA backend is not available in this build (configure with "
                      "-DCANDELA_CUDA=ON on a machine with the CUDA toolkit)");
 #endif
+    }
   }
   return Backend::Cpu;
 }
@@ -65,11 +80,24 @@ RenderResult renderScene(Backend backend, const SceneData& scene, const RenderCo
       options.cancel = control.cancel;
       return renderCpu(scene.view(), options);
     }
-    case Backend::Cuda:
-      break;  // the CUDA backend's entry point is connected here once it exists
+    case Backend::Cuda: {
+#if defined(CANDELA_HAS_CUDA)
+      try {
+        const CudaScene gpuScene(scene);
+        CudaRenderOptions options;
+        options.progress = control.progress;
+        options.cancel = control.cancel;
+        options.sceneLabel = control.sceneLabel;
+        return gpuScene.render(options);
+      } catch (const CudaError& e) {
+        throw CliError(kExitFailure, e.what());
+      }
+#endif
+      break;
+    }
   }
   throw CliError(kExitFailure, std::string("the ") + backendName(backend) +
-                                   " backend cannot render from the command line yet");
+                                   " backend is not available in this build");
 }
 
 }  // namespace candela::cli

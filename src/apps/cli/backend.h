@@ -20,13 +20,15 @@ const char* backendName(Backend backend);
 // "auto", "cpu" or "cuda" (any case); false for anything else.
 bool backendFromName(const std::string& name, Backend* backend);
 
-// Resolves Auto and checks availability; throws CliError (exit 1) for a backend not built.
-Backend chooseBackend(Backend requested);
+// Resolves Auto (CUDA when a usable GPU is present, else the CPU, with a one-line `note` saying
+// why) and checks availability; throws CliError (exit 1) for a backend that cannot run here.
+Backend chooseBackend(Backend requested, std::string* note);
 
 struct RenderControl {
   int threads = 0;                            // CPU worker threads, 0: all cores
   std::function<void(double)> progress;       // fraction done, called serialised
   const std::atomic<bool>* cancel = nullptr;  // stop early when it becomes true
+  std::string sceneLabel;                     // named in backend error messages
 };
 
 // Renders on a backend returned by chooseBackend.

@@ -86,11 +86,14 @@ int runRender(const RenderOptions& options) {
   const std::string output =
       options.output.empty() ? defaultOutputPath(options.scene) : options.output;
   checkOutputPath(output);
-  const Backend backend = chooseBackend(options.backend);
+  std::string backendNote;
+  const Backend backend = chooseBackend(options.backend, &backendNote);
 
   SceneDesc desc = loadSceneFile(options.scene);
   applyOverrides(options, &desc);
   const SceneData scene = flattenScene(desc);
+  if (!backendNote.empty() && !options.quiet)
+    std::fprintf(stderr, "candela: note: %s\n", backendNote.c_str());
 
   // Also covers the write: a late Ctrl-C must not leave a temporary file behind.
   InterruptGuard interrupt;
@@ -98,6 +101,7 @@ int runRender(const RenderOptions& options) {
   if (ProgressBar::wanted(options.quiet)) bar = std::make_unique<ProgressBar>(stderr);
 
   RenderControl control;
+  control.sceneLabel = options.scene;
   control.threads = options.threads;
   control.cancel = &interrupt.flag();
   if (bar) control.progress = [&bar](double fraction) { bar->update(fraction); };

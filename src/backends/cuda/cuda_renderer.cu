@@ -26,7 +26,7 @@ bool cudaBackendAvailable(std::string* reason) {
   const cudaError_t err = cudaGetDeviceCount(&count);
   if (err != cudaSuccess) {
     cudaGetLastError();
-    if (reason) *reason = std::string("no usable CUDA device (") + cudaGetErrorString(err) + ")";
+    if (reason) *reason = cudaGetErrorString(err);
     return false;
   }
   if (count == 0) {

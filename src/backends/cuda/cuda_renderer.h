@@ -17,7 +17,8 @@
 
 namespace candela {
 
-// True when a usable CUDA device is present; otherwise `reason` says why not.
+// True when a usable CUDA device is present; otherwise `reason` says why not (e.g. "no CUDA
+// device found" or the driver's error).
 bool cudaBackendAvailable(std::string* reason);
 
 struct CudaRenderOptions {
