@@ -1,6 +1,8 @@
 // Ray: origin + t * direction for t in (0, tMax). Directions need not be unit length.
 #pragma once
 
+#include <cstdint>
+
 #include "core/constants.h"
 #include "core/vec3.h"
 
