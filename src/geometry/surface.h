@@ -1,0 +1,88 @@
+// Surface reconstruction: from a traversal Hit to the point, normals, error bound and material
+// the integrator shades with. Done once per path vertex, for the winning hit only.
+//
+// Conventions:
+// - ng is the unit geometric normal towards the primitive's OUTSIDE: outward for spheres,
+//   normalize((p1 - p0) x (p2 - p0)) for triangles. It is never flipped towards the ray; the
+//   integrator decides front and back with dot(wo, ng).
+// - ns is the unit shading normal, always in ng's hemisphere.
+// - p carries a per-axis absolute error bound (pbrt-v4, section 6.8.5) for offsetRayOrigin.
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+
+#include "core/constants.h"
+#include "core/float_error.h"
+#include "core/vec3.h"
+#include "geometry/ray.h"
+#include "scene/scene_view.h"
+
+namespace candela {
+
+struct SurfacePoint {
+  Vec3 p;      // world-space position
+  Vec3 error;  // absolute bound on the error of p, per axis
+  Vec3 ng;     // unit geometric normal, towards the primitive's outside
+  Vec3 ns;     // unit shading normal, dot(ns, ng) >= 0
+  uint32_t material;
+  // Surface parameters. Sphere: u = phi / 2pi with phi = atan2(ng.z, ng.x) in [0, 2pi),
+  // v = theta / pi with theta the angle from +y. Triangle: the barycentrics b1, b2.
+  float u, v;
+};
+
+CANDELA_HDI SurfacePoint sphereSurfaceAt(const Sphere& s, const Ray& ray, float t) {
+  SurfacePoint sp;
+  // Reproject the hit onto the sphere: the computed point then lies within gamma(5) |local| of the
+  // surface (pbrt-v4), however inaccurate t was.
+  Vec3 local = (ray.origin + t * ray.direction) - s.center;
+  const float len = length(local);
+  local = len > 0.0f ? local * (s.radius / len) : Vec3(0.0f, s.radius, 0.0f);
+  sp.p = s.center + local;
+  // Adding the centre rounds once more, by at most gamma(1) |p|: that term dominates for small
+  // spheres far from the world origin.
+  sp.error = gammaBound(5) * abs(local) + gammaBound(1) * abs(sp.p);
+  sp.ng = normalize(local);
+  sp.ns = sp.ng;
+  sp.material = s.material;
+  float phi = atan2f(sp.ng.z, sp.ng.x);
+  if (phi < 0.0f) phi += 2.0f * kPi;
+  sp.u = phi * (0.5f * kInvPi);
+  sp.v = acosf(fminf(1.0f, fmaxf(-1.0f, sp.ng.y))) * kInvPi;
+  return sp;
+}
+
+CANDELA_HDI SurfacePoint triangleSurfaceAt(const SceneView& scene, const Triangle& tri, float b1,
+                                           float b2) {
+  SurfacePoint sp;
+  const Vec3& p0 = scene.positions[tri.v[0]];
+  const Vec3& p1 = scene.positions[tri.v[1]];
+  const Vec3& p2 = scene.positions[tri.v[2]];
+  const float b0 = 1.0f - b1 - b2;
+  // Weights summing to 1 (up to rounding) keep the point on the triangle's plane however
+  // inaccurate the barycentrics are, so the error is that of the interpolation alone. Its bound
+  // gamma(7) (pbrt-v4) also covers the rounding of b0 = 1 - b1 - b2.
+  const Vec3 w0 = b0 * p0, w1 = b1 * p1, w2 = b2 * p2;
+  sp.p = w0 + w1 + w2;
+  sp.error = gammaBound(7) * (abs(w0) + abs(w1) + abs(w2));
+  sp.ng = normalize(cross(p1 - p0, p2 - p0));
+  sp.ns = sp.ng;
+  if (tri.n[0] >= 0 && tri.n[1] >= 0 && tri.n[2] >= 0) {
+    const Vec3 n =
+        b0 * scene.normals[tri.n[0]] + b1 * scene.normals[tri.n[1]] + b2 * scene.normals[tri.n[2]];
+    // Opposite vertex normals can cancel; the face normal is the only sensible fallback.
+    if (lengthSquared(n) > 0.0f) sp.ns = faceForward(normalize(n), sp.ng);
+  }
+  sp.material = tri.material;
+  sp.u = b1;
+  sp.v = b2;
+  return sp;
+}
+
+// The surface at `hit`, which `ray` found (intersectClosest or intersectPrimitive).
+CANDELA_HDI SurfacePoint surfaceAt(const SceneView& scene, const Ray& ray, const Hit& hit) {
+  if (hit.prim < scene.sphereCount) return sphereSurfaceAt(scene.spheres[hit.prim], ray, hit.t);
+  return triangleSurfaceAt(scene, scene.triangles[hit.prim - scene.sphereCount], hit.b1, hit.b2);
+}
+
+}  // namespace candela
