@@ -1,0 +1,276 @@
+// Core math: vectors, orthonormal frames, the counter-based RNG and the sample warps.
+//
+// Statistical tests run on fixed seeds, so they are deterministic; their thresholds are set at a
+// 1e-3 significance level (chi-square) or five standard deviations (means, correlations).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <random>
+#include <vector>
+
+#include "core/constants.h"
+#include "core/frame.h"
+#include "core/rng.h"
+#include "core/sampling.h"
+#include "core/vec3.h"
+
+namespace candela {
+namespace {
+
+constexpr int kDraws = 100000;
+constexpr int kBins = 64;
+
+// Upper 1e-3 quantile of the chi-square distribution with `dof` degrees of freedom
+// (Wilson–Hilferty approximation, accurate to a fraction of a percent for dof >= 30).
+double chiSquareCritical(int dof) {
+  const double z = 3.090232;  // standard normal quantile for 1 - 1e-3
+  const double k = dof;
+  const double h = 2.0 / (9.0 * k);
+  return k * std::pow(1.0 - h + z * std::sqrt(h), 3.0);
+}
+
+// Chi-square statistic of values in [0, 1) against the uniform distribution over kBins bins.
+double chiSquareUniform(const std::vector<float>& values) {
+  std::vector<double> counts(kBins, 0.0);
+  for (float v : values) counts[std::min(kBins - 1, static_cast<int>(v * kBins))] += 1.0;
+  const double expected = static_cast<double>(values.size()) / kBins;
+  double chi2 = 0.0;
+  for (double c : counts) chi2 += (c - expected) * (c - expected) / expected;
+  return chi2;
+}
+
+double mean(const std::vector<float>& v) {
+  double sum = 0.0;
+  for (float x : v) sum += x;
+  return sum / v.size();
+}
+
+double correlation(const std::vector<float>& a, const std::vector<float>& b) {
+  const double ma = mean(a), mb = mean(b);
+  double sab = 0.0, saa = 0.0, sbb = 0.0;
+  for (size_t i = 0; i < a.size(); ++i) {
+    sab += (a[i] - ma) * (b[i] - mb);
+    saa += (a[i] - ma) * (a[i] - ma);
+    sbb += (b[i] - mb) * (b[i] - mb);
+  }
+  return sab / std::sqrt(saa * sbb);
+}
+
+// Five standard deviations of a sample correlation of independent variables.
+const double kCorrelationTolerance = 5.0 / std::sqrt(static_cast<double>(kDraws));
+
+void expectUniform(const std::vector<float>& values, const char* what) {
+  for (float v : values) {
+    ASSERT_GE(v, 0.0f) << what;
+    ASSERT_LT(v, 1.0f) << what;
+  }
+  EXPECT_LT(chiSquareUniform(values), chiSquareCritical(kBins - 1)) << what;
+  // The mean of n uniform numbers has standard deviation sqrt(1 / (12 n)).
+  EXPECT_NEAR(mean(values), 0.5, 5.0 * std::sqrt(1.0 / (12.0 * values.size()))) << what;
+}
+
+void expectNearVec(const Vec3& a, const Vec3& b, float tol) {
+  EXPECT_NEAR(a.x, b.x, tol);
+  EXPECT_NEAR(a.y, b.y, tol);
+  EXPECT_NEAR(a.z, b.z, tol);
+}
+
+Vec3 randomUnitVector(std::mt19937& gen) {
+  std::normal_distribution<float> normal;
+  for (;;) {
+    const Vec3 v(normal(gen), normal(gen), normal(gen));
+    if (lengthSquared(v) > 1e-6f) return normalize(v);
+  }
+}
+
+TEST(VecMath, DotCrossNormalize) {
+  const Vec3 a(1, 2, 3), b(-4, 5, 0.5f);
+  EXPECT_FLOAT_EQ(dot(a, b), -4 + 10 + 1.5f);
+  expectNearVec(cross(Vec3(1, 0, 0), Vec3(0, 1, 0)), Vec3(0, 0, 1), 0.0f);
+  expectNearVec(cross(Vec3(0, 1, 0), Vec3(0, 0, 1)), Vec3(1, 0, 0), 0.0f);
+  expectNearVec(cross(a, b), -cross(b, a), 0.0f);
+  const Vec3 c = cross(a, b);
+  EXPECT_NEAR(dot(c, a), 0.0f, 1e-5f);
+  EXPECT_NEAR(dot(c, b), 0.0f, 1e-5f);
+  // |a x b|^2 = |a|^2 |b|^2 - (a.b)^2 (Lagrange's identity).
+  EXPECT_NEAR(lengthSquared(c), lengthSquared(a) * lengthSquared(b) - dot(a, b) * dot(a, b), 1e-3f);
+  EXPECT_FLOAT_EQ(length(Vec3(3, 4, 12)), 13.0f);
+  EXPECT_NEAR(length(normalize(a)), 1.0f, 1e-6f);
+  expectNearVec(normalize(Vec3(0, 0, -7)), Vec3(0, 0, -1), 0.0f);
+  expectNearVec(faceForward(Vec3(0, 0, 1), Vec3(0, 0, -1)), Vec3(0, 0, -1), 0.0f);
+  EXPECT_EQ(maxDimension(Vec3(1, -5, 3)), 2);
+  EXPECT_EQ(maxDimension(abs(Vec3(1, -5, 3))), 1);
+}
+
+TEST(Frame, OrthonormalAndRightHandedForManyNormals) {
+  std::vector<Vec3> normals = {{0, 0, 1},
+                               {0, 0, -1},
+                               {1, 0, 0},
+                               {0, 1, 0},
+                               {-1, 0, 0},
+                               {0, -1, 0},
+                               normalize(Vec3(1e-4f, 0, -1)),
+                               normalize(Vec3(0, -1e-7f, -1)),
+                               normalize(Vec3(1, 1, 1))};
+  std::mt19937 gen(7);
+  for (int i = 0; i < 10000; ++i) normals.push_back(randomUnitVector(gen));
+  for (const Vec3& n : normals) {
+    const Frame f(n);
+    EXPECT_NEAR(length(f.s), 1.0f, 1e-5f);
+    EXPECT_NEAR(length(f.t), 1.0f, 1e-5f);
+    EXPECT_NEAR(dot(f.s, f.t), 0.0f, 1e-5f);
+    EXPECT_NEAR(dot(f.s, f.n), 0.0f, 1e-5f);
+    EXPECT_NEAR(dot(f.t, f.n), 0.0f, 1e-5f);
+    expectNearVec(cross(f.s, f.t), n, 1e-5f);
+  }
+}
+
+TEST(Frame, LocalWorldRoundTrip) {
+  std::mt19937 gen(11);
+  for (int i = 0; i < 10000; ++i) {
+    const Vec3 n = i == 0 ? Vec3(0, 0, -1) : randomUnitVector(gen);
+    const Frame f(n);
+    expectNearVec(f.toLocal(n), Vec3(0, 0, 1), 1e-5f);
+    const Vec3 v = randomUnitVector(gen) * 3.0f;
+    expectNearVec(f.toWorld(f.toLocal(v)), v, 1e-5f);
+    expectNearVec(f.toLocal(f.toWorld(v)), v, 1e-5f);
+  }
+}
+
+TEST(SampleStream, UniformAcrossPixelsSamplesAndDimensions) {
+  std::vector<float> acrossPixels, acrossSamples, acrossDimensions;
+  SampleStream walk(3, 17, 5);
+  for (int i = 0; i < kDraws; ++i) {
+    acrossPixels.push_back(SampleStream(1, i, 0).next());
+    acrossSamples.push_back(SampleStream(1, 42, i).next());
+    acrossDimensions.push_back(walk.next());
+  }
+  expectUniform(acrossPixels, "across pixels");
+  expectUniform(acrossSamples, "across samples");
+  expectUniform(acrossDimensions, "across dimensions");
+}
+
+TEST(SampleStream, NeighboursAreDecorrelated) {
+  std::vector<float> first, secondDim, nextPixel, nextSample, otherSeed;
+  for (int i = 0; i < kDraws; ++i) {
+    SampleStream s(9, i, 3);
+    first.push_back(s.next());
+    secondDim.push_back(s.next());
+    nextPixel.push_back(SampleStream(9, i + 1, 3).next());
+    nextSample.push_back(SampleStream(9, i, 4).next());
+    otherSeed.push_back(SampleStream(10, i, 3).next());
+  }
+  EXPECT_NEAR(correlation(first, secondDim), 0.0, kCorrelationTolerance);
+  EXPECT_NEAR(correlation(first, nextPixel), 0.0, kCorrelationTolerance);
+  EXPECT_NEAR(correlation(first, nextSample), 0.0, kCorrelationTolerance);
+  EXPECT_NEAR(correlation(first, otherSeed), 0.0, kCorrelationTolerance);
+  // Pairs of dimensions fill the unit square evenly (the integrator uses them as 2D samples).
+  std::vector<float> joint;
+  for (int i = 0; i < kDraws; ++i) {
+    const int cell = std::min(7, static_cast<int>(first[i] * 8)) * 8 +
+                     std::min(7, static_cast<int>(secondDim[i] * 8));
+    joint.push_back((cell + 0.5f) / kBins);
+  }
+  EXPECT_LT(chiSquareUniform(joint), chiSquareCritical(kBins - 1));
+}
+
+TEST(SampleStream, IsAPureFunctionOfItsInputs) {
+  SampleStream a(123, 456, 789), b(123, 456, 789);
+  for (int d = 0; d < 100; ++d) EXPECT_EQ(a.next(), b.next());
+  // A stream does not depend on what other streams drew before it.
+  SampleStream c(123, 456, 789);
+  for (int i = 0; i < 1000; ++i) SampleStream(1, i, 2).next();
+  SampleStream d(123, 456, 789);
+  for (int i = 0; i < 100; ++i) EXPECT_EQ(c.next(), d.next());
+  // Every input matters.
+  const float base = SampleStream(123, 456, 789).next();
+  EXPECT_NE(SampleStream(124, 456, 789).next(), base);
+  EXPECT_NE(SampleStream(123, 457, 789).next(), base);
+  EXPECT_NE(SampleStream(123, 456, 790).next(), base);
+}
+
+TEST(Sampling, CosineHemisphereDensityIntegratesToOne) {
+  // Monte Carlo integral of the pdf over the hemisphere with uniformly distributed directions
+  // (cos theta uniform in [0, 1), density 1 / 2pi): the mean of pdf * 2pi estimates it.
+  double sum = 0.0;
+  for (int i = 0; i < kDraws; ++i) {
+    SampleStream s(5, i, 0);
+    sum += cosineHemispherePdf(s.next()) * 2.0 * kPi;
+  }
+  // The estimator 2 cos(theta) has variance 1/3.
+  EXPECT_NEAR(sum / kDraws, 1.0, 5.0 * std::sqrt(1.0 / 3.0 / kDraws));
+}
+
+TEST(Sampling, CosineHemisphereDirectionsFollowTheirDensity) {
+  std::vector<float> cos2, azimuth;
+  for (int i = 0; i < kDraws; ++i) {
+    SampleStream s(6, i, 0);
+    const float u1 = s.next(), u2 = s.next();
+    const Vec3 w = sampleCosineHemisphere(u1, u2);
+    ASSERT_GE(w.z, 0.0f);
+    ASSERT_NEAR(length(w), 1.0f, 1e-5f);
+    // Under the density cos(theta) / pi, cos^2(theta) and the azimuth are uniform.
+    cos2.push_back(std::min(w.z * w.z, kOneMinusEpsilon));
+    float phi = std::atan2(w.y, w.x) / (2.0f * kPi);
+    if (phi < 0.0f) phi += 1.0f;
+    azimuth.push_back(std::min(phi, kOneMinusEpsilon));
+  }
+  expectUniform(cos2, "cos^2 theta");
+  expectUniform(azimuth, "azimuth");
+  // Corners of the unit square still give unit vectors in the upper hemisphere.
+  for (float u1 : {0.0f, 0.5f, kOneMinusEpsilon})
+    for (float u2 : {0.0f, 0.5f, kOneMinusEpsilon}) {
+      const Vec3 w = sampleCosineHemisphere(u1, u2);
+      EXPECT_GE(w.z, 0.0f);
+      EXPECT_NEAR(length(w), 1.0f, 1e-5f);
+    }
+}
+
+TEST(Sampling, ConeSamplesStayInsideTheCone) {
+  for (float cosThetaMax : {-0.5f, 0.0f, 0.5f, 0.99f, 0.999999f}) {
+    std::vector<float> heights;
+    for (int i = 0; i < kDraws; ++i) {
+      SampleStream s(8, i, 0);
+      const float u1 = s.next(), u2 = s.next();
+      const Vec3 w = sampleUniformCone(u1, u2, cosThetaMax);
+      ASSERT_GE(w.z, cosThetaMax - 1e-6f);
+      ASSERT_LE(w.z, 1.0f);
+      ASSERT_NEAR(length(w), 1.0f, 1e-5f);
+      // Uniform over the cap's solid angle: cos(theta) is uniform in [cosThetaMax, 1].
+      if (cosThetaMax < 0.99f)
+        heights.push_back(std::min((w.z - cosThetaMax) / (1.0f - cosThetaMax), kOneMinusEpsilon));
+    }
+    if (!heights.empty()) expectUniform(heights, "cone height");
+    // The density times the cap's solid angle 2pi (1 - cosThetaMax) is 1.
+    EXPECT_NEAR(uniformConePdf(cosThetaMax) * 2.0f * kPi * (1.0f - cosThetaMax), 1.0f, 1e-5f);
+  }
+}
+
+TEST(Sampling, ConcentricDiskStaysInsideTheUnitDisk) {
+  std::vector<float> radius2, angle;
+  for (int i = 0; i < kDraws; ++i) {
+    SampleStream s(4, i, 0);
+    const float u1 = s.next(), u2 = s.next();
+    float x, y;
+    sampleUniformDisk(u1, u2, &x, &y);
+    ASSERT_LE(x * x + y * y, 1.0f + 1e-6f);
+    // Uniform over the disk: r^2 and the angle are uniform.
+    radius2.push_back(std::min(x * x + y * y, kOneMinusEpsilon));
+    float phi = std::atan2(y, x) / (2.0f * kPi);
+    if (phi < 0.0f) phi += 1.0f;
+    angle.push_back(std::min(phi, kOneMinusEpsilon));
+  }
+  expectUniform(radius2, "disk r^2");
+  expectUniform(angle, "disk angle");
+  for (float u1 : {0.0f, 0.5f, kOneMinusEpsilon})
+    for (float u2 : {0.0f, 0.5f, kOneMinusEpsilon}) {
+      float x, y;
+      sampleUniformDisk(u1, u2, &x, &y);
+      EXPECT_LE(x * x + y * y, 1.0f + 1e-6f);
+    }
+}
+
+}  // namespace
+}  // namespace candela
