@@ -32,7 +32,7 @@ CANDELA_HDI void sampleUniformDisk(float u1, float u2, float* x, float* y) {
 CANDELA_HDI Vec3 sampleCosineHemisphere(float u1, float u2) {
   float x, y;
   sampleUniformDisk(u1, u2, &x, &y);
-  const float z = sqrtf(fmaxf(0.0f, 1.0f - x * x - y * y));
+  const float z = sqrtf(maxf(0.0f, 1.0f - x * x - y * y));
   return {x, y, z};
 }
 CANDELA_HDI float cosineHemispherePdf(float cosTheta) { return cosTheta > 0.0f ? cosTheta * kInvPi : 0.0f; }
@@ -41,7 +41,7 @@ CANDELA_HDI float cosineHemispherePdf(float cosTheta) { return cosTheta > 0.0f ?
 // pdf = 1 / (2 pi (1 - cosThetaMax)).
 CANDELA_HDI Vec3 sampleUniformCone(float u1, float u2, float cosThetaMax) {
   const float cosTheta = (1.0f - u1) + u1 * cosThetaMax;
-  const float sinTheta = sqrtf(fmaxf(0.0f, 1.0f - cosTheta * cosTheta));
+  const float sinTheta = sqrtf(maxf(0.0f, 1.0f - cosTheta * cosTheta));
   const float phi = 2.0f * kPi * u2;
   return {cosf(phi) * sinTheta, sinf(phi) * sinTheta, cosTheta};
 }

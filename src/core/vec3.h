@@ -10,7 +10,7 @@ namespace candela {
 struct Vec3 {
   float x = 0, y = 0, z = 0;
 
-  CANDELA_HDI Vec3() = default;
+  Vec3() = default;
   CANDELA_HDI constexpr Vec3(float x_, float y_, float z_) : x(x_), y(y_), z(z_) {}
   CANDELA_HDI explicit constexpr Vec3(float s) : x(s), y(s), z(s) {}
 
@@ -41,13 +41,17 @@ CANDELA_HDI float lengthSquared(const Vec3& a) { return dot(a, a); }
 CANDELA_HDI float length(const Vec3& a) { return sqrtf(dot(a, a)); }
 CANDELA_HDI Vec3 normalize(const Vec3& a) { return a * (1.0f / length(a)); }
 CANDELA_HDI Vec3 abs(const Vec3& a) { return {fabsf(a.x), fabsf(a.y), fabsf(a.z)}; }
+// Plain comparisons rather than fminf/fmaxf: those keep IEEE NaN rules that x86-64 compilers
+// can only honour with a library call, which costs the BVH build and traversal dearly.
+CANDELA_HDI float minf(float a, float b) { return a < b ? a : b; }
+CANDELA_HDI float maxf(float a, float b) { return a > b ? a : b; }
 CANDELA_HDI Vec3 min(const Vec3& a, const Vec3& b) {
-  return {fminf(a.x, b.x), fminf(a.y, b.y), fminf(a.z, b.z)};
+  return {minf(a.x, b.x), minf(a.y, b.y), minf(a.z, b.z)};
 }
 CANDELA_HDI Vec3 max(const Vec3& a, const Vec3& b) {
-  return {fmaxf(a.x, b.x), fmaxf(a.y, b.y), fmaxf(a.z, b.z)};
+  return {maxf(a.x, b.x), maxf(a.y, b.y), maxf(a.z, b.z)};
 }
-CANDELA_HDI float maxComponent(const Vec3& a) { return fmaxf(a.x, fmaxf(a.y, a.z)); }
+CANDELA_HDI float maxComponent(const Vec3& a) { return maxf(a.x, maxf(a.y, a.z)); }
 CANDELA_HDI int maxDimension(const Vec3& a) {
   return (a.x > a.y) ? (a.x > a.z ? 0 : 2) : (a.y > a.z ? 1 : 2);
 }

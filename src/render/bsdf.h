@@ -63,7 +63,7 @@ CANDELA_HDI bool sampleBsdf(const Material& m, const Vec3& wo, const Vec3& ng, c
     case MaterialType::Glass: {
       // eta = eta_t / eta_i: entering from outside the ratio is ior, leaving it is 1 / ior.
       const float eta = side > 0.0f ? m.ior : 1.0f / m.ior;
-      const float cosThetaI = fmaxf(0.0f, dot(wo, n));
+      const float cosThetaI = maxf(0.0f, dot(wo, n));
       const float reflectance = fresnelDielectric(cosThetaI, eta);
       s->pdf = 0.0f;
       s->specular = true;

@@ -102,7 +102,7 @@ CANDELA_HDI Vec3 traceRadiance(const SceneView& scene, Ray ray, SampleStream& rn
     bouncePoint = sp.p;
 
     if (depth >= kRouletteDepth) {
-      const float survive = fminf(0.95f, maxComponent(throughput));
+      const float survive = minf(0.95f, maxComponent(throughput));
       if (rng.next() >= survive) break;
       throughput /= survive;
     }

@@ -55,14 +55,14 @@ CANDELA_HDI bool sampleLight(const Light& l, const Vec3& p, float u1, float u2, 
   const float oneMinusCosMax = sphereConeOneMinusCos(sin2ThetaMax);
   // Uniform in the cone: cos(theta) = 1 - u (1 - cos(theta_max)).
   const float cosTheta = 1.0f - u1 * oneMinusCosMax;
-  const float sin2Theta = fmaxf(0.0f, 1.0f - cosTheta * cosTheta);
+  const float sin2Theta = maxf(0.0f, 1.0f - cosTheta * cosTheta);
   const float phi = 2.0f * kPi * u2;
   const float sinTheta = sqrtf(sin2Theta);
   const Vec3 axis = toCenter / dc;
   s->wi = normalize(Frame(axis).toWorld(Vec3(cosf(phi) * sinTheta, sinf(phi) * sinTheta, cosTheta)));
   // Distance to the near intersection with the sphere along wi (clamped at the tangent).
   const float b = dc * cosTheta;
-  const float disc = fmaxf(0.0f, r2 - dc * dc * sin2Theta);
+  const float disc = maxf(0.0f, r2 - dc * dc * sin2Theta);
   s->distance = b - sqrtf(disc);
   s->radiance = l.radiance;
   s->pdf = 1.0f / (2.0f * kPi * oneMinusCosMax);
