@@ -29,16 +29,9 @@ uint32_t addMaterial(SceneData& s, const Material& m) {
 // Appends an object's mesh in world space: p' = position + R (scale * p). Normals transform by
 // the inverse transpose, R * (n / scale). A mirroring scale reverses the winding, so the vertex
 // order is swapped to keep each face's outside where it was.
-void addObject(SceneData& s, const ObjectDesc& obj) {
-  const Mat3 r = eulerRotation(obj.rotation);
+// With `geometry` false only the object's materials are appended (see refreshSceneValues).
+void addObject(SceneData& s, const ObjectDesc& obj, bool geometry) {
   const MeshDesc& mesh = obj.mesh;
-  const uint32_t positionBase = uint32_t(s.positions.size());
-  const uint32_t normalBase = uint32_t(s.normals.size());
-
-  for (const Vec3& p : mesh.positions) s.positions.push_back(obj.position + r * (obj.scale * p));
-  if (obj.smooth)
-    for (const Vec3& n : mesh.normals) s.normals.push_back(normalize(r * (n / obj.scale)));
-
   uint32_t materialBase = 0;
   if (obj.material) {
     materialBase = addMaterial(s, toMaterial(*obj.material));
@@ -46,6 +39,14 @@ void addObject(SceneData& s, const ObjectDesc& obj) {
     materialBase = uint32_t(s.materials.size());
     for (const MaterialDesc& m : mesh.materials) s.materials.push_back(toMaterial(m));
   }
+  if (!geometry) return;
+
+  const Mat3 r = eulerRotation(obj.rotation);
+  const uint32_t positionBase = uint32_t(s.positions.size());
+  const uint32_t normalBase = uint32_t(s.normals.size());
+  for (const Vec3& p : mesh.positions) s.positions.push_back(obj.position + r * (obj.scale * p));
+  if (obj.smooth)
+    for (const Vec3& n : mesh.normals) s.normals.push_back(normalize(r * (n / obj.scale)));
 
   const bool mirrored = obj.scale.x * obj.scale.y * obj.scale.z < 0.0f;
   for (const Triangle& t : mesh.triangles) {
@@ -82,19 +83,33 @@ void addLight(SceneData& s, const LightDesc& d) {
   s.lights.push_back(light);
 }
 
-}  // namespace
-
-SceneData flattenScene(const SceneDesc& desc) {
-  SceneData s;
+// Everything but the BVH; mesh vertices and triangles only with `geometry`. The order of
+// materials depends only on the scene's structure, so triangles keep valid material indices
+// when a refresh re-appends the materials.
+void addContents(SceneData& s, const SceneDesc& desc, bool geometry) {
   for (const SphereDesc& sd : desc.spheres)
     s.spheres.push_back(Sphere{sd.position, sd.radius, addMaterial(s, toMaterial(sd.material))});
   // Lights after plain spheres: sphere lights append their own emissive spheres.
   for (const LightDesc& ld : desc.lights) addLight(s, ld);
-  for (const ObjectDesc& od : desc.objects) addObject(s, od);
+  for (const ObjectDesc& od : desc.objects) addObject(s, od, geometry);
 
   s.environment = desc.environment;
   s.camera = resolveCamera(desc.camera, desc.file);
   s.settings = desc.render;
+}
+
+}  // namespace
+
+void refreshSceneValues(SceneData& s, const SceneDesc& desc) {
+  s.materials.clear();
+  s.spheres.clear();
+  s.lights.clear();
+  addContents(s, desc, false);
+}
+
+SceneData flattenScene(const SceneDesc& desc) {
+  SceneData s;
+  addContents(s, desc, true);
 
   BvhBuildResult bvh = buildBvh(s.spheres.data(), uint32_t(s.spheres.size()), s.positions.data(),
                                 s.triangles.data(), uint32_t(s.triangles.size()));

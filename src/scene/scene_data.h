@@ -38,4 +38,9 @@ struct SceneData {
 // spheres and builds the BVH. The description must already be validated.
 SceneData flattenScene(const SceneDesc& desc);
 
+// Replaces the camera, settings, environment, materials, lights and spheres of `scene` (which
+// flattenScene made from a description with the same geometry as `desc`) by those of `desc`,
+// keeping mesh vertices, triangles and the BVH. scene/frame_scene.h decides when that is valid.
+void refreshSceneValues(SceneData& scene, const SceneDesc& desc);
+
 }  // namespace candela

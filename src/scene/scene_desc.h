@@ -84,6 +84,35 @@ struct OutputDesc {
   float exposure = 0;  // stops
 };
 
+// What an animation track can change (shared/scene-format.md, *Animation*). Which properties a
+// target accepts is the loader's check; see scene_animation_reader.h.
+enum class AnimTarget { Camera, Sphere, Object, Light };
+enum class AnimProperty {
+  Position, Rotation, LookAt, Up, Fov, ApertureRadius, FocusDistance,  // camera
+  Radius, Color, Scale, Intensity                                       // entities
+};
+
+// One key: the value at `frame`. Scalars are stored in all three components, so that per-component
+// interpolation serves every property alike.
+struct AnimKey {
+  uint32_t frame = 0;
+  Vec3 value;
+};
+
+struct AnimTrack {
+  AnimTarget target = AnimTarget::Camera;
+  uint32_t index = 0;  // into spheres, objects or lights; unused for the camera
+  AnimProperty property = AnimProperty::Position;
+  std::vector<AnimKey> keys;  // non-empty, frames strictly increasing
+  std::string where;          // JSON path, "animation.tracks[1]"
+};
+
+struct AnimationDesc {
+  uint32_t frames = 1;  // frames 0 .. frames-1
+  float fps = 24;       // playback rate, frames per second (used for videos)
+  std::vector<AnimTrack> tracks;
+};
+
 struct SceneDesc {
   std::string file;  // the scene file as named by the user, prefix of every message
   CameraDesc camera;
@@ -93,6 +122,7 @@ struct SceneDesc {
   std::vector<ObjectDesc> objects;
   std::vector<LightDesc> lights;
   Vec3 environment{0.0f};
+  std::optional<AnimationDesc> animation;  // absent: a still image
 };
 
 }  // namespace candela

@@ -7,6 +7,7 @@
 
 #include "scene/json_parse.h"
 #include "scene/obj_loader.h"
+#include "scene/scene_animation_reader.h"
 #include "scene/scene_camera_reader.h"
 #include "scene/scene_entity_reader.h"
 #include "scene/scene_error.h"
@@ -68,7 +69,6 @@ SceneDesc parseSceneText(const std::string& text, const std::string& fileLabel,
       JsonValue(document, fileLabel, ""),
       {"camera", "render", "materials", "spheres", "objects", "lights", "environment", "animation"},
       "an object at the top level");
-  top.reject("animation", "animation is not supported yet");
 
   SceneDesc scene;
   scene.file = fileLabel;
@@ -102,6 +102,9 @@ SceneDesc parseSceneText(const std::string& text, const std::string& fileLabel,
     scene.environment = fields.require("color").colour();
     fields.finish();
   }
+  // Last: tracks are checked against the camera and the entities they animate.
+  if (std::optional<JsonValue> animation = top.get("animation"))
+    scene.animation = readAnimation(*animation, scene);
   top.finish();
 
   loadMeshes(scene, writtenNames);

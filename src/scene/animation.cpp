@@ -1,0 +1,83 @@
+// Evaluating animation tracks; see animation.h.
+#include "scene/animation.h"
+
+namespace candela {
+namespace {
+
+void applyToCamera(CameraDesc& camera, AnimProperty property, const Vec3& v) {
+  switch (property) {
+    case AnimProperty::Position: camera.position = v; break;
+    case AnimProperty::Rotation: camera.rotation = v; break;
+    case AnimProperty::LookAt: camera.lookAt = v; break;
+    case AnimProperty::Up: camera.up = v; break;
+    case AnimProperty::Fov: camera.fov = v.x; break;
+    case AnimProperty::ApertureRadius: camera.apertureRadius = v.x; break;
+    case AnimProperty::FocusDistance: camera.focusDistance = v.x; break;
+    default: break;  // not a camera property; the loader refuses such tracks
+  }
+}
+
+void applyToSphere(SphereDesc& sphere, AnimProperty property, const Vec3& v) {
+  switch (property) {
+    case AnimProperty::Position: sphere.position = v; break;
+    case AnimProperty::Radius: sphere.radius = v.x; break;
+    case AnimProperty::Color: sphere.material.color = v; break;
+    default: break;
+  }
+}
+
+void applyToObject(ObjectDesc& object, AnimProperty property, const Vec3& v) {
+  switch (property) {
+    case AnimProperty::Position: object.position = v; break;
+    case AnimProperty::Rotation: object.rotation = v; break;
+    case AnimProperty::Scale: object.scale = v; break;
+    case AnimProperty::Color:
+      if (!object.material) object.material = MaterialDesc{};  // diffuse, as a static "color"
+      object.material->color = v;
+      break;
+    default: break;
+  }
+}
+
+void applyToLight(LightDesc& light, AnimProperty property, const Vec3& v) {
+  switch (property) {
+    case AnimProperty::Position: light.position = v; break;
+    case AnimProperty::Intensity: light.intensity = v.x; break;
+    case AnimProperty::Color: light.color = v; break;
+    case AnimProperty::Radius: light.radius = v.x; break;
+    default: break;
+  }
+}
+
+}  // namespace
+
+Vec3 evaluateTrack(const AnimTrack& track, uint32_t frame) {
+  const std::vector<AnimKey>& keys = track.keys;
+  if (frame <= keys.front().frame) return keys.front().value;
+  if (frame >= keys.back().frame) return keys.back().value;
+  size_t k = 0;
+  while (keys[k + 1].frame <= frame) ++k;  // keys[k].frame <= frame < keys[k + 1].frame
+  const AnimKey& a = keys[k];
+  const AnimKey& b = keys[k + 1];
+  const float t = float(frame - a.frame) / float(b.frame - a.frame);
+  return a.value + (b.value - a.value) * t;  // exactly a.value at t = 0
+}
+
+SceneDesc sceneAtFrame(const SceneDesc& scene, uint32_t frame) {
+  SceneDesc result = scene;
+  result.animation.reset();
+  result.render.seed = scene.render.seed + frame;
+  if (!scene.animation) return result;
+  for (const AnimTrack& track : scene.animation->tracks) {
+    const Vec3 v = evaluateTrack(track, frame);
+    switch (track.target) {
+      case AnimTarget::Camera: applyToCamera(result.camera, track.property, v); break;
+      case AnimTarget::Sphere: applyToSphere(result.spheres[track.index], track.property, v); break;
+      case AnimTarget::Object: applyToObject(result.objects[track.index], track.property, v); break;
+      case AnimTarget::Light: applyToLight(result.lights[track.index], track.property, v); break;
+    }
+  }
+  return result;
+}
+
+}  // namespace candela

@@ -1,0 +1,23 @@
+// Keyframed animation: the scene at one frame of its `animation` block.
+//
+// Tracks interpolate linearly per component between keys (Euler angles too, so a 0 -> 360 key pair
+// is one full turn) and hold the first key's value before it and the last key's value after it.
+// Every frame also gets its own seed, render.seed + frame, so that noise is never frozen between
+// frames of an animation or of a sequence of scene files.
+#pragma once
+
+#include <cstdint>
+
+#include "scene/scene_desc.h"
+
+namespace candela {
+
+// The value of `track` at `frame` (scalars in all three components).
+Vec3 evaluateTrack(const AnimTrack& track, uint32_t frame);
+
+// The still scene at `frame`: every track applied, render.seed + frame, and no animation block.
+// Works for scenes without animation too (only the seed changes). A colour track on an object
+// without a material of its own makes it diffuse with that colour, as a static "color" would.
+SceneDesc sceneAtFrame(const SceneDesc& scene, uint32_t frame);
+
+}  // namespace candela

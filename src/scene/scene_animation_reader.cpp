@@ -1,0 +1,305 @@
+// Reading and checking the animation block; see scene_animation_reader.h.
+#include "scene/scene_animation_reader.h"
+
+#include <cmath>
+#include <cstdint>
+#include <map>
+
+#include "scene/animation.h"
+#include "scene/did_you_mean.h"
+
+namespace candela {
+namespace {
+
+struct PropertyName {
+  const char* name;
+  AnimProperty property;
+};
+
+const std::vector<PropertyName>& propertiesOf(AnimTarget target) {
+  static const std::vector<PropertyName> camera = {
+      {"position", AnimProperty::Position}, {"rotation", AnimProperty::Rotation},
+      {"look_at", AnimProperty::LookAt},    {"up", AnimProperty::Up},
+      {"fov", AnimProperty::Fov},           {"aperture_radius", AnimProperty::ApertureRadius},
+      {"focus_distance", AnimProperty::FocusDistance}};
+  static const std::vector<PropertyName> sphere = {{"position", AnimProperty::Position},
+                                                   {"radius", AnimProperty::Radius},
+                                                   {"color", AnimProperty::Color}};
+  static const std::vector<PropertyName> object = {{"position", AnimProperty::Position},
+                                                   {"rotation", AnimProperty::Rotation},
+                                                   {"scale", AnimProperty::Scale},
+                                                   {"color", AnimProperty::Color}};
+  static const std::vector<PropertyName> light = {{"position", AnimProperty::Position},
+                                                  {"intensity", AnimProperty::Intensity},
+                                                  {"color", AnimProperty::Color},
+                                                  {"radius", AnimProperty::Radius}};
+  switch (target) {
+    case AnimTarget::Camera: return camera;
+    case AnimTarget::Sphere: return sphere;
+    case AnimTarget::Object: return object;
+    case AnimTarget::Light: break;
+  }
+  return light;
+}
+
+// What a track may name: "camera" and every id, in file order (for did-you-mean ties).
+struct Targets {
+  std::vector<std::string> names{"camera"};
+  std::map<std::string, std::pair<AnimTarget, uint32_t>> byId;
+
+  explicit Targets(const SceneDesc& scene) {
+    add(scene.spheres, AnimTarget::Sphere);
+    add(scene.objects, AnimTarget::Object);
+    add(scene.lights, AnimTarget::Light);
+  }
+  template <typename Entities>
+  void add(const Entities& entities, AnimTarget kind) {
+    for (uint32_t i = 0; i < entities.size(); ++i) {
+      if (entities[i].id.empty()) continue;
+      names.push_back(entities[i].id);
+      byId[entities[i].id] = {kind, i};
+    }
+  }
+};
+
+std::string describeTarget(AnimTarget target, const std::string& id) {
+  switch (target) {
+    case AnimTarget::Camera: return "the camera";
+    case AnimTarget::Sphere: return "sphere " + candela::quoted(id);
+    case AnimTarget::Object: return "object " + candela::quoted(id);
+    case AnimTarget::Light: break;
+  }
+  return "light " + candela::quoted(id);
+}
+
+void readTarget(const JsonValue& value, const Targets& targets, AnimTrack& track,
+                std::string* id) {
+  *id = value.string();
+  if (*id == "camera") {
+    track.target = AnimTarget::Camera;
+    return;
+  }
+  const auto found = targets.byId.find(*id);
+  if (found == targets.byId.end()) {
+    const std::string suggestion = closestMatch(*id, targets.names);
+    value.fail("no sphere, object or light has id " + candela::quoted(*id) +
+               (suggestion.empty() ? "" : " (did you mean " + candela::quoted(suggestion) + "?)"));
+  }
+  track.target = found->second.first;
+  track.index = found->second.second;
+}
+
+void readProperty(const JsonValue& value, const std::string& targetName, AnimTrack& track) {
+  const std::string name = value.string();
+  std::vector<std::string> names;
+  for (const PropertyName& p : propertiesOf(track.target)) {
+    if (name == p.name) {
+      track.property = p.property;
+      return;
+    }
+    names.push_back(p.name);
+  }
+  const std::string suggestion = closestMatch(name, names);
+  if (!suggestion.empty())
+    value.fail(targetName + " has no animatable property " + candela::quoted(name) + ", did you mean " +
+               candela::quoted(suggestion) + "?");
+  std::string list;
+  for (const std::string& n : names) list += (list.empty() ? "" : ", ") + candela::quoted(n);
+  value.fail(targetName + " has no animatable property " + candela::quoted(name) + ", expected one of " +
+             list);
+}
+
+// A scale key: a non-zero number or three non-zero numbers, as a static "scale".
+Vec3 readScaleValue(const JsonValue& value) {
+  const std::string expectation = "a non-zero number";
+  if (value.json().is_number()) {
+    const float s = value.number(expectation);
+    if (s == 0) value.failExpected(expectation);
+    return Vec3(s);
+  }
+  if (!value.json().is_array() || value.json().size() != 3)
+    value.failExpected("a non-zero number or an array of 3 non-zero numbers");
+  const std::vector<JsonValue> e = value.elements();
+  Vec3 scale;
+  for (int i = 0; i < 3; ++i) {
+    scale[i] = e[i].number(expectation);
+    if (scale[i] == 0) e[i].failExpected(expectation);
+  }
+  return scale;
+}
+
+Vec3 readValue(const JsonValue& value, AnimProperty property) {
+  switch (property) {
+    case AnimProperty::Position:
+    case AnimProperty::Rotation:
+    case AnimProperty::LookAt:
+    case AnimProperty::Up: return value.vec3();
+    case AnimProperty::Fov: {
+      const std::string expectation = "a number between 0 and 180 (exclusive)";
+      const float fov = value.number(expectation);
+      if (!(fov > 0 && fov < 180)) value.failExpected(expectation);
+      return Vec3(fov);
+    }
+    case AnimProperty::ApertureRadius:
+    case AnimProperty::Intensity: return Vec3(value.nonNegativeNumber());
+    case AnimProperty::FocusDistance:
+    case AnimProperty::Radius: return Vec3(value.positiveNumber());
+    case AnimProperty::Color: return value.colour();
+    case AnimProperty::Scale: return readScaleValue(value);
+  }
+  return Vec3(0.0f);
+}
+
+void readKeys(const JsonValue& value, AnimTrack& track) {
+  const std::string expectation = "a non-empty array of [frame, value] keys";
+  const std::vector<JsonValue> keys = value.elements(expectation);
+  if (keys.empty()) value.failExpected(expectation);
+  for (const JsonValue& key : keys) {
+    if (!key.json().is_array() || key.json().size() != 2)
+      key.failExpected("a key [frame, value]");
+    const std::vector<JsonValue> parts = key.elements();
+    AnimKey k;
+    k.frame = uint32_t(parts[0].integer(0, UINT32_MAX, "a non-negative integer frame"));
+    k.value = readValue(parts[1], track.property);
+    if (!track.keys.empty()) {
+      const AnimKey& previous = track.keys.back();
+      if (k.frame <= previous.frame)
+        key.fail("frames must increase, got " + std::to_string(k.frame) + " after " +
+                 std::to_string(previous.frame));
+      // Interpolating through zero would flatten the mesh (and divide its normals by zero).
+      if (track.property == AnimProperty::Scale)
+        for (int i = 0; i < 3; ++i)
+          if ((k.value[i] > 0) != (previous.value[i] > 0))
+            parts[1].fail("scale changes sign between keys, so the mesh would pass through "
+                          "zero size");
+    }
+    track.keys.push_back(k);
+  }
+}
+
+// Refuses a property that the target's style does not use.
+void checkUsed(const JsonValue& property, const AnimTrack& track, const SceneDesc& scene) {
+  const auto unused = [&](const std::string& why) {
+    property.fail(candela::quoted(property.string()) + " is not used by " + why);
+  };
+  if (track.target == AnimTarget::Camera) {
+    const CameraDesc& c = scene.camera;
+    switch (track.property) {
+      case AnimProperty::Fov:
+        if (c.intrinsics) unused("a camera given by \"intrinsics\"");
+        break;
+      case AnimProperty::Position:
+        if (c.extrinsicsR) unused("a camera given by \"extrinsics\"");
+        break;
+      case AnimProperty::Rotation:
+        if (c.extrinsicsR) unused("a camera given by \"extrinsics\"");
+        if (c.lookAt) unused("a camera aimed with \"look_at\"");
+        break;
+      case AnimProperty::LookAt:
+      case AnimProperty::Up:
+        if (!c.lookAt) unused("a camera without \"look_at\"");
+        break;
+      default: break;
+    }
+  } else if (track.target == AnimTarget::Light) {
+    if (track.property == AnimProperty::Radius &&
+        scene.lights[track.index].type == LightType::Point)
+      unused("a point light (only \"sphere\" lights have a radius)");
+  } else if (track.property == AnimProperty::Color) {
+    const MaterialDesc* m = track.target == AnimTarget::Sphere
+                                ? &scene.spheres[track.index].material
+                                : (scene.objects[track.index].material
+                                       ? &*scene.objects[track.index].material
+                                       : nullptr);
+    if (m && m->type == MaterialType::Emissive) unused("an emissive material");
+  }
+}
+
+// The thin-lens fields must make sense together whichever of them is animated.
+void checkLens(const JsonValue& value, const AnimationDesc& animation, const SceneDesc& scene) {
+  const AnimTrack* aperture = nullptr;
+  const AnimTrack* focus = nullptr;
+  for (const AnimTrack& t : animation.tracks) {
+    if (t.target != AnimTarget::Camera) continue;
+    if (t.property == AnimProperty::ApertureRadius) aperture = &t;
+    if (t.property == AnimProperty::FocusDistance) focus = &t;
+  }
+  const CameraDesc& c = scene.camera;
+  if (focus && !aperture && c.apertureRadius == 0)
+    failAt(value.file(), memberPath(focus->where, "property"),
+           "\"focus_distance\" is not used by a pinhole camera (aperture_radius 0)");
+  if (aperture && !focus && !c.focusDistance && !c.lookAt)
+    failAt(value.file(), memberPath(aperture->where, "property"),
+           "an animated \"aperture_radius\" needs \"focus_distance\" or \"look_at\" on the "
+               "camera, or a focus_distance track");
+}
+
+// A look_at camera must have a view direction, not parallel to up, at every frame.
+void checkViewAtEveryFrame(const JsonValue& value, const AnimationDesc& animation,
+                           const SceneDesc& scene) {
+  if (!scene.camera.lookAt) return;
+  bool animated = false;
+  for (const AnimTrack& t : animation.tracks)
+    animated = animated || (t.target == AnimTarget::Camera &&
+                            (t.property == AnimProperty::Position ||
+                             t.property == AnimProperty::LookAt || t.property == AnimProperty::Up));
+  if (!animated) return;
+  SceneDesc still = scene;
+  still.animation = animation;
+  still.spheres.clear();  // only the camera matters here; avoid copying meshes per frame
+  still.objects.clear();
+  still.lights.clear();
+  still.animation->tracks.clear();
+  for (const AnimTrack& t : animation.tracks)
+    if (t.target == AnimTarget::Camera) still.animation->tracks.push_back(t);
+  for (uint32_t frame = 0; frame < animation.frames; ++frame) {
+    const CameraDesc c = sceneAtFrame(still, frame).camera;
+    const Vec3 f = *c.lookAt - c.position;
+    const std::string at = "at frame " + std::to_string(frame) + " the camera";
+    if (isBlack(f)) value.fail(at + " looks at its own position");
+    const double fx = f.x, fy = f.y, fz = f.z, ux = c.up.x, uy = c.up.y, uz = c.up.z;
+    const double cx = fy * uz - fz * uy, cy = fz * ux - fx * uz, cz = fx * uy - fy * ux;
+    const double norm2 = (fx * fx + fy * fy + fz * fz) * (ux * ux + uy * uy + uz * uz);
+    if (!((cx * cx + cy * cy + cz * cz) / norm2 > 1e-12))
+      value.fail(at + " looks along its up direction");
+  }
+}
+
+}  // namespace
+
+AnimationDesc readAnimation(const JsonValue& value, const SceneDesc& scene) {
+  JsonObject fields(value, {"frames", "fps", "tracks"});
+  AnimationDesc animation;
+  animation.frames =
+      uint32_t(fields.require("frames").integer(1, UINT32_MAX, "a positive integer"));
+  if (std::optional<JsonValue> fps = fields.get("fps")) animation.fps = fps->positiveNumber();
+
+  const Targets targets(scene);
+  std::map<std::pair<std::string, int>, std::string> animated;  // (target, property) -> track
+  if (std::optional<JsonValue> tracks = fields.get("tracks")) {
+    for (const JsonValue& element : tracks->elements()) {
+      JsonObject t(element, {"target", "property", "keys"});
+      AnimTrack track;
+      track.where = element.path();
+      std::string id;
+      readTarget(t.require("target"), targets, track, &id);
+      const std::string targetName = describeTarget(track.target, id);
+      const JsonValue property = t.require("property");
+      readProperty(property, targetName, track);
+      checkUsed(property, track, scene);
+      const auto previous = animated.emplace(std::make_pair(id, int(track.property)), track.where);
+      if (!previous.second)
+        element.fail(targetName + "'s " + property.string() + " is already animated by " +
+                     previous.first->second);
+      readKeys(t.require("keys"), track);
+      t.finish();
+      animation.tracks.push_back(std::move(track));
+    }
+  }
+  fields.finish();
+  checkLens(value, animation, scene);
+  checkViewAtEveryFrame(value, animation, scene);
+  return animation;
+}
+
+}  // namespace candela

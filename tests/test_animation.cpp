@@ -1,0 +1,302 @@
+// Animation: every error class of the animation block pinned to its exact message, and the
+// values sceneAtFrame interpolates at keys, between keys and outside the keyed range.
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <functional>
+#include <string>
+
+#include "scene/animation.h"
+#include "scene/frame_scene.h"
+#include "scene/scene_error.h"
+#include "scene/scene_loader.h"
+
+namespace candela {
+namespace {
+
+// A camera, a sphere "ball", an object-free scene with a point light "lamp" and a sphere light
+// "bulb"; `animation` is the text of the animation block.
+std::string sceneWith(const std::string& animation, const std::string& camera = "{}") {
+  return R"({"camera": )" + camera + R"(,
+    "spheres": [{"id": "ball", "position": [0, 0, 0], "radius": 1, "color": 0.5},
+                {"id": "sun", "position": [0, 9, 0], "radius": 1,
+                 "material": {"type": "emissive", "radiance": 1}}],
+    "lights": [{"id": "lamp", "position": [0, 5, 0], "intensity": 10},
+               {"id": "bulb", "type": "sphere", "position": [3, 5, 0], "radius": 0.5,
+                "intensity": 10}],
+    "animation": )" + animation + "}";
+}
+
+SceneDesc parse(const std::string& json) { return parseSceneText(json, "s.json", "."); }
+
+std::string error(const std::string& animation, const std::string& camera = "{}") {
+  try {
+    parse(sceneWith(animation, camera));
+  } catch (const SceneError& e) {
+    return e.what();
+  }
+  return "(no SceneError)";
+}
+
+std::string trackError(const std::string& track, const std::string& camera = "{}") {
+  return error(R"({"frames": 10, "tracks": [)" + track + "]}", camera);
+}
+
+TEST(AnimationErrors, Frames) {
+  EXPECT_EQ(error(R"({"frames": 0})"),
+            "s.json: animation.frames: expected a positive integer, got 0");
+  EXPECT_EQ(error(R"({"frames": 2.5})"),
+            "s.json: animation.frames: expected a positive integer, got 2.5");
+  EXPECT_EQ(error(R"({"fps": 24})"), "s.json: animation: missing required key \"frames\"");
+  EXPECT_EQ(error(R"({"frames": 2, "fps": 0})"),
+            "s.json: animation.fps: expected a positive number, got 0");
+}
+
+TEST(AnimationErrors, UnknownKeys) {
+  EXPECT_EQ(error(R"({"frames": 2, "trakcs": []})"),
+            "s.json: animation.trakcs: unknown key, did you mean \"tracks\"?");
+  EXPECT_EQ(trackError(R"({"target": "ball", "property": "radius", "key": [[0, 1]]})"),
+            "s.json: animation.tracks[0].key: unknown key, did you mean \"keys\"?");
+  EXPECT_EQ(trackError(R"({"target": "ball", "property": "radius"})"),
+            "s.json: animation.tracks[0]: missing required key \"keys\"");
+}
+
+TEST(AnimationErrors, UnknownTarget) {
+  EXPECT_EQ(trackError(R"({"target": "bal", "property": "radius", "keys": [[0, 1]]})"),
+            "s.json: animation.tracks[0].target: no sphere, object or light has id \"bal\" "
+            "(did you mean \"ball\"?)");
+  EXPECT_EQ(trackError(R"({"target": "nothing", "property": "radius", "keys": [[0, 1]]})"),
+            "s.json: animation.tracks[0].target: no sphere, object or light has id "
+            "\"nothing\"");
+}
+
+TEST(AnimationErrors, UnknownProperty) {
+  EXPECT_EQ(trackError(R"({"target": "ball", "property": "raduis", "keys": [[0, 1]]})"),
+            "s.json: animation.tracks[0].property: sphere \"ball\" has no animatable property "
+            "\"raduis\", did you mean \"radius\"?");
+  EXPECT_EQ(trackError(R"({"target": "camera", "property": "width", "keys": [[0, 1]]})"),
+            "s.json: animation.tracks[0].property: the camera has no animatable property "
+            "\"width\", expected one of \"position\", \"rotation\", \"look_at\", \"up\", "
+            "\"fov\", \"aperture_radius\", \"focus_distance\"");
+  EXPECT_EQ(trackError(R"({"target": "lamp", "property": "scale", "keys": [[0, 1]]})"),
+            "s.json: animation.tracks[0].property: light \"lamp\" has no animatable property "
+            "\"scale\", expected one of \"position\", \"intensity\", \"color\", "
+            "\"radius\"");
+}
+
+TEST(AnimationErrors, PropertyTheTargetDoesNotUse) {
+  EXPECT_EQ(trackError(R"({"target": "lamp", "property": "radius", "keys": [[0, 1]]})"),
+            "s.json: animation.tracks[0].property: \"radius\" is not used by a point light "
+            "(only \"sphere\" lights have a radius)");
+  EXPECT_EQ(trackError(R"({"target": "sun", "property": "color", "keys": [[0, 1]]})"),
+            "s.json: animation.tracks[0].property: \"color\" is not used by an emissive "
+            "material");
+  EXPECT_EQ(trackError(R"({"target": "camera", "property": "fov", "keys": [[0, 30]]})",
+                       R"({"intrinsics": {"fx": 100, "fy": 100, "cx": 50, "cy": 50}})"),
+            "s.json: animation.tracks[0].property: \"fov\" is not used by a camera given by "
+            "\"intrinsics\"");
+  EXPECT_EQ(trackError(R"({"target": "camera", "property": "look_at", "keys": [[0, [0, 0, 0]]]})"),
+            "s.json: animation.tracks[0].property: \"look_at\" is not used by a camera without "
+            "\"look_at\"");
+  EXPECT_EQ(trackError(R"({"target": "camera", "property": "rotation", "keys": [[0, [0, 0, 0]]]})",
+                       R"({"position": [0, 0, 5], "look_at": [0, 0, 0]})"),
+            "s.json: animation.tracks[0].property: \"rotation\" is not used by a camera aimed "
+            "with \"look_at\"");
+  EXPECT_EQ(trackError(R"({"target": "camera", "property": "focus_distance", "keys": [[0, 5]]})"),
+            "s.json: animation.tracks[0].property: \"focus_distance\" is not used by a pinhole "
+            "camera (aperture_radius 0)");
+  EXPECT_EQ(trackError(R"({"target": "camera", "property": "aperture_radius", "keys": [[0, 1]]})"),
+            "s.json: animation.tracks[0].property: an animated \"aperture_radius\" needs "
+            "\"focus_distance\" or \"look_at\" on the camera, or a focus_distance track");
+}
+
+TEST(AnimationErrors, WrongValueShape) {
+  EXPECT_EQ(trackError(R"({"target": "ball", "property": "position", "keys": [[0, 1]]})"),
+            "s.json: animation.tracks[0].keys[0][1]: expected an array of 3 numbers, got 1");
+  EXPECT_EQ(trackError(R"({"target": "ball", "property": "radius", "keys": [[0, [1, 1, 1]]]})"),
+            "s.json: animation.tracks[0].keys[0][1]: expected a positive number, got an array "
+            "[1,1,1]");
+  EXPECT_EQ(trackError(R"({"target": "ball", "property": "radius", "keys": [[0, 1], [5, -1]]})"),
+            "s.json: animation.tracks[0].keys[1][1]: expected a positive number, got -1");
+  EXPECT_EQ(trackError(R"({"target": "camera", "property": "fov", "keys": [[0, 180]]})"),
+            "s.json: animation.tracks[0].keys[0][1]: expected a number between 0 and 180 "
+            "(exclusive), got 180");
+  EXPECT_EQ(trackError(R"({"target": "ball", "property": "color", "keys": [[0, [1, 2]]]})"),
+            "s.json: animation.tracks[0].keys[0][1]: expected a colour (a number or an array of 3 "
+            "numbers), got an array [1,2]");
+}
+
+TEST(AnimationErrors, Keys) {
+  EXPECT_EQ(trackError(R"({"target": "ball", "property": "radius", "keys": []})"),
+            "s.json: animation.tracks[0].keys: expected a non-empty array of [frame, value] keys, "
+            "got an array []");
+  EXPECT_EQ(trackError(R"({"target": "ball", "property": "radius", "keys": [1, 2]})"),
+            "s.json: animation.tracks[0].keys[0]: expected a key [frame, value], got 1");
+  EXPECT_EQ(trackError(R"({"target": "ball", "property": "radius", "keys": [[-1, 2]]})"),
+            "s.json: animation.tracks[0].keys[0][0]: expected a non-negative integer frame, got "
+            "-1");
+  EXPECT_EQ(
+      trackError(
+          R"({"target": "ball", "property": "radius", "keys": [[0, 1], [12, 2], [10, 3]]})"),
+      "s.json: animation.tracks[0].keys[2]: frames must increase, got 10 after 12");
+  EXPECT_EQ(trackError(R"({"target": "ball", "property": "radius", "keys": [[3, 1], [3, 2]]})"),
+            "s.json: animation.tracks[0].keys[1]: frames must increase, got 3 after 3");
+}
+
+TEST(AnimationErrors, DuplicateTrack) {
+  EXPECT_EQ(trackError(R"({"target": "ball", "property": "radius", "keys": [[0, 1]]},
+                          {"target": "ball", "property": "radius", "keys": [[0, 2]]})"),
+            "s.json: animation.tracks[1]: sphere \"ball\"'s radius is already animated by "
+            "animation.tracks[0]");
+}
+
+TEST(AnimationErrors, LookAtCameraDegenerateAtSomeFrame) {
+  // The camera moves from z=5 to z=-5 through the point it looks at, reached at frame 5.
+  EXPECT_EQ(
+      trackError(R"({"target": "camera", "property": "position",
+                     "keys": [[0, [0, 0, 5]], [10, [0, 0, -5]]]})",
+                 R"({"position": [0, 0, 5], "look_at": [0, 0, 0]})"),
+      "s.json: animation: at frame 5 the camera looks at its own position");
+  EXPECT_EQ(trackError(R"({"target": "camera", "property": "up",
+                           "keys": [[0, [0, 1, 0]], [9, [0, 0, 1]]]})",
+                       R"({"position": [0, 0, 5], "look_at": [0, 0, 0]})"),
+            "s.json: animation: at frame 9 the camera looks along its up direction");
+}
+
+TEST(AnimationErrors, ScaleMayNotChangeSign) {
+  // Objects need an OBJ file; the check is on the keys, so an object scene is built here.
+  try {
+    parseSceneText(R"({"camera": {}, "objects": [{"id": "m", "file": "none.obj"}],
+        "animation": {"frames": 2, "tracks": [
+          {"target": "m", "property": "scale", "keys": [[0, 1], [1, [1, -1, 1]]]}]}})",
+                   "s.json", ".");
+    FAIL() << "no SceneError";
+  } catch (const SceneError& e) {
+    EXPECT_STREQ(e.what(),
+                 "s.json: animation.tracks[0].keys[1][1]: scale changes sign between keys, so "
+                 "the mesh would pass through zero size");
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Interpolation.
+
+TEST(SceneAtFrame, InterpolatesAtKeysBetweenKeysAndHoldsOutside) {
+  const SceneDesc scene = parse(sceneWith(R"({"frames": 20, "fps": 12, "tracks": [
+      {"target": "ball", "property": "position", "keys": [[2, [0, 0, 0]], [6, [4, -8, 2]],
+                                                          [10, [4, 0, 2]]]},
+      {"target": "ball", "property": "radius", "keys": [[0, 1], [4, 3]]},
+      {"target": "lamp", "property": "color", "keys": [[0, 0], [2, [1, 0.5, 2]]]},
+      {"target": "camera", "property": "fov", "keys": [[5, 90]]}]})"));
+  ASSERT_TRUE(scene.animation);
+  EXPECT_FLOAT_EQ(scene.animation->fps, 12);
+  const auto ball = [&](uint32_t frame) { return sceneAtFrame(scene, frame).spheres[0]; };
+  // Held before the first key, exact at keys, linear between, held after the last.
+  EXPECT_EQ(ball(0).position.x, 0);
+  EXPECT_EQ(ball(2).position.y, 0);
+  EXPECT_EQ(ball(6).position.y, -8);
+  EXPECT_EQ(ball(4).position.x, 2);
+  EXPECT_EQ(ball(4).position.y, -4);
+  EXPECT_EQ(ball(4).position.z, 1);
+  EXPECT_EQ(ball(7).position.y, -6);
+  EXPECT_EQ(ball(8).position.y, -4);
+  EXPECT_EQ(ball(19).position.y, 0);
+  EXPECT_EQ(ball(19).position.x, 4);
+  EXPECT_EQ(ball(1).radius, 1.5f);
+  EXPECT_EQ(ball(3).radius, 2.5f);
+  EXPECT_EQ(ball(100).radius, 3);
+  // A colour given as a number is grey; a single key holds everywhere.
+  EXPECT_EQ(sceneAtFrame(scene, 0).lights[0].color.y, 0);
+  EXPECT_EQ(sceneAtFrame(scene, 1).lights[0].color.z, 1);
+  EXPECT_EQ(sceneAtFrame(scene, 1).lights[0].color.y, 0.25f);
+  EXPECT_EQ(sceneAtFrame(scene, 0).camera.fov, 90);
+  EXPECT_EQ(sceneAtFrame(scene, 19).camera.fov, 90);
+  // Untouched values stay; the still has no animation block.
+  EXPECT_EQ(sceneAtFrame(scene, 3).spheres[0].material.color.x, 0.5f);
+  EXPECT_FALSE(sceneAtFrame(scene, 3).animation);
+}
+
+TEST(SceneAtFrame, SeedAdvancesWithTheFrame) {
+  SceneDesc scene = parse(sceneWith(R"({"frames": 3})"));
+  scene.render.seed = 40;
+  EXPECT_EQ(sceneAtFrame(scene, 0).render.seed, 40u);
+  EXPECT_EQ(sceneAtFrame(scene, 2).render.seed, 42u);
+  scene.animation.reset();  // a still scene in a sequence of files gets the same seeds
+  EXPECT_EQ(sceneAtFrame(scene, 5).render.seed, 45u);
+}
+
+TEST(SceneAtFrame, ColourTrackOnAnObjectWithoutMaterialMakesItDiffuse) {
+  SceneDesc scene;
+  scene.objects.resize(1);
+  AnimTrack track;
+  track.target = AnimTarget::Object;
+  track.property = AnimProperty::Color;
+  track.keys = {{0, Vec3(0.25f)}};
+  scene.animation = AnimationDesc{};
+  scene.animation->tracks.push_back(track);
+  const SceneDesc still = sceneAtFrame(scene, 0);
+  ASSERT_TRUE(still.objects[0].material);
+  EXPECT_EQ(still.objects[0].material->type, MaterialType::Diffuse);
+  EXPECT_EQ(still.objects[0].material->color.x, 0.25f);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Reuse of geometry and BVH between frames.
+
+template <typename T>
+bool sameBytes(const std::vector<T>& a, const std::vector<T>& b) {
+  return a.size() == b.size() &&
+         (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
+}
+
+// What the renderer sees of `a` and `b` is the same, byte for byte.
+void expectSameScene(const SceneData& a, const SceneData& b) {
+  EXPECT_TRUE(sameBytes(a.materials, b.materials));
+  EXPECT_TRUE(sameBytes(a.spheres, b.spheres));
+  EXPECT_TRUE(sameBytes(a.lights, b.lights));
+  EXPECT_TRUE(sameBytes(a.positions, b.positions));
+  EXPECT_TRUE(sameBytes(a.triangles, b.triangles));
+  EXPECT_TRUE(sameBytes(a.nodes, b.nodes));
+  EXPECT_TRUE(sameBytes(a.primIndices, b.primIndices));
+  EXPECT_EQ(std::memcmp(&a.camera, &b.camera, sizeof(Camera)), 0);
+  EXPECT_EQ(a.settings.seed, b.settings.seed);
+}
+
+TEST(FrameScene, CameraAndLightChangesReuseTheBvhAndGeometryChangesRebuildIt) {
+  const SceneDesc scene = parse(sceneWith(R"({"frames": 6, "tracks": [
+      {"target": "camera", "property": "position", "keys": [[0, [0, 0, 9]], [2, [1, 0, 9]]]},
+      {"target": "lamp", "property": "intensity", "keys": [[0, 10], [3, 40]]},
+      {"target": "ball", "property": "color", "keys": [[0, 0.5], [3, 0.9]]},
+      {"target": "ball", "property": "radius", "keys": [[3, 1], [5, 2]]}]})"));
+  FrameScene frames;
+  const bool expectReused[6] = {false, true, true, true, false, false};
+  for (uint32_t f = 0; f < 6; ++f) {
+    const SceneDesc still = sceneAtFrame(scene, f);
+    const SceneData& data = frames.prepare(still);
+    EXPECT_EQ(frames.reused(), expectReused[f]) << "frame " << f;
+    expectSameScene(data, flattenScene(still));
+  }
+}
+
+TEST(FrameScene, ObjectTransformChangeRebuilds) {
+  SceneDesc scene;
+  ObjectDesc object;
+  object.mesh.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)};
+  object.mesh.triangles = {Triangle{{0, 1, 2}, {-1, -1, -1}, 0}};
+  object.mesh.materials = {MaterialDesc{}};
+  scene.objects.push_back(object);
+  FrameScene frames;
+  frames.prepare(scene);
+  scene.camera.fov = 30;
+  frames.prepare(scene);
+  EXPECT_TRUE(frames.reused());
+  scene.objects[0].rotation = Vec3(0, 10, 0);
+  expectSameScene(frames.prepare(scene), flattenScene(scene));
+  EXPECT_FALSE(frames.reused());
+  scene.objects[0].mesh.positions[2] = Vec3(0, 2, 0);  // same transform, other mesh
+  expectSameScene(frames.prepare(scene), flattenScene(scene));
+  EXPECT_FALSE(frames.reused());
+}
+
+}  // namespace
+}  // namespace candela
