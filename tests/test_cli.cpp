@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -69,9 +70,11 @@ class CliTest : public ::testing::Test {
     std::ofstream(path(name), std::ios::binary) << text;
   }
 
-  // Runs `candela <args>` with the test directory as working directory.
-  RunResult run(const std::string& args) const {
-    const std::string command = "cd '" + dir_.string() + "' && '" + CANDELA_BINARY + "' " + args +
+  // Runs `candela <args>` with the test directory as working directory; `env` may set
+  // environment variables for it ("PATH=/x").
+  RunResult run(const std::string& args, const std::string& env = "") const {
+    const std::string command = "cd '" + dir_.string() + "' && " + env + " '" + CANDELA_BINARY +
+                                "' " + args +
                                 " > stdout.txt 2> stderr.txt < /dev/null";
     const int status = std::system(command.c_str());
     RunResult result;
@@ -295,6 +298,181 @@ TEST_F(CliTest, InterruptStopsWithoutWritingAnImage) {
   EXPECT_EQ(WEXITSTATUS(status), 130);
   EXPECT_EQ(slurp(path("stderr.txt")), "candela: interrupted, no image written\n");
   EXPECT_FALSE(fs::exists(path("long.png")));
+}
+
+// ---------------------------------------------------------------------------------------------
+// Sequences and animations.
+
+// kTinyScene with ids and an animation block of `frames` frames and the given tracks.
+std::string animatedScene(int frames, const std::string& tracks) {
+  return R"({
+  "camera": {"width": 16, "height": 12, "spp": 4, "position": [0, 0, 5]},
+  "spheres": [{"id": "ball", "position": [0, 0, 0], "radius": 1, "color": 0.5}],
+  "lights": [{"id": "lamp", "position": [0, 3, 3], "intensity": 100}],
+  "animation": {"frames": )" + std::to_string(frames) + R"(, "tracks": [)" + tracks + "]}}";
+}
+
+// The still that the animation above shows at a frame: the ball at x, the camera's fov.
+std::string stillScene(const std::string& x, const std::string& fov) {
+  return R"({
+  "camera": {"width": 16, "height": 12, "spp": 4, "position": [0, 0, 5], "fov": )" + fov + R"(},
+  "spheres": [{"position": [)" + x + R"(, 0, 0], "radius": 1, "color": 0.5}],
+  "lights": [{"position": [0, 3, 3], "intensity": 100}]})";
+}
+
+TEST_F(CliTest, SequenceOfFilesAndAnimationBlockGiveBitIdenticalFrames) {
+  writeFile("anim.json", animatedScene(3, R"(
+      {"target": "ball", "property": "position", "keys": [[0, [0, 0, 0]], [2, [1, 0, 0]]]},
+      {"target": "camera", "property": "fov", "keys": [[0, 50], [2, 70]]})"));
+  writeFile("s0.json", stillScene("0", "50"));
+  writeFile("s1.json", stillScene("0.5", "60"));
+  writeFile("s2.json", stillScene("1", "70"));
+  const RunResult a = run("render anim.json -o a/ --format pfm --backend cpu");
+  ASSERT_EQ(a.exitCode, 0) << a.err;
+  const RunResult b = run("render s0.json s1.json s2.json -o b/ --format pfm --backend cpu");
+  ASSERT_EQ(b.exitCode, 0) << b.err;
+  EXPECT_EQ(countLines(a.out), 4u) << "a line per frame and a total: " << a.out;
+  for (const char* name : {"frame_0000.pfm", "frame_0001.pfm", "frame_0002.pfm"}) {
+    ASSERT_TRUE(fs::exists(path("a") / name)) << name;
+    EXPECT_EQ(slurp(path("a") / name), slurp(path("b") / name)) << name;
+  }
+  EXPECT_NE(slurp(path("a/frame_0000.pfm")), slurp(path("a/frame_0001.pfm")));
+  EXPECT_FALSE(fs::exists(path("a/frame_0003.pfm")));
+}
+
+TEST_F(CliTest, EachFrameHasItsOwnSeedSoNoiseDiffersButTheMeanAgrees) {
+  writeFile("static.json", R"({
+    "camera": {"width": 48, "height": 36, "spp": 2, "position": [0, 0, 4]},
+    "spheres": [{"position": [0, 0, 0], "radius": 1.5, "color": 0.5}],
+    "lights": [{"type": "sphere", "position": [0, 3, 3], "radius": 1, "intensity": 400}],
+    "environment": {"color": 0.2},
+    "animation": {"frames": 2}})");
+  const RunResult r = run("render static.json -o f/ --format pfm --backend cpu");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const candela::ImageRGB a = candela::readImage(path("f/frame_0000.pfm").string());
+  const candela::ImageRGB b = candela::readImage(path("f/frame_0001.pfm").string());
+  ASSERT_EQ(a.pixels.size(), b.pixels.size());
+  // Per-pixel differences of independent estimates: their mean must be zero within its standard
+  // error (5 sigma), while the images themselves differ.
+  double sum = 0, sumSquares = 0;
+  size_t differing = 0;
+  for (size_t i = 0; i + 2 < a.pixels.size(); i += 3) {
+    const double d = (double(a.pixels[i]) + a.pixels[i + 1] + a.pixels[i + 2] - b.pixels[i] -
+                      b.pixels[i + 1] - b.pixels[i + 2]) /
+                     3.0;
+    sum += d;
+    sumSquares += d * d;
+    differing += d != 0;
+  }
+  const double n = double(a.pixels.size() / 3);
+  const double mean = sum / n;
+  const double standardError = std::sqrt((sumSquares / n - mean * mean) / n);
+  EXPECT_GT(double(differing), n / 4) << "the noise must not be frozen between frames";
+  EXPECT_LT(std::fabs(mean), 5 * standardError);
+}
+
+TEST_F(CliTest, ExistingFramesAreKeptUnlessOverwrite) {
+  writeFile("anim.json", animatedScene(3, ""));
+  ASSERT_EQ(run("render anim.json -o f/ --backend cpu").exitCode, 0);
+  const std::string first = slurp(path("f/frame_0000.png"));
+  writeFile("f/frame_0001.png", "not a png");  // stands for a frame that must be kept
+  fs::remove(path("f/frame_0002.png"));        // stands for a frame an interruption lost
+
+  const RunResult resumed = run("render anim.json -o f/ --backend cpu");
+  ASSERT_EQ(resumed.exitCode, 0) << resumed.err;
+  EXPECT_NE(resumed.out.find("f/: 2 of 3 frames exist and are kept"), std::string::npos)
+      << resumed.out;
+  EXPECT_NE(resumed.out.find("f/frame_0002.png: 16x12"), std::string::npos) << resumed.out;
+  EXPECT_EQ(resumed.out.find("frame_0001.png: "), std::string::npos) << resumed.out;
+  EXPECT_EQ(slurp(path("f/frame_0001.png")), "not a png");
+  EXPECT_EQ(slurp(path("f/frame_0000.png")), first);
+  uint32_t w = 0, h = 0;
+  EXPECT_TRUE(pngSize(path("f/frame_0002.png"), &w, &h));
+
+  const RunResult again = run("render anim.json -o f/ --overwrite --backend cpu");
+  ASSERT_EQ(again.exitCode, 0) << again.err;
+  EXPECT_TRUE(pngSize(path("f/frame_0001.png"), &w, &h));
+  EXPECT_EQ(slurp(path("f/frame_0000.png")), first) << "the same frame renders the same image";
+}
+
+TEST_F(CliTest, FramesRangeEndIsExclusive) {
+  writeFile("anim.json", animatedScene(5, ""));
+  const RunResult r = run("render anim.json -o f/ --frames 1:3 --format exr --backend cpu");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_FALSE(fs::exists(path("f/frame_0000.exr")));
+  EXPECT_TRUE(fs::exists(path("f/frame_0001.exr")));
+  EXPECT_TRUE(fs::exists(path("f/frame_0002.exr")));
+  EXPECT_FALSE(fs::exists(path("f/frame_0003.exr")));
+
+  const RunResult outside = run("render anim.json -o g/ --frames 3:9");
+  EXPECT_EQ(outside.exitCode, 2);
+  EXPECT_EQ(outside.err, "candela: error: --frames 3:9: there are 5 frames, numbered 0 to 4\n");
+  const RunResult empty = run("render anim.json -o g/ --frames 3:3");
+  EXPECT_EQ(empty.exitCode, 2);
+  EXPECT_NE(empty.err.find("the range is empty"), std::string::npos) << empty.err;
+  const RunResult file = run("render anim.json -o g.png");
+  EXPECT_EQ(file.exitCode, 2);
+  EXPECT_EQ(file.err,
+            "candela: error: -o g.png: a sequence is written to a folder (e.g. -o frames/), not "
+            "to one image\n");
+  EXPECT_FALSE(fs::exists(path("g")));
+}
+
+TEST_F(CliTest, BadSceneInASequenceIsReportedBeforeAnythingRenders) {
+  writeFile("a.json", kTinyScene);
+  writeFile("b.json", R"({"camera": {}, "spheres": [{"position": [0, 0, 0], "radius": -1}]})");
+  writeFile("c.json", kTinyScene);
+  const RunResult r = run("render a.json b.json c.json -o f/");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_EQ(r.err,
+            "candela: error: b.json: spheres[0].radius: expected a positive number, got -1\n");
+  EXPECT_TRUE(r.out.empty()) << r.out;
+  EXPECT_FALSE(fs::exists(path("f"))) << "nothing may be written";
+
+  writeFile("anim.json", animatedScene(2, ""));
+  const RunResult mixed = run("render a.json anim.json -o f/");
+  EXPECT_EQ(mixed.exitCode, 2);
+  EXPECT_EQ(mixed.err,
+            "candela: error: anim.json: animation: a scene with an animation block is rendered "
+            "on its own, not in a sequence of scene files\n");
+  EXPECT_FALSE(fs::exists(path("f")));
+}
+
+TEST_F(CliTest, VideoWithoutFfmpegKeepsTheFramesAndSaysHowToInstallIt) {
+  writeFile("anim.json", animatedScene(2, ""));
+  const RunResult r = run("render anim.json -o f/ --video v.mp4 --backend cpu", "PATH=/nowhere");
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.err.find("ffmpeg was not found on PATH"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("apt-get install ffmpeg"), std::string::npos) << r.err;
+  EXPECT_TRUE(fs::exists(path("f/frame_0000.png")));
+  EXPECT_TRUE(fs::exists(path("f/frame_0001.png")));
+  EXPECT_FALSE(fs::exists(path("v.mp4")));
+}
+
+TEST_F(CliTest, VideoHasOneFramePerRenderedFrame) {
+  if (system("command -v ffmpeg > /dev/null 2>&1 && command -v ffprobe > /dev/null 2>&1") != 0)
+    GTEST_SKIP() << "ffmpeg and ffprobe are not installed (they are optional)";
+  // Odd sizes: the encoder needs even ones, which the scale filter provides.
+  writeFile("anim.json", R"({
+    "camera": {"width": 17, "height": 13, "spp": 2, "position": [0, 0, 5]},
+    "spheres": [{"id": "ball", "position": [0, 0, 0], "radius": 1, "color": 0.5}],
+    "lights": [{"position": [0, 3, 3], "intensity": 100}],
+    "animation": {"frames": 5, "fps": 10, "tracks": [
+      {"target": "ball", "property": "position", "keys": [[0, [-1, 0, 0]], [4, [1, 0, 0]]]}]}})");
+  const RunResult r = run("render anim.json -o f/ --video v.mp4 --backend cpu");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const RunResult probe = [&] {
+    const std::string command = "cd '" + dir_.string() +
+                                "' && ffprobe -v error -count_frames -select_streams v:0 "
+                                "-show_entries stream=nb_read_frames,width,height "
+                                "-of csv=p=0 v.mp4 > probe.txt";
+    RunResult result;
+    result.exitCode = WEXITSTATUS(std::system(command.c_str()));
+    result.out = slurp(path("probe.txt"));
+    return result;
+  }();
+  ASSERT_EQ(probe.exitCode, 0);
+  EXPECT_EQ(probe.out, "16,12,5\n");
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "apps/cli/backend.h"
 
@@ -12,14 +13,23 @@ namespace candela::cli {
 
 // `candela render`; an absent optional keeps the scene file's value.
 struct RenderOptions {
-  std::string scene;
-  std::string output;  // empty: out/<scene file stem>.png
+  std::vector<std::string> scenes;  // one still, one animation, or a sequence of stills
+  std::string output;  // image file, or a folder for a sequence; empty: under out/
   std::optional<uint32_t> spp;
   std::optional<uint64_t> seed;
   std::optional<uint32_t> maxDepth;
   int threads = 0;  // 0: all cores
   Backend backend = Backend::Auto;
   bool quiet = false;
+  // Sequences only (see sequence_command.h); `sequenceOptionGiven` says whether any was set.
+  std::string format;               // png, exr or pfm; empty: png
+  std::string frames;               // "A:B", start inclusive, end exclusive; empty: all
+  bool overwrite = false;           // re-render frames that already exist
+  std::string video;                // encode the frames to this file with ffmpeg
+  std::optional<double> fps;        // video frame rate; default: the animation's, else 24
+  bool sequenceOptionGiven() const {
+    return !format.empty() || !frames.empty() || overwrite || !video.empty() || fps.has_value();
+  }
 };
 
 // `candela info`.

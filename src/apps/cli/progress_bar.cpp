@@ -37,6 +37,13 @@ ProgressBar::ProgressBar(std::FILE* out) : out_(out), start_(Clock::now()), last
 
 bool ProgressBar::wanted(bool quiet) { return !quiet && CANDELA_ISATTY(CANDELA_FILENO(stderr)); }
 
+void ProgressBar::startFrame(const std::string& label, unsigned done, unsigned count) {
+  label_ = label;
+  framesDone_ = done;
+  frameCount_ = count;
+  drawnOnce_ = false;  // draw the new label at once
+}
+
 void ProgressBar::update(double fraction) {
   const Clock::time_point now = Clock::now();
   if (drawnOnce_ && now - lastDraw_ < kRedrawInterval) return;
@@ -48,13 +55,16 @@ void ProgressBar::update(double fraction) {
   std::string bar =
       "[" + std::string(size_t(filled), '#') + std::string(size_t(kBarWidth - filled), '.') + "]";
 
+  // The ETA covers all frames: the time so far scaled by the fraction of all frames done.
+  const double overall =
+      frameCount_ > 0 ? (framesDone_ + fraction) / double(frameCount_) : fraction;
   char eta[32] = "-:--";  // unknown until some work is done
   const double elapsed = std::chrono::duration<double>(now - start_).count();
-  if (fraction > 0.0) formatClock(elapsed * (1.0 - fraction) / fraction, eta, sizeof eta);
+  if (overall > 0.0) formatClock(elapsed * (1.0 - overall) / overall, eta, sizeof eta);
 
-  char line[128];
-  const int n = std::snprintf(line, sizeof line, "\r%s %3d%%  ETA %s", bar.c_str(),
-                              int(fraction * 100.0), eta);
+  char line[256];
+  const int n = std::snprintf(line, sizeof line, "\r%s%s%s %3d%%  ETA %s", label_.c_str(),
+                              label_.empty() ? "" : " ", bar.c_str(), int(fraction * 100.0), eta);
   std::fputs(line, out_);
   // Pad over a longer previous line (an ETA that lost its hour digits).
   const size_t width = size_t(std::max(0, n - 1));

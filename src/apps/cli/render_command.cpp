@@ -1,5 +1,6 @@
-// `candela render`: validate the output path, load the scene, apply the command-line
-// overrides, render with a progress bar and Ctrl-C support, write the image, report.
+// `candela render`: load and validate every scene, then either render one still (validate the
+// output path, apply the command-line overrides, render with a progress bar and Ctrl-C support,
+// write the image, report) or hand the scenes to the sequence renderer.
 //
 // Nothing is written to the output path unless the render completes: every check that can fail
 // runs before rendering, and the image file is replaced atomically.
@@ -12,6 +13,7 @@
 #include "apps/cli/cli_error.h"
 #include "apps/cli/interrupt.h"
 #include "apps/cli/progress_bar.h"
+#include "apps/cli/sequence_command.h"
 #include "apps/cli/summary.h"
 #include "image/image_io.h"
 #include "scene/scene_data.h"
@@ -35,11 +37,9 @@ void checkOutputPath(const std::string& output) {
                                  ", expected .png, .exr or .pfm");
 }
 
-// Command-line values win over the scene file's.
-void applyOverrides(const RenderOptions& options, SceneDesc* desc) {
-  if (options.spp) desc->camera.spp = desc->render.spp = *options.spp;
-  if (options.seed) desc->render.seed = *options.seed;
-  if (options.maxDepth) desc->render.maxDepth = *options.maxDepth;
+bool isFolderOutput(const std::string& output) {
+  std::error_code ec;
+  return !output.empty() && (output.back() == '/' || fs::is_directory(output, ec));
 }
 
 void createParentDirectories(const std::string& output) {
@@ -52,15 +52,26 @@ void createParentDirectories(const std::string& output) {
                           "': " + ec.message());
 }
 
+int renderStill(const RenderOptions& options, SceneDesc desc);
+
 }  // namespace
 
+void applyOverrides(const RenderOptions& options, SceneDesc* desc) {
+  if (options.spp) desc->camera.spp = desc->render.spp = *options.spp;
+  if (options.seed) desc->render.seed = *options.seed;
+  if (options.maxDepth) desc->render.maxDepth = *options.maxDepth;
+}
+
 CLI::App* addRenderCommand(CLI::App& app, RenderOptions* options) {
-  CLI::App* cmd = app.add_subcommand("render", "Render a scene file to an image");
-  cmd->add_option("scene", options->scene, "Scene file (JSON)")
+  CLI::App* cmd = app.add_subcommand(
+      "render", "Render a scene file to an image, or an animation or several files to frames");
+  cmd->add_option("scenes", options->scenes,
+                  "Scene files (JSON); several render as a sequence, one frame each")
       ->required()
       ->check(CLI::ExistingFile);
   cmd->add_option("-o,--output", options->output,
-                  "Output image: .png, .exr or .pfm (default: out/<scene name>.png)");
+                  "Output image: .png, .exr or .pfm (default: out/<scene name>.png); for a "
+                  "sequence a folder (default: out/<first scene name>/)");
   cmd->add_option_function<uint32_t>(
          "--spp", [options](const uint32_t& v) { options->spp = v; }, "Samples per pixel")
       ->transform(decimalInteger(true));
@@ -79,17 +90,42 @@ CLI::App* addRenderCommand(CLI::App& app, RenderOptions* options) {
          "auto, cpu or cuda (default: auto)")
       ->check(backendChoice());
   cmd->add_flag("-q,--quiet", options->quiet, "No progress bar and no summary");
+  cmd->add_option("--format", options->format, "Frame format of a sequence (default: png)")
+      ->check(CLI::IsMember({"png", "exr", "pfm"}));
+  cmd->add_option("--frames", options->frames,
+                  "Render frames START:END of a sequence, END exclusive as in Python (10:20 is "
+                  "frames 10 to 19); START: and :END also work (default: all)");
+  cmd->add_flag("--overwrite", options->overwrite,
+                "Render frames again that already exist (default: keep them, so a run resumes)");
+  cmd->add_option("--video", options->video,
+                  "Also encode the frames to this video with ffmpeg (H.264, e.g. out.mp4)");
+  cmd->add_option_function<double>(
+         "--fps", [options](const double& v) { options->fps = v; },
+         "Frame rate of the video (default: the animation's fps, else 24)")
+      ->check(CLI::PositiveNumber);
   return cmd;
 }
 
 int runRender(const RenderOptions& options) {
+  // Every scene is loaded and validated before anything renders or is written.
+  std::vector<SceneDesc> scenes;
+  for (const std::string& file : options.scenes) scenes.push_back(loadSceneFile(file));
+  const bool sequence = scenes.size() > 1 || scenes[0].animation ||
+                        options.sequenceOptionGiven() || isFolderOutput(options.output);
+  if (sequence) return runSequence(options, std::move(scenes));
+  return renderStill(options, std::move(scenes[0]));
+}
+
+namespace {
+
+int renderStill(const RenderOptions& options, SceneDesc desc) {
+  const std::string& sceneFile = options.scenes[0];
   const std::string output =
-      options.output.empty() ? defaultOutputPath(options.scene) : options.output;
+      options.output.empty() ? defaultOutputPath(sceneFile) : options.output;
   checkOutputPath(output);
   std::string backendNote;
   const Backend backend = chooseBackend(options.backend, &backendNote);
 
-  SceneDesc desc = loadSceneFile(options.scene);
   applyOverrides(options, &desc);
   const SceneData scene = flattenScene(desc);
   if (!backendNote.empty() && !options.quiet)
@@ -101,7 +137,7 @@ int runRender(const RenderOptions& options) {
   if (ProgressBar::wanted(options.quiet)) bar = std::make_unique<ProgressBar>(stderr);
 
   RenderControl control;
-  control.sceneLabel = options.scene;
+  control.sceneLabel = sceneFile;
   control.threads = options.threads;
   control.cancel = &interrupt.flag();
   if (bar) control.progress = [&bar](double fraction) { bar->update(fraction); };
@@ -118,5 +154,7 @@ int runRender(const RenderOptions& options) {
     std::printf("%s\n", renderSummary(output, scene.settings.spp, result).c_str());
   return kExitOk;
 }
+
+}  // namespace
 
 }  // namespace candela::cli

@@ -1,10 +1,16 @@
-// `candela render SCENE [-o OUT] [--spp N] [--seed N] [--max-depth N] [--threads N]
-//                       [--backend auto|cpu|cuda] [--quiet]`
+// `candela render SCENE [SCENE...] [-o OUT] [--spp N] [--seed N] [--max-depth N] [--threads N]
+//                 [--backend auto|cpu|cuda] [--quiet]
+//                 [--format png|exr|pfm] [--frames A:B] [--overwrite] [--video OUT.mp4] [--fps N]`
+//
+// One scene without an animation block and an image file (or nothing) for -o: one image, as
+// always. Several scenes, an animation block, a folder for -o (ending in '/' or existing) or any
+// of the sequence options: a sequence of frames (sequence_command.h).
 #pragma once
 
 #include <CLI/CLI.hpp>
 
 #include "apps/cli/cli_options.h"
+#include "scene/scene_desc.h"
 
 namespace candela::cli {
 
@@ -14,5 +20,8 @@ CLI::App* addRenderCommand(CLI::App& app, RenderOptions* options);
 // Loads, renders and writes the image; returns the exit code. Throws CliError, SceneError,
 // ImageWriteError and std::exception for main() to report.
 int runRender(const RenderOptions& options);
+
+// Command-line values win over the scene file's (spp, seed, max depth).
+void applyOverrides(const RenderOptions& options, SceneDesc* desc);
 
 }  // namespace candela::cli

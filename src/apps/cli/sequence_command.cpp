@@ -1,0 +1,187 @@
+// Rendering a sequence of frames; see sequence_command.h.
+#include "apps/cli/sequence_command.h"
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+
+#include "apps/cli/cli_error.h"
+#include "apps/cli/interrupt.h"
+#include "apps/cli/progress_bar.h"
+#include "apps/cli/render_command.h"
+#include "apps/cli/summary.h"
+#include "apps/cli/video.h"
+#include "image/image_io.h"
+#include "scene/animation.h"
+#include "scene/frame_scene.h"
+#include "scene/scene_error.h"
+
+namespace fs = std::filesystem;
+
+namespace candela::cli {
+namespace {
+
+struct FrameRange {
+  uint32_t begin = 0, end = 0;  // [begin, end)
+};
+
+// "A:B" (end exclusive), "A:", ":B", ":" or "A" (that frame alone), within [0, count).
+FrameRange parseFrames(const std::string& text, uint32_t count) {
+  if (text.empty()) return {0, count};
+  const auto usage = [&] {
+    return CliError(kExitUsage, "--frames " + text +
+                                    ": expected START:END (END exclusive, e.g. 0:10), START:, "
+                                    ":END or one frame number");
+  };
+  const auto number = [&](const std::string& s, uint32_t fallback) -> uint32_t {
+    if (s.empty()) return fallback;
+    if (s.size() > 9 || s.find_first_not_of("0123456789") != std::string::npos) throw usage();
+    return uint32_t(std::stoul(s));
+  };
+  FrameRange range;
+  const size_t colon = text.find(':');
+  if (colon == std::string::npos) {
+    range.begin = number(text, 0);
+    range.end = range.begin + 1;
+  } else {
+    range.begin = number(text.substr(0, colon), 0);
+    range.end = number(text.substr(colon + 1), count);
+  }
+  if (range.begin >= range.end)
+    throw CliError(kExitUsage, "--frames " + text +
+                                   ": the range is empty (START must be below END, which is "
+                                   "exclusive)");
+  if (range.end > count)
+    throw CliError(kExitUsage, "--frames " + text + ": there are " + std::to_string(count) +
+                                   " frames, numbered 0 to " + std::to_string(count - 1));
+  return range;
+}
+
+// Enough digits for the last frame, at least four: frame_0000.png.
+int frameDigits(uint32_t count) {
+  int digits = 1;
+  for (uint32_t n = count - 1; n >= 10; n /= 10) ++digits;
+  return digits < 4 ? 4 : digits;
+}
+
+std::string framePath(const std::string& dir, uint32_t frame, int digits,
+                      const std::string& format) {
+  char name[64];
+  std::snprintf(name, sizeof name, "frame_%0*u.%s", digits, frame, format.c_str());
+  return (fs::path(dir) / name).string();
+}
+
+// The checks that need every scene: no animation block inside a sequence of files, and one image
+// size for a video.
+void checkScenes(const RenderOptions& options, const std::vector<SceneDesc>& scenes) {
+  if (scenes.size() > 1)
+    for (const SceneDesc& s : scenes)
+      if (s.animation)
+        throw SceneError(s.file +
+                         ": animation: a scene with an animation block is rendered on its own, "
+                         "not in a sequence of scene files");
+  if (options.video.empty()) return;
+  if (!options.format.empty() && options.format != "png")
+    throw CliError(kExitUsage, "--video needs PNG frames (ffmpeg encodes the 8-bit images), got "
+                               "--format " + options.format);
+  for (const SceneDesc& s : scenes)
+    if (s.camera.width != scenes[0].camera.width || s.camera.height != scenes[0].camera.height)
+      throw CliError(kExitUsage, "--video: every frame must have the same size, but " +
+                                     scenes[0].file + " is " +
+                                     std::to_string(scenes[0].camera.width) + "x" +
+                                     std::to_string(scenes[0].camera.height) + " and " + s.file +
+                                     " is " + std::to_string(s.camera.width) + "x" +
+                                     std::to_string(s.camera.height));
+}
+
+}  // namespace
+
+int runSequence(const RenderOptions& options, std::vector<SceneDesc> scenes) {
+  checkScenes(options, scenes);
+  const bool animated = scenes.size() == 1 && scenes[0].animation;
+  const uint32_t count = animated ? scenes[0].animation->frames : uint32_t(scenes.size());
+  const std::string format = options.format.empty() ? "png" : options.format;
+  const std::string dir = options.output.empty()
+                              ? (fs::path("out") / fs::path(options.scenes[0]).stem()).string()
+                              : options.output;
+  if (isSupportedImagePath(dir))
+    throw CliError(kExitUsage, "-o " + dir +
+                                   ": a sequence is written to a folder (e.g. -o frames/), not "
+                                   "to one image");
+  const FrameRange range = parseFrames(options.frames, count);
+  std::string backendNote;
+  const Backend backend = chooseBackend(options.backend, &backendNote);
+  for (SceneDesc& scene : scenes) applyOverrides(options, &scene);
+
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec) throw ImageWriteError(dir + ": cannot create the frame folder: " + ec.message());
+  const int digits = frameDigits(count);
+  std::vector<uint32_t> todo;
+  for (uint32_t f = range.begin; f < range.end; ++f)
+    if (options.overwrite || !fs::exists(framePath(dir, f, digits, format))) todo.push_back(f);
+  const uint32_t kept = range.end - range.begin - uint32_t(todo.size());
+  if (!options.quiet) {
+    if (!backendNote.empty()) std::fprintf(stderr, "candela: note: %s\n", backendNote.c_str());
+    if (kept > 0)
+      std::printf("%s: %u of %u frames exist and are kept (--overwrite renders them again)\n",
+                  dir.c_str(), kept, range.end - range.begin);
+  }
+
+  InterruptGuard interrupt;
+  std::unique_ptr<ProgressBar> bar;
+  if (ProgressBar::wanted(options.quiet)) bar = std::make_unique<ProgressBar>(stderr);
+  FrameScene frameScene;
+  const auto start = std::chrono::steady_clock::now();
+  for (size_t k = 0; k < todo.size(); ++k) {
+    const uint32_t frame = todo[k];
+    const SceneDesc still = sceneAtFrame(animated ? scenes[0] : scenes[frame], frame);
+    const SceneData& data = frameScene.prepare(still);
+    if (bar)
+      bar->startFrame("frame " + std::to_string(frame) + " (" + std::to_string(k + 1) + "/" +
+                          std::to_string(todo.size()) + ")",
+                      unsigned(k), unsigned(todo.size()));
+    RenderControl control;
+    control.sceneLabel = still.file;
+    control.threads = options.threads;
+    control.cancel = &interrupt.flag();
+    if (bar) control.progress = [&bar](double fraction) { bar->update(fraction); };
+    const RenderResult result = renderScene(backend, data, control);
+    if (bar) bar->clear();
+    if (result.cancelled) {
+      std::fprintf(stderr,
+                   "candela: interrupted during frame %u; the %zu frames finished are kept, run "
+                   "the same command again to resume\n",
+                   frame, k);
+      return kExitInterrupted;
+    }
+    const std::string path = framePath(dir, frame, digits, format);
+    writeImage(path, result.image, still.output);
+    if (!options.quiet) {
+      std::printf("%s (scene %s in %.3f ms)\n",
+                  renderSummary(path, data.settings.spp, result).c_str(),
+                  frameScene.reused() ? "and BVH reused" : "flattened, BVH built",
+                  frameScene.seconds() * 1e3);
+      std::fflush(stdout);
+    }
+  }
+  if (!options.quiet)
+    std::printf("%s: %zu frames rendered, %u kept, %.2f s\n", dir.c_str(), todo.size(), kept,
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+
+  if (!options.video.empty()) {
+    VideoJob job;
+    job.pattern = (fs::path(dir) / ("frame_%0" + std::to_string(digits) + "d.png")).string();
+    job.first = range.begin;
+    job.count = range.end - range.begin;
+    job.fps = options.fps ? *options.fps : (animated ? scenes[0].animation->fps : 24.0);
+    job.output = options.video;
+    encodeVideo(job);
+    if (!options.quiet)
+      std::printf("%s: %u frames at %g fps\n", job.output.c_str(), job.count, job.fps);
+  }
+  return kExitOk;
+}
+
+}  // namespace candela::cli
