@@ -240,6 +240,17 @@ TEST(SceneAtFrame, ColourTrackOnAnObjectWithoutMaterialMakesItDiffuse) {
   EXPECT_EQ(still.objects[0].material->color.x, 0.25f);
 }
 
+TEST(SceneAtFrame, OrbitExampleLoopsSeamlessly) {
+  const SceneDesc scene = loadSceneFile(std::string(CANDELA_SOURCE_DIR) + "/scenes/orbit.json");
+  ASSERT_TRUE(scene.animation);
+  EXPECT_EQ(scene.animation->frames, 48u);
+  // Frame 48, one past the last, would repeat frame 0: the camera is back, the knot turned 360.
+  const SceneDesc first = sceneAtFrame(scene, 0), next = sceneAtFrame(scene, 48);
+  EXPECT_EQ(first.camera.position.x, 0);
+  EXPECT_EQ(next.camera.position.z, first.camera.position.z);
+  EXPECT_FLOAT_EQ(next.objects[0].rotation.y - first.objects[0].rotation.y, 360);
+}
+
 // ---------------------------------------------------------------------------------------------
 // Reuse of geometry and BVH between frames.
 
