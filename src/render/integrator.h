@@ -26,6 +26,16 @@ constexpr float kShadowEpsilon = 1e-4f;
 constexpr uint32_t kRouletteDepth = 3;
 constexpr uint32_t kNoPrimitive = 0xffffffffu;
 
+CANDELA_HDI bool traceClosest(const SceneView& scene, const Ray& ray, Hit* hit) {
+  return scene.settings.useBvh ? intersectClosest(scene, ray, hit)
+                               : intersectClosestBruteForce(scene, ray, hit);
+}
+
+CANDELA_HDI bool traceOccluded(const SceneView& scene, const Ray& ray, uint32_t skipPrim) {
+  return scene.settings.useBvh ? intersectAny(scene, ray, skipPrim)
+                               : intersectAnyBruteForce(scene, ray, skipPrim);
+}
+
 CANDELA_HDI Ray spawnRay(const SurfacePoint& sp, const Vec3& wi) {
   Ray r;
   r.origin = offsetRayOrigin(sp.p, sp.error, sp.ng, wi);
@@ -50,7 +60,7 @@ CANDELA_HDI Vec3 estimateDirect(const SceneView& scene, const Material& m, const
     shadow.tMax = length(target - shadow.origin) * (1.0f - kShadowEpsilon);
     ++counters.shadow;
     const uint32_t skip = light.type == LightType::Sphere ? light.sphere : kNoPrimitive;
-    if (intersectAny(scene, shadow, skip)) continue;
+    if (traceOccluded(scene, shadow, skip)) continue;
     const float weight = ls.isDelta ? 1.0f : powerHeuristic(ls.pdf, diffusePdf(wo, sp.ng, sp.ns, ls.wi));
     sum += f * ls.radiance * (weight / ls.pdf);
   }
@@ -68,7 +78,7 @@ CANDELA_HDI Vec3 traceRadiance(const SceneView& scene, Ray ray, SampleStream& rn
 
   for (uint32_t depth = 1;; ++depth) {
     Hit hit;
-    if (!intersectClosest(scene, ray, &hit)) {
+    if (!traceClosest(scene, ray, &hit)) {
       radiance += throughput * scene.environment;
       break;
     }

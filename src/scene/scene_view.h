@@ -84,6 +84,9 @@ struct RenderSettings {
   IntegratorType integrator = IntegratorType::Path;
   bool antialiasing = true;
   uint64_t seed = 0;
+  // false: test every primitive for every ray instead of traversing the BVH. Only for
+  // benchmarks that measure what the BVH buys (the seed's "bounding box" comparison).
+  bool useBvh = true;
 };
 
 struct SceneView {
