@@ -57,47 +57,49 @@ CANDELA_HDI Bounds3 unionBounds(Bounds3 a, const Bounds3& b) {
   return a;
 }
 
-namespace detail {
+// A ray prepared for many box tests: reciprocal direction and, per axis, which box face the ray
+// enters through (the far one when the direction is negative).
+struct RayBoxTester {
+  Vec3 origin;
+  Vec3 invDir;
+  int nearIsHi[3];
 
-// Entry and exit distances of one slab pair, ordered; the exit is enlarged by the rounding bound.
-CANDELA_HDI void slab(float lo, float hi, float origin, float invDir, float* tNear, float* tFar) {
-  constexpr float kFarScale = 1.0f + 2.0f * gammaBound(3);
-  const float a = (lo - origin) * invDir, b = (hi - origin) * invDir;
-  // A NaN is 0 * inf: the ray is parallel to this axis and starts on a slab plane, so it lies in
-  // the closed slab for every t. (Left to the comparisons, a direction of -0 would turn the other
-  // distance, -inf, into the exit and miss the box.)
-  if (a != a || b != b) {
-    *tNear = -kInfinity;
-    *tFar = kInfinity;
-    return;
+  // From the reciprocal direction (an infinity for a zero component is expected and fine).
+  CANDELA_HDI RayBoxTester(const Vec3& o, const Vec3& inverseDirection)
+      : origin(o), invDir(inverseDirection) {
+    for (int i = 0; i < 3; ++i) nearIsHi[i] = invDir[i] < 0.0f;
   }
-  *tNear = a < b ? a : b;
-  *tFar = (a < b ? b : a) * kFarScale;
-}
 
-}  // namespace detail
+  // Slab test for t in [0, tMax] against [lo, hi]; on a hit `tEntry` is where the ray enters.
+  //
+  // Robustness (pbrt-v4, section 6.8.2): the far distance is enlarged by 1 + 2 gamma(3), the bound
+  // on the rounding error of both distances, so a ray that truly touches the box never misses.
+  // A ray parallel to an axis that starts exactly on a slab plane computes 0 * inf = NaN there;
+  // NaN fails every comparison below, so that slab simply constrains nothing, which is right:
+  // such a ray lies in the closed slab for all t. A parallel ray outside the slab gets an exit of
+  // -inf (or an entry of +inf) and misses, as it should.
+  CANDELA_HDI bool hit(const Vec3& lo, const Vec3& hi, float tMax, float* tEntry) const {
+    constexpr float kFarScale = 1.0f + 2.0f * gammaBound(3);
+    float t0 = 0.0f, t1 = tMax;
+    for (int i = 0; i < 3; ++i) {
+      const float nearPlane = nearIsHi[i] ? hi[i] : lo[i];
+      const float farPlane = nearIsHi[i] ? lo[i] : hi[i];
+      const float tNear = (nearPlane - origin[i]) * invDir[i];
+      const float tFar = (farPlane - origin[i]) * invDir[i] * kFarScale;
+      t0 = tNear > t0 ? tNear : t0;
+      t1 = tFar < t1 ? tFar : t1;
+    }
+    *tEntry = t0;
+    return t0 <= t1;
+  }
+};
 
-// Slab test of the ray origin + t * dir, t in [0, tMax], against the box [lo, hi];
-// invDir = 1 / dir per axis (an infinity for a zero component is expected and fine).
-//
-// Robustness (pbrt-v4, section 6.8.2): each slab's far distance is enlarged by 1 + 2 gamma(3), the
-// bound on the rounding error of the near and far distances, so a ray that truly touches the box
-// is never reported as a miss. Boxes are closed: a ray along a face or edge hits.
-// All three axes are evaluated before one final test: no early exit, more parallel arithmetic.
+// Slab test of the ray origin + t * dir, t in [0, tMax], against the closed box [lo, hi];
+// invDir = 1 / dir per axis.
 CANDELA_HDI bool intersectAabb(const Vec3& lo, const Vec3& hi, const Vec3& origin,
                                const Vec3& invDir, float tMax) {
-  float nx, fx, ny, fy, nz, fz;
-  detail::slab(lo.x, hi.x, origin.x, invDir.x, &nx, &fx);
-  detail::slab(lo.y, hi.y, origin.y, invDir.y, &ny, &fy);
-  detail::slab(lo.z, hi.z, origin.z, invDir.z, &nz, &fz);
-  float t0 = 0.0f, t1 = tMax;
-  t0 = nx > t0 ? nx : t0;
-  t0 = ny > t0 ? ny : t0;
-  t0 = nz > t0 ? nz : t0;
-  t1 = fx < t1 ? fx : t1;
-  t1 = fy < t1 ? fy : t1;
-  t1 = fz < t1 ? fz : t1;
-  return t0 <= t1;
+  float tEntry;
+  return RayBoxTester(origin, invDir).hit(lo, hi, tMax, &tEntry);
 }
 
 }  // namespace candela

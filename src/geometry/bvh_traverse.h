@@ -47,31 +47,45 @@ namespace detail {
 
 // The one traversal loop. anyHit: stop at the first hit not on `skipPrim`; otherwise find the
 // nearest hit. Returns whether a hit was found; `hit` receives it (closest mode).
+//
+// Ordered traversal: at an interior node both children's boxes are tested, the nearer child is
+// visited next and the farther one is pushed with its entry distance, so that once a nearer hit
+// is known, popped subtrees that start beyond it are skipped without touching their nodes.
 CANDELA_HDI bool traverseBvh(const SceneView& scene, const Ray& ray, bool anyHit, uint32_t skipPrim,
                              Hit* hit) {
   if (scene.nodeCount == 0) return false;
-  const Vec3 invDir(1.0f / ray.direction.x, 1.0f / ray.direction.y, 1.0f / ray.direction.z);
-  const bool dirIsNeg[3] = {invDir.x < 0.0f, invDir.y < 0.0f, invDir.z < 0.0f};
-
+  const RayBoxTester box(ray.origin, Vec3(1.0f / ray.direction.x, 1.0f / ray.direction.y,
+                                          1.0f / ray.direction.z));
   float tMax = ray.tMax;
+  float tEntry;
+  if (!box.hit(scene.nodes[0].boundsMin, scene.nodes[0].boundsMax, tMax, &tEntry)) return false;
+
   bool found = false;
-  uint32_t stack[kBvhStackSize];
+  uint32_t stackNode[kBvhStackSize];
+  float stackEntry[kBvhStackSize];
   int stackSize = 0;
   uint32_t current = 0;
   for (;;) {
     const BvhNode& node = scene.nodes[current];
-    if (intersectAabb(node.boundsMin, node.boundsMax, ray.origin, invDir, tMax)) {
-      if (node.primCount == 0) {
-        // Interior: descend into the near child, remember the far one.
-        if (dirIsNeg[node.axis]) {
-          stack[stackSize++] = current + 1;
-          current = node.offset;
-        } else {
-          stack[stackSize++] = node.offset;
-          current = current + 1;
-        }
+    if (node.primCount == 0) {
+      const uint32_t first = current + 1, second = node.offset;
+      const BvhNode& a = scene.nodes[first];
+      const BvhNode& b = scene.nodes[second];
+      float tA, tB;
+      const bool hitA = box.hit(a.boundsMin, a.boundsMax, tMax, &tA);
+      const bool hitB = box.hit(b.boundsMin, b.boundsMax, tMax, &tB);
+      if (hitA && hitB) {
+        const bool aFirst = tA <= tB;
+        stackNode[stackSize] = aFirst ? second : first;
+        stackEntry[stackSize++] = aFirst ? tB : tA;
+        current = aFirst ? first : second;
         continue;
       }
+      if (hitA || hitB) {
+        current = hitA ? first : second;
+        continue;
+      }
+    } else {
       for (uint32_t i = 0; i < node.primCount; ++i) {
         const uint32_t prim = scene.primIndices[node.offset + i];
         if (prim == skipPrim) continue;
@@ -82,10 +96,12 @@ CANDELA_HDI bool traverseBvh(const SceneView& scene, const Ray& ray, bool anyHit
         }
       }
     }
-    if (stackSize == 0) break;
-    current = stack[--stackSize];
+    // Pop the next subtree that may still hold a nearer hit.
+    do {
+      if (stackSize == 0) return found;
+      current = stackNode[--stackSize];
+    } while (stackEntry[stackSize] > tMax);
   }
-  return found;
 }
 
 }  // namespace detail
