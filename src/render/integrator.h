@@ -10,7 +10,7 @@
 #include <cmath>
 
 #include "core/float_error.h"
-#include "core/rng.h"
+#include "core/sobol_sampler.h"
 #include "geometry/bvh_traverse.h"
 #include "geometry/surface.h"
 #include "render/bsdf.h"
@@ -49,8 +49,9 @@ CANDELA_HDI Vec3 estimateDirect(const SceneView& scene, const Material& m, const
   Vec3 sum(0.0f);
   for (uint32_t i = 0; i < scene.lightCount; ++i) {
     const Light& light = scene.lights[i];
-    // Both numbers are drawn for every light so the stream's layout never depends on geometry.
-    const float u1 = rng.next(), u2 = rng.next();
+    // A dimension is drawn for every light so the stream's layout never depends on geometry.
+    float u1, u2;
+    rng.next2D(&u1, &u2);
     LightSample ls;
     if (!sampleLight(light, sp.p, u1, u2, &ls)) continue;
     const Vec3 f = evalDiffuse(m, wo, sp.ng, sp.ns, ls.wi);
@@ -103,7 +104,8 @@ CANDELA_HDI Vec3 traceRadiance(const SceneView& scene, Ray ray, SampleStream& rn
       if (scene.settings.integrator == IntegratorType::Direct) maxDepth = depth;
     }
 
-    const float u1 = rng.next(), u2 = rng.next();
+    float u1, u2;
+    rng.next2D(&u1, &u2);
     BsdfSample bs;
     if (!sampleBsdf(m, wo, sp.ng, sp.ns, u1, u2, &bs)) break;
     throughput *= bs.weight;
@@ -113,7 +115,7 @@ CANDELA_HDI Vec3 traceRadiance(const SceneView& scene, Ray ray, SampleStream& rn
 
     if (depth >= kRouletteDepth) {
       const float survive = minf(0.95f, maxComponent(throughput));
-      if (rng.next() >= survive) break;
+      if (rng.next1D() >= survive) break;
       throughput /= survive;
     }
     ray = spawnRay(sp, bs.wi);

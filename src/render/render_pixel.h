@@ -14,20 +14,17 @@ CANDELA_HDI bool isFinite(const Vec3& v) {
 }
 
 // Sum of the radiance of samples [sampleBegin, sampleBegin + sampleCount) of pixel (x, y).
-// Each sample's random numbers depend only on (seed, pixel, sample index, dimension).
+// Each sample's random numbers depend only on (seed, pixel, sample index, dimension) and spp.
 CANDELA_HDI Vec3 renderPixelSamples(const SceneView& scene, uint32_t x, uint32_t y,
                                     uint32_t sampleBegin, uint32_t sampleCount,
                                     RayCounters& counters) {
   const uint64_t pixelIndex = uint64_t(y) * scene.camera.width + x;
   Vec3 sum(0.0f);
   for (uint32_t s = sampleBegin; s < sampleBegin + sampleCount; ++s) {
-    SampleStream rng(scene.settings.seed, pixelIndex, s);
-    float jx = 0.5f, jy = 0.5f;
-    if (scene.settings.antialiasing) {
-      jx = rng.next();
-      jy = rng.next();
-    }
-    const float lensU = rng.next(), lensV = rng.next();
+    SampleStream rng(scene.settings.seed, pixelIndex, s, scene.settings.spp);
+    float jx = 0.5f, jy = 0.5f, lensU, lensV;
+    if (scene.settings.antialiasing) rng.next2D(&jx, &jy);
+    rng.next2D(&lensU, &lensV);
     const Ray ray = generateCameraRay(scene.camera, float(x) + jx, float(y) + jy, lensU, lensV);
     ++counters.camera;
     const Vec3 L = traceRadiance(scene, ray, rng, counters);

@@ -1,0 +1,128 @@
+// The sampler: padded, Owen-scrambled Sobol points (pbrt-v4's PaddedSobolSampler).
+//
+// Each 1D or 2D request of a sample takes the next "dimension" d. Within a pixel, the sample
+// index is first shuffled by a permutation of [0, spp) seeded by (seed, pixel, d), then mapped to
+// the first one or two Sobol dimensions (a (0,2)-sequence: every power-of-two prefix is
+// stratified in 2D) and Owen-scrambled with seeds from the same hash. So:
+// - every value is a pure function of (seed, pixel, sample index, dimension, spp): any thread,
+//   tile order, backend or cluster slice draws the same numbers;
+// - the spp samples of a pixel are stratified in each pair of dimensions, which lowers the error
+//   of antialiasing, lens, light and first-bounce integrals well below independent sampling;
+// - different dimension pairs and pixels are decorrelated by independent permutations and
+//   scrambles ("padding").
+#pragma once
+
+#include <cstdint>
+
+#include "core/device.h"
+#include "core/rng.h"
+
+namespace candela {
+
+CANDELA_HDI uint32_t reverseBits32(uint32_t v) {
+#if defined(__CUDA_ARCH__)  // the device compilation pass: one instruction
+  return __brev(v);
+#else
+  v = (v << 16) | (v >> 16);
+  v = ((v & 0x00ff00ffu) << 8) | ((v & 0xff00ff00u) >> 8);
+  v = ((v & 0x0f0f0f0fu) << 4) | ((v & 0xf0f0f0f0u) >> 4);
+  v = ((v & 0x33333333u) << 2) | ((v & 0xccccccccu) >> 2);
+  v = ((v & 0x55555555u) << 1) | ((v & 0xaaaaaaaau) >> 1);
+  return v;
+#endif
+}
+
+// First Sobol dimension: the van der Corput sequence in base 2 (bit reversal of the index).
+CANDELA_HDI uint32_t sobolDimension0(uint32_t index) { return reverseBits32(index); }
+
+// Second Sobol dimension: direction numbers v_0 = 2^31, v_k = v_{k-1} ^ (v_{k-1} >> 1).
+CANDELA_HDI uint32_t sobolDimension1(uint32_t index) {
+  uint32_t result = 0, v = 0x80000000u;
+  for (; index != 0; index >>= 1, v ^= v >> 1)
+    if (index & 1u) result ^= v;
+  return result;
+}
+
+// Owen scrambling by hashing (Laine and Karras 2011, as in pbrt-v4's FastOwenScrambler): each
+// bit is flipped depending on the bits above it, which keeps the stratification.
+CANDELA_HDI uint32_t owenScramble(uint32_t v, uint32_t seed) {
+  v = reverseBits32(v);
+  v ^= v * 0x3d20adeau;
+  v += seed;
+  v *= (seed >> 16) | 1u;
+  v ^= v * 0x05526c56u;
+  v ^= v * 0x53a22864u;
+  return reverseBits32(v);
+}
+
+// Element i of a pseudo-random permutation of [0, n) chosen by `seed` (Kensler 2013,
+// "Correlated Multi-Jittered Sampling"), by cycle walking over a power-of-two range.
+CANDELA_HDI uint32_t permutationElement(uint32_t i, uint32_t n, uint32_t seed) {
+  uint32_t w = n - 1;
+  w |= w >> 1;
+  w |= w >> 2;
+  w |= w >> 4;
+  w |= w >> 8;
+  w |= w >> 16;
+  do {
+    i ^= seed;
+    i *= 0xe170893du;
+    i ^= seed >> 16;
+    i ^= (i & w) >> 4;
+    i ^= seed >> 8;
+    i *= 0x0929eb3fu;
+    i ^= seed >> 23;
+    i ^= (i & w) >> 1;
+    i *= 1u | seed >> 27;
+    i *= 0x6935fa69u;
+    i ^= (i & w) >> 11;
+    i *= 0x74dcb303u;
+    i ^= (i & w) >> 2;
+    i *= 0x9e501cc3u;
+    i ^= (i & w) >> 2;
+    i *= 0xc860a3dfu;
+    i &= w;
+    i ^= i >> 5;
+  } while (i >= n);
+  return (i + seed) % n;
+}
+
+// 32 random bits as a float in [0, 1).
+CANDELA_HDI float bitsToUnitFloat(uint32_t bits) {
+  return static_cast<float>(bits >> 8) * 0x1p-24f;
+}
+
+// The random numbers of one (seed, pixel, sample) among spp samples of that pixel.
+class SampleStream {
+ public:
+  CANDELA_HDI SampleStream(uint64_t seed, uint64_t pixelIndex, uint32_t sampleIndex, uint32_t spp)
+      : pixelKey_(mix64(mix64(seed ^ 0x6a09e667f3bcc909ull) ^ pixelIndex)),
+        sampleIndex_(sampleIndex),
+        spp_(spp > 0 ? spp : 1) {}
+
+  CANDELA_HDI float next1D() {
+    const uint64_t h = dimensionHash();
+    const uint32_t index = permutationElement(sampleIndex_, spp_, uint32_t(h));
+    return bitsToUnitFloat(owenScramble(sobolDimension0(index), uint32_t(h >> 32)));
+  }
+
+  CANDELA_HDI void next2D(float* u, float* v) {
+    const uint64_t h = dimensionHash();
+    const uint32_t index = permutationElement(sampleIndex_, spp_, uint32_t(h));
+    const uint64_t scramble = mix64(h);
+    *u = bitsToUnitFloat(owenScramble(sobolDimension0(index), uint32_t(scramble)));
+    *v = bitsToUnitFloat(owenScramble(sobolDimension1(index), uint32_t(scramble >> 32)));
+  }
+
+ private:
+  CANDELA_HDI uint64_t dimensionHash() {
+    return mix64(pixelKey_ + 0x9e3779b97f4a7c15ull * ++dimension_);
+  }
+
+  uint64_t pixelKey_;
+  uint32_t sampleIndex_;
+  uint32_t spp_;
+  uint32_t dimension_ = 0;
+};
+
+}  // namespace candela
