@@ -21,6 +21,8 @@ struct RenderOptions {
   int threads = 0;  // 0: all cores
   Backend backend = Backend::Auto;
   bool quiet = false;
+  std::string stats;  // --stats FILE.json: write the render's measured figures (stills only)
+  bool noBvh = false;  // --no-bvh: brute force over all primitives (benchmarks only)
   // Sequences only (see sequence_command.h); `sequenceOptionGiven` says whether any was set.
   std::string format;               // png, exr or pfm; empty: png
   std::string frames;               // "A:B", start inclusive, end exclusive; empty: all

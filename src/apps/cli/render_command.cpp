@@ -6,6 +6,7 @@
 // runs before rendering, and the image file is replaced atomically.
 #include "apps/cli/render_command.h"
 
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -14,6 +15,7 @@
 #include "apps/cli/interrupt.h"
 #include "apps/cli/progress_bar.h"
 #include "apps/cli/sequence_command.h"
+#include "apps/cli/stats_writer.h"
 #include "apps/cli/summary.h"
 #include "image/image_io.h"
 #include "scene/scene_data.h"
@@ -52,7 +54,11 @@ void createParentDirectories(const std::string& output) {
                           "': " + ec.message());
 }
 
-int renderStill(const RenderOptions& options, SceneDesc desc);
+double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+int renderStill(const RenderOptions& options, SceneDesc desc, double loadSeconds);
 
 }  // namespace
 
@@ -60,6 +66,7 @@ void applyOverrides(const RenderOptions& options, SceneDesc* desc) {
   if (options.spp) desc->camera.spp = desc->render.spp = *options.spp;
   if (options.seed) desc->render.seed = *options.seed;
   if (options.maxDepth) desc->render.maxDepth = *options.maxDepth;
+  if (options.noBvh) desc->render.useBvh = false;
 }
 
 CLI::App* addRenderCommand(CLI::App& app, RenderOptions* options) {
@@ -90,6 +97,12 @@ CLI::App* addRenderCommand(CLI::App& app, RenderOptions* options) {
          "auto, cpu or cuda (default: auto)")
       ->check(backendChoice());
   cmd->add_flag("-q,--quiet", options->quiet, "No progress bar and no summary");
+  cmd->add_option("--stats", options->stats,
+                  "Also write the render's measured figures (load, BVH build, memory, rays, "
+                  "samples/s, peak RSS) to this JSON file; single stills only");
+  cmd->add_flag("--no-bvh", options->noBvh,
+                "Benchmarks only: test every primitive for every ray instead of using the BVH")
+      ->group("");  // hidden from --help
   cmd->add_option("--format", options->format, "Frame format of a sequence (default: png)")
       ->check(CLI::IsMember({"png", "exr", "pfm"}));
   cmd->add_option("--frames", options->frames,
@@ -108,17 +121,21 @@ CLI::App* addRenderCommand(CLI::App& app, RenderOptions* options) {
 
 int runRender(const RenderOptions& options) {
   // Every scene is loaded and validated before anything renders or is written.
+  const auto loadStart = std::chrono::steady_clock::now();
   std::vector<SceneDesc> scenes;
   for (const std::string& file : options.scenes) scenes.push_back(loadSceneFile(file));
+  const double loadSeconds = secondsSince(loadStart);
   const bool sequence = scenes.size() > 1 || scenes[0].animation ||
                         options.sequenceOptionGiven() || isFolderOutput(options.output);
+  if (sequence && !options.stats.empty())
+    throw CliError(kExitUsage, "--stats works for a single still image, not for a sequence");
   if (sequence) return runSequence(options, std::move(scenes));
-  return renderStill(options, std::move(scenes[0]));
+  return renderStill(options, std::move(scenes[0]), loadSeconds);
 }
 
 namespace {
 
-int renderStill(const RenderOptions& options, SceneDesc desc) {
+int renderStill(const RenderOptions& options, SceneDesc desc, double loadSeconds) {
   const std::string& sceneFile = options.scenes[0];
   const std::string output =
       options.output.empty() ? defaultOutputPath(sceneFile) : options.output;
@@ -127,7 +144,9 @@ int renderStill(const RenderOptions& options, SceneDesc desc) {
   const Backend backend = chooseBackend(options.backend, &backendNote);
 
   applyOverrides(options, &desc);
+  const auto flattenStart = std::chrono::steady_clock::now();
   const SceneData scene = flattenScene(desc);
+  const double flattenSeconds = secondsSince(flattenStart);
   if (!backendNote.empty() && !options.quiet)
     std::fprintf(stderr, "candela: note: %s\n", backendNote.c_str());
 
@@ -150,6 +169,16 @@ int renderStill(const RenderOptions& options, SceneDesc desc) {
   }
   createParentDirectories(output);
   writeImage(output, result.image, desc.output);
+  if (!options.stats.empty()) {
+    RenderStats info;
+    info.scene = sceneFile;
+    info.backend = backendName(backend);
+    info.threads = options.threads;
+    info.loadSeconds = loadSeconds;
+    info.flattenSeconds = flattenSeconds;
+    createParentDirectories(options.stats);
+    writeRenderStats(options.stats, info, scene, result);
+  }
   if (!options.quiet)
     std::printf("%s\n", renderSummary(output, scene.settings.spp, result).c_str());
   return kExitOk;

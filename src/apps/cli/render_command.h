@@ -1,5 +1,5 @@
 // `candela render SCENE [SCENE...] [-o OUT] [--spp N] [--seed N] [--max-depth N] [--threads N]
-//                 [--backend auto|cpu|cuda] [--quiet]
+//                 [--backend auto|cpu|cuda] [--quiet] [--stats FILE.json]
 //                 [--format png|exr|pfm] [--frames A:B] [--overwrite] [--video OUT.mp4] [--fps N]`
 //
 // One scene without an animation block and an image file (or nothing) for -o: one image, as

@@ -1,0 +1,44 @@
+// `candela render --stats FILE.json`: the measured figures of one still render, as a small JSON
+// object that the benchmark suite (bench/run) reads. Written by hand (no JSON library in the CLI).
+//
+// Keys (seconds are wall time; bytes are the host arrays' sizes, capacity excluded):
+//   scene, backend, threads, width, height, spp, max_depth, integrator, antialiasing, use_bvh,
+//   load_seconds       reading and validating the scene file (meshes included)
+//   flatten_seconds    flattenScene: meshes to world space + BVH build
+//   bvh_build_seconds  the BVH build alone (SceneData::bvh.buildSeconds)
+//   bvh_mtris_per_second  triangles / bvh_build_seconds / 1e6
+//   triangles, spheres, bvh_nodes, bvh_leaves, bvh_max_depth
+//   memory_bytes {nodes, prim_indices, positions, normals, triangles, total}
+//   bytes_per_triangle  memory_bytes.total / triangles (0 without triangles)
+//   render_seconds, samples, samples_per_second
+//   rays {camera, bounce, shadow, total}, rays_per_second
+//   peak_rss_bytes     getrusage(RUSAGE_SELF).ru_maxrss, in bytes
+#pragma once
+
+#include <string>
+
+#include "render/render_result.h"
+#include "scene/scene_data.h"
+
+namespace candela::cli {
+
+struct RenderStats {
+  std::string scene;
+  std::string backend;
+  int threads = 0;
+  double loadSeconds = 0;
+  double flattenSeconds = 0;
+};
+
+// The JSON text (one object, trailing newline).
+std::string renderStatsJson(const RenderStats& info, const SceneData& scene,
+                            const RenderResult& result);
+
+// Peak resident set size of this process so far, in bytes.
+long long peakRssBytes();
+
+// Writes renderStatsJson to `path`; throws ImageWriteError on failure.
+void writeRenderStats(const std::string& path, const RenderStats& info, const SceneData& scene,
+                      const RenderResult& result);
+
+}  // namespace candela::cli

@@ -1,0 +1,157 @@
+// `candela render --stats FILE.json` and `--no-bvh`: the statistics file that bench/run reads has
+// every key, with sane values, and the brute-force flag changes what the file reports but not
+// the ray counts. Runs the real binary (CANDELA_BINARY) in a temporary directory.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+// A sphere and a two-triangle quad (written next to the scene), 16x12 pixels, 4 spp.
+const char* kScene = R"({
+  "camera": {"width": 16, "height": 12, "spp": 4, "position": [0, 0, 5]},
+  "render": {"max_depth": 3},
+  "spheres": [{"position": [0, 0, 0], "radius": 1, "color": 0.5}],
+  "objects": [{"file": "quad.obj", "position": [0, -1, 0], "scale": 4}],
+  "lights": [{"position": [0, 3, 3], "intensity": 100}]
+})";
+
+const char* kQuad =
+    "v -1 0 -1\nv 1 0 -1\nv 1 0 1\nv -1 0 1\n"
+    "f 1 3 2\nf 1 4 3\n";
+
+class CliStatsTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = fs::temp_directory_path() /
+           ("candela_stats_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+    std::ofstream(dir_ / "scene.json") << kScene;
+    std::ofstream(dir_ / "quad.obj") << kQuad;
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  int run(const std::string& args) const {
+    const std::string command = "cd '" + dir_.string() + "' && '" + CANDELA_BINARY +
+                                "' render " + args + " > stdout.txt 2> stderr.txt < /dev/null";
+    const int status = std::system(command.c_str());
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  }
+
+  json readJson(const std::string& name) const {
+    std::ifstream in(dir_ / name);
+    std::stringstream text;
+    text << in.rdbuf();
+    return json::parse(text.str());
+  }
+
+  std::string stderrText() const {
+    std::ifstream in(dir_ / "stderr.txt");
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+  }
+
+  fs::path dir_;
+};
+
+TEST_F(CliStatsTest, WritesEveryKeyWithSaneNumbers) {
+  ASSERT_EQ(run("scene.json -o out.pfm -q --backend cpu --threads 2 --stats stats.json"), 0)
+      << stderrText();
+  const json s = readJson("stats.json");
+  for (const char* key :
+       {"scene", "backend", "threads", "width", "height", "spp", "max_depth", "integrator",
+        "antialiasing", "use_bvh", "load_seconds", "flatten_seconds", "bvh_build_seconds",
+        "bvh_mtris_per_second", "triangles", "spheres", "bvh_nodes", "bvh_leaves",
+        "bvh_max_depth", "memory_bytes", "bytes_per_triangle", "render_seconds", "samples",
+        "samples_per_second", "rays", "rays_per_second", "peak_rss_bytes"})
+    EXPECT_TRUE(s.contains(key)) << key;
+
+  EXPECT_EQ(s["scene"], "scene.json");
+  EXPECT_EQ(s["backend"], "cpu");
+  EXPECT_EQ(s["threads"], 2);
+  EXPECT_EQ(s["width"], 16);
+  EXPECT_EQ(s["height"], 12);
+  EXPECT_EQ(s["spp"], 4);
+  EXPECT_EQ(s["max_depth"], 3);
+  EXPECT_EQ(s["integrator"], "path");
+  EXPECT_EQ(s["antialiasing"], true);
+  EXPECT_EQ(s["use_bvh"], true);
+  EXPECT_EQ(s["triangles"], 2);
+  EXPECT_EQ(s["spheres"], 1);
+  EXPECT_GE(s["bvh_nodes"].get<int>(), 1);
+  EXPECT_GE(s["bvh_leaves"].get<int>(), 1);
+
+  for (const char* key : {"load_seconds", "flatten_seconds", "bvh_build_seconds",
+                          "render_seconds", "bvh_mtris_per_second"}) {
+    EXPECT_GE(s[key].get<double>(), 0) << key;
+    EXPECT_LT(s[key].get<double>(), 60) << key;
+  }
+  EXPECT_LE(s["bvh_build_seconds"].get<double>(), s["flatten_seconds"].get<double>() + 1e-3);
+
+  const json& m = s["memory_bytes"];
+  EXPECT_EQ(m["triangles"].get<int>() % 2, 0);
+  EXPECT_EQ(m["positions"].get<int>(), 4 * 12);  // four float3 vertices
+  EXPECT_EQ(m["total"].get<int>(), m["nodes"].get<int>() + m["prim_indices"].get<int>() +
+                                       m["positions"].get<int>() + m["normals"].get<int>() +
+                                       m["triangles"].get<int>());
+  EXPECT_EQ(m["nodes"].get<int>(), 32 * s["bvh_nodes"].get<int>());
+  EXPECT_DOUBLE_EQ(s["bytes_per_triangle"].get<double>(), m["total"].get<double>() / 2);
+
+  const double samples = 16.0 * 12 * 4;
+  EXPECT_EQ(s["samples"].get<double>(), samples);
+  const json& rays = s["rays"];
+  EXPECT_EQ(rays["camera"].get<double>(), samples);  // one camera ray per sample
+  EXPECT_EQ(rays["total"].get<uint64_t>(), rays["camera"].get<uint64_t>() +
+                                               rays["bounce"].get<uint64_t>() +
+                                               rays["shadow"].get<uint64_t>());
+  EXPECT_GT(rays["shadow"].get<uint64_t>(), 0u);
+  const double seconds = s["render_seconds"];
+  if (seconds > 0) {
+    EXPECT_NEAR(s["samples_per_second"].get<double>(), samples / seconds, samples / seconds * 1e-6);
+    EXPECT_NEAR(s["rays_per_second"].get<double>(), rays["total"].get<double>() / seconds,
+                rays["total"].get<double>() / seconds * 1e-6);
+  }
+  // A running process holds at least a megabyte and, for this scene, far less than 4 GB.
+  EXPECT_GT(s["peak_rss_bytes"].get<double>(), 1e6);
+  EXPECT_LT(s["peak_rss_bytes"].get<double>(), 4e9);
+}
+
+TEST_F(CliStatsTest, NoBvhIsReportedAndTracesTheSameRays) {
+  ASSERT_EQ(run("scene.json -o a.pfm -q --backend cpu --stats a.json"), 0) << stderrText();
+  ASSERT_EQ(run("scene.json -o b.pfm -q --backend cpu --no-bvh --stats b.json"), 0)
+      << stderrText();
+  const json a = readJson("a.json"), b = readJson("b.json");
+  EXPECT_EQ(a["use_bvh"], true);
+  EXPECT_EQ(b["use_bvh"], false);
+  // Same closest hits either way, so the same paths and the same ray counts.
+  EXPECT_EQ(a["rays"], b["rays"]);
+}
+
+TEST_F(CliStatsTest, NoBvhIsHiddenFromHelp) {
+  ASSERT_EQ(run("--help"), 0);
+  std::ifstream in(dir_ / "stdout.txt");
+  std::stringstream text;
+  text << in.rdbuf();
+  EXPECT_NE(text.str().find("--stats"), std::string::npos);
+  EXPECT_EQ(text.str().find("--no-bvh"), std::string::npos);
+}
+
+TEST_F(CliStatsTest, StatsWithASequenceIsAUsageError) {
+  EXPECT_EQ(run("scene.json scene.json -o frames/ -q --stats s.json"), 2);
+  EXPECT_NE(stderrText().find("--stats"), std::string::npos);
+  EXPECT_FALSE(fs::exists(dir_ / "s.json"));
+}
+
+}  // namespace
