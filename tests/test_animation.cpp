@@ -293,7 +293,7 @@ TEST(FrameScene, ObjectTransformChangeRebuilds) {
   SceneDesc scene;
   ObjectDesc object;
   object.mesh.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)};
-  object.mesh.triangles = {Triangle{{0, 1, 2}, {-1, -1, -1}, 0}};
+  object.mesh.triangles = {MeshTriangle{{0, 1, 2}, {-1, -1, -1}, 0}};
   object.mesh.materials = {MaterialDesc{}};
   scene.objects.push_back(object);
   FrameScene frames;

@@ -34,7 +34,7 @@ struct TestScene {
   void addTriangle(const Vec3& a, const Vec3& b, const Vec3& c) {
     const uint32_t i = static_cast<uint32_t>(positions.size());
     positions.insert(positions.end(), {a, b, c});
-    triangles.push_back(Triangle{{i, i + 1, i + 2}, {-1, -1, -1}, 0});
+    triangles.push_back(Triangle{{i, i + 1, i + 2}, 0});
   }
   Bounds3 primitiveBounds(uint32_t p) const {
     if (p < spheres.size()) {

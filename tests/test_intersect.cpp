@@ -74,7 +74,7 @@ struct OnePrimitive {
 OnePrimitive oneTriangle(const Vec3& p0, const Vec3& p1, const Vec3& p2) {
   OnePrimitive s;
   s.positions = {p0, p1, p2};
-  s.triangles.push_back(Triangle{{0, 1, 2}, {-1, -1, -1}, 7});
+  s.triangles.push_back(Triangle{{0, 1, 2}, 7});
   return s;
 }
 
@@ -426,11 +426,7 @@ TEST(Surface, TriangleNormalFollowsTheRightHandRule) {
 
 TEST(Surface, ShadingNormalInterpolatesInTheGeometricHemisphere) {
   OnePrimitive scene = oneTriangle(Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0));
-  scene.normals = {Vec3(0, 0, 1), normalize(Vec3(1, 0, 1)), normalize(Vec3(0, 1, 1)),
-                   Vec3(0, 0, -1)};
-  scene.triangles[0].n[0] = 0;
-  scene.triangles[0].n[1] = 1;
-  scene.triangles[0].n[2] = 2;
+  scene.normals = {Vec3(0, 0, 1), normalize(Vec3(1, 0, 1)), normalize(Vec3(0, 1, 1))};
   const Ray r = makeRay(Vec3(0.25f, 0.25f, 1), Vec3(0, 0, -1));
   Hit hit;
   ASSERT_TRUE(intersectClosestBruteForce(scene.view(), r, &hit));
@@ -443,12 +439,14 @@ TEST(Surface, ShadingNormalInterpolatesInTheGeometricHemisphere) {
   EXPECT_EQ(sp.ng.z, 1.0f);
 
   // Vertex normals facing away from ng are flipped into its hemisphere.
-  for (int i = 0; i < 3; ++i) scene.triangles[0].n[i] = 3;
+  const std::vector<Vec3> vertexNormals = scene.normals;
+  scene.normals.assign(3, Vec3(0, 0, -1));
   sp = surfaceAt(scene.view(), r, hit);
   EXPECT_EQ(sp.ns.z, 1.0f);
 
-  // One missing vertex normal: the face normal is used.
-  scene.triangles[0].n[1] = -1;
+  // One missing vertex normal (a zero vector): the face normal is used.
+  scene.normals = vertexNormals;
+  scene.normals[1] = Vec3(0.0f);
   sp = surfaceAt(scene.view(), r, hit);
   EXPECT_EQ(sp.ns.z, sp.ng.z);
 }

@@ -51,7 +51,7 @@ class ObjLoader : public ::testing::Test {
   TempDir dir;
 };
 
-void expectTriangle(const Triangle& t, uint32_t a, uint32_t b, uint32_t c) {
+void expectTriangle(const MeshTriangle& t, uint32_t a, uint32_t b, uint32_t c) {
   EXPECT_EQ(t.v[0], a);
   EXPECT_EQ(t.v[1], b);
   EXPECT_EQ(t.v[2], c);
@@ -76,7 +76,7 @@ TEST_F(ObjLoader, TriangleWithoutNormalsUsesFaceNormalAndDefaultMaterial) {
 TEST_F(ObjLoader, QuadBecomesTwoTrianglesWithTheSameWinding) {
   const MeshDesc mesh = load(std::string(kSquare) + "f 1 2 3 4\n");
   ASSERT_EQ(mesh.triangles.size(), 2u);
-  for (const Triangle& t : mesh.triangles) {
+  for (const MeshTriangle& t : mesh.triangles) {
     const Vec3 n = cross(mesh.positions[t.v[1]] - mesh.positions[t.v[0]],
                          mesh.positions[t.v[2]] - mesh.positions[t.v[0]]);
     EXPECT_GT(n.z, 0) << "counter-clockwise seen from +z, as written";
@@ -238,7 +238,7 @@ TEST_F(ObjLoader, GarbageNeverCrashes) {
     if (round % 5 == 0) text = std::string(kSquare) + text;
     try {
       const MeshDesc mesh = load(text);
-      for (const Triangle& t : mesh.triangles)
+      for (const MeshTriangle& t : mesh.triangles)
         for (int i = 0; i < 3; ++i) {
           ASSERT_LT(t.v[i], mesh.positions.size());
           ASSERT_LT(t.n[i], static_cast<int32_t>(mesh.normals.size()));
@@ -262,7 +262,7 @@ TEST(ObjAsset, CatLoadsWithItsMaterial) {
   EXPECT_FLOAT_EQ(mesh.materials[0].color.x, 1);
   EXPECT_FLOAT_EQ(mesh.materials[0].color.y, 1);
   EXPECT_FLOAT_EQ(mesh.materials[0].color.z, 1);
-  for (const Triangle& t : mesh.triangles) {
+  for (const MeshTriangle& t : mesh.triangles) {
     ASSERT_EQ(t.material, 0u);
     ASSERT_GE(t.n[0], 0);
   }

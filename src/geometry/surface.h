@@ -67,11 +67,15 @@ CANDELA_HDI SurfacePoint triangleSurfaceAt(const SceneView& scene, const Triangl
   sp.error = gammaBound(7) * (abs(w0) + abs(w1) + abs(w2));
   sp.ng = normalize(cross(p1 - p0, p2 - p0));
   sp.ns = sp.ng;
-  if (tri.n[0] >= 0 && tri.n[1] >= 0 && tri.n[2] >= 0) {
-    const Vec3 n =
-        b0 * scene.normals[tri.n[0]] + b1 * scene.normals[tri.n[1]] + b2 * scene.normals[tri.n[2]];
-    // Opposite vertex normals can cancel; the face normal is the only sensible fallback.
-    if (lengthSquared(n) > 0.0f) sp.ns = faceForward(normalize(n), sp.ng);
+  if (scene.normalCount != 0) {
+    const Vec3& n0 = scene.normals[tri.v[0]];
+    const Vec3& n1 = scene.normals[tri.v[1]];
+    const Vec3& n2 = scene.normals[tri.v[2]];
+    if (!isBlack(n0) && !isBlack(n1) && !isBlack(n2)) {
+      const Vec3 n = b0 * n0 + b1 * n1 + b2 * n2;
+      // Opposite vertex normals can cancel; the face normal is the only sensible fallback.
+      if (lengthSquared(n) > 0.0f) sp.ns = faceForward(normalize(n), sp.ng);
+    }
   }
   sp.material = tri.material;
   sp.u = b1;

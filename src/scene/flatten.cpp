@@ -1,5 +1,6 @@
 // flattenScene: SceneDesc -> SceneData (world-space arrays, resolved camera, BVH).
 #include <algorithm>
+#include <unordered_map>
 #include <limits>
 
 #include "core/constants.h"
@@ -29,6 +30,10 @@ uint32_t addMaterial(SceneData& s, const Material& m) {
 // Appends an object's mesh in world space: p' = position + R (scale * p). Normals transform by
 // the inverse transpose, R * (n / scale). A mirroring scale reverses the winding, so the vertex
 // order is swapped to keep each face's outside where it was.
+//
+// The renderer keeps one normal per vertex (normals run parallel to positions), so a position
+// that the file pairs with several normals (a crease) is split into one vertex per normal; a
+// vertex of a face without normals gets the zero vector, meaning "use the face normal".
 // With `geometry` false only the object's materials are appended (see refreshSceneValues).
 void addObject(SceneData& s, const ObjectDesc& obj, bool geometry) {
   const MeshDesc& mesh = obj.mesh;
@@ -42,25 +47,42 @@ void addObject(SceneData& s, const ObjectDesc& obj, bool geometry) {
   if (!geometry) return;
 
   const Mat3 r = eulerRotation(obj.rotation);
-  const uint32_t positionBase = uint32_t(s.positions.size());
-  const uint32_t normalBase = uint32_t(s.normals.size());
+  const uint32_t base = uint32_t(s.positions.size());
   for (const Vec3& p : mesh.positions) s.positions.push_back(obj.position + r * (obj.scale * p));
-  if (obj.smooth)
-    for (const Vec3& n : mesh.normals) s.normals.push_back(normalize(r * (n / obj.scale)));
+
+  const bool withNormals = obj.smooth && !mesh.normals.empty();
+  constexpr int32_t kUnset = -2;
+  // The file's normal index of each emitted vertex (-1: none), from `base` on.
+  std::vector<int32_t> normalOf(withNormals ? mesh.positions.size() : 0, kUnset);
+  std::unordered_map<uint64_t, uint32_t> splits;
+  const auto vertexFor = [&](uint32_t v, int32_t n) -> uint32_t {
+    if (!withNormals) return base + v;
+    int32_t& slot = normalOf[v];
+    if (slot == kUnset) slot = n;
+    if (slot == n) return base + v;
+    const uint64_t key = (uint64_t(v) << 32) | uint32_t(n);
+    const auto [it, inserted] = splits.try_emplace(key, uint32_t(s.positions.size()));
+    if (inserted) {
+      s.positions.push_back(s.positions[base + v]);
+      normalOf.push_back(n);
+    }
+    return it->second;
+  };
 
   const bool mirrored = obj.scale.x * obj.scale.y * obj.scale.z < 0.0f;
-  for (const Triangle& t : mesh.triangles) {
+  for (const MeshTriangle& t : mesh.triangles) {
     Triangle w;
-    for (int k = 0; k < 3; ++k) {
-      w.v[k] = positionBase + t.v[k];
-      w.n[k] = (obj.smooth && t.n[k] >= 0) ? int32_t(normalBase + uint32_t(t.n[k])) : -1;
-    }
-    if (mirrored) {
-      std::swap(w.v[1], w.v[2]);
-      std::swap(w.n[1], w.n[2]);
-    }
+    for (int k = 0; k < 3; ++k) w.v[k] = vertexFor(t.v[k], t.n[k]);
+    if (mirrored) std::swap(w.v[1], w.v[2]);
     w.material = obj.material ? materialBase : materialBase + t.material;
     s.triangles.push_back(w);
+  }
+
+  if (withNormals) {
+    s.normals.resize(base, Vec3(0.0f));  // earlier vertices without normals
+    for (const int32_t n : normalOf)
+      s.normals.push_back(n >= 0 ? normalize(r * (mesh.normals[uint32_t(n)] / obj.scale))
+                                 : Vec3(0.0f));
   }
 }
 
@@ -92,6 +114,8 @@ void addContents(SceneData& s, const SceneDesc& desc, bool geometry) {
   // Lights after plain spheres: sphere lights append their own emissive spheres.
   for (const LightDesc& ld : desc.lights) addLight(s, ld);
   for (const ObjectDesc& od : desc.objects) addObject(s, od, geometry);
+  // Vertices after the last smooth mesh have no normals either.
+  if (geometry && !s.normals.empty()) s.normals.resize(s.positions.size(), Vec3(0.0f));
 
   s.environment = desc.environment;
   s.camera = resolveCamera(desc.camera, desc.file);

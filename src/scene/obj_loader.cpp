@@ -69,7 +69,7 @@ MeshDesc buildMesh(const tinyobj::ObjReader& reader, const MtlLibrary& library,
     for (size_t face = 0; face < shape.mesh.num_face_vertices.size(); ++face) {
       if (shape.mesh.num_face_vertices[face] != 3)
         throw SceneError(label + ": a polygon was not triangulated");
-      Triangle triangle;
+      MeshTriangle triangle;
       bool allNormals = true;
       for (int corner = 0; corner < 3; ++corner) {
         const tinyobj::index_t& index = indices[3 * face + corner];

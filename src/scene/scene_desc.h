@@ -31,11 +31,18 @@ struct SphereDesc {
   MaterialDesc material;
 };
 
+// A triangle as the OBJ file indexes it: positions and normals separately.
+struct MeshTriangle {
+  uint32_t v[3];    // into MeshDesc::positions
+  int32_t n[3];     // into MeshDesc::normals, or -1 on all three corners: use the face normal
+  uint32_t material;  // into MeshDesc::materials
+};
+
 // A triangle mesh in object space as read from an OBJ file (polygons already triangulated).
 struct MeshDesc {
   std::vector<Vec3> positions;
-  std::vector<Vec3> normals;          // from the file's `vn`; may be empty
-  std::vector<Triangle> triangles;    // Triangle::material indexes `materials` below
+  std::vector<Vec3> normals;              // from the file's `vn`; may be empty
+  std::vector<MeshTriangle> triangles;
   std::vector<MaterialDesc> materials;  // from the MTL (Kd as diffuse), else one diffuse 0.8
 };
 

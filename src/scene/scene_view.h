@@ -5,6 +5,8 @@
 //
 // Conventions:
 // - World space is right-handed, +y up. Mesh vertices are already transformed to world space.
+// - `normals` is empty or parallel to `positions`: normals[i] is vertex i's shading normal, and a
+//   zero vector means "none" (a triangle with such a vertex is shaded with its face normal).
 // - Primitive index p in [0, sphereCount) is spheres[p]; p >= sphereCount is triangle
 //   p - sphereCount. The BVH leaves index `primIndices`, which hold such primitive indices.
 // - Sphere lights also appear as spheres whose material is emissive with `lightIndex` set, so
@@ -36,13 +38,14 @@ struct Sphere {
   uint32_t material = 0;
 };
 
-// Vertex indices into positions; normal indices into normals, or -1 for the face normal.
-// The face's outside is the side of (v1-v0)x(v2-v0) (counter-clockwise seen from outside).
+// Vertex indices into positions (and into normals, which when present run parallel to
+// positions). The face's outside is the side of (v1-v0)x(v2-v0) (counter-clockwise seen from
+// outside). 16 bytes: the renderer's triangles stay small.
 struct Triangle {
   uint32_t v[3];
-  int32_t n[3];
   uint32_t material;
 };
+static_assert(sizeof(Triangle) == 16, "Triangle must stay 16 bytes");
 
 enum class LightType : uint32_t { Point = 0, Sphere = 1 };
 

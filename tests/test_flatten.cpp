@@ -1,0 +1,86 @@
+// Flattening meshes into the renderer's arrays: world-space transforms, one normal per vertex
+// (creases split), zero normals where a mesh has none, and winding kept under mirroring.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <string>
+
+#include "scene/scene_data.h"
+#include "scene/scene_loader.h"
+
+namespace candela {
+namespace {
+
+std::string writeObj(const std::string& name, const std::string& text) {
+  const std::string path = ::testing::TempDir() + name;
+  std::ofstream(path) << text;
+  return path;
+}
+
+SceneData flatten(const std::string& objects) {
+  return flattenScene(parseSceneText(R"({"camera": {"width": 8, "height": 8}, "objects": )" +
+                                         objects + "}",
+                                     "flatten.json", "."));
+}
+
+Vec3 faceNormal(const SceneData& s, const Triangle& t) {
+  return normalize(cross(s.positions[t.v[1]] - s.positions[t.v[0]],
+                         s.positions[t.v[2]] - s.positions[t.v[0]]));
+}
+
+// Two faces share an edge but give its vertices different normals: those vertices are split.
+const char* kCrease =
+    "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvn 0 0 1\nvn 0.6 0 0.8\n"
+    "f 1//1 2//1 3//1\nf 2//2 4//2 3//2\n";
+
+TEST(Flatten, CreaseVerticesAreSplitSoEachFaceKeepsItsNormals) {
+  const std::string obj = writeObj("crease.obj", kCrease);
+  const SceneData s = flatten(R"([{"file": ")" + obj + R"("}])");
+  ASSERT_EQ(s.triangles.size(), 2u);
+  EXPECT_EQ(s.positions.size(), 6u);  // 4 positions + 2 split
+  ASSERT_EQ(s.normals.size(), s.positions.size());
+  for (uint32_t v : s.triangles[0].v) EXPECT_FLOAT_EQ(s.normals[v].z, 1.0f);
+  for (uint32_t v : s.triangles[1].v) {
+    EXPECT_NEAR(s.normals[v].x, 0.6f, 1e-6f);
+    EXPECT_NEAR(s.normals[v].z, 0.8f, 1e-6f);
+  }
+  // Split vertices sit where the originals are.
+  EXPECT_EQ(s.positions[s.triangles[0].v[1]].x, s.positions[s.triangles[1].v[0]].x);
+}
+
+TEST(Flatten, FlatMeshesAndUnsmoothedObjectsCarryZeroNormals) {
+  const std::string crease = writeObj("crease2.obj", kCrease);
+  const std::string flat = writeObj("flat.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  const SceneData s = flatten(R"([{"file": ")" + flat + R"("},
+                                  {"file": ")" + crease + R"("},
+                                  {"file": ")" + crease + R"(", "smooth": false},
+                                  {"file": ")" + flat + R"("}])");
+  ASSERT_EQ(s.normals.size(), s.positions.size());
+  EXPECT_EQ(s.triangles.size(), 6u);
+  for (uint32_t v : s.triangles[0].v) EXPECT_TRUE(isBlack(s.normals[v]));  // before a smooth mesh
+  for (uint32_t v : s.triangles[3].v) EXPECT_TRUE(isBlack(s.normals[v]));  // smooth: false
+  for (uint32_t v : s.triangles[5].v) EXPECT_TRUE(isBlack(s.normals[v]));  // after it
+  for (uint32_t v : s.triangles[1].v) EXPECT_FALSE(isBlack(s.normals[v]));
+}
+
+TEST(Flatten, NoNormalsStoredWhenNoMeshHasThem) {
+  const std::string flat = writeObj("flat2.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  const SceneData s = flatten(R"([{"file": ")" + flat + R"("}])");
+  EXPECT_TRUE(s.normals.empty());
+  EXPECT_EQ(sizeof(Triangle), 16u);
+}
+
+TEST(Flatten, MirroringScaleKeepsTheOutsideAndTransformsNormals) {
+  // Counter-clockwise seen from +z: the outside is +z, and so is the vertex normal.
+  const std::string obj =
+      writeObj("ccw.obj", "v 1 0 0\nv 2 0 0\nv 1 1 0\nvn 0.6 0 0.8\nf 1//1 2//1 3//1\n");
+  const SceneData s = flatten(R"([{"file": ")" + obj + R"(", "scale": [-1, 1, 1]}])");
+  ASSERT_EQ(s.triangles.size(), 1u);
+  EXPECT_NEAR(faceNormal(s, s.triangles[0]).z, 1.0f, 1e-6f);
+  EXPECT_LT(s.positions[s.triangles[0].v[0]].x, 0.0f);
+  // Normals follow the inverse transpose: mirrored in x.
+  EXPECT_NEAR(s.normals[s.triangles[0].v[0]].x, -0.6f, 1e-6f);
+}
+
+}  // namespace
+}  // namespace candela
