@@ -39,6 +39,11 @@ constexpr float kTraversalCost = 1.0f;
 // primitive count at each level and so bound the depth by kSahDepthLimit + 30 <= kBvhMaxDepth
 // for any 32-bit primitive count.
 constexpr uint32_t kSahDepthLimit = 32;
+// Nodes with more primitives than this bin along the widest centroid axis only; smaller ones try
+// all three. Binning is most of the build's time, and on large nodes the widest axis is nearly
+// always the best one: on 20 dragons (2.2M triangles) the build takes half the time, and tracing
+// the 100k-triangle dragon costs the same instructions to 0.1% (callgrind).
+constexpr uint32_t kAllAxesBelow = 1024;
 // Subtrees with at least this many primitives are split in parallel; smaller ones are built
 // serially into one chunk.
 constexpr uint32_t kParallelThreshold = 1u << 15;
@@ -165,20 +170,34 @@ class Builder {
   }
 
  private:
-  // Binned SAH over all three axes. Returns false when the node is cheaper as a leaf (only allowed
-  // for at most kBvhMaxLeafSize primitives) or when no plane separates the centroids.
+  // Binned SAH (over all three axes for small nodes, the widest one for large nodes). Returns
+  // false when the node is cheaper as a leaf (only allowed for at most kBvhMaxLeafSize
+  // primitives) or when no plane separates the centroids.
   bool sahSplit(const NodeRange& range, Split* out) {
     const Bounds3& cb = range.centroidBounds;
     const int binCount = static_cast<int>(std::min<uint32_t>(kMaxBins, range.count()));
     const BinMapping maps[3] = {BinMapping(cb.lo.x, cb.hi.x, binCount),
                                 BinMapping(cb.lo.y, cb.hi.y, binCount),
                                 BinMapping(cb.lo.z, cb.hi.z, binCount)};
+    const bool allAxes = range.count() < kAllAxesBelow;
+    const int widest = maxDimension(cb.extent());
+    const int firstAxis = allAxes ? 0 : widest, lastAxis = allAxes ? 2 : widest;
     Bin bins[3][kMaxBins];
-    for (uint32_t i = range.begin; i < range.end; ++i) {
-      const BuildPrim& p = prims_[i];
-      const Vec3 c = p.centroid();
-      for (int axis = 0; axis < 3; ++axis) {
-        Bin& bin = bins[axis][maps[axis](c[axis])];
+    if (allAxes) {
+      for (uint32_t i = range.begin; i < range.end; ++i) {
+        const BuildPrim& p = prims_[i];
+        const Vec3 c = p.centroid();
+        for (int axis = 0; axis < 3; ++axis) {
+          Bin& bin = bins[axis][maps[axis](c[axis])];
+          ++bin.count;
+          bin.bounds.grow(p.bounds);
+        }
+      }
+    } else {
+      const BinMapping& map = maps[widest];
+      for (uint32_t i = range.begin; i < range.end; ++i) {
+        const BuildPrim& p = prims_[i];
+        Bin& bin = bins[widest][map(p.centroid()[widest])];
         ++bin.count;
         bin.bounds.grow(p.bounds);
       }
@@ -188,7 +207,7 @@ class Builder {
     // cheapest plane. A plane after bin k sends bins [0, k] left.
     float bestCost = kInfinity;
     int bestAxis = -1, bestPlane = -1;
-    for (int axis = 0; axis < 3; ++axis) {
+    for (int axis = firstAxis; axis <= lastAxis; ++axis) {
       float rightCost[kMaxBins - 1];
       Bounds3 rightBounds;
       uint32_t rightCount = 0;
