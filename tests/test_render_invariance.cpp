@@ -2,7 +2,10 @@
 // image (up to noise) when the whole scene is scaled by 1e-3 or 1e4.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <vector>
 #include <cstring>
 #include <string>
 
@@ -58,6 +61,38 @@ TEST(RenderInvariance, DifferentSeedsGiveDifferentNoise) {
   const RenderResult ra = test::renderTestScene(a), rb = test::renderTestScene(b);
   EXPECT_NE(0, std::memcmp(ra.image.pixels.data(), rb.image.pixels.data(),
                            ra.image.pixels.size() * sizeof(float)));
+}
+
+// Samples are counter-based, so disjoint sample ranges are exact slices of the full render: their
+// count-weighted mean equals it up to float rounding (what distributed rendering relies on).
+TEST(RenderInvariance, SampleRangeSlicesSumToTheFullRender) {
+  const SceneData data = test::loadTestScene(scaledScene(1.0, 8));
+  const RenderResult full = renderCpu(data.view(), CpuRenderOptions{});
+  std::vector<double> merged(full.image.pixels.size(), 0.0);
+  uint64_t cameraRays = 0;
+  for (const SampleRange slice : {SampleRange{0, 3}, SampleRange{3, 1}, SampleRange{4, 0}}) {
+    CpuRenderOptions options;
+    options.samples = slice;
+    const RenderResult part = renderCpu(data.view(), options);
+    const double count = slice.count ? slice.count : 8 - slice.begin;
+    for (size_t i = 0; i < merged.size(); ++i) merged[i] += part.image.pixels[i] * count / 8.0;
+    cameraRays += part.rays.camera;
+  }
+  EXPECT_EQ(cameraRays, full.rays.camera);
+  double maxDiff = 0;
+  for (size_t i = 0; i < merged.size(); ++i)
+    maxDiff = std::max(maxDiff, std::fabs(merged[i] - full.image.pixels[i]) /
+                                    std::max(1.0, double(std::fabs(full.image.pixels[i]))));
+  EXPECT_LT(maxDiff, 1e-5);
+}
+
+TEST(RenderInvariance, SampleRangeOutsideSppIsRejected) {
+  const SceneData data = test::loadTestScene(scaledScene(1.0, 4));
+  CpuRenderOptions options;
+  options.samples = {4, 0};
+  EXPECT_THROW(renderCpu(data.view(), options), std::invalid_argument);
+  options.samples = {2, 3};
+  EXPECT_THROW(renderCpu(data.view(), options), std::invalid_argument);
 }
 
 // Scaling the scene changes only floating-point rounding (the random numbers are the same), so

@@ -22,7 +22,7 @@ constexpr uint32_t kTileSize = 16;
 RenderResult renderCpu(const SceneView& scene, const CpuRenderOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   const uint32_t width = scene.camera.width, height = scene.camera.height;
-  const uint32_t spp = scene.settings.spp;
+  const SampleRange samples = resolveSampleRange(options.samples, scene.settings.spp);
   const uint32_t tilesX = (width + kTileSize - 1) / kTileSize;
   const uint32_t tilesY = (height + kTileSize - 1) / kTileSize;
 
@@ -53,7 +53,8 @@ RenderResult renderCpu(const SceneView& scene, const CpuRenderOptions& options) 
       const uint32_t x1 = std::min(x0 + kTileSize, width), y1 = std::min(y0 + kTileSize, height);
       for (uint32_t y = y0; y < y1; ++y)
         for (uint32_t x = x0; x < x1; ++x)
-          result.image.set(x, y, renderPixelSamples(scene, x, y, 0, spp, local) / float(spp));
+          result.image.set(x, y, renderPixelSamples(scene, x, y, samples.begin, samples.count, local) /
+                                     float(samples.count));
       if (options.progress) {
         std::lock_guard<std::mutex> lock(progressMutex);
         pixelsDone += uint64_t(x1 - x0) * (y1 - y0);

@@ -1,12 +1,13 @@
 // The CPU backend: renders a SceneView with oneTBB over 16x16 tiles, all cores by default.
 // Each pixel's samples are summed in a fixed order, so the image is bit-identical for any
-// thread count.
+// thread count. A sample range renders one slice of the samples (render/sample_range.h).
 #pragma once
 
 #include <atomic>
 #include <functional>
 
 #include "render/render_result.h"
+#include "render/sample_range.h"
 #include "scene/scene_view.h"
 
 namespace candela {
@@ -17,6 +18,9 @@ struct CpuRenderOptions {
   std::function<void(double)> progress;
   // When set and true, workers stop at the next tile; the result is then marked cancelled.
   const std::atomic<bool>* cancel = nullptr;
+  // Render only these sample indices and return their mean (default: all spp). Throws
+  // std::invalid_argument for a range outside [0, spp).
+  SampleRange samples;
 };
 
 RenderResult renderCpu(const SceneView& scene, const CpuRenderOptions& options);

@@ -106,7 +106,8 @@ RenderResult CudaScene::render(const CudaRenderOptions& options) const {
   const auto start = std::chrono::steady_clock::now();
   const SceneView& view = impl_->view;
   const uint32_t width = view.camera.width, height = view.camera.height;
-  const uint32_t spp = view.settings.spp;
+  const SampleRange samples = resolveSampleRange(options.samples, view.settings.spp);
+  const uint32_t first = samples.begin, end = samples.begin + samples.count;
   const uint32_t perPass = options.samplesPerPass > 0 ? options.samplesPerPass : 1;
 
   DeviceBuffer<float3> accumulation(size_t(width) * height);
@@ -121,12 +122,12 @@ RenderResult CudaScene::render(const CudaRenderOptions& options) const {
 
   RenderResult result;
   uint32_t pass = 0;
-  for (uint32_t begin = 0; begin < spp; begin += perPass, ++pass) {
+  for (uint32_t begin = first; begin < end; begin += perPass, ++pass) {
     if (options.cancel && options.cancel->load()) {
       result.cancelled = true;
       break;
     }
-    const uint32_t count = spp - begin < perPass ? spp - begin : perPass;
+    const uint32_t count = end - begin < perPass ? end - begin : perPass;
     renderPassKernel<<<grid, block>>>(view, begin, count, accumulation.get(), rayCounts.get());
     cudaError_t err = cudaGetLastError();
     if (err == cudaSuccess) err = cudaEventRecord(passDone);
@@ -137,7 +138,7 @@ RenderResult CudaScene::render(const CudaRenderOptions& options) const {
                       std::to_string(pass) + ", samples " + std::to_string(begin) + "-" +
                       std::to_string(begin + count - 1) + "): " + cudaGetErrorString(err));
     }
-    if (options.progress) options.progress(double(begin + count) / spp);
+    if (options.progress) options.progress(double(begin + count - first) / samples.count);
   }
   cudaEventDestroy(passDone);
 
@@ -146,7 +147,7 @@ RenderResult CudaScene::render(const CudaRenderOptions& options) const {
   std::vector<unsigned long long> counts;
   rayCounts.download(&counts);
   result.image = ImageRGB(width, height);
-  const float inv = 1.0f / float(spp);
+  const float inv = 1.0f / float(samples.count);
   for (size_t i = 0; i < sums.size(); ++i) {
     result.image.pixels[3 * i] = sums[i].x * inv;
     result.image.pixels[3 * i + 1] = sums[i].y * inv;

@@ -13,6 +13,7 @@
 
 #include "backends/cuda/cuda_error.h"
 #include "render/render_result.h"
+#include "render/sample_range.h"
 #include "scene/scene_data.h"
 
 namespace candela {
@@ -26,6 +27,7 @@ struct CudaRenderOptions {
   std::function<void(double)> progress;  // fraction of samples done, from the calling thread
   const std::atomic<bool>* cancel = nullptr;
   std::string sceneLabel;  // named in error messages
+  SampleRange samples;     // as in CpuRenderOptions: default all spp
 };
 
 // A scene resident on the GPU; upload once, render many times (animation, benchmarks).
