@@ -1,0 +1,137 @@
+"""candela: a physically based path tracer.
+
+    scene = candela.Scene.load("scenes/default.json")
+    img = scene.render(spp=64, seed=0)          # float32 (H, W, 3), linear radiance
+    candela.write_image("out.png", img)
+
+Renders release the GIL and stop on Ctrl-C (KeyboardInterrupt). Scene errors raise
+candela.SceneError, a ValueError whose message is the CLI's. For rendering on a Ray cluster see
+candela.distributed.
+"""
+from __future__ import annotations
+
+import json
+import os
+from typing import Any, Optional, Tuple
+
+import numpy as np
+
+from . import _candela
+from ._candela import ImageWriteError, SceneError, cuda_available
+
+__all__ = ["Scene", "SceneError", "ImageWriteError", "write_image", "cuda_available"]
+__version__ = "0.1.0"
+
+
+class Scene:
+    """A validated scene, or one frame of an animated scene.
+
+    Keeps where it came from (a file path, or JSON text and a base folder) so that it can be
+    rebuilt elsewhere, e.g. in a Ray task: see `spec` and `Scene.from_spec`.
+    """
+
+    def __init__(self, core: "_candela._Scene", source: dict):
+        self._core = core
+        self._source = source
+
+    @classmethod
+    def load(cls, path: str | os.PathLike) -> "Scene":
+        """Loads and validates a JSON scene file (and its OBJ meshes). Raises SceneError."""
+        path = os.fspath(path)
+        return cls(_candela._Scene.load(path), {"path": os.path.abspath(path), "label": path})
+
+    @classmethod
+    def from_dict(cls, scene: dict, base_dir: str | os.PathLike = ".") -> "Scene":
+        """A scene from a dict in the JSON scene format; OBJ paths resolve against base_dir."""
+        text = json.dumps(scene)
+        base_dir = os.path.abspath(os.fspath(base_dir))
+        return cls(_candela._Scene.from_text(text, "<dict>", base_dir),
+                   {"text": text, "base_dir": base_dir, "label": "<dict>"})
+
+    @classmethod
+    def from_spec(cls, spec: dict) -> "Scene":
+        """Rebuilds a scene from `scene.spec` (a plain dict, cheap to send to another process)."""
+        if "path" in spec:
+            core = _candela._Scene.load(spec["path"])
+        else:
+            core = _candela._Scene.from_text(spec["text"], spec.get("label", "<dict>"),
+                                             spec["base_dir"])
+        source = {k: v for k, v in spec.items() if k != "frame"}
+        scene = cls(core, source)
+        return scene.frame(spec["frame"]) if spec.get("frame") is not None else scene
+
+    @property
+    def spec(self) -> dict:
+        """Where this scene comes from: {"path"} or {"text", "base_dir"}, plus "frame"."""
+        return dict(self._source, frame=self._core.frame_index)
+
+    @property
+    def frames(self) -> int:
+        """Number of animation frames (1 for a still)."""
+        return self._core.frames
+
+    @property
+    def frame_index(self) -> Optional[int]:
+        """Which frame this is, or None for the scene as loaded (renders as frame 0)."""
+        return self._core.frame_index
+
+    def frame(self, index: int) -> "Scene":
+        """The still scene at animation frame `index` (its seed is render.seed + index)."""
+        return Scene(self._core.frame(index), self._source)
+
+    @property
+    def width(self) -> int:
+        return self._core.width
+
+    @property
+    def height(self) -> int:
+        return self._core.height
+
+    @property
+    def spp(self) -> int:
+        """Samples per pixel given in the scene (render() uses it when spp is None)."""
+        return self._core.spp
+
+    @property
+    def seed(self) -> int:
+        """The seed this scene (or frame) renders with by default."""
+        return self._core.seed
+
+    @property
+    def output(self) -> dict:
+        """The scene's output encoding as write_image arguments: gamma (or "srgb"), exposure."""
+        srgb, gamma, exposure = self._core.output
+        return {"gamma": "srgb" if srgb else gamma, "exposure": exposure}
+
+    def render(self, spp: Optional[int] = None, seed: Optional[int] = None,
+               backend: str = "auto", sample_range: Optional[Tuple[int, int]] = None,
+               threads: int = 0) -> np.ndarray:
+        """Renders to a float32 array (height, width, 3) of linear radiance.
+
+        spp and seed override the scene's. backend: "auto" (the GPU when usable), "cpu" or
+        "cuda". sample_range=(first, count) renders only samples [first, first + count) of the
+        spp and returns their mean; the count-weighted mean of disjoint slices equals the full
+        render to rounding. threads: CPU threads, 0 for all cores.
+        """
+        if sample_range is not None:
+            sample_range = (int(sample_range[0]), int(sample_range[1]))
+        return self._core.render(spp, seed, backend, sample_range, threads)
+
+    def __repr__(self) -> str:
+        frame = "" if self.frame_index is None else f", frame {self.frame_index}"
+        return (f"<candela.Scene {self._source.get('label')} {self.width}x{self.height}, "
+                f"{self.frames} frame(s){frame}>")
+
+
+def write_image(path: str | os.PathLike, img: Any, gamma: float | str = 2.2,
+                exposure: float = 0.0) -> None:
+    """Writes a linear (H, W, 3) image as the CLI does: .png (exposure in stops, then gamma, or
+    gamma="srgb"), .exr or .pfm (linear float). The file is replaced atomically."""
+    arr = np.ascontiguousarray(img, dtype=np.float32)
+    if arr.ndim != 3 or arr.shape[2] != 3:
+        raise ValueError(f"expected an image of shape (H, W, 3), got {arr.shape}")
+    srgb = isinstance(gamma, str)
+    if srgb and gamma.lower() != "srgb":
+        raise ValueError(f"gamma must be a number or 'srgb', got {gamma!r}")
+    _candela.write_image(os.fspath(path), arr, srgb, 2.2 if srgb else float(gamma),
+                         float(exposure))

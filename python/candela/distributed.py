@@ -1,0 +1,148 @@
+"""Rendering on a Ray cluster: one task per frame, or one image split by sample ranges.
+
+Scenes travel to tasks as plain specs (a file path, or JSON text and a base folder, plus the
+frame), never as C++ objects; with file paths, every node must see the scene and its meshes at
+the same absolute path (a shared file system). Each task asks for one GPU when the cluster has
+GPUs and `cpus_per_task` CPU cores otherwise, and renders with that many threads. Tasks that
+fail (a worker or node dies) are retried up to `max_retries` times; frames are written atomically
+(a temporary file renamed into place), so an interrupted run never leaves a partial frame, and
+a rerun skips the frames that exist (resume).
+"""
+from __future__ import annotations
+
+import os
+import time
+from typing import Iterable, List, Optional, Sequence, Union
+
+import numpy as np
+
+from . import Scene
+
+
+def _ray():
+    try:
+        import ray
+    except ImportError as e:  # pragma: no cover - depends on the installation
+        raise ImportError("candela.distributed needs Ray: pip install 'candela[distributed]'") from e
+    return ray
+
+
+def _connect(address: Optional[str]):
+    ray = _ray()
+    if not ray.is_initialized():
+        ray.init(address=address, ignore_reinit_error=True, log_to_driver=False)
+    return ray
+
+
+def _task_options(ray, cpus_per_task: int, max_retries: int) -> dict:
+    gpus = ray.cluster_resources().get("GPU", 0)
+    options = {"max_retries": max_retries, "retry_exceptions": False, "scheduling_strategy": "SPREAD"}
+    if gpus >= 1:
+        options.update(num_gpus=1, num_cpus=1)
+    else:
+        options.update(num_cpus=cpus_per_task)
+    return options
+
+
+def _frame_path(out_dir: str, frame: int, count: int, fmt: str) -> str:
+    digits = max(4, len(str(max(count - 1, 0))))  # as the CLI: frame_0000.png
+    return os.path.join(out_dir, f"frame_{frame:0{digits}d}.{fmt}")
+
+
+def _render_frame(spec: dict, path: str, spp, backend: str, threads: int) -> dict:
+    """Task body: rebuild the scene, render, write atomically; says where it ran."""
+    import ray
+
+    from . import write_image
+
+    start = time.time()
+    scene = Scene.from_spec(spec)
+    img = scene.render(spp=spp, backend=backend, threads=threads)
+    write_image(path, img, **scene.output)
+    return {"path": path, "node": ray.get_runtime_context().get_node_id(),
+            "seconds": time.time() - start}
+
+
+def _render_slice(spec: dict, spp: int, seed, first: int, count: int, backend: str,
+                  threads: int) -> np.ndarray:
+    scene = Scene.from_spec(spec)
+    return scene.render(spp=spp, seed=seed, backend=backend, sample_range=(first, count),
+                        threads=threads)
+
+
+def _as_scenes(scenes_or_animation) -> List[Scene]:
+    items = scenes_or_animation
+    if isinstance(items, (str, os.PathLike, Scene)):
+        items = [items]
+    scenes = [s if isinstance(s, Scene) else Scene.load(s) for s in items]
+    if len(scenes) == 1 and scenes[0].frame_index is None and scenes[0].frames > 1:
+        return [scenes[0].frame(i) for i in range(scenes[0].frames)]  # an animation
+    for s in scenes:
+        if s.frame_index is None and s.frames > 1:
+            raise ValueError("an animated scene must be the only item (it renders as frames)")
+    return scenes
+
+
+def render_frames(scenes_or_animation: Union[Scene, str, Sequence[Union[Scene, str]]],
+                  out_dir: Union[str, os.PathLike], address: Optional[str] = None, *,
+                  spp: Optional[int] = None, fmt: str = "png", backend: str = "auto",
+                  overwrite: bool = False, max_retries: int = 3,
+                  cpus_per_task: int = 1) -> List[dict]:
+    """Renders an animation (one Scene or scene file with an animation block: one frame each) or
+    a sequence of scenes (one frame per scene) to out_dir/frame_NNNN.<fmt>, one Ray task per
+    frame. address: a Ray cluster ("HOST:PORT" or "auto"); None starts or joins a local runtime
+    when none is connected. Existing frames are skipped unless overwrite.
+
+    Returns one dict per frame: frame, path, node (the Ray node id that rendered it, None when
+    skipped), seconds.
+    """
+    if fmt not in ("png", "exr", "pfm"):
+        raise ValueError(f"fmt must be png, exr or pfm, got {fmt!r}")
+    scenes = _as_scenes(scenes_or_animation)
+    out_dir = os.fspath(out_dir)
+    os.makedirs(out_dir, exist_ok=True)
+    paths = [_frame_path(out_dir, i, len(scenes), fmt) for i in range(len(scenes))]
+    results = [{"frame": i, "path": p, "node": None, "seconds": 0.0} for i, p in enumerate(paths)]
+    todo = [i for i, p in enumerate(paths) if overwrite or not os.path.exists(p)]
+    if not todo:
+        return results
+
+    ray = _connect(address)
+    options = _task_options(ray, cpus_per_task, max_retries)
+    threads = 0 if "num_gpus" in options else cpus_per_task
+    task = ray.remote(_render_frame).options(**options)
+    refs = {i: task.remote(scenes[i].spec, paths[i], spp, backend, threads) for i in todo}
+    for i, ref in refs.items():
+        results[i].update(ray.get(ref), frame=i)
+    return results
+
+
+def split_samples(spp: int, chunks: int) -> List[tuple]:
+    """[0, spp) as `chunks` (first, count) slices of near-equal size (fewer if spp < chunks)."""
+    if spp <= 0 or chunks <= 0:
+        raise ValueError("spp and chunks must be positive")
+    chunks = min(chunks, spp)
+    bounds = [spp * k // chunks for k in range(chunks + 1)]
+    return [(bounds[k], bounds[k + 1] - bounds[k]) for k in range(chunks)]
+
+
+def render_image(scene: Union[Scene, str], spp: Optional[int] = None, chunks: int = 4,
+                 address: Optional[str] = None, *, seed: Optional[int] = None,
+                 backend: str = "auto", max_retries: int = 3,
+                 cpus_per_task: int = 1) -> np.ndarray:
+    """Renders one image as `chunks` Ray tasks, each a slice of the sample indices, and merges
+    them weighted by sample count: equal to scene.render(spp, seed) to float rounding."""
+    if not isinstance(scene, Scene):
+        scene = Scene.load(scene)
+    spp = scene.spp if spp is None else spp
+    ray = _connect(address)
+    options = _task_options(ray, cpus_per_task, max_retries)
+    threads = 0 if "num_gpus" in options else cpus_per_task
+    task = ray.remote(_render_slice).options(**options)
+    slices = split_samples(spp, chunks)
+    refs = [task.remote(scene.spec, spp, seed, first, count, backend, threads)
+            for first, count in slices]
+    total = np.zeros((scene.height, scene.width, 3), dtype=np.float64)
+    for (first, count), ref in zip(slices, refs):
+        total += ray.get(ref).astype(np.float64) * count
+    return (total / spp).astype(np.float32)

@@ -1,0 +1,178 @@
+// candela._candela: the nanobind extension behind the `candela` Python package.
+//
+// Exposes the loader, the animation (sceneAtFrame) and the CPU and CUDA backends with the
+// smallest surface the Python layer (python/candela/__init__.py) needs; argument defaults,
+// docs and conveniences live there. Images cross the boundary as float32 arrays (H, W, 3) of
+// linear radiance, rows from the top. Errors: SceneError -> candela.SceneError (a ValueError),
+// ImageWriteError -> candela.ImageWriteError (an OSError), std::invalid_argument -> ValueError.
+#include <nanobind/nanobind.h>
+#include <nanobind/ndarray.h>
+#include <nanobind/stl/optional.h>
+#include <nanobind/stl/shared_ptr.h>
+#include <nanobind/stl/string.h>
+#include <nanobind/stl/tuple.h>
+
+#include <cstring>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <tuple>
+
+#include "apps/python/interruptible.h"
+#include "backends/cpu/cpu_renderer.h"
+#include "image/image_io.h"
+#include "scene/animation.h"
+#include "scene/scene_data.h"
+#include "scene/scene_error.h"
+#include "scene/scene_loader.h"
+
+#if defined(CANDELA_HAS_CUDA)
+#include "backends/cuda/cuda_renderer.h"
+#endif
+
+namespace nb = nanobind;
+using namespace nb::literals;
+
+namespace candela::python {
+namespace {
+
+using ImageArray = nb::ndarray<nb::numpy, float, nb::shape<-1, -1, 3>, nb::c_contig>;
+using ImageInput = nb::ndarray<const float, nb::shape<-1, -1, 3>, nb::c_contig, nb::device::cpu>;
+
+// A loaded scene and, for an animation, which frame of it (nullopt: frame 0 with the animation
+// still attached, so `frames` and `frame(i)` work).
+struct Scene {
+  std::shared_ptr<const SceneDesc> desc;
+  std::optional<uint32_t> frame;
+
+  uint32_t frameCount() const { return desc->animation ? desc->animation->frames : 1; }
+  SceneDesc still() const { return sceneAtFrame(*desc, frame.value_or(0)); }
+};
+
+bool cudaUsable(std::string* reason) {
+#if defined(CANDELA_HAS_CUDA)
+  return cudaBackendAvailable(reason);
+#else
+  *reason = "this build has no CUDA backend";
+  return false;
+#endif
+}
+
+// "auto" | "cpu" | "cuda" -> "cpu" | "cuda"; ValueError for a backend that cannot run here.
+std::string chooseBackend(const std::string& requested) {
+  std::string reason;
+  if (requested == "cpu") return "cpu";
+  if (requested == "auto") return cudaUsable(&reason) ? "cuda" : "cpu";
+  if (requested == "cuda") {
+    if (!cudaUsable(&reason)) throw std::invalid_argument("backend 'cuda': " + reason);
+    return "cuda";
+  }
+  throw std::invalid_argument("backend must be 'auto', 'cpu' or 'cuda', got '" + requested + "'");
+}
+
+ImageArray toArray(ImageRGB&& image) {
+  auto* pixels = new std::vector<float>(std::move(image.pixels));
+  nb::capsule owner(pixels, [](void* p) noexcept { delete static_cast<std::vector<float>*>(p); });
+  return ImageArray(pixels->data(), {size_t(image.height), size_t(image.width), size_t(3)}, owner);
+}
+
+ImageArray render(const Scene& scene, std::optional<uint32_t> spp, std::optional<uint64_t> seed,
+                  const std::string& backend, std::optional<std::tuple<uint32_t, uint32_t>> range,
+                  int threads) {
+  SceneDesc desc = scene.still();
+  if (spp) {
+    if (*spp == 0) throw std::invalid_argument("spp must be positive");
+    desc.camera.spp = desc.render.spp = *spp;
+  }
+  if (seed) desc.render.seed = *seed;
+  SampleRange samples;
+  if (range) {
+    samples = {std::get<0>(*range), std::get<1>(*range)};
+    if (samples.count == 0) throw std::invalid_argument("sample_range count must be positive");
+  }
+  const std::string chosen = chooseBackend(backend);
+  RenderResult result;
+  runInterruptible([&](const std::atomic<bool>& cancel) {
+    const SceneData data = flattenScene(desc);
+    if (chosen == "cpu") {
+      CpuRenderOptions options;
+      options.threads = threads;
+      options.cancel = &cancel;
+      options.samples = samples;
+      result = renderCpu(data.view(), options);
+    } else {
+#if defined(CANDELA_HAS_CUDA)
+      const CudaScene gpuScene(data);
+      CudaRenderOptions options;
+      options.cancel = &cancel;
+      options.samples = samples;
+      options.sceneLabel = desc.file;
+      result = gpuScene.render(options);
+#endif
+    }
+  });
+  return toArray(std::move(result.image));
+}
+
+void writeImageArray(const std::string& path, const ImageInput& img, bool srgb, float gamma,
+                     float exposure) {
+  if (!isSupportedImagePath(path))
+    throw std::invalid_argument(path + ": unsupported image format, expected .png, .exr or .pfm");
+  ImageRGB image(uint32_t(img.shape(1)), uint32_t(img.shape(0)));
+  std::memcpy(image.pixels.data(), img.data(), image.pixels.size() * sizeof(float));
+  OutputDesc output;
+  output.curve = srgb ? GammaCurve::Srgb : GammaCurve::Power;
+  output.gamma = gamma;
+  output.exposure = exposure;
+  nb::gil_scoped_release release;
+  writeImage(path, image, output);
+}
+
+}  // namespace
+}  // namespace candela::python
+
+NB_MODULE(_candela, m) {
+  using namespace candela;
+  using namespace candela::python;
+  m.doc() = "candela's C++ core; use the `candela` package rather than this module";
+  nb::exception<SceneError>(m, "SceneError", PyExc_ValueError);
+  nb::exception<ImageWriteError>(m, "ImageWriteError", PyExc_OSError);
+
+  nb::class_<Scene>(m, "_Scene")
+      .def_static("load", [](const std::string& path) {
+        return Scene{std::make_shared<const SceneDesc>(loadSceneFile(path)), std::nullopt};
+      }, "path"_a)
+      .def_static("from_text", [](const std::string& text, const std::string& label,
+                                  const std::string& baseDir) {
+        return Scene{std::make_shared<const SceneDesc>(parseSceneText(text, label, baseDir)),
+                     std::nullopt};
+      }, "text"_a, "label"_a, "base_dir"_a)
+      .def_prop_ro("frames", &Scene::frameCount)
+      .def_prop_ro("frame_index", [](const Scene& s) { return s.frame; })
+      .def_prop_ro("fps", [](const Scene& s) {
+        return s.desc->animation ? s.desc->animation->fps : 24.0f;
+      })
+      .def_prop_ro("width", [](const Scene& s) { return s.desc->camera.width; })
+      .def_prop_ro("height", [](const Scene& s) { return s.desc->camera.height; })
+      .def_prop_ro("spp", [](const Scene& s) { return s.desc->camera.spp; })
+      .def_prop_ro("seed", [](const Scene& s) { return s.still().render.seed; })
+      .def_prop_ro("output", [](const Scene& s) {
+        const OutputDesc& o = s.desc->output;
+        return std::make_tuple(o.curve == GammaCurve::Srgb, o.gamma, o.exposure);
+      })
+      .def("frame", [](const Scene& s, uint32_t i) {
+        if (i >= s.frameCount())
+          throw nb::index_error(("frame " + std::to_string(i) + " out of range (" +
+                                 std::to_string(s.frameCount()) + " frames)").c_str());
+        return Scene{s.desc, i};
+      }, "index"_a)
+      .def("render", &render, "spp"_a = nb::none(), "seed"_a = nb::none(), "backend"_a = "auto",
+           "sample_range"_a = nb::none(), "threads"_a = 0);
+
+  m.def("write_image", &writeImageArray, "path"_a, "img"_a, "srgb"_a, "gamma"_a, "exposure"_a);
+  m.def("cuda_available", [] {
+    std::string reason;
+    return cudaUsable(&reason);
+  });
+}

@@ -1,0 +1,157 @@
+"""The candela module without Ray: loading, errors, rendering, sample ranges, images."""
+import os
+import signal
+import subprocess
+import sys
+import textwrap
+import threading
+
+import numpy as np
+import pytest
+
+import candela
+from conftest import animated_scene, tiny_scene
+
+
+def test_render_returns_float32_hwc(scene_dict):
+    scene_dict["camera"]["width"] = 20  # non-square: rows are height
+    img = candela.Scene.from_dict(scene_dict).render(spp=2, backend="cpu")
+    assert img.dtype == np.float32 and img.shape == (16, 20, 3)
+    assert img.flags["C_CONTIGUOUS"]
+    assert np.isfinite(img).all() and img.max() > 0
+
+
+def test_load_file_and_dict_render_the_same(scene_file, scene_dict):
+    a = candela.Scene.load(scene_file).render(backend="cpu")
+    b = candela.Scene.from_dict(scene_dict).render(backend="cpu")
+    np.testing.assert_array_equal(a, b)
+
+
+def test_spp_and_seed_override(scene_dict):
+    scene = candela.Scene.from_dict(scene_dict)
+    assert scene.spp == 4 and scene.seed == 3
+    same = scene.render(spp=4, seed=3)
+    np.testing.assert_array_equal(scene.render(), same)
+    assert not np.array_equal(scene.render(seed=4), same)
+    assert not np.array_equal(scene.render(spp=2), same)
+
+
+def test_scene_error_carries_the_loader_message(scene_dict, tmp_path):
+    scene_dict["spheres"][1]["radius"] = -1
+    with pytest.raises(candela.SceneError) as err:
+        candela.Scene.from_dict(scene_dict)
+    assert isinstance(err.value, ValueError)
+    assert str(err.value) == "<dict>: spheres[1].radius: expected a positive number, got -1"
+
+    bad = tmp_path / "bad.json"
+    bad.write_text('{"camera": {"width": 16,}}')
+    with pytest.raises(candela.SceneError, match=r"bad\.json:1:\d+: invalid JSON"):
+        candela.Scene.load(bad)
+    with pytest.raises(candela.SceneError, match="missing.json"):
+        candela.Scene.load(tmp_path / "missing.json")
+
+
+def test_message_matches_the_cli(tmp_path, scene_dict):
+    scene_dict["spheres"][1]["radius"] = -1
+    path = tmp_path / "neg.json"
+    path.write_text(__import__("json").dumps(scene_dict))
+    cli = subprocess.run([sys.executable, "-m", "candela", "render", str(path), "-o", str(tmp_path / "x.png")],
+                         capture_output=True, text=True, timeout=60)
+    assert cli.returncode != 0
+    with pytest.raises(candela.SceneError) as err:
+        candela.Scene.load(str(path))
+    assert str(err.value) in cli.stderr
+
+
+def test_bad_arguments_raise_value_error(scene_dict):
+    scene = candela.Scene.from_dict(scene_dict)
+    with pytest.raises(ValueError, match="backend"):
+        scene.render(backend="opengl")
+    with pytest.raises(ValueError, match="sample range"):
+        scene.render(spp=4, sample_range=(2, 3))
+    with pytest.raises(ValueError):
+        scene.render(spp=4, sample_range=(0, 0))
+
+
+def test_sample_range_slices_sum_to_full_render(scene_dict):
+    scene = candela.Scene.from_dict(scene_dict)
+    full = scene.render(spp=8, backend="cpu").astype(np.float64)
+    merged = np.zeros_like(full)
+    for first, count in [(0, 3), (3, 1), (4, 4)]:
+        merged += scene.render(spp=8, sample_range=(first, count), backend="cpu") * count
+    np.testing.assert_allclose(merged / 8, full, rtol=1e-5, atol=1e-6)
+    # A slice alone is a different (noisier) estimate, not the full image.
+    assert not np.array_equal(scene.render(spp=8, sample_range=(0, 3)), full.astype(np.float32))
+
+
+def test_animation_frames():
+    scene = candela.Scene.from_dict(animated_scene(frames=4))
+    assert scene.frames == 4 and scene.frame_index is None
+    frames = [scene.frame(i) for i in range(4)]
+    assert [f.frame_index for f in frames] == [0, 1, 2, 3]
+    assert [f.seed for f in frames] == [3, 4, 5, 6]  # render.seed + frame
+    imgs = [f.render(backend="cpu") for f in frames]
+    assert not np.array_equal(imgs[0], imgs[3])
+    np.testing.assert_array_equal(scene.render(backend="cpu"), imgs[0])
+    with pytest.raises(IndexError):
+        scene.frame(4)
+    rebuilt = candela.Scene.from_spec(frames[2].spec)
+    np.testing.assert_array_equal(rebuilt.render(backend="cpu"), imgs[2])
+
+
+def test_write_image_formats(tmp_path, scene_dict):
+    img = candela.Scene.from_dict(scene_dict).render()
+    for name in ["a.png", "a.exr", "a.pfm"]:
+        candela.write_image(tmp_path / name, img)
+        assert (tmp_path / name).stat().st_size > 0
+    candela.write_image(tmp_path / "s.png", img, gamma="srgb", exposure=1.0)
+    assert sorted(os.listdir(tmp_path)) == ["a.exr", "a.pfm", "a.png", "s.png"]  # no temp files
+    with pytest.raises(ValueError, match="unsupported"):
+        candela.write_image(tmp_path / "a.bmp", img)
+    with pytest.raises(ValueError, match="shape"):
+        candela.write_image(tmp_path / "b.png", img[..., 0])
+    with pytest.raises(OSError):
+        candela.write_image(tmp_path / "no" / "such" / "dir" / "c.png", img)
+
+
+def test_render_releases_the_gil(scene_dict):
+    scene_dict["camera"].update(width=64, height=64)
+    scene = candela.Scene.from_dict(scene_dict)
+    ticks = 0
+    done = threading.Event()
+
+    def count():
+        nonlocal ticks
+        while not done.is_set():
+            ticks += 1
+
+    t = threading.Thread(target=count)
+    t.start()
+    scene.render(spp=64, threads=1)
+    done.set()
+    t.join()
+    assert ticks > 1000  # the counter thread ran while C++ rendered
+
+
+def test_ctrl_c_cancels_a_render(tmp_path):
+    script = textwrap.dedent(f"""
+        import sys, time
+        sys.path.insert(0, {os.path.dirname(__file__)!r})
+        import candela
+        from conftest import tiny_scene
+        scene = candela.Scene.from_dict(tiny_scene(size=128))
+        print("ready", flush=True)
+        start = time.time()
+        try:
+            scene.render(spp=100000, threads=1)
+            print("finished")
+        except KeyboardInterrupt:
+            print("interrupted after", round(time.time() - start, 1), flush=True)
+    """)
+    proc = subprocess.Popen([sys.executable, "-c", script], stdout=subprocess.PIPE, text=True)
+    assert proc.stdout.readline().strip() == "ready"
+    import time
+    time.sleep(1.0)
+    proc.send_signal(signal.SIGINT)
+    out, _ = proc.communicate(timeout=30)
+    assert out.startswith("interrupted after"), out

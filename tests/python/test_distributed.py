@@ -1,0 +1,102 @@
+"""candela.distributed on a local Ray runtime (ray.init(num_cpus=2)), including a worker killed
+mid-frame. Skipped only when Ray is not installed; the two-node cluster is test_cluster.py."""
+import json
+import os
+import signal
+import threading
+import time
+
+import numpy as np
+import pytest
+
+ray = pytest.importorskip("ray", reason="Ray is not installed (scripts/install-python installs it)")
+
+import candela  # noqa: E402
+from candela import distributed  # noqa: E402
+from conftest import animated_scene, tiny_scene  # noqa: E402
+
+def read_pfm(path):
+    with open(path, "rb") as f:
+        assert f.readline().strip() == b"PF"
+        width, height = map(int, f.readline().split())
+        scale = float(f.readline())
+        data = np.frombuffer(f.read(), dtype="<f4" if scale < 0 else ">f4")
+    return data.reshape(height, width, 3)[::-1]  # PFM rows run bottom to top
+
+
+@pytest.fixture(scope="module")
+def local_ray():
+    # address="local": a fresh runtime even if a `ray start` cluster is running on this machine.
+    ray.init(address="local", num_cpus=2, include_dashboard=False, log_to_driver=False)
+    yield
+    ray.shutdown()
+
+
+def test_render_frames_animation_and_resume(local_ray, tmp_path):
+    path = tmp_path / "anim.json"
+    path.write_text(json.dumps(animated_scene(frames=4)))
+    out = tmp_path / "frames"
+    results = distributed.render_frames(str(path), out, fmt="pfm")
+    names = sorted(os.listdir(out))
+    assert names == [f"frame_{i:04d}.pfm" for i in range(4)]
+    assert all(r["node"] for r in results)
+    scene = candela.Scene.load(path)
+    for i in range(4):
+        np.testing.assert_array_equal(read_pfm(out / names[i]), scene.frame(i).render(backend="cpu"))
+
+    # Resume: nothing to do, then only the missing frame.
+    assert all(r["node"] is None for r in distributed.render_frames(str(path), out, fmt="pfm"))
+    os.remove(out / names[2])
+    again = distributed.render_frames(str(path), out, fmt="pfm")
+    assert [r["node"] is not None for r in again] == [False, False, True, False]
+    assert sorted(os.listdir(out)) == names
+
+
+def test_render_frames_sequence_of_dict_scenes(local_ray, tmp_path):
+    scenes = [candela.Scene.from_dict(tiny_scene(seed=s)) for s in (1, 2)]
+    results = distributed.render_frames(scenes, tmp_path, fmt="png")
+    assert [os.path.basename(r["path"]) for r in results] == ["frame_0000.png", "frame_0001.png"]
+    assert all(os.path.getsize(r["path"]) > 0 for r in results)
+
+
+def test_render_image_in_chunks_equals_local_render(local_ray):
+    scene = candela.Scene.from_dict(tiny_scene())
+    assert distributed.split_samples(10, 3) == [(0, 3), (3, 3), (6, 4)]
+    local = scene.render(spp=10, backend="cpu")
+    merged = distributed.render_image(scene, spp=10, chunks=3)
+    assert merged.dtype == np.float32 and merged.shape == local.shape
+    np.testing.assert_allclose(merged, local, rtol=1e-5, atol=1e-6)
+
+
+def _ray_worker_pids(title):
+    pids = []
+    for pid in filter(str.isdigit, os.listdir("/proc")):
+        try:
+            with open(f"/proc/{pid}/cmdline", "rb") as f:
+                if f.read().startswith(title.encode()):
+                    pids.append(int(pid))
+        except OSError:
+            pass
+    return pids
+
+
+def test_worker_killed_mid_frame_leaves_no_partial_file_and_retries(local_ray, tmp_path):
+    scene = candela.Scene.from_dict(tiny_scene(size=48, spp=1500))
+    out = tmp_path / "frames"
+    results = {}
+    thread = threading.Thread(
+        target=lambda: results.update(r=distributed.render_frames(scene, out, max_retries=2)))
+    thread.start()
+    deadline = time.time() + 60
+    pids = []
+    while not pids and time.time() < deadline:
+        pids = _ray_worker_pids("ray::_render_frame")
+        time.sleep(0.05)
+    assert pids, "no worker ever ran the frame task"
+    time.sleep(0.3)  # mid-frame
+    os.kill(pids[0], signal.SIGKILL)
+    assert not os.path.exists(out / "frame_0000.png")
+    thread.join(timeout=120)
+    assert not thread.is_alive()
+    assert os.listdir(out) == ["frame_0000.png"]  # the retry wrote it; no temporary left behind
+    assert results["r"][0]["node"]
