@@ -55,8 +55,8 @@ struct TestScene {
     v.positionCount = static_cast<uint32_t>(positions.size());
     v.triangles = triangles.data();
     v.triangleCount = static_cast<uint32_t>(triangles.size());
-    v.nodes = bvh.nodes.data();
-    v.nodeCount = static_cast<uint32_t>(bvh.nodes.size());
+    v.nodes = bvh.wideNodes.data();
+    v.nodeCount = static_cast<uint32_t>(bvh.wideNodes.size());
     v.primIndices = bvh.primIndices.data();
     return v;
   }
@@ -111,7 +111,7 @@ Ray randomRay(std::mt19937& gen, int i) {
 // Checks every structural invariant of the scene's BVH.
 void expectValidBvh(const TestScene& s) {
   const BvhBuildResult& bvh = s.bvh;
-  static_assert(sizeof(BvhNode) == 32, "node layout");
+  static_assert(sizeof(BinaryBvhNode) == 32, "node layout");
   ASSERT_EQ(bvh.primIndices.size(), s.primitiveCount());
   if (s.primitiveCount() == 0) {
     EXPECT_TRUE(bvh.nodes.empty());
@@ -129,7 +129,7 @@ void expectValidBvh(const TestScene& s) {
     const Entry e = stack.back();
     stack.pop_back();
     ASSERT_EQ(e.node, expectedNext++) << "not depth-first";
-    const BvhNode& n = bvh.nodes[e.node];
+    const BinaryBvhNode& n = bvh.nodes[e.node];
     const Bounds3 nodeBounds(n.boundsMin, n.boundsMax);
     if (n.primCount > 0) {
       ++leaves;
@@ -148,7 +148,7 @@ void expectValidBvh(const TestScene& s) {
     ASSERT_LT(first, second);
     ASSERT_LT(second, bvh.nodes.size());
     for (uint32_t child : {first, second}) {
-      const BvhNode& c = bvh.nodes[child];
+      const BinaryBvhNode& c = bvh.nodes[child];
       EXPECT_TRUE(nodeBounds.contains(Bounds3(c.boundsMin, c.boundsMax))) << "node " << child;
     }
     stack.push_back({second, e.depth + 1});
@@ -352,7 +352,7 @@ TEST(Bvh, LargeSceneBuildsTheSameTreeOnAnyThreadCount) {
   }
   ASSERT_EQ(serial.bvh.nodes.size(), parallel.bvh.nodes.size());
   EXPECT_EQ(std::memcmp(serial.bvh.nodes.data(), parallel.bvh.nodes.data(),
-                        parallel.bvh.nodes.size() * sizeof(BvhNode)),
+                        parallel.bvh.nodes.size() * sizeof(BinaryBvhNode)),
             0);
   EXPECT_EQ(serial.bvh.primIndices, parallel.bvh.primIndices);
   expectMatchesBruteForce(parallel, 300, 12);

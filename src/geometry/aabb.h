@@ -8,6 +8,14 @@
 
 #include "core/constants.h"
 #include "core/float_error.h"
+
+// SSE for the four-box test on x86-64 hosts; never in CUDA device code.
+#if !defined(__CUDA_ARCH__) && (defined(__SSE2__) || defined(_M_X64))
+#include <immintrin.h>
+#define CANDELA_HOST_SSE 1
+#else
+#define CANDELA_HOST_SSE 0
+#endif
 #include "core/vec3.h"
 
 namespace candela {
@@ -91,6 +99,49 @@ struct RayBoxTester {
     }
     *tEntry = t0;
     return t0 <= t1;
+  }
+
+  // The same test against four boxes stored one array per axis (a 4-wide BVH node). Returns a
+  // bit mask of the boxes hit and writes each box's entry distance. On x86-64 hosts this is SSE
+  // code; elsewhere (CUDA, other CPUs) a scalar loop computing exactly the same values: maxps and
+  // minps return their second operand when the first is NaN, as the comparisons below do.
+  CANDELA_HDI int hit4(const float lo[3][4], const float hi[3][4], float tMax,
+                       float tEntry[4]) const {
+    constexpr float kFarScale = 1.0f + 2.0f * gammaBound(3);
+#if CANDELA_HOST_SSE
+    __m128 t0 = _mm_setzero_ps(), t1 = _mm_set1_ps(tMax);
+    const __m128 scale = _mm_set1_ps(kFarScale);
+    for (int axis = 0; axis < 3; ++axis) {
+      const __m128 nearPlanes = _mm_loadu_ps(nearIsHi[axis] ? hi[axis] : lo[axis]);
+      const __m128 farPlanes = _mm_loadu_ps(nearIsHi[axis] ? lo[axis] : hi[axis]);
+      const __m128 o = _mm_set1_ps(origin[axis]), inv = _mm_set1_ps(invDir[axis]);
+      const __m128 tNear = _mm_mul_ps(_mm_sub_ps(nearPlanes, o), inv);
+      const __m128 tFar = _mm_mul_ps(_mm_mul_ps(_mm_sub_ps(farPlanes, o), inv), scale);
+      t0 = _mm_max_ps(tNear, t0);
+      t1 = _mm_min_ps(tFar, t1);
+    }
+    _mm_storeu_ps(tEntry, t0);
+    return _mm_movemask_ps(_mm_cmple_ps(t0, t1));
+#else
+    float t0[4] = {0.0f, 0.0f, 0.0f, 0.0f}, t1[4] = {tMax, tMax, tMax, tMax};
+    for (int axis = 0; axis < 3; ++axis) {
+      const float* nearPlanes = nearIsHi[axis] ? hi[axis] : lo[axis];
+      const float* farPlanes = nearIsHi[axis] ? lo[axis] : hi[axis];
+      const float o = origin[axis], inv = invDir[axis];
+      for (int c = 0; c < 4; ++c) {
+        const float tNear = (nearPlanes[c] - o) * inv;
+        const float tFar = (farPlanes[c] - o) * inv * kFarScale;
+        t0[c] = tNear > t0[c] ? tNear : t0[c];
+        t1[c] = tFar < t1[c] ? tFar : t1[c];
+      }
+    }
+    int mask = 0;
+    for (int c = 0; c < 4; ++c) {
+      tEntry[c] = t0[c];
+      mask |= (t0[c] <= t1[c]) << c;
+    }
+    return mask;
+#endif
   }
 };
 

@@ -108,8 +108,8 @@ struct Split {
   int axis;
 };
 
-BvhNode makeLeaf(const Bounds3& bounds, uint32_t first, uint32_t count) {
-  BvhNode n;
+BinaryBvhNode makeLeaf(const Bounds3& bounds, uint32_t first, uint32_t count) {
+  BinaryBvhNode n;
   n.boundsMin = bounds.lo;
   n.boundsMax = bounds.hi;
   n.offset = first;
@@ -119,8 +119,8 @@ BvhNode makeLeaf(const Bounds3& bounds, uint32_t first, uint32_t count) {
   return n;
 }
 
-BvhNode makeInterior(const Bounds3& bounds, int axis) {
-  BvhNode n;
+BinaryBvhNode makeInterior(const Bounds3& bounds, int axis) {
+  BinaryBvhNode n;
   n.boundsMin = bounds.lo;
   n.boundsMax = bounds.hi;
   n.offset = 0;  // set once the second child's position is known
@@ -154,7 +154,7 @@ class Builder {
   }
 
   // Builds the subtree of `range` depth-first into `nodes`, with offsets relative to `nodes`.
-  void buildSerial(const NodeRange& range, uint32_t depth, std::vector<BvhNode>& nodes,
+  void buildSerial(const NodeRange& range, uint32_t depth, std::vector<BinaryBvhNode>& nodes,
                    BuildStats& stats) {
     const uint32_t index = static_cast<uint32_t>(nodes.size());
     Split s;
@@ -290,9 +290,9 @@ class Builder {
 
 // The parallel top of the tree: interior nodes with two children, or chunks built serially.
 struct TopNode {
-  BvhNode node;                          // interior top nodes
+  BinaryBvhNode node;                          // interior top nodes
   std::unique_ptr<TopNode> left, right;  // both set for interior top nodes
-  std::vector<BvhNode> chunk;            // a serially built subtree, offsets relative to it
+  std::vector<BinaryBvhNode> chunk;            // a serially built subtree, offsets relative to it
   BuildStats stats;                      // of the whole subtree
   uint32_t nodeCount = 0;                // of the whole subtree
 };
@@ -320,7 +320,7 @@ struct PlacedChunk {
 };
 
 // Writes the top nodes at their depth-first positions and lists where each chunk goes.
-void placeTop(TopNode& top, uint32_t base, std::vector<BvhNode>& nodes,
+void placeTop(TopNode& top, uint32_t base, std::vector<BinaryBvhNode>& nodes,
               std::vector<PlacedChunk>& chunks) {
   if (!top.left) {
     chunks.push_back({&top, base});
@@ -404,15 +404,16 @@ BvhBuildResult buildBvh(const Sphere* spheres, uint32_t sphereCount, const Vec3*
     std::vector<PlacedChunk> chunks;
     placeTop(*top, 0, result.nodes, chunks);
     tbb::parallel_for(size_t(0), chunks.size(), [&](size_t c) {
-      std::vector<BvhNode>& chunk = chunks[c].top->chunk;
+      std::vector<BinaryBvhNode>& chunk = chunks[c].top->chunk;
       const uint32_t base = chunks[c].base;
       for (size_t i = 0; i < chunk.size(); ++i) {
-        BvhNode n = chunk[i];
+        BinaryBvhNode n = chunk[i];
         if (n.primCount == 0) n.offset += base;
         result.nodes[base + i] = n;
       }
-      std::vector<BvhNode>().swap(chunk);
+      std::vector<BinaryBvhNode>().swap(chunk);
     });
+    result.wideNodes = collapseToWide(result.nodes);
   }
   result.buildSeconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

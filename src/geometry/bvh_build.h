@@ -3,8 +3,9 @@
 // Binned surface-area-heuristic build (pbrt-v4's aggregates.cpp, Wald 2007): at each node the
 // primitive centroids are binned along all three axes and the cheapest split plane is taken; a
 // node becomes a leaf when the SAH prefers it and it holds at most kBvhMaxLeafSize primitives.
-// The tree is flattened depth-first into 32-byte BvhNode records (scene/scene_view.h): an
-// interior node's first child follows it, `offset` names the second.
+// The binary tree is flattened depth-first into 32-byte BinaryBvhNode records (an interior node's
+// first child follows it, `offset` names the second), then collapsed into the 4-wide BvhNode
+// records the renderer traverses (scene/scene_view.h).
 //
 // Primitive indices follow SceneView's convention: p < sphereCount is a sphere, else triangle
 // p - sphereCount. An empty scene yields zero nodes (a leaf cannot be empty: primCount 0 marks an
@@ -19,21 +20,38 @@
 
 namespace candela {
 
+// Node of the binary tree the SAH build makes, depth-first: an interior node's first child
+// follows it. Leaves hold primCount > 0 primitives from primIndices[offset].
+struct BinaryBvhNode {
+  Vec3 boundsMin;
+  uint32_t offset;  // leaf: first index into primIndices; interior: index of the second child
+  Vec3 boundsMax;
+  uint16_t primCount;  // 0 for interior nodes
+  uint8_t axis;        // interior: split axis
+  uint8_t pad;
+};
+static_assert(sizeof(BinaryBvhNode) == 32, "BinaryBvhNode must stay 32 bytes");
+
 // Leaves hold at most this many primitives.
 constexpr uint32_t kBvhMaxLeafSize = 4;
-// Depth bound of every tree buildBvh returns; traversal stacks of 64 entries never overflow.
+// Depth bound of every tree buildBvh returns (and so of its 4-wide form).
 constexpr uint32_t kBvhMaxDepth = 63;
 
 struct BvhBuildResult {
-  std::vector<BvhNode> nodes;         // depth-first; nodes[0] is the root when not empty
+  std::vector<BinaryBvhNode> nodes;   // depth-first; nodes[0] is the root when not empty
+  std::vector<BvhNode> wideNodes;     // the same tree collapsed 4-wide: what the renderer uses
   std::vector<uint32_t> primIndices;  // leaf ranges index this; a permutation of all primitives
   uint32_t leafCount = 0;
   uint32_t maxDepth = 0;    // depth of the deepest leaf; the root has depth 0
   double buildSeconds = 0;  // wall time of buildBvh
 };
 
+// Collapses a binary tree into 4-wide nodes: each wide node takes the up to four descendants
+// reached by repeatedly opening the inner child of largest surface area. Empty for an empty tree.
+std::vector<BvhNode> collapseToWide(const std::vector<BinaryBvhNode>& binary);
+
 // Builds the BVH of sphereCount spheres and triangleCount triangles (vertex indices into
-// positions). Uses all cores through oneTBB for large scenes; the result does not depend on the
+// positions), binary and 4-wide. Uses all cores through oneTBB for large scenes; the result does not depend on the
 // thread count.
 BvhBuildResult buildBvh(const Sphere* spheres, uint32_t sphereCount, const Vec3* positions,
                         const Triangle* triangles, uint32_t triangleCount);

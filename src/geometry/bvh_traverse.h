@@ -1,9 +1,7 @@
 // BVH traversal for closest-hit and any-hit (shadow) queries, shared by all backends.
 //
-// A loop over the flattened depth-first nodes (scene/scene_view.h) with a fixed stack of 64 node
-// indices: buildBvh bounds the tree depth by kBvhMaxDepth = 63, and the stack holds at most one
-// entry per level. Interior nodes are entered near child first, chosen by the sign of the ray
-// direction along the node's split axis (the first child holds the lower coordinates). Hits are
+// A loop over the 4-wide nodes (scene/scene_view.h) with a fixed stack: buildBvh bounds the tree
+// depth by kBvhMaxDepth = 63, and each level leaves at most three entries on the stack. Hits are
 // reported for t in (0, ray.tMax); a scene with no nodes is all miss.
 #pragma once
 
@@ -17,7 +15,8 @@
 
 namespace candela {
 
-constexpr int kBvhStackSize = 64;
+// Each wide node pushes at most three entries and the tree is at most kBvhMaxDepth (63) deep.
+constexpr int kBvhStackSize = 3 * 63 + 1;
 
 // Intersects primitive `prim` (SceneView numbering) for t in (0, tMax); fills `hit` on a hit.
 CANDELA_HDI bool intersectPrimitive(const SceneView& scene, const Ray& ray, uint32_t prim,
@@ -48,18 +47,16 @@ namespace detail {
 // The one traversal loop. anyHit: stop at the first hit not on `skipPrim`; otherwise find the
 // nearest hit. Returns whether a hit was found; `hit` receives it (closest mode).
 //
-// Ordered traversal: at an interior node both children's boxes are tested, the nearer child is
-// visited next and the farther one is pushed with its entry distance, so that once a nearer hit
-// is known, popped subtrees that start beyond it are skipped without touching their nodes.
+// At each 4-wide node all four child boxes are tested together. Leaf children that are hit are
+// intersected at once; inner children that are hit are visited nearest first, the others pushed
+// with their entry distances, so that once a nearer hit is known a popped subtree that starts
+// beyond it is skipped without touching its node.
 CANDELA_HDI bool traverseBvh(const SceneView& scene, const Ray& ray, bool anyHit, uint32_t skipPrim,
                              Hit* hit) {
   if (scene.nodeCount == 0) return false;
   const RayBoxTester box(ray.origin, Vec3(1.0f / ray.direction.x, 1.0f / ray.direction.y,
                                           1.0f / ray.direction.z));
   float tMax = ray.tMax;
-  float tEntry;
-  if (!box.hit(scene.nodes[0].boundsMin, scene.nodes[0].boundsMax, tMax, &tEntry)) return false;
-
   bool found = false;
   uint32_t stackNode[kBvhStackSize];
   float stackEntry[kBvhStackSize];
@@ -67,27 +64,13 @@ CANDELA_HDI bool traverseBvh(const SceneView& scene, const Ray& ray, bool anyHit
   uint32_t current = 0;
   for (;;) {
     const BvhNode& node = scene.nodes[current];
-    if (node.primCount == 0) {
-      const uint32_t first = current + 1, second = node.offset;
-      const BvhNode& a = scene.nodes[first];
-      const BvhNode& b = scene.nodes[second];
-      float tA, tB;
-      const bool hitA = box.hit(a.boundsMin, a.boundsMax, tMax, &tA);
-      const bool hitB = box.hit(b.boundsMin, b.boundsMax, tMax, &tB);
-      if (hitA && hitB) {
-        const bool aFirst = tA <= tB;
-        stackNode[stackSize] = aFirst ? second : first;
-        stackEntry[stackSize++] = aFirst ? tB : tA;
-        current = aFirst ? first : second;
-        continue;
-      }
-      if (hitA || hitB) {
-        current = hitA ? first : second;
-        continue;
-      }
-    } else {
-      for (uint32_t i = 0; i < node.primCount; ++i) {
-        const uint32_t prim = scene.primIndices[node.offset + i];
+    float entry[4];
+    const int hitMask = box.hit4(node.lo, node.hi, tMax, entry);
+
+    for (int c = 0; c < 4; ++c) {
+      if (!(hitMask >> c & 1) || node.count[c] == 0) continue;
+      for (uint32_t i = 0; i < node.count[c]; ++i) {
+        const uint32_t prim = scene.primIndices[node.child[c] + i];
         if (prim == skipPrim) continue;
         if (intersectPrimitive(scene, ray, prim, tMax, hit)) {
           if (anyHit) return true;
@@ -95,6 +78,29 @@ CANDELA_HDI bool traverseBvh(const SceneView& scene, const Ray& ray, bool anyHit
           tMax = hit->t;  // later candidates must be nearer
         }
       }
+    }
+
+    // Inner children still in reach, sorted nearest first (insertion sort of at most four).
+    uint32_t next[4];
+    float nextEntry[4];
+    int nextCount = 0;
+    for (int c = 0; c < 4; ++c) {
+      if (!(hitMask >> c & 1) || node.count[c] != 0 || entry[c] > tMax) continue;
+      int k = nextCount++;
+      for (; k > 0 && nextEntry[k - 1] > entry[c]; --k) {
+        next[k] = next[k - 1];
+        nextEntry[k] = nextEntry[k - 1];
+      }
+      next[k] = node.child[c];
+      nextEntry[k] = entry[c];
+    }
+    if (nextCount > 0) {
+      for (int k = nextCount - 1; k >= 1; --k) {
+        stackNode[stackSize] = next[k];
+        stackEntry[stackSize++] = nextEntry[k];
+      }
+      current = next[0];
+      continue;
     }
     // Pop the next subtree that may still hold a nearer hit.
     do {

@@ -137,7 +137,7 @@ SceneData flattenScene(const SceneDesc& desc) {
 
   BvhBuildResult bvh = buildBvh(s.spheres.data(), uint32_t(s.spheres.size()), s.positions.data(),
                                 s.triangles.data(), uint32_t(s.triangles.size()));
-  s.nodes = std::move(bvh.nodes);
+  s.nodes = std::move(bvh.wideNodes);
   s.primIndices = std::move(bvh.primIndices);
   s.bvh.nodeCount = uint32_t(s.nodes.size());
   s.bvh.leafCount = bvh.leafCount;

@@ -58,17 +58,21 @@ struct Light {
   uint32_t sphere = 0;  // sphere lights: their index in SceneView::spheres
 };
 
-// Flattened BVH node, 32 bytes, depth-first order: an interior node's first child follows it,
-// `secondChild` names the other. Leaves hold primCount > 0 primitives from primIndices[offset].
+// Node of the 4-wide BVH the renderer traverses, 128 bytes (two cache lines). It holds the boxes
+// of up to four children side by side, one array per axis, so that one visit tests four boxes
+// in a loop the compiler turns into vector instructions. nodes[0] is the root.
+// Child slot i: count[i] == 0 and child[i] a node index for an inner child; count[i] > 0 for a
+// leaf of count[i] primitives from primIndices[child[i]]; an unused slot has an empty box
+// (lo = +inf, hi = -inf), which no ray hits, and count 0, child kNoBvhChild.
 struct BvhNode {
-  Vec3 boundsMin;
-  uint32_t offset;  // leaf: first index into primIndices; interior: index of the second child
-  Vec3 boundsMax;
-  uint16_t primCount;  // 0 for interior nodes
-  uint8_t axis;        // interior: split axis, for near-child-first traversal
-  uint8_t pad;
+  float lo[3][4];  // [axis][child]
+  float hi[3][4];
+  uint32_t child[4];
+  uint8_t count[4];
+  uint32_t pad[3];
 };
-static_assert(sizeof(BvhNode) == 32, "BvhNode must stay 32 bytes");
+static_assert(sizeof(BvhNode) == 128, "BvhNode must stay 128 bytes");
+constexpr uint32_t kNoBvhChild = 0xffffffffu;
 
 struct Camera {
   uint32_t width = 512, height = 512;
