@@ -4,8 +4,10 @@
 
 #include <cstring>
 #include <functional>
+#include <random>
 #include <string>
 
+#include "geometry/bvh_traverse.h"
 #include "scene/animation.h"
 #include "scene/frame_scene.h"
 #include "scene/scene_error.h"
@@ -260,36 +262,73 @@ bool sameBytes(const std::vector<T>& a, const std::vector<T>& b) {
          (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
 }
 
-// What the renderer sees of `a` and `b` is the same, byte for byte.
-void expectSameScene(const SceneData& a, const SceneData& b) {
+// Everything the renderer sees of `a` and `b` but the BVH is the same, byte for byte.
+void expectSameContents(const SceneData& a, const SceneData& b) {
   EXPECT_TRUE(sameBytes(a.materials, b.materials));
   EXPECT_TRUE(sameBytes(a.spheres, b.spheres));
   EXPECT_TRUE(sameBytes(a.lights, b.lights));
   EXPECT_TRUE(sameBytes(a.positions, b.positions));
   EXPECT_TRUE(sameBytes(a.triangles, b.triangles));
-  EXPECT_TRUE(sameBytes(a.nodes, b.nodes));
-  EXPECT_TRUE(sameBytes(a.primIndices, b.primIndices));
   EXPECT_EQ(std::memcmp(&a.camera, &b.camera, sizeof(Camera)), 0);
   EXPECT_EQ(a.settings.seed, b.settings.seed);
 }
 
-TEST(FrameScene, CameraAndLightChangesReuseTheBvhAndGeometryChangesRebuildIt) {
+// ... and so is the BVH.
+void expectSameScene(const SceneData& a, const SceneData& b) {
+  expectSameContents(a, b);
+  EXPECT_TRUE(sameBytes(a.nodes, b.nodes));
+  EXPECT_TRUE(sameBytes(a.primIndices, b.primIndices));
+}
+
+// A refitted BVH is another tree over the same primitives: it must find exactly the nearest hit
+// that testing every primitive finds, for rays through the whole scene.
+void expectBvhFindsNearestHits(const SceneData& scene) {
+  const SceneView view = scene.view();
+  Vec3 lo, hi;
+  scene.bounds(&lo, &hi);
+  std::mt19937 gen(5);
+  std::uniform_real_distribution<float> u(0.0f, 1.0f);
+  for (int i = 0; i < 2000; ++i) {
+    const Vec3 a(lo.x + u(gen) * (hi.x - lo.x), lo.y + u(gen) * (hi.y - lo.y),
+                 lo.z + u(gen) * (hi.z - lo.z));
+    const Vec3 b(lo.x + u(gen) * (hi.x - lo.x), lo.y + u(gen) * (hi.y - lo.y),
+                 lo.z + u(gen) * (hi.z - lo.z));
+    Ray ray;
+    ray.origin = a + (a - b) * 2.0f;  // from outside the scene, through two random points
+    ray.direction = normalize(b - a);
+    Hit viaBvh, bruteForce;
+    const bool hitBvh = intersectClosest(view, ray, &viaBvh);
+    ASSERT_EQ(hitBvh, intersectClosestBruteForce(view, ray, &bruteForce)) << "ray " << i;
+    if (hitBvh) {
+      EXPECT_EQ(viaBvh.prim, bruteForce.prim) << "ray " << i;
+      EXPECT_EQ(viaBvh.t, bruteForce.t) << "ray " << i;
+    }
+  }
+}
+
+TEST(FrameScene, CameraAndLightChangesReuseTheBvhAndARadiusChangeRefitsIt) {
   const SceneDesc scene = parse(sceneWith(R"({"frames": 6, "tracks": [
       {"target": "camera", "property": "position", "keys": [[0, [0, 0, 9]], [2, [1, 0, 9]]]},
       {"target": "lamp", "property": "intensity", "keys": [[0, 10], [3, 40]]},
       {"target": "ball", "property": "color", "keys": [[0, 0.5], [3, 0.9]]},
       {"target": "ball", "property": "radius", "keys": [[3, 1], [5, 2]]}]})"));
   FrameScene frames;
-  const bool expectReused[6] = {false, true, true, true, false, false};
+  using P = FramePreparation;
+  const P expected[6] = {P::Built, P::Reused, P::Reused, P::Reused, P::Refitted, P::Refitted};
   for (uint32_t f = 0; f < 6; ++f) {
     const SceneDesc still = sceneAtFrame(scene, f);
     const SceneData& data = frames.prepare(still);
-    EXPECT_EQ(frames.reused(), expectReused[f]) << "frame " << f;
-    expectSameScene(data, flattenScene(still));
+    EXPECT_EQ(frames.preparation(), expected[f]) << "frame " << f;
+    if (expected[f] == P::Refitted) {
+      expectSameContents(data, flattenScene(still));
+      expectBvhFindsNearestHits(data);
+    } else {
+      expectSameScene(data, flattenScene(still));
+    }
   }
 }
 
-TEST(FrameScene, ObjectTransformChangeRebuilds) {
+TEST(FrameScene, ObjectTransformChangeRefitsAndMeshChangeRebuilds) {
   SceneDesc scene;
   ObjectDesc object;
   object.mesh.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)};
@@ -302,11 +341,48 @@ TEST(FrameScene, ObjectTransformChangeRebuilds) {
   frames.prepare(scene);
   EXPECT_TRUE(frames.reused());
   scene.objects[0].rotation = Vec3(0, 10, 0);
-  expectSameScene(frames.prepare(scene), flattenScene(scene));
-  EXPECT_FALSE(frames.reused());
+  expectSameContents(frames.prepare(scene), flattenScene(scene));
+  EXPECT_EQ(frames.preparation(), FramePreparation::Refitted);
   scene.objects[0].mesh.positions[2] = Vec3(0, 2, 0);  // same transform, other mesh
   expectSameScene(frames.prepare(scene), flattenScene(scene));
-  EXPECT_FALSE(frames.reused());
+  EXPECT_EQ(frames.preparation(), FramePreparation::Built);
+}
+
+// Two grids of triangles far apart, then moved into each other: refitting would leave boxes that
+// overlap almost entirely, so the SAH cost says rebuild; a small move is refitted.
+TEST(FrameScene, RefitUnlessTheTreeDegradesThenRebuild) {
+  MeshDesc grid;
+  for (int i = 0; i <= 10; ++i)
+    for (int j = 0; j <= 10; ++j) grid.positions.push_back(Vec3(float(i), float(j), 0.0f));
+  for (uint32_t i = 0; i < 10; ++i)
+    for (uint32_t j = 0; j < 10; ++j) {
+      const uint32_t a = i * 11 + j, b = a + 11;
+      grid.triangles.push_back(MeshTriangle{{a, b, a + 1}, {-1, -1, -1}, 0});
+      grid.triangles.push_back(MeshTriangle{{b, b + 1, a + 1}, {-1, -1, -1}, 0});
+    }
+  grid.materials = {MaterialDesc{}};
+  SceneDesc scene;
+  for (float x : {-60.0f, 50.0f}) {
+    ObjectDesc object;
+    object.mesh = grid;
+    object.position = Vec3(x, 0, 0);
+    scene.objects.push_back(object);
+  }
+  FrameScene frames;
+  frames.prepare(scene);
+  EXPECT_EQ(frames.preparation(), FramePreparation::Built);
+
+  scene.objects[0].position.x += 0.5f;
+  const SceneData& nudged = frames.prepare(scene);
+  EXPECT_EQ(frames.preparation(), FramePreparation::Refitted);
+  expectSameContents(nudged, flattenScene(scene));
+  expectBvhFindsNearestHits(nudged);
+
+  scene.objects[0].position = Vec3(0, 0, 0);
+  scene.objects[1].position = Vec3(5, 0, -5);
+  scene.objects[1].rotation = Vec3(0, 90, 0);
+  expectSameScene(frames.prepare(scene), flattenScene(scene));
+  EXPECT_EQ(frames.preparation(), FramePreparation::Built);
 }
 
 }  // namespace

@@ -26,6 +26,7 @@
 
 #include "core/float_error.h"
 #include "geometry/aabb.h"
+#include "geometry/primitive_bounds.h"
 
 namespace candela {
 namespace {
@@ -331,23 +332,6 @@ void placeTop(TopNode& top, uint32_t base, std::vector<BinaryBvhNode>& nodes,
   nodes[base].offset = rightBase;
   placeTop(*top.left, leftBase, nodes, chunks);
   placeTop(*top.right, rightBase, nodes, chunks);
-}
-
-Bounds3 sphereBounds(const Sphere& s) {
-  // Rounded outwards: the box must contain the sphere, not just the rounded extremes.
-  Bounds3 b(s.center - Vec3(s.radius), s.center + Vec3(s.radius));
-  for (int i = 0; i < 3; ++i) {
-    b.lo[i] = nextFloatDown(b.lo[i]);
-    b.hi[i] = nextFloatUp(b.hi[i]);
-  }
-  return b;
-}
-
-Bounds3 triangleBounds(const Vec3* positions, const Triangle& t) {
-  Bounds3 b(positions[t.v[0]]);
-  b.grow(positions[t.v[1]]);
-  b.grow(positions[t.v[2]]);
-  return b;
 }
 
 struct RootBounds {

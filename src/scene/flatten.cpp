@@ -131,9 +131,14 @@ void refreshSceneValues(SceneData& s, const SceneDesc& desc) {
   addContents(s, desc, false);
 }
 
-SceneData flattenScene(const SceneDesc& desc) {
+SceneData flattenSceneContents(const SceneDesc& desc) {
   SceneData s;
   addContents(s, desc, true);
+  return s;
+}
+
+SceneData flattenScene(const SceneDesc& desc) {
+  SceneData s = flattenSceneContents(desc);
 
   BvhBuildResult bvh = buildBvh(s.spheres.data(), uint32_t(s.spheres.size()), s.positions.data(),
                                 s.triangles.data(), uint32_t(s.triangles.size()));

@@ -7,6 +7,8 @@
 #include <type_traits>
 #include <vector>
 
+#include "geometry/bvh_refit.h"
+
 namespace candela {
 namespace {
 
@@ -34,28 +36,31 @@ uint64_t hashOf(const std::vector<T>& items) {
   return h ^ items.size();
 }
 
-}  // namespace
-
-std::string geometryKey(const SceneDesc& desc) {
+// Both keys list the same things; the structure key leaves out what a refit can follow.
+std::string sceneKey(const SceneDesc& desc, bool withTransforms) {
   KeyWriter key;
   key.add(desc.spheres.size());
   for (const SphereDesc& s : desc.spheres) {
-    key.add(s.position);
-    key.add(s.radius);
+    if (withTransforms) {
+      key.add(s.position);
+      key.add(s.radius);
+    }
   }
   key.add(desc.lights.size());
   for (const LightDesc& l : desc.lights) {
     key.add(l.type);
-    if (l.type == LightType::Sphere) {  // sphere lights are spheres of the BVH
+    if (l.type == LightType::Sphere && withTransforms) {  // sphere lights are spheres of the BVH
       key.add(l.position);
       key.add(l.radius);
     }
   }
   key.add(desc.objects.size());
   for (const ObjectDesc& o : desc.objects) {
-    key.add(o.position);
-    key.add(o.rotation);
-    key.add(o.scale);
+    if (withTransforms) {
+      key.add(o.position);
+      key.add(o.rotation);
+      key.add(o.scale);
+    }
     key.add(o.smooth);
     key.add(o.material.has_value());  // decides how many materials the object appends
     key.add(o.mesh.materials.size());
@@ -66,15 +71,36 @@ std::string geometryKey(const SceneDesc& desc) {
   return key.take();
 }
 
+}  // namespace
+
+std::string geometryKey(const SceneDesc& desc) { return sceneKey(desc, true); }
+std::string structureKey(const SceneDesc& desc) { return sceneKey(desc, false); }
+
 const SceneData& FrameScene::prepare(const SceneDesc& desc) {
   const auto start = std::chrono::steady_clock::now();
-  std::string key = geometryKey(desc);
-  reused_ = !geometryKey_.empty() && key == geometryKey_;
-  if (reused_) {
+  std::string geometry = geometryKey(desc), structure = structureKey(desc);
+  if (!geometryKey_.empty() && geometry == geometryKey_) {
     refreshSceneValues(data_, desc);
+    preparation_ = FramePreparation::Reused;
   } else {
-    data_ = flattenScene(desc);
-    geometryKey_ = std::move(key);
+    bool refitted = false;
+    if (!structureKey_.empty() && structure == structureKey_ && !data_.nodes.empty()) {
+      SceneData moved = flattenSceneContents(desc);
+      moved.nodes = std::move(data_.nodes);
+      moved.primIndices = std::move(data_.primIndices);
+      moved.bvh = data_.bvh;
+      refitBvh(moved.nodes, moved.primIndices, moved.spheres.data(),
+               uint32_t(moved.spheres.size()), moved.positions.data(), moved.triangles.data());
+      refitted = bvhSahCost(moved.nodes) <= kRefitCostLimit * builtCost_;
+      data_ = std::move(moved);
+    }
+    if (!refitted) {
+      data_ = flattenScene(desc);
+      builtCost_ = bvhSahCost(data_.nodes);
+    }
+    preparation_ = refitted ? FramePreparation::Refitted : FramePreparation::Built;
+    geometryKey_ = std::move(geometry);
+    structureKey_ = std::move(structure);
   }
   seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return data_;

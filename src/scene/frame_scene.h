@@ -5,7 +5,11 @@
 // object's mesh, transform and smoothing, and the structure of the materials), the previous
 // SceneData is kept, with its world-space meshes and its BVH, and only the camera, settings,
 // environment, materials and lights are replaced: a moving camera or a dimming light costs
-// microseconds. Otherwise the frame is flattened afresh, BVH included.
+// microseconds. When only transforms changed (objects, spheres or sphere lights moved, turned,
+// scaled or resized, with the same meshes), the vertices are transformed again and the BVH is
+// refitted in linear time, unless refitting has made the tree's SAH cost grow past
+// kRefitCostLimit times that of its last build: then, as for any other change, the frame is
+// flattened afresh with a new BVH.
 #pragma once
 
 #include <string>
@@ -14,24 +18,36 @@
 
 namespace candela {
 
+// A refitted tree is rebuilt once its SAH cost exceeds this multiple of the cost at its build.
+constexpr double kRefitCostLimit = 1.5;
+
+enum class FramePreparation { Built, Reused, Refitted };
+
 class FrameScene {
  public:
   // The renderable scene of `desc` (a still, e.g. from sceneAtFrame); valid until the next call.
   const SceneData& prepare(const SceneDesc& desc);
 
-  // About the last prepare(): whether the geometry and BVH were reused, and how long it took.
-  bool reused() const { return reused_; }
+  // About the last prepare(): what it did with the geometry and BVH, and how long it took.
+  FramePreparation preparation() const { return preparation_; }
+  bool reused() const { return preparation_ == FramePreparation::Reused; }
   double seconds() const { return seconds_; }
 
  private:
   SceneData data_;
-  std::string geometryKey_;  // the bytes that must match for reuse; empty before the first frame
-  bool reused_ = false;
+  std::string geometryKey_;   // the bytes that must match for reuse; empty before the first frame
+  std::string structureKey_;  // the bytes that must match for a refit
+  double builtCost_ = 0;      // SAH cost of the BVH when it was last built
+  FramePreparation preparation_ = FramePreparation::Built;
   double seconds_ = 0;
 };
 
 // The geometry of `desc` as bytes: equal keys mean flattenScene would make the same vertices,
 // triangles, spheres and BVH. Meshes enter as a hash of their contents.
 std::string geometryKey(const SceneDesc& desc);
+
+// The geometry of `desc` less its transforms (positions, rotations, scales, radii): equal keys
+// mean flattenScene would make the same triangles and vertex layout, only moved.
+std::string structureKey(const SceneDesc& desc);
 
 }  // namespace candela

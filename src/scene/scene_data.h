@@ -38,6 +38,10 @@ struct SceneData {
 // spheres and builds the BVH. The description must already be validated.
 SceneData flattenScene(const SceneDesc& desc);
 
+// flattenScene without the BVH (nodes and primIndices left empty): for refitting a tree built
+// for a description of the same structure.
+SceneData flattenSceneContents(const SceneDesc& desc);
+
 // Replaces the camera, settings, environment, materials, lights and spheres of `scene` (which
 // flattenScene made from a description with the same geometry as `desc`) by those of `desc`,
 // keeping mesh vertices, triangles and the BVH. scene/frame_scene.h decides when that is valid.

@@ -95,6 +95,19 @@ void checkScenes(const RenderOptions& options, const std::vector<SceneDesc>& sce
                                      std::to_string(s.camera.height));
 }
 
+// How a frame's scene was prepared, for the per-frame summary line.
+const char* preparationName(FramePreparation p) {
+  switch (p) {
+    case FramePreparation::Reused:
+      return "and BVH reused";
+    case FramePreparation::Refitted:
+      return "moved, BVH refitted";
+    case FramePreparation::Built:
+      break;
+  }
+  return "flattened, BVH built";
+}
+
 }  // namespace
 
 int runSequence(const RenderOptions& options, std::vector<SceneDesc> scenes) {
@@ -161,7 +174,7 @@ int runSequence(const RenderOptions& options, std::vector<SceneDesc> scenes) {
     if (!options.quiet) {
       std::printf("%s (scene %s in %.3f ms)\n",
                   renderSummary(path, data.settings.spp, result).c_str(),
-                  frameScene.reused() ? "and BVH reused" : "flattened, BVH built",
+                  preparationName(frameScene.preparation()),
                   frameScene.seconds() * 1e3);
       std::fflush(stdout);
     }

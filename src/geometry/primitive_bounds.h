@@ -1,0 +1,34 @@
+// Bounding boxes of the scene's primitives, shared by the BVH build and the refit.
+#pragma once
+
+#include "core/float_error.h"
+#include "geometry/aabb.h"
+#include "scene/scene_view.h"
+
+namespace candela {
+
+// Rounded outwards: the box must contain the sphere, not just the rounded extremes.
+inline Bounds3 sphereBounds(const Sphere& s) {
+  Bounds3 b(s.center - Vec3(s.radius), s.center + Vec3(s.radius));
+  for (int i = 0; i < 3; ++i) {
+    b.lo[i] = nextFloatDown(b.lo[i]);
+    b.hi[i] = nextFloatUp(b.hi[i]);
+  }
+  return b;
+}
+
+inline Bounds3 triangleBounds(const Vec3* positions, const Triangle& t) {
+  Bounds3 b(positions[t.v[0]]);
+  b.grow(positions[t.v[1]]);
+  b.grow(positions[t.v[2]]);
+  return b;
+}
+
+// Bounds of primitive p in SceneView numbering (spheres first, then triangles).
+inline Bounds3 primitiveBounds(uint32_t p, const Sphere* spheres, uint32_t sphereCount,
+                               const Vec3* positions, const Triangle* triangles) {
+  return p < sphereCount ? sphereBounds(spheres[p])
+                         : triangleBounds(positions, triangles[p - sphereCount]);
+}
+
+}  // namespace candela
