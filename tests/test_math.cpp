@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/constants.h"
+#include "core/float_error.h"
 #include "core/frame.h"
 #include "core/rng.h"
 #include "core/sampling.h"
@@ -212,6 +213,28 @@ TEST(Sampling, ConcentricDiskStaysInsideTheUnitDisk) {
       sampleUniformDisk(u1, u2, &x, &y);
       EXPECT_LE(x * x + y * y, 1.0f + 1e-6f);
     }
+}
+
+}  // namespace
+}  // namespace candela
+
+namespace candela {
+namespace {
+
+// nextFloatUp/Down step the bit pattern; they must agree with the C library everywhere.
+TEST(FloatError, NextFloatMatchesNextafter) {
+  std::vector<float> values = {0.0f, -0.0f, 1.0f, -1.0f, 1e-40f, -1e-40f, 3.4e38f, -3.4e38f,
+                               1e-3f, -1e4f, 0x1p-149f, -0x1p-149f};
+  std::mt19937 gen(3);
+  std::uniform_real_distribution<float> exponent(-40.0f, 38.0f);
+  for (int i = 0; i < 10000; ++i)
+    values.push_back((i % 2 ? -1.0f : 1.0f) * std::pow(10.0f, exponent(gen)));
+  for (float v : values) {
+    EXPECT_EQ(nextFloatUp(v), std::nextafter(v == 0.0f ? 0.0f : v, INFINITY)) << v;
+    EXPECT_EQ(nextFloatDown(v), std::nextafter(v == 0.0f ? -0.0f : v, -INFINITY)) << v;
+  }
+  EXPECT_EQ(nextFloatUp(INFINITY), INFINITY);
+  EXPECT_EQ(nextFloatDown(-INFINITY), -INFINITY);
 }
 
 }  // namespace

@@ -4,6 +4,8 @@
 #pragma once
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 
 #include "core/vec3.h"
 
@@ -14,16 +16,40 @@ constexpr float kMachineEpsilon = 0x1p-24f;  // half an ulp of 1.0f
 // Bound on the relative error of n chained float operations.
 CANDELA_HDI constexpr float gammaBound(int n) { return (n * kMachineEpsilon) / (1 - n * kMachineEpsilon); }
 
+CANDELA_HDI uint32_t floatToBits(float f) {
+#if defined(__CUDA_ARCH__)
+  return __float_as_uint(f);
+#else
+  uint32_t u;
+  std::memcpy(&u, &f, sizeof u);
+  return u;
+#endif
+}
+
+CANDELA_HDI float bitsToFloat(uint32_t u) {
+#if defined(__CUDA_ARCH__)
+  return __uint_as_float(u);
+#else
+  float f;
+  std::memcpy(&f, &u, sizeof f);
+  return f;
+#endif
+}
+
+// The next representable float above / below v, by stepping its bit pattern (IEEE floats of one
+// sign are ordered like their bits): what nextafterf does, without a library call per ray.
 CANDELA_HDI float nextFloatUp(float v) {
   if (v == INFINITY) return v;  // a comparison, not isinf: compiles alike on host and device
   if (v == -0.0f) v = 0.0f;
-  return nextafterf(v, INFINITY);
+  const uint32_t bits = floatToBits(v);
+  return bitsToFloat(v >= 0.0f ? bits + 1 : bits - 1);
 }
 
 CANDELA_HDI float nextFloatDown(float v) {
   if (v == -INFINITY) return v;
   if (v == 0.0f) v = -0.0f;
-  return nextafterf(v, -INFINITY);
+  const uint32_t bits = floatToBits(v);
+  return bitsToFloat(v > 0.0f ? bits - 1 : bits + 1);
 }
 
 // Origin for a ray leaving point p (absolute error bound `error` per axis) in direction w,

@@ -26,9 +26,6 @@ struct SurfacePoint {
   Vec3 ng;     // unit geometric normal, towards the primitive's outside
   Vec3 ns;     // unit shading normal, dot(ns, ng) >= 0
   uint32_t material;
-  // Surface parameters. Sphere: u = phi / 2pi with phi = atan2(ng.z, ng.x) in [0, 2pi),
-  // v = theta / pi with theta the angle from +y. Triangle: the barycentrics b1, b2.
-  float u, v;
 };
 
 CANDELA_HDI SurfacePoint sphereSurfaceAt(const Sphere& s, const Ray& ray, float t) {
@@ -45,10 +42,6 @@ CANDELA_HDI SurfacePoint sphereSurfaceAt(const Sphere& s, const Ray& ray, float 
   sp.ng = normalize(local);
   sp.ns = sp.ng;
   sp.material = s.material;
-  float phi = atan2f(sp.ng.z, sp.ng.x);
-  if (phi < 0.0f) phi += 2.0f * kPi;
-  sp.u = phi * (0.5f * kInvPi);
-  sp.v = acosf(fminf(1.0f, fmaxf(-1.0f, sp.ng.y))) * kInvPi;
   return sp;
 }
 
@@ -78,8 +71,6 @@ CANDELA_HDI SurfacePoint triangleSurfaceAt(const SceneView& scene, const Triangl
     }
   }
   sp.material = tri.material;
-  sp.u = b1;
-  sp.v = b2;
   return sp;
 }
 
