@@ -124,3 +124,20 @@ TEST(Sampler, IntegratesSmoothFunctionsBetterThanIndependentSampling) {
 
 }  // namespace
 }  // namespace candela
+
+namespace candela {
+namespace {
+
+// The stream computes its points bit-reversed; they must be exactly the scrambled Sobol points.
+TEST(Sampler, ReversedDomainEqualsScrambledSobol) {
+  for (uint32_t i = 0; i < 5000; ++i) {
+    const uint32_t seed = i * 2654435761u + 12345u;
+    EXPECT_EQ(reverseBits32(sobolDimension1Reversed(i)), sobolDimension1(i));
+    EXPECT_EQ(reverseBits32(laineKarrasHash(i, seed)), owenScramble(sobolDimension0(i), seed));
+    EXPECT_EQ(reverseBits32(laineKarrasHash(sobolDimension1Reversed(i), seed)),
+              owenScramble(sobolDimension1(i), seed));
+  }
+}
+
+}  // namespace
+}  // namespace candela

@@ -43,16 +43,30 @@ CANDELA_HDI uint32_t sobolDimension1(uint32_t index) {
   return result;
 }
 
-// Owen scrambling by hashing (Laine and Karras 2011, as in pbrt-v4's FastOwenScrambler): each
-// bit is flipped depending on the bits above it, which keeps the stratification.
-CANDELA_HDI uint32_t owenScramble(uint32_t v, uint32_t seed) {
-  v = reverseBits32(v);
+// The second Sobol dimension computed bit-reversed (reverseBits32(sobolDimension1(i))): the
+// direction numbers reversed start at 1 and follow r_k = r_{k-1} ^ (r_{k-1} << 1).
+CANDELA_HDI uint32_t sobolDimension1Reversed(uint32_t index) {
+  uint32_t result = 0, r = 1u;
+  for (; index != 0; index >>= 1, r ^= r << 1)
+    if (index & 1u) result ^= r;
+  return result;
+}
+
+// The Laine–Karras hash on a bit-reversed value: each bit is flipped depending only on the bits
+// below it, i.e. on the more significant bits of the unreversed value.
+CANDELA_HDI uint32_t laineKarrasHash(uint32_t v, uint32_t seed) {
   v ^= v * 0x3d20adeau;
   v += seed;
   v *= (seed >> 16) | 1u;
   v ^= v * 0x05526c56u;
   v ^= v * 0x53a22864u;
-  return reverseBits32(v);
+  return v;
+}
+
+// Owen scrambling by hashing (Laine and Karras 2011, as in pbrt-v4's FastOwenScrambler): each
+// bit is flipped depending on the bits above it, which keeps the stratification.
+CANDELA_HDI uint32_t owenScramble(uint32_t v, uint32_t seed) {
+  return reverseBits32(laineKarrasHash(reverseBits32(v), seed));
 }
 
 // Element i of a pseudo-random permutation of [0, n) chosen by `seed` (Kensler 2013,
@@ -100,18 +114,22 @@ class SampleStream {
         sampleIndex_(sampleIndex),
         spp_(spp > 0 ? spp : 1) {}
 
+  // owenScramble(sobolDimension0(index), s) and owenScramble(sobolDimension1(index), s),
+  // computed in the bit-reversed domain, where dimension 0 is the index itself: two bit
+  // reversals per 2D sample instead of six, the same bits.
   CANDELA_HDI float next1D() {
     const uint64_t h = dimensionHash();
     const uint32_t index = permutationElement(sampleIndex_, spp_, uint32_t(h));
-    return bitsToUnitFloat(owenScramble(sobolDimension0(index), uint32_t(h >> 32)));
+    return bitsToUnitFloat(reverseBits32(laineKarrasHash(index, uint32_t(h >> 32))));
   }
 
   CANDELA_HDI void next2D(float* u, float* v) {
     const uint64_t h = dimensionHash();
     const uint32_t index = permutationElement(sampleIndex_, spp_, uint32_t(h));
     const uint64_t scramble = mix64(h);
-    *u = bitsToUnitFloat(owenScramble(sobolDimension0(index), uint32_t(scramble)));
-    *v = bitsToUnitFloat(owenScramble(sobolDimension1(index), uint32_t(scramble >> 32)));
+    *u = bitsToUnitFloat(reverseBits32(laineKarrasHash(index, uint32_t(scramble))));
+    *v = bitsToUnitFloat(
+        reverseBits32(laineKarrasHash(sobolDimension1Reversed(index), uint32_t(scramble >> 32))));
   }
 
  private:
