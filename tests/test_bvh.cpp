@@ -12,9 +12,12 @@
 #include "geometry/aabb.h"
 #include "geometry/bvh_build.h"
 #include "geometry/bvh_traverse.h"
+#include "test_random.h"
 
 namespace candela {
 namespace {
+
+using test::randomUnitVector;
 
 constexpr uint32_t kNone = 0xffffffffu;
 
@@ -61,14 +64,6 @@ struct TestScene {
     return v;
   }
 };
-
-Vec3 randomUnitVector(std::mt19937& gen) {
-  std::normal_distribution<float> normal;
-  for (;;) {
-    const Vec3 v(normal(gen), normal(gen), normal(gen));
-    if (lengthSquared(v) > 1e-6f) return normalize(v);
-  }
-}
 
 float logUniform(std::mt19937& gen, float lo, float hi) {
   std::uniform_real_distribution<float> u(std::log(lo), std::log(hi));

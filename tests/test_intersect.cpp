@@ -17,9 +17,12 @@
 #include "geometry/sphere_intersect.h"
 #include "geometry/surface.h"
 #include "geometry/triangle_intersect.h"
+#include "test_random.h"
 
 namespace candela {
 namespace {
+
+using test::randomUnitVector;
 
 Ray makeRay(const Vec3& origin, const Vec3& direction, float tMax = kInfinity) {
   Ray r;
@@ -76,14 +79,6 @@ OnePrimitive oneTriangle(const Vec3& p0, const Vec3& p1, const Vec3& p2) {
   s.positions = {p0, p1, p2};
   s.triangles.push_back(Triangle{{0, 1, 2}, 7});
   return s;
-}
-
-Vec3 randomUnitVector(std::mt19937& gen) {
-  std::normal_distribution<float> normal;
-  for (;;) {
-    const Vec3 v(normal(gen), normal(gen), normal(gen));
-    if (lengthSquared(v) > 1e-6f) return normalize(v);
-  }
 }
 
 // A random unit vector whose angle with +axis or -axis (chosen at random) has cosine >= minCos.

@@ -16,9 +16,12 @@
 #include "core/rng.h"
 #include "core/sampling.h"
 #include "core/vec3.h"
+#include "test_random.h"
 
 namespace candela {
 namespace {
+
+using test::randomUnitVector;
 
 constexpr int kDraws = 100000;
 constexpr int kBins = 64;
@@ -62,14 +65,6 @@ void expectNearVec(const Vec3& a, const Vec3& b, float tol) {
   EXPECT_NEAR(a.x, b.x, tol);
   EXPECT_NEAR(a.y, b.y, tol);
   EXPECT_NEAR(a.z, b.z, tol);
-}
-
-Vec3 randomUnitVector(std::mt19937& gen) {
-  std::normal_distribution<float> normal;
-  for (;;) {
-    const Vec3 v(normal(gen), normal(gen), normal(gen));
-    if (lengthSquared(v) > 1e-6f) return normalize(v);
-  }
 }
 
 TEST(VecMath, DotCrossNormalize) {

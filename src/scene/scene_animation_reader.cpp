@@ -7,6 +7,7 @@
 
 #include "scene/animation.h"
 #include "scene/did_you_mean.h"
+#include "scene/scene_entity_reader.h"
 
 namespace candela {
 namespace {
@@ -109,25 +110,6 @@ void readProperty(const JsonValue& value, const std::string& targetName, AnimTra
              list);
 }
 
-// A scale key: a non-zero number or three non-zero numbers, as a static "scale".
-Vec3 readScaleValue(const JsonValue& value) {
-  const std::string expectation = "a non-zero number";
-  if (value.json().is_number()) {
-    const float s = value.number(expectation);
-    if (s == 0) value.failExpected(expectation);
-    return Vec3(s);
-  }
-  if (!value.json().is_array() || value.json().size() != 3)
-    value.failExpected("a non-zero number or an array of 3 non-zero numbers");
-  const std::vector<JsonValue> e = value.elements();
-  Vec3 scale;
-  for (int i = 0; i < 3; ++i) {
-    scale[i] = e[i].number(expectation);
-    if (scale[i] == 0) e[i].failExpected(expectation);
-  }
-  return scale;
-}
-
 Vec3 readValue(const JsonValue& value, AnimProperty property) {
   switch (property) {
     case AnimProperty::Position:
@@ -145,7 +127,7 @@ Vec3 readValue(const JsonValue& value, AnimProperty property) {
     case AnimProperty::FocusDistance:
     case AnimProperty::Radius: return Vec3(value.positiveNumber());
     case AnimProperty::Color: return value.colour();
-    case AnimProperty::Scale: return readScaleValue(value);
+    case AnimProperty::Scale: return readScale(value);
   }
   return Vec3(0.0f);
 }

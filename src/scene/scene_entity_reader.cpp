@@ -17,7 +17,8 @@ std::string readId(JsonObject& fields) {
   return text;
 }
 
-// A number or [sx, sy, sz]; a zero factor would flatten the mesh, a negative one mirrors it.
+}  // namespace
+
 Vec3 readScale(const JsonValue& value) {
   const std::string expectation = "a non-zero number";
   if (value.json().is_number()) {
@@ -35,8 +36,6 @@ Vec3 readScale(const JsonValue& value) {
   }
   return scale;
 }
-
-}  // namespace
 
 SphereDesc readSphere(const JsonValue& value, const MaterialLibrary& library) {
   JsonObject fields(value, {"id", "position", "center", "radius", "material", "color", "ior"});

@@ -18,4 +18,8 @@ ObjectDesc readObject(const JsonValue& value, const MaterialLibrary& library,
                       const std::string& baseDir);
 LightDesc readLight(const JsonValue& value);
 
+// An object's scale: a number or [sx, sy, sz], every factor non-zero (zero would flatten the
+// mesh; a negative factor mirrors it). Also read by animation tracks on "scale".
+Vec3 readScale(const JsonValue& value);
+
 }  // namespace candela
