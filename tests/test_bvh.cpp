@@ -13,6 +13,7 @@
 #include "geometry/bvh_build.h"
 #include "geometry/bvh_traverse.h"
 #include "test_random.h"
+#include "test_geometry_view.h"
 
 namespace candela {
 namespace {
@@ -51,13 +52,8 @@ struct TestScene {
     return b;
   }
   SceneView view() const {
-    SceneView v;
-    v.spheres = spheres.data();
-    v.sphereCount = static_cast<uint32_t>(spheres.size());
-    v.positions = positions.data();
-    v.positionCount = static_cast<uint32_t>(positions.size());
-    v.triangles = triangles.data();
-    v.triangleCount = static_cast<uint32_t>(triangles.size());
+    static const std::vector<Vec3> kNoNormals;
+    SceneView v = test::geometryView(spheres, positions, kNoNormals, triangles);
     v.nodes = bvh.wideNodes.data();
     v.nodeCount = static_cast<uint32_t>(bvh.wideNodes.size());
     v.primIndices = bvh.primIndices.data();

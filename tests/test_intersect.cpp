@@ -18,6 +18,7 @@
 #include "geometry/surface.h"
 #include "geometry/triangle_intersect.h"
 #include "test_random.h"
+#include "test_geometry_view.h"
 
 namespace candela {
 namespace {
@@ -60,18 +61,7 @@ struct OnePrimitive {
   std::vector<Vec3> positions, normals;
   std::vector<Triangle> triangles;
 
-  SceneView view() const {
-    SceneView v;
-    v.spheres = spheres.data();
-    v.sphereCount = static_cast<uint32_t>(spheres.size());
-    v.positions = positions.data();
-    v.positionCount = static_cast<uint32_t>(positions.size());
-    v.normals = normals.data();
-    v.normalCount = static_cast<uint32_t>(normals.size());
-    v.triangles = triangles.data();
-    v.triangleCount = static_cast<uint32_t>(triangles.size());
-    return v;
-  }
+  SceneView view() const { return test::geometryView(spheres, positions, normals, triangles); }
 };
 
 OnePrimitive oneTriangle(const Vec3& p0, const Vec3& p1, const Vec3& p2) {
