@@ -25,8 +25,13 @@ namespace candela {
 CANDELA_HDI bool intersectSphere(const Sphere& s, const Ray& r, float tMax, float* tHit) {
   const Vec3 oc = r.origin - s.center;
   const Vec3& d = r.direction;
-  const float a = lengthSquared(d);
   const float halfB = dot(oc, d);
+  const float c = lengthSquared(oc) - s.radius * s.radius;
+  // An origin outside the sphere moving away from it: both roots are negative (their product
+  // c / a is positive, their sum -2 halfB / a negative). Most rays meet most of a room's wall
+  // spheres this way, so this test spares them the square roots and divisions below.
+  if (c > 0.0f && halfB > 0.0f) return false;
+  const float a = lengthSquared(d);
 
   // Discriminant / 4 = halfB^2 - a c = a (r^2 - |perp|^2), perp = oc minus its projection on d.
   // The miss test compares lengths rather than the product's sign, which underflow could lose.
@@ -35,7 +40,6 @@ CANDELA_HDI bool intersectSphere(const Sphere& s, const Ray& r, float tMax, floa
   if (perpLength > s.radius) return false;
   const float discriminant = a * (s.radius - perpLength) * (s.radius + perpLength);
 
-  const float c = lengthSquared(oc) - s.radius * s.radius;
   const float q = -(halfB + copysignf(sqrtf(discriminant), halfB));
   // q == 0 only for a tangent ray starting on the sphere: both roots are 0 and the NaN from c / q
   // below fails every comparison, which reports the correct miss.
