@@ -12,6 +12,7 @@
 #include "geometry/aabb.h"
 #include "geometry/bvh_build.h"
 #include "geometry/bvh_traverse.h"
+#include "geometry/primitive_bounds.h"
 #include "test_random.h"
 #include "test_geometry_view.h"
 
@@ -293,6 +294,51 @@ TEST(Bvh, CoincidentCentroidsStillSplitIntoSmallLeaves) {
   expectValidBvh(s);
   // Identical triangles tie exactly, so only the distance is compared.
   expectMatchesBruteForce(s, 2000, 9, /*primitivesMayTie=*/true);
+}
+
+TEST(Bvh, RoomWallsAreSetApartFromTheSmallContents) {
+  // The default scene's shape: six huge wall spheres around a small triangle mesh. Centroid
+  // planes alone spread the mesh over several room-sized boxes; the size split must give the
+  // mesh and the small spheres one subtree of their own, whose box is theirs alone.
+  TestScene s;
+  const float wall = 1000.0f, radius = 940.0f;
+  for (int axis = 0; axis < 3; ++axis) {
+    for (float side : {-1.0f, 1.0f}) {
+      Vec3 c(0.0f);
+      c[axis] = side * wall;
+      s.spheres.push_back(Sphere{c, radius, 0});
+    }
+  }
+  s.spheres.push_back(Sphere{Vec3(-10, 0, -25), 10.0f, 0});
+  std::mt19937 gen(21);
+  std::uniform_real_distribution<float> u(-5.0f, 5.0f);
+  Bounds3 contents = sphereBounds(s.spheres.back());
+  for (int i = 0; i < 400; ++i) {
+    const Vec3 a(10 + u(gen), u(gen), u(gen));
+    const Vec3 b = a + Vec3(0.3f * u(gen), 0.3f * u(gen), 0.3f * u(gen));
+    const Vec3 c = a + Vec3(0.3f * u(gen), 0.3f * u(gen), 0.3f * u(gen));
+    s.addTriangle(a, b, c);
+    for (const Vec3& p : {a, b, c}) contents.grow(p);
+  }
+  s.build();
+  expectValidBvh(s);
+  expectMatchesBruteForce(s, 3000, 22);
+
+  // Count the primitives below every binary node; one node must hold exactly the 401 small
+  // primitives, within the contents' box.
+  const std::vector<BinaryBvhNode>& nodes = s.bvh.nodes;
+  std::vector<uint32_t> below(nodes.size(), 0);
+  for (size_t i = nodes.size(); i-- > 0;) {
+    below[i] = nodes[i].primCount > 0 ? nodes[i].primCount
+                                      : below[i + 1] + below[nodes[i].offset];
+  }
+  bool found = false;
+  for (size_t i = 0; i < nodes.size(); ++i) {
+    if (below[i] != 401) continue;
+    found = true;
+    EXPECT_TRUE(contents.contains(Bounds3(nodes[i].boundsMin, nodes[i].boundsMax)));
+  }
+  EXPECT_TRUE(found) << "the walls are mixed into the small primitives' subtrees";
 }
 
 TEST(Bvh, PathologicalScaleSpreadKeepsTheDepthBounded) {

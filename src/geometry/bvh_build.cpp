@@ -3,9 +3,11 @@
 // Structure of the build:
 // 1. One parallel pass computes every primitive's bounds into a BuildPrim array, plus the root's
 //    bounds and centroid bounds.
-// 2. Nodes are split recursively. Each split bins the centroids along all three axes, picks the
-//    cheapest SAH plane and partitions the BuildPrim range in place; the bins give the children's
-//    bounds and the partition loop their centroid bounds, so no node needs an extra pass.
+// 2. Nodes are split recursively. Each split bins the centroids along all three axes (four lanes
+//    at once), picks the cheapest SAH plane, or the split of large from small primitives when
+//    that is much cheaper, and partitions the BuildPrim range in place; the bins give the
+//    children's bounds and the partition loop their centroid bounds, so no node needs an extra
+//    pass.
 // 3. Large subtrees (the "top" of the tree) are split in parallel with oneTBB; below
 //    kParallelThreshold primitives a subtree is built serially, directly in depth-first order,
 //    into its own node array ("chunk"). A final pass places every chunk at its depth-first
@@ -22,8 +24,10 @@
 #include <algorithm>
 #include <chrono>
 #include <memory>
+#include <new>
 #include <utility>
 
+#include "core/float4.h"
 #include "core/float_error.h"
 #include "geometry/aabb.h"
 #include "geometry/primitive_bounds.h"
@@ -46,16 +50,59 @@ constexpr uint32_t kSahDepthLimit = 32;
 // the 100k-triangle dragon costs the same instructions to 0.1% (callgrind).
 constexpr uint32_t kAllAxesBelow = 1024;
 // Subtrees with at least this many primitives are split in parallel; smaller ones are built
-// serially into one chunk.
-constexpr uint32_t kParallelThreshold = 1u << 15;
+// serially into one chunk. Small enough that even a 4k-triangle scene keeps two cores busy and
+// chunks balance; a task costs microseconds, a 4k-primitive chunk about half a millisecond.
+constexpr uint32_t kParallelThreshold = 1u << 12;
 
-// A primitive while building: its bounds and its SceneView primitive index.
-struct BuildPrim {
-  Bounds3 bounds;
-  uint32_t index;
+// A box as two Float4s; lane 3 is unused (it may carry anything, see BuildPrim).
+struct Box4 {
+  Float4 lo{kInfinity}, hi{-kInfinity};
 
-  Vec3 centroid() const { return bounds.centroid(); }
+  void grow(Float4 p) {
+    lo = min(lo, p);
+    hi = max(hi, p);
+  }
+  void grow(Float4 pLo, Float4 pHi) {
+    lo = min(lo, pLo);
+    hi = max(hi, pHi);
+  }
+  void grow(const Box4& b) { grow(b.lo, b.hi); }
+  float extent(int axis) const { return hi[axis] - lo[axis]; }
+  // Half the surface area (the SAH only compares areas); 0 for an empty box.
+  float halfArea() const {
+    const Float4 d = max(hi - lo, Float4(0.0f));
+    const float x = d.x(), y = d.y(), z = d.z();
+    return x * y + y * z + z * x;
+  }
+  int widestAxis() const {
+    const Float4 d = hi - lo;
+    const float x = d.x(), y = d.y(), z = d.z();
+    return x >= y && x >= z ? 0 : (y >= z ? 1 : 2);
+  }
+  float widestExtent() const { return extent(widestAxis()); }
+  Bounds3 bounds() const {
+    return Bounds3(Vec3(lo.x(), lo.y(), lo.z()), Vec3(hi.x(), hi.y(), hi.z()));
+  }
 };
+
+// A primitive while building: its bounds, laid out as two 16-byte rows so that the binning loop
+// reads each with one load. The index rides in lane 3 of the lower row, where box arithmetic
+// ignores it.
+struct alignas(16) BuildPrim {
+  float lo[3];
+  uint32_t index;
+  float hi[3];
+  float pad;
+
+  BuildPrim() = default;
+  BuildPrim(const Bounds3& b, uint32_t index_)
+      : lo{b.lo.x, b.lo.y, b.lo.z}, index(index_), hi{b.hi.x, b.hi.y, b.hi.z}, pad(0.0f) {}
+  Float4 lower() const { return Float4::load(lo); }
+  Float4 upper() const { return Float4::load(hi); }
+  // Twice the centroid: binning only needs centroids up to a common scale.
+  Float4 centroid2() const { return lower() + upper(); }
+};
+static_assert(sizeof(BuildPrim) == 32, "BuildPrim is two 16-byte rows");
 
 struct BuildStats {
   uint32_t leafCount = 0;
@@ -72,35 +119,65 @@ struct BuildStats {
 };
 
 // A node range: primitives [begin, end) of the BuildPrim array, their bounds and the bounds of
-// their centroids.
+// their (doubled) centroids.
 struct NodeRange {
   uint32_t begin, end;
-  Bounds3 bounds, centroidBounds;
+  Box4 bounds, centroids;
 
   uint32_t count() const { return end - begin; }
 };
 
-// Maps centroid coordinates to `bins` bins along one axis. Built from the node's centroid bounds,
-// so the minimum falls in bin 0 and the maximum in the last bin; a flat axis puts everything in
-// bin 0.
-struct BinMapping {
-  float origin = 0, scale = 0;
-  int last = 0;
+// Maps doubled centroids to `bins` bins along all three axes at once. Built from the node's
+// centroid bounds, so the minimum falls in bin 0 and the maximum in the last bin; a flat axis
+// puts everything in bin 0, and so does a NaN centroid. Binning and partitioning both call
+// binsOf, so a primitive always lands on the side its bin was counted on.
+class BinMapping {
+ public:
+  BinMapping(const Box4& centroids, int bins) : last_(float(bins - 1)) {
+    for (int axis = 0; axis < 3; ++axis) {
+      origin_[axis] = centroids.lo[axis];
+      const float s = static_cast<float>(bins) / centroids.extent(axis);
+      scale_[axis] = centroids.extent(axis) > 0.0f && std::isfinite(s) ? s : 0.0f;
+    }
+    originV_ = Float4::load(origin_);
+    scaleV_ = Float4::load(scale_);
+  }
+  // The bins of a doubled centroid along x, y and z (lane 3 is meaningless).
+  void binsOf(Float4 centroid2, int32_t bin[4]) const {
+    // max(NaN, 0) is 0 (SSE's rule, kept by Float4), so NaN centroids land in bin 0.
+    const Float4 f = min(max((centroid2 - originV_) * scaleV_, Float4(0.0f)), Float4(last_));
+    truncateToInt(f, bin);
+  }
+  // The same as binsOf for one axis, with the same operations in the same order, so the two
+  // agree to the bit.
+  int binOf(int axis, float centroid2) const {
+    float f = (centroid2 - origin_[axis]) * scale_[axis];
+    f = f > 0.0f ? f : 0.0f;
+    f = f < last_ ? f : last_;
+    return static_cast<int>(f);
+  }
 
-  BinMapping(float lo, float hi, int bins) : origin(lo), last(bins - 1) {
-    const float s = static_cast<float>(bins) / (hi - lo);
-    if (hi > lo && std::isfinite(s)) scale = s;
-  }
-  int operator()(float c) const {
-    const float f = (c - origin) * scale;
-    // Written so that a NaN centroid lands in bin 0 instead of reaching the int conversion.
-    return f >= static_cast<float>(last) ? last : (f > 0.0f ? static_cast<int>(f) : 0);
-  }
+ private:
+  float origin_[4] = {}, scale_[4] = {};
+  Float4 originV_, scaleV_;
+  float last_;
 };
 
-struct Bin {
-  Bounds3 bounds;
-  uint32_t count = 0;
+// Whether a primitive is large for a node: wider than kLargeFraction of the node along some
+// axis.
+constexpr float kLargeFraction = 0.25f;
+// The size split must beat the best plane by this factor. Greedy SAH takes any local gain, and
+// on Sponza, whose big floor and wall quads it would peel off node after node, that costs 3% in
+// the whole tree's SAH; a room's walls gain far more than 2x (the default room: -13% SAH, 15-20%
+// faster renders).
+constexpr float kSizeSplitAdvantage = 0.5f;
+class LargeTest {
+ public:
+  explicit LargeTest(const Box4& node) : limit_(Float4(kLargeFraction) * (node.hi - node.lo)) {}
+  bool operator()(Float4 lo, Float4 hi) const { return anyGreaterXyz(hi - lo, limit_); }
+
+ private:
+  Float4 limit_;
 };
 
 // The outcome of splitting a node: the two child ranges and the split axis.
@@ -109,10 +186,11 @@ struct Split {
   int axis;
 };
 
-BinaryBvhNode makeLeaf(const Bounds3& bounds, uint32_t first, uint32_t count) {
+BinaryBvhNode makeLeaf(const Box4& bounds, uint32_t first, uint32_t count) {
   BinaryBvhNode n;
-  n.boundsMin = bounds.lo;
-  n.boundsMax = bounds.hi;
+  const Bounds3 b = bounds.bounds();
+  n.boundsMin = b.lo;
+  n.boundsMax = b.hi;
   n.offset = first;
   n.primCount = static_cast<uint16_t>(count);
   n.axis = 0;
@@ -120,10 +198,11 @@ BinaryBvhNode makeLeaf(const Bounds3& bounds, uint32_t first, uint32_t count) {
   return n;
 }
 
-BinaryBvhNode makeInterior(const Bounds3& bounds, int axis) {
+BinaryBvhNode makeInterior(const Box4& bounds, int axis) {
   BinaryBvhNode n;
-  n.boundsMin = bounds.lo;
-  n.boundsMax = bounds.hi;
+  const Bounds3 b = bounds.bounds();
+  n.boundsMin = b.lo;
+  n.boundsMax = b.hi;
   n.offset = 0;  // set once the second child's position is known
   n.primCount = 0;
   n.axis = static_cast<uint8_t>(axis);
@@ -141,8 +220,7 @@ class Builder {
   bool split(const NodeRange& range, uint32_t depth, Split* out) {
     const uint32_t count = range.count();
     if (count <= 1) return false;
-    const Vec3 spread = range.centroidBounds.extent();
-    if (depth >= kSahDepthLimit || maxComponent(spread) <= 0.0f) {
+    if (depth >= kSahDepthLimit || range.centroids.widestExtent() <= 0.0f) {
       if (count <= kBvhMaxLeafSize) return false;
       medianSplit(range, out);
       return true;
@@ -175,32 +253,47 @@ class Builder {
   // false when the node is cheaper as a leaf (only allowed for at most kBvhMaxLeafSize
   // primitives) or when no plane separates the centroids.
   bool sahSplit(const NodeRange& range, Split* out) {
-    const Bounds3& cb = range.centroidBounds;
-    const int binCount = static_cast<int>(std::min<uint32_t>(kMaxBins, range.count()));
-    const BinMapping maps[3] = {BinMapping(cb.lo.x, cb.hi.x, binCount),
-                                BinMapping(cb.lo.y, cb.hi.y, binCount),
-                                BinMapping(cb.lo.z, cb.hi.z, binCount)};
-    const bool allAxes = range.count() < kAllAxesBelow;
-    const int widest = maxDimension(cb.extent());
+    const uint32_t count = range.count();
+    const int binCount = static_cast<int>(std::min<uint32_t>(kMaxBins, count));
+    const BinMapping map(range.centroids, binCount);
+    const bool allAxes = count < kAllAxesBelow;
+    const int widest = range.centroids.widestAxis();
     const int firstAxis = allAxes ? 0 : widest, lastAxis = allAxes ? 2 : widest;
-    Bin bins[3][kMaxBins];
-    if (allAxes) {
-      for (uint32_t i = range.begin; i < range.end; ++i) {
-        const BuildPrim& p = prims_[i];
-        const Vec3 c = p.centroid();
-        for (int axis = 0; axis < 3; ++axis) {
-          Bin& bin = bins[axis][maps[axis](c[axis])];
-          ++bin.count;
-          bin.bounds.grow(p.bounds);
-        }
+
+    // Raw storage: only the bins in use are initialised (most nodes are small).
+    union BinStorage {
+      BinStorage() {}
+      Box4 box;
+    } binStorage[3][kMaxBins];
+    uint32_t binSizes[3][kMaxBins];
+    for (int axis = firstAxis; axis <= lastAxis; ++axis) {
+      for (int k = 0; k < binCount; ++k) {
+        new (&binStorage[axis][k].box) Box4();
+        binSizes[axis][k] = 0;
       }
-    } else {
-      const BinMapping& map = maps[widest];
-      for (uint32_t i = range.begin; i < range.end; ++i) {
-        const BuildPrim& p = prims_[i];
-        Bin& bin = bins[widest][map(p.centroid()[widest])];
-        ++bin.count;
-        bin.bounds.grow(p.bounds);
+    }
+    const auto bins = [&](int axis, int k) -> Box4& { return binStorage[axis][k].box; };
+    // Besides the planes, one candidate that no plane can express: the primitives spanning a
+    // large part of the node (a room's wall spheres, a ground quad) on one side, the rest on the
+    // other. Centroid planes mix such primitives with the small ones, so every child box grows
+    // to the room's size and rays visit all of them; set apart, the small ones get a tight box.
+    const LargeTest isLarge(range.bounds);
+    Box4 large, small;
+    uint32_t largeCount = 0;
+    int32_t bin[4];
+    for (uint32_t i = range.begin; i < range.end; ++i) {
+      const BuildPrim& p = prims_[i];
+      const Float4 lo = p.lower(), hi = p.upper();
+      map.binsOf(lo + hi, bin);
+      for (int axis = firstAxis; axis <= lastAxis; ++axis) {
+        bins(axis, bin[axis]).grow(lo, hi);
+        ++binSizes[axis][bin[axis]];
+      }
+      if (isLarge(lo, hi)) {
+        large.grow(lo, hi);
+        ++largeCount;
+      } else {
+        small.grow(lo, hi);
       }
     }
 
@@ -210,20 +303,20 @@ class Builder {
     int bestAxis = -1, bestPlane = -1;
     for (int axis = firstAxis; axis <= lastAxis; ++axis) {
       float rightCost[kMaxBins - 1];
-      Bounds3 rightBounds;
+      Box4 rightBounds;
       uint32_t rightCount = 0;
       for (int k = binCount - 1; k >= 1; --k) {
-        rightBounds.grow(bins[axis][k].bounds);
-        rightCount += bins[axis][k].count;
-        rightCost[k - 1] = rightCount * rightBounds.surfaceArea();
+        rightBounds.grow(bins(axis, k));
+        rightCount += binSizes[axis][k];
+        rightCost[k - 1] = static_cast<float>(rightCount) * rightBounds.halfArea();
       }
-      Bounds3 leftBounds;
+      Box4 leftBounds;
       uint32_t leftCount = 0;
       for (int k = 0; k < binCount - 1; ++k) {
-        leftBounds.grow(bins[axis][k].bounds);
-        leftCount += bins[axis][k].count;
-        if (leftCount == 0 || leftCount == range.count()) continue;
-        const float cost = leftCount * leftBounds.surfaceArea() + rightCost[k];
+        leftBounds.grow(bins(axis, k));
+        leftCount += binSizes[axis][k];
+        if (leftCount == 0 || leftCount == count) continue;
+        const float cost = static_cast<float>(leftCount) * leftBounds.halfArea() + rightCost[k];
         if (cost < bestCost) {
           bestCost = cost;
           bestAxis = axis;
@@ -231,45 +324,70 @@ class Builder {
         }
       }
     }
-    if (bestAxis < 0) return false;
+    bool splitBySize = false;
+    if (largeCount > 0 && largeCount < count) {
+      const float cost = static_cast<float>(largeCount) * large.halfArea() +
+                         static_cast<float>(count - largeCount) * small.halfArea();
+      if (cost < kSizeSplitAdvantage * bestCost) {
+        bestCost = cost;
+        splitBySize = true;
+      }
+    }
+    if (bestAxis < 0 && !splitBySize) return false;
 
-    const float area = range.bounds.surfaceArea();
+    const float area = range.bounds.halfArea();
     const float splitCost = kTraversalCost + (area > 0.0f ? bestCost / area : 0.0f);
-    const uint32_t count = range.count();
     if (count <= kBvhMaxLeafSize && static_cast<float>(count) <= splitCost) return false;
 
-    // Partition in place; the loop also gathers each side's centroid bounds.
-    const BinMapping& map = maps[bestAxis];
-    Bounds3 leftCentroids, rightCentroids;
+    if (splitBySize) {
+      partition(
+          range, [&](const BuildPrim& p) { return isLarge(p.lower(), p.upper()); }, out);
+      out->left.bounds = large;
+      out->right.bounds = small;
+      out->axis = 0;
+      return true;
+    }
+    partition(
+        range,
+        [&](const BuildPrim& p) {
+          return map.binOf(bestAxis, p.lo[bestAxis] + p.hi[bestAxis]) <= bestPlane;
+        },
+        out);
+    Box4 leftBounds, rightBounds;
+    for (int k = 0; k < binCount; ++k) {
+      (k <= bestPlane ? leftBounds : rightBounds).grow(bins(bestAxis, k));
+    }
+    out->left.bounds = leftBounds;
+    out->right.bounds = rightBounds;
+    out->axis = bestAxis;
+    return true;
+  }
+
+  // Partitions `range` in place, primitives for which goesLeft holds first, and sets out's
+  // ranges and centroid bounds (not their bounds).
+  template <typename GoesLeft>
+  void partition(const NodeRange& range, const GoesLeft& goesLeft, Split* out) {
+    Box4 leftCentroids, rightCentroids;
     uint32_t i = range.begin, j = range.end;
     for (;;) {
-      while (i < j && map(prims_[i].centroid()[bestAxis]) <= bestPlane)
-        leftCentroids.grow(prims_[i++].centroid());
-      while (i < j && map(prims_[j - 1].centroid()[bestAxis]) > bestPlane)
-        rightCentroids.grow(prims_[--j].centroid());
+      for (; i < j && goesLeft(prims_[i]); ++i) leftCentroids.grow(prims_[i].centroid2());
+      for (; i < j && !goesLeft(prims_[j - 1]); --j) rightCentroids.grow(prims_[j - 1].centroid2());
       if (i >= j) break;
       std::swap(prims_[i], prims_[j - 1]);
     }
-
-    Bounds3 leftBounds, rightBounds;
-    for (int k = 0; k < binCount; ++k) {
-      (k <= bestPlane ? leftBounds : rightBounds).grow(bins[bestAxis][k].bounds);
-    }
-    out->axis = bestAxis;
-    out->left = {range.begin, i, leftBounds, leftCentroids};
-    out->right = {i, range.end, rightBounds, rightCentroids};
-    return true;
+    out->left = {range.begin, i, Box4(), leftCentroids};
+    out->right = {i, range.end, Box4(), rightCentroids};
   }
 
   // Object median along the widest centroid axis; an arbitrary halving when all centroids
   // coincide. Always yields two non-empty halves for count >= 2.
   void medianSplit(const NodeRange& range, Split* out) {
-    const int axis = maxDimension(range.centroidBounds.extent());
+    const int axis = range.centroids.widestAxis();
     const uint32_t mid = range.begin + range.count() / 2;
-    if (range.centroidBounds.extent()[axis] > 0.0f) {
+    if (range.centroids.extent(axis) > 0.0f) {
       std::nth_element(prims_.begin() + range.begin, prims_.begin() + mid,
                        prims_.begin() + range.end, [axis](const BuildPrim& a, const BuildPrim& b) {
-                         return a.centroid()[axis] < b.centroid()[axis];
+                         return a.lo[axis] + a.hi[axis] < b.lo[axis] + b.hi[axis];
                        });
     }
     out->axis = axis;
@@ -278,10 +396,11 @@ class Builder {
   }
 
   NodeRange gather(uint32_t begin, uint32_t end) const {
-    NodeRange r{begin, end, Bounds3(), Bounds3()};
+    NodeRange r{begin, end, Box4(), Box4()};
     for (uint32_t i = begin; i < end; ++i) {
-      r.bounds.grow(prims_[i].bounds);
-      r.centroidBounds.grow(prims_[i].centroid());
+      const Float4 lo = prims_[i].lower(), hi = prims_[i].upper();
+      r.bounds.grow(lo, hi);
+      r.centroids.grow(lo + hi);
     }
     return r;
   }
@@ -335,7 +454,7 @@ void placeTop(TopNode& top, uint32_t base, std::vector<BinaryBvhNode>& nodes,
 }
 
 struct RootBounds {
-  Bounds3 bounds, centroids;
+  Box4 bounds, centroids;
 };
 
 }  // namespace
@@ -355,9 +474,9 @@ BvhBuildResult buildBvh(const Sphere* spheres, uint32_t sphereCount, const Vec3*
             const Bounds3 b = p < sphereCount
                                   ? sphereBounds(spheres[p])
                                   : triangleBounds(positions, triangles[p - sphereCount]);
-            prims[p] = {b, p};
-            acc.bounds.grow(b);
-            acc.centroids.grow(b.centroid());
+            prims[p] = BuildPrim(b, p);
+            acc.bounds.grow(prims[p].lower(), prims[p].upper());
+            acc.centroids.grow(prims[p].centroid2());
           }
           return acc;
         },
