@@ -53,7 +53,7 @@ struct TestScene {
     return b;
   }
   SceneView view() const {
-    static const std::vector<Vec3> kNoNormals;
+    static const std::vector<OctNormal> kNoNormals;
     SceneView v = test::geometryView(spheres, positions, kNoNormals, triangles);
     v.nodes = bvh.wideNodes.data();
     v.nodeCount = static_cast<uint32_t>(bvh.wideNodes.size());

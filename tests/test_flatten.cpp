@@ -1,5 +1,5 @@
 // Flattening meshes into the renderer's arrays: world-space transforms, one normal per vertex
-// (creases split), zero normals where a mesh has none, and winding kept under mirroring.
+// (creases split), no normals ("none") where a mesh has none, and winding kept under mirroring.
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -39,16 +39,17 @@ TEST(Flatten, CreaseVerticesAreSplitSoEachFaceKeepsItsNormals) {
   ASSERT_EQ(s.triangles.size(), 2u);
   EXPECT_EQ(s.positions.size(), 6u);  // 4 positions + 2 split
   ASSERT_EQ(s.normals.size(), s.positions.size());
-  for (uint32_t v : s.triangles[0].v) EXPECT_FLOAT_EQ(s.normals[v].z, 1.0f);
+  // Normals are stored octahedrally encoded (within 7e-5 radians).
+  for (uint32_t v : s.triangles[0].v) EXPECT_NEAR(decodeOctNormal(s.normals[v]).z, 1.0f, 1e-6f);
   for (uint32_t v : s.triangles[1].v) {
-    EXPECT_NEAR(s.normals[v].x, 0.6f, 1e-6f);
-    EXPECT_NEAR(s.normals[v].z, 0.8f, 1e-6f);
+    EXPECT_NEAR(decodeOctNormal(s.normals[v]).x, 0.6f, 1e-4f);
+    EXPECT_NEAR(decodeOctNormal(s.normals[v]).z, 0.8f, 1e-4f);
   }
   // Split vertices sit where the originals are.
   EXPECT_EQ(s.positions[s.triangles[0].v[1]].x, s.positions[s.triangles[1].v[0]].x);
 }
 
-TEST(Flatten, FlatMeshesAndUnsmoothedObjectsCarryZeroNormals) {
+TEST(Flatten, FlatMeshesAndUnsmoothedObjectsCarryNoNormals) {
   const std::string crease = writeObj("crease2.obj", kCrease);
   const std::string flat = writeObj("flat.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
   const SceneData s = flatten(R"([{"file": ")" + flat + R"("},
@@ -57,10 +58,10 @@ TEST(Flatten, FlatMeshesAndUnsmoothedObjectsCarryZeroNormals) {
                                   {"file": ")" + flat + R"("}])");
   ASSERT_EQ(s.normals.size(), s.positions.size());
   EXPECT_EQ(s.triangles.size(), 6u);
-  for (uint32_t v : s.triangles[0].v) EXPECT_TRUE(isBlack(s.normals[v]));  // before a smooth mesh
-  for (uint32_t v : s.triangles[3].v) EXPECT_TRUE(isBlack(s.normals[v]));  // smooth: false
-  for (uint32_t v : s.triangles[5].v) EXPECT_TRUE(isBlack(s.normals[v]));  // after it
-  for (uint32_t v : s.triangles[1].v) EXPECT_FALSE(isBlack(s.normals[v]));
+  for (uint32_t v : s.triangles[0].v) EXPECT_TRUE(s.normals[v].isNone());  // before a smooth mesh
+  for (uint32_t v : s.triangles[3].v) EXPECT_TRUE(s.normals[v].isNone());  // smooth: false
+  for (uint32_t v : s.triangles[5].v) EXPECT_TRUE(s.normals[v].isNone());  // after it
+  for (uint32_t v : s.triangles[1].v) EXPECT_FALSE(s.normals[v].isNone());
 }
 
 TEST(Flatten, NoNormalsStoredWhenNoMeshHasThem) {
@@ -79,7 +80,7 @@ TEST(Flatten, MirroringScaleKeepsTheOutsideAndTransformsNormals) {
   EXPECT_NEAR(faceNormal(s, s.triangles[0]).z, 1.0f, 1e-6f);
   EXPECT_LT(s.positions[s.triangles[0].v[0]].x, 0.0f);
   // Normals follow the inverse transpose: mirrored in x.
-  EXPECT_NEAR(s.normals[s.triangles[0].v[0]].x, -0.6f, 1e-6f);
+  EXPECT_NEAR(decodeOctNormal(s.normals[s.triangles[0].v[0]]).x, -0.6f, 1e-4f);
 }
 
 }  // namespace

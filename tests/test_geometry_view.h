@@ -8,7 +8,7 @@
 namespace candela::test {
 
 inline SceneView geometryView(const std::vector<Sphere>& spheres, const std::vector<Vec3>& positions,
-                              const std::vector<Vec3>& normals,
+                              const std::vector<OctNormal>& normals,
                               const std::vector<Triangle>& triangles) {
   SceneView v;
   v.spheres = spheres.data();

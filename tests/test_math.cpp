@@ -7,12 +7,14 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <random>
 #include <vector>
 
 #include "core/constants.h"
 #include "core/float_error.h"
 #include "core/frame.h"
+#include "core/oct_normal.h"
 #include "core/rng.h"
 #include "core/sampling.h"
 #include "core/vec3.h"
@@ -107,6 +109,33 @@ TEST(Frame, OrthonormalAndRightHandedForManyNormals) {
     EXPECT_NEAR(dot(f.t, f.n), 0.0f, 1e-5f);
     expectNearVec(cross(f.s, f.t), n, 1e-5f);
   }
+}
+
+TEST(OctNormal, RoundTripWithinSeventyMicroradians) {
+  std::mt19937 gen(5);
+  std::normal_distribution<float> g(0.0f, 1.0f);
+  double worst = 0.0;
+  std::vector<Vec3> normals = {Vec3(0, 0, -1), Vec3(0, 0, 1), Vec3(1, 0, 0), Vec3(-1, 0, 0),
+                               Vec3(0, 1, 0), Vec3(0, -1, 0), normalize(Vec3(-1, -1, -1e-7f))};
+  for (int i = 0; i < 200000; ++i) normals.push_back(normalize(Vec3(g(gen), g(gen), g(gen))));
+  for (const Vec3& n : normals) {
+    const OctNormal o = encodeOctNormal(n);
+    ASSERT_FALSE(o.isNone());
+    const Vec3 d = decodeOctNormal(o);
+    EXPECT_NEAR(length(d), 1.0f, 1e-6f);
+    // The chord between unit vectors is their angle to within its cube; acos of a float dot
+    // product would drown 3e-5 in rounding.
+    const double dx = double(d.x) - n.x, dy = double(d.y) - n.y, dz = double(d.z) - n.z;
+    worst = std::max(worst, std::sqrt(dx * dx + dy * dy + dz * dz));
+  }
+  EXPECT_LT(worst, 7e-5);
+  EXPECT_GT(worst, 1e-6);  // the encoding is lossy: a test of nothing would show 0
+  // Length does not matter; zero and non-finite vectors mean "no normal".
+  EXPECT_EQ(encodeOctNormal(Vec3(0, 3, 4)).bits, encodeOctNormal(Vec3(0, 0.6f, 0.8f)).bits);
+  EXPECT_TRUE(encodeOctNormal(Vec3(0.0f)).isNone());
+  EXPECT_TRUE(encodeOctNormal(Vec3(std::numeric_limits<float>::infinity(), 0, 0)).isNone());
+  EXPECT_TRUE(encodeOctNormal(Vec3(std::nanf(""), 0, 1)).isNone());
+  EXPECT_TRUE(OctNormal().isNone());
 }
 
 TEST(Frame, LocalWorldRoundTrip) {

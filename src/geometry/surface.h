@@ -61,11 +61,12 @@ CANDELA_HDI SurfacePoint triangleSurfaceAt(const SceneView& scene, const Triangl
   sp.ng = normalize(cross(p1 - p0, p2 - p0));
   sp.ns = sp.ng;
   if (scene.normalCount != 0) {
-    const Vec3& n0 = scene.normals[tri.v[0]];
-    const Vec3& n1 = scene.normals[tri.v[1]];
-    const Vec3& n2 = scene.normals[tri.v[2]];
-    if (!isBlack(n0) && !isBlack(n1) && !isBlack(n2)) {
-      const Vec3 n = b0 * n0 + b1 * n1 + b2 * n2;
+    const OctNormal n0 = scene.normals[tri.v[0]];
+    const OctNormal n1 = scene.normals[tri.v[1]];
+    const OctNormal n2 = scene.normals[tri.v[2]];
+    if (!n0.isNone() && !n1.isNone() && !n2.isNone()) {
+      const Vec3 n =
+          b0 * decodeOctNormal(n0) + b1 * decodeOctNormal(n1) + b2 * decodeOctNormal(n2);
       // Opposite vertex normals can cancel; the face normal is the only sensible fallback.
       if (lengthSquared(n) > 0.0f) sp.ns = faceForward(normalize(n), sp.ng);
     }

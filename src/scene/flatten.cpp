@@ -79,10 +79,10 @@ void addObject(SceneData& s, const ObjectDesc& obj, bool geometry) {
   }
 
   if (withNormals) {
-    s.normals.resize(base, Vec3(0.0f));  // earlier vertices without normals
+    s.normals.resize(base, OctNormal());  // earlier vertices without normals
     for (const int32_t n : normalOf)
-      s.normals.push_back(n >= 0 ? normalize(r * (mesh.normals[uint32_t(n)] / obj.scale))
-                                 : Vec3(0.0f));
+      s.normals.push_back(n >= 0 ? encodeOctNormal(r * (mesh.normals[uint32_t(n)] / obj.scale))
+                                 : OctNormal());
   }
 }
 
@@ -115,7 +115,7 @@ void addContents(SceneData& s, const SceneDesc& desc, bool geometry) {
   for (const LightDesc& ld : desc.lights) addLight(s, ld);
   for (const ObjectDesc& od : desc.objects) addObject(s, od, geometry);
   // Vertices after the last smooth mesh have no normals either.
-  if (geometry && !s.normals.empty()) s.normals.resize(s.positions.size(), Vec3(0.0f));
+  if (geometry && !s.normals.empty()) s.normals.resize(s.positions.size(), OctNormal());
 
   s.environment = desc.environment;
   s.camera = resolveCamera(desc.camera, desc.file);

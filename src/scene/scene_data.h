@@ -19,7 +19,7 @@ struct SceneData {
   std::vector<Material> materials;
   std::vector<Sphere> spheres;
   std::vector<Vec3> positions;
-  std::vector<Vec3> normals;
+  std::vector<OctNormal> normals;
   std::vector<Triangle> triangles;
   std::vector<Light> lights;
   std::vector<BvhNode> nodes;

@@ -5,8 +5,9 @@
 //
 // Conventions:
 // - World space is right-handed, +y up. Mesh vertices are already transformed to world space.
-// - `normals` is empty or parallel to `positions`: normals[i] is vertex i's shading normal, and a
-//   zero vector means "none" (a triangle with such a vertex is shaded with its face normal).
+// - `normals` is empty or parallel to `positions`: normals[i] is vertex i's shading normal,
+//   octahedrally encoded (core/oct_normal.h); "none" makes a triangle with such a vertex use its
+//   face normal.
 // - Primitive index p in [0, sphereCount) is spheres[p]; p >= sphereCount is triangle
 //   p - sphereCount. The BVH leaves index `primIndices`, which hold such primitive indices.
 // - Sphere lights also appear as spheres whose material is emissive with `lightIndex` set, so
@@ -18,6 +19,7 @@
 #include <type_traits>
 
 #include "core/mat3.h"
+#include "core/oct_normal.h"
 #include "core/vec3.h"
 
 namespace candela {
@@ -100,7 +102,7 @@ struct SceneView {
   const Material* materials = nullptr;
   const Sphere* spheres = nullptr;
   const Vec3* positions = nullptr;
-  const Vec3* normals = nullptr;
+  const OctNormal* normals = nullptr;
   const Triangle* triangles = nullptr;
   const Light* lights = nullptr;
   const BvhNode* nodes = nullptr;

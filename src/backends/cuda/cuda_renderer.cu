@@ -69,7 +69,8 @@ __global__ void renderPassKernel(SceneView scene, uint32_t sampleBegin, uint32_t
 struct CudaScene::Impl {
   DeviceBuffer<Material> materials;
   DeviceBuffer<Sphere> spheres;
-  DeviceBuffer<Vec3> positions, normals;
+  DeviceBuffer<Vec3> positions;
+  DeviceBuffer<OctNormal> normals;
   DeviceBuffer<Triangle> triangles;
   DeviceBuffer<Light> lights;
   DeviceBuffer<BvhNode> nodes;
