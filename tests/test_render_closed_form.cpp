@@ -5,6 +5,7 @@
 #include <cmath>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include "core/constants.h"
 #include "render_test_util.h"
@@ -180,6 +181,75 @@ TEST(ClosedForm, SphereLightOverDiffusePlaneMatchesIrradiance) {
     EXPECT_NEAR(s.mean, 1.0, kZ * s.standardError() + 1e-3);
     EXPECT_LT(s.stddev, 0.1);  // antialiasing jitter and sampling noise only
   }
+}
+
+// (f) Several lights: a plane under two point lights of different power and colour, a sphere
+// light, a light of no power and `extraLights` weak point lights must show the sum of their
+// direct contributions (the sphere light's through MIS with the BSDF). With few lights each is
+// sampled; with many one is picked in proportion to power.
+void expectLightsSumToEveryContribution(int extraLights) {
+  const std::string obj = writePlaneObj("plane_f.obj", 100);
+  const double rho = 0.5;
+  struct PointLight {
+    double x, y, z, power;
+    Vec3 color;
+  };
+  std::vector<PointLight> points = {{2, 3, 0, 900, Vec3(1, 0.5f, 0.25f)},
+                                    {-3, 5, 1, 300, Vec3(0.2f, 0.6f, 1)}};
+  for (int i = 0; i < extraLights; ++i) points.push_back({-4.0 + i, 6, 4.0 - i, 40, Vec3(1.0f)});
+  // A big, near sphere light, so that BSDF sampling finds it often and a wrong MIS weight shows.
+  const double sx = 0, sy = 2, sz = -5, radius = 1.5, intensity = 400;
+  const double L = intensity / (4 * kPi * kPi * radius * radius);
+  std::string lights;
+  for (const PointLight& p : points) {
+    lights += R"({"position": [)" + num(p.x) + ", " + num(p.y) + ", " + num(p.z) +
+              R"(], "intensity": )" + num(p.power) + R"(, "color": [)" + num(p.color.x) + ", " +
+              num(p.color.y) + ", " + num(p.color.z) + "]},";
+  }
+  lights += R"({"type": "sphere", "position": [)" + num(sx) + ", " + num(sy) + ", " + num(sz) +
+            R"(], "radius": )" + num(radius) + R"(, "intensity": )" + num(intensity) + "},";
+  lights += R"({"position": [0, 1, 0], "intensity": 0})";
+  const std::string scene = R"({
+    "camera": {"width": 24, "height": 24, "fov": 40, "position": [0, 8, 0],
+               "look_at": [0, 0, 0.001], "up": [0, 0, -1], "spp": 256},
+    "render": {"max_depth": 1, "antialiasing": false},
+    "objects": [{"file": ")" + obj + R"(", "color": )" + num(rho) + R"(}],
+    "lights": [)" + lights + "]}";
+  const SceneData data = test::loadTestScene(scene);
+  const RenderResult r = renderCpu(data.view(), CpuRenderOptions{});
+  ImageRGB ratios(24, 24);
+  for (uint32_t y = 0; y < 24; ++y)
+    for (uint32_t x = 0; x < 24; ++x) {
+      const Camera& cam = data.camera;
+      const Vec3 d = cam.cameraToWorld * (cam.inverseK * Vec3(x + 0.5f, y + 0.5f, 1.0f));
+      const double t = -cam.position.y / d.y;
+      const double px = cam.position.x + t * d.x, pz = cam.position.z + t * d.z;
+      double expected[3] = {0, 0, 0};
+      for (const PointLight& p : points) {
+        const double dx = p.x - px, dz = p.z - pz, d2 = dx * dx + p.y * p.y + dz * dz;
+        const double e = rho * p.power * (p.y / std::sqrt(d2)) / (4 * kPi * kPi * d2);
+        for (int c = 0; c < 3; ++c) expected[c] += e * p.color[c];
+      }
+      const double dx = sx - px, dz = sz - pz, d2 = dx * dx + sy * sy + dz * dz;
+      const double e = rho * L * radius * radius / d2 * (sy / std::sqrt(d2));
+      for (int c = 0; c < 3; ++c) expected[c] += e;
+      const Vec3 v = r.image.at(x, y);
+      ratios.set(x, y, Vec3(float(v.x / expected[0]), float(v.y / expected[1]),
+                            float(v.z / expected[2])));
+    }
+  for (int c = 0; c < 3; ++c) {
+    const auto s = regionStats(ratios, 0, 0, 24, 24, c);
+    EXPECT_NEAR(s.mean, 1.0, kZ * s.standardError() + 1e-3) << "channel " << c;
+  }
+}
+
+TEST(ClosedForm, EveryOfAFewLightsIsSampled) {
+  expectLightsSumToEveryContribution(0);
+}
+
+TEST(ClosedForm, OneOfManyLightsIsPickedByPower) {
+  static_assert(kSampleEveryLightUpTo < 12, "the scene below must have more lights");
+  expectLightsSumToEveryContribution(8);
 }
 
 }  // namespace

@@ -45,29 +45,47 @@ CANDELA_HDI Ray spawnRay(const SurfacePoint& sp, const Vec3& wi) {
   return r;
 }
 
-// Direct light at a diffuse point from every light, each by one shadow ray.
+// Direct light at a diffuse point from one light, by one shadow ray, weighted by the probability
+// light.selectPmf of sampling that light.
+CANDELA_HDI Vec3 sampleOneLight(const SceneView& scene, const Light& light, const Material& m,
+                                const SurfacePoint& sp, const Vec3& wo, float u1, float u2,
+                                RayCounters& counters) {
+  LightSample ls;
+  if (!sampleLight(light, sp.p, u1, u2, &ls)) return Vec3(0.0f);
+  const Vec3 f = evalDiffuse(m, wo, sp.ng, sp.ns, ls.wi);
+  if (isBlack(f)) return Vec3(0.0f);
+  Ray shadow = spawnRay(sp, ls.wi);
+  const Vec3 target = sp.p + ls.wi * ls.distance;
+  shadow.tMax = length(target - shadow.origin) * (1.0f - kShadowEpsilon);
+  ++counters.shadow;
+  const uint32_t skip = light.type == LightType::Sphere ? light.sphere : kNoPrimitive;
+  if (traceOccluded(scene, shadow, skip)) return Vec3(0.0f);
+  const float lightPdf = light.selectPmf * ls.pdf;
+  const float weight =
+      ls.isDelta ? 1.0f : powerHeuristic(lightPdf, diffusePdf(wo, sp.ng, sp.ns, ls.wi));
+  return f * ls.radiance * (weight / lightPdf);
+}
+
+// Direct light at a diffuse point: from each light when there are few (kSampleEveryLightUpTo),
+// else from one picked in proportion to power.
 CANDELA_HDI Vec3 estimateDirect(const SceneView& scene, const Material& m, const SurfacePoint& sp,
                                 const Vec3& wo, SampleStream& rng, RayCounters& counters) {
-  Vec3 sum(0.0f);
-  for (uint32_t i = 0; i < scene.lightCount; ++i) {
-    const Light& light = scene.lights[i];
-    // A dimension is drawn for every light so the stream's layout never depends on geometry.
-    float u1, u2;
-    rng.next2D(&u1, &u2);
-    LightSample ls;
-    if (!sampleLight(light, sp.p, u1, u2, &ls)) continue;
-    const Vec3 f = evalDiffuse(m, wo, sp.ng, sp.ns, ls.wi);
-    if (isBlack(f)) continue;
-    Ray shadow = spawnRay(sp, ls.wi);
-    const Vec3 target = sp.p + ls.wi * ls.distance;
-    shadow.tMax = length(target - shadow.origin) * (1.0f - kShadowEpsilon);
-    ++counters.shadow;
-    const uint32_t skip = light.type == LightType::Sphere ? light.sphere : kNoPrimitive;
-    if (traceOccluded(scene, shadow, skip)) continue;
-    const float weight = ls.isDelta ? 1.0f : powerHeuristic(ls.pdf, diffusePdf(wo, sp.ng, sp.ns, ls.wi));
-    sum += f * ls.radiance * (weight / ls.pdf);
+  // Dimensions are drawn for every light, or three for the picked one, whatever the geometry,
+  // so the stream's layout never depends on it.
+  float u1, u2;
+  if (scene.lightCount <= kSampleEveryLightUpTo) {
+    Vec3 sum(0.0f);
+    for (uint32_t i = 0; i < scene.lightCount; ++i) {
+      rng.next2D(&u1, &u2);
+      sum += sampleOneLight(scene, scene.lights[i], m, sp, wo, u1, u2, counters);
+    }
+    return sum;
   }
-  return sum;
+  const float uLight = rng.next1D();
+  rng.next2D(&u1, &u2);
+  const int index = selectLight(scene, uLight);
+  if (index < 0) return Vec3(0.0f);
+  return sampleOneLight(scene, scene.lights[index], m, sp, wo, u1, u2, counters);
 }
 
 // Radiance arriving at the camera along `ray` (one sample).
@@ -92,8 +110,10 @@ CANDELA_HDI Vec3 traceRadiance(const SceneView& scene, Ray ray, SampleStream& rn
     if (m.type == MaterialType::Emissive) {
       if (dot(wo, sp.ng) > 0.0f) {  // emitters emit from their outside only
         float weight = 1.0f;
-        if (!specularBounce && m.lightIndex >= 0)
-          weight = powerHeuristic(bsdfPdf, sphereLightPdf(scene.lights[m.lightIndex], bouncePoint));
+        if (!specularBounce && m.lightIndex >= 0) {
+          const Light& light = scene.lights[m.lightIndex];
+          weight = powerHeuristic(bsdfPdf, light.selectPmf * sphereLightPdf(light, bouncePoint));
+        }
         radiance += throughput * m.radiance * weight;
       }
       break;

@@ -36,6 +36,22 @@ CANDELA_HDI float sphereLightPdf(const Light& l, const Vec3& p) {
   return 1.0f / (2.0f * kPi * sphereConeOneMinusCos(r2 / dist2));
 }
 
+// The light that next-event estimation samples for uniform u in [0, 1): light i with probability
+// scene.lights[i].selectPmf (pbrt-v4's power light sampler), found by bisecting the running
+// sums. -1 when no light has any power.
+CANDELA_HDI int selectLight(const SceneView& scene, float u) {
+  uint32_t lo = 0, hi = scene.lightCount;  // the answer is the first light with u < selectCdf
+  while (lo < hi) {
+    const uint32_t mid = (lo + hi) / 2;
+    if (u < scene.lights[mid].selectCdf) {
+      hi = mid;
+    } else {
+      lo = mid + 1;
+    }
+  }
+  return lo < scene.lightCount ? static_cast<int>(lo) : -1;
+}
+
 CANDELA_HDI bool sampleLight(const Light& l, const Vec3& p, float u1, float u2, LightSample* s) {
   const Vec3 toCenter = l.position - p;
   const float dist2 = lengthSquared(toCenter);

@@ -105,6 +105,31 @@ void addLight(SceneData& s, const LightDesc& d) {
   s.lights.push_back(light);
 }
 
+// Light selection (see Light::selectPmf): every light, or one in proportion to its power (the sum
+// of its RGB components), lights without power never.
+void setLightSelection(std::vector<Light>& lights) {
+  if (lights.size() <= kSampleEveryLightUpTo) {
+    for (Light& l : lights) l.selectPmf = l.selectCdf = 1.0f;
+    return;
+  }
+  double total = 0.0;
+  for (const Light& l : lights) total += std::max(0.0, double(l.power.x) + l.power.y + l.power.z);
+  double running = 0.0;
+  for (Light& l : lights) {
+    const double power = std::max(0.0, double(l.power.x) + l.power.y + l.power.z);
+    running += power;
+    l.selectPmf = total > 0.0 ? float(power / total) : 0.0f;
+    l.selectCdf = total > 0.0 ? float(running / total) : 0.0f;
+  }
+  // Rounding must not leave u close to 1 beyond the last light with power.
+  for (size_t i = lights.size(); i-- > 0;) {
+    if (lights[i].selectPmf > 0.0f) {
+      for (size_t j = i; j < lights.size(); ++j) lights[j].selectCdf = 1.0f;
+      break;
+    }
+  }
+}
+
 // Everything but the BVH; mesh vertices and triangles only with `geometry`. The order of
 // materials depends only on the scene's structure, so triangles keep valid material indices
 // when a refresh re-appends the materials.
@@ -113,6 +138,7 @@ void addContents(SceneData& s, const SceneDesc& desc, bool geometry) {
     s.spheres.push_back(Sphere{sd.position, sd.radius, addMaterial(s, toMaterial(sd.material))});
   // Lights after plain spheres: sphere lights append their own emissive spheres.
   for (const LightDesc& ld : desc.lights) addLight(s, ld);
+  setLightSelection(s.lights);
   for (const ObjectDesc& od : desc.objects) addObject(s, od, geometry);
   // Vertices after the last smooth mesh have no normals either.
   if (geometry && !s.normals.empty()) s.normals.resize(s.positions.size(), OctNormal());

@@ -58,7 +58,19 @@ struct Light {
   Vec3 power;         // point: total power (color * intensity)
   Vec3 radiance;      // sphere: uniform outgoing radiance color*intensity/(4 pi^2 r^2)
   uint32_t sphere = 0;  // sphere lights: their index in SceneView::spheres
+  // The probability that next-event estimation samples this light at a shading point: 1 when
+  // the scene has at most kSampleEveryLightUpTo lights (each gets its own shadow ray), else one
+  // light is picked in proportion to power. selectCdf is the running sum of the picking
+  // probabilities up to and including this light, 1 from the last light with any power on.
+  float selectPmf = 0;
+  float selectCdf = 0;
 };
+
+// Up to this many lights every shading point samples each of them: on the bench scenes (two and
+// three point lights) that reaches a given error in 25-45% less time than picking one light by
+// power, whose extra noise outweighs the shadow rays it saves. Beyond it the cost per shading
+// point would grow with the light count, and one light is picked.
+constexpr uint32_t kSampleEveryLightUpTo = 8;
 
 // Node of the 4-wide BVH the renderer traverses, 128 bytes (two cache lines). It holds the boxes
 // of up to four children side by side, one array per axis, so that one visit tests four boxes
