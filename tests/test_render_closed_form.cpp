@@ -88,6 +88,20 @@ TEST(ClosedForm, PointLightOverDiffusePlaneMatchesContractFormula) {
       ++checked;
     }
   EXPECT_GT(checked, 20);
+  // With nothing emissive and a black environment no ray is scattered from the last interaction:
+  // it could only find emission. At max_depth 1 that leaves the shadow rays alone, and the
+  // same image.
+  EXPECT_FALSE(data.view().emissionReachable);
+  EXPECT_GT(r.rays.bounce, 0u);
+  std::string direct = scene;
+  direct.replace(direct.find(R"("antialiasing": false)"), 21,
+                 R"("antialiasing": false, "max_depth": 1)");
+  const RenderResult d = renderCpu(test::loadTestScene(direct).view(), options);
+  EXPECT_EQ(d.rays.bounce, 0u);
+  EXPECT_EQ(d.rays.shadow, 64u * 48u * 4u);  // one per sample: every pixel sees the plane
+  for (uint32_t y = 0; y < 48; ++y)
+    for (uint32_t x = 0; x < 64; ++x)
+      for (int c = 0; c < 3; ++c) EXPECT_EQ(d.image.at(x, y)[c], r.image.at(x, y)[c]);
 }
 
 // (c) Under a uniform environment of radiance 1 a convex object never sees itself: a diffuse

@@ -126,6 +126,8 @@ CANDELA_HDI Vec3 traceRadiance(const SceneView& scene, Ray ray, SampleStream& rn
       if (scene.settings.integrator == IntegratorType::Direct) maxDepth = depth;
     }
 
+    if (depth == maxDepth && !scene.emissionReachable) break;
+
     float u1, u2;
     rng.next2D(&u1, &u2);
     BsdfSample bs;

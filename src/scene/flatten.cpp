@@ -195,6 +195,8 @@ SceneView SceneData::view() const {
   v.lightCount = uint32_t(lights.size());
   v.nodeCount = uint32_t(nodes.size());
   v.environment = environment;
+  v.emissionReachable = !isBlack(environment);
+  for (const Material& m : materials) v.emissionReachable |= m.type == MaterialType::Emissive;
   v.camera = camera;
   v.settings = settings;
   return v;

@@ -124,6 +124,10 @@ struct SceneView {
   uint32_t triangleCount = 0, lightCount = 0, nodeCount = 0;
 
   Vec3 environment{0.0f};
+  // Whether a scattered ray can find any light: an emissive material (sphere lights included) or
+  // a nonzero environment. Without, light arrives only by shadow rays to point lights, and the
+  // ray a path would scatter from its last interaction is not traced: it could add nothing.
+  bool emissionReachable = true;
   Camera camera;
   RenderSettings settings;
 
