@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <memory>
 #include <string>
 
 #include "core/constants.h"
@@ -12,6 +13,8 @@
 
 #if defined(CANDELA_HAS_CUDA)
 #include "backends/cuda/cuda_renderer.h"
+#include "scene/frame_scene.h"
+#include "scene/scene_loader.h"
 #endif
 
 namespace candela {
@@ -109,6 +112,43 @@ TEST(CudaBackend, SphereLightSeenDirectlyHasItsRadiance) {
   const RenderResult r = renderCuda(data);
   const double radiance = 300 / (4 * kPi * kPi * 0.25);
   EXPECT_NEAR(r.image.at(8, 8).x, radiance, 1e-4 * radiance);
+}
+
+// A scene kept on the GPU across frames follows each kind of change FrameScene reports, moving
+// only what may differ, and renders exactly what a fresh upload of the same frame renders.
+TEST(CudaBackend, ResidentSceneFollowsEveryKindOfFrameChange) {
+  REQUIRE_GPU();
+  const std::string base = sceneWithEverything(4);
+  std::string cameraMoved = base, sphereMoved = base, sphereAdded = base;
+  cameraMoved.replace(cameraMoved.find("[0, 1.5, 6]"), 11, "[0.3, 1.4, 6]");
+  sphereMoved.replace(sphereMoved.find("[-1.2, 0.5, 0]"), 14, "[-1.0, 0.7, 0.2]");
+  sphereAdded.replace(sphereAdded.find(R"("spheres": [)"), 12,
+                      R"("spheres": [{"position": [0, 2, 0], "radius": 0.3, "color": 0.5},)");
+  const struct {
+    const std::string* json;
+    FramePreparation expected;
+  } frames[] = {{&base, FramePreparation::Built},
+                {&cameraMoved, FramePreparation::Reused},
+                {&sphereMoved, FramePreparation::Refitted},
+                {&sphereAdded, FramePreparation::Built},
+                {&base, FramePreparation::Built}};
+  FrameScene frameScene;
+  std::unique_ptr<CudaScene> resident;
+  for (const auto& frame : frames) {
+    const SceneData& data = frameScene.prepare(parseSceneText(*frame.json, "test.json", "."));
+    EXPECT_EQ(frameScene.preparation(), frame.expected);
+    if (resident) {
+      resident->update(data, frameScene.preparation());
+    } else {
+      resident = std::make_unique<CudaScene>(data);
+    }
+    CudaRenderOptions options;
+    const RenderResult kept = resident->render(options);
+    const RenderResult fresh = renderCuda(data);
+    for (uint32_t y = 0; y < fresh.image.height; ++y)
+      for (uint32_t x = 0; x < fresh.image.width; ++x)
+        for (int c = 0; c < 3; ++c) ASSERT_EQ(kept.image.at(x, y)[c], fresh.image.at(x, y)[c]);
+  }
 }
 
 #endif

@@ -3,6 +3,7 @@
 
 #include <cctype>
 #include <cstring>
+#include <memory>
 #include <string>
 
 #include "apps/cli/cli_error.h"
@@ -70,34 +71,74 @@ Backend chooseBackend(Backend requested, std::string* note) {
   return Backend::Cpu;
 }
 
-RenderResult renderScene(Backend backend, const SceneData& scene, const RenderControl& control) {
-  switch (backend) {
-    case Backend::Auto:
-    case Backend::Cpu: {
-      CpuRenderOptions options;
-      options.threads = control.threads;
-      options.progress = control.progress;
-      options.cancel = control.cancel;
-      return renderCpu(scene.view(), options);
-    }
-    case Backend::Cuda: {
-#if defined(CANDELA_HAS_CUDA)
-      try {
-        const CudaScene gpuScene(scene);
-        CudaRenderOptions options;
-        options.progress = control.progress;
-        options.cancel = control.cancel;
-        options.sceneLabel = control.sceneLabel;
-        return gpuScene.render(options);
-      } catch (const CudaError& e) {
-        throw CliError(kExitFailure, e.what());
-      }
-#endif
-      break;
-    }
-  }
+namespace {
+
+RenderResult renderOnCpu(const SceneData& scene, const RenderControl& control) {
+  CpuRenderOptions options;
+  options.threads = control.threads;
+  options.progress = control.progress;
+  options.cancel = control.cancel;
+  return renderCpu(scene.view(), options);
+}
+
+[[noreturn]] void notInThisBuild(Backend backend) {
   throw CliError(kExitFailure, std::string("the ") + backendName(backend) +
                                    " backend is not available in this build");
+}
+
+#if defined(CANDELA_HAS_CUDA)
+RenderResult renderOnGpu(const CudaScene& gpuScene, const RenderControl& control) {
+  CudaRenderOptions options;
+  options.progress = control.progress;
+  options.cancel = control.cancel;
+  options.sceneLabel = control.sceneLabel;
+  return gpuScene.render(options);
+}
+#endif
+
+}  // namespace
+
+RenderResult renderScene(Backend backend, const SceneData& scene, const RenderControl& control) {
+  if (backend != Backend::Cuda) return renderOnCpu(scene, control);
+#if defined(CANDELA_HAS_CUDA)
+  try {
+    return renderOnGpu(CudaScene(scene), control);
+  } catch (const CudaError& e) {
+    throw CliError(kExitFailure, e.what());
+  }
+#endif
+  notInThisBuild(backend);
+}
+
+struct FrameRenderer::Resident {
+#if defined(CANDELA_HAS_CUDA)
+  std::unique_ptr<CudaScene> gpuScene;
+#endif
+};
+
+FrameRenderer::FrameRenderer(Backend backend) : backend_(backend), resident_(new Resident) {}
+FrameRenderer::~FrameRenderer() = default;
+
+RenderResult FrameRenderer::render(const SceneData& scene, FramePreparation change,
+                                   const RenderControl& control) {
+  if (backend_ != Backend::Cuda) return renderOnCpu(scene, control);
+#if defined(CANDELA_HAS_CUDA)
+  try {
+    std::unique_ptr<CudaScene>& gpuScene = resident_->gpuScene;
+    if (gpuScene) {
+      gpuScene->update(scene, change);
+    } else {
+      gpuScene = std::make_unique<CudaScene>(scene);
+    }
+    return renderOnGpu(*gpuScene, control);
+  } catch (const CudaError& e) {
+    resident_->gpuScene.reset();  // a failed update leaves the device copy unknown
+    throw CliError(kExitFailure, e.what());
+  }
+#else
+  (void)change;
+#endif
+  notInThisBuild(backend_);
 }
 
 }  // namespace candela::cli

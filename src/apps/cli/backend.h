@@ -6,9 +6,11 @@
 
 #include <atomic>
 #include <functional>
+#include <memory>
 #include <string>
 
 #include "render/render_result.h"
+#include "scene/frame_scene.h"
 #include "scene/scene_data.h"
 
 namespace candela::cli {
@@ -33,5 +35,24 @@ struct RenderControl {
 
 // Renders on a backend returned by chooseBackend.
 RenderResult renderScene(Backend backend, const SceneData& scene, const RenderControl& control);
+
+// Renders the frames of one sequence on one backend (from chooseBackend). On the GPU the scene
+// stays resident between frames and each frame moves only what FrameScene says may have changed.
+class FrameRenderer {
+ public:
+  explicit FrameRenderer(Backend backend);
+  ~FrameRenderer();
+  FrameRenderer(const FrameRenderer&) = delete;
+  FrameRenderer& operator=(const FrameRenderer&) = delete;
+
+  // `scene` is FrameScene's latest frame and `change` its preparation().
+  RenderResult render(const SceneData& scene, FramePreparation change,
+                      const RenderControl& control);
+
+ private:
+  struct Resident;
+  Backend backend_;
+  std::unique_ptr<Resident> resident_;
+};
 
 }  // namespace candela::cli

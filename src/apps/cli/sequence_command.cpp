@@ -146,6 +146,7 @@ int runSequence(const RenderOptions& options, std::vector<SceneDesc> scenes) {
   std::unique_ptr<ProgressBar> bar;
   if (ProgressBar::wanted(options.quiet)) bar = std::make_unique<ProgressBar>(stderr);
   FrameScene frameScene;
+  FrameRenderer renderer(backend);
   const auto start = std::chrono::steady_clock::now();
   for (size_t k = 0; k < todo.size(); ++k) {
     const uint32_t frame = todo[k];
@@ -160,7 +161,7 @@ int runSequence(const RenderOptions& options, std::vector<SceneDesc> scenes) {
     control.threads = options.threads;
     control.cancel = &interrupt.flag();
     if (bar) control.progress = [&bar](double fraction) { bar->update(fraction); };
-    const RenderResult result = renderScene(backend, data, control);
+    const RenderResult result = renderer.render(data, frameScene.preparation(), control);
     if (bar) bar->clear();
     if (result.cancelled) {
       std::fprintf(stderr,

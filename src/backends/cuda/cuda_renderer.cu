@@ -81,15 +81,23 @@ struct CudaScene::Impl {
 CudaScene::CudaScene(const SceneData& scene) : impl_(new Impl) {
   std::string reason;
   if (!cudaBackendAvailable(&reason)) throw CudaError(reason);
+  update(scene, FramePreparation::Built);
+}
+
+void CudaScene::update(const SceneData& scene, FramePreparation change) {
   Impl& d = *impl_;
   d.materials.upload(scene.materials);
   d.spheres.upload(scene.spheres);
-  d.positions.upload(scene.positions);
-  d.normals.upload(scene.normals);
-  d.triangles.upload(scene.triangles);
   d.lights.upload(scene.lights);
-  d.nodes.upload(scene.nodes);
-  d.primIndices.upload(scene.primIndices);
+  if (change != FramePreparation::Reused) {
+    d.positions.upload(scene.positions);
+    d.normals.upload(scene.normals);
+    d.nodes.upload(scene.nodes);
+  }
+  if (change == FramePreparation::Built) {
+    d.triangles.upload(scene.triangles);
+    d.primIndices.upload(scene.primIndices);
+  }
   d.view = scene.view();  // counts, camera and settings; pointers replaced below
   d.view.materials = d.materials.get();
   d.view.spheres = d.spheres.get();

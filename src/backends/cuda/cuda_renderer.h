@@ -14,6 +14,7 @@
 #include "backends/cuda/cuda_error.h"
 #include "render/render_result.h"
 #include "render/sample_range.h"
+#include "scene/frame_scene.h"
 #include "scene/scene_data.h"
 
 namespace candela {
@@ -37,6 +38,12 @@ class CudaScene {
   ~CudaScene();
   CudaScene(const CudaScene&) = delete;
   CudaScene& operator=(const CudaScene&) = delete;
+
+  // Makes the device copy match `scene`, the next frame of the scene this one holds, moving only
+  // what `change` says may differ (FrameScene's verdict): values (materials, spheres, lights,
+  // camera and settings) always; vertices, normals and BVH nodes after a refit; everything after
+  // a rebuild.
+  void update(const SceneData& scene, FramePreparation change);
 
   // Throws CudaError (naming the scene and pass) on any CUDA failure.
   RenderResult render(const CudaRenderOptions& options) const;
