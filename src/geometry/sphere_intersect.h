@@ -31,6 +31,10 @@ CANDELA_HDI bool intersectSphere(const Sphere& s, const Ray& r, float tMax, floa
   // c / a is positive, their sum -2 halfB / a negative). Most rays meet most of a room's wall
   // spheres this way, so this test spares them the square roots and divisions below.
   if (c > 0.0f && halfB > 0.0f) return false;
+  // Outside and moving towards it, the near root c / q has q <= -2 halfB, so it lies at least
+  // c / (-2 halfB) away: beyond tMax (a shadow ray's light, a hit already found) that is a miss
+  // without the square roots either.
+  if (c > 0.0f && c >= tMax * (-2.0f * halfB)) return false;
   const float a = lengthSquared(d);
 
   // Discriminant / 4 = halfB^2 - a c = a (r^2 - |perp|^2), perp = oc minus its projection on d.
