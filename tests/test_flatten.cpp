@@ -2,9 +2,12 @@
 // (creases split), no normals ("none") where a mesh has none, and winding kept under mirroring.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+
 #include <fstream>
 #include <string>
 
+#include "geometry/bvh_build.h"
 #include "scene/scene_data.h"
 #include "scene/scene_loader.h"
 
@@ -81,6 +84,34 @@ TEST(Flatten, MirroringScaleKeepsTheOutsideAndTransformsNormals) {
   EXPECT_LT(s.positions[s.triangles[0].v[0]].x, 0.0f);
   // Normals follow the inverse transpose: mirrored in x.
   EXPECT_NEAR(decodeOctNormal(s.normals[s.triangles[0].v[0]]).x, -0.6f, 1e-4f);
+}
+
+TEST(Flatten, TrianglesAreNumberedInLeafOrder) {
+  // A mesh listed in scrambled order comes out numbered as the BVH's leaves list it, and the
+  // permutation keeps every triangle.
+  std::string text;
+  const int n = 20;
+  for (int i = 0; i < n; ++i) text += "v " + std::to_string(i) + " 0 0\nv " + std::to_string(i) +
+                                      " 1 0\nv " + std::to_string(i) + ".5 0 1\n";
+  for (int k = 0; k < n; ++k) {
+    const int i = (k * 7) % n;  // scrambled
+    text += "f " + std::to_string(3 * i + 1) + " " + std::to_string(3 * i + 2) + " " +
+            std::to_string(3 * i + 3) + "\n";
+  }
+  const std::string obj = writeObj("scrambled.obj", text);
+  const SceneData s = flatten(R"([{"file": ")" + obj + R"("}])");
+  ASSERT_EQ(s.triangles.size(), size_t(n));
+  ASSERT_EQ(s.primIndices.size(), size_t(n));
+  for (uint32_t k = 0; k < n; ++k) EXPECT_EQ(s.primIndices[k], k);
+  std::vector<bool> seen(n, false);
+  for (const Triangle& t : s.triangles) seen[t.v[0] / 3] = true;
+  for (int i = 0; i < n; ++i) EXPECT_TRUE(seen[i]) << "triangle " << i;
+  // The tree splits the row along x and lists left children first, so memory follows space:
+  // triangle k sits at x = k, give or take its place inside a leaf.
+  for (int k = 0; k < n; ++k) {
+    const int x = int(s.triangles[k].v[0] / 3);
+    EXPECT_LE(std::abs(x - k), int(kBvhMaxLeafSize) - 1) << "triangle " << k << " at x = " << x;
+  }
 }
 
 }  // namespace

@@ -88,6 +88,8 @@ const SceneData& FrameScene::prepare(const SceneDesc& desc) {
       SceneData moved = flattenSceneContents(desc);
       moved.nodes = std::move(data_.nodes);
       moved.primIndices = std::move(data_.primIndices);
+      // The same triangles (the structure is unchanged), in the leaf order of the kept tree.
+      moved.triangles = std::move(data_.triangles);
       moved.bvh = data_.bvh;
       refitBvh(moved.nodes, moved.primIndices, moved.spheres.data(),
                uint32_t(moved.spheres.size()), moved.positions.data(), moved.triangles.data());

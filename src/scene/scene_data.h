@@ -35,11 +35,12 @@ struct SceneData {
 };
 
 // Transforms meshes to world space, resolves the camera, adds sphere lights as emissive
-// spheres and builds the BVH. The description must already be validated.
+// spheres and builds the BVH; triangles are then numbered in the BVH's leaf order. The
+// description must already be validated.
 SceneData flattenScene(const SceneDesc& desc);
 
-// flattenScene without the BVH (nodes and primIndices left empty): for refitting a tree built
-// for a description of the same structure.
+// flattenScene without the BVH (nodes and primIndices left empty) and with triangles in the
+// order of the description: for refitting a tree built for a description of the same structure.
 SceneData flattenSceneContents(const SceneDesc& desc);
 
 // Replaces the camera, settings, environment, materials, lights and spheres of `scene` (which
