@@ -173,6 +173,8 @@ constexpr float kLargeFraction = 0.25f;
 // the whole tree's SAH; a room's walls gain far more than 2x (the default room: -13% SAH, 15-20%
 // faster renders).
 constexpr float kSizeSplitAdvantage = 0.5f;
+// Nodes with fewer primitives than this do not price the size split.
+constexpr uint32_t kSizeSplitMinCount = 64;
 class LargeTest {
  public:
   explicit LargeTest(const Box4& node) : limit_(Float4(kLargeFraction) * (node.hi - node.lo)) {}
@@ -291,11 +293,19 @@ class Builder {
         bins(axis, bin[axis]).grow(lo, hi);
         ++binSizes[axis][bin[axis]];
       }
-      if (isLarge(lo, hi)) {
-        large.grow(lo, hi);
-        ++largeCount;
-      } else {
-        small.grow(lo, hi);
+    }
+    // A pass of its own, and only in large nodes: folded into the binning loop it slowed the
+    // whole build by 40%, and in small nodes, where large and small primitives alternate at
+    // random, it rarely wins.
+    if (count >= kSizeSplitMinCount) {
+      for (uint32_t i = range.begin; i < range.end; ++i) {
+        const Float4 lo = prims_[i].lower(), hi = prims_[i].upper();
+        if (isLarge(lo, hi)) {
+          large.grow(lo, hi);
+          ++largeCount;
+        } else {
+          small.grow(lo, hi);
+        }
       }
     }
 
