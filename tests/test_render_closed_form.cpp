@@ -19,6 +19,17 @@ using test::renderTestScene;
 // z-score for a two-sided test at significance ~1e-6: a correct renderer practically never fails.
 constexpr double kZ = 5.0;
 
+// Where the ray through the centre of pixel (x, y) meets the plane y = 0, computed independently
+// of the renderer's camera code.
+struct PlanePoint {
+  double x, z;
+};
+PlanePoint planePointAt(const Camera& cam, uint32_t x, uint32_t y) {
+  const Vec3 d = cam.cameraToWorld * (cam.inverseK * Vec3(x + 0.5f, y + 0.5f, 1.0f));
+  const double t = -cam.position.y / d.y;
+  return {cam.position.x + t * d.x, cam.position.z + t * d.z};
+}
+
 std::string num(double v) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.9g", v);
@@ -74,12 +85,8 @@ TEST(ClosedForm, PointLightOverDiffusePlaneMatchesContractFormula) {
   int checked = 0;
   for (uint32_t y = 4; y < 48; y += 9)
     for (uint32_t x = 3; x < 64; x += 11) {
-      // Where the pixel centre's ray meets y = 0, computed independently of the renderer.
-      const Camera& cam = data.camera;
-      const Vec3 d = cam.cameraToWorld * (cam.inverseK * Vec3(x + 0.5f, y + 0.5f, 1.0f));
-      const double t = -cam.position.y / d.y;
-      const double px = cam.position.x + t * d.x, pz = cam.position.z + t * d.z;
-      const double dx = lightX - px, dy = lightY, dz = -pz;
+      const PlanePoint p = planePointAt(data.camera, x, y);
+      const double dx = lightX - p.x, dy = lightY, dz = -p.z;
       const double d2 = dx * dx + dy * dy + dz * dz;
       const double cosTheta = dy / std::sqrt(d2);
       const double expected = rho * power * cosTheta / (4 * kPi * kPi * d2);
@@ -182,10 +189,8 @@ TEST(ClosedForm, SphereLightOverDiffusePlaneMatchesIrradiance) {
   ImageRGB ratios(24, 24);
   for (uint32_t y = 0; y < 24; ++y)
     for (uint32_t x = 0; x < 24; ++x) {
-      const Camera& cam = data.camera;
-      const Vec3 d = cam.cameraToWorld * (cam.inverseK * Vec3(x + 0.5f, y + 0.5f, 1.0f));
-      const double t = -cam.position.y / d.y;
-      const double dx = lightX - (cam.position.x + t * d.x), dz = -(cam.position.z + t * d.z);
+      const PlanePoint p = planePointAt(data.camera, x, y);
+      const double dx = lightX - p.x, dz = -p.z;
       const double d2 = dx * dx + lightY * lightY + dz * dz;
       const double expected = rho * L * radius * radius / d2 * (lightY / std::sqrt(d2));
       ratios.set(x, y, r.image.at(x, y) / float(expected));
@@ -234,17 +239,14 @@ void expectLightsSumToEveryContribution(int extraLights) {
   ImageRGB ratios(24, 24);
   for (uint32_t y = 0; y < 24; ++y)
     for (uint32_t x = 0; x < 24; ++x) {
-      const Camera& cam = data.camera;
-      const Vec3 d = cam.cameraToWorld * (cam.inverseK * Vec3(x + 0.5f, y + 0.5f, 1.0f));
-      const double t = -cam.position.y / d.y;
-      const double px = cam.position.x + t * d.x, pz = cam.position.z + t * d.z;
+      const PlanePoint at = planePointAt(data.camera, x, y);
       double expected[3] = {0, 0, 0};
       for (const PointLight& p : points) {
-        const double dx = p.x - px, dz = p.z - pz, d2 = dx * dx + p.y * p.y + dz * dz;
+        const double dx = p.x - at.x, dz = p.z - at.z, d2 = dx * dx + p.y * p.y + dz * dz;
         const double e = rho * p.power * (p.y / std::sqrt(d2)) / (4 * kPi * kPi * d2);
         for (int c = 0; c < 3; ++c) expected[c] += e * p.color[c];
       }
-      const double dx = sx - px, dz = sz - pz, d2 = dx * dx + sy * sy + dz * dz;
+      const double dx = sx - at.x, dz = sz - at.z, d2 = dx * dx + sy * sy + dz * dz;
       const double e = rho * L * radius * radius / d2 * (sy / std::sqrt(d2));
       for (int c = 0; c < 3; ++c) expected[c] += e;
       const Vec3 v = r.image.at(x, y);
