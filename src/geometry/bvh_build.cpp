@@ -379,13 +379,16 @@ class Builder {
   // ranges and centroid bounds (not their bounds).
   template <typename GoesLeft>
   void partition(const NodeRange& range, const GoesLeft& goesLeft, Split* out) {
+    // Through a plain pointer: the swaps below would otherwise make the compiler reload the
+    // vector's data pointer for every primitive.
+    BuildPrim* const prims = prims_.data();
     Box4 leftCentroids, rightCentroids;
     uint32_t i = range.begin, j = range.end;
     for (;;) {
-      for (; i < j && goesLeft(prims_[i]); ++i) leftCentroids.grow(prims_[i].centroid2());
-      for (; i < j && !goesLeft(prims_[j - 1]); --j) rightCentroids.grow(prims_[j - 1].centroid2());
+      for (; i < j && goesLeft(prims[i]); ++i) leftCentroids.grow(prims[i].centroid2());
+      for (; i < j && !goesLeft(prims[j - 1]); --j) rightCentroids.grow(prims[j - 1].centroid2());
       if (i >= j) break;
-      std::swap(prims_[i], prims_[j - 1]);
+      std::swap(prims[i], prims[j - 1]);
     }
     out->left = {range.begin, i, Box4(), leftCentroids};
     out->right = {i, range.end, Box4(), rightCentroids};
