@@ -30,6 +30,15 @@ PlanePoint planePointAt(const Camera& cam, uint32_t x, uint32_t y) {
   return {cam.position.x + t * d.x, cam.position.z + t * d.z};
 }
 
+// Radiance a diffuse plane y = 0 of albedo rho reflects at `at` under a sphere light of radiance
+// L and radius r centred at (lx, ly, lz), wholly above the plane (ly > r): the sphere's
+// irradiance is pi L r^2 cos / d^2, and the plane reflects rho / pi of it.
+double sphereLightOnPlane(double rho, double L, double r, double lx, double ly, double lz,
+                          const PlanePoint& at) {
+  const double dx = lx - at.x, dz = lz - at.z, d2 = dx * dx + ly * ly + dz * dz;
+  return rho * L * r * r / d2 * (ly / std::sqrt(d2));
+}
+
 std::string num(double v) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.9g", v);
@@ -189,10 +198,8 @@ TEST(ClosedForm, SphereLightOverDiffusePlaneMatchesIrradiance) {
   ImageRGB ratios(24, 24);
   for (uint32_t y = 0; y < 24; ++y)
     for (uint32_t x = 0; x < 24; ++x) {
-      const PlanePoint p = planePointAt(data.camera, x, y);
-      const double dx = lightX - p.x, dz = -p.z;
-      const double d2 = dx * dx + lightY * lightY + dz * dz;
-      const double expected = rho * L * radius * radius / d2 * (lightY / std::sqrt(d2));
+      const double expected = sphereLightOnPlane(rho, L, radius, lightX, lightY, 0,
+                                                 planePointAt(data.camera, x, y));
       ratios.set(x, y, r.image.at(x, y) / float(expected));
     }
   for (int c = 0; c < 3; ++c) {
@@ -246,8 +253,7 @@ void expectLightsSumToEveryContribution(int extraLights) {
         const double e = rho * p.power * (p.y / std::sqrt(d2)) / (4 * kPi * kPi * d2);
         for (int c = 0; c < 3; ++c) expected[c] += e * p.color[c];
       }
-      const double dx = sx - at.x, dz = sz - at.z, d2 = dx * dx + sy * sy + dz * dz;
-      const double e = rho * L * radius * radius / d2 * (sy / std::sqrt(d2));
+      const double e = sphereLightOnPlane(rho, L, radius, sx, sy, sz, at);
       for (int c = 0; c < 3; ++c) expected[c] += e;
       const Vec3 v = r.image.at(x, y);
       ratios.set(x, y, Vec3(float(v.x / expected[0]), float(v.y / expected[1]),

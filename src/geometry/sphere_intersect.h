@@ -27,13 +27,11 @@ CANDELA_HDI bool intersectSphere(const Sphere& s, const Ray& r, float tMax, floa
   const Vec3& d = r.direction;
   const float halfB = dot(oc, d);
   const float c = lengthSquared(oc) - s.radius * s.radius;
-  // An origin outside the sphere moving away from it: both roots are negative (their product
-  // c / a is positive, their sum -2 halfB / a negative). Most rays meet most of a room's wall
-  // spheres this way, so this test spares them the square roots and divisions below.
-  if (c > 0.0f && halfB > 0.0f) return false;
-  // Outside and moving towards it, the near root c / q has q <= -2 halfB, so it lies at least
-  // c / (-2 halfB) away: beyond tMax (a shadow ray's light, a hit already found) that is a miss
-  // without the square roots either.
+  // From outside (c > 0) a miss is often clear before any square root or division, which spares
+  // most rays most of a room's wall spheres. Moving away (halfB >= 0), both roots are negative
+  // (their product c / a is positive, their sum -2 halfB / a not): the right-hand side below is
+  // then at most 0. Moving towards it, the near root c / q has q <= -2 halfB, so it lies at least
+  // c / (-2 halfB) away, and beyond tMax (a shadow ray's light, a hit already found) it is missed.
   if (c > 0.0f && c >= tMax * (-2.0f * halfB)) return false;
   const float a = lengthSquared(d);
 

@@ -71,43 +71,9 @@ Backend chooseBackend(Backend requested, std::string* note) {
   return Backend::Cpu;
 }
 
-namespace {
-
-RenderResult renderOnCpu(const SceneData& scene, const RenderControl& control) {
-  CpuRenderOptions options;
-  options.threads = control.threads;
-  options.progress = control.progress;
-  options.cancel = control.cancel;
-  return renderCpu(scene.view(), options);
-}
-
-[[noreturn]] void notInThisBuild(Backend backend) {
-  throw CliError(kExitFailure, std::string("the ") + backendName(backend) +
-                                   " backend is not available in this build");
-}
-
-#if defined(CANDELA_HAS_CUDA)
-RenderResult renderOnGpu(const CudaScene& gpuScene, const RenderControl& control) {
-  CudaRenderOptions options;
-  options.progress = control.progress;
-  options.cancel = control.cancel;
-  options.sceneLabel = control.sceneLabel;
-  return gpuScene.render(options);
-}
-#endif
-
-}  // namespace
-
+// A still is a sequence of one frame.
 RenderResult renderScene(Backend backend, const SceneData& scene, const RenderControl& control) {
-  if (backend != Backend::Cuda) return renderOnCpu(scene, control);
-#if defined(CANDELA_HAS_CUDA)
-  try {
-    return renderOnGpu(CudaScene(scene), control);
-  } catch (const CudaError& e) {
-    throw CliError(kExitFailure, e.what());
-  }
-#endif
-  notInThisBuild(backend);
+  return FrameRenderer(backend).render(scene, FramePreparation::Built, control);
 }
 
 struct FrameRenderer::Resident {
@@ -121,7 +87,13 @@ FrameRenderer::~FrameRenderer() = default;
 
 RenderResult FrameRenderer::render(const SceneData& scene, FramePreparation change,
                                    const RenderControl& control) {
-  if (backend_ != Backend::Cuda) return renderOnCpu(scene, control);
+  if (backend_ != Backend::Cuda) {
+    CpuRenderOptions options;
+    options.threads = control.threads;
+    options.progress = control.progress;
+    options.cancel = control.cancel;
+    return renderCpu(scene.view(), options);
+  }
 #if defined(CANDELA_HAS_CUDA)
   try {
     std::unique_ptr<CudaScene>& gpuScene = resident_->gpuScene;
@@ -130,7 +102,11 @@ RenderResult FrameRenderer::render(const SceneData& scene, FramePreparation chan
     } else {
       gpuScene = std::make_unique<CudaScene>(scene);
     }
-    return renderOnGpu(*gpuScene, control);
+    CudaRenderOptions options;
+    options.progress = control.progress;
+    options.cancel = control.cancel;
+    options.sceneLabel = control.sceneLabel;
+    return gpuScene->render(options);
   } catch (const CudaError& e) {
     resident_->gpuScene.reset();  // a failed update leaves the device copy unknown
     throw CliError(kExitFailure, e.what());
@@ -138,7 +114,8 @@ RenderResult FrameRenderer::render(const SceneData& scene, FramePreparation chan
 #else
   (void)change;
 #endif
-  notInThisBuild(backend_);
+  throw CliError(kExitFailure, std::string("the ") + backendName(backend_) +
+                                   " backend is not available in this build");
 }
 
 }  // namespace candela::cli
