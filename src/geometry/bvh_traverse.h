@@ -48,14 +48,15 @@ namespace detail {
 // nearest hit. Returns whether a hit was found; `hit` receives it (closest mode).
 //
 // At each 4-wide node all four child boxes are tested together. Leaf children that are hit are
-// intersected at once; inner children that are hit are visited nearest first, the others pushed
-// with their entry distances, so that once a nearer hit is known a popped subtree that starts
-// beyond it is skipped without touching its node.
+// intersected at once, in slot order, each skipped when a hit found in an earlier one lies
+// before its box (sorting them by entry distance was measured slower); inner children that are hit
+// are visited nearest first, the others pushed with their entry distances, so that once a nearer
+// hit is known a popped subtree that starts beyond it is skipped without touching its node.
 CANDELA_HDI bool traverseBvh(const SceneView& scene, const Ray& ray, bool anyHit, uint32_t skipPrim,
                              Hit* hit) {
   if (scene.nodeCount == 0) return false;
-  const RayBoxTester box(ray.origin, Vec3(1.0f / ray.direction.x, 1.0f / ray.direction.y,
-                                          1.0f / ray.direction.z));
+  const RayBoxTester box(
+      ray.origin, Vec3(1.0f / ray.direction.x, 1.0f / ray.direction.y, 1.0f / ray.direction.z));
   float tMax = ray.tMax;
   bool found = false;
   uint32_t stackNode[kBvhStackSize];
@@ -68,7 +69,7 @@ CANDELA_HDI bool traverseBvh(const SceneView& scene, const Ray& ray, bool anyHit
     const int hitMask = box.hit4(node.lo, node.hi, tMax, entry);
 
     for (int c = 0; c < 4; ++c) {
-      if (!(hitMask >> c & 1) || node.count[c] == 0) continue;
+      if (!(hitMask >> c & 1) || node.count[c] == 0 || entry[c] > tMax) continue;
       for (uint32_t i = 0; i < node.count[c]; ++i) {
         const uint32_t prim = scene.primIndices[node.child[c] + i];
         if (prim == skipPrim) continue;
