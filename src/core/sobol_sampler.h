@@ -23,8 +23,7 @@ CANDELA_HDI uint32_t reverseBits32(uint32_t v) {
 #if defined(__CUDA_ARCH__)  // the device compilation pass: one instruction
   return __brev(v);
 #else
-  v = (v << 16) | (v >> 16);
-  v = ((v & 0x00ff00ffu) << 8) | ((v & 0xff00ff00u) >> 8);
+  v = __builtin_bswap32(v);  // one instruction on x86-64; then the bits within each byte
   v = ((v & 0x0f0f0f0fu) << 4) | ((v & 0xf0f0f0f0u) >> 4);
   v = ((v & 0x33333333u) << 2) | ((v & 0xccccccccu) >> 2);
   v = ((v & 0x55555555u) << 1) | ((v & 0xaaaaaaaau) >> 1);
@@ -43,13 +42,19 @@ CANDELA_HDI uint32_t sobolDimension1(uint32_t index) {
   return result;
 }
 
-// The second Sobol dimension computed bit-reversed (reverseBits32(sobolDimension1(i))): the
-// direction numbers reversed start at 1 and follow r_k = r_{k-1} ^ (r_{k-1} << 1).
+// The second Sobol dimension computed bit-reversed (reverseBits32(sobolDimension1(i))). Its
+// reversed direction numbers r_k = r_{k-1} ^ (r_{k-1} << 1), r_0 = 1, are the rows of Pascal's
+// triangle mod 2: bit j of r_k is set iff j's bits are a subset of k's (Lucas). So bit j of the
+// result is the XOR of the index bits k over all supersets k of j, which five shift-and-mask
+// steps compute (the subset-sum transform over the five bits of a bit position), branch-free:
+// a loop over the index bits mispredicted on every sample.
 CANDELA_HDI uint32_t sobolDimension1Reversed(uint32_t index) {
-  uint32_t result = 0, r = 1u;
-  for (; index != 0; index >>= 1, r ^= r << 1)
-    if (index & 1u) result ^= r;
-  return result;
+  index ^= (index >> 1) & 0x55555555u;
+  index ^= (index >> 2) & 0x33333333u;
+  index ^= (index >> 4) & 0x0f0f0f0fu;
+  index ^= (index >> 8) & 0x00ff00ffu;
+  index ^= (index >> 16) & 0x0000ffffu;
+  return index;
 }
 
 // The Laine–Karras hash on a bit-reversed value: each bit is flipped depending only on the bits
@@ -69,15 +74,21 @@ CANDELA_HDI uint32_t owenScramble(uint32_t v, uint32_t seed) {
   return reverseBits32(laineKarrasHash(reverseBits32(v), seed));
 }
 
-// Element i of a pseudo-random permutation of [0, n) chosen by `seed` (Kensler 2013,
-// "Correlated Multi-Jittered Sampling"), by cycle walking over a power-of-two range.
-CANDELA_HDI uint32_t permutationElement(uint32_t i, uint32_t n, uint32_t seed) {
+// The smallest mask of low bits that covers n - 1: the range permutationElement walks in.
+CANDELA_HDI uint32_t permutationMask(uint32_t n) {
   uint32_t w = n - 1;
   w |= w >> 1;
   w |= w >> 2;
   w |= w >> 4;
   w |= w >> 8;
   w |= w >> 16;
+  return w;
+}
+
+// Element i of a pseudo-random permutation of [0, n) chosen by `seed` (Kensler 2013,
+// "Correlated Multi-Jittered Sampling"), by cycle walking over the power-of-two range w + 1,
+// w = permutationMask(n).
+CANDELA_HDI uint32_t permutationElement(uint32_t i, uint32_t n, uint32_t w, uint32_t seed) {
   do {
     i ^= seed;
     i *= 0xe170893du;
@@ -98,7 +109,12 @@ CANDELA_HDI uint32_t permutationElement(uint32_t i, uint32_t n, uint32_t seed) {
     i &= w;
     i ^= i >> 5;
   } while (i >= n);
-  return (i + seed) % n;
+  // A power-of-two n (the usual spp) needs no division.
+  return n == w + 1 ? (i + seed) & w : (i + seed) % n;
+}
+
+CANDELA_HDI uint32_t permutationElement(uint32_t i, uint32_t n, uint32_t seed) {
+  return permutationElement(i, n, permutationMask(n), seed);
 }
 
 // 32 random bits as a float in [0, 1).
@@ -112,20 +128,21 @@ class SampleStream {
   CANDELA_HDI SampleStream(uint64_t seed, uint64_t pixelIndex, uint32_t sampleIndex, uint32_t spp)
       : pixelKey_(mix64(mix64(seed ^ 0x6a09e667f3bcc909ull) ^ pixelIndex)),
         sampleIndex_(sampleIndex),
-        spp_(spp > 0 ? spp : 1) {}
+        spp_(spp > 0 ? spp : 1),
+        sppMask_(permutationMask(spp_)) {}
 
   // owenScramble(sobolDimension0(index), s) and owenScramble(sobolDimension1(index), s),
   // computed in the bit-reversed domain, where dimension 0 is the index itself: two bit
   // reversals per 2D sample instead of six, the same bits.
   CANDELA_HDI float next1D() {
     const uint64_t h = dimensionHash();
-    const uint32_t index = permutationElement(sampleIndex_, spp_, uint32_t(h));
+    const uint32_t index = permutationElement(sampleIndex_, spp_, sppMask_, uint32_t(h));
     return bitsToUnitFloat(reverseBits32(laineKarrasHash(index, uint32_t(h >> 32))));
   }
 
   CANDELA_HDI void next2D(float* u, float* v) {
     const uint64_t h = dimensionHash();
-    const uint32_t index = permutationElement(sampleIndex_, spp_, uint32_t(h));
+    const uint32_t index = permutationElement(sampleIndex_, spp_, sppMask_, uint32_t(h));
     const uint64_t scramble = mix64(h);
     *u = bitsToUnitFloat(reverseBits32(laineKarrasHash(index, uint32_t(scramble))));
     *v = bitsToUnitFloat(
@@ -140,6 +157,7 @@ class SampleStream {
   uint64_t pixelKey_;
   uint32_t sampleIndex_;
   uint32_t spp_;
+  uint32_t sppMask_;
   uint32_t dimension_ = 0;
 };
 
