@@ -7,6 +7,7 @@
 
 #include <cstdint>
 
+#include "core/bits.h"
 #include "geometry/aabb.h"
 #include "geometry/ray.h"
 #include "geometry/sphere_intersect.h"
@@ -67,9 +68,14 @@ CANDELA_HDI bool traverseBvh(const SceneView& scene, const Ray& ray, bool anyHit
     const BvhNode& node = scene.nodes[current];
     float entry[4];
     const int hitMask = box.hit4(node.lo, node.hi, tMax, entry);
+    const int leafMask = (node.count[0] != 0) | (node.count[1] != 0) << 1 |
+                         (node.count[2] != 0) << 2 | (node.count[3] != 0) << 3;
 
-    for (int c = 0; c < 4; ++c) {
-      if (!(hitMask >> c & 1) || node.count[c] == 0 || entry[c] > tMax) continue;
+    // Children are picked from bit masks, not by testing each of the four slots: those tests were
+    // the traversal's most mispredicted branches.
+    for (int leaves = hitMask & leafMask; leaves != 0; leaves &= leaves - 1) {
+      const int c = lowestSetBit(uint32_t(leaves));
+      if (entry[c] > tMax) continue;
       for (uint32_t i = 0; i < node.count[c]; ++i) {
         const uint32_t prim = scene.primIndices[node.child[c] + i];
         if (prim == skipPrim) continue;
@@ -85,8 +91,9 @@ CANDELA_HDI bool traverseBvh(const SceneView& scene, const Ray& ray, bool anyHit
     uint32_t next[4];
     float nextEntry[4];
     int nextCount = 0;
-    for (int c = 0; c < 4; ++c) {
-      if (!(hitMask >> c & 1) || node.count[c] != 0 || entry[c] > tMax) continue;
+    for (int inner = hitMask & ~leafMask; inner != 0; inner &= inner - 1) {
+      const int c = lowestSetBit(uint32_t(inner));
+      if (entry[c] > tMax) continue;
       int k = nextCount++;
       for (; k > 0 && nextEntry[k - 1] > entry[c]; --k) {
         next[k] = next[k - 1];
