@@ -261,5 +261,30 @@ TEST(FloatError, NextFloatMatchesNextafter) {
   EXPECT_EQ(nextFloatDown(-INFINITY), -INFINITY);
 }
 
+// The branch-free rounding in offsetRayOrigin against its definition: each coordinate of p +
+// offset moved one float further along the offset's sign, and left alone where the offset is 0.
+TEST(FloatError, OffsetRayOriginRoundsAwayFromThePoint) {
+  std::mt19937 gen(7);
+  std::uniform_real_distribution<float> coordinate(-100.0f, 100.0f), unit(-1.0f, 1.0f);
+  for (int i = 0; i < 20000; ++i) {
+    const Vec3 p(coordinate(gen), i % 3 == 0 ? 0.0f : coordinate(gen), coordinate(gen));
+    const Vec3 error(1e-4f * std::abs(unit(gen)), 1e-4f, 1e-5f);
+    // Every fourth normal lies along an axis, so some offsets are exactly 0.
+    const Vec3 n = i % 4 == 0 ? Vec3(0.0f, i % 8 == 0 ? 1.0f : -1.0f, 0.0f)
+                              : normalize(Vec3(unit(gen), unit(gen), unit(gen)));
+    const Vec3 w(unit(gen), unit(gen), unit(gen));
+    Vec3 offset = n * dot(abs(n), error);
+    if (dot(w, n) < 0.0f) offset = -offset;
+    const Vec3 po = offsetRayOrigin(p, error, n, w);
+    for (int a = 0; a < 3; ++a) {
+      const float sum = p[a] + offset[a];
+      const float expected = offset[a] > 0.0f   ? std::nextafter(sum, INFINITY)
+                             : offset[a] < 0.0f ? std::nextafter(sum, -INFINITY)
+                                                : sum;
+      EXPECT_EQ(po[a], expected) << "axis " << a << " p " << p[a] << " offset " << offset[a];
+    }
+  }
+}
+
 }  // namespace
 }  // namespace candela
