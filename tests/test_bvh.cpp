@@ -151,6 +151,22 @@ void expectValidBvh(const TestScene& s) {
   EXPECT_EQ(leaves, bvh.leafCount);
   EXPECT_EQ(maxDepth, bvh.maxDepth);
   EXPECT_LE(bvh.maxDepth, kBvhMaxDepth);
+
+  // The 4-wide nodes the renderer traverses: inner slots point at later nodes, and the leaves
+  // hold as many primitives as the scene has.
+  uint32_t wideLeafPrims = 0;
+  for (size_t i = 0; i < bvh.wideNodes.size(); ++i) {
+    const BvhNode& w = bvh.wideNodes[i];
+    for (int c = 0; c < 4; ++c) {
+      if (w.count[c] > 0) {
+        wideLeafPrims += w.count[c];
+      } else if (w.child[c] != kNoBvhChild) {
+        EXPECT_GT(w.child[c], i);
+        EXPECT_LT(w.child[c], bvh.wideNodes.size());
+      }
+    }
+  }
+  EXPECT_EQ(wideLeafPrims, s.primitiveCount());
 }
 
 // Compares intersectClosest and intersectAny with brute force on `rays` rays; returns the number
