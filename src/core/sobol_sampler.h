@@ -140,6 +140,10 @@ class SampleStream {
     return bitsToUnitFloat(reverseBits32(laineKarrasHash(index, uint32_t(h >> 32))));
   }
 
+  // Passes over one dimension unused (a point light's position needs no random numbers), so
+  // the dimensions after it are the same whether or not it was drawn.
+  CANDELA_HDI void skip() { ++dimension_; }
+
   CANDELA_HDI void next2D(float* u, float* v) {
     const uint64_t h = dimensionHash();
     const uint32_t index = permutationElement(sampleIndex_, spp_, sppMask_, uint32_t(h));

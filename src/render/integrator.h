@@ -70,20 +70,29 @@ CANDELA_HDI Vec3 sampleOneLight(const SceneView& scene, const Light& light, cons
 // else from one picked in proportion to power.
 CANDELA_HDI Vec3 estimateDirect(const SceneView& scene, const Material& m, const SurfacePoint& sp,
                                 const Vec3& wo, SampleStream& rng, RayCounters& counters) {
-  // Dimensions are drawn for every light, or three for the picked one, whatever the geometry,
-  // so the stream's layout never depends on it.
-  float u1, u2;
+  // A dimension is taken for every light, or two for the picked one, whatever the geometry, so
+  // the stream's layout never depends on it; point lights skip theirs without computing it.
+  float u1 = 0.0f, u2 = 0.0f;
   if (scene.lightCount <= kSampleEveryLightUpTo) {
     Vec3 sum(0.0f);
     for (uint32_t i = 0; i < scene.lightCount; ++i) {
-      rng.next2D(&u1, &u2);
-      sum += sampleOneLight(scene, scene.lights[i], m, sp, wo, u1, u2, counters);
+      const Light& light = scene.lights[i];
+      if (light.type == LightType::Point) {
+        rng.skip();
+      } else {
+        rng.next2D(&u1, &u2);
+      }
+      sum += sampleOneLight(scene, light, m, sp, wo, u1, u2, counters);
     }
     return sum;
   }
   const float uLight = rng.next1D();
-  rng.next2D(&u1, &u2);
   const int index = selectLight(scene, uLight);
+  if (index < 0 || scene.lights[index].type == LightType::Point) {
+    rng.skip();
+  } else {
+    rng.next2D(&u1, &u2);
+  }
   if (index < 0) return Vec3(0.0f);
   return sampleOneLight(scene, scene.lights[index], m, sp, wo, u1, u2, counters);
 }
