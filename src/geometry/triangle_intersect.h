@@ -59,33 +59,40 @@ CANDELA_HDI float maxAbs3(float a, float b, float c) {
 }
 
 // The ray-space shear, applied identically to every vertex (see the file comment).
-CANDELA_HDI Vec3 toRaySpace(const Vec3& p, const Vec3& origin, int kx, int ky, int kz, float sx,
-                            float sy, float sz) {
+template <class Axes>
+CANDELA_HDI Vec3 toRaySpace(const Vec3& p, const Vec3& origin, const Axes& k, float sx, float sy,
+                            float sz) {
   const Vec3 q = p - origin;
-  const float z = q[kz];
-  return {q[kx] + sx * z, q[ky] + sy * z, sz * z};
+  const float z = q[k.z];
+  return {q[k.x] + sx * z, q[k.y] + sy * z, sz * z};
 }
 
-}  // namespace detail
+// The permutation that makes the ray's dominant axis z: known at compile time (each of the three
+// is its own copy of the test, so coordinates are picked without selects), or at run time.
+template <int X, int Y, int Z>
+struct FixedAxes {
+  static constexpr int x = X, y = Y, z = Z;
+};
+struct RuntimeAxes {
+  int x, y, z;
+};
 
-// Nearest-or-only hit of the ray with triangle (p0, p1, p2) for t in (0, tMax).
-CANDELA_HDI bool intersectTriangle(const Vec3& p0, const Vec3& p1, const Vec3& p2, const Ray& ray,
-                                   float tMax, TriangleHit* hit) {
+template <class Axes>
+CANDELA_HDI bool intersectTriangleAlong(const Axes& k, const Vec3& p0, const Vec3& p1,
+                                        const Vec3& p2, const Ray& ray, float tMax,
+                                        TriangleHit* hit) {
   // Ray space: permute so the ray's dominant axis is z, then shear the ray onto +z.
   const Vec3& d = ray.direction;
-  const int kz = maxDimension(abs(d));
-  const int kx = kz == 2 ? 0 : kz + 1;
-  const int ky = kx == 2 ? 0 : kx + 1;
-  const float sz = 1.0f / d[kz];
-  const float sx = -d[kx] * sz, sy = -d[ky] * sz;
-  const Vec3 q0 = detail::toRaySpace(p0, ray.origin, kx, ky, kz, sx, sy, sz);
-  const Vec3 q1 = detail::toRaySpace(p1, ray.origin, kx, ky, kz, sx, sy, sz);
-  const Vec3 q2 = detail::toRaySpace(p2, ray.origin, kx, ky, kz, sx, sy, sz);
+  const float sz = 1.0f / d[k.z];
+  const float sx = -d[k.x] * sz, sy = -d[k.y] * sz;
+  const Vec3 q0 = toRaySpace(p0, ray.origin, k, sx, sy, sz);
+  const Vec3 q1 = toRaySpace(p1, ray.origin, k, sx, sy, sz);
+  const Vec3 q2 = toRaySpace(p2, ray.origin, k, sx, sy, sz);
 
   // Edge functions: e_i is twice the signed area of (origin, next, next-next) for vertex i.
-  const float e0 = detail::edgeFunction(q1.x, q2.y, q1.y, q2.x);
-  const float e1 = detail::edgeFunction(q2.x, q0.y, q2.y, q0.x);
-  const float e2 = detail::edgeFunction(q0.x, q1.y, q0.y, q1.x);
+  const float e0 = edgeFunction(q1.x, q2.y, q1.y, q2.x);
+  const float e1 = edgeFunction(q2.x, q0.y, q2.y, q0.x);
+  const float e2 = edgeFunction(q0.x, q1.y, q0.y, q1.x);
   if ((e0 < 0.0f || e1 < 0.0f || e2 < 0.0f) && (e0 > 0.0f || e1 > 0.0f || e2 > 0.0f)) return false;
   const float det = e0 + e1 + e2;
   if (det == 0.0f) return false;
@@ -99,14 +106,14 @@ CANDELA_HDI bool intersectTriangle(const Vec3& p0, const Vec3& p1, const Vec3& p
   if (t >= tMax) return false;
 
   // Conservative bound on the error of t (pbrt-v4, section 6.8.7): accept only t > deltaT.
-  const float maxZt = detail::maxAbs3(q0.z, q1.z, q2.z);
-  const float maxXt = detail::maxAbs3(q0.x, q1.x, q2.x);
-  const float maxYt = detail::maxAbs3(q0.y, q1.y, q2.y);
+  const float maxZt = maxAbs3(q0.z, q1.z, q2.z);
+  const float maxXt = maxAbs3(q0.x, q1.x, q2.x);
+  const float maxYt = maxAbs3(q0.y, q1.y, q2.y);
   const float deltaZ = gammaBound(3) * maxZt;
   const float deltaX = gammaBound(5) * (maxXt + maxZt);
   const float deltaY = gammaBound(5) * (maxYt + maxZt);
   const float deltaE = 2.0f * (gammaBound(2) * maxXt * maxYt + deltaY * maxXt + deltaX * maxYt);
-  const float maxE = detail::maxAbs3(e0, e1, e2);
+  const float maxE = maxAbs3(e0, e1, e2);
   const float deltaT =
       3.0f * (gammaBound(3) * maxE * maxZt + deltaE * maxZt + deltaZ * maxE) * fabsf(invDet);
   if (t <= deltaT) return false;
@@ -119,6 +126,36 @@ CANDELA_HDI bool intersectTriangle(const Vec3& p0, const Vec3& p1, const Vec3& p
   hit->b1 = e1 * invDet;
   hit->b2 = e2 * invDet;
   return true;
+}
+
+}  // namespace detail
+
+// Nearest-or-only hit of the ray with triangle (p0, p1, p2) for t in (0, tMax).
+CANDELA_HDI bool intersectTriangle(const Vec3& p0, const Vec3& p1, const Vec3& p2, const Ray& ray,
+                                   float tMax, TriangleHit* hit) {
+  const int kz = maxDimension(abs(ray.direction));
+#if CANDELA_DEVICE_CODE
+  // One copy on the GPU: neighbouring threads' rays often differ in their dominant axis, and
+  // three copies would run one after another.
+  const int kx = kz == 2 ? 0 : kz + 1;
+  const int ky = kx == 2 ? 0 : kx + 1;
+  return detail::intersectTriangleAlong(detail::RuntimeAxes{kx, ky, kz}, p0, p1, p2, ray, tMax,
+                                        hit);
+#else
+  // On the CPU the branch follows the ray, the same for all its triangles, and each copy reads
+  // fixed coordinates: the runtime permutation's selects were most of the test's instructions.
+  switch (kz) {
+    case 0:
+      return detail::intersectTriangleAlong(detail::FixedAxes<1, 2, 0>(), p0, p1, p2, ray, tMax,
+                                            hit);
+    case 1:
+      return detail::intersectTriangleAlong(detail::FixedAxes<2, 0, 1>(), p0, p1, p2, ray, tMax,
+                                            hit);
+    default:
+      return detail::intersectTriangleAlong(detail::FixedAxes<0, 1, 2>(), p0, p1, p2, ray, tMax,
+                                            hit);
+  }
+#endif
 }
 
 }  // namespace candela
