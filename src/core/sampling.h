@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/constants.h"
+#include "core/trig.h"
 #include "core/vec3.h"
 
 namespace candela {
@@ -16,16 +17,18 @@ CANDELA_HDI void sampleUniformDisk(float u1, float u2, float* x, float* y) {
     *x = *y = 0.0f;
     return;
   }
-  float r, phi;
+  // The angle is pi/4 (b/a) in the first case and pi/2 - pi/4 (a/b) in the second, where
+  // cos and sin trade places; either way the polynomial's argument is within [-pi/4, pi/4].
+  float s, c;
   if (fabsf(a) > fabsf(b)) {
-    r = a;
-    phi = (kPi / 4.0f) * (b / a);
+    sinCosQuarterPi((kPi / 4.0f) * (b / a), &s, &c);
+    *x = a * c;
+    *y = a * s;
   } else {
-    r = b;
-    phi = (kPi / 2.0f) - (kPi / 4.0f) * (a / b);
+    sinCosQuarterPi((kPi / 4.0f) * (a / b), &s, &c);
+    *x = b * s;
+    *y = b * c;
   }
-  *x = r * cosf(phi);
-  *y = r * sinf(phi);
 }
 
 // Cosine-weighted hemisphere around +z; pdf = cos(theta) / pi.
