@@ -66,34 +66,39 @@ CANDELA_HDI Vec3 sampleOneLight(const SceneView& scene, const Light& light, cons
   return f * ls.radiance * (weight / lightPdf);
 }
 
+// The two numbers a light sample of `light` uses, from the stream's next dimension. A point
+// light uses none: its dimension is passed over without computing them, so the stream's layout
+// is the same whatever the lights are.
+CANDELA_HDI void drawLightNumbers(SampleStream& rng, const Light& light, float* u1, float* u2) {
+  if (light.type == LightType::Point) {
+    rng.skip();
+  } else {
+    rng.next2D(u1, u2);
+  }
+}
+
 // Direct light at a diffuse point: from each light when there are few (kSampleEveryLightUpTo),
 // else from one picked in proportion to power.
 CANDELA_HDI Vec3 estimateDirect(const SceneView& scene, const Material& m, const SurfacePoint& sp,
                                 const Vec3& wo, SampleStream& rng, RayCounters& counters) {
-  // A dimension is taken for every light, or two for the picked one, whatever the geometry, so
-  // the stream's layout never depends on it; point lights skip theirs without computing it.
+  // One dimension per light, or two for the picked one (the pick and its light's sample),
+  // whatever the geometry, so the stream's layout never depends on it.
   float u1 = 0.0f, u2 = 0.0f;
   if (scene.lightCount <= kSampleEveryLightUpTo) {
     Vec3 sum(0.0f);
     for (uint32_t i = 0; i < scene.lightCount; ++i) {
-      const Light& light = scene.lights[i];
-      if (light.type == LightType::Point) {
-        rng.skip();
-      } else {
-        rng.next2D(&u1, &u2);
-      }
-      sum += sampleOneLight(scene, light, m, sp, wo, u1, u2, counters);
+      drawLightNumbers(rng, scene.lights[i], &u1, &u2);
+      sum += sampleOneLight(scene, scene.lights[i], m, sp, wo, u1, u2, counters);
     }
     return sum;
   }
   const float uLight = rng.next1D();
   const int index = selectLight(scene, uLight);
-  if (index < 0 || scene.lights[index].type == LightType::Point) {
+  if (index < 0) {
     rng.skip();
-  } else {
-    rng.next2D(&u1, &u2);
+    return Vec3(0.0f);
   }
-  if (index < 0) return Vec3(0.0f);
+  drawLightNumbers(rng, scene.lights[index], &u1, &u2);
   return sampleOneLight(scene, scene.lights[index], m, sp, wo, u1, u2, counters);
 }
 
