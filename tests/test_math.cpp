@@ -280,7 +280,7 @@ TEST(FloatError, NextFloatMatchesNextafter) {
   EXPECT_EQ(nextFloatDown(-INFINITY), -INFINITY);
 }
 
-// The branch-free rounding in offsetRayOrigin against its definition: each coordinate of p +
+// The rounding in offsetRayOrigin against its definition: each coordinate of p +
 // offset moved one float further along the offset's sign, and left alone where the offset is 0.
 TEST(FloatError, OffsetRayOriginRoundsAwayFromThePoint) {
   std::mt19937 gen(7);

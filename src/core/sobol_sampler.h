@@ -144,6 +144,15 @@ class SampleStream {
   // the dimensions after it are the same whether or not it was drawn.
   CANDELA_HDI void skip() { ++dimension_; }
 
+  // next2D when `used`, else skip(): for a dimension that only some lights or cameras need.
+  CANDELA_HDI void next2DIfUsed(bool used, float* u, float* v) {
+    if (used) {
+      next2D(u, v);
+    } else {
+      skip();
+    }
+  }
+
   CANDELA_HDI void next2D(float* u, float* v) {
     const uint64_t h = dimensionHash();
     const uint32_t index = permutationElement(sampleIndex_, spp_, sppMask_, uint32_t(h));

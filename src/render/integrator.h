@@ -70,11 +70,7 @@ CANDELA_HDI Vec3 sampleOneLight(const SceneView& scene, const Light& light, cons
 // light uses none: its dimension is passed over without computing them, so the stream's layout
 // is the same whatever the lights are.
 CANDELA_HDI void drawLightNumbers(SampleStream& rng, const Light& light, float* u1, float* u2) {
-  if (light.type == LightType::Point) {
-    rng.skip();
-  } else {
-    rng.next2D(u1, u2);
-  }
+  rng.next2DIfUsed(light.type != LightType::Point, u1, u2);
 }
 
 // Direct light at a diffuse point: from each light when there are few (kSampleEveryLightUpTo),

@@ -25,11 +25,7 @@ CANDELA_HDI Vec3 renderPixelSamples(const SceneView& scene, uint32_t x, uint32_t
     float jx = 0.5f, jy = 0.5f, lensU = 0.5f, lensV = 0.5f;
     if (scene.settings.antialiasing) rng.next2D(&jx, &jy);
     // A pinhole camera passes over the lens dimension, as a point light does over its own.
-    if (scene.camera.apertureRadius > 0.0f) {
-      rng.next2D(&lensU, &lensV);
-    } else {
-      rng.skip();
-    }
+    rng.next2DIfUsed(scene.camera.apertureRadius > 0.0f, &lensU, &lensV);
     const Ray ray = generateCameraRay(scene.camera, float(x) + jx, float(y) + jy, lensU, lensV);
     ++counters.camera;
     const Vec3 L = traceRadiance(scene, ray, rng, counters);
