@@ -259,6 +259,7 @@ class Builder {
   // primitives) or when no plane separates the centroids.
   bool sahSplit(const NodeRange& range, Split* out) {
     const uint32_t count = range.count();
+    if (count == 2) return pairSplit(range, out);
     const int binCount = static_cast<int>(std::min<uint32_t>(kMaxBins, count));
     const BinMapping map(range.centroids, binCount);
     const bool allAxes = count < kAllAxesBelow;
@@ -285,22 +286,41 @@ class Builder {
     const LargeTest isLarge(range.bounds);
     Box4 large, small;
     uint32_t largeCount = 0;
-    int32_t bin[4];
-    for (uint32_t i = range.begin; i < range.end; ++i) {
-      const BuildPrim& p = prims_[i];
-      const Float4 lo = p.lower(), hi = p.upper();
-      map.binsOf(lo + hi, bin);
-      for (int axis = firstAxis; axis <= lastAxis; ++axis) {
-        bins(axis, bin[axis]).grow(lo, hi);
-        ++binSizes[axis][bin[axis]];
-      }
-    }
-    // A pass of its own, and only in large nodes: folded into the binning loop it slowed the
-    // whole build by 40%, and in small nodes, where large and small primitives alternate at
-    // random, it rarely wins.
-    if (count >= kSizeSplitMinCount) {
+    if (allAxes) {
+      int32_t bin[4];
       for (uint32_t i = range.begin; i < range.end; ++i) {
-        const Float4 lo = prims_[i].lower(), hi = prims_[i].upper();
+        const BuildPrim& p = prims_[i];
+        const Float4 lo = p.lower(), hi = p.upper();
+        map.binsOf(lo + hi, bin);
+        for (int axis = 0; axis < 3; ++axis) {
+          bins(axis, bin[axis]).grow(lo, hi);
+          ++binSizes[axis][bin[axis]];
+        }
+      }
+      // A pass of its own: folded into the binning loop above it slowed the whole build by 40%.
+      // In small nodes, where large and small primitives alternate at random, it rarely wins.
+      if (count >= kSizeSplitMinCount) {
+        for (uint32_t i = range.begin; i < range.end; ++i) {
+          const Float4 lo = prims_[i].lower(), hi = prims_[i].upper();
+          if (isLarge(lo, hi)) {
+            large.grow(lo, hi);
+            ++largeCount;
+          } else {
+            small.grow(lo, hi);
+          }
+        }
+      }
+    } else {
+      // One axis, with the size split's sums in the same loop: a pass of its own re-read a large
+      // node from memory, and this one loop builds the dragon 1.2x faster.
+      static_assert(kAllAxesBelow >= kSizeSplitMinCount, "large nodes always price the size split");
+      const int axis = widest;
+      for (uint32_t i = range.begin; i < range.end; ++i) {
+        const BuildPrim& p = prims_[i];
+        const Float4 lo = p.lower(), hi = p.upper();
+        const int k = map.binOf(axis, p.lo[axis] + p.hi[axis]);
+        bins(axis, k).grow(lo, hi);
+        ++binSizes[axis][k];
         if (isLarge(lo, hi)) {
           large.grow(lo, hi);
           ++largeCount;
@@ -373,6 +393,36 @@ class Builder {
     out->left.bounds = leftBounds;
     out->right.bounds = rightBounds;
     out->axis = bestAxis;
+    return true;
+  }
+
+  // Two primitives: about half of all nodes, nearly all of which become leaves. The only split
+  // puts one on each side; binning finds it on the first axis along which the centroids differ
+  // (and BinMapping can scale them), at the cost computed below to the bit, so the tree is the
+  // same as if they were binned (the dragon builds 1.07x faster).
+  bool pairSplit(const NodeRange& range, Split* out) {
+    int axis = 0;
+    while (axis < 3 && !(range.centroids.extent(axis) > 0.0f &&
+                         std::isfinite(2.0f / range.centroids.extent(axis)))) {
+      ++axis;
+    }
+    if (axis == 3) return false;
+    Box4 a, b;
+    a.grow(prims_[range.begin].lower(), prims_[range.begin].upper());
+    b.grow(prims_[range.begin + 1].lower(), prims_[range.begin + 1].upper());
+    const float area = range.bounds.halfArea();
+    const float cost = a.halfArea() + b.halfArea();
+    if (2.0f <= kTraversalCost + (area > 0.0f ? cost / area : 0.0f)) return false;
+
+    const uint32_t first = range.begin, second = range.begin + 1;
+    if (prims_[second].lo[axis] + prims_[second].hi[axis] <
+        prims_[first].lo[axis] + prims_[first].hi[axis]) {
+      std::swap(prims_[first], prims_[second]);
+      std::swap(a, b);
+    }
+    out->left = {first, second, a, centroidBounds(first, second)};
+    out->right = {second, range.end, b, centroidBounds(second, range.end)};
+    out->axis = axis;
     return true;
   }
 
