@@ -139,11 +139,16 @@ class BinMapping {
   BinMapping(const Box4& centroids, int bins) : last_(float(bins - 1)) {
     for (int axis = 0; axis < 3; ++axis) {
       origin_[axis] = centroids.lo[axis];
-      const float s = static_cast<float>(bins) / centroids.extent(axis);
-      scale_[axis] = centroids.extent(axis) > 0.0f && std::isfinite(s) ? s : 0.0f;
+      scale_[axis] = scaleFor(centroids.extent(axis), bins);
     }
     originV_ = Float4::load(origin_);
     scaleV_ = Float4::load(scale_);
+  }
+  // Bins per unit of centroid extent; 0 for a flat axis or one too thin to scale, which puts
+  // every centroid in bin 0.
+  static float scaleFor(float extent, int bins) {
+    const float s = static_cast<float>(bins) / extent;
+    return extent > 0.0f && std::isfinite(s) ? s : 0.0f;
   }
   // The bins of a doubled centroid along x, y and z (lane 3 is meaningless).
   void binsOf(Float4 centroid2, int32_t bin[4]) const {
@@ -368,9 +373,7 @@ class Builder {
     }
     if (bestAxis < 0 && !splitBySize) return false;
 
-    const float area = range.bounds.halfArea();
-    const float splitCost = kTraversalCost + (area > 0.0f ? bestCost / area : 0.0f);
-    if (count <= kBvhMaxLeafSize && static_cast<float>(count) <= splitCost) return false;
+    if (cheaperAsLeaf(range, bestCost)) return false;
 
     if (splitBySize) {
       partition(
@@ -402,17 +405,12 @@ class Builder {
   // same as if they were binned (the dragon builds 1.07x faster).
   bool pairSplit(const NodeRange& range, Split* out) {
     int axis = 0;
-    while (axis < 3 && !(range.centroids.extent(axis) > 0.0f &&
-                         std::isfinite(2.0f / range.centroids.extent(axis)))) {
-      ++axis;
-    }
+    while (axis < 3 && BinMapping::scaleFor(range.centroids.extent(axis), 2) == 0.0f) ++axis;
     if (axis == 3) return false;
     Box4 a, b;
     a.grow(prims_[range.begin].lower(), prims_[range.begin].upper());
     b.grow(prims_[range.begin + 1].lower(), prims_[range.begin + 1].upper());
-    const float area = range.bounds.halfArea();
-    const float cost = a.halfArea() + b.halfArea();
-    if (2.0f <= kTraversalCost + (area > 0.0f ? cost / area : 0.0f)) return false;
+    if (cheaperAsLeaf(range, a.halfArea() + b.halfArea())) return false;
 
     const uint32_t first = range.begin, second = range.begin + 1;
     if (prims_[second].lo[axis] + prims_[second].hi[axis] <
@@ -424,6 +422,14 @@ class Builder {
     out->right = {second, range.end, b, centroidBounds(second, range.end)};
     out->axis = axis;
     return true;
+  }
+
+  // Whether a node that a split of SAH cost `splitCost` (children's count-weighted half areas)
+  // would divide is better left a leaf; only nodes that fit one can be.
+  static bool cheaperAsLeaf(const NodeRange& range, float splitCost) {
+    const float area = range.bounds.halfArea();
+    const float relativeCost = kTraversalCost + (area > 0.0f ? splitCost / area : 0.0f);
+    return range.count() <= kBvhMaxLeafSize && static_cast<float>(range.count()) <= relativeCost;
   }
 
   // Partitions `range` in place, primitives for which goesLeft holds first, and sets out's
