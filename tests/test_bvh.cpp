@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -100,73 +101,65 @@ Ray randomRay(std::mt19937& gen, int i) {
   return r;
 }
 
-// Checks every structural invariant of the scene's BVH.
+// Checks every structural invariant of the scene's BVH: the 4-wide nodes the renderer traverses.
 void expectValidBvh(const TestScene& s) {
   const BvhBuildResult& bvh = s.bvh;
-  static_assert(sizeof(BinaryBvhNode) == 32, "node layout");
+  const std::vector<BvhNode>& nodes = bvh.wideNodes;
   ASSERT_EQ(bvh.primIndices.size(), s.primitiveCount());
   if (s.primitiveCount() == 0) {
-    EXPECT_TRUE(bvh.nodes.empty());
+    EXPECT_TRUE(nodes.empty());
     return;
   }
-  ASSERT_FALSE(bvh.nodes.empty());
+  ASSERT_FALSE(nodes.empty());
   std::vector<int> primSeen(s.primitiveCount(), 0);
-  uint32_t leaves = 0, maxDepth = 0, expectedNext = 0;
+  uint32_t leaves = 0, expectedNext = 0;
   struct Entry {
     uint32_t node, depth;
+    Bounds3 bounds;  // the parent's box for this node
   };
-  std::vector<Entry> stack = {{0, 0}};
-  // A pre-order walk (first child before second) must visit the nodes exactly in index order.
+  const float inf = std::numeric_limits<float>::infinity();
+  std::vector<Entry> stack = {{0, 0, Bounds3(Vec3(-inf), Vec3(inf))}};
+  // A pre-order walk (slots in order) must visit the nodes exactly in index order.
   while (!stack.empty()) {
     const Entry e = stack.back();
     stack.pop_back();
     ASSERT_EQ(e.node, expectedNext++) << "not depth-first";
-    const BinaryBvhNode& n = bvh.nodes[e.node];
-    const Bounds3 nodeBounds(n.boundsMin, n.boundsMax);
-    if (n.primCount > 0) {
-      ++leaves;
-      maxDepth = std::max(maxDepth, e.depth);
-      EXPECT_LE(n.primCount, kBvhMaxLeafSize);
-      ASSERT_LE(n.offset + n.primCount, bvh.primIndices.size());
-      for (uint32_t i = 0; i < n.primCount; ++i) {
-        const uint32_t p = bvh.primIndices[n.offset + i];
-        ASSERT_LT(p, s.primitiveCount());
-        ++primSeen[p];
-        EXPECT_TRUE(nodeBounds.contains(s.primitiveBounds(p))) << "primitive " << p;
-      }
-      continue;
-    }
-    const uint32_t first = e.node + 1, second = n.offset;
-    ASSERT_LT(first, second);
-    ASSERT_LT(second, bvh.nodes.size());
-    for (uint32_t child : {first, second}) {
-      const BinaryBvhNode& c = bvh.nodes[child];
-      EXPECT_TRUE(nodeBounds.contains(Bounds3(c.boundsMin, c.boundsMax))) << "node " << child;
-    }
-    stack.push_back({second, e.depth + 1});
-    stack.push_back({first, e.depth + 1});
-  }
-  EXPECT_EQ(expectedNext, bvh.nodes.size()) << "unreachable nodes";
-  for (uint32_t p = 0; p < s.primitiveCount(); ++p) EXPECT_EQ(primSeen[p], 1) << "primitive " << p;
-  EXPECT_EQ(leaves, bvh.leafCount);
-  EXPECT_EQ(maxDepth, bvh.maxDepth);
-  EXPECT_LE(bvh.maxDepth, kBvhMaxDepth);
-
-  // The 4-wide nodes the renderer traverses: inner slots point at later nodes, and the leaves
-  // hold as many primitives as the scene has.
-  uint32_t wideLeafPrims = 0;
-  for (size_t i = 0; i < bvh.wideNodes.size(); ++i) {
-    const BvhNode& w = bvh.wideNodes[i];
+    EXPECT_LE(e.depth, bvh.maxDepth);
+    const BvhNode& w = nodes[e.node];
+    int used = 0;
+    std::vector<Entry> inner;
     for (int c = 0; c < 4; ++c) {
+      if (w.child[c] == kNoBvhChild) {
+        EXPECT_EQ(w.count[c], 0);
+        continue;
+      }
+      EXPECT_EQ(used++, c) << "node " << e.node << ": empty slots must come last";
+      const Bounds3 box(Vec3(w.lo[0][c], w.lo[1][c], w.lo[2][c]),
+                        Vec3(w.hi[0][c], w.hi[1][c], w.hi[2][c]));
+      EXPECT_TRUE(e.bounds.contains(box)) << "node " << e.node << " slot " << c;
       if (w.count[c] > 0) {
-        wideLeafPrims += w.count[c];
-      } else if (w.child[c] != kNoBvhChild) {
-        EXPECT_GT(w.child[c], i);
-        EXPECT_LT(w.child[c], bvh.wideNodes.size());
+        ++leaves;
+        EXPECT_LE(w.count[c], kBvhMaxLeafSize);
+        ASSERT_LE(w.child[c] + w.count[c], bvh.primIndices.size());
+        for (uint32_t i = 0; i < w.count[c]; ++i) {
+          const uint32_t p = bvh.primIndices[w.child[c] + i];
+          ASSERT_LT(p, s.primitiveCount());
+          ++primSeen[p];
+          EXPECT_TRUE(box.contains(s.primitiveBounds(p))) << "primitive " << p;
+        }
+      } else {
+        ASSERT_GT(w.child[c], e.node);
+        ASSERT_LT(w.child[c], nodes.size());
+        inner.push_back({w.child[c], e.depth + 1, box});
       }
     }
+    EXPECT_GE(used, e.node == 0 ? 1 : 2) << "node " << e.node;
+    stack.insert(stack.end(), inner.rbegin(), inner.rend());
   }
-  EXPECT_EQ(wideLeafPrims, s.primitiveCount());
+  EXPECT_EQ(expectedNext, nodes.size()) << "unreachable nodes";
+  for (uint32_t p = 0; p < s.primitiveCount(); ++p) EXPECT_EQ(primSeen[p], 1) << "primitive " << p;
+  EXPECT_EQ(leaves, bvh.leafCount);  // every binary leaf is one leaf slot
+  EXPECT_LE(bvh.maxDepth, kBvhMaxDepth);
 }
 
 // Compares intersectClosest and intersectAny with brute force on `rays` rays; returns the number
@@ -263,7 +256,7 @@ TEST(Bvh, TrianglesOnlyAndSpheresOnly) {
 TEST(Bvh, EmptySceneHasNoNodesAndMissesEverything) {
   TestScene s;
   s.build();
-  EXPECT_TRUE(s.bvh.nodes.empty());
+  EXPECT_TRUE(s.bvh.wideNodes.empty());
   EXPECT_EQ(s.bvh.leafCount, 0u);
   expectValidBvh(s);
   std::mt19937 gen(7);
@@ -285,7 +278,7 @@ TEST(Bvh, SinglePrimitive) {
   triangle.build();
   for (const TestScene* s : {&sphere, &triangle}) {
     expectValidBvh(*s);
-    EXPECT_EQ(s->bvh.nodes.size(), 1u);
+    EXPECT_EQ(s->bvh.wideNodes.size(), 1u);
     EXPECT_EQ(s->bvh.leafCount, 1u);
     EXPECT_EQ(s->bvh.maxDepth, 0u);
     Ray r;
@@ -340,19 +333,22 @@ TEST(Bvh, RoomWallsAreSetApartFromTheSmallContents) {
   expectValidBvh(s);
   expectMatchesBruteForce(s, 3000, 22);
 
-  // Count the primitives below every binary node; one node must hold exactly the 401 small
-  // primitives, within the contents' box.
-  const std::vector<BinaryBvhNode>& nodes = s.bvh.nodes;
-  std::vector<uint32_t> below(nodes.size(), 0);
-  for (size_t i = nodes.size(); i-- > 0;) {
-    below[i] = nodes[i].primCount > 0 ? nodes[i].primCount
-                                      : below[i + 1] + below[nodes[i].offset];
-  }
+  // Count the primitives below every slot of the wide nodes; one slot must hold exactly the 401
+  // small primitives, within the contents' box.
+  const std::vector<BvhNode>& nodes = s.bvh.wideNodes;
+  std::vector<uint32_t> below(nodes.size(), 0);  // per wide node, over its slots
   bool found = false;
-  for (size_t i = 0; i < nodes.size(); ++i) {
-    if (below[i] != 401) continue;
-    found = true;
-    EXPECT_TRUE(contents.contains(Bounds3(nodes[i].boundsMin, nodes[i].boundsMax)));
+  for (size_t i = nodes.size(); i-- > 0;) {  // children have larger indices than their parents
+    for (int c = 0; c < 4; ++c) {
+      if (nodes[i].child[c] == kNoBvhChild) continue;
+      const uint32_t n = nodes[i].count[c] > 0 ? nodes[i].count[c] : below[nodes[i].child[c]];
+      below[i] += n;
+      if (n != 401) continue;
+      found = true;
+      const BvhNode& w = nodes[i];
+      EXPECT_TRUE(contents.contains(Bounds3(Vec3(w.lo[0][c], w.lo[1][c], w.lo[2][c]),
+                                            Vec3(w.hi[0][c], w.hi[1][c], w.hi[2][c]))));
+    }
   }
   EXPECT_TRUE(found) << "the walls are mixed into the small primitives' subtrees";
 }
@@ -395,7 +391,7 @@ TEST(Bvh, PathologicalScaleSpreadKeepsTheDepthBounded) {
 }
 
 TEST(Bvh, LargeSceneBuildsTheSameTreeOnAnyThreadCount) {
-  // Above the parallel threshold, so the parallel top and the chunk placement are exercised.
+  // Above the parallel threshold, so the parallel top and its in-place node slots are exercised.
   const TestScene parallel = randomSoup(100000, 1000, 11);
   expectValidBvh(parallel);
   TestScene serial = parallel;
@@ -403,9 +399,9 @@ TEST(Bvh, LargeSceneBuildsTheSameTreeOnAnyThreadCount) {
     tbb::global_control oneThread(tbb::global_control::max_allowed_parallelism, 1);
     serial.build();
   }
-  ASSERT_EQ(serial.bvh.nodes.size(), parallel.bvh.nodes.size());
-  EXPECT_EQ(std::memcmp(serial.bvh.nodes.data(), parallel.bvh.nodes.data(),
-                        parallel.bvh.nodes.size() * sizeof(BinaryBvhNode)),
+  ASSERT_EQ(serial.bvh.wideNodes.size(), parallel.bvh.wideNodes.size());
+  EXPECT_EQ(std::memcmp(serial.bvh.wideNodes.data(), parallel.bvh.wideNodes.data(),
+                        parallel.bvh.wideNodes.size() * sizeof(BvhNode)),
             0);
   EXPECT_EQ(serial.bvh.primIndices, parallel.bvh.primIndices);
   expectMatchesBruteForce(parallel, 300, 12);

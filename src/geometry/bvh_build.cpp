@@ -9,9 +9,9 @@
 //    children's bounds and the partition loop their centroid bounds, so no node needs an extra
 //    pass.
 // 3. Large subtrees (the "top" of the tree) are split in parallel with oneTBB; below
-//    kParallelThreshold primitives a subtree is built serially, directly in depth-first order,
-//    into its own node array ("chunk"). A final pass places every chunk at its depth-first
-//    position in the output, so each node is copied exactly once.
+//    kParallelThreshold primitives a subtree is built serially, depth-first. Every subtree is
+//    written straight into its own slots of one node array, sized by a bound on its node count
+//    (buildTop), so no node is ever copied; the array is then collapsed into 4-wide nodes.
 // Every decision depends only on the data, never on the thread schedule: the tree is the same for
 // any thread count.
 #include "geometry/bvh_build.h"
@@ -242,20 +242,21 @@ class Builder {
     return true;
   }
 
-  // Builds the subtree of `range` depth-first into `nodes`, with offsets relative to `nodes`.
-  void buildSerial(const NodeRange& range, uint32_t depth, std::vector<BinaryBvhNode>& nodes,
+  // Builds the subtree of `range` depth-first into nodes[next], nodes[next + 1], ..., advancing
+  // `next`; offsets are indices into `nodes`.
+  void buildSerial(const NodeRange& range, uint32_t depth, BinaryBvhNode* nodes, uint32_t& next,
                    BuildStats& stats) {
-    const uint32_t index = static_cast<uint32_t>(nodes.size());
+    const uint32_t index = next++;
     Split s;
     if (!split(range, depth, &s)) {
-      nodes.push_back(makeLeaf(range.bounds, range.begin, range.count()));
+      new (&nodes[index]) BinaryBvhNode(makeLeaf(range.bounds, range.begin, range.count()));
       stats.addLeaf(depth);
       return;
     }
-    nodes.push_back(makeInterior(range.bounds, s.axis));
-    buildSerial(s.left, depth + 1, nodes, stats);
-    nodes[index].offset = static_cast<uint32_t>(nodes.size());
-    buildSerial(s.right, depth + 1, nodes, stats);
+    new (&nodes[index]) BinaryBvhNode(makeInterior(range.bounds, s.axis));
+    buildSerial(s.left, depth + 1, nodes, next, stats);
+    nodes[index].offset = next;
+    buildSerial(s.right, depth + 1, nodes, next, stats);
   }
 
  private:
@@ -486,49 +487,40 @@ class Builder {
   BuildPrim* const prims_;  // concurrent splits own disjoint ranges
 };
 
-// The parallel top of the tree: interior nodes with two children, or chunks built serially.
-struct TopNode {
-  BinaryBvhNode node;                    // interior top nodes
-  std::unique_ptr<TopNode> left, right;  // both set for interior top nodes
-  std::vector<BinaryBvhNode> chunk;      // a serially built subtree, offsets relative to it
-  BuildStats stats;                      // of the whole subtree
-  uint32_t nodeCount = 0;                // of the whole subtree
-};
-
-std::unique_ptr<TopNode> buildTop(Builder& builder, const NodeRange& range, uint32_t depth) {
-  auto top = std::make_unique<TopNode>();
+// Builds the subtree of `range` into its slots of `nodes`, which start at `base`: a subtree of k
+// primitives has at most 2k - 1 nodes, so a split node's left subtree fits in the 2 * left - 1
+// slots after it and the right one starts at base + 2 * left. Large subtrees are split in
+// parallel, small ones built serially. Every node is written once, in place; slots a subtree
+// does not need stay unwritten (never touched, so never paged in) and are unreachable. Indices
+// stay below 2^32 for fewer than 2^31 primitives.
+BuildStats buildTop(Builder& builder, const NodeRange& range, uint32_t depth, BinaryBvhNode* nodes,
+                    uint32_t base) {
   Split s;
+  BuildStats stats;
   if (range.count() < kParallelThreshold || !builder.split(range, depth, &s)) {
-    builder.buildSerial(range, depth, top->chunk, top->stats);
-    top->nodeCount = static_cast<uint32_t>(top->chunk.size());
-    return top;
+    uint32_t next = base;
+    builder.buildSerial(range, depth, nodes, next, stats);
+    return stats;
   }
-  top->node = makeInterior(range.bounds, s.axis);
-  tbb::parallel_invoke([&] { top->left = buildTop(builder, s.left, depth + 1); },
-                       [&] { top->right = buildTop(builder, s.right, depth + 1); });
-  top->stats = top->left->stats;
-  top->stats.merge(top->right->stats);
-  top->nodeCount = 1 + top->left->nodeCount + top->right->nodeCount;
-  return top;
+  const uint32_t rightBase = base + 2 * s.left.count();
+  BinaryBvhNode node = makeInterior(range.bounds, s.axis);
+  node.offset = rightBase;
+  new (&nodes[base]) BinaryBvhNode(node);
+  BuildStats right;
+  tbb::parallel_invoke([&] { stats = buildTop(builder, s.left, depth + 1, nodes, base + 1); },
+                       [&] { right = buildTop(builder, s.right, depth + 1, nodes, rightBase); });
+  stats.merge(right);
+  return stats;
 }
 
-struct PlacedChunk {
-  TopNode* top;
-  uint32_t base;  // index of the chunk's first node in the output
+// Raw storage for `count` binary nodes: allocated, not initialised, so that pages no node is
+// written to are never touched.
+struct RawNodesDeleter {
+  void operator()(BinaryBvhNode* p) const { ::operator delete(p); }
 };
-
-// Writes the top nodes at their depth-first positions and lists where each chunk goes.
-void placeTop(TopNode& top, uint32_t base, std::vector<BinaryBvhNode>& nodes,
-              std::vector<PlacedChunk>& chunks) {
-  if (!top.left) {
-    chunks.push_back({&top, base});
-    return;
-  }
-  const uint32_t leftBase = base + 1, rightBase = leftBase + top.left->nodeCount;
-  nodes[base] = top.node;
-  nodes[base].offset = rightBase;
-  placeTop(*top.left, leftBase, nodes, chunks);
-  placeTop(*top.right, rightBase, nodes, chunks);
+using RawNodes = std::unique_ptr<BinaryBvhNode[], RawNodesDeleter>;
+RawNodes allocateNodes(size_t count) {
+  return RawNodes(static_cast<BinaryBvhNode*>(::operator new(count * sizeof(BinaryBvhNode))));
 }
 
 struct RootBounds {
@@ -565,12 +557,13 @@ BvhBuildResult buildBvh(const Sphere* spheres, uint32_t sphereCount, const Vec3*
           return a;
         });
 
-    // 2. The tree, as a parallel top over serially built chunks.
+    // 2. The binary tree, in place (see buildTop), then collapsed 4-wide.
     Builder builder(prims.get());
-    std::unique_ptr<TopNode> top =
-        buildTop(builder, {0, primCount, root.bounds, root.centroids}, 0);
-    result.leafCount = top->stats.leafCount;
-    result.maxDepth = top->stats.maxDepth;
+    RawNodes nodes = allocateNodes(2 * size_t(primCount) - 1);
+    const BuildStats stats =
+        buildTop(builder, {0, primCount, root.bounds, root.centroids}, 0, nodes.get(), 0);
+    result.leafCount = stats.leafCount;
+    result.maxDepth = stats.maxDepth;
 
     result.primIndices.resize(primCount);
     tbb::parallel_for(tbb::blocked_range<uint32_t>(0, primCount, 1u << 16),
@@ -578,24 +571,8 @@ BvhBuildResult buildBvh(const Sphere* spheres, uint32_t sphereCount, const Vec3*
                         for (uint32_t i = r.begin(); i < r.end(); ++i)
                           result.primIndices[i] = prims[i].index;
                       });
-    prims.reset();  // release before the node array is allocated
-
-    // 3. Depth-first placement: top nodes in place, each chunk copied once with its interior
-    //    offsets rebased (leaf offsets already index the global primIndices).
-    result.nodes.resize(top->nodeCount);
-    std::vector<PlacedChunk> chunks;
-    placeTop(*top, 0, result.nodes, chunks);
-    tbb::parallel_for(size_t(0), chunks.size(), [&](size_t c) {
-      std::vector<BinaryBvhNode>& chunk = chunks[c].top->chunk;
-      const uint32_t base = chunks[c].base;
-      for (size_t i = 0; i < chunk.size(); ++i) {
-        BinaryBvhNode n = chunk[i];
-        if (n.primCount == 0) n.offset += base;
-        result.nodes[base + i] = n;
-      }
-      std::vector<BinaryBvhNode>().swap(chunk);
-    });
-    result.wideNodes = collapseToWide(result.nodes);
+    prims.reset();  // release before the wide nodes are allocated
+    result.wideNodes = collapseToWide(nodes.get(), 2 * result.leafCount - 1);
   }
   result.buildSeconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

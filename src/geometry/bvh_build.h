@@ -3,9 +3,9 @@
 // Binned surface-area-heuristic build (pbrt-v4's aggregates.cpp, Wald 2007): at each node the
 // primitive centroids are binned along all three axes and the cheapest split plane is taken; a
 // node becomes a leaf when the SAH prefers it and it holds at most kBvhMaxLeafSize primitives.
-// The binary tree is flattened depth-first into 32-byte BinaryBvhNode records (an interior node's
+// The binary tree is laid out depth-first in 32-byte BinaryBvhNode records (an interior node's
 // first child follows it, `offset` names the second), then collapsed into the 4-wide BvhNode
-// records the renderer traverses (scene/scene_view.h).
+// records the renderer traverses (scene/scene_view.h), which is all the build returns.
 //
 // Primitive indices follow SceneView's convention: p < sphereCount is a sphere, else triangle
 // p - sphereCount. An empty scene yields zero nodes (a leaf cannot be empty: primCount 0 marks an
@@ -21,7 +21,9 @@
 namespace candela {
 
 // Node of the binary tree the SAH build makes, depth-first: an interior node's first child
-// follows it. Leaves hold primCount > 0 primitives from primIndices[offset].
+// follows it. Leaves hold primCount > 0 primitives from primIndices[offset]. The build lays
+// subtrees out with gaps between them (see bvh_build.cpp), so only the links, not the count of
+// records, describe the tree.
 struct BinaryBvhNode {
   Vec3 boundsMin;
   uint32_t offset;  // leaf: first index into primIndices; interior: index of the second child
@@ -38,17 +40,18 @@ constexpr uint32_t kBvhMaxLeafSize = 4;
 constexpr uint32_t kBvhMaxDepth = 63;
 
 struct BvhBuildResult {
-  std::vector<BinaryBvhNode> nodes;   // depth-first; nodes[0] is the root when not empty
-  std::vector<BvhNode> wideNodes;     // the same tree collapsed 4-wide: what the renderer uses
+  std::vector<BvhNode> wideNodes;     // depth-first, wideNodes[0] the root: what the renderer uses
   std::vector<uint32_t> primIndices;  // leaf ranges index this; a permutation of all primitives
-  uint32_t leafCount = 0;
-  uint32_t maxDepth = 0;    // depth of the deepest leaf; the root has depth 0
+  uint32_t leafCount = 0;   // of the binary tree; each is one leaf slot of the wide nodes
+  uint32_t maxDepth = 0;    // of the binary tree's deepest leaf (the root has depth 0); the
+                            // wide tree is at most as deep
   double buildSeconds = 0;  // wall time of buildBvh
 };
 
-// Collapses a binary tree into 4-wide nodes: each wide node takes the up to four descendants
-// reached by repeatedly opening the inner child of largest surface area. Empty for an empty tree.
-std::vector<BvhNode> collapseToWide(const std::vector<BinaryBvhNode>& binary);
+// Collapses the binary tree rooted at binary[0], of nodeCount nodes, into 4-wide nodes: each
+// wide node takes the up to four descendants reached by repeatedly opening the inner child of
+// largest surface area. Empty for an empty tree.
+std::vector<BvhNode> collapseToWide(const BinaryBvhNode* binary, uint32_t nodeCount);
 
 // Builds the BVH of sphereCount spheres and triangleCount triangles (vertex indices into
 // positions), binary and 4-wide. Uses all cores through oneTBB for large scenes; the result does not depend on the

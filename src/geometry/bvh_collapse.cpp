@@ -37,7 +37,7 @@ BvhNode emptyWideNode() {
 
 class Collapser {
  public:
-  Collapser(const std::vector<BinaryBvhNode>& binary, std::vector<BvhNode>& wide)
+  Collapser(const BinaryBvhNode* binary, std::vector<BvhNode>& wide)
       : binary_(binary), wide_(wide) {}
 
   // Emits the wide node holding the subtrees below binary node `root` (or `root` itself when it
@@ -90,16 +90,16 @@ class Collapser {
   }
 
  private:
-  const std::vector<BinaryBvhNode>& binary_;
+  const BinaryBvhNode* binary_;
   std::vector<BvhNode>& wide_;
 };
 
 }  // namespace
 
-std::vector<BvhNode> collapseToWide(const std::vector<BinaryBvhNode>& binary) {
+std::vector<BvhNode> collapseToWide(const BinaryBvhNode* binary, uint32_t nodeCount) {
   std::vector<BvhNode> wide;
-  if (binary.empty()) return wide;
-  wide.reserve(binary.size() / 3 + 1);
+  if (nodeCount == 0) return wide;
+  wide.reserve(nodeCount / 3 + 1);
   Collapser(binary, wide).emit(0);
   return wide;
 }
