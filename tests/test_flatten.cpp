@@ -3,9 +3,12 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
+#include <cstring>
 
 #include <fstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "geometry/bvh_build.h"
 #include "scene/scene_data.h"
@@ -112,6 +115,38 @@ TEST(Flatten, TrianglesAreNumberedInLeafOrder) {
     const int x = int(s.triangles[k].v[0] / 3);
     EXPECT_LE(std::abs(x - k), int(kBvhMaxLeafSize) - 1) << "triangle " << k << " at x = " << x;
   }
+}
+
+template <typename T>
+bool sameBytes(const std::vector<T>& a, const std::vector<T>& b) {
+  return a.size() == b.size() &&
+         (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
+}
+
+TEST(Flatten, AConsumedDescriptionGivesTheSameSceneAndReleasesOnlyItsMeshes) {
+  const std::string obj = writeObj("consumed.obj", kCrease);
+  SceneDesc desc = parseSceneText(
+      R"({"camera": {"width": 8, "height": 8}, "render": {"exposure": -3},
+          "spheres": [{"position": [0, 0, -5], "radius": 1}],
+          "objects": [{"file": ")" + obj + R"(", "position": [1, 2, 3]},
+                      {"file": ")" + obj + R"(", "scale": 2}]})",
+      "consumed.json", ".");
+  const SceneData kept = flattenScene(desc);
+  const SceneData consumed = flattenScene(std::move(desc));
+  EXPECT_TRUE(sameBytes(kept.positions, consumed.positions));
+  EXPECT_TRUE(sameBytes(kept.normals, consumed.normals));
+  EXPECT_TRUE(sameBytes(kept.triangles, consumed.triangles));
+  EXPECT_TRUE(sameBytes(kept.spheres, consumed.spheres));
+  EXPECT_TRUE(sameBytes(kept.nodes, consumed.nodes));
+  EXPECT_TRUE(sameBytes(kept.primIndices, consumed.primIndices));
+  ASSERT_EQ(desc.objects.size(), 2u);  // NOLINT(bugprone-use-after-move): documented state
+  for (const ObjectDesc& o : desc.objects) {
+    EXPECT_TRUE(o.mesh.positions.empty());
+    EXPECT_TRUE(o.mesh.triangles.empty());
+  }
+  EXPECT_EQ(desc.objects[0].position.z, 3.0f);
+  EXPECT_EQ(desc.output.exposure, -3.0f);
+  EXPECT_EQ(desc.spheres.size(), 1u);
 }
 
 }  // namespace

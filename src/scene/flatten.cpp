@@ -178,9 +178,10 @@ void orderTrianglesByLeaf(SceneData& s) {
   s.triangles = std::move(ordered);
 }
 
-SceneData flattenScene(const SceneDesc& desc) {
-  SceneData s = flattenSceneContents(desc);
+namespace {
 
+// The BVH over a flattened scene's contents, then the triangles in its leaf order.
+void addBvh(SceneData& s) {
   BvhBuildResult bvh = buildBvh(s.spheres.data(), uint32_t(s.spheres.size()), s.positions.data(),
                                 s.triangles.data(), uint32_t(s.triangles.size()));
   s.nodes = std::move(bvh.wideNodes);
@@ -190,6 +191,20 @@ SceneData flattenScene(const SceneDesc& desc) {
   s.bvh.leafCount = bvh.leafCount;
   s.bvh.maxDepth = bvh.maxDepth;
   s.bvh.buildSeconds = bvh.buildSeconds;
+}
+
+}  // namespace
+
+SceneData flattenScene(const SceneDesc& desc) {
+  SceneData s = flattenSceneContents(desc);
+  addBvh(s);
+  return s;
+}
+
+SceneData flattenScene(SceneDesc&& desc) {
+  SceneData s = flattenSceneContents(desc);
+  for (ObjectDesc& object : desc.objects) object.mesh = MeshDesc();
+  addBvh(s);
   return s;
 }
 

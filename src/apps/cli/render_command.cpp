@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <utility>
 
 #include <tbb/task_arena.h>
 
@@ -151,7 +152,7 @@ int renderStill(const RenderOptions& options, SceneDesc desc, double loadSeconds
 
   applyOverrides(options, &desc);
   const auto flattenStart = std::chrono::steady_clock::now();
-  const SceneData scene = flattenScene(desc);
+  const SceneData scene = flattenScene(std::move(desc));  // only desc.output is used below
   const double flattenSeconds = secondsSince(flattenStart);
   if (!backendNote.empty() && !options.quiet)
     std::fprintf(stderr, "candela: note: %s\n", backendNote.c_str());

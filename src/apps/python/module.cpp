@@ -18,6 +18,7 @@
 #include <stdexcept>
 #include <string>
 #include <tuple>
+#include <utility>
 
 #include "apps/python/interruptible.h"
 #include "backends/cpu/cpu_renderer.h"
@@ -94,7 +95,7 @@ ImageArray render(const Scene& scene, std::optional<uint32_t> spp, std::optional
   const std::string chosen = chooseBackend(backend);
   RenderResult result;
   runInterruptible([&](const std::atomic<bool>& cancel) {
-    const SceneData data = flattenScene(desc);
+    const SceneData data = flattenScene(std::move(desc));  // only desc.file is used below
     if (chosen == "cpu") {
       CpuRenderOptions options;
       options.threads = threads;
