@@ -6,8 +6,7 @@
 // 2. Nodes are split recursively. Each split bins the centroids along all three axes (four lanes
 //    at once), picks the cheapest SAH plane, or the split of large from small primitives when
 //    that is much cheaper, and partitions the BuildPrim range in place; the bins give the
-//    children's bounds and the partition loop their centroid bounds, so no node needs an extra
-//    pass.
+//    children's bounds, and a pass over each child after the partition its centroid bounds.
 // 3. Large subtrees (the "top" of the tree) are split in parallel with oneTBB; below
 //    kParallelThreshold primitives a subtree is built serially, depth-first. Every subtree is
 //    written straight into its own slots of one node array, sized by a bound on its node count
@@ -572,6 +571,7 @@ BvhBuildResult buildBvh(const Sphere* spheres, uint32_t sphereCount, const Vec3*
                           result.primIndices[i] = prims[i].index;
                       });
     prims.reset();  // release before the wide nodes are allocated
+    // Every interior node has two children, so the tree has 2 * leaves - 1 nodes.
     result.wideNodes = collapseToWide(nodes.get(), 2 * result.leafCount - 1);
   }
   result.buildSeconds =

@@ -54,8 +54,8 @@ struct BvhBuildResult {
 std::vector<BvhNode> collapseToWide(const BinaryBvhNode* binary, uint32_t nodeCount);
 
 // Builds the BVH of sphereCount spheres and triangleCount triangles (vertex indices into
-// positions), binary and 4-wide. Uses all cores through oneTBB for large scenes; the result does not depend on the
-// thread count.
+// positions), returning its 4-wide form. Uses all cores through oneTBB for large scenes; the
+// result does not depend on the thread count.
 BvhBuildResult buildBvh(const Sphere* spheres, uint32_t sphereCount, const Vec3* positions,
                         const Triangle* triangles, uint32_t triangleCount);
 

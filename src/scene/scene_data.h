@@ -40,7 +40,8 @@ struct SceneData {
 SceneData flattenScene(const SceneDesc& desc);
 // The same for a description whose meshes the caller no longer needs: they are released once
 // flattened, before the BVH is built, so the two copies of the geometry and the build's arrays
-// never coexist (the 8.5M-triangle bench scene: peak RSS 1.12 -> 0.82 GB). Everything but `objects[i].mesh` is left intact.
+// never coexist (the 8.5M-triangle bench scene: peak RSS 1.12 -> 0.82 GB). Everything but
+// `objects[i].mesh` is left intact.
 SceneData flattenScene(SceneDesc&& desc);
 
 // flattenScene without the BVH (nodes and primIndices left empty) and with triangles in the
