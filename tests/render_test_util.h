@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "backends/cpu/cpu_renderer.h"
-#include "scene/scene_data.h"
+#include "scene/flatten.h"
 #include "scene/scene_loader.h"
 
 namespace candela::test {
@@ -18,7 +18,7 @@ inline SceneData loadTestScene(const std::string& json, const std::string& baseD
 inline RenderResult renderTestScene(const std::string& json, int threads = 0,
                                     const std::string& baseDir = ".") {
   const SceneData data = loadTestScene(json, baseDir);
-  CpuRenderOptions options;
+  RenderOptions options;
   options.threads = threads;
   return renderCpu(data.view(), options);
 }

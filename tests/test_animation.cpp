@@ -11,6 +11,7 @@
 
 #include "geometry/bvh_traverse.h"
 #include "scene/animation.h"
+#include "scene/flatten.h"
 #include "scene/frame_scene.h"
 #include "scene/scene_error.h"
 #include "scene/scene_loader.h"
@@ -285,12 +286,13 @@ void expectSameContents(const SceneData& a, const SceneData& b) {
   EXPECT_EQ(a.settings.seed, b.settings.seed);
 }
 
-// ... and so is the BVH.
+// ... and so is every array, the BVH included.
 void expectSameScene(const SceneData& a, const SceneData& b) {
   expectSameContents(a, b);
-  EXPECT_TRUE(sameBytes(a.triangles, b.triangles));
-  EXPECT_TRUE(sameBytes(a.nodes, b.nodes));
-  EXPECT_TRUE(sameBytes(a.primIndices, b.primIndices));
+#define CANDELA_EXPECT_SAME_ARRAY(Type, name, count, rewrittenBy) \
+  EXPECT_TRUE(sameBytes(a.name, b.name)) << #name;
+  CANDELA_SCENE_ARRAYS(CANDELA_EXPECT_SAME_ARRAY)
+#undef CANDELA_EXPECT_SAME_ARRAY
 }
 
 // A refitted BVH is another tree over the same primitives: it must find exactly the nearest hit
@@ -326,13 +328,13 @@ TEST(FrameScene, CameraAndLightChangesReuseTheBvhAndARadiusChangeRefitsIt) {
       {"target": "ball", "property": "color", "keys": [[0, 0.5], [3, 0.9]]},
       {"target": "ball", "property": "radius", "keys": [[3, 1], [5, 2]]}]})"));
   FrameScene frames;
-  using P = FramePreparation;
-  const P expected[6] = {P::Built, P::Reused, P::Reused, P::Reused, P::Refitted, P::Refitted};
+  using P = SceneChange;
+  const P expected[6] = {P::Structure, P::Values, P::Values, P::Values, P::Motion, P::Motion};
   for (uint32_t f = 0; f < 6; ++f) {
     const SceneDesc still = sceneAtFrame(scene, f);
     const SceneData& data = frames.prepare(still);
-    EXPECT_EQ(frames.preparation(), expected[f]) << "frame " << f;
-    if (expected[f] == P::Refitted) {
+    EXPECT_EQ(frames.change(), expected[f]) << "frame " << f;
+    if (expected[f] == P::Motion) {
       expectSameContents(data, flattenScene(still));
       expectBvhFindsNearestHits(data);
     } else {
@@ -346,19 +348,19 @@ TEST(FrameScene, ObjectTransformChangeRefitsAndMeshChangeRebuilds) {
   ObjectDesc object;
   object.mesh.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)};
   object.mesh.triangles = {MeshTriangle{{0, 1, 2}, {-1, -1, -1}, 0}};
-  object.mesh.materials = {MaterialDesc{}};
+  object.mesh.materials = {Material{}};
   scene.objects.push_back(object);
   FrameScene frames;
   frames.prepare(scene);
   scene.camera.fov = 30;
   frames.prepare(scene);
-  EXPECT_TRUE(frames.reused());
+  EXPECT_EQ(frames.change(), SceneChange::Values);
   scene.objects[0].rotation = Vec3(0, 10, 0);
   expectSameContents(frames.prepare(scene), flattenScene(scene));
-  EXPECT_EQ(frames.preparation(), FramePreparation::Refitted);
+  EXPECT_EQ(frames.change(), SceneChange::Motion);
   scene.objects[0].mesh.positions[2] = Vec3(0, 2, 0);  // same transform, other mesh
   expectSameScene(frames.prepare(scene), flattenScene(scene));
-  EXPECT_EQ(frames.preparation(), FramePreparation::Built);
+  EXPECT_EQ(frames.change(), SceneChange::Structure);
 }
 
 // Two grids of triangles far apart, then moved into each other: refitting would leave boxes that
@@ -373,7 +375,7 @@ TEST(FrameScene, RefitUnlessTheTreeDegradesThenRebuild) {
       grid.triangles.push_back(MeshTriangle{{a, b, a + 1}, {-1, -1, -1}, 0});
       grid.triangles.push_back(MeshTriangle{{b, b + 1, a + 1}, {-1, -1, -1}, 0});
     }
-  grid.materials = {MaterialDesc{}};
+  grid.materials = {Material{}};
   SceneDesc scene;
   for (float x : {-60.0f, 50.0f}) {
     ObjectDesc object;
@@ -383,11 +385,11 @@ TEST(FrameScene, RefitUnlessTheTreeDegradesThenRebuild) {
   }
   FrameScene frames;
   frames.prepare(scene);
-  EXPECT_EQ(frames.preparation(), FramePreparation::Built);
+  EXPECT_EQ(frames.change(), SceneChange::Structure);
 
   scene.objects[0].position.x += 0.5f;
   const SceneData& nudged = frames.prepare(scene);
-  EXPECT_EQ(frames.preparation(), FramePreparation::Refitted);
+  EXPECT_EQ(frames.change(), SceneChange::Motion);
   expectSameContents(nudged, flattenScene(scene));
   expectBvhFindsNearestHits(nudged);
 
@@ -395,7 +397,7 @@ TEST(FrameScene, RefitUnlessTheTreeDegradesThenRebuild) {
   scene.objects[1].position = Vec3(5, 0, -5);
   scene.objects[1].rotation = Vec3(0, 90, 0);
   expectSameScene(frames.prepare(scene), flattenScene(scene));
-  EXPECT_EQ(frames.preparation(), FramePreparation::Built);
+  EXPECT_EQ(frames.change(), SceneChange::Structure);
 }
 
 }  // namespace

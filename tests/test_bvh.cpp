@@ -53,12 +53,13 @@ struct TestScene {
     b.grow(positions[t.v[2]]);
     return b;
   }
-  SceneView view() const {
+  GeometryView view() const {
     static const std::vector<OctNormal> kNoNormals;
-    SceneView v = test::geometryView(spheres, positions, kNoNormals, triangles);
+    GeometryView v = test::geometryView(spheres, positions, kNoNormals, triangles);
     v.nodes = bvh.wideNodes.data();
     v.nodeCount = static_cast<uint32_t>(bvh.wideNodes.size());
     v.primIndices = bvh.primIndices.data();
+    v.primIndexCount = static_cast<uint32_t>(bvh.primIndices.size());
     return v;
   }
 };
@@ -166,7 +167,7 @@ void expectValidBvh(const TestScene& s) {
 // of rays that hit something.
 int expectMatchesBruteForce(const TestScene& s, int rays, uint32_t seed,
                             bool primitivesMayTie = false) {
-  const SceneView view = s.view();
+  const GeometryView view = s.view();
   std::mt19937 gen(seed);
   int hits = 0;
   for (int i = 0; i < rays; ++i) {
@@ -373,7 +374,7 @@ TEST(Bvh, PathologicalScaleSpreadKeepsTheDepthBounded) {
   // floats (intersection itself needs that).
   std::mt19937 gen(10);
   std::uniform_real_distribution<float> u(-1.0f, 1.0f);
-  const SceneView view = s.view();
+  const GeometryView view = s.view();
   for (int i = 0; i < 2000; ++i) {
     const Sphere& target = s.spheres[gen() % s.spheres.size()];
     if (target.radius < 1e-12f || target.radius > 1e12f) continue;

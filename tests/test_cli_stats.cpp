@@ -11,7 +11,7 @@
 #include <sstream>
 #include <string>
 
-#include "scene/scene_view.h"
+#include "render/scene_view.h"
 
 namespace fs = std::filesystem;
 using nlohmann::json;

@@ -33,10 +33,11 @@ TEST(CudaBackend, NotBuilt) { GTEST_SKIP() << "this build has no CUDA backend (n
   } while (0)
 
 RenderResult renderCuda(const SceneData& data) {
-  CudaScene scene(data);
-  CudaRenderOptions options;
+  CudaRenderer renderer;
+  renderer.setScene(data, SceneChange::Structure);
+  RenderOptions options;
   options.sceneLabel = "test.json";
-  return scene.render(options);
+  return renderer.render(options);
 }
 
 std::string sceneWithEverything(int spp) {
@@ -61,7 +62,7 @@ std::string sceneWithEverything(int spp) {
 TEST(CudaBackend, MatchesCpuWithinRounding) {
   REQUIRE_GPU();
   const SceneData data = test::loadTestScene(sceneWithEverything(16));
-  const RenderResult cpu = renderCpu(data.view(), CpuRenderOptions{});
+  const RenderResult cpu = renderCpu(data.view(), RenderOptions{});
   const RenderResult gpu = renderCuda(data);
   ASSERT_EQ(cpu.image.pixels.size(), gpu.image.pixels.size());
   double relMse = 0;
@@ -126,24 +127,19 @@ TEST(CudaBackend, ResidentSceneFollowsEveryKindOfFrameChange) {
                       R"("spheres": [{"position": [0, 2, 0], "radius": 0.3, "color": 0.5},)");
   const struct {
     const std::string* json;
-    FramePreparation expected;
-  } frames[] = {{&base, FramePreparation::Built},
-                {&cameraMoved, FramePreparation::Reused},
-                {&sphereMoved, FramePreparation::Refitted},
-                {&sphereAdded, FramePreparation::Built},
-                {&base, FramePreparation::Built}};
+    SceneChange expected;
+  } frames[] = {{&base, SceneChange::Structure},
+                {&cameraMoved, SceneChange::Values},
+                {&sphereMoved, SceneChange::Motion},
+                {&sphereAdded, SceneChange::Structure},
+                {&base, SceneChange::Structure}};
   FrameScene frameScene;
-  std::unique_ptr<CudaScene> resident;
+  CudaRenderer resident;
   for (const auto& frame : frames) {
     const SceneData& data = frameScene.prepare(parseSceneText(*frame.json, "test.json", "."));
-    EXPECT_EQ(frameScene.preparation(), frame.expected);
-    if (resident) {
-      resident->update(data, frameScene.preparation());
-    } else {
-      resident = std::make_unique<CudaScene>(data);
-    }
-    CudaRenderOptions options;
-    const RenderResult kept = resident->render(options);
+    EXPECT_EQ(frameScene.change(), frame.expected);
+    resident.setScene(data, frameScene.change());
+    const RenderResult kept = resident.render(RenderOptions{});
     const RenderResult fresh = renderCuda(data);
     for (uint32_t y = 0; y < fresh.image.height; ++y)
       for (uint32_t x = 0; x < fresh.image.width; ++x)

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "geometry/bvh_build.h"
-#include "scene/scene_data.h"
+#include "scene/flatten.h"
 #include "scene/scene_loader.h"
 
 namespace candela {

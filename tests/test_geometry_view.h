@@ -1,16 +1,16 @@
-// A SceneView over geometry alone (spheres, vertices, triangles), for intersection and BVH tests.
+// A GeometryView (spheres, vertices, triangles), for intersection and BVH tests.
 #pragma once
 
 #include <vector>
 
-#include "scene/scene_view.h"
+#include "geometry/geometry_view.h"
 
 namespace candela::test {
 
-inline SceneView geometryView(const std::vector<Sphere>& spheres, const std::vector<Vec3>& positions,
+inline GeometryView geometryView(const std::vector<Sphere>& spheres, const std::vector<Vec3>& positions,
                               const std::vector<OctNormal>& normals,
                               const std::vector<Triangle>& triangles) {
-  SceneView v;
+  GeometryView v;
   v.spheres = spheres.data();
   v.sphereCount = static_cast<uint32_t>(spheres.size());
   v.positions = positions.data();

@@ -62,7 +62,7 @@ struct OnePrimitive {
   std::vector<Triangle> triangles;
   mutable std::vector<OctNormal> encodedNormals;
 
-  SceneView view() const {
+  GeometryView view() const {
     encodedNormals.clear();
     for (const Vec3& n : normals) encodedNormals.push_back(encodeOctNormal(n));
     return test::geometryView(spheres, positions, encodedNormals, triangles);
@@ -80,7 +80,7 @@ OnePrimitive oneTriangle(const Vec3& p0, const Vec3& p1, const Vec3& p2) {
 Vec3 randomDirectionNear(const Vec3& axis, float minCos, std::mt19937& gen) {
   std::uniform_real_distribution<float> u(0.0f, 1.0f);
   const Frame f(axis);
-  const Vec3 local = sampleUniformCone(u(gen), u(gen), minCos);
+  const Vec3 local = sampleUniformCone(u(gen), u(gen), 1.0f - minCos);
   const Vec3 w = f.toWorld(local);
   return u(gen) < 0.5f ? w : -w;
 }
@@ -375,7 +375,7 @@ TEST(TriangleIntersect, VertexFanIsWatertight) {
 TEST(Surface, SphereNormalPointsOutwardFromBothSides) {
   OnePrimitive scene;
   scene.spheres.push_back(Sphere{Vec3(1, -2, 3), 0.5f, 4});
-  const SceneView view = scene.view();
+  const auto view = scene.view();
   for (const Vec3& origin : {Vec3(1, -2, 0), Vec3(1.1f, -2.1f, 3)}) {  // outside, inside
     const Ray r = makeRay(origin, Vec3(0, 0, 1));
     Hit hit;
@@ -454,7 +454,7 @@ TEST(SpawnOffset, RaysLeavingASphereDoNotRehitIt) {
       const float radius = scale * (0.2f + 0.8f * u(gen));
       scene.spheres.push_back(Sphere{center, radius, 0});
       const Sphere& s = scene.spheres[0];
-      const SceneView view = scene.view();
+      const auto view = scene.view();
       // Alternate hits from outside and from inside.
       const Vec3 origin = i % 2 == 0
                               ? center + randomUnitVector(gen) * (radius * (1.5f + 3 * u(gen)))
@@ -500,7 +500,7 @@ TEST(SpawnOffset, RaysLeavingATriangleDoNotRehitIt) {
       const OnePrimitive scene =
           oneTriangle(base + size * randomUnitVector(gen), base + size * randomUnitVector(gen),
                       base + size * randomUnitVector(gen));
-      const SceneView view = scene.view();
+      const auto view = scene.view();
       const Vec3* p = scene.positions.data();
       float b1 = u(gen), b2 = u(gen);
       if (b1 + b2 > 1.0f) b1 = 1.0f - b1, b2 = 1.0f - b2;

@@ -202,7 +202,7 @@ TEST(Sampling, ConeSamplesStayInsideTheCone) {
     for (int i = 0; i < kDraws; ++i) {
       HashUniform s(8, i, 0);
       const float u1 = s.next(), u2 = s.next();
-      const Vec3 w = sampleUniformCone(u1, u2, cosThetaMax);
+      const Vec3 w = sampleUniformCone(u1, u2, 1.0f - cosThetaMax);
       ASSERT_GE(w.z, cosThetaMax - 1e-6f);
       ASSERT_LE(w.z, 1.0f);
       ASSERT_NEAR(length(w), 1.0f, 1e-5f);
@@ -212,7 +212,7 @@ TEST(Sampling, ConeSamplesStayInsideTheCone) {
     }
     if (!heights.empty()) expectUniform(heights, "cone height");
     // The density times the cap's solid angle 2pi (1 - cosThetaMax) is 1.
-    EXPECT_NEAR(uniformConePdf(cosThetaMax) * 2.0f * kPi * (1.0f - cosThetaMax), 1.0f, 1e-5f);
+    EXPECT_NEAR(uniformConePdf(1.0f - cosThetaMax) * 2.0f * kPi * (1.0f - cosThetaMax), 1.0f, 1e-5f);
   }
 }
 

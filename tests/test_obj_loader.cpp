@@ -4,6 +4,7 @@
 #include <stdlib.h>
 
 #include <cstdint>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -132,15 +133,15 @@ TEST_F(ObjLoader, MtlDiffuseColourPerFaceGroup) {
                              "newmtl red\nKd 1 0 0\n\nnewmtl blue\r\nKd 0 0 1\r\n");
   ASSERT_EQ(mesh.triangles.size(), 4u);
   ASSERT_EQ(mesh.materials.size(), 3u);  // red, blue, and the default for the rest
-  const MaterialDesc& red = mesh.materials[mesh.triangles[1].material];
+  const Material& red = mesh.materials[mesh.triangles[1].material];
   EXPECT_EQ(red.type, MaterialType::Diffuse);
   EXPECT_FLOAT_EQ(red.color.x, 1);
   EXPECT_FLOAT_EQ(red.color.z, 0);
-  const MaterialDesc& blue = mesh.materials[mesh.triangles[2].material];
+  const Material& blue = mesh.materials[mesh.triangles[2].material];
   EXPECT_FLOAT_EQ(blue.color.x, 0);
   EXPECT_FLOAT_EQ(blue.color.z, 1);
   for (int face : {0, 3}) {
-    const MaterialDesc& fallback = mesh.materials[mesh.triangles[face].material];
+    const Material& fallback = mesh.materials[mesh.triangles[face].material];
     EXPECT_FLOAT_EQ(fallback.color.x, 0.8f);
     EXPECT_FLOAT_EQ(fallback.color.z, 0.8f);
   }
@@ -251,7 +252,10 @@ TEST_F(ObjLoader, GarbageNeverCrashes) {
 }
 
 TEST(ObjAsset, CatLoadsWithItsMaterial) {
-  const std::string path = "/work/shared/assets/cat/cat.obj";
+  const char* assets = std::getenv("CANDELA_ASSETS");
+  const std::string path =
+      (assets ? std::string(assets) : std::string(CANDELA_SOURCE_DIR) + "/../shared/assets") +
+      "/cat/cat.obj";
   if (!std::filesystem::exists(path)) GTEST_SKIP() << "shared asset " << path << " is not present";
   const MeshDesc mesh = loadObjFile(path, "cat.obj");
   EXPECT_EQ(mesh.triangles.size(), 3954u);

@@ -88,7 +88,7 @@ TEST(ClosedForm, PointLightOverDiffusePlaneMatchesContractFormula) {
     "lights": [{"position": [)" + num(lightX) + ", " + num(lightY) + R"(, 0],
                 "intensity": )" + num(power) + R"(, "color": [1, 0.5, 0.25]}]})";
   const SceneData data = test::loadTestScene(scene);
-  CpuRenderOptions options;
+  RenderOptions options;
   const RenderResult r = renderCpu(data.view(), options);
   const Vec3 tint(1.0f, 0.5f, 0.25f);
   int checked = 0;
@@ -193,7 +193,7 @@ TEST(ClosedForm, SphereLightOverDiffusePlaneMatchesIrradiance) {
                             R"(, 0], "radius": )" + num(radius) + R"(, "intensity": )" +
                             num(intensity) + R"(}]})";
   const SceneData data = test::loadTestScene(scene);
-  const RenderResult r = renderCpu(data.view(), CpuRenderOptions{});
+  const RenderResult r = renderCpu(data.view(), RenderOptions{});
   // Each pixel's ratio to its exact value is an independent estimate of 1.
   ImageRGB ratios(24, 24);
   for (uint32_t y = 0; y < 24; ++y)
@@ -242,7 +242,7 @@ void expectLightsSumToEveryContribution(int extraLights) {
     "objects": [{"file": ")" + obj + R"(", "color": )" + num(rho) + R"(}],
     "lights": [)" + lights + "]}";
   const SceneData data = test::loadTestScene(scene);
-  const RenderResult r = renderCpu(data.view(), CpuRenderOptions{});
+  const RenderResult r = renderCpu(data.view(), RenderOptions{});
   ImageRGB ratios(24, 24);
   for (uint32_t y = 0; y < 24; ++y)
     for (uint32_t x = 0; x < 24; ++x) {

@@ -67,11 +67,11 @@ TEST(RenderInvariance, DifferentSeedsGiveDifferentNoise) {
 // count-weighted mean equals it up to float rounding (what distributed rendering relies on).
 TEST(RenderInvariance, SampleRangeSlicesSumToTheFullRender) {
   const SceneData data = test::loadTestScene(scaledScene(1.0, 8));
-  const RenderResult full = renderCpu(data.view(), CpuRenderOptions{});
+  const RenderResult full = renderCpu(data.view(), RenderOptions{});
   std::vector<double> merged(full.image.pixels.size(), 0.0);
   uint64_t cameraRays = 0;
   for (const SampleRange slice : {SampleRange{0, 3}, SampleRange{3, 1}, SampleRange{4, 0}}) {
-    CpuRenderOptions options;
+    RenderOptions options;
     options.samples = slice;
     const RenderResult part = renderCpu(data.view(), options);
     const double count = slice.count ? slice.count : 8 - slice.begin;
@@ -88,7 +88,7 @@ TEST(RenderInvariance, SampleRangeSlicesSumToTheFullRender) {
 
 TEST(RenderInvariance, SampleRangeOutsideSppIsRejected) {
   const SceneData data = test::loadTestScene(scaledScene(1.0, 4));
-  CpuRenderOptions options;
+  RenderOptions options;
   options.samples = {4, 0};
   EXPECT_THROW(renderCpu(data.view(), options), std::invalid_argument);
   options.samples = {2, 3};

@@ -1,4 +1,4 @@
-// Scene loading: every error class of shared/scene-format.md pinned to its exact message, and the
+// Scene loading: every error class of docs/scene-format.md pinned to its exact message, and the
 // values that each accepted form of the format turns into.
 #include <gtest/gtest.h>
 #include <stdlib.h>
@@ -402,7 +402,6 @@ TEST_F(SceneLoader, DefaultsFollowTheContract) {
   expectVec3(c.up, 0, 1, 0);
   EXPECT_FALSE(c.extrinsicsR);
   EXPECT_FALSE(c.extrinsicsT);
-  EXPECT_EQ(c.spp, 64u);
   EXPECT_FLOAT_EQ(c.apertureRadius, 0);
   EXPECT_FALSE(c.focusDistance);
 
@@ -451,7 +450,7 @@ TEST_F(SceneLoader, CameraWithFovAndEulerRotation) {
   EXPECT_FLOAT_EQ(c.fov, 45);
   expectVec3(c.position, 0, 0, 55);
   expectVec3(c.rotation, 10, 20, 30);
-  EXPECT_EQ(c.spp, 4u);
+  EXPECT_EQ(parse(R"({"camera": {"spp": 4}})").render.spp, 4u);  // the camera's spp is render.spp
 }
 
 TEST_F(SceneLoader, CameraWithIntrinsicsObject) {
@@ -512,16 +511,16 @@ TEST_F(SceneLoader, MaterialForms) {
         {"position": [0, 0, 0], "radius": 1, "material": "glass"},
         {"position": [0, 0, 0], "radius": 1, "material": "lamp"}]})");
   ASSERT_EQ(scene.spheres.size(), 7u);
-  const MaterialDesc& named = scene.spheres[0].material;
+  const Material& named = scene.spheres[0].material;
   EXPECT_EQ(named.type, MaterialType::Diffuse);
   expectVec3(named.color, 0.9f, 0.1f, 0.1f);
 
-  const MaterialDesc& inlined = scene.spheres[1].material;
+  const Material& inlined = scene.spheres[1].material;
   EXPECT_EQ(inlined.type, MaterialType::Glass);
   EXPECT_FLOAT_EQ(inlined.ior, 1.33f);
   expectVec3(inlined.color, 0.9f, 0.9f, 0.9f);
 
-  const MaterialDesc& shorthand = scene.spheres[2].material;
+  const Material& shorthand = scene.spheres[2].material;
   EXPECT_EQ(shorthand.type, MaterialType::Mirror);
   expectVec3(shorthand.color, 0.5f, 0.6f, 0.7f);
 

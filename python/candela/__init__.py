@@ -108,10 +108,16 @@ class Scene:
                threads: int = 0) -> np.ndarray:
         """Renders to a float32 array (height, width, 3) of linear radiance.
 
-        spp and seed override the scene's. backend: "auto" (the GPU when usable), "cpu" or
-        "cuda". sample_range=(first, count) renders only samples [first, first + count) of the
+        spp and seed override the scene's. backend: "auto" (the CPU until the CUDA backend has
+        passed its tests on a GPU), "cpu" or "cuda" (untested; RuntimeError where it cannot
+        run). sample_range=(first, count) renders only samples [first, first + count) of the
         spp and returns their mean; the count-weighted mean of disjoint slices equals the full
         render to rounding. threads: CPU threads, 0 for all cores.
+
+        Renders of one loaded scene and its frames share the flattened scene and its BVH: a
+        later render whose geometry is unchanged (another spp, seed or sample range, or a frame
+        where only the camera, lights or materials moved) reuses them, and one where objects
+        only moved refits the BVH.
         """
         if sample_range is not None:
             sample_range = (int(sample_range[0]), int(sample_range[1]))

@@ -34,10 +34,12 @@ def _connect(address: Optional[str]):
     return ray
 
 
-def _task_options(ray, cpus_per_task: int, max_retries: int) -> dict:
+def _task_options(ray, cpus_per_task: int, max_retries: int, backend: str) -> dict:
+    # Only the cuda backend renders on a GPU ("auto" means the CPU until the CUDA backend has
+    # passed its tests on one), so only its tasks ask for one.
     gpus = ray.cluster_resources().get("GPU", 0)
     options = {"max_retries": max_retries, "retry_exceptions": False, "scheduling_strategy": "SPREAD"}
-    if gpus >= 1:
+    if backend == "cuda" and gpus >= 1:
         options.update(num_gpus=1, num_cpus=1)
     else:
         options.update(num_cpus=cpus_per_task)
@@ -108,7 +110,7 @@ def render_frames(scenes_or_animation: Union[Scene, str, Sequence[Union[Scene, s
         return results
 
     ray = _connect(address)
-    options = _task_options(ray, cpus_per_task, max_retries)
+    options = _task_options(ray, cpus_per_task, max_retries, backend)
     threads = 0 if "num_gpus" in options else cpus_per_task
     task = ray.remote(_render_frame).options(**options)
     refs = {i: task.remote(scenes[i].spec, paths[i], spp, backend, threads) for i in todo}
@@ -136,7 +138,7 @@ def render_image(scene: Union[Scene, str], spp: Optional[int] = None, chunks: in
         scene = Scene.load(scene)
     spp = scene.spp if spp is None else spp
     ray = _connect(address)
-    options = _task_options(ray, cpus_per_task, max_retries)
+    options = _task_options(ray, cpus_per_task, max_retries, backend)
     threads = 0 if "num_gpus" in options else cpus_per_task
     task = ray.remote(_render_slice).options(**options)
     slices = split_samples(spp, chunks)

@@ -40,15 +40,17 @@ CANDELA_HDI Vec3 sampleCosineHemisphere(float u1, float u2) {
 }
 CANDELA_HDI float cosineHemispherePdf(float cosTheta) { return cosTheta > 0.0f ? cosTheta * kInvPi : 0.0f; }
 
-// Uniform direction within the cone around +z of half-angle acos(cosThetaMax);
-// pdf = 1 / (2 pi (1 - cosThetaMax)).
-CANDELA_HDI Vec3 sampleUniformCone(float u1, float u2, float cosThetaMax) {
-  const float cosTheta = (1.0f - u1) + u1 * cosThetaMax;
+// Uniform direction within the cone around +z of half-angle theta_max, given 1 - cos(theta_max)
+// (which callers compute without cancellation for narrow cones); pdf = 1 / (2 pi (1 - cos)).
+CANDELA_HDI Vec3 sampleUniformCone(float u1, float u2, float oneMinusCosThetaMax) {
+  const float cosTheta = 1.0f - u1 * oneMinusCosThetaMax;
   const float sinTheta = sqrtf(maxf(0.0f, 1.0f - cosTheta * cosTheta));
   const float phi = 2.0f * kPi * u2;
   return {cosf(phi) * sinTheta, sinf(phi) * sinTheta, cosTheta};
 }
-CANDELA_HDI float uniformConePdf(float cosThetaMax) { return 1.0f / (2.0f * kPi * (1.0f - cosThetaMax)); }
+CANDELA_HDI float uniformConePdf(float oneMinusCosThetaMax) {
+  return 1.0f / (2.0f * kPi * oneMinusCosThetaMax);
+}
 
 // Power heuristic (beta = 2) weight of a strategy with density `pdfA` against one with `pdfB`.
 CANDELA_HDI float powerHeuristic(float pdfA, float pdfB) {

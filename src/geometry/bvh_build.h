@@ -5,9 +5,9 @@
 // node becomes a leaf when the SAH prefers it and it holds at most kBvhMaxLeafSize primitives.
 // The binary tree is laid out depth-first in 32-byte BinaryBvhNode records (an interior node's
 // first child follows it, `offset` names the second), then collapsed into the 4-wide BvhNode
-// records the renderer traverses (scene/scene_view.h), which is all the build returns.
+// records the renderer traverses (geometry/bvh_node.h), which is all the build returns.
 //
-// Primitive indices follow SceneView's convention: p < sphereCount is a sphere, else triangle
+// Primitive indices follow GeometryView's convention: p < sphereCount is a sphere, else triangle
 // p - sphereCount. An empty scene yields zero nodes (a leaf cannot be empty: primCount 0 marks an
 // interior node); traversal reports a miss for a scene without nodes.
 #pragma once
@@ -16,7 +16,8 @@
 #include <vector>
 
 #include "core/vec3.h"
-#include "scene/scene_view.h"
+#include "geometry/bvh_node.h"
+#include "geometry/shapes.h"
 
 namespace candela {
 
@@ -58,5 +59,12 @@ std::vector<BvhNode> collapseToWide(const BinaryBvhNode* binary, uint32_t nodeCo
 // result does not depend on the thread count.
 BvhBuildResult buildBvh(const Sphere* spheres, uint32_t sphereCount, const Vec3* positions,
                         const Triangle* triangles, uint32_t triangleCount);
+
+// A tree of one level for benchmarks that measure what the BVH buys: a chain of nodes whose
+// slots are leaves of up to 255 primitives, every box the bounds of the whole scene, so every ray
+// that enters the scene is tested against every primitive. Traversal and refit need no special
+// case for it.
+BvhBuildResult buildFlatBvh(const Sphere* spheres, uint32_t sphereCount, const Vec3* positions,
+                            const Triangle* triangles, uint32_t triangleCount);
 
 }  // namespace candela

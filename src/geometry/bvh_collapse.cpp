@@ -19,22 +19,6 @@ namespace {
 
 Bounds3 boundsOf(const BinaryBvhNode& n) { return Bounds3(n.boundsMin, n.boundsMax); }
 
-BvhNode emptyWideNode() {
-  BvhNode w;
-  const float inf = std::numeric_limits<float>::infinity();
-  for (int axis = 0; axis < 3; ++axis)
-    for (int c = 0; c < 4; ++c) {
-      w.lo[axis][c] = inf;
-      w.hi[axis][c] = -inf;
-    }
-  for (int c = 0; c < 4; ++c) {
-    w.child[c] = kNoBvhChild;
-    w.count[c] = 0;
-  }
-  std::memset(w.pad, 0, sizeof w.pad);
-  return w;
-}
-
 class Collapser {
  public:
   Collapser(const BinaryBvhNode* binary, std::vector<BvhNode>& wide)
@@ -66,7 +50,7 @@ class Collapser {
     }
 
     const uint32_t index = static_cast<uint32_t>(wide_.size());
-    wide_.push_back(emptyWideNode());
+    wide_.push_back(emptyBvhNode());
     for (int i = 0; i < childCount; ++i) {
       const BinaryBvhNode& n = binary_[children[i]];
       uint32_t child;

@@ -9,7 +9,8 @@
 
 #include <vector>
 
-#include "scene/scene_view.h"
+#include "geometry/bvh_node.h"
+#include "geometry/shapes.h"
 
 namespace candela {
 

@@ -1,6 +1,6 @@
 // BVH traversal for closest-hit and any-hit (shadow) queries, shared by all backends.
 //
-// A loop over the 4-wide nodes (scene/scene_view.h) with a fixed stack: buildBvh bounds the tree
+// A loop over the 4-wide nodes (geometry/bvh_node.h) with a fixed stack: buildBvh bounds the tree
 // depth by kBvhMaxDepth = 63, and each level leaves at most three entries on the stack. Hits are
 // reported for t in (0, ray.tMax); a scene with no nodes is all miss.
 #pragma once
@@ -8,19 +8,20 @@
 #include <cstdint>
 
 #include "core/bits.h"
+#include "core/check.h"
 #include "geometry/aabb.h"
 #include "geometry/ray.h"
 #include "geometry/sphere_intersect.h"
+#include "geometry/geometry_view.h"
 #include "geometry/triangle_intersect.h"
-#include "scene/scene_view.h"
 
 namespace candela {
 
 // Each wide node pushes at most three entries and the tree is at most kBvhMaxDepth (63) deep.
 constexpr int kBvhStackSize = 3 * 63 + 1;
 
-// Intersects primitive `prim` (SceneView numbering) for t in (0, tMax); fills `hit` on a hit.
-CANDELA_HDI bool intersectPrimitive(const SceneView& scene, const Ray& ray, uint32_t prim,
+// Intersects primitive `prim` (GeometryView numbering) for t in (0, tMax); fills `hit` on a hit.
+CANDELA_HDI bool intersectPrimitive(const GeometryView& scene, const Ray& ray, uint32_t prim,
                                     float tMax, Hit* hit) {
   if (prim < scene.sphereCount) {
     float t;
@@ -53,7 +54,7 @@ namespace detail {
 // before its box (sorting them by entry distance was measured slower); inner children that are hit
 // are visited nearest first, the others pushed with their entry distances, so that once a nearer
 // hit is known a popped subtree that starts beyond it is skipped without touching its node.
-CANDELA_HDI bool traverseBvh(const SceneView& scene, const Ray& ray, bool anyHit, uint32_t skipPrim,
+CANDELA_HDI bool traverseBvh(const GeometryView& scene, const Ray& ray, bool anyHit, uint32_t skipPrim,
                              Hit* hit) {
   if (scene.nodeCount == 0) return false;
   const RayBoxTester box(
@@ -65,6 +66,7 @@ CANDELA_HDI bool traverseBvh(const SceneView& scene, const Ray& ray, bool anyHit
   int stackSize = 0;
   uint32_t current = 0;
   for (;;) {
+    CANDELA_DCHECK(current < scene.nodeCount);
     const BvhNode& node = scene.nodes[current];
     float entry[4];
     const int hitMask = box.hit4(node.lo, node.hi, tMax, entry);
@@ -77,6 +79,7 @@ CANDELA_HDI bool traverseBvh(const SceneView& scene, const Ray& ray, bool anyHit
       const int c = lowestSetBit(uint32_t(leaves));
       if (entry[c] > tMax) continue;
       for (uint32_t i = 0; i < node.count[c]; ++i) {
+        CANDELA_DCHECK(node.child[c] + i < scene.primIndexCount);
         const uint32_t prim = scene.primIndices[node.child[c] + i];
         if (prim == skipPrim) continue;
         if (intersectPrimitive(scene, ray, prim, tMax, hit)) {
@@ -104,6 +107,7 @@ CANDELA_HDI bool traverseBvh(const SceneView& scene, const Ray& ray, bool anyHit
     }
     if (nextCount > 0) {
       for (int k = nextCount - 1; k >= 1; --k) {
+        CANDELA_DCHECK(stackSize < kBvhStackSize);
         stackNode[stackSize] = next[k];
         stackEntry[stackSize++] = nextEntry[k];
       }
@@ -122,21 +126,21 @@ CANDELA_HDI bool traverseBvh(const SceneView& scene, const Ray& ray, bool anyHit
 
 // Nearest hit of `ray` for t in (0, ray.tMax). On a hit fills `hit` and returns true; on a miss
 // returns false and leaves `hit` untouched.
-CANDELA_HDI bool intersectClosest(const SceneView& scene, const Ray& ray, Hit* hit) {
+CANDELA_HDI bool intersectClosest(const GeometryView& scene, const Ray& ray, Hit* hit) {
   return detail::traverseBvh(scene, ray, false, 0xffffffffu, hit);
 }
 
 // Whether anything but primitive `skipPrim` (0xffffffff: none) blocks `ray` for t in
 // (0, ray.tMax). Used by shadow rays; a ray towards a point sampled on a sphere light skips
 // that light's own sphere.
-CANDELA_HDI bool intersectAny(const SceneView& scene, const Ray& ray, uint32_t skipPrim) {
+CANDELA_HDI bool intersectAny(const GeometryView& scene, const Ray& ray, uint32_t skipPrim) {
   Hit unused;
   return detail::traverseBvh(scene, ray, true, skipPrim, &unused);
 }
 
 // Nearest hit by testing every primitive, ignoring the BVH: the reference for tests and
 // benchmarks. Same contract as intersectClosest.
-CANDELA_HDI bool intersectClosestBruteForce(const SceneView& scene, const Ray& ray, Hit* hit) {
+CANDELA_HDI bool intersectClosestBruteForce(const GeometryView& scene, const Ray& ray, Hit* hit) {
   float tMax = ray.tMax;
   bool found = false;
   for (uint32_t prim = 0; prim < scene.primitiveCount(); ++prim) {
@@ -149,7 +153,7 @@ CANDELA_HDI bool intersectClosestBruteForce(const SceneView& scene, const Ray& r
 }
 
 // Any-hit by testing every primitive; the reference for intersectAny.
-CANDELA_HDI bool intersectAnyBruteForce(const SceneView& scene, const Ray& ray, uint32_t skipPrim) {
+CANDELA_HDI bool intersectAnyBruteForce(const GeometryView& scene, const Ray& ray, uint32_t skipPrim) {
   Hit unused;
   for (uint32_t prim = 0; prim < scene.primitiveCount(); ++prim)
     if (prim != skipPrim && intersectPrimitive(scene, ray, prim, ray.tMax, &unused)) return true;

@@ -3,7 +3,7 @@
 
 #include "core/float_error.h"
 #include "geometry/aabb.h"
-#include "scene/scene_view.h"
+#include "geometry/shapes.h"
 
 namespace candela {
 
@@ -24,7 +24,7 @@ inline Bounds3 triangleBounds(const Vec3* positions, const Triangle& t) {
   return b;
 }
 
-// Bounds of primitive p in SceneView numbering (spheres first, then triangles).
+// Bounds of primitive p in GeometryView numbering (spheres first, then triangles).
 inline Bounds3 primitiveBounds(uint32_t p, const Sphere* spheres, uint32_t sphereCount,
                                const Vec3* positions, const Triangle* triangles) {
   return p < sphereCount ? sphereBounds(spheres[p])

@@ -18,7 +18,7 @@ struct Ray {
 // bounds, material) is reconstructed from this afterwards, once, for the winning hit only.
 struct Hit {
   float t = kInfinity;
-  uint32_t prim = 0xffffffffu;  // index into SceneView::primitives order (see scene_view.h)
+  uint32_t prim = 0xffffffffu;  // primitive index (geometry/geometry_view.h)
   float b1 = 0, b2 = 0;         // barycentrics of vertices 1 and 2 (triangles only)
 
   CANDELA_HDI bool valid() const { return prim != 0xffffffffu; }

@@ -18,7 +18,7 @@
 
 #include "core/vec3.h"
 #include "geometry/ray.h"
-#include "scene/scene_view.h"
+#include "geometry/shapes.h"
 
 namespace candela {
 

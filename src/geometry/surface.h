@@ -15,8 +15,8 @@
 #include "core/constants.h"
 #include "core/float_error.h"
 #include "core/vec3.h"
+#include "geometry/geometry_view.h"
 #include "geometry/ray.h"
-#include "scene/scene_view.h"
 
 namespace candela {
 
@@ -45,7 +45,7 @@ CANDELA_HDI SurfacePoint sphereSurfaceAt(const Sphere& s, const Ray& ray, float 
   return sp;
 }
 
-CANDELA_HDI SurfacePoint triangleSurfaceAt(const SceneView& scene, const Triangle& tri, float b1,
+CANDELA_HDI SurfacePoint triangleSurfaceAt(const GeometryView& scene, const Triangle& tri, float b1,
                                            float b2) {
   SurfacePoint sp;
   const Vec3& p0 = scene.positions[tri.v[0]];
@@ -76,7 +76,7 @@ CANDELA_HDI SurfacePoint triangleSurfaceAt(const SceneView& scene, const Triangl
 }
 
 // The surface at `hit`, which `ray` found (intersectClosest or intersectPrimitive).
-CANDELA_HDI SurfacePoint surfaceAt(const SceneView& scene, const Ray& ray, const Hit& hit) {
+CANDELA_HDI SurfacePoint surfaceAt(const GeometryView& scene, const Ray& ray, const Hit& hit) {
   if (hit.prim < scene.sphereCount) return sphereSurfaceAt(scene.spheres[hit.prim], ray, hit.t);
   return triangleSurfaceAt(scene, scene.triangles[hit.prim - scene.sphereCount], hit.b1, hit.b2);
 }

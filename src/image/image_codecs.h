@@ -8,7 +8,7 @@
 #include <string>
 
 #include "image/image.h"
-#include "scene/scene_desc.h"
+#include "image/output_desc.h"
 
 namespace candela {
 

@@ -9,7 +9,7 @@
 #include "core/frame.h"
 #include "core/sampling.h"
 #include "render/fresnel.h"
-#include "scene/scene_view.h"
+#include "render/material.h"
 
 namespace candela {
 

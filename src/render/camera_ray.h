@@ -3,7 +3,7 @@
 
 #include "core/sampling.h"
 #include "geometry/ray.h"
-#include "scene/scene_view.h"
+#include "render/camera.h"
 
 namespace candela {
 

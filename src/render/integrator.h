@@ -9,6 +9,7 @@
 
 #include <cmath>
 
+#include "core/check.h"
 #include "core/float_error.h"
 #include "core/sobol_sampler.h"
 #include "geometry/bvh_traverse.h"
@@ -22,21 +23,10 @@ namespace candela {
 // Shadow rays stop this fraction short of their target (pbrt's ShadowEpsilon): relative, so it
 // holds at any scene scale.
 constexpr float kShadowEpsilon = 1e-4f;
-// Russian roulette starts after this many interactions. Starting at 3 killed most paths after two
-// diffuse bounces and doubled the error at equal spp; from 5 on (Mitsuba's default) the default
-// scene reaches the same error in about 28% less time.
+// Russian roulette starts after this many interactions (Mitsuba's default; docs/performance.md
+// has what earlier starts cost).
 constexpr uint32_t kRouletteDepth = 5;
 constexpr uint32_t kNoPrimitive = 0xffffffffu;
-
-CANDELA_HDI bool traceClosest(const SceneView& scene, const Ray& ray, Hit* hit) {
-  return scene.settings.useBvh ? intersectClosest(scene, ray, hit)
-                               : intersectClosestBruteForce(scene, ray, hit);
-}
-
-CANDELA_HDI bool traceOccluded(const SceneView& scene, const Ray& ray, uint32_t skipPrim) {
-  return scene.settings.useBvh ? intersectAny(scene, ray, skipPrim)
-                               : intersectAnyBruteForce(scene, ray, skipPrim);
-}
 
 CANDELA_HDI Ray spawnRay(const SurfacePoint& sp, const Vec3& wi) {
   Ray r;
@@ -51,7 +41,7 @@ CANDELA_HDI Vec3 sampleOneLight(const SceneView& scene, const Light& light, cons
                                 const SurfacePoint& sp, const Vec3& wo, float u1, float u2,
                                 RayCounters& counters) {
   LightSample ls;
-  if (!sampleLight(light, sp.p, u1, u2, &ls)) return Vec3(0.0f);
+  if (!sampleLight(scene, light, sp.p, u1, u2, &ls)) return Vec3(0.0f);
   const Vec3 f = evalDiffuse(m, wo, sp.ng, sp.ns, ls.wi);
   if (isBlack(f)) return Vec3(0.0f);
   Ray shadow = spawnRay(sp, ls.wi);
@@ -59,7 +49,7 @@ CANDELA_HDI Vec3 sampleOneLight(const SceneView& scene, const Light& light, cons
   shadow.tMax = length(target - shadow.origin) * (1.0f - kShadowEpsilon);
   ++counters.shadow;
   const uint32_t skip = light.type == LightType::Sphere ? light.sphere : kNoPrimitive;
-  if (traceOccluded(scene, shadow, skip)) return Vec3(0.0f);
+  if (intersectAny(scene, shadow, skip)) return Vec3(0.0f);
   const float lightPdf = light.selectPmf * ls.pdf;
   const float weight =
       ls.isDelta ? 1.0f : powerHeuristic(lightPdf, diffusePdf(wo, sp.ng, sp.ns, ls.wi));
@@ -109,20 +99,23 @@ CANDELA_HDI Vec3 traceRadiance(const SceneView& scene, Ray ray, SampleStream& rn
 
   for (uint32_t depth = 1;; ++depth) {
     Hit hit;
-    if (!traceClosest(scene, ray, &hit)) {
+    if (!intersectClosest(scene, ray, &hit)) {
       radiance += throughput * scene.environment;
       break;
     }
     const SurfacePoint sp = surfaceAt(scene, ray, hit);
+    CANDELA_DCHECK(sp.material < scene.materialCount);
     const Material& m = scene.materials[sp.material];
     const Vec3 wo = -ray.direction;
 
     if (m.type == MaterialType::Emissive) {
       if (dot(wo, sp.ng) > 0.0f) {  // emitters emit from their outside only
         float weight = 1.0f;
-        if (!specularBounce && m.lightIndex >= 0) {
-          const Light& light = scene.lights[m.lightIndex];
-          weight = powerHeuristic(bsdfPdf, light.selectPmf * sphereLightPdf(light, bouncePoint));
+        const int32_t light = hit.prim < scene.sphereCount ? scene.spheres[hit.prim].light : -1;
+        if (!specularBounce && light >= 0) {
+          const Sphere& surface = scene.spheres[hit.prim];
+          weight = powerHeuristic(bsdfPdf, scene.lights[light].selectPmf *
+                                               sphereLightPdf(surface, bouncePoint));
         }
         radiance += throughput * m.radiance * weight;
       }

@@ -7,9 +7,10 @@
 
 #include <cmath>
 
+#include "core/check.h"
 #include "core/frame.h"
 #include "core/sampling.h"
-#include "scene/scene_view.h"
+#include "render/scene_view.h"
 
 namespace candela {
 
@@ -27,13 +28,13 @@ CANDELA_HDI float sphereConeOneMinusCos(float sin2ThetaMax) {
                                     : 1.0f - sqrtf(1.0f - sin2ThetaMax);
 }
 
-// Solid-angle pdf with which sampleLight picks a direction towards sphere light `l` from p;
-// 0 when p is inside the light (which then shows it no emitting surface).
-CANDELA_HDI float sphereLightPdf(const Light& l, const Vec3& p) {
-  const float dist2 = lengthSquared(l.position - p);
-  const float r2 = l.radius * l.radius;
+// Solid-angle pdf with which sampleLight picks a direction towards the sphere light whose
+// surface is `s` from p; 0 when p is inside it (which then shows it no emitting surface).
+CANDELA_HDI float sphereLightPdf(const Sphere& s, const Vec3& p) {
+  const float dist2 = lengthSquared(s.center - p);
+  const float r2 = s.radius * s.radius;
   if (dist2 <= r2) return 0.0f;
-  return 1.0f / (2.0f * kPi * sphereConeOneMinusCos(r2 / dist2));
+  return uniformConePdf(sphereConeOneMinusCos(r2 / dist2));
 }
 
 // The light that next-event estimation samples for uniform u in [0, 1): light i with probability
@@ -52,38 +53,54 @@ CANDELA_HDI int selectLight(const SceneView& scene, float u) {
   return lo < scene.lightCount ? static_cast<int>(lo) : -1;
 }
 
-CANDELA_HDI bool sampleLight(const Light& l, const Vec3& p, float u1, float u2, LightSample* s) {
-  const Vec3 toCenter = l.position - p;
+CANDELA_HDI bool samplePointLight(const Light& l, const Vec3& p, LightSample* s) {
+  const Vec3 toLight = l.position - p;
+  const float dist2 = lengthSquared(toLight);
+  if (dist2 <= 0.0f) return false;
+  s->distance = sqrtf(dist2);
+  s->wi = toLight / s->distance;
+  s->radiance = l.power * (kInv4Pi / dist2);
+  s->pdf = 1.0f;
+  s->isDelta = true;
+  return true;
+}
+
+CANDELA_HDI bool sampleSphereLight(const SceneView& scene, const Light& l, const Vec3& p, float u1,
+                                   float u2, LightSample* s) {
+  CANDELA_DCHECK(l.sphere < scene.sphereCount);
+  const Sphere& sphere = scene.spheres[l.sphere];
+  const Vec3 toCenter = sphere.center - p;
   const float dist2 = lengthSquared(toCenter);
-  if (l.type == LightType::Point) {
-    if (dist2 <= 0.0f) return false;
-    s->distance = sqrtf(dist2);
-    s->wi = toCenter / s->distance;
-    s->radiance = l.power * (kInv4Pi / dist2);
-    s->pdf = 1.0f;
-    s->isDelta = true;
-    return true;
-  }
-  const float r2 = l.radius * l.radius;
+  const float r2 = sphere.radius * sphere.radius;
   if (dist2 <= r2) return false;
   const float dc = sqrtf(dist2);
-  const float sin2ThetaMax = r2 / dist2;
-  const float oneMinusCosMax = sphereConeOneMinusCos(sin2ThetaMax);
-  // Uniform in the cone: cos(theta) = 1 - u (1 - cos(theta_max)).
-  const float cosTheta = 1.0f - u1 * oneMinusCosMax;
-  const float sin2Theta = maxf(0.0f, 1.0f - cosTheta * cosTheta);
-  const float phi = 2.0f * kPi * u2;
-  const float sinTheta = sqrtf(sin2Theta);
+  const float oneMinusCosMax = sphereConeOneMinusCos(r2 / dist2);
+  const Vec3 local = sampleUniformCone(u1, u2, oneMinusCosMax);
   const Vec3 axis = toCenter / dc;
-  s->wi = normalize(Frame(axis).toWorld(Vec3(cosf(phi) * sinTheta, sinf(phi) * sinTheta, cosTheta)));
+  s->wi = normalize(Frame(axis).toWorld(local));
   // Distance to the near intersection with the sphere along wi (clamped at the tangent).
+  const float cosTheta = local.z;
+  const float sin2Theta = maxf(0.0f, 1.0f - cosTheta * cosTheta);
   const float b = dc * cosTheta;
   const float disc = maxf(0.0f, r2 - dc * dc * sin2Theta);
   s->distance = b - sqrtf(disc);
-  s->radiance = l.radiance;
-  s->pdf = 1.0f / (2.0f * kPi * oneMinusCosMax);
+  s->radiance = scene.materials[sphere.material].radiance;
+  s->pdf = uniformConePdf(oneMinusCosMax);
   s->isDelta = false;
   return s->distance > 0.0f;
+}
+
+// A sample of light `l` as seen from p, from the uniform numbers (u1, u2) (a point light uses
+// neither); false when the light shows p nothing.
+CANDELA_HDI bool sampleLight(const SceneView& scene, const Light& l, const Vec3& p, float u1,
+                             float u2, LightSample* s) {
+  switch (l.type) {
+    case LightType::Point:
+      return samplePointLight(l, p, s);
+    case LightType::Sphere:
+      return sampleSphereLight(scene, l, p, u1, u2, s);
+  }
+  return false;
 }
 
 }  // namespace candela

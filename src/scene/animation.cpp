@@ -32,7 +32,7 @@ void applyToObject(ObjectDesc& object, AnimProperty property, const Vec3& v) {
     case AnimProperty::Rotation: object.rotation = v; break;
     case AnimProperty::Scale: object.scale = v; break;
     case AnimProperty::Color:
-      if (!object.material) object.material = MaterialDesc{};  // diffuse, as a static "color"
+      if (!object.material) object.material = Material{};  // diffuse, as a static "color"
       object.material->color = v;
       break;
     default: break;

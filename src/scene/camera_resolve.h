@@ -4,7 +4,7 @@
 #pragma once
 
 #include "scene/scene_desc.h"
-#include "scene/scene_view.h"
+#include "render/camera.h"
 
 namespace candela {
 

@@ -1,26 +1,17 @@
 // flattenScene: SceneDesc -> SceneData (world-space arrays, resolved camera, BVH).
+#include "scene/flatten.h"
+
 #include <algorithm>
 #include <unordered_map>
-#include <limits>
 
 #include "core/constants.h"
 #include "core/rotation.h"
 #include "geometry/bvh_build.h"
 #include "scene/camera_resolve.h"
-#include "scene/scene_data.h"
 
 namespace candela {
 
 namespace {
-
-Material toMaterial(const MaterialDesc& d) {
-  Material m;
-  m.type = d.type;
-  m.color = d.color;
-  m.ior = d.ior;
-  m.radiance = d.radiance;
-  return m;
-}
 
 uint32_t addMaterial(SceneData& s, const Material& m) {
   s.materials.push_back(m);
@@ -33,16 +24,17 @@ uint32_t addMaterial(SceneData& s, const Material& m) {
 //
 // The renderer keeps one normal per vertex (normals run parallel to positions), so a position
 // that the file pairs with several normals (a crease) is split into one vertex per normal; a
-// vertex of a face without normals gets the zero vector, meaning "use the face normal".
+// vertex of a face without normals gets the encoding "none" (OctNormal()), meaning "use the face
+// normal".
 // With `geometry` false only the object's materials are appended (see refreshSceneValues).
 void addObject(SceneData& s, const ObjectDesc& obj, bool geometry) {
   const MeshDesc& mesh = obj.mesh;
   uint32_t materialBase = 0;
   if (obj.material) {
-    materialBase = addMaterial(s, toMaterial(*obj.material));
+    materialBase = addMaterial(s, *obj.material);
   } else {
     materialBase = uint32_t(s.materials.size());
-    for (const MaterialDesc& m : mesh.materials) s.materials.push_back(toMaterial(m));
+    s.materials.insert(s.materials.end(), mesh.materials.begin(), mesh.materials.end());
   }
   if (!geometry) return;
 
@@ -86,40 +78,47 @@ void addObject(SceneData& s, const ObjectDesc& obj, bool geometry) {
   }
 }
 
+// The power of a light as light selection weighs it: the sum of its RGB components.
+double selectionPower(const LightDesc& d) {
+  const Vec3 power = d.color * d.intensity;
+  return std::max(0.0, double(power.x) + power.y + power.z);
+}
+
+// A point light, or a sphere light: an emissive sphere of radiance color*intensity/(4 pi^2 r^2)
+// that names the light, which in turn names the sphere.
 void addLight(SceneData& s, const LightDesc& d) {
   Light light;
   light.type = d.type;
-  light.position = d.position;
-  light.radius = d.radius;
-  light.power = d.color * d.intensity;
-  if (d.type == LightType::Sphere) {
-    light.radiance = light.power / (4.0f * kPi * kPi * d.radius * d.radius);
+  if (d.type == LightType::Point) {
+    light.position = d.position;
+    light.power = d.color * d.intensity;
+  } else {
     Material emitter;
     emitter.type = MaterialType::Emissive;
     emitter.color = Vec3(0.0f);
-    emitter.radiance = light.radiance;
-    emitter.lightIndex = int32_t(s.lights.size());
+    emitter.radiance = (d.color * d.intensity) / (4.0f * kPi * kPi * d.radius * d.radius);
     light.sphere = uint32_t(s.spheres.size());
-    s.spheres.push_back(Sphere{d.position, d.radius, addMaterial(s, emitter)});
+    s.spheres.push_back(
+        Sphere{d.position, d.radius, addMaterial(s, emitter), int32_t(s.lights.size())});
   }
   s.lights.push_back(light);
 }
 
-// Light selection (see Light::selectPmf): every light, or one in proportion to its power (the sum
-// of its RGB components), lights without power never.
-void setLightSelection(std::vector<Light>& lights) {
+// Light selection (see Light::selectPmf): every light, or one in proportion to its power,
+// lights without power never.
+void setLightSelection(std::vector<Light>& lights, const std::vector<LightDesc>& descs) {
   if (lights.size() <= kSampleEveryLightUpTo) {
     for (Light& l : lights) l.selectPmf = l.selectCdf = 1.0f;
     return;
   }
   double total = 0.0;
-  for (const Light& l : lights) total += std::max(0.0, double(l.power.x) + l.power.y + l.power.z);
+  for (const LightDesc& d : descs) total += selectionPower(d);
   double running = 0.0;
-  for (Light& l : lights) {
-    const double power = std::max(0.0, double(l.power.x) + l.power.y + l.power.z);
+  for (size_t i = 0; i < lights.size(); ++i) {
+    const double power = selectionPower(descs[i]);
     running += power;
-    l.selectPmf = total > 0.0 ? float(power / total) : 0.0f;
-    l.selectCdf = total > 0.0 ? float(running / total) : 0.0f;
+    lights[i].selectPmf = total > 0.0 ? float(power / total) : 0.0f;
+    lights[i].selectCdf = total > 0.0 ? float(running / total) : 0.0f;
   }
   // Rounding must not leave u close to 1 beyond the last light with power.
   for (size_t i = lights.size(); i-- > 0;) {
@@ -135,10 +134,10 @@ void setLightSelection(std::vector<Light>& lights) {
 // when a refresh re-appends the materials.
 void addContents(SceneData& s, const SceneDesc& desc, bool geometry) {
   for (const SphereDesc& sd : desc.spheres)
-    s.spheres.push_back(Sphere{sd.position, sd.radius, addMaterial(s, toMaterial(sd.material))});
+    s.spheres.push_back(Sphere{sd.position, sd.radius, addMaterial(s, sd.material)});
   // Lights after plain spheres: sphere lights append their own emissive spheres.
   for (const LightDesc& ld : desc.lights) addLight(s, ld);
-  setLightSelection(s.lights);
+  setLightSelection(s.lights, desc.lights);
   for (const ObjectDesc& od : desc.objects) addObject(s, od, geometry);
   // Vertices after the last smooth mesh have no normals either.
   if (geometry && !s.normals.empty()) s.normals.resize(s.positions.size(), OctNormal());
@@ -180,10 +179,12 @@ void orderTrianglesByLeaf(SceneData& s) {
 
 namespace {
 
-// The BVH over a flattened scene's contents, then the triangles in its leaf order.
-void addBvh(SceneData& s) {
-  BvhBuildResult bvh = buildBvh(s.spheres.data(), uint32_t(s.spheres.size()), s.positions.data(),
-                                s.triangles.data(), uint32_t(s.triangles.size()));
+// The BVH over a flattened scene's contents (the one-level tree for `flat`), then the
+// triangles in its leaf order.
+void addBvh(SceneData& s, bool flat) {
+  BvhBuildResult bvh = (flat ? buildFlatBvh : buildBvh)(
+      s.spheres.data(), uint32_t(s.spheres.size()), s.positions.data(), s.triangles.data(),
+      uint32_t(s.triangles.size()));
   s.nodes = std::move(bvh.wideNodes);
   s.primIndices = std::move(bvh.primIndices);
   orderTrianglesByLeaf(s);
@@ -197,55 +198,15 @@ void addBvh(SceneData& s) {
 
 SceneData flattenScene(const SceneDesc& desc) {
   SceneData s = flattenSceneContents(desc);
-  addBvh(s);
+  addBvh(s, desc.flatBvh);
   return s;
 }
 
 SceneData flattenScene(SceneDesc&& desc) {
   SceneData s = flattenSceneContents(desc);
   for (ObjectDesc& object : desc.objects) object.mesh = MeshDesc();
-  addBvh(s);
+  addBvh(s, desc.flatBvh);
   return s;
-}
-
-SceneView SceneData::view() const {
-  SceneView v;
-  v.materials = materials.data();
-  v.spheres = spheres.data();
-  v.positions = positions.data();
-  v.normals = normals.data();
-  v.triangles = triangles.data();
-  v.lights = lights.data();
-  v.nodes = nodes.data();
-  v.primIndices = primIndices.data();
-  v.materialCount = uint32_t(materials.size());
-  v.sphereCount = uint32_t(spheres.size());
-  v.positionCount = uint32_t(positions.size());
-  v.normalCount = uint32_t(normals.size());
-  v.triangleCount = uint32_t(triangles.size());
-  v.lightCount = uint32_t(lights.size());
-  v.nodeCount = uint32_t(nodes.size());
-  v.environment = environment;
-  v.emissionReachable = !isBlack(environment);
-  for (const Material& m : materials) v.emissionReachable |= m.type == MaterialType::Emissive;
-  v.camera = camera;
-  v.settings = settings;
-  return v;
-}
-
-void SceneData::bounds(Vec3* lo, Vec3* hi) const {
-  Vec3 a(std::numeric_limits<float>::infinity()), b(-std::numeric_limits<float>::infinity());
-  for (const Sphere& sp : spheres) {
-    a = min(a, sp.center - Vec3(sp.radius));
-    b = max(b, sp.center + Vec3(sp.radius));
-  }
-  for (const Triangle& t : triangles)
-    for (uint32_t k : t.v) {
-      a = min(a, positions[k]);
-      b = max(b, positions[k]);
-    }
-  *lo = a;
-  *hi = b;
 }
 
 }  // namespace candela

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "geometry/bvh_refit.h"
+#include "scene/flatten.h"
 
 namespace candela {
 namespace {
@@ -39,6 +40,7 @@ uint64_t hashOf(const std::vector<T>& items) {
 // Both keys list the same things; the structure key leaves out what a refit can follow.
 std::string sceneKey(const SceneDesc& desc, bool withTransforms) {
   KeyWriter key;
+  key.add(desc.flatBvh);
   key.add(desc.spheres.size());
   for (const SphereDesc& s : desc.spheres) {
     if (withTransforms) {
@@ -81,7 +83,7 @@ const SceneData& FrameScene::prepare(const SceneDesc& desc) {
   std::string geometry = geometryKey(desc), structure = structureKey(desc);
   if (!geometryKey_.empty() && geometry == geometryKey_) {
     refreshSceneValues(data_, desc);
-    preparation_ = FramePreparation::Reused;
+    change_ = SceneChange::Values;
   } else {
     bool refitted = false;
     if (!structureKey_.empty() && structure == structureKey_ && !data_.nodes.empty()) {
@@ -100,7 +102,7 @@ const SceneData& FrameScene::prepare(const SceneDesc& desc) {
       data_ = flattenScene(desc);
       builtCost_ = bvhSahCost(data_.nodes);
     }
-    preparation_ = refitted ? FramePreparation::Refitted : FramePreparation::Built;
+    change_ = refitted ? SceneChange::Motion : SceneChange::Structure;
     geometryKey_ = std::move(geometry);
     structureKey_ = std::move(structure);
   }

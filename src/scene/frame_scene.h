@@ -14,23 +14,24 @@
 
 #include <string>
 
-#include "scene/scene_data.h"
+#include "render/scene_change.h"
+#include "render/scene_data.h"
+#include "scene/scene_desc.h"
 
 namespace candela {
 
 // A refitted tree is rebuilt once its SAH cost exceeds this multiple of the cost at its build.
 constexpr double kRefitCostLimit = 1.5;
 
-enum class FramePreparation { Built, Reused, Refitted };
-
 class FrameScene {
  public:
   // The renderable scene of `desc` (a still, e.g. from sceneAtFrame); valid until the next call.
   const SceneData& prepare(const SceneDesc& desc);
 
-  // About the last prepare(): what it did with the geometry and BVH, and how long it took.
-  FramePreparation preparation() const { return preparation_; }
-  bool reused() const { return preparation_ == FramePreparation::Reused; }
+  // About the last prepare(): what may differ from the frame before (Values: the geometry and
+  // BVH were reused; Motion: refitted; Structure: flattened and built afresh), and how long it
+  // took.
+  SceneChange change() const { return change_; }
   double seconds() const { return seconds_; }
 
  private:
@@ -38,7 +39,7 @@ class FrameScene {
   std::string geometryKey_;   // the bytes that must match for reuse; empty before the first frame
   std::string structureKey_;  // the bytes that must match for a refit
   double builtCost_ = 0;      // SAH cost of the BVH when it was last built
-  FramePreparation preparation_ = FramePreparation::Built;
+  SceneChange change_ = SceneChange::Structure;
   double seconds_ = 0;
 };
 

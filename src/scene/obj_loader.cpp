@@ -27,14 +27,14 @@ Vec3 vec3At(const std::vector<tinyobj::real_t>& values, size_t index) {
 }
 
 // One diffuse material per MTL material: Kd, or 0.8 where the material sets none.
-std::vector<MaterialDesc> diffuseMaterials(const std::vector<tinyobj::material_t>& materials,
+std::vector<Material> diffuseMaterials(const std::vector<tinyobj::material_t>& materials,
                                            const MtlLibrary& library, const std::string& label) {
-  std::vector<MaterialDesc> result;
+  std::vector<Material> result;
   for (size_t i = 0; i < materials.size(); ++i) {
     const tinyobj::material_t& material = materials[i];
     // tinyobjloader always appends the material it was building; unnamed at the end, it is none.
     if (i + 1 == materials.size() && material.name.empty()) break;
-    MaterialDesc desc;
+    Material desc;
     desc.type = MaterialType::Diffuse;
     if (library.kdNames.count(material.name) != 0)
       desc.color = {material.diffuse[0], material.diffuse[1], material.diffuse[2]};
@@ -90,7 +90,7 @@ MeshDesc buildMesh(const tinyobj::ObjReader& reader, const MtlLibrary& library,
       mesh.triangles.push_back(triangle);
     }
   }
-  if (fallbackUsed) mesh.materials.push_back(MaterialDesc{});  // diffuse 0.8
+  if (fallbackUsed) mesh.materials.push_back(Material{});  // diffuse 0.8
   return mesh;
 }
 

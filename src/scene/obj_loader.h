@@ -4,7 +4,7 @@
 // polygons by ear clipping), keeping the file's vertex order, so a face's outside stays the side
 // its vertices wind counter-clockwise around. Vertex normals are kept where all three corners of a
 // triangle have one; otherwise the triangle's normal indices are -1 (face normal). Each MTL
-// material becomes a diffuse MaterialDesc with colour Kd; faces without one (no usemtl, no MTL
+// material becomes a diffuse Material with colour Kd; faces without one (no usemtl, no MTL
 // file, or a name the MTL does not define) use an extra diffuse 0.8 entry. A missing MTL file is
 // not an error: its faces fall back to that entry.
 //

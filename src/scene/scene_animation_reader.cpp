@@ -188,7 +188,7 @@ void checkUsed(const JsonValue& property, const AnimTrack& track, const SceneDes
         scene.lights[track.index].type == LightType::Point)
       unused("a point light (only \"sphere\" lights have a radius)");
   } else if (track.property == AnimProperty::Color) {
-    const MaterialDesc* m = track.target == AnimTarget::Sphere
+    const Material* m = track.target == AnimTarget::Sphere
                                 ? &scene.spheres[track.index].material
                                 : (scene.objects[track.index].material
                                        ? &*scene.objects[track.index].material

@@ -92,7 +92,7 @@ void readPose(JsonObject& fields, CameraDesc& camera) {
 
 }  // namespace
 
-CameraDesc readCamera(const JsonValue& value) {
+CameraDesc readCamera(const JsonValue& value, RenderSettings& render) {
   JsonObject fields(
       value, {"width", "height", "fov", "intrinsics", "position", "rotation", "look_at", "up",
               "extrinsics", "spp", "rays", "aperture_radius", "focus_distance"});
@@ -116,7 +116,7 @@ CameraDesc readCamera(const JsonValue& value) {
   fields.exclusive("spp", "rays");
   std::optional<JsonValue> spp = fields.get("spp");
   if (!spp) spp = fields.get("rays");
-  if (spp) camera.spp = static_cast<uint32_t>(spp->integer(1, kMaxUint32, "a positive integer"));
+  if (spp) render.spp = static_cast<uint32_t>(spp->integer(1, kMaxUint32, "a positive integer"));
 
   if (std::optional<JsonValue> aperture = fields.get("aperture_radius"))
     camera.apertureRadius = aperture->nonNegativeNumber();

@@ -13,6 +13,7 @@
 
 namespace candela {
 
-CameraDesc readCamera(const JsonValue& value);
+// The camera's spp (the scene's samples per pixel) goes to `render`.
+CameraDesc readCamera(const JsonValue& value, RenderSettings& render);
 
 }  // namespace candela

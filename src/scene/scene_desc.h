@@ -12,23 +12,19 @@
 
 #include "core/mat3.h"
 #include "core/vec3.h"
-#include "scene/scene_view.h"
+#include "image/output_desc.h"
+#include "render/light.h"
+#include "render/material.h"
+#include "render/render_settings.h"
 
 namespace candela {
-
-struct MaterialDesc {
-  MaterialType type = MaterialType::Diffuse;
-  Vec3 color{0.8f};
-  float ior = 1.5f;
-  Vec3 radiance{0.0f};
-};
 
 struct SphereDesc {
   std::string id;     // may be empty
   std::string where;  // JSON path, e.g. "spheres[2]", for later messages
   Vec3 position;
   float radius = 1;
-  MaterialDesc material;
+  Material material;
 };
 
 // A triangle as the OBJ file indexes it: positions and normals separately.
@@ -43,7 +39,7 @@ struct MeshDesc {
   std::vector<Vec3> positions;
   std::vector<Vec3> normals;              // from the file's `vn`; may be empty
   std::vector<MeshTriangle> triangles;
-  std::vector<MaterialDesc> materials;  // from the MTL (Kd as diffuse), else one diffuse 0.8
+  std::vector<Material> materials;  // from the MTL (Kd as diffuse), else one diffuse 0.8
 };
 
 struct ObjectDesc {
@@ -54,7 +50,7 @@ struct ObjectDesc {
   Vec3 rotation;     // degrees, R = Rz * Ry * Rx
   Vec3 scale{1.0f};
   bool smooth = true;
-  std::optional<MaterialDesc> material;  // overrides the mesh's own materials when present
+  std::optional<Material> material;  // overrides the mesh's own materials when present
   MeshDesc mesh;
 };
 
@@ -78,20 +74,11 @@ struct CameraDesc {
   Vec3 up{0, 1, 0};
   std::optional<Mat3> extrinsicsR;  // world-to-camera, OpenCV axes
   std::optional<Vec3> extrinsicsT;
-  uint32_t spp = 64;
   float apertureRadius = 0;
   std::optional<float> focusDistance;
 };
 
-enum class GammaCurve { Power, Srgb };
-
-struct OutputDesc {
-  GammaCurve curve = GammaCurve::Power;
-  float gamma = 2.2f;
-  float exposure = 0;  // stops
-};
-
-// What an animation track can change (shared/scene-format.md, *Animation*). Which properties a
+// What an animation track can change (docs/scene-format.md, *Animation*). Which properties a
 // target accepts is the loader's check; see scene_animation_reader.h.
 enum class AnimTarget { Camera, Sphere, Object, Light };
 enum class AnimProperty {
@@ -123,7 +110,10 @@ struct AnimationDesc {
 struct SceneDesc {
   std::string file;  // the scene file as named by the user, prefix of every message
   CameraDesc camera;
-  RenderSettings render;  // spp is taken from camera.spp when flattening
+  RenderSettings render;  // the file's camera.spp is render.spp
+  // Benchmarks only (`candela render --no-bvh`): a BVH of one level, so every ray is tested
+  // against every primitive; shows what the BVH buys. Images are the same either way.
+  bool flatBvh = false;
   OutputDesc output;
   std::vector<SphereDesc> spheres;
   std::vector<ObjectDesc> objects;

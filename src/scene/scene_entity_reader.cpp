@@ -48,7 +48,7 @@ SphereDesc readSphere(const JsonValue& value, const MaterialLibrary& library) {
   if (!position) fields.fail("missing required key \"position\"");
   sphere.position = position->vec3();
   sphere.radius = fields.require("radius").positiveNumber();
-  sphere.material = readMaterialReference(fields, library).value_or(MaterialDesc{});
+  sphere.material = readMaterialReference(fields, library).value_or(Material{});
   fields.finish();
   return sphere;
 }

@@ -72,10 +72,9 @@ SceneDesc parseSceneText(const std::string& text, const std::string& fileLabel,
 
   SceneDesc scene;
   scene.file = fileLabel;
-  scene.camera = readCamera(top.require("camera"));
+  scene.camera = readCamera(top.require("camera"), scene.render);
   if (std::optional<JsonValue> render = top.get("render"))
     readRender(*render, scene.render, scene.output);
-  scene.render.spp = scene.camera.spp;
 
   MaterialLibrary library;
   if (std::optional<JsonValue> materials = top.get("materials"))

@@ -1,6 +1,6 @@
 // Scene file -> validated SceneDesc, with its OBJ meshes loaded.
 //
-// Implements the format of shared/scene-format.md in three steps: JSON text -> document
+// Implements the format of docs/scene-format.md in three steps: JSON text -> document
 // (json_parse.h), document -> validated descriptions (scene_*_reader.h, every key accounted for),
 // then the OBJ files (obj_loader.h). A scene that cannot be rendered throws exactly one SceneError,
 // whose message names the file as the caller gave it and the JSON path of the fault:

@@ -21,8 +21,8 @@ std::string notUsedBy(size_t type) {
 
 // The fields of a material of type kTypes[type], read from `fields`: the material object itself,
 // or for the shorthand the sphere or object that carries them.
-MaterialDesc readFields(JsonObject& fields, size_t type) {
-  MaterialDesc material;
+Material readFields(JsonObject& fields, size_t type) {
+  Material material;
   material.type = kTypes[type];
   switch (material.type) {
     case MaterialType::Diffuse:
@@ -78,21 +78,21 @@ MaterialLibrary readMaterialLibrary(const JsonValue& value) {
   return library;
 }
 
-MaterialDesc readMaterial(const JsonValue& value) {
+Material readMaterial(const JsonValue& value) {
   JsonObject fields(value, {"type", "color", "ior", "radiance"}, "a material object");
   const size_t type = fields.require("type").choice(kTypeNames);
-  MaterialDesc material = readFields(fields, type);
+  Material material = readFields(fields, type);
   fields.finish();
   return material;
 }
 
-std::optional<MaterialDesc> readMaterialReference(JsonObject& owner,
+std::optional<Material> readMaterialReference(JsonObject& owner,
                                                   const MaterialLibrary& library) {
   const std::optional<JsonValue> reference = owner.get("material");
   if (!reference) {
     owner.reject("ior", "not used without a \"glass\" material");
     if (std::optional<JsonValue> color = owner.get("color")) {
-      MaterialDesc diffuse;
+      Material diffuse;
       diffuse.color = color->colour();
       return diffuse;
     }

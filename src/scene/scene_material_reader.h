@@ -1,7 +1,7 @@
 // Materials in a scene file: the named library, material objects, and what a sphere or an object
 // says about its material.
 //
-// A sphere or object names its material in one of three ways (shared/scene-format.md):
+// A sphere or object names its material in one of three ways (docs/scene-format.md):
 //   "material": "red_wall"                       a material defined under top-level "materials"
 //   "material": {"type": "glass", "ior": 1.33}   inline
 //   "material": "glass", "ior": 1.33             the seed shorthand: type name, fields beside it
@@ -18,17 +18,17 @@
 
 namespace candela {
 
-using MaterialLibrary = std::map<std::string, MaterialDesc>;
+using MaterialLibrary = std::map<std::string, Material>;
 
 // The top-level "materials" object: name -> material object.
 MaterialLibrary readMaterialLibrary(const JsonValue& value);
 
 // A material object {"type": ..., fields of that type}.
-MaterialDesc readMaterial(const JsonValue& value);
+Material readMaterial(const JsonValue& value);
 
 // The material that `owner` (a sphere or object) gives through its "material", "color" and "ior"
 // keys; nothing when it gives none.
-std::optional<MaterialDesc> readMaterialReference(JsonObject& owner,
+std::optional<Material> readMaterialReference(JsonObject& owner,
                                                   const MaterialLibrary& library);
 
 }  // namespace candela

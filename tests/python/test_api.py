@@ -99,6 +99,25 @@ def test_animation_frames():
     np.testing.assert_array_equal(rebuilt.render(backend="cpu"), imgs[2])
 
 
+def test_renders_of_one_scene_reuse_its_flattened_scene():
+    # Frames share one flattened scene, as the CLI's sequences do: the ball's moves refit the
+    # BVH, a render with other samples reuses it whole, and the images equal fresh renders.
+    scene = candela.Scene.from_dict(animated_scene(frames=3))
+    assert scene._core._last_change is None
+    first = scene.frame(0).render(backend="cpu")
+    assert scene._core._last_change == "structure"
+    moved = scene.frame(1).render(backend="cpu")
+    assert scene._core._last_change == "motion"
+    again = scene.frame(1).render(spp=2, seed=9, backend="cpu")
+    assert scene._core._last_change == "values"
+    fresh = candela.Scene.from_dict(animated_scene(frames=3))
+    np.testing.assert_array_equal(first, fresh.frame(0).render(backend="cpu"))
+    np.testing.assert_array_equal(moved, candela.Scene.from_dict(animated_scene(frames=3))
+                                  .frame(1).render(backend="cpu"))
+    np.testing.assert_array_equal(again, candela.Scene.from_dict(animated_scene(frames=3))
+                                  .frame(1).render(spp=2, seed=9, backend="cpu"))
+
+
 def test_write_image_formats(tmp_path, scene_dict):
     img = candela.Scene.from_dict(scene_dict).render()
     for name in ["a.png", "a.exr", "a.pfm"]:

@@ -7,12 +7,12 @@
 #include <string>
 #include <vector>
 
-#include "apps/cli/backend.h"
+#include "backends/renderer.h"
 
 namespace candela::cli {
 
 // `candela render`; an absent optional keeps the scene file's value.
-struct RenderOptions {
+struct RenderCommandOptions {
   std::vector<std::string> scenes;  // one still, one animation, or a sequence of stills
   std::string output;  // image file, or a folder for a sequence; empty: under out/
   std::optional<uint32_t> spp;

@@ -4,7 +4,7 @@
 
 #include <cstdio>
 
-#include "scene/scene_data.h"
+#include "scene/flatten.h"
 #include "scene/scene_loader.h"
 
 namespace candela::cli {

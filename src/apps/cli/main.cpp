@@ -11,6 +11,7 @@
 #include "apps/cli/info_command.h"
 #include "apps/cli/render_command.h"
 #include "apps/cli/version.h"
+#include "backends/backend_error.h"
 #include "image/image_io.h"
 #include "scene/scene_error.h"
 
@@ -24,7 +25,7 @@ int fail(ExitCode code, const char* message) {
 }
 
 // Runs the chosen subcommand and maps each kind of error to its exit code.
-int dispatch(CLI::App& app, CLI::App* render, const RenderOptions& renderOptions, CLI::App* info,
+int dispatch(CLI::App& app, CLI::App* render, const RenderCommandOptions& renderOptions, CLI::App* info,
              const InfoOptions& infoOptions) {
   try {
     if (render->parsed()) return runRender(renderOptions);
@@ -36,6 +37,8 @@ int dispatch(CLI::App& app, CLI::App* render, const RenderOptions& renderOptions
   } catch (const candela::SceneError& e) {
     return fail(kExitUsage, e.what());
   } catch (const candela::ImageWriteError& e) {
+    return fail(kExitFailure, e.what());
+  } catch (const candela::BackendError& e) {
     return fail(kExitFailure, e.what());
   } catch (const std::bad_alloc&) {
     return fail(kExitFailure,
@@ -57,7 +60,7 @@ int main(int argc, char** argv) {
     return std::string("candela: error: ") + e.what() + "\nRun with --help for usage.\n";
   });
 
-  RenderOptions renderOptions;
+  RenderCommandOptions renderOptions;
   InfoOptions infoOptions;
   CLI::App* render = addRenderCommand(app, &renderOptions);
   CLI::App* info = addInfoCommand(app, &infoOptions);

@@ -21,7 +21,7 @@
 #include "apps/cli/stats_writer.h"
 #include "apps/cli/summary.h"
 #include "image/image_io.h"
-#include "scene/scene_data.h"
+#include "scene/flatten.h"
 #include "scene/scene_loader.h"
 
 namespace fs = std::filesystem;
@@ -61,18 +61,18 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-int renderStill(const RenderOptions& options, SceneDesc desc, double loadSeconds);
+int renderStill(const RenderCommandOptions& options, SceneDesc desc, double loadSeconds);
 
 }  // namespace
 
-void applyOverrides(const RenderOptions& options, SceneDesc* desc) {
-  if (options.spp) desc->camera.spp = desc->render.spp = *options.spp;
+void applyOverrides(const RenderCommandOptions& options, SceneDesc* desc) {
+  if (options.spp) desc->render.spp = *options.spp;
   if (options.seed) desc->render.seed = *options.seed;
   if (options.maxDepth) desc->render.maxDepth = *options.maxDepth;
-  if (options.noBvh) desc->render.useBvh = false;
+  if (options.noBvh) desc->flatBvh = true;
 }
 
-CLI::App* addRenderCommand(CLI::App& app, RenderOptions* options) {
+CLI::App* addRenderCommand(CLI::App& app, RenderCommandOptions* options) {
   CLI::App* cmd = app.add_subcommand(
       "render", "Render a scene file to an image, or an animation or several files to frames");
   cmd->add_option("scenes", options->scenes,
@@ -122,7 +122,7 @@ CLI::App* addRenderCommand(CLI::App& app, RenderOptions* options) {
   return cmd;
 }
 
-int runRender(const RenderOptions& options) {
+int runRender(const RenderCommandOptions& options) {
   // oneTBB starts its worker threads on first use; an empty task started now lets that happen
   // while the scenes load instead of inside the first parallel step (the BVH build), where it
   // cost a small scene's build a millisecond or more.
@@ -142,7 +142,7 @@ int runRender(const RenderOptions& options) {
 
 namespace {
 
-int renderStill(const RenderOptions& options, SceneDesc desc, double loadSeconds) {
+int renderStill(const RenderCommandOptions& options, SceneDesc desc, double loadSeconds) {
   const std::string& sceneFile = options.scenes[0];
   const std::string output =
       options.output.empty() ? defaultOutputPath(sceneFile) : options.output;
@@ -162,12 +162,14 @@ int renderStill(const RenderOptions& options, SceneDesc desc, double loadSeconds
   std::unique_ptr<ProgressBar> bar;
   if (ProgressBar::wanted(options.quiet)) bar = std::make_unique<ProgressBar>(stderr);
 
-  RenderControl control;
-  control.sceneLabel = sceneFile;
-  control.threads = options.threads;
-  control.cancel = &interrupt.flag();
-  if (bar) control.progress = [&bar](double fraction) { bar->update(fraction); };
-  const RenderResult result = renderScene(backend, scene, control);
+  RenderOptions render;
+  render.sceneLabel = sceneFile;
+  render.threads = options.threads;
+  render.cancel = &interrupt.flag();
+  if (bar) render.progress = [&bar](double fraction) { bar->update(fraction); };
+  const std::unique_ptr<Renderer> renderer = makeRenderer(backend);
+  renderer->setScene(scene, SceneChange::Structure);
+  const RenderResult result = renderer->render(render);
   if (bar) bar->clear();
 
   if (result.cancelled) {
@@ -181,6 +183,7 @@ int renderStill(const RenderOptions& options, SceneDesc desc, double loadSeconds
     info.scene = sceneFile;
     info.backend = backendName(backend);
     info.threads = options.threads;
+    info.useBvh = !options.noBvh;
     info.loadSeconds = loadSeconds;
     info.flattenSeconds = flattenSeconds;
     createParentDirectories(options.stats);

@@ -15,13 +15,13 @@
 namespace candela::cli {
 
 // Declares the subcommand and its options on `app`; parsing fills `options`.
-CLI::App* addRenderCommand(CLI::App& app, RenderOptions* options);
+CLI::App* addRenderCommand(CLI::App& app, RenderCommandOptions* options);
 
 // Loads, renders and writes the image; returns the exit code. Throws CliError, SceneError,
 // ImageWriteError and std::exception for main() to report.
-int runRender(const RenderOptions& options);
+int runRender(const RenderCommandOptions& options);
 
 // Command-line values win over the scene file's (spp, seed, max depth).
-void applyOverrides(const RenderOptions& options, SceneDesc* desc);
+void applyOverrides(const RenderCommandOptions& options, SceneDesc* desc);
 
 }  // namespace candela::cli

@@ -74,7 +74,7 @@ std::string framePath(const std::string& dir, uint32_t frame, int digits,
 
 // The checks that need every scene: no animation block inside a sequence of files, and one image
 // size for a video.
-void checkScenes(const RenderOptions& options, const std::vector<SceneDesc>& scenes) {
+void checkScenes(const RenderCommandOptions& options, const std::vector<SceneDesc>& scenes) {
   if (scenes.size() > 1)
     for (const SceneDesc& s : scenes)
       if (s.animation)
@@ -96,13 +96,13 @@ void checkScenes(const RenderOptions& options, const std::vector<SceneDesc>& sce
 }
 
 // How a frame's scene was prepared, for the per-frame summary line.
-const char* preparationName(FramePreparation p) {
-  switch (p) {
-    case FramePreparation::Reused:
+const char* preparationName(SceneChange change) {
+  switch (change) {
+    case SceneChange::Values:
       return "and BVH reused";
-    case FramePreparation::Refitted:
+    case SceneChange::Motion:
       return "moved, BVH refitted";
-    case FramePreparation::Built:
+    case SceneChange::Structure:
       break;
   }
   return "flattened, BVH built";
@@ -110,7 +110,7 @@ const char* preparationName(FramePreparation p) {
 
 }  // namespace
 
-int runSequence(const RenderOptions& options, std::vector<SceneDesc> scenes) {
+int runSequence(const RenderCommandOptions& options, std::vector<SceneDesc> scenes) {
   checkScenes(options, scenes);
   const bool animated = scenes.size() == 1 && scenes[0].animation;
   const uint32_t count = animated ? scenes[0].animation->frames : uint32_t(scenes.size());
@@ -146,7 +146,7 @@ int runSequence(const RenderOptions& options, std::vector<SceneDesc> scenes) {
   std::unique_ptr<ProgressBar> bar;
   if (ProgressBar::wanted(options.quiet)) bar = std::make_unique<ProgressBar>(stderr);
   FrameScene frameScene;
-  FrameRenderer renderer(backend);
+  const std::unique_ptr<Renderer> renderer = makeRenderer(backend);
   const auto start = std::chrono::steady_clock::now();
   for (size_t k = 0; k < todo.size(); ++k) {
     const uint32_t frame = todo[k];
@@ -156,12 +156,13 @@ int runSequence(const RenderOptions& options, std::vector<SceneDesc> scenes) {
       bar->startFrame("frame " + std::to_string(frame) + " (" + std::to_string(k + 1) + "/" +
                           std::to_string(todo.size()) + ")",
                       unsigned(k), unsigned(todo.size()));
-    RenderControl control;
-    control.sceneLabel = still.file;
-    control.threads = options.threads;
-    control.cancel = &interrupt.flag();
-    if (bar) control.progress = [&bar](double fraction) { bar->update(fraction); };
-    const RenderResult result = renderer.render(data, frameScene.preparation(), control);
+    RenderOptions render;
+    render.sceneLabel = still.file;
+    render.threads = options.threads;
+    render.cancel = &interrupt.flag();
+    if (bar) render.progress = [&bar](double fraction) { bar->update(fraction); };
+    renderer->setScene(data, frameScene.change());
+    const RenderResult result = renderer->render(render);
     if (bar) bar->clear();
     if (result.cancelled) {
       std::fprintf(stderr,
@@ -175,7 +176,7 @@ int runSequence(const RenderOptions& options, std::vector<SceneDesc> scenes) {
     if (!options.quiet) {
       std::printf("%s (scene %s in %.3f ms)\n",
                   renderSummary(path, data.settings.spp, result).c_str(),
-                  preparationName(frameScene.preparation()),
+                  preparationName(frameScene.change()),
                   frameScene.seconds() * 1e3);
       std::fflush(stdout);
     }

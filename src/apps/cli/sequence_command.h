@@ -18,6 +18,6 @@ namespace candela::cli {
 
 // Renders the sequence of already loaded, validated `scenes` (one scene with an animation block,
 // or stills); returns the exit code. Throws CliError, SceneError and ImageWriteError.
-int runSequence(const RenderOptions& options, std::vector<SceneDesc> scenes);
+int runSequence(const RenderCommandOptions& options, std::vector<SceneDesc> scenes);
 
 }  // namespace candela::cli

@@ -79,7 +79,7 @@ std::string renderStatsJson(const RenderStats& info, const SceneData& scene,
   o << "  \"integrator\": " << (s.integrator == IntegratorType::Direct ? "\"direct\"" : "\"path\"")
     << ",\n";
   o << "  \"antialiasing\": " << (s.antialiasing ? "true" : "false") << ",\n";
-  o << "  \"use_bvh\": " << (s.useBvh ? "true" : "false") << ",\n";
+  o << "  \"use_bvh\": " << (info.useBvh ? "true" : "false") << ",\n";
   o << "  \"load_seconds\": " << jsonNumber(info.loadSeconds) << ",\n";
   o << "  \"flatten_seconds\": " << jsonNumber(info.flattenSeconds) << ",\n";
   o << "  \"bvh_build_seconds\": " << jsonNumber(scene.bvh.buildSeconds) << ",\n";

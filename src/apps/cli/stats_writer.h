@@ -18,7 +18,7 @@
 #include <string>
 
 #include "render/render_result.h"
-#include "scene/scene_data.h"
+#include "render/scene_data.h"
 
 namespace candela::cli {
 
@@ -26,6 +26,7 @@ struct RenderStats {
   std::string scene;
   std::string backend;
   int threads = 0;
+  bool useBvh = true;  // false under --no-bvh (the one-level tree of the benchmarks)
   double loadSeconds = 0;
   double flattenSeconds = 0;
 };

@@ -1,10 +1,11 @@
 // candela._candela: the nanobind extension behind the `candela` Python package.
 //
-// Exposes the loader, the animation (sceneAtFrame) and the CPU and CUDA backends with the
-// smallest surface the Python layer (python/candela/__init__.py) needs; argument defaults,
-// docs and conveniences live there. Images cross the boundary as float32 arrays (H, W, 3) of
-// linear radiance, rows from the top. Errors: SceneError -> candela.SceneError (a ValueError),
-// ImageWriteError -> candela.ImageWriteError (an OSError), std::invalid_argument -> ValueError.
+// Exposes the loader, the animation (sceneAtFrame) and the backends' one seam
+// (backends/renderer.h) with the smallest surface the Python layer (python/candela/__init__.py)
+// needs; argument defaults, docs and conveniences live there. Images cross the boundary as
+// float32 arrays (H, W, 3) of linear radiance, rows from the top. Errors: SceneError ->
+// candela.SceneError (a ValueError), ImageWriteError -> candela.ImageWriteError (an OSError),
+// std::invalid_argument -> ValueError, BackendError -> RuntimeError.
 #include <nanobind/nanobind.h>
 #include <nanobind/ndarray.h>
 #include <nanobind/stl/optional.h>
@@ -14,6 +15,7 @@
 
 #include <cstring>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -21,16 +23,12 @@
 #include <utility>
 
 #include "apps/python/interruptible.h"
-#include "backends/cpu/cpu_renderer.h"
+#include "backends/renderer.h"
 #include "image/image_io.h"
 #include "scene/animation.h"
-#include "scene/scene_data.h"
+#include "scene/frame_scene.h"
 #include "scene/scene_error.h"
 #include "scene/scene_loader.h"
-
-#if defined(CANDELA_HAS_CUDA)
-#include "backends/cuda/cuda_renderer.h"
-#endif
 
 namespace nb = nanobind;
 using namespace nb::literals;
@@ -41,35 +39,34 @@ namespace {
 using ImageArray = nb::ndarray<nb::numpy, float, nb::shape<-1, -1, 3>, nb::c_contig>;
 using ImageInput = nb::ndarray<const float, nb::shape<-1, -1, 3>, nb::c_contig, nb::device::cpu>;
 
+// What the renders of one loaded scene share, whichever of its frames they render: the last
+// frame's flattened scene (FrameScene reuses or refits it for the next, as the CLI does) and the
+// renderer that holds it (the GPU keeps it resident). Renders of one scene take turns.
+struct RenderCache {
+  std::mutex mutex;
+  FrameScene frames;
+  std::unique_ptr<Renderer> renderer;
+  Backend backend = Backend::Auto;  // of `renderer`
+};
+
 // A loaded scene and, for an animation, which frame of it (nullopt: frame 0 with the animation
 // still attached, so `frames` and `frame(i)` work).
 struct Scene {
   std::shared_ptr<const SceneDesc> desc;
   std::optional<uint32_t> frame;
+  std::shared_ptr<RenderCache> cache = std::make_shared<RenderCache>();
 
   uint32_t frameCount() const { return desc->animation ? desc->animation->frames : 1; }
   SceneDesc still() const { return sceneAtFrame(*desc, frame.value_or(0)); }
 };
 
-bool cudaUsable(std::string* reason) {
-#if defined(CANDELA_HAS_CUDA)
-  return cudaBackendAvailable(reason);
-#else
-  *reason = "this build has no CUDA backend";
-  return false;
-#endif
-}
-
-// "auto" | "cpu" | "cuda" -> "cpu" | "cuda"; ValueError for a backend that cannot run here.
-std::string chooseBackend(const std::string& requested) {
-  std::string reason;
-  if (requested == "cpu") return "cpu";
-  if (requested == "auto") return cudaUsable(&reason) ? "cuda" : "cpu";
-  if (requested == "cuda") {
-    if (!cudaUsable(&reason)) throw std::invalid_argument("backend 'cuda': " + reason);
-    return "cuda";
-  }
-  throw std::invalid_argument("backend must be 'auto', 'cpu' or 'cuda', got '" + requested + "'");
+// "auto" | "cpu" | "cuda"; ValueError for any other name, RuntimeError (BackendError) for a
+// backend that cannot run here.
+Backend backendNamed(const std::string& name) {
+  Backend backend;
+  if (!backendFromName(name, &backend))
+    throw std::invalid_argument("backend must be 'auto', 'cpu' or 'cuda', got '" + name + "'");
+  return chooseBackend(backend, nullptr);
 }
 
 ImageArray toArray(ImageRGB&& image) {
@@ -84,7 +81,7 @@ ImageArray render(const Scene& scene, std::optional<uint32_t> spp, std::optional
   SceneDesc desc = scene.still();
   if (spp) {
     if (*spp == 0) throw std::invalid_argument("spp must be positive");
-    desc.camera.spp = desc.render.spp = *spp;
+    desc.render.spp = *spp;
   }
   if (seed) desc.render.seed = *seed;
   SampleRange samples;
@@ -92,26 +89,26 @@ ImageArray render(const Scene& scene, std::optional<uint32_t> spp, std::optional
     samples = {std::get<0>(*range), std::get<1>(*range)};
     if (samples.count == 0) throw std::invalid_argument("sample_range count must be positive");
   }
-  const std::string chosen = chooseBackend(backend);
+  const Backend chosen = backendNamed(backend);
+  RenderOptions options;
+  options.threads = threads;
+  options.samples = samples;
+  options.sceneLabel = desc.file;
   RenderResult result;
+  RenderCache& cache = *scene.cache;
   runInterruptible([&](const std::atomic<bool>& cancel) {
-    const SceneData data = flattenScene(std::move(desc));  // only desc.file is used below
-    if (chosen == "cpu") {
-      CpuRenderOptions options;
-      options.threads = threads;
-      options.cancel = &cancel;
-      options.samples = samples;
-      result = renderCpu(data.view(), options);
-    } else {
-#if defined(CANDELA_HAS_CUDA)
-      const CudaScene gpuScene(data);
-      CudaRenderOptions options;
-      options.cancel = &cancel;
-      options.samples = samples;
-      options.sceneLabel = desc.file;
-      result = gpuScene.render(options);
-#endif
+    std::lock_guard<std::mutex> lock(cache.mutex);
+    const SceneData& data = cache.frames.prepare(desc);
+    SceneChange change = cache.frames.change();
+    if (!cache.renderer || cache.backend != chosen) {
+      cache.renderer.reset();  // a GPU's copy is freed before the next is made
+      cache.renderer = makeRenderer(chosen);
+      cache.backend = chosen;
+      change = SceneChange::Structure;
     }
+    options.cancel = &cancel;
+    cache.renderer->setScene(data, change);
+    result = cache.renderer->render(options);
   });
   return toArray(std::move(result.image));
 }
@@ -139,6 +136,7 @@ NB_MODULE(_candela, m) {
   m.doc() = "candela's C++ core; use the `candela` package rather than this module";
   nb::exception<SceneError>(m, "SceneError", PyExc_ValueError);
   nb::exception<ImageWriteError>(m, "ImageWriteError", PyExc_OSError);
+  nb::exception<BackendError>(m, "BackendError", PyExc_RuntimeError);
 
   nb::class_<Scene>(m, "_Scene")
       .def_static("load", [](const std::string& path) {
@@ -156,17 +154,32 @@ NB_MODULE(_candela, m) {
       })
       .def_prop_ro("width", [](const Scene& s) { return s.desc->camera.width; })
       .def_prop_ro("height", [](const Scene& s) { return s.desc->camera.height; })
-      .def_prop_ro("spp", [](const Scene& s) { return s.desc->camera.spp; })
+      .def_prop_ro("spp", [](const Scene& s) { return s.desc->render.spp; })
       .def_prop_ro("seed", [](const Scene& s) { return s.still().render.seed; })
       .def_prop_ro("output", [](const Scene& s) {
         const OutputDesc& o = s.desc->output;
         return std::make_tuple(o.curve == GammaCurve::Srgb, o.gamma, o.exposure);
       })
+      .def_prop_ro("_last_change", [](const Scene& s) -> std::optional<std::string> {
+        // What the last render of this scene (or of any of its frames) did with the flattened
+        // scene: "values" (reused), "motion" (refitted) or "structure" (built); None before any.
+        std::lock_guard<std::mutex> lock(s.cache->mutex);
+        if (!s.cache->renderer) return std::nullopt;
+        switch (s.cache->frames.change()) {
+          case SceneChange::Values:
+            return "values";
+          case SceneChange::Motion:
+            return "motion";
+          case SceneChange::Structure:
+            break;
+        }
+        return "structure";
+      })
       .def("frame", [](const Scene& s, uint32_t i) {
         if (i >= s.frameCount())
           throw nb::index_error(("frame " + std::to_string(i) + " out of range (" +
                                  std::to_string(s.frameCount()) + " frames)").c_str());
-        return Scene{s.desc, i};
+        return Scene{s.desc, i, s.cache};
       }, "index"_a)
       .def("render", &render, "spp"_a = nb::none(), "seed"_a = nb::none(), "backend"_a = "auto",
            "sample_range"_a = nb::none(), "threads"_a = 0);

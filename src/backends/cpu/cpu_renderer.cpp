@@ -19,7 +19,7 @@ constexpr uint32_t kTileSize = 16;
 
 }  // namespace
 
-RenderResult renderCpu(const SceneView& scene, const CpuRenderOptions& options) {
+RenderResult renderCpu(const SceneView& scene, const RenderOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   const uint32_t width = scene.camera.width, height = scene.camera.height;
   const SampleRange samples = resolveSampleRange(options.samples, scene.settings.spp);

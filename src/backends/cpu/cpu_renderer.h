@@ -3,26 +3,22 @@
 // thread count. A sample range renders one slice of the samples (render/sample_range.h).
 #pragma once
 
-#include <atomic>
-#include <functional>
-
-#include "render/render_result.h"
-#include "render/sample_range.h"
-#include "scene/scene_view.h"
+#include "backends/renderer.h"
+#include "render/scene_view.h"
 
 namespace candela {
 
-struct CpuRenderOptions {
-  int threads = 0;  // 0: all cores
-  // Called from worker threads (serialised) with the fraction of pixels done, in [0, 1].
-  std::function<void(double)> progress;
-  // When set and true, workers stop at the next tile; the result is then marked cancelled.
-  const std::atomic<bool>* cancel = nullptr;
-  // Render only these sample indices and return their mean (default: all spp). Throws
-  // std::invalid_argument for a range outside [0, spp).
-  SampleRange samples;
-};
+RenderResult renderCpu(const SceneView& scene, const RenderOptions& options);
 
-RenderResult renderCpu(const SceneView& scene, const CpuRenderOptions& options);
+// The Renderer of the CPU backend: it renders the given scene where it lies, so a new frame
+// costs nothing to hand over.
+class CpuRenderer final : public Renderer {
+ public:
+  void setScene(const SceneData& scene, SceneChange) override { view_ = scene.view(); }
+  RenderResult render(const RenderOptions& options) override { return renderCpu(view_, options); }
+
+ private:
+  SceneView view_;
+};
 
 }  // namespace candela

@@ -1,14 +1,13 @@
 // CudaError: any failure of the CUDA backend (no device, out of memory, a kernel fault).
-// The CLI reports it and exits 1.
 #pragma once
 
-#include <stdexcept>
+#include "backends/backend_error.h"
 
 namespace candela {
 
-class CudaError : public std::runtime_error {
+class CudaError : public BackendError {
  public:
-  using std::runtime_error::runtime_error;
+  using BackendError::BackendError;
 };
 
 }  // namespace candela

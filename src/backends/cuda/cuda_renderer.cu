@@ -66,58 +66,47 @@ __global__ void renderPassKernel(SceneView scene, uint32_t sampleBegin, uint32_t
 
 }  // namespace
 
-struct CudaScene::Impl {
-  DeviceBuffer<Material> materials;
-  DeviceBuffer<Sphere> spheres;
-  DeviceBuffer<Vec3> positions;
-  DeviceBuffer<OctNormal> normals;
-  DeviceBuffer<Triangle> triangles;
-  DeviceBuffer<Light> lights;
-  DeviceBuffer<BvhNode> nodes;
-  DeviceBuffer<uint32_t> primIndices;
+// Samples per pixel of one kernel launch: few enough that a pass stays short, so progress and
+// Ctrl-C are answered promptly.
+constexpr uint32_t kSamplesPerPass = 4;
+
+#define CANDELA_DEVICE_ARRAY(Type, name, count, rewrittenBy) DeviceBuffer<Type> name;
+
+struct CudaRenderer::Impl {
+  CANDELA_SCENE_ARRAYS(CANDELA_DEVICE_ARRAY)
   SceneView view;
+  bool complete = false;  // whether every array holds the scene given last
 };
 
-CudaScene::CudaScene(const SceneData& scene) : impl_(new Impl) {
+#undef CANDELA_DEVICE_ARRAY
+
+CudaRenderer::CudaRenderer() : impl_(new Impl) {
   std::string reason;
   if (!cudaBackendAvailable(&reason)) throw CudaError(reason);
-  update(scene, FramePreparation::Built);
 }
 
-void CudaScene::update(const SceneData& scene, FramePreparation change) {
+CudaRenderer::~CudaRenderer() = default;
+
+void CudaRenderer::setScene(const SceneData& scene, SceneChange change) {
   Impl& d = *impl_;
-  d.materials.upload(scene.materials);
-  d.spheres.upload(scene.spheres);
-  d.lights.upload(scene.lights);
-  if (change != FramePreparation::Reused) {
-    d.positions.upload(scene.positions);
-    d.normals.upload(scene.normals);
-    d.nodes.upload(scene.nodes);
-  }
-  if (change == FramePreparation::Built) {
-    d.triangles.upload(scene.triangles);
-    d.primIndices.upload(scene.primIndices);
-  }
+  if (!d.complete) change = SceneChange::Structure;
+  d.complete = false;
   d.view = scene.view();  // counts, camera and settings; pointers replaced below
-  d.view.materials = d.materials.get();
-  d.view.spheres = d.spheres.get();
-  d.view.positions = d.positions.get();
-  d.view.normals = d.normals.get();
-  d.view.triangles = d.triangles.get();
-  d.view.lights = d.lights.get();
-  d.view.nodes = d.nodes.get();
-  d.view.primIndices = d.primIndices.get();
+#define CANDELA_UPLOAD(Type, name, count, rewrittenBy)                   \
+  if (mayRewrite(change, SceneChange::rewrittenBy)) d.name.upload(scene.name); \
+  d.view.name = d.name.get();
+  CANDELA_SCENE_ARRAYS(CANDELA_UPLOAD)
+#undef CANDELA_UPLOAD
+  d.complete = true;
 }
 
-CudaScene::~CudaScene() = default;
-
-RenderResult CudaScene::render(const CudaRenderOptions& options) const {
+RenderResult CudaRenderer::render(const RenderOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   const SceneView& view = impl_->view;
   const uint32_t width = view.camera.width, height = view.camera.height;
   const SampleRange samples = resolveSampleRange(options.samples, view.settings.spp);
   const uint32_t first = samples.begin, end = samples.begin + samples.count;
-  const uint32_t perPass = options.samplesPerPass > 0 ? options.samplesPerPass : 1;
+  const uint32_t perPass = kSamplesPerPass;
 
   DeviceBuffer<float3> accumulation(size_t(width) * height);
   accumulation.zero();

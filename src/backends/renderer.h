@@ -1,0 +1,51 @@
+// The one seam between the apps and the render backends.
+//
+// A Renderer holds a scene and renders it, as often as asked; between renders it may be given the
+// next frame of an animation with what changed (render/scene_change.h), which a backend that keeps
+// the scene resident (the GPU) uses to move only what may differ. The CPU and CUDA backends
+// implement it with the same input; makeRenderer picks one, and chooseBackend is the one place
+// that decides what `auto` means.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "backends/backend_error.h"
+#include "backends/render_options.h"
+#include "render/render_result.h"
+#include "render/scene_change.h"
+#include "render/scene_data.h"
+
+namespace candela {
+
+enum class Backend { Auto, Cpu, Cuda };
+
+const char* backendName(Backend backend);
+
+// "auto", "cpu" or "cuda" (any case); false for anything else.
+bool backendFromName(const std::string& name, Backend* backend);
+
+// Whether this build has the CUDA backend and a usable GPU is present; `reason` says why not.
+bool cudaUsable(std::string* reason);
+
+// Resolves Auto to the CPU, with a one-line `note` when a GPU is present but left unused (the
+// CUDA backend has not yet passed its parity tests on a real GPU), and checks that the backend
+// can run here: BackendError otherwise.
+Backend chooseBackend(Backend requested, std::string* note);
+
+class Renderer {
+ public:
+  virtual ~Renderer() = default;
+
+  // Makes `scene` the one rendered next; it must stay alive and unchanged until the next call.
+  // `change` is what may differ from the scene given last; the first call takes everything.
+  virtual void setScene(const SceneData& scene, SceneChange change) = 0;
+
+  // Renders the scene given last. Throws BackendError on a failure of the device.
+  virtual RenderResult render(const RenderOptions& options) = 0;
+};
+
+// A renderer on `backend`, which chooseBackend returned.
+std::unique_ptr<Renderer> makeRenderer(Backend backend);
+
+}  // namespace candela

@@ -1,0 +1,49 @@
+// GeometryView: the flat, trivially copyable geometry that traversal and surface reconstruction
+// read: arrays of plain structs + counts, pointing into host memory on the CPU and into device
+// buffers on CUDA.
+//
+// Conventions:
+// - World space is right-handed, +y up. Mesh vertices are already transformed to world space.
+// - `normals` is empty or parallel to `positions`: normals[i] is vertex i's shading normal,
+//   octahedrally encoded (core/oct_normal.h); "none" makes a triangle with such a vertex use its
+//   face normal.
+// - Primitive index p in [0, sphereCount) is spheres[p]; p >= sphereCount is triangle
+//   p - sphereCount. The BVH leaves index `primIndices`, which hold such primitive indices.
+#pragma once
+
+#include <cstdint>
+#include <type_traits>
+
+#include "core/device.h"
+#include "core/oct_normal.h"
+#include "core/vec3.h"
+#include "geometry/bvh_node.h"
+#include "geometry/shapes.h"
+
+namespace candela {
+
+// Every geometry array, as X(Type, name, count, rewrittenBy): the one list that the views, the
+// owning SceneData and the CUDA upload expand, so an array is added in one place. rewrittenBy is
+// the least change of a frame that may rewrite the array (render/scene_change.h): Motion for what
+// moving primitives changes (a refit), Structure for what only a rebuild changes.
+#define CANDELA_GEOMETRY_ARRAYS(X)                 \
+  X(Sphere, spheres, sphereCount, Motion)          \
+  X(Vec3, positions, positionCount, Motion)        \
+  X(OctNormal, normals, normalCount, Motion)       \
+  X(Triangle, triangles, triangleCount, Structure) \
+  X(BvhNode, nodes, nodeCount, Motion)             \
+  X(uint32_t, primIndices, primIndexCount, Structure)
+
+#define CANDELA_VIEW_ARRAY_FIELDS(Type, name, count, rewrittenBy) \
+  const Type* name = nullptr;                                     \
+  uint32_t count = 0;
+
+struct GeometryView {
+  CANDELA_GEOMETRY_ARRAYS(CANDELA_VIEW_ARRAY_FIELDS)
+
+  CANDELA_HDI uint32_t primitiveCount() const { return sphereCount + triangleCount; }
+};
+static_assert(std::is_trivially_copyable<GeometryView>::value,
+              "GeometryView must be trivially copyable");
+
+}  // namespace candela

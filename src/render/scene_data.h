@@ -1,0 +1,36 @@
+// SceneData: owns the flattened arrays and the BVH of a scene; view() is what renderers see.
+//
+// scene/flatten.h makes it from a scene description.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "render/scene_view.h"
+
+namespace candela {
+
+struct BvhStats {
+  uint32_t nodeCount = 0;
+  uint32_t leafCount = 0;
+  uint32_t maxDepth = 0;
+  double buildSeconds = 0;
+};
+
+#define CANDELA_OWNED_ARRAY(Type, name, count, rewrittenBy) std::vector<Type> name;
+
+struct SceneData {
+  CANDELA_SCENE_ARRAYS(CANDELA_OWNED_ARRAY)
+  Vec3 environment{0.0f};
+  Camera camera;
+  RenderSettings settings;
+  BvhStats bvh;
+
+  SceneView view() const;
+  // World-space bounds of all geometry (empty scene: min > max).
+  void bounds(Vec3* lo, Vec3* hi) const;
+};
+
+#undef CANDELA_OWNED_ARRAY
+
+}  // namespace candela

@@ -1,0 +1,41 @@
+// SceneView: the flat, trivially copyable scene that the integrator sees.
+//
+// The geometry (geometry/geometry_view.h) plus what shades it: materials, lights, environment,
+// camera and settings. Arrays of plain structs + counts + indices; every name was resolved at
+// load time. On the CPU the pointers point into host memory (SceneData owns it), on CUDA into
+// device buffers.
+#pragma once
+
+#include <type_traits>
+
+#include "core/vec3.h"
+#include "geometry/geometry_view.h"
+#include "render/camera.h"
+#include "render/light.h"
+#include "render/material.h"
+#include "render/render_settings.h"
+
+namespace candela {
+
+// The arrays that shade the geometry, in the form of CANDELA_GEOMETRY_ARRAYS.
+#define CANDELA_SHADING_ARRAYS(X)              \
+  X(Material, materials, materialCount, Values) \
+  X(Light, lights, lightCount, Values)
+
+// Every array of the kernel's scene: SceneData, SceneView::set and the CUDA upload expand this.
+#define CANDELA_SCENE_ARRAYS(X) CANDELA_GEOMETRY_ARRAYS(X) CANDELA_SHADING_ARRAYS(X)
+
+struct SceneView : GeometryView {
+  CANDELA_SHADING_ARRAYS(CANDELA_VIEW_ARRAY_FIELDS)
+
+  Vec3 environment{0.0f};
+  // Whether a scattered ray can find any light: an emissive material (sphere lights included) or
+  // a nonzero environment. Without, light arrives only by shadow rays to point lights, and the
+  // ray a path would scatter from its last interaction is not traced: it could add nothing.
+  bool emissionReachable = true;
+  Camera camera;
+  RenderSettings settings;
+};
+static_assert(std::is_trivially_copyable<SceneView>::value, "SceneView must be trivially copyable");
+
+}  // namespace candela

@@ -1,0 +1,29 @@
+// Flattening: a validated scene description -> the kernel's arrays (render/scene_data.h).
+//
+// Meshes are transformed to world space, the camera is resolved, sphere lights become emissive
+// spheres that name their light, and the BVH is built; triangles are then numbered in the BVH's
+// leaf order.
+#pragma once
+
+#include "render/scene_data.h"
+#include "scene/scene_desc.h"
+
+namespace candela {
+
+// The description must already be validated.
+SceneData flattenScene(const SceneDesc& desc);
+// The same for a description whose meshes the caller no longer needs: they are released once
+// flattened, before the BVH is built, so the two copies of the geometry and the build's arrays
+// never coexist. Everything but `objects[i].mesh` is left intact.
+SceneData flattenScene(SceneDesc&& desc);
+
+// flattenScene without the BVH (nodes and primIndices left empty) and with triangles in the
+// order of the description: for refitting a tree built for a description of the same structure.
+SceneData flattenSceneContents(const SceneDesc& desc);
+
+// Replaces the camera, settings, environment, materials, lights and spheres of `scene` (which
+// flattenScene made from a description with the same geometry as `desc`) by those of `desc`,
+// keeping mesh vertices, triangles and the BVH. scene/frame_scene.h decides when that is valid.
+void refreshSceneValues(SceneData& scene, const SceneDesc& desc);
+
+}  // namespace candela
