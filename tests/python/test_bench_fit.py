@@ -1,0 +1,346 @@
+"""bench/run's time-to-equal-error fit and results schema, without candela or Mitsuba: the script
+is loaded as a module (it has no .py extension, and importing it does not run main)."""
+import copy
+import glob
+import importlib.machinery
+import importlib.util
+import json
+import os
+import random
+import shutil
+import subprocess
+import sys
+
+import pytest
+
+REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+BENCH_RUN = os.path.join(REPO, 'bench', 'run')
+RESULTS = sorted(glob.glob(os.path.join(REPO, 'bench', 'results', '*.json')))
+
+
+def load_bench_run(name='bench_run'):
+    loader = importlib.machinery.SourceFileLoader(name, BENCH_RUN)
+    spec = importlib.util.spec_from_loader(name, loader)
+    module = importlib.util.module_from_spec(spec)
+    dont_write = sys.dont_write_bytecode
+    sys.dont_write_bytecode = True  # no bench/__pycache__
+    try:
+        loader.exec_module(module)
+    finally:
+        sys.dont_write_bytecode = dont_write
+    return module
+
+
+@pytest.fixture(scope='module')
+def br():
+    return load_bench_run()
+
+
+def relative_error(x, y):
+    return abs(x - y) / abs(y)
+
+
+def exact_points(c, levels, floor=0.0):
+    return [(s, floor + c / s) for s in levels]
+
+
+def make_tte(mitsuba_points, candela_points, sec_per_spp_mi, sec_per_spp_ca):
+    def side(points, sps):
+        return {'points': [{'spp': s, 'relmse': e} for s, e in points], 'seconds_per_spp': sps}
+    return {'candela': side(candela_points, sec_per_spp_ca), 'mitsuba': side(mitsuba_points, sec_per_spp_mi)}
+
+
+# ---------------------------------------------------------------- import
+
+def test_importing_does_not_run_main(monkeypatch):
+    # main() would exit (argparse error) on this command line if the import ran it.
+    monkeypatch.setattr(sys, 'argv', ['bench/run', '--no-such-flag'])
+    module = load_bench_run('bench_run_import_check')
+    assert callable(module.main)
+    assert module.REPO == REPO
+
+
+# ---------------------------------------------------------------- pure helpers
+
+def test_get_follows_dotted_keys(br):
+    d = {'a': {'b': {'c': 3}}, 'n': None}
+    assert br.get(d, 'a.b.c') == 3
+    assert br.get(d, 'a.b') == {'c': 3}
+    assert br.get(d, 'a.x.c') is None
+    assert br.get(d, 'n.c') is None
+    assert br.get({'rays.camera': 1}, 'rays.camera') is None  # dots always mean nesting
+
+
+def test_median_of_skips_missing_values(br):
+    runs = [{'t': 3.0, 'r': {'c': 1}}, {'t': None, 'r': {'c': 50}}, {'t': 1.0, 'r': {'c': 2}},
+            {'t': 90.0, 'r': {'c': 4}}, {'r': {'c': 5}}]
+    assert br.median_of(runs, 't') == 3.0  # not the mean: one slow run does not move it
+    assert br.median_of(runs[:4], 'r.c') == 3.0  # even count: the mean of the middle two
+    assert br.median_of(runs, 'absent') is None
+    assert br.median_of([], 't') is None
+
+
+# ---------------------------------------------------------------- the fit
+
+def test_fit_through_origin_exact(br):
+    xs = [1 / 4, 1 / 16, 1 / 64]
+    assert relative_error(br.fit_through_origin(xs, [0.37 * x for x in xs]), 0.37) < 1e-12
+
+
+@pytest.mark.parametrize('c_mi,c_ca,ref_spp,levels', [
+    (0.744, 0.356, 512, [4, 16, 64]),
+    (0.7, 0.3, 128, [4, 16]),
+    (2.5, 9.0, 512, [1, 2, 8, 32, 128]),
+    (1e-3, 4e-3, 4096, [16, 64]),
+])
+def test_exact_points_recover_c(br, c_mi, c_ca, ref_spp, levels):
+    """Points generated exactly from the model: Mitsuba c (1/spp + 1/ref_spp), candela a + c/spp
+    with a = c_Mitsuba / ref_spp; the fit returns a and both c to rounding."""
+    a = c_mi / ref_spp
+    mitsuba = [(s, c_mi * (1 / s + 1 / ref_spp)) for s in levels]
+    candela = exact_points(c_ca, levels, floor=a)
+    floor, fit_mi, fit_ca = br.fit_errors(mitsuba, candela, ref_spp)
+    assert relative_error(fit_mi, c_mi) < 1e-9
+    assert relative_error(fit_ca, c_ca) < 1e-9
+    assert relative_error(floor, a) < 1e-9
+
+
+def test_ignoring_the_floor_would_be_caught(br):
+    """The exact-recovery check is sharp: fitting candela's points without removing the
+    reference's floor a gives a c off by far more than 1e-9."""
+    c_mi, c_ca, ref_spp, levels = 0.744, 0.356, 512, [4, 16, 64]
+    candela = exact_points(c_ca, levels, floor=c_mi / ref_spp)
+    naive = br.fit_through_origin([1 / s for s, _ in candela], [e for _, e in candela])
+    assert relative_error(naive, c_ca) > 1e-3
+
+
+def test_finish_time_to_error_exact(br):
+    c_mi, c_ca, ref_spp, levels = 0.744, 0.356, 512, [4, 16, 64]
+    sps_mi, sps_ca = 0.045625, 0.13396
+    tte = make_tte([(s, c_mi * (1 / s + 1 / ref_spp)) for s in levels],
+                   exact_points(c_ca, levels, floor=c_mi / ref_spp), sps_mi, sps_ca)
+    br.finish_time_to_error(tte, ref_spp)
+    target = c_ca / max(levels)
+    assert relative_error(tte['target_relmse'], target) < 1e-9
+    assert relative_error(tte['floor_a'], c_mi / ref_spp) < 1e-9
+    assert relative_error(tte['candela']['seconds'], max(levels) * sps_ca) < 1e-9
+    assert relative_error(tte['mitsuba']['seconds'], c_mi / target * sps_mi) < 1e-9
+    assert relative_error(tte['ratio'], (c_ca * sps_ca) / (c_mi * sps_mi)) < 1e-9
+
+
+def test_time_ratio_does_not_depend_on_target(br):
+    c_mi, c_ca, sps_mi, sps_ca = 0.744, 0.356, 0.045625, 0.13396
+    expected = (c_ca * sps_ca) / (c_mi * sps_mi)
+    for target in (1e-6, 3.3e-4, 0.0055, 0.1, 2.0):
+        ratio = br.seconds_to_error(c_ca, target, sps_ca) / br.seconds_to_error(c_mi, target, sps_mi)
+        assert relative_error(ratio, expected) < 1e-12
+    # The seconds themselves do scale with 1/target.
+    assert relative_error(br.seconds_to_error(c_ca, 1e-3, sps_ca),
+                          10 * br.seconds_to_error(c_ca, 1e-2, sps_ca)) < 1e-12
+
+
+def test_time_ratio_same_whatever_the_top_level(br):
+    """finish_time_to_error's target is candela's error at the top spp level: other levels give
+    another target and other seconds, but the same ratio."""
+    c_mi, c_ca, ref_spp, sps_mi, sps_ca = 0.7, 0.3, 512, 0.05, 0.12
+    results = []
+    for levels in ([4, 16], [4, 16, 64], [2, 8, 32, 256]):
+        tte = make_tte([(s, c_mi * (1 / s + 1 / ref_spp)) for s in levels],
+                       exact_points(c_ca, levels, floor=c_mi / ref_spp), sps_mi, sps_ca)
+        br.finish_time_to_error(tte, ref_spp)
+        results.append(tte)
+    targets = [t['target_relmse'] for t in results]
+    assert len({round(t, 12) for t in targets}) == 3
+    for t in results[1:]:
+        assert relative_error(t['ratio'], results[0]['ratio']) < 1e-9
+
+
+def noisy(points, rng, delta):
+    return [(s, e * (1 + rng.uniform(-delta, delta))) for s, e in points]
+
+
+@pytest.mark.parametrize('seed', range(50))
+def test_noisy_points_recover_c_within_derived_bound(br, seed):
+    """Each relMSE off by a factor 1 + eps, |eps| <= delta. With relative residuals,
+    c_fit / c = sum(u) / sum(u^2), u_i = 1 / (1 + rho_i), which lies between 1 + min(rho) and
+    1 + max(rho). Mitsuba: rho = eps, so |c_fit / c - 1| <= delta, and the floor a is off by the
+    same factor. candela (after subtracting the fitted floor): rho_i = eps_i + (a s_i / c)(eps_i - eta)
+    with |eta| <= delta, so |c_fit / c - 1| <= delta (1 + 2 a s_max / c)."""
+    rng = random.Random(seed)
+    delta = 0.05
+    c_mi, c_ca, ref_spp, levels = rng.uniform(0.2, 2), rng.uniform(0.2, 2), 512, [4, 16, 64]
+    a = c_mi / ref_spp
+    mitsuba = noisy([(s, c_mi * (1 / s + 1 / ref_spp)) for s in levels], rng, delta)
+    candela = noisy(exact_points(c_ca, levels, floor=a), rng, delta)
+    floor, fit_mi, fit_ca = br.fit_errors(mitsuba, candela, ref_spp)
+    slack = 1e-12
+    assert relative_error(fit_mi, c_mi) <= delta + slack
+    assert relative_error(floor, a) <= delta + slack
+    assert relative_error(fit_ca, c_ca) <= delta * (1 + 2 * a * max(levels) / c_ca) + slack
+
+
+def test_noise_bound_is_attained(br):
+    """All points high by exactly 1 + delta: the fit is high by exactly 1 + delta (the bound above
+    is tight, so it is no loose tolerance)."""
+    delta, c, levels = 0.05, 0.5, [4, 16, 64]
+    xs = [1 / s for s in levels]
+    fit = br.fit_through_origin(xs, [c * x * (1 + delta) for x in xs])
+    assert relative_error(fit, c * (1 + delta)) < 1e-12
+
+
+def test_error_not_falling_with_spp_fails_the_fit(br):
+    """candela's relMSE below the reference's floor (no 1/spp decay left): c <= 0, an error."""
+    c_mi, ref_spp, levels = 0.7, 128, [4, 16]
+    tte = make_tte([(s, c_mi * (1 / s + 1 / ref_spp)) for s in levels],
+                   [(s, 0.5 * c_mi / ref_spp) for s in levels], 0.05, 0.1)
+    with pytest.raises(RuntimeError, match='error fit failed'):
+        br.finish_time_to_error(tte, ref_spp)
+
+
+@pytest.mark.parametrize('path', RESULTS, ids=os.path.basename)
+def test_refit_reproduces_committed_figures(br, path):
+    """--report refits every run: on the committed results it gives back their figures."""
+    with open(path) as f:
+        res = json.load(f)
+    fitted = 0
+    for entry in res['scenes'].values():
+        stored = entry.get('time_to_error')
+        if not stored or 'error' in stored:
+            continue
+        tte = {who: {'points': copy.deepcopy(stored[who]['points']),
+                     'seconds_per_spp': stored[who]['seconds_per_spp']} for who in ('candela', 'mitsuba')}
+        br.finish_time_to_error(tte, res['ref_spp'])
+        for key in ('floor_a', 'target_relmse', 'ratio'):
+            assert tte[key] == pytest.approx(stored[key], rel=1e-12)
+        for who in ('candela', 'mitsuba'):
+            for key in ('c', 'seconds'):
+                assert tte[who][key] == pytest.approx(stored[who][key], rel=1e-12)
+        fitted += 1
+    assert fitted > 0
+
+
+# ---------------------------------------------------------------- the results schema
+
+@pytest.fixture(scope='module')
+def committed(br):
+    assert RESULTS, 'no bench/results/*.json'
+    with open(RESULTS[-1]) as f:
+        return json.load(f)
+
+
+@pytest.mark.parametrize('path', RESULTS, ids=os.path.basename)
+def test_committed_results_validate(br, path):
+    res = br.load_results(path)
+    assert br.validate_results(res) is res
+
+
+def delete(res, dotted):
+    res = copy.deepcopy(res)
+    *parents, last = dotted.split('.')
+    d = res
+    for p in parents:
+        d = d[p]
+    del d[last]
+    return res
+
+
+@pytest.mark.parametrize('key', ['scenes', 'date', 'ref_spp', 'machine.cpu', 'machine.load_after',
+                                 'scenes.default.cpu', 'scenes.default.cpu.median',
+                                 'scenes.default.scene_file',
+                                 'scenes.default.time_to_error.candela.points',
+                                 'scenes.default.time_to_error.ratio',
+                                 'scenes.default.mitsuba.samples_per_second',
+                                 'seed_table.runs_brute'])
+def test_missing_required_key_is_named(br, committed, key):
+    with pytest.raises(ValueError, match=f"missing key '{key}'"):
+        br.validate_results(delete(committed, key))
+
+
+@pytest.mark.parametrize('key,value', [('runs', '3'), ('runs', True), ('dirty', 1), ('levels', [4, '16']),
+                                       ('argv', 'bench/run'), ('machine.cores', 2.0),
+                                       ('scenes.default.cpu.triangles', 4.5),
+                                       ('scenes.default.time_to_error.target_relmse', None),
+                                       ('skipped.cat', 7), ('scenes.default', [])])
+def test_mistyped_key_is_named(br, committed, key, value):
+    res = copy.deepcopy(committed)
+    *parents, last = key.split('.')
+    d = res
+    for p in parents:
+        d = d[p]
+    d[last] = value
+    with pytest.raises(ValueError, match=key.replace('.', r'\.')):
+        br.validate_results(res)
+
+
+@pytest.mark.parametrize('key', ['seed_table', 'commit_given', 'scenes.default.mitsuba',
+                                 'scenes.default.time_to_error'])
+def test_optional_keys_may_be_absent(br, committed, key):
+    br.validate_results(delete(committed, key))
+
+
+def test_failed_steps_are_error_objects(br, committed):
+    res = copy.deepcopy(committed)
+    res['scenes']['default']['time_to_error'] = {'error': 'skipped: more than 1,000,000 triangles'}
+    res['scenes']['cat']['mitsuba'] = {'error': 'mitsuba_ref.py failed (1)'}
+    res['skipped']['dragon'] = 'meshes absent: x.obj'
+    br.validate_results(res)
+    res['scenes']['default']['time_to_error'] = {'error': 5}
+    with pytest.raises(ValueError, match=r"scenes\.default\.time_to_error\.error"):
+        br.validate_results(res)
+
+
+def test_schema_errors_are_value_errors(br):
+    assert issubclass(br.ResultsSchemaError, ValueError)
+    with pytest.raises(ValueError, match='expected an object'):
+        br.validate_results([])
+
+
+def test_load_results_names_file_and_key(br, committed, tmp_path):
+    path = tmp_path / 'bad.json'
+    path.write_text(json.dumps(delete(committed, 'machine.cuda')))
+    with pytest.raises(ValueError, match=r"bad\.json: results: missing key 'machine\.cuda'"):
+        br.load_results(str(path))
+
+
+def test_save_results_round_trip_and_invalid_still_written(br, committed, tmp_path):
+    good = tmp_path / 'good.json'
+    br.save_results(committed, str(good))
+    assert json.loads(good.read_text()) == committed
+    bad = tmp_path / 'bad.json'
+    with pytest.raises(ValueError, match="missing key 'total_seconds'"):
+        br.save_results(delete(committed, 'total_seconds'), str(bad))
+    assert 'total_seconds' not in json.loads(bad.read_text())  # the measurements are kept
+
+
+# ---------------------------------------------------------------- --report, end to end
+
+def report_sandbox(tmp_path, res):
+    """bench/run and one results file in a scratch tree (REPO is the script's parent's parent, so
+    nothing in this repository is rewritten)."""
+    (tmp_path / 'bench').mkdir()
+    script = tmp_path / 'bench' / 'run'
+    shutil.copy(BENCH_RUN, script)
+    path = tmp_path / 'results.json'
+    path.write_text(json.dumps(res, indent=1))
+    return script, path
+
+
+def test_report_prints_the_table(br, committed, tmp_path):
+    script, path = report_sandbox(tmp_path, committed)
+    r = subprocess.run([sys.executable, str(script), '--report', str(path), '--no-docs'],
+                       capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    assert r.stdout == br.markdown(committed) + '\n'
+    assert json.loads(path.read_text()) == committed
+    assert not (tmp_path / 'docs').exists()
+
+
+def test_report_rejects_invalid_results(committed, tmp_path):
+    script, path = report_sandbox(tmp_path, delete(committed, 'scenes.cat.cpu.rays_per_second_by_type'))
+    before = path.read_text()
+    r = subprocess.run([sys.executable, str(script), '--report', str(path), '--no-docs'],
+                       capture_output=True, text=True)
+    assert r.returncode != 0
+    assert "missing key 'scenes.cat.cpu.rays_per_second_by_type'" in r.stderr
+    assert 'Traceback' not in r.stderr
+    assert path.read_text() == before  # left as it was
