@@ -21,10 +21,11 @@
 namespace candela::detail {
 
 [[noreturn]] CANDELA_HDI void dcheckFailed(const char* condition, const char* file, int line) {
-  printf("%s:%d: CANDELA_DCHECK failed: %s\n", file, line, condition);
 #if defined(__CUDA_ARCH__)
+  printf("%s:%d: CANDELA_DCHECK failed: %s\n", file, line, condition);
   __trap();
 #else
+  std::fprintf(stderr, "%s:%d: CANDELA_DCHECK failed: %s\n", file, line, condition);
   std::abort();
 #endif
 }

@@ -51,7 +51,7 @@ namespace detail {
 //
 // At each 4-wide node all four child boxes are tested together. Leaf children that are hit are
 // intersected at once, in slot order, each skipped when a hit found in an earlier one lies
-// before its box (sorting them by entry distance was measured slower); inner children that are hit
+// before its box (docs/performance.md has why they are not sorted); inner children that are hit
 // are visited nearest first, the others pushed with their entry distances, so that once a nearer
 // hit is known a popped subtree that starts beyond it is skipped without touching its node.
 CANDELA_HDI bool traverseBvh(const GeometryView& scene, const Ray& ray, bool anyHit, uint32_t skipPrim,

@@ -132,7 +132,7 @@ CANDELA_HDI bool intersectTriangleAlong(const Axes& k, const Vec3& p0, const Vec
 
 // Nearest-or-only hit of the ray with triangle (p0, p1, p2) for t in (0, tMax). Kept out of
 // line on the CPU: inlined, its three copies pushed the sphere test in the traversal loop out of
-// line too, and a room's walls then cost a call each (cat scene 7-10% slower).
+// line too, and a room's walls then cost a call each (docs/performance.md, cae5563).
 #if !CANDELA_DEVICE_CODE && defined(__GNUC__)
 __attribute__((noinline))
 #endif

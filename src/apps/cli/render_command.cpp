@@ -124,8 +124,8 @@ CLI::App* addRenderCommand(CLI::App& app, RenderCommandOptions* options) {
 
 int runRender(const RenderCommandOptions& options) {
   // oneTBB starts its worker threads on first use; an empty task started now lets that happen
-  // while the scenes load instead of inside the first parallel step (the BVH build), where it
-  // cost a small scene's build a millisecond or more.
+  // while the scenes load instead of inside the first parallel step, the BVH build
+  // (docs/performance.md).
   tbb::this_task_arena::enqueue([] {});
   // Every scene is loaded and validated before anything renders or is written.
   const auto loadStart = std::chrono::steady_clock::now();
