@@ -7,7 +7,7 @@
 
 #include "backends/cpu/cpu_renderer.h"
 #include "scene/flatten.h"
-#include "scene/scene_loader.h"
+#include "scene/read/scene_loader.h"
 
 namespace candela::test {
 

@@ -14,7 +14,7 @@
 #include "scene/flatten.h"
 #include "scene/frame_scene.h"
 #include "scene/scene_error.h"
-#include "scene/scene_loader.h"
+#include "scene/read/scene_loader.h"
 
 namespace candela {
 namespace {

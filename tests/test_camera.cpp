@@ -9,7 +9,7 @@
 #include "render/camera_ray.h"
 #include "render_test_util.h"
 #include "scene/camera_resolve.h"
-#include "scene/scene_loader.h"
+#include "scene/read/scene_loader.h"
 
 namespace candela {
 namespace {

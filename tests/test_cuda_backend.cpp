@@ -14,7 +14,7 @@
 #if defined(CANDELA_HAS_CUDA)
 #include "backends/cuda/cuda_renderer.h"
 #include "scene/frame_scene.h"
-#include "scene/scene_loader.h"
+#include "scene/read/scene_loader.h"
 #endif
 
 namespace candela {

@@ -12,7 +12,7 @@
 
 #include "geometry/bvh_build.h"
 #include "scene/flatten.h"
-#include "scene/scene_loader.h"
+#include "scene/read/scene_loader.h"
 
 namespace candela {
 namespace {

@@ -9,7 +9,7 @@
 #include <fstream>
 #include <string>
 
-#include "scene/obj_loader.h"
+#include "scene/read/obj_loader.h"
 #include "scene/scene_error.h"
 
 namespace candela {

@@ -9,9 +9,9 @@
 #include <functional>
 #include <string>
 
-#include "scene/did_you_mean.h"
+#include "scene/read/did_you_mean.h"
 #include "scene/scene_error.h"
-#include "scene/scene_loader.h"
+#include "scene/read/scene_loader.h"
 
 namespace candela {
 namespace {

@@ -79,7 +79,7 @@ struct CameraDesc {
 };
 
 // What an animation track can change (docs/scene-format.md, *Animation*). Which properties a
-// target accepts is the loader's check; see scene_animation_reader.h.
+// target accepts is the loader's check; see scene/read/animation_reader.h.
 enum class AnimTarget { Camera, Sphere, Object, Light };
 enum class AnimProperty {
   Position, Rotation, LookAt, Up, Fov, ApertureRadius, FocusDistance,  // camera

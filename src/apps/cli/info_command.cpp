@@ -5,7 +5,7 @@
 #include <cstdio>
 
 #include "scene/flatten.h"
-#include "scene/scene_loader.h"
+#include "scene/read/scene_loader.h"
 
 namespace candela::cli {
 

@@ -22,7 +22,7 @@
 #include "apps/cli/summary.h"
 #include "image/image_io.h"
 #include "scene/flatten.h"
-#include "scene/scene_loader.h"
+#include "scene/read/scene_loader.h"
 
 namespace fs = std::filesystem;
 

@@ -28,7 +28,7 @@
 #include "scene/animation.h"
 #include "scene/frame_scene.h"
 #include "scene/scene_error.h"
-#include "scene/scene_loader.h"
+#include "scene/read/scene_loader.h"
 
 namespace nb = nanobind;
 using namespace nb::literals;

@@ -1,5 +1,5 @@
 // Edit-distance suggestions; see did_you_mean.h.
-#include "scene/did_you_mean.h"
+#include "scene/read/did_you_mean.h"
 
 #include <algorithm>
 #include <cctype>

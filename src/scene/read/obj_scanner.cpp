@@ -1,5 +1,5 @@
 // OBJ validation pass; see obj_scanner.h.
-#include "scene/obj_scanner.h"
+#include "scene/read/obj_scanner.h"
 
 #include <algorithm>
 #include <cctype>

@@ -1,9 +1,9 @@
-// Reading materials; see scene_material_reader.h.
-#include "scene/scene_material_reader.h"
+// Reading materials; see material_reader.h.
+#include "scene/read/material_reader.h"
 
 #include <vector>
 
-#include "scene/did_you_mean.h"
+#include "scene/read/did_you_mean.h"
 
 namespace candela {
 namespace {

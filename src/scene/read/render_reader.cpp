@@ -1,9 +1,9 @@
-// Reading render settings; see scene_render_reader.h.
-#include "scene/scene_render_reader.h"
+// Reading render settings; see render_reader.h.
+#include "scene/read/render_reader.h"
 
 #include <cstdint>
 
-#include "scene/did_you_mean.h"
+#include "scene/read/did_you_mean.h"
 
 namespace candela {
 

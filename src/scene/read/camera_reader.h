@@ -8,7 +8,7 @@
 // focus_distance wherever an open aperture has no look_at to focus on.
 #pragma once
 
-#include "scene/json_reader.h"
+#include "scene/read/json_reader.h"
 #include "scene/scene_desc.h"
 
 namespace candela {

@@ -1,5 +1,5 @@
-// Reading the camera; see scene_camera_reader.h.
-#include "scene/scene_camera_reader.h"
+// Reading the camera; see camera_reader.h.
+#include "scene/read/camera_reader.h"
 
 #include <cmath>
 #include <cstdint>

@@ -1,5 +1,5 @@
-// Reading spheres, objects and lights; see scene_entity_reader.h.
-#include "scene/scene_entity_reader.h"
+// Reading spheres, objects and lights; see entity_reader.h.
+#include "scene/read/entity_reader.h"
 
 #include <filesystem>
 

@@ -1,19 +1,19 @@
 // The scene loader's top level; see scene_loader.h.
-#include "scene/scene_loader.h"
+#include "scene/read/scene_loader.h"
 
 #include <filesystem>
 #include <map>
 #include <vector>
 
-#include "scene/json_parse.h"
-#include "scene/obj_loader.h"
-#include "scene/scene_animation_reader.h"
-#include "scene/scene_camera_reader.h"
-#include "scene/scene_entity_reader.h"
+#include "scene/read/json_parse.h"
+#include "scene/read/obj_loader.h"
+#include "scene/read/animation_reader.h"
+#include "scene/read/camera_reader.h"
+#include "scene/read/entity_reader.h"
 #include "scene/scene_error.h"
-#include "scene/scene_material_reader.h"
-#include "scene/scene_render_reader.h"
-#include "scene/text_file.h"
+#include "scene/read/material_reader.h"
+#include "scene/read/render_reader.h"
+#include "scene/read/text_file.h"
 
 namespace candela {
 namespace {

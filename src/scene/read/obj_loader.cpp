@@ -1,15 +1,15 @@
 // OBJ loading through tinyobjloader after a validation pass; see obj_loader.h.
-#include "scene/obj_loader.h"
+#include "scene/read/obj_loader.h"
 
 #include <tiny_obj_loader.h>
 
 #include <cmath>
 #include <cstdio>
 
-#include "scene/mtl_library.h"
-#include "scene/obj_scanner.h"
+#include "scene/read/mtl_library.h"
+#include "scene/read/obj_scanner.h"
 #include "scene/scene_error.h"
-#include "scene/text_file.h"
+#include "scene/read/text_file.h"
 
 namespace candela {
 namespace {

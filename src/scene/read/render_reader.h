@@ -2,7 +2,7 @@
 // and OutputDesc (the 8-bit encoding).
 #pragma once
 
-#include "scene/json_reader.h"
+#include "scene/read/json_reader.h"
 #include "scene/scene_desc.h"
 
 namespace candela {

@@ -1,10 +1,10 @@
 // Reading MTL files; see mtl_library.h.
-#include "scene/mtl_library.h"
+#include "scene/read/mtl_library.h"
 
 #include <filesystem>
 #include <sstream>
 
-#include "scene/text_file.h"
+#include "scene/read/text_file.h"
 
 namespace candela {
 

@@ -1,6 +1,6 @@
 // Builds the JSON document through nlohmann's SAX interface, so that errors know where they are;
 // see json_parse.h.
-#include "scene/json_parse.h"
+#include "scene/read/json_parse.h"
 
 #include <algorithm>
 #include <set>

@@ -7,9 +7,9 @@
 
 #include <string>
 
-#include "scene/json_reader.h"
+#include "scene/read/json_reader.h"
 #include "scene/scene_desc.h"
-#include "scene/scene_material_reader.h"
+#include "scene/read/material_reader.h"
 
 namespace candela {
 

@@ -8,7 +8,7 @@
 // along its up direction.
 #pragma once
 
-#include "scene/json_reader.h"
+#include "scene/read/json_reader.h"
 #include "scene/scene_desc.h"
 
 namespace candela {

@@ -9,7 +9,7 @@
 
 #include <string>
 
-#include "scene/json_reader.h"
+#include "scene/read/json_reader.h"
 
 namespace candela {
 

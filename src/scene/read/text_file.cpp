@@ -1,5 +1,5 @@
 // Whole-file reading; see text_file.h.
-#include "scene/text_file.h"
+#include "scene/read/text_file.h"
 
 #include <cerrno>
 #include <cstdio>

@@ -1,12 +1,12 @@
 // Path-aware JSON access with complete error messages; see json_reader.h.
-#include "scene/json_reader.h"
+#include "scene/read/json_reader.h"
 
 #include <algorithm>
 #include <cctype>
 #include <cfloat>
 #include <cmath>
 
-#include "scene/did_you_mean.h"
+#include "scene/read/did_you_mean.h"
 #include "scene/scene_error.h"
 
 namespace candela {

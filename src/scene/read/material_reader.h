@@ -13,7 +13,7 @@
 #include <optional>
 #include <string>
 
-#include "scene/json_reader.h"
+#include "scene/read/json_reader.h"
 #include "scene/scene_desc.h"
 
 namespace candela {

@@ -1,13 +1,13 @@
-// Reading and checking the animation block; see scene_animation_reader.h.
-#include "scene/scene_animation_reader.h"
+// Reading and checking the animation block; see animation_reader.h.
+#include "scene/read/animation_reader.h"
 
 #include <cmath>
 #include <cstdint>
 #include <map>
 
 #include "scene/animation.h"
-#include "scene/did_you_mean.h"
-#include "scene/scene_entity_reader.h"
+#include "scene/read/did_you_mean.h"
+#include "scene/read/entity_reader.h"
 
 namespace candela {
 namespace {
