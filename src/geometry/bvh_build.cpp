@@ -36,10 +36,8 @@ namespace {
 
 // Centroid bins per axis; small nodes use one bin per primitive, as more cannot help them.
 constexpr int kMaxBins = 16;
-// SAH cost of visiting an interior node, relative to one primitive intersection. Measured on
-// random triangle soups, 1 renders as fast as pbrt-v4's 1/2 with about 20% fewer nodes; 1.25
-// renders the bench scenes as fast as 1 (medians of 5, within 1%) with 7-8% fewer bytes per
-// triangle (default room 64.2 -> 59.9, dragon 60.0 -> 55.2).
+// SAH cost of visiting an interior node, relative to one primitive intersection: above pbrt-v4's
+// 1/2, since it renders as fast with fewer nodes and bytes (docs/performance.md).
 constexpr float kTraversalCost = 1.25f;
 // Below this depth splits follow the SAH; from it on they are object medians, which halve the
 // primitive count at each level and so bound the depth by kSahDepthLimit + 30 <= kBvhMaxDepth
@@ -47,8 +45,7 @@ constexpr float kTraversalCost = 1.25f;
 constexpr uint32_t kSahDepthLimit = 32;
 // Nodes with more primitives than this bin along the widest centroid axis only; smaller ones try
 // all three. Binning is most of the build's time, and on large nodes the widest axis is nearly
-// always the best one: on 20 dragons (2.2M triangles) the build takes half the time, and tracing
-// the 100k-triangle dragon costs the same instructions to 0.1% (callgrind).
+// always the best one (docs/performance.md).
 constexpr uint32_t kAllAxesBelow = 1024;
 // Subtrees with at least this many primitives are split in parallel; smaller ones are built
 // serially into one chunk. Small enough that a 4k-triangle scene (the cat) keeps two cores busy
@@ -174,9 +171,8 @@ class BinMapping {
 // axis.
 constexpr float kLargeFraction = 0.25f;
 // The size split must beat the best plane by this factor. Greedy SAH takes any local gain, and
-// on Sponza, whose big floor and wall quads it would peel off node after node, that costs 3% in
-// the whole tree's SAH; a room's walls gain far more than 2x (the default room: -13% SAH, 15-20%
-// faster renders).
+// on Sponza it would peel big floor and wall quads off node after node, at a cost to the whole
+// tree; a room's walls gain far more than 2x (docs/performance.md).
 constexpr float kSizeSplitAdvantage = 0.5f;
 // Nodes with fewer primitives than this do not price the size split.
 constexpr uint32_t kSizeSplitMinCount = 64;
@@ -188,6 +184,59 @@ class LargeTest {
  private:
   Float4 limit_;
 };
+
+// The size split's two sides as binning sums them: the bounds and count of a node's large
+// primitives, and the bounds of the rest.
+struct SizeSplitSums {
+  Box4 large, small;
+  uint32_t largeCount = 0;
+
+  void add(const LargeTest& isLarge, Float4 lo, Float4 hi) {
+    if (isLarge(lo, hi)) {
+      large.grow(lo, hi);
+      ++largeCount;
+    } else {
+      small.grow(lo, hi);
+    }
+  }
+};
+
+// The centroid bins of one node: each bin's bounds and primitive count, per axis.
+class SahBins {
+ public:
+  // Raw storage: only the bins in use are initialised (most nodes are small).
+  SahBins(int firstAxis, int lastAxis, int binCount) {
+    for (int axis = firstAxis; axis <= lastAxis; ++axis) {
+      for (int k = 0; k < binCount; ++k) {
+        new (&storage_[axis][k].box) Box4();
+        sizes_[axis][k] = 0;
+      }
+    }
+  }
+  void add(int axis, int k, Float4 lo, Float4 hi) {
+    storage_[axis][k].box.grow(lo, hi);
+    ++sizes_[axis][k];
+  }
+  const Box4& bounds(int axis, int k) const { return storage_[axis][k].box; }
+  uint32_t size(int axis, int k) const { return sizes_[axis][k]; }
+
+ private:
+  union Storage {
+    Storage() {}
+    Box4 box;
+  } storage_[3][kMaxBins];
+  uint32_t sizes_[3][kMaxBins];
+};
+
+// The cheapest bin plane found so far: its SAH cost, its axis and the last bin it sends left
+// (a plane after bin k sends bins [0, k] left); axis -1 while none separates the primitives.
+struct PlaneSplit {
+  float cost = kInfinity;
+  int axis = -1, plane = -1;
+};
+
+// What sahSplit makes of a node.
+enum class SahChoice { kLeaf, kPlane, kSize };
 
 // The outcome of splitting a node: the two child ranges and the split axis.
 struct Split {
@@ -271,138 +320,153 @@ class Builder {
     const int widest = range.centroids.widestAxis();
     const int firstAxis = allAxes ? 0 : widest, lastAxis = allAxes ? 2 : widest;
 
-    // Raw storage: only the bins in use are initialised (most nodes are small).
-    union BinStorage {
-      BinStorage() {}
-      Box4 box;
-    } binStorage[3][kMaxBins];
-    uint32_t binSizes[3][kMaxBins];
-    for (int axis = firstAxis; axis <= lastAxis; ++axis) {
-      for (int k = 0; k < binCount; ++k) {
-        new (&binStorage[axis][k].box) Box4();
-        binSizes[axis][k] = 0;
-      }
-    }
-    const auto bins = [&](int axis, int k) -> Box4& { return binStorage[axis][k].box; };
+    SahBins bins(firstAxis, lastAxis, binCount);
     // Besides the planes, one candidate that no plane can express: the primitives spanning a
     // large part of the node (a room's wall spheres, a ground quad) on one side, the rest on the
     // other. Centroid planes mix such primitives with the small ones, so every child box grows
     // to the room's size and rays visit all of them; set apart, the small ones get a tight box.
     const LargeTest isLarge(range.bounds);
-    Box4 large, small;
-    uint32_t largeCount = 0;
+    SizeSplitSums sizes;
     if (allAxes) {
-      int32_t bin[4];
-      for (uint32_t i = range.begin; i < range.end; ++i) {
-        const BuildPrim& p = prims_[i];
-        const Float4 lo = p.lower(), hi = p.upper();
-        map.binsOf(lo + hi, bin);
-        for (int axis = 0; axis < 3; ++axis) {
-          bins(axis, bin[axis]).grow(lo, hi);
-          ++binSizes[axis][bin[axis]];
-        }
-      }
-      // A pass of its own: folded into the binning loop above it slowed the whole build by 40%.
-      // In small nodes, where large and small primitives alternate at random, it rarely wins.
-      if (count >= kSizeSplitMinCount) {
-        for (uint32_t i = range.begin; i < range.end; ++i) {
-          const Float4 lo = prims_[i].lower(), hi = prims_[i].upper();
-          if (isLarge(lo, hi)) {
-            large.grow(lo, hi);
-            ++largeCount;
-          } else {
-            small.grow(lo, hi);
-          }
-        }
-      }
+      binAllAxes(range, map, bins);
+      // Small nodes skip the size split: where large and small primitives alternate at random,
+      // it rarely wins.
+      if (count >= kSizeSplitMinCount) sumSizeSplit(range, isLarge, sizes);
     } else {
-      // One axis, with the size split's sums in the same loop: a pass of its own re-read a large
-      // node from memory, and this one loop builds the dragon 1.2x faster.
       static_assert(kAllAxesBelow >= kSizeSplitMinCount, "large nodes always price the size split");
-      const int axis = widest;
-      for (uint32_t i = range.begin; i < range.end; ++i) {
-        const BuildPrim& p = prims_[i];
-        const Float4 lo = p.lower(), hi = p.upper();
-        const int k = map.binOf(axis, p.lo[axis] + p.hi[axis]);
-        bins(axis, k).grow(lo, hi);
-        ++binSizes[axis][k];
-        if (isLarge(lo, hi)) {
-          large.grow(lo, hi);
-          ++largeCount;
-        } else {
-          small.grow(lo, hi);
-        }
-      }
+      binAxisAndSizeSplit(range, map, widest, isLarge, bins, sizes);
     }
 
-    // Sweep each axis from the right to collect suffix costs, then from the left to find the
-    // cheapest plane. A plane after bin k sends bins [0, k] left.
-    float bestCost = kInfinity;
-    int bestAxis = -1, bestPlane = -1;
+    const PlaneSplit plane = cheapestPlane(bins, firstAxis, lastAxis, binCount, count);
+    const SahChoice choice = chooseSplit(range, plane, sizes);
+    if (choice == SahChoice::kLeaf) return false;
+    if (choice == SahChoice::kSize) {
+      splitBySize(range, isLarge, sizes, out);
+    } else {
+      splitAtPlane(range, map, bins, binCount, plane, out);
+    }
+    return true;
+  }
+
+  // Bins every primitive of a small node along all three axes at once.
+  void binAllAxes(const NodeRange& range, const BinMapping& map, SahBins& bins) const {
+    int32_t bin[4];
+    for (uint32_t i = range.begin; i < range.end; ++i) {
+      const BuildPrim& p = prims_[i];
+      const Float4 lo = p.lower(), hi = p.upper();
+      map.binsOf(lo + hi, bin);
+      for (int axis = 0; axis < 3; ++axis) bins.add(axis, bin[axis], lo, hi);
+    }
+  }
+
+  // The size split's sums for a small node, in a pass of its own: folded into binAllAxes' loop
+  // it slowed the build (docs/performance.md).
+  void sumSizeSplit(const NodeRange& range, const LargeTest& isLarge, SizeSplitSums& sizes) const {
+    for (uint32_t i = range.begin; i < range.end; ++i) {
+      sizes.add(isLarge, prims_[i].lower(), prims_[i].upper());
+    }
+  }
+
+  // Bins a large node along `axis` only, summing the size split in the same loop: a pass of its
+  // own would read a large node from memory again.
+  void binAxisAndSizeSplit(const NodeRange& range, const BinMapping& map, int axis,
+                           const LargeTest& isLarge, SahBins& bins, SizeSplitSums& sizes) const {
+    for (uint32_t i = range.begin; i < range.end; ++i) {
+      const BuildPrim& p = prims_[i];
+      const Float4 lo = p.lower(), hi = p.upper();
+      bins.add(axis, map.binOf(axis, p.lo[axis] + p.hi[axis]), lo, hi);
+      sizes.add(isLarge, lo, hi);
+    }
+  }
+
+  // The cheapest plane over the binned axes, for a node of `count` primitives.
+  static PlaneSplit cheapestPlane(const SahBins& bins, int firstAxis, int lastAxis, int binCount,
+                                  uint32_t count) {
+    PlaneSplit best;
     for (int axis = firstAxis; axis <= lastAxis; ++axis) {
-      float rightCost[kMaxBins - 1];
-      Box4 rightBounds;
-      uint32_t rightCount = 0;
-      for (int k = binCount - 1; k >= 1; --k) {
-        rightBounds.grow(bins(axis, k));
-        rightCount += binSizes[axis][k];
-        rightCost[k - 1] = static_cast<float>(rightCount) * rightBounds.halfArea();
-      }
-      Box4 leftBounds;
-      uint32_t leftCount = 0;
-      for (int k = 0; k < binCount - 1; ++k) {
-        leftBounds.grow(bins(axis, k));
-        leftCount += binSizes[axis][k];
-        if (leftCount == 0 || leftCount == count) continue;
-        const float cost = static_cast<float>(leftCount) * leftBounds.halfArea() + rightCost[k];
-        if (cost < bestCost) {
-          bestCost = cost;
-          bestAxis = axis;
-          bestPlane = k;
-        }
+      sweepAxis(bins, axis, binCount, count, best);
+    }
+    return best;
+  }
+
+  // Prices every plane along `axis`, keeping the cheapest in `best` (ties keep the earlier
+  // plane): a sweep from the right collects suffix costs, one from the left finds the plane.
+  static void sweepAxis(const SahBins& bins, int axis, int binCount, uint32_t count,
+                        PlaneSplit& best) {
+    float rightCost[kMaxBins - 1];
+    Box4 rightBounds;
+    uint32_t rightCount = 0;
+    for (int k = binCount - 1; k >= 1; --k) {
+      rightBounds.grow(bins.bounds(axis, k));
+      rightCount += bins.size(axis, k);
+      rightCost[k - 1] = static_cast<float>(rightCount) * rightBounds.halfArea();
+    }
+    Box4 leftBounds;
+    uint32_t leftCount = 0;
+    for (int k = 0; k < binCount - 1; ++k) {
+      leftBounds.grow(bins.bounds(axis, k));
+      leftCount += bins.size(axis, k);
+      if (leftCount == 0 || leftCount == count) continue;
+      const float cost = static_cast<float>(leftCount) * leftBounds.halfArea() + rightCost[k];
+      if (cost < best.cost) {
+        best.cost = cost;
+        best.axis = axis;
+        best.plane = k;
       }
     }
-    bool splitBySize = false;
-    if (largeCount > 0 && largeCount < count) {
-      const float cost = static_cast<float>(largeCount) * large.halfArea() +
-                         static_cast<float>(count - largeCount) * small.halfArea();
+  }
+
+  // The best plane, the size split when it is much cheaper, or a leaf: when neither separates
+  // the primitives, or when the node is cheaper unsplit.
+  static SahChoice chooseSplit(const NodeRange& range, const PlaneSplit& plane,
+                               const SizeSplitSums& sizes) {
+    const uint32_t count = range.count();
+    float bestCost = plane.cost;
+    bool bySize = false;
+    if (sizes.largeCount > 0 && sizes.largeCount < count) {
+      const float cost = static_cast<float>(sizes.largeCount) * sizes.large.halfArea() +
+                         static_cast<float>(count - sizes.largeCount) * sizes.small.halfArea();
       if (cost < kSizeSplitAdvantage * bestCost) {
         bestCost = cost;
-        splitBySize = true;
+        bySize = true;
       }
     }
-    if (bestAxis < 0 && !splitBySize) return false;
+    if (plane.axis < 0 && !bySize) return SahChoice::kLeaf;
+    if (cheaperAsLeaf(range, bestCost)) return SahChoice::kLeaf;
+    return bySize ? SahChoice::kSize : SahChoice::kPlane;
+  }
 
-    if (cheaperAsLeaf(range, bestCost)) return false;
-
-    if (splitBySize) {
-      partition(
-          range, [&](const BuildPrim& p) { return isLarge(p.lower(), p.upper()); }, out);
-      out->left.bounds = large;
-      out->right.bounds = small;
-      out->axis = 0;
-      return true;
-    }
+  // Large primitives left, the rest right; the children's bounds are the sums' boxes.
+  void splitBySize(const NodeRange& range, const LargeTest& isLarge, const SizeSplitSums& sizes,
+                   Split* out) {
     partition(
-        range,
-        [&](const BuildPrim& p) {
-          return map.binOf(bestAxis, p.lo[bestAxis] + p.hi[bestAxis]) <= bestPlane;
-        },
+        range, [&](const BuildPrim& p) { return isLarge(p.lower(), p.upper()); }, out);
+    out->left.bounds = sizes.large;
+    out->right.bounds = sizes.small;
+    out->axis = 0;
+  }
+
+  // Splits at `plane`, partitioning by the same binOf that binned, so that the children's bounds
+  // can be merged from the bins.
+  void splitAtPlane(const NodeRange& range, const BinMapping& map, const SahBins& bins,
+                    int binCount, const PlaneSplit& plane, Split* out) {
+    const int axis = plane.axis, last = plane.plane;
+    partition(
+        range, [&](const BuildPrim& p) { return map.binOf(axis, p.lo[axis] + p.hi[axis]) <= last; },
         out);
     Box4 leftBounds, rightBounds;
     for (int k = 0; k < binCount; ++k) {
-      (k <= bestPlane ? leftBounds : rightBounds).grow(bins(bestAxis, k));
+      (k <= last ? leftBounds : rightBounds).grow(bins.bounds(axis, k));
     }
     out->left.bounds = leftBounds;
     out->right.bounds = rightBounds;
-    out->axis = bestAxis;
-    return true;
+    out->axis = axis;
   }
 
   // Two primitives: about half of all nodes, nearly all of which become leaves. The only split
   // puts one on each side; binning finds it on the first axis along which the centroids differ
   // (and BinMapping can scale them), at the cost computed below to the bit, so the tree is the
-  // same as if they were binned (the dragon builds 1.07x faster).
+  // same as if they were binned, for less work.
   bool pairSplit(const NodeRange& range, Split* out) {
     int axis = 0;
     while (axis < 3 && BinMapping::scaleFor(range.centroids.extent(axis), 2) == 0.0f) ++axis;
@@ -435,7 +499,7 @@ class Builder {
   // Partitions `range` in place, primitives for which goesLeft holds first, and sets out's
   // ranges and centroid bounds (not their bounds). Branch-free (Lomuto's scheme with an
   // unconditional swap): which side a primitive goes to is a coin toss for the branch predictor,
-  // and the two-pointer partition it replaced made the whole build 15-25% slower.
+  // which a two-pointer partition pays for in mispredictions (docs/performance.md).
   template <typename GoesLeft>
   void partition(const NodeRange& range, const GoesLeft& goesLeft, Split* out) {
     uint32_t mid = range.begin;
