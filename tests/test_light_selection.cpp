@@ -1,11 +1,12 @@
 // Light selection for next-event estimation: the power-proportional pmf the scene loader sets and
-// the bisection that picks a light from it.
+// the alias table that picks a light from it.
 #include <gtest/gtest.h>
 
 #include <string>
 #include <vector>
 
 #include "render/light_sample.h"
+#include "scene/light_selection.h"
 #include "render_test_util.h"
 
 namespace candela {
@@ -43,17 +44,49 @@ TEST(LightSelection, ManyLightsArePickedByPowerSkippingLightsWithout) {
   // Powers (RGB sums): 0, 6, 0, 18, then nothing.
   for (size_t i = 0; i < data.lights.size(); ++i)
     EXPECT_NEAR(data.lights[i].selectPmf, i == 1 ? 0.25f : (i == 3 ? 0.75f : 0.0f), 1e-7f);
-  EXPECT_EQ(data.lights[3].selectCdf, 1.0f);
 
   const SceneView view = viewOf(data.lights);
   std::vector<int> picked(data.lights.size(), 0);
   const int n = 100000;
   for (int k = 0; k < n; ++k) ++picked[selectLight(view, (k + 0.5f) / n)];
-  EXPECT_NEAR(picked[1], 0.25 * n, 1.0);
-  EXPECT_NEAR(picked[3], 0.75 * n, 1.0);
+  // Stratified u: each of the table's slots is off by at most one pick.
+  const double slots = double(data.lights.size());
+  EXPECT_NEAR(picked[1], 0.25 * n, slots);
+  EXPECT_NEAR(picked[3], 0.75 * n, slots);
   EXPECT_EQ(picked[1] + picked[3], n);
-  EXPECT_EQ(selectLight(view, 0.0f), 1);
-  EXPECT_EQ(selectLight(view, 0.99999994f), 3);  // the largest float below 1
+  for (float u : {0.0f, 0.5f, 0.99999994f})  // 0.99999994: the largest float below 1
+    EXPECT_TRUE(selectLight(view, u) == 1 || selectLight(view, u) == 3) << u;
+}
+
+// The alias table over many lights of random powers, some without: each is picked in proportion
+// to its power (stratified u, so each slot is off by at most one pick) and never without power.
+TEST(LightSelection, AliasTableFollowsThePowers) {
+  std::vector<Light> lights(1000);
+  std::vector<double> powers(lights.size());
+  uint32_t state = 12345;
+  double total = 0;
+  for (size_t i = 0; i < powers.size(); ++i) {
+    state = state * 1664525u + 1013904223u;
+    powers[i] = i % 7 == 0 ? 0.0 : double(state >> 8) / double(1u << 24) * (i % 3 + 1);
+    total += powers[i];
+  }
+  setLightSelection(lights, powers);
+  const SceneView view = viewOf(lights);
+  std::vector<int> picked(lights.size(), 0);
+  const int n = 2000000;
+  for (int k = 0; k < n; ++k) {
+    const int i = selectLight(view, (k + 0.5f) / n);
+    ASSERT_GE(i, 0);
+    ++picked[size_t(i)];
+  }
+  for (size_t i = 0; i < lights.size(); ++i) {
+    EXPECT_NEAR(lights[i].selectPmf, powers[i] / total, 1e-6) << i;
+    if (powers[i] == 0.0) {
+      EXPECT_EQ(picked[i], 0) << i;
+    }
+    // float u resolves n samples only to ~1e-7 of [0, 1): a few picks of rounding besides.
+    EXPECT_NEAR(picked[i], powers[i] / total * n, double(lights.size()) * 1e-3 + 4.0) << i;
+  }
 }
 
 TEST(LightSelection, NoLightWithPowerPicksNothing) {

@@ -3,8 +3,8 @@
 // Depth follows the contract: interaction k is the k-th surface hit (the first hit is 1).
 // Light reaching interaction k <= max_depth counts, by a shadow ray (next-event estimation) or
 // by the ray scattered from k hitting an emitter or the environment; nothing beyond max_depth
-// scatters. Sphere lights are reached both ways and combined with the power heuristic; point
-// lights only by shadow rays; emissive geometry only by scattered rays.
+// scatters. Emitting spheres and triangles are reached both ways and combined with the power
+// heuristic; point lights only by shadow rays; the environment only by scattered rays.
 #pragma once
 
 #include <cmath>
@@ -48,7 +48,7 @@ CANDELA_HDI Vec3 sampleOneLight(const SceneView& scene, const Light& light, cons
   const Vec3 target = sp.p + ls.wi * ls.distance;
   shadow.tMax = length(target - shadow.origin) * (1.0f - kShadowEpsilon);
   ++counters.shadow;
-  const uint32_t skip = light.type == LightType::Sphere ? light.sphere : kNoPrimitive;
+  const uint32_t skip = light.type == LightType::Point ? kNoPrimitive : lightPrimitive(scene, light);
   if (intersectAny(scene, shadow, skip)) return Vec3(0.0f);
   const float lightPdf = light.selectPmf * ls.pdf;
   const float weight =
@@ -94,7 +94,7 @@ CANDELA_HDI Vec3 traceRadiance(const SceneView& scene, Ray ray, SampleStream& rn
   Vec3 radiance(0.0f), throughput(1.0f);
   uint32_t maxDepth = scene.settings.maxDepth;
   bool specularBounce = true;  // the camera counts as specular: emitters seen directly count fully
-  float bsdfPdf = 0.0f;        // pdf of the last diffuse bounce, for MIS on sphere lights
+  float bsdfPdf = 0.0f;        // pdf of the last diffuse bounce, for MIS on area lights
   Vec3 bouncePoint(0.0f);
 
   for (uint32_t depth = 1;; ++depth) {
@@ -111,11 +111,11 @@ CANDELA_HDI Vec3 traceRadiance(const SceneView& scene, Ray ray, SampleStream& rn
     if (m.type == MaterialType::Emissive) {
       if (dot(wo, sp.ng) > 0.0f) {  // emitters emit from their outside only
         float weight = 1.0f;
-        const int32_t light = hit.prim < scene.sphereCount ? scene.spheres[hit.prim].light : -1;
-        if (!specularBounce && light >= 0) {
-          const Sphere& surface = scene.spheres[hit.prim];
-          weight = powerHeuristic(bsdfPdf, scene.lights[light].selectPmf *
-                                               sphereLightPdf(surface, bouncePoint));
+        const int32_t light = specularBounce ? -1 : lightOfPrimitive(scene, hit.prim);
+        if (light >= 0) {
+          const Light& l = scene.lights[light];
+          weight = powerHeuristic(
+              bsdfPdf, l.selectPmf * emitterPdf(scene, l, bouncePoint, ray.direction, hit.t, sp.ng));
         }
         radiance += throughput * m.radiance * weight;
       }

@@ -1,8 +1,11 @@
-// Lights that next-event estimation samples: point lights and sphere lights.
+// Lights that next-event estimation samples: point lights and the emitting surfaces of the scene.
 //
-// A sphere light is the surface of one of the scene's spheres: its centre and radius are that
-// sphere's, its radiance is the sphere's emissive material's. The sphere names the light back
-// (Sphere::light), so BSDF-sampled rays that hit it are weighted by multiple importance sampling.
+// Every emitter is a light. A point light is declared in the scene; every sphere and every
+// triangle whose material is emissive (a declared sphere light included) is an area light whose
+// shape is that primitive: its position and size are the primitive's, its radiance the
+// material's, and the primitive names the light back (Sphere::light, or the triangle lights'
+// order: see lightOfPrimitive), so BSDF-sampled rays that hit it are weighted by multiple
+// importance sampling.
 #pragma once
 
 #include <cstdint>
@@ -11,19 +14,21 @@
 
 namespace candela {
 
-enum class LightType : uint32_t { Point = 0, Sphere = 1 };
+enum class LightType : uint32_t { Point = 0, Sphere = 1, Triangle = 2 };
 
 struct Light {
   LightType type = LightType::Point;
   Vec3 position;        // point lights
   Vec3 power;           // point lights: total emitted power (color * intensity)
-  uint32_t sphere = 0;  // sphere lights: their index in the scene's spheres
-  // The probability that next-event estimation samples this light at a shading point: 1 when
-  // the scene has at most kSampleEveryLightUpTo lights (each gets its own shadow ray), else one
-  // light is picked in proportion to power. selectCdf is the running sum of the picking
-  // probabilities up to and including this light, 1 from the last light with any power on.
+  uint32_t shape = 0;   // area lights: index into the scene's spheres or triangles, by type
+  // The probability that next-event estimation samples this light at a shading point: 1 when the
+  // scene has at most kSampleEveryLightUpTo lights (each gets its own shadow ray), else one light
+  // is picked in proportion to its power by Walker's alias method: a uniform u picks slot
+  // i = floor(u n), which keeps light i when the rest of u scaled is below aliasThreshold, else
+  // takes light `alias`.
   float selectPmf = 0;
-  float selectCdf = 0;
+  float aliasThreshold = 1;
+  uint32_t alias = 0;
 };
 
 // Up to this many lights every shading point samples each of them, since the extra noise of

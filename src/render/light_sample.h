@@ -1,8 +1,9 @@
-// Next-event estimation towards point and sphere lights.
+// Next-event estimation towards point lights and emitting spheres and triangles.
 //
 // A point light of power P seen from distance d contributes irradiance (P / 4 pi) cos / d^2.
-// A sphere light is sampled uniformly by the solid angle of the cone it subtends, so its pdf
-// can be evaluated again when a BSDF-sampled ray hits it (multiple importance sampling).
+// A sphere is sampled uniformly by the solid angle of the cone it subtends, a triangle uniformly
+// by area; either pdf can be evaluated again when a BSDF-sampled ray hits the emitter, for
+// multiple importance sampling (emitterPdf).
 #pragma once
 
 #include <cmath>
@@ -38,19 +39,40 @@ CANDELA_HDI float sphereLightPdf(const Sphere& s, const Vec3& p) {
 }
 
 // The light that next-event estimation samples for uniform u in [0, 1): light i with probability
-// scene.lights[i].selectPmf (pbrt-v4's power light sampler), found by bisecting the running
-// sums. -1 when no light has any power.
+// scene.lights[i].selectPmf, by the alias table (Light::aliasThreshold). -1 when no light has any
+// power.
 CANDELA_HDI int selectLight(const SceneView& scene, float u) {
-  uint32_t lo = 0, hi = scene.lightCount;  // the answer is the first light with u < selectCdf
+  if (scene.lightCount == 0) return -1;
+  const float scaled = u * float(scene.lightCount);
+  uint32_t slot = uint32_t(scaled);
+  if (slot >= scene.lightCount) slot = scene.lightCount - 1;
+  const Light& l = scene.lights[slot];
+  const uint32_t picked = scaled - float(slot) < l.aliasThreshold ? slot : l.alias;
+  CANDELA_DCHECK(picked < scene.lightCount);
+  return scene.lights[picked].selectPmf > 0.0f ? static_cast<int>(picked) : -1;
+}
+
+// The light whose shape is primitive `prim`, or -1. Triangle lights come last among the lights,
+// in ascending triangle order, so they are found by bisection.
+CANDELA_HDI int32_t lightOfPrimitive(const SceneView& scene, uint32_t prim) {
+  if (prim < scene.sphereCount) return scene.spheres[prim].light;
+  const uint32_t triangle = prim - scene.sphereCount;
+  uint32_t lo = scene.firstTriangleLight, hi = scene.lightCount;
   while (lo < hi) {
     const uint32_t mid = (lo + hi) / 2;
-    if (u < scene.lights[mid].selectCdf) {
-      hi = mid;
-    } else {
+    if (scene.lights[mid].shape < triangle) {
       lo = mid + 1;
+    } else {
+      hi = mid;
     }
   }
-  return lo < scene.lightCount ? static_cast<int>(lo) : -1;
+  return lo < scene.lightCount && scene.lights[lo].shape == triangle ? int32_t(lo) : -1;
+}
+
+// The primitive index of an area light's shape (spheres first, then triangles); the shadow ray
+// towards a point sampled on it skips it.
+CANDELA_HDI uint32_t lightPrimitive(const SceneView& scene, const Light& l) {
+  return l.type == LightType::Triangle ? scene.sphereCount + l.shape : l.shape;
 }
 
 CANDELA_HDI bool samplePointLight(const Light& l, const Vec3& p, LightSample* s) {
@@ -67,8 +89,8 @@ CANDELA_HDI bool samplePointLight(const Light& l, const Vec3& p, LightSample* s)
 
 CANDELA_HDI bool sampleSphereLight(const SceneView& scene, const Light& l, const Vec3& p, float u1,
                                    float u2, LightSample* s) {
-  CANDELA_DCHECK(l.sphere < scene.sphereCount);
-  const Sphere& sphere = scene.spheres[l.sphere];
+  CANDELA_DCHECK(l.shape < scene.sphereCount);
+  const Sphere& sphere = scene.spheres[l.shape];
   const Vec3 toCenter = sphere.center - p;
   const float dist2 = lengthSquared(toCenter);
   const float r2 = sphere.radius * sphere.radius;
@@ -90,6 +112,33 @@ CANDELA_HDI bool sampleSphereLight(const SceneView& scene, const Light& l, const
   return s->distance > 0.0f;
 }
 
+// A point on triangle light `l`, uniform by area: its solid-angle pdf is d^2 / (cos_light area).
+// The triangle emits from its outside only (render/bsdf.h's convention for ng).
+CANDELA_HDI bool sampleTriangleLight(const SceneView& scene, const Light& l, const Vec3& p, float u1,
+                                     float u2, LightSample* s) {
+  CANDELA_DCHECK(l.shape < scene.triangleCount);
+  const Triangle& tri = scene.triangles[l.shape];
+  const Vec3& p0 = scene.positions[tri.v[0]];
+  const Vec3& p1 = scene.positions[tri.v[1]];
+  const Vec3& p2 = scene.positions[tri.v[2]];
+  const float su = sqrtf(u1);
+  const float b1 = 1.0f - su, b2 = u2 * su;
+  const Vec3 onLight = (1.0f - b1 - b2) * p0 + b1 * p1 + b2 * p2;
+  const Vec3 n = cross(p1 - p0, p2 - p0);
+  const float twiceArea = length(n);
+  const Vec3 toLight = onLight - p;
+  const float dist2 = lengthSquared(toLight);
+  if (!(twiceArea > 0.0f) || !(dist2 > 0.0f)) return false;
+  s->distance = sqrtf(dist2);
+  s->wi = toLight / s->distance;
+  const float cosLight = -dot(s->wi, n) / twiceArea;
+  if (!(cosLight > 0.0f)) return false;
+  s->radiance = scene.materials[tri.material].radiance;
+  s->pdf = dist2 / (cosLight * 0.5f * twiceArea);
+  s->isDelta = false;
+  return true;
+}
+
 // A sample of light `l` as seen from p, from the uniform numbers (u1, u2) (a point light uses
 // neither); false when the light shows p nothing.
 CANDELA_HDI bool sampleLight(const SceneView& scene, const Light& l, const Vec3& p, float u1,
@@ -99,8 +148,31 @@ CANDELA_HDI bool sampleLight(const SceneView& scene, const Light& l, const Vec3&
       return samplePointLight(l, p, s);
     case LightType::Sphere:
       return sampleSphereLight(scene, l, p, u1, u2, s);
+    case LightType::Triangle:
+      return sampleTriangleLight(scene, l, p, u1, u2, s);
   }
   return false;
+}
+
+// The solid-angle pdf with which sampleLight, from point `from`, samples the direction `wi` that
+// reached area light `l` at distance t, where the surface's geometric normal is ng.
+CANDELA_HDI float emitterPdf(const SceneView& scene, const Light& l, const Vec3& from,
+                             const Vec3& wi, float t, const Vec3& ng) {
+  switch (l.type) {
+    case LightType::Sphere:
+      return sphereLightPdf(scene.spheres[l.shape], from);
+    case LightType::Triangle: {
+      const Triangle& tri = scene.triangles[l.shape];
+      const Vec3& p0 = scene.positions[tri.v[0]];
+      const float area = 0.5f * length(cross(scene.positions[tri.v[1]] - p0,
+                                              scene.positions[tri.v[2]] - p0));
+      const float cosLight = fabsf(dot(wi, ng));
+      return cosLight > 0.0f && area > 0.0f ? t * t / (cosLight * area) : 0.0f;
+    }
+    case LightType::Point:
+      break;
+  }
+  return 0.0f;
 }
 
 }  // namespace candela

@@ -11,6 +11,7 @@ SceneView SceneData::view() const {
   v.count = uint32_t(name.size());
   CANDELA_SCENE_ARRAYS(CANDELA_VIEW_OF)
 #undef CANDELA_VIEW_OF
+  v.firstTriangleLight = firstTriangleLight;
   v.environment = environment;
   v.emissionReachable = !isBlack(environment);
   for (const Material& m : materials) v.emissionReachable |= m.type == MaterialType::Emissive;

@@ -21,6 +21,7 @@ struct BvhStats {
 
 struct SceneData {
   CANDELA_SCENE_ARRAYS(CANDELA_OWNED_ARRAY)
+  uint32_t firstTriangleLight = 0;
   Vec3 environment{0.0f};
   Camera camera;
   RenderSettings settings;

@@ -28,6 +28,7 @@ namespace candela {
 struct SceneView : GeometryView {
   CANDELA_SHADING_ARRAYS(CANDELA_VIEW_ARRAY_FIELDS)
 
+  uint32_t firstTriangleLight = 0;  // lights from here on are triangles (see lightOfPrimitive)
   Vec3 environment{0.0f};
   // Whether a scattered ray can find any light: an emissive material (sphere lights included) or
   // a nonzero environment. Without, light arrives only by shadow rays to point lights, and the

@@ -8,6 +8,7 @@
 #include "core/rotation.h"
 #include "geometry/bvh_build.h"
 #include "scene/camera_resolve.h"
+#include "scene/light_selection.h"
 
 namespace candela {
 
@@ -78,12 +79,6 @@ void addObject(SceneData& s, const ObjectDesc& obj, bool geometry) {
   }
 }
 
-// The power of a light as light selection weighs it: the sum of its RGB components.
-double selectionPower(const LightDesc& d) {
-  const Vec3 power = d.color * d.intensity;
-  return std::max(0.0, double(power.x) + power.y + power.z);
-}
-
 // A point light, or a sphere light: an emissive sphere of radiance color*intensity/(4 pi^2 r^2)
 // that names the light, which in turn names the sphere.
 void addLight(SceneData& s, const LightDesc& d) {
@@ -97,37 +92,66 @@ void addLight(SceneData& s, const LightDesc& d) {
     emitter.type = MaterialType::Emissive;
     emitter.color = Vec3(0.0f);
     emitter.radiance = (d.color * d.intensity) / (4.0f * kPi * kPi * d.radius * d.radius);
-    light.sphere = uint32_t(s.spheres.size());
+    light.shape = uint32_t(s.spheres.size());
     s.spheres.push_back(
         Sphere{d.position, d.radius, addMaterial(s, emitter), int32_t(s.lights.size())});
   }
   s.lights.push_back(light);
 }
 
-// Light selection (see Light::selectPmf): every light, or one in proportion to its power,
-// lights without power never.
-void setLightSelection(std::vector<Light>& lights, const std::vector<LightDesc>& descs) {
-  if (lights.size() <= kSampleEveryLightUpTo) {
-    for (Light& l : lights) l.selectPmf = l.selectCdf = 1.0f;
-    return;
-  }
-  double total = 0.0;
-  for (const LightDesc& d : descs) total += selectionPower(d);
-  double running = 0.0;
-  for (size_t i = 0; i < lights.size(); ++i) {
-    const double power = selectionPower(descs[i]);
-    running += power;
-    lights[i].selectPmf = total > 0.0 ? float(power / total) : 0.0f;
-    lights[i].selectCdf = total > 0.0 ? float(running / total) : 0.0f;
-  }
-  // Rounding must not leave u close to 1 beyond the last light with power.
-  for (size_t i = lights.size(); i-- > 0;) {
-    if (lights[i].selectPmf > 0.0f) {
-      for (size_t j = i; j < lights.size(); ++j) lights[j].selectCdf = 1.0f;
-      break;
+double sumOf(const Vec3& v) { return double(v.x) + double(v.y) + double(v.z); }
+
+// The power that light selection weighs a light by: the sum of its RGB power. An emitting
+// surface of radiance L and area A emits pi A L (from one side of a triangle, all of a sphere).
+double selectionPower(const SceneData& s, const Light& l) {
+  switch (l.type) {
+    case LightType::Point:
+      return std::max(0.0, sumOf(l.power));
+    case LightType::Sphere: {
+      const Sphere& sphere = s.spheres[l.shape];
+      const double r = sphere.radius;
+      return 4.0 * kPi * kPi * r * r * sumOf(s.materials[sphere.material].radiance);
+    }
+    case LightType::Triangle: {
+      const Triangle& t = s.triangles[l.shape];
+      const Vec3& p0 = s.positions[t.v[0]];
+      const double area =
+          0.5 * double(length(cross(s.positions[t.v[1]] - p0, s.positions[t.v[2]] - p0)));
+      return kPi * area * sumOf(s.materials[t.material].radiance);
     }
   }
+  return 0.0;
 }
+
+bool emits(const Material& m) { return m.type == MaterialType::Emissive && !isBlack(m.radiance); }
+
+}  // namespace
+
+void addEmitterLights(SceneData& s) {
+  for (uint32_t i = 0; i < s.spheres.size(); ++i) {
+    Sphere& sphere = s.spheres[i];
+    if (sphere.light >= 0 || !emits(s.materials[sphere.material])) continue;
+    Light light;
+    light.type = LightType::Sphere;
+    light.shape = i;
+    sphere.light = int32_t(s.lights.size());
+    s.lights.push_back(light);
+  }
+  s.firstTriangleLight = uint32_t(s.lights.size());
+  for (uint32_t i = 0; i < s.triangles.size(); ++i) {
+    if (!emits(s.materials[s.triangles[i].material])) continue;
+    Light light;
+    light.type = LightType::Triangle;
+    light.shape = i;
+    s.lights.push_back(light);
+  }
+  std::vector<double> powers;
+  powers.reserve(s.lights.size());
+  for (const Light& l : s.lights) powers.push_back(selectionPower(s, l));
+  setLightSelection(s.lights, powers);
+}
+
+namespace {
 
 // Everything but the BVH; mesh vertices and triangles only with `geometry`. The order of
 // materials depends only on the scene's structure, so triangles keep valid material indices
@@ -137,7 +161,6 @@ void addContents(SceneData& s, const SceneDesc& desc, bool geometry) {
     s.spheres.push_back(Sphere{sd.position, sd.radius, addMaterial(s, sd.material)});
   // Lights after plain spheres: sphere lights append their own emissive spheres.
   for (const LightDesc& ld : desc.lights) addLight(s, ld);
-  setLightSelection(s.lights, desc.lights);
   for (const ObjectDesc& od : desc.objects) addObject(s, od, geometry);
   // Vertices after the last smooth mesh have no normals either.
   if (geometry && !s.normals.empty()) s.normals.resize(s.positions.size(), OctNormal());
@@ -154,6 +177,7 @@ void refreshSceneValues(SceneData& s, const SceneDesc& desc) {
   s.spheres.clear();
   s.lights.clear();
   addContents(s, desc, false);
+  addEmitterLights(s);
 }
 
 SceneData flattenSceneContents(const SceneDesc& desc) {
@@ -199,6 +223,7 @@ void addBvh(SceneData& s, bool flat) {
 SceneData flattenScene(const SceneDesc& desc) {
   SceneData s = flattenSceneContents(desc);
   addBvh(s, desc.flatBvh);
+  addEmitterLights(s);
   return s;
 }
 
@@ -206,6 +231,7 @@ SceneData flattenScene(SceneDesc&& desc) {
   SceneData s = flattenSceneContents(desc);
   for (ObjectDesc& object : desc.objects) object.mesh = MeshDesc();
   addBvh(s, desc.flatBvh);
+  addEmitterLights(s);
   return s;
 }
 

@@ -1,8 +1,8 @@
 // Flattening: a validated scene description -> the kernel's arrays (render/scene_data.h).
 //
 // Meshes are transformed to world space, the camera is resolved, sphere lights become emissive
-// spheres that name their light, and the BVH is built; triangles are then numbered in the BVH's
-// leaf order.
+// spheres, and the BVH is built; triangles are then numbered in the BVH's leaf order, and every
+// emissive sphere and triangle becomes a light that its primitive names.
 #pragma once
 
 #include "render/scene_data.h"
@@ -17,9 +17,16 @@ SceneData flattenScene(const SceneDesc& desc);
 // never coexist. Everything but `objects[i].mesh` is left intact.
 SceneData flattenScene(SceneDesc&& desc);
 
-// flattenScene without the BVH (nodes and primIndices left empty) and with triangles in the
-// order of the description: for refitting a tree built for a description of the same structure.
+// flattenScene without the BVH (nodes and primIndices left empty), with triangles in the order
+// of the description and without the lights of emissive geometry (only the declared lights): for
+// refitting a tree built for a description of the same structure, after which the triangles take
+// the tree's order and addEmitterLights completes the lights.
 SceneData flattenSceneContents(const SceneDesc& desc);
+
+// Appends a light for every emissive sphere that is not yet one and every emissive triangle (in
+// triangle order, as lightOfPrimitive expects) and sets the light selection. Triangles must be in
+// their final order.
+void addEmitterLights(SceneData& scene);
 
 // Replaces the camera, settings, environment, materials, lights and spheres of `scene` (which
 // flattenScene made from a description with the same geometry as `desc`) by those of `desc`,

@@ -95,6 +95,7 @@ const SceneData& FrameScene::prepare(const SceneDesc& desc) {
       moved.bvh = data_.bvh;
       refitBvh(moved.nodes, moved.primIndices, moved.spheres.data(),
                uint32_t(moved.spheres.size()), moved.positions.data(), moved.triangles.data());
+      addEmitterLights(moved);
       refitted = bvhSahCost(moved.nodes) <= kRefitCostLimit * builtCost_;
       data_ = std::move(moved);
     }

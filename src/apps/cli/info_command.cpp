@@ -27,7 +27,10 @@ int runInfo(const InfoOptions& options) {
   std::printf("spheres:    %zu\n", desc.spheres.size());
   std::printf("objects:    %zu\n", desc.objects.size());
   std::printf("triangles:  %zu\n", scene.triangles.size());
-  std::printf("lights:     %zu\n", desc.lights.size());
+  size_t byType[3] = {0, 0, 0};  // point, sphere, triangle
+  for (const Light& l : scene.lights) ++byType[uint32_t(l.type)];
+  std::printf("lights:     %zu (%zu point, %zu emissive spheres, %zu emissive faces)\n",
+              scene.lights.size(), byType[0], byType[1], byType[2]);
   std::printf("materials:  %zu\n", scene.materials.size());
 
   Vec3 lo, hi;

@@ -26,9 +26,22 @@ Vec3 vec3At(const std::vector<tinyobj::real_t>& values, size_t index) {
   return {values[3 * index], values[3 * index + 1], values[3 * index + 2]};
 }
 
-// One diffuse material per MTL material: Kd, or 0.8 where the material sets none.
-std::vector<Material> diffuseMaterials(const std::vector<tinyobj::material_t>& materials,
-                                           const MtlLibrary& library, const std::string& label) {
+// A finite, non-negative colour of an MTL material, or one error naming the material and key.
+Vec3 mtlColour(const tinyobj::real_t* values, const char* key, const std::string& material,
+               const std::string& label) {
+  const Vec3 colour(values[0], values[1], values[2]);
+  for (int c = 0; c < 3; ++c)
+    if (!(colour[c] >= 0 && std::isfinite(colour[c])))
+      throw SceneError(label + ": material \"" + material + "\": expected a finite, non-negative " +
+                       key + ", got " + formatNumber(colour.x) + " " + formatNumber(colour.y) +
+                       " " + formatNumber(colour.z));
+  return colour;
+}
+
+// One material per MTL material: emissive with radiance Ke where Ke is not black, else diffuse
+// with colour Kd, or 0.8 where the material sets none.
+std::vector<Material> mtlMaterials(const std::vector<tinyobj::material_t>& materials,
+                                   const MtlLibrary& library, const std::string& label) {
   std::vector<Material> result;
   for (size_t i = 0; i < materials.size(); ++i) {
     const tinyobj::material_t& material = materials[i];
@@ -37,13 +50,13 @@ std::vector<Material> diffuseMaterials(const std::vector<tinyobj::material_t>& m
     Material desc;
     desc.type = MaterialType::Diffuse;
     if (library.kdNames.count(material.name) != 0)
-      desc.color = {material.diffuse[0], material.diffuse[1], material.diffuse[2]};
-    for (int c = 0; c < 3; ++c)
-      if (!(desc.color[c] >= 0 && std::isfinite(desc.color[c])))
-        throw SceneError(label + ": material \"" + material.name +
-                         "\": expected a finite, non-negative Kd, got " +
-                         formatNumber(desc.color.x) + " " + formatNumber(desc.color.y) + " " +
-                         formatNumber(desc.color.z));
+      desc.color = mtlColour(material.diffuse, "Kd", material.name, label);
+    const Vec3 emission = mtlColour(material.emission, "Ke", material.name, label);
+    if (!isBlack(emission)) {
+      desc.type = MaterialType::Emissive;
+      desc.color = Vec3(0.0f);
+      desc.radiance = emission;
+    }
     result.push_back(desc);
   }
   return result;
@@ -59,7 +72,7 @@ MeshDesc buildMesh(const tinyobj::ObjReader& reader, const MtlLibrary& library,
   mesh.normals.reserve(attrib.normals.size() / 3);
   for (size_t i = 0; i < attrib.normals.size() / 3; ++i)
     mesh.normals.push_back(vec3At(attrib.normals, i));
-  mesh.materials = diffuseMaterials(reader.GetMaterials(), library, label);
+  mesh.materials = mtlMaterials(reader.GetMaterials(), library, label);
 
   const auto mtlCount = static_cast<int>(mesh.materials.size());
   const auto fallback = static_cast<uint32_t>(mesh.materials.size());
