@@ -425,7 +425,7 @@ TEST_F(SceneLoader, DefaultsFollowTheContract) {
   EXPECT_EQ(scene.lights[0].type, LightType::Point);
   EXPECT_FLOAT_EQ(scene.lights[0].intensity, 100);
   expectVec3(scene.lights[0].color, 1, 1, 1);
-  expectVec3(scene.environment, 0, 0, 0);
+  expectVec3(scene.environment.color, 0, 0, 0);
 }
 
 TEST_F(SceneLoader, RenderSettings) {
@@ -566,7 +566,7 @@ TEST_F(SceneLoader, LightsAndEnvironment) {
   expectVec3(sphere.color, 1, 0.5f, 0.25f);
   EXPECT_EQ(scene.lights[1].type, LightType::Point);
   expectVec3(scene.lights[1].color, 2, 2, 2);
-  expectVec3(scene.environment, 0.1f, 0.2f, 0.3f);
+  expectVec3(scene.environment.color, 0.1f, 0.2f, 0.3f);
 }
 
 TEST_F(SceneLoader, ObjectsResolveFilesAndKeepTheirOwnMaterials) {

@@ -25,4 +25,7 @@ std::string encodePfm(const ImageRGB& image);
 // Accepts "PF" (RGB) and "Pf" (grey, replicated to RGB) in either byte order.
 ImageRGB decodePfm(const std::string& bytes);
 
+// Radiance RGBE (.hdr), read only.
+ImageRGB decodeHdr(const std::string& bytes);
+
 }  // namespace candela

@@ -12,7 +12,7 @@ namespace candela {
 
 namespace {
 
-enum class ImageFormat { Png, Exr, Pfm, Unknown };
+enum class ImageFormat { Png, Exr, Pfm, Hdr, Unknown };
 
 std::string lowercaseExtension(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
@@ -26,6 +26,7 @@ ImageFormat formatOf(const std::string& path) {
   if (ext == ".png") return ImageFormat::Png;
   if (ext == ".exr") return ImageFormat::Exr;
   if (ext == ".pfm") return ImageFormat::Pfm;
+  if (ext == ".hdr") return ImageFormat::Hdr;
   return ImageFormat::Unknown;
 }
 
@@ -39,12 +40,14 @@ ImageFormat formatOf(const std::string& path) {
 }  // namespace
 
 bool isSupportedImagePath(const std::string& path) {
-  return formatOf(path) != ImageFormat::Unknown;
+  const ImageFormat format = formatOf(path);
+  return format != ImageFormat::Unknown && format != ImageFormat::Hdr;
 }
 
 void writeImage(const std::string& path, const ImageRGB& image, const OutputDesc& output) {
   const ImageFormat format = formatOf(path);
-  if (format == ImageFormat::Unknown) unsupported(path, ".png, .exr or .pfm");
+  if (format == ImageFormat::Unknown || format == ImageFormat::Hdr)
+    unsupported(path, ".png, .exr or .pfm");
   if (image.width == 0 || image.height == 0) throw ImageWriteError(path + ": the image is empty");
   if (image.pixels.size() != size_t(3) * image.width * image.height)
     throw ImageWriteError(path + ": pixel buffer does not match the image size");
@@ -61,6 +64,7 @@ void writeImage(const std::string& path, const ImageRGB& image, const OutputDesc
       case ImageFormat::Pfm:
         bytes = encodePfm(image);
         break;
+      case ImageFormat::Hdr:
       case ImageFormat::Unknown:
         break;  // rejected above
     }
@@ -72,11 +76,18 @@ void writeImage(const std::string& path, const ImageRGB& image, const OutputDesc
 
 ImageRGB readImage(const std::string& path) {
   const ImageFormat format = formatOf(path);
-  if (format != ImageFormat::Exr && format != ImageFormat::Pfm)
-    unsupported(path, ".exr or .pfm for reading");
+  if (format != ImageFormat::Exr && format != ImageFormat::Pfm && format != ImageFormat::Hdr)
+    unsupported(path, ".exr, .pfm or .hdr for reading");
   const std::string bytes = readFileBytes(path);
   try {
-    return format == ImageFormat::Exr ? decodeExr(bytes) : decodePfm(bytes);
+    switch (format) {
+      case ImageFormat::Exr:
+        return decodeExr(bytes);
+      case ImageFormat::Hdr:
+        return decodeHdr(bytes);
+      default:
+        return decodePfm(bytes);
+    }
   } catch (const ImageWriteError& e) {
     throw ImageWriteError(path + ": " + e.what());
   }

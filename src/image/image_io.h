@@ -1,5 +1,5 @@
 // Image files by extension: .png (8-bit, gamma/sRGB and exposure applied), .exr (32-bit float
-// linear RGB), .pfm (float linear RGB). Files are written to a temporary name beside the target
+// linear RGB), .pfm (float linear RGB); .hdr (Radiance RGBE) is read only. Files are written to a temporary name beside the target
 // and renamed into place, so an interrupted run never leaves a half-written image.
 #pragma once
 
@@ -22,7 +22,8 @@ bool isSupportedImagePath(const std::string& path);
 // Throws ImageWriteError (naming the path and the reason) on failure; leaves no partial file.
 void writeImage(const std::string& path, const ImageRGB& image, const OutputDesc& output);
 
-// Reads back .pfm and .exr files (for tests and tools); throws ImageWriteError on failure.
+// Reads .exr, .pfm and Radiance .hdr files as linear float RGB (environment maps, tests and
+// tools); throws ImageWriteError (the image module's one error type, naming the path) on failure.
 ImageRGB readImage(const std::string& path);
 
 // 8-bit encoding of one linear value: exposure, clamp to [0,1], then the gamma or sRGB curve.

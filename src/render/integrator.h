@@ -4,7 +4,7 @@
 // Light reaching interaction k <= max_depth counts, by a shadow ray (next-event estimation) or
 // by the ray scattered from k hitting an emitter or the environment; nothing beyond max_depth
 // scatters. Emitting spheres and triangles are reached both ways and combined with the power
-// heuristic; point lights only by shadow rays; the environment only by scattered rays.
+// heuristic, and so is the environment; point lights are reached only by shadow rays.
 #pragma once
 
 #include <cmath>
@@ -46,9 +46,12 @@ CANDELA_HDI Vec3 sampleOneLight(const SceneView& scene, const Light& light, cons
   if (isBlack(f)) return Vec3(0.0f);
   Ray shadow = spawnRay(sp, ls.wi);
   const Vec3 target = sp.p + ls.wi * ls.distance;
-  shadow.tMax = length(target - shadow.origin) * (1.0f - kShadowEpsilon);
+  // The environment lies beyond everything: nothing short of infinity may block it.
+  shadow.tMax = ls.distance >= kInfinity ? kInfinity
+                                         : length(target - shadow.origin) * (1.0f - kShadowEpsilon);
   ++counters.shadow;
-  const uint32_t skip = light.type == LightType::Point ? kNoPrimitive : lightPrimitive(scene, light);
+  const bool hasShape = light.type == LightType::Sphere || light.type == LightType::Triangle;
+  const uint32_t skip = hasShape ? lightPrimitive(scene, light) : kNoPrimitive;
   if (intersectAny(scene, shadow, skip)) return Vec3(0.0f);
   const float lightPdf = light.selectPmf * ls.pdf;
   const float weight =
@@ -100,7 +103,12 @@ CANDELA_HDI Vec3 traceRadiance(const SceneView& scene, Ray ray, SampleStream& rn
   for (uint32_t depth = 1;; ++depth) {
     Hit hit;
     if (!intersectClosest(scene, ray, &hit)) {
-      radiance += throughput * scene.environment;
+      const int32_t light = specularBounce ? -1 : scene.environment.light;
+      const float weight =
+          light < 0 ? 1.0f
+                    : powerHeuristic(bsdfPdf, scene.lights[light].selectPmf *
+                                                  environmentPdf(scene, ray.direction));
+      radiance += throughput * environmentRadiance(scene, ray.direction) * weight;
       break;
     }
     const SurfacePoint sp = surfaceAt(scene, ray, hit);

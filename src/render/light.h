@@ -1,6 +1,7 @@
 // Lights that next-event estimation samples: point lights and the emitting surfaces of the scene.
 //
-// Every emitter is a light. A point light is declared in the scene; every sphere and every
+// Every emitter is a light. A point light is declared in the scene; the environment, unless it
+// is black, is a light (render/environment.h); every sphere and every
 // triangle whose material is emissive (a declared sphere light included) is an area light whose
 // shape is that primitive: its position and size are the primitive's, its radiance the
 // material's, and the primitive names the light back (Sphere::light, or the triangle lights'
@@ -14,7 +15,7 @@
 
 namespace candela {
 
-enum class LightType : uint32_t { Point = 0, Sphere = 1, Triangle = 2 };
+enum class LightType : uint32_t { Point = 0, Sphere = 1, Triangle = 2, Environment = 3 };
 
 struct Light {
   LightType type = LightType::Point;

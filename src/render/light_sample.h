@@ -1,4 +1,5 @@
-// Next-event estimation towards point lights and emitting spheres and triangles.
+// Next-event estimation towards point lights, emitting spheres and triangles and the
+// environment.
 //
 // A point light of power P seen from distance d contributes irradiance (P / 4 pi) cos / d^2.
 // A sphere is sampled uniformly by the solid angle of the cone it subtends, a triangle uniformly
@@ -139,6 +140,42 @@ CANDELA_HDI bool sampleTriangleLight(const SceneView& scene, const Light& l, con
   return true;
 }
 
+// The solid-angle pdf with which the environment light samples world direction wi: a map by its
+// distribution (the density over the map divided by the Jacobian 2 pi^2 sin(theta)), a constant
+// environment uniformly over the sphere.
+CANDELA_HDI float environmentPdf(const SceneView& scene, const Vec3& wi) {
+  const Environment& e = scene.environment;
+  if (e.width == 0) return kInv4Pi;
+  const Vec3 d = e.fromWorld * wi;
+  float u, v;
+  directionToMap(d, &u, &v);
+  const float sinTheta = sqrtf(d.x * d.x + d.z * d.z);
+  if (!(sinTheta > 0.0f)) return 0.0f;
+  return environmentDistribution(scene).pdf(u, v) / (2.0f * kPi * kPi * sinTheta);
+}
+
+CANDELA_HDI bool sampleEnvironmentLight(const SceneView& scene, float u1, float u2,
+                                        LightSample* s) {
+  const Environment& e = scene.environment;
+  if (e.width == 0) {
+    const float z = 1.0f - 2.0f * u1, r = sqrtf(maxf(0.0f, 1.0f - z * z)), phi = 2.0f * kPi * u2;
+    s->wi = Vec3(r * cosf(phi), r * sinf(phi), z);
+    s->pdf = kInv4Pi;
+    s->radiance = e.radiance;
+  } else {
+    float u, v, pdfMap, sinTheta;
+    if (!environmentDistribution(scene).sample(u1, u2, &u, &v, &pdfMap)) return false;
+    const Vec3 d = mapToDirection(u, v, &sinTheta);
+    if (!(sinTheta > 0.0f)) return false;
+    s->wi = normalize(e.toWorld * d);
+    s->pdf = pdfMap / (2.0f * kPi * kPi * sinTheta);
+    s->radiance = e.radiance * lookupMap(scene.envTexels, e.width, e.height, u, v);
+  }
+  s->distance = kInfinity;
+  s->isDelta = false;
+  return true;
+}
+
 // A sample of light `l` as seen from p, from the uniform numbers (u1, u2) (a point light uses
 // neither); false when the light shows p nothing.
 CANDELA_HDI bool sampleLight(const SceneView& scene, const Light& l, const Vec3& p, float u1,
@@ -150,6 +187,8 @@ CANDELA_HDI bool sampleLight(const SceneView& scene, const Light& l, const Vec3&
       return sampleSphereLight(scene, l, p, u1, u2, s);
     case LightType::Triangle:
       return sampleTriangleLight(scene, l, p, u1, u2, s);
+    case LightType::Environment:
+      return sampleEnvironmentLight(scene, u1, u2, s);
   }
   return false;
 }
@@ -170,6 +209,7 @@ CANDELA_HDI float emitterPdf(const SceneView& scene, const Light& l, const Vec3&
       return cosLight > 0.0f && area > 0.0f ? t * t / (cosLight * area) : 0.0f;
     }
     case LightType::Point:
+    case LightType::Environment:
       break;
   }
   return 0.0f;

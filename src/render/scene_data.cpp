@@ -13,7 +13,7 @@ SceneView SceneData::view() const {
 #undef CANDELA_VIEW_OF
   v.firstTriangleLight = firstTriangleLight;
   v.environment = environment;
-  v.emissionReachable = !isBlack(environment);
+  v.emissionReachable = !isBlack(environment.radiance);
   for (const Material& m : materials) v.emissionReachable |= m.type == MaterialType::Emissive;
   v.camera = camera;
   v.settings = settings;

@@ -22,7 +22,7 @@ struct BvhStats {
 struct SceneData {
   CANDELA_SCENE_ARRAYS(CANDELA_OWNED_ARRAY)
   uint32_t firstTriangleLight = 0;
-  Vec3 environment{0.0f};
+  Environment environment;
   Camera camera;
   RenderSettings settings;
   BvhStats bvh;

@@ -11,6 +11,7 @@
 #include "core/vec3.h"
 #include "geometry/geometry_view.h"
 #include "render/camera.h"
+#include "render/environment.h"
 #include "render/light.h"
 #include "render/material.h"
 #include "render/render_settings.h"
@@ -18,9 +19,15 @@
 namespace candela {
 
 // The arrays that shade the geometry, in the form of CANDELA_GEOMETRY_ARRAYS.
-#define CANDELA_SHADING_ARRAYS(X)              \
-  X(Material, materials, materialCount, Values) \
-  X(Light, lights, lightCount, Values)
+// envTexels is the environment map (width x height, rows from the top; empty for a constant
+// environment) and envConditionalCdf/envMarginalCdf its sampling distribution
+// (core/distribution2d.h).
+#define CANDELA_SHADING_ARRAYS(X)                                 \
+  X(Material, materials, materialCount, Values)                    \
+  X(Light, lights, lightCount, Values)                             \
+  X(Vec3, envTexels, envTexelCount, Values)                        \
+  X(float, envConditionalCdf, envConditionalCdfCount, Values)      \
+  X(float, envMarginalCdf, envMarginalCdfCount, Values)
 
 // Every array of the kernel's scene: SceneData, SceneView::set and the CUDA upload expand this.
 #define CANDELA_SCENE_ARRAYS(X) CANDELA_GEOMETRY_ARRAYS(X) CANDELA_SHADING_ARRAYS(X)
@@ -29,7 +36,7 @@ struct SceneView : GeometryView {
   CANDELA_SHADING_ARRAYS(CANDELA_VIEW_ARRAY_FIELDS)
 
   uint32_t firstTriangleLight = 0;  // lights from here on are triangles (see lightOfPrimitive)
-  Vec3 environment{0.0f};
+  Environment environment;
   // Whether a scattered ray can find any light: an emissive material (sphere lights included) or
   // a nonzero environment. Without, light arrives only by shadow rays to point lights, and the
   // ray a path would scatter from its last interaction is not traced: it could add nothing.
@@ -38,5 +45,20 @@ struct SceneView : GeometryView {
   RenderSettings settings;
 };
 static_assert(std::is_trivially_copyable<SceneView>::value, "SceneView must be trivially copyable");
+
+// The environment's radiance along world direction `d` (unit length).
+CANDELA_HDI Vec3 environmentRadiance(const SceneView& scene, const Vec3& d) {
+  const Environment& e = scene.environment;
+  if (e.width == 0) return e.radiance;
+  float u, v;
+  directionToMap(e.fromWorld * d, &u, &v);
+  return e.radiance * lookupMap(scene.envTexels, e.width, e.height, u, v);
+}
+
+// The environment map's sampling distribution.
+CANDELA_HDI Distribution2D environmentDistribution(const SceneView& scene) {
+  return {scene.envConditionalCdf, scene.envMarginalCdf, scene.environment.width,
+          scene.environment.height};
+}
 
 }  // namespace candela

@@ -8,6 +8,7 @@
 #include "core/rotation.h"
 #include "geometry/bvh_build.h"
 #include "scene/camera_resolve.h"
+#include "scene/flatten_environment.h"
 #include "scene/light_selection.h"
 
 namespace candela {
@@ -119,6 +120,14 @@ double selectionPower(const SceneData& s, const Light& l) {
           0.5 * double(length(cross(s.positions[t.v[1]] - p0, s.positions[t.v[2]] - p0)));
       return kPi * area * sumOf(s.materials[t.material].radiance);
     }
+    case LightType::Environment: {
+      // What crosses a disc the size of the scene (pbrt-v4's estimate): pi R^2 times the mean
+      // radiance, R the radius of the scene's bounding sphere.
+      Vec3 lo, hi;
+      s.bounds(&lo, &hi);
+      const double radius = lo.x <= hi.x ? 0.5 * double(length(hi - lo)) : 1.0;
+      return kPi * radius * radius * environmentMeanRadiance(s);
+    }
   }
   return 0.0;
 }
@@ -135,6 +144,13 @@ void addEmitterLights(SceneData& s) {
     light.type = LightType::Sphere;
     light.shape = i;
     sphere.light = int32_t(s.lights.size());
+    s.lights.push_back(light);
+  }
+  s.environment.light = -1;
+  if (!isBlack(s.environment.radiance)) {
+    Light light;
+    light.type = LightType::Environment;
+    s.environment.light = int32_t(s.lights.size());
     s.lights.push_back(light);
   }
   s.firstTriangleLight = uint32_t(s.lights.size());
@@ -165,7 +181,7 @@ void addContents(SceneData& s, const SceneDesc& desc, bool geometry) {
   // Vertices after the last smooth mesh have no normals either.
   if (geometry && !s.normals.empty()) s.normals.resize(s.positions.size(), OctNormal());
 
-  s.environment = desc.environment;
+  flattenEnvironment(desc.environment, s);
   s.camera = resolveCamera(desc.camera, desc.file);
   s.settings = desc.render;
 }

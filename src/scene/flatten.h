@@ -23,8 +23,9 @@ SceneData flattenScene(SceneDesc&& desc);
 // the tree's order and addEmitterLights completes the lights.
 SceneData flattenSceneContents(const SceneDesc& desc);
 
-// Appends a light for every emissive sphere that is not yet one and every emissive triangle (in
-// triangle order, as lightOfPrimitive expects) and sets the light selection. Triangles must be in
+// Appends a light for every emissive sphere that is not yet one, for the environment unless it
+// is black, and for every emissive triangle (last, in triangle order, as lightOfPrimitive
+// expects), and sets the light selection. Triangles must be in
 // their final order.
 void addEmitterLights(SceneData& scene);
 

@@ -6,12 +6,14 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "core/mat3.h"
 #include "core/vec3.h"
+#include "image/image.h"
 #include "image/output_desc.h"
 #include "render/light.h"
 #include "render/material.h"
@@ -80,6 +82,16 @@ struct CameraDesc {
 
 // What an animation track can change (docs/scene-format.md, *Animation*). Which properties a
 // target accepts is the loader's check; see scene/read/animation_reader.h.
+// The environment (docs/scene-format.md, *Environment*): a constant radiance, or an
+// equirectangular map scaled by strength and tinted by color, turned by rotation.
+struct EnvironmentDesc {
+  Vec3 color{0.0f};  // the constant radiance; with a map its tint (default 1)
+  std::string map;   // the map file as resolved against the scene's folder; empty: constant
+  std::shared_ptr<const ImageRGB> image;  // the map, read and checked at load; shared by frames
+  float strength = 1;
+  Vec3 rotation;     // degrees, map frame -> world, R = Rz * Ry * Rx
+};
+
 enum class AnimTarget { Camera, Sphere, Object, Light };
 enum class AnimProperty {
   Position, Rotation, LookAt, Up, Fov, ApertureRadius, FocusDistance,  // camera
@@ -118,7 +130,7 @@ struct SceneDesc {
   std::vector<SphereDesc> spheres;
   std::vector<ObjectDesc> objects;
   std::vector<LightDesc> lights;
-  Vec3 environment{0.0f};
+  EnvironmentDesc environment;
   std::optional<AnimationDesc> animation;  // absent: a still image
 };
 

@@ -10,6 +10,7 @@
 #include "scene/read/animation_reader.h"
 #include "scene/read/camera_reader.h"
 #include "scene/read/entity_reader.h"
+#include "scene/read/environment_reader.h"
 #include "scene/scene_error.h"
 #include "scene/read/material_reader.h"
 #include "scene/read/render_reader.h"
@@ -96,11 +97,8 @@ SceneDesc parseSceneText(const std::string& text, const std::string& fileLabel,
     ids.add(scene.lights.back().id, scene.lights.back().where, fileLabel);
   });
 
-  if (std::optional<JsonValue> environment = top.get("environment")) {
-    JsonObject fields(*environment, {"color"});
-    scene.environment = fields.require("color").colour();
-    fields.finish();
-  }
+  if (std::optional<JsonValue> environment = top.get("environment"))
+    scene.environment = readEnvironment(*environment, baseDir);
   // Last: tracks are checked against the camera and the entities they animate.
   if (std::optional<JsonValue> animation = top.get("animation"))
     scene.animation = readAnimation(*animation, scene);

@@ -1,0 +1,65 @@
+// The environment: the radiance of every ray that leaves the scene, constant or from an
+// equirectangular (latitude-longitude) map, and a light that next-event estimation samples.
+//
+// Mapping (docs/scene-format.md, *Environment*): a direction d in the map's frame (+y up) looks
+// up u = 0.5 + atan2(d.x, -d.z) / (2 pi) wrapped into [0, 1), v = acos(d.y) / pi, where (0, 0) is
+// the image's top-left corner and texel (i, j) covers [i/W, (i+1)/W) x [j/H, (j+1)/H): the
+// image's centre lies along -z, +x right of it, the top row straight up. The map's frame is the
+// world turned by the environment's rotation. Lookups are bilinear (wrapping in u); sampling
+// follows a piecewise-constant distribution over the texels weighted by sin(theta), so a sun in
+// the map is found by shadow rays rather than by chance.
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+
+#include "core/constants.h"
+#include "core/distribution2d.h"
+#include "core/mat3.h"
+#include "core/vec3.h"
+
+namespace candela {
+
+struct Environment {
+  Vec3 radiance{0.0f};  // the constant radiance; with a map, the factor of every texel
+  Mat3 toWorld;         // map frame -> world (the rotation); fromWorld is its transpose
+  Mat3 fromWorld;
+  uint32_t width = 0, height = 0;  // of the map; 0: a constant environment
+  int32_t light = -1;              // its index among the lights; -1: black, not a light
+};
+
+// The map coordinates of a unit direction in the map's frame. theta comes from atan2, not acos,
+// which loses the precision near the poles that the sampling pdf's 1/sin(theta) needs.
+CANDELA_HDI void directionToMap(const Vec3& d, float* u, float* v) {
+  float x = 0.5f + atan2f(d.x, -d.z) * (0.5f * kInvPi);
+  x -= floorf(x);
+  *u = x < 1.0f ? x : 0.0f;
+  const float y = atan2f(sqrtf(d.x * d.x + d.z * d.z), d.y) * kInvPi;
+  *v = y < 1.0f ? y : 0.99999994f;
+}
+
+// The unit direction in the map's frame of map point (u, v), and sin(theta) there.
+CANDELA_HDI Vec3 mapToDirection(float u, float v, float* sinTheta) {
+  const float theta = kPi * v, phi = 2.0f * kPi * (u - 0.5f);
+  *sinTheta = sinf(theta);
+  return {*sinTheta * sinf(phi), cosf(theta), -*sinTheta * cosf(phi)};
+}
+
+// Bilinear lookup of map point (u, v) in texels (width x height, rows from the top).
+CANDELA_HDI Vec3 lookupMap(const Vec3* texels, uint32_t width, uint32_t height, float u, float v) {
+  const float x = u * float(width) - 0.5f, y = v * float(height) - 0.5f;
+  const float x0f = floorf(x), y0f = floorf(y);
+  const float fx = x - x0f, fy = y - y0f;
+  const int32_t w = int32_t(width), h = int32_t(height);
+  int32_t x0 = int32_t(x0f) % w;
+  if (x0 < 0) x0 += w;
+  const int32_t x1 = x0 + 1 < w ? x0 + 1 : 0;
+  const int32_t y0 = y0f < 0.0f ? 0 : (int32_t(y0f) < h ? int32_t(y0f) : h - 1);
+  const int32_t y1 = y0 + 1 < h ? (y0f < 0.0f ? 0 : y0 + 1) : h - 1;
+  const Vec3 top = (1.0f - fx) * texels[size_t(y0) * width + x0] + fx * texels[size_t(y0) * width + x1];
+  const Vec3 bottom =
+      (1.0f - fx) * texels[size_t(y1) * width + x0] + fx * texels[size_t(y1) * width + x1];
+  return (1.0f - fy) * top + fy * bottom;
+}
+
+}  // namespace candela

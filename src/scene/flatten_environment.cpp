@@ -1,0 +1,76 @@
+// Flattening the environment; see flatten_environment.h.
+#include "scene/flatten_environment.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "core/constants.h"
+#include "core/distribution2d.h"
+#include "core/rotation.h"
+
+namespace candela {
+namespace {
+
+double sumOf(const Vec3& v) { return double(v.x) + double(v.y) + double(v.z); }
+
+// sin(theta) at the centre of row j of an h-row map.
+double rowSinTheta(uint32_t j, uint32_t h) { return std::sin(kPi * (j + 0.5) / h); }
+
+}  // namespace
+
+void flattenEnvironment(const EnvironmentDesc& desc, SceneData& s) {
+  Environment e;
+  s.envTexels.clear();
+  s.envConditionalCdf.clear();
+  s.envMarginalCdf.clear();
+  if (!desc.image) {
+    e.radiance = desc.color;
+    s.environment = e;
+    return;
+  }
+  const ImageRGB& image = *desc.image;
+  e.radiance = desc.color * desc.strength;
+  e.toWorld = eulerRotation(desc.rotation);
+  e.fromWorld = e.toWorld.transposed();
+  e.width = image.width;
+  e.height = image.height;
+  const uint32_t w = image.width, h = image.height;
+  s.envTexels.resize(size_t(w) * h);
+  for (uint32_t y = 0; y < h; ++y)
+    for (uint32_t x = 0; x < w; ++x) s.envTexels[size_t(y) * w + x] = image.at(x, y);
+
+  // A texel's weight is the brightest of it and its neighbours, which bounds the bilinear lookup
+  // over its cell, times sin(theta), the solid angle of its row.
+  std::vector<double> f(size_t(w) * h);
+  for (uint32_t y = 0; y < h; ++y)
+    for (uint32_t x = 0; x < w; ++x) {
+      double brightest = 0.0;
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          const uint32_t ny = uint32_t(std::clamp(int(y) + dy, 0, int(h) - 1));
+          const uint32_t nx = (x + w + uint32_t(dx + 1) - 1) % w;
+          brightest = std::max(brightest, sumOf(s.envTexels[size_t(ny) * w + nx]));
+        }
+      f[size_t(y) * w + x] = brightest * rowSinTheta(y, h);
+    }
+  buildDistribution2D(f, w, h, &s.envConditionalCdf, &s.envMarginalCdf);
+  s.environment = e;
+}
+
+double environmentMeanRadiance(const SceneData& s) {
+  const Environment& e = s.environment;
+  if (e.width == 0) return sumOf(e.radiance);
+  double weighted = 0.0, weights = 0.0;
+  for (uint32_t y = 0; y < e.height; ++y) {
+    const double sinTheta = rowSinTheta(y, e.height);
+    for (uint32_t x = 0; x < e.width; ++x) {
+      const Vec3 t = e.radiance * s.envTexels[size_t(y) * e.width + x];
+      weighted += sumOf(t) * sinTheta;
+      weights += sinTheta;
+    }
+  }
+  return weights > 0.0 ? weighted / weights : 0.0;
+}
+
+}  // namespace candela

@@ -1,0 +1,18 @@
+// The "environment" section of a scene file -> EnvironmentDesc, with its map read and checked.
+//
+// {"color": c} is a constant sky; {"map": "sky.exr", "strength": s, "rotation": [x, y, z],
+// "color": tint} an equirectangular map in EXR, PFM or Radiance HDR, relative to the scene's
+// folder. The map must be readable, non-empty and hold only finite, non-negative texels: any
+// other is one error naming the scene file, environment.map and what was found.
+#pragma once
+
+#include <string>
+
+#include "scene/read/json_reader.h"
+#include "scene/scene_desc.h"
+
+namespace candela {
+
+EnvironmentDesc readEnvironment(const JsonValue& value, const std::string& baseDir);
+
+}  // namespace candela
