@@ -9,6 +9,7 @@
 #include <string>
 
 #include "core/constants.h"
+#include "image/image_io.h"
 #include "render_test_util.h"
 
 #if defined(CANDELA_HAS_CUDA)
@@ -75,6 +76,44 @@ TEST(CudaBackend, MatchesCpuWithinRounding) {
   relMse /= double(cpu.image.pixels.size());
   EXPECT_LT(relMse, 1e-4);
   EXPECT_LT(outliers, cpu.image.pixels.size() / 50);
+  EXPECT_EQ(cpu.rays.camera, gpu.rays.camera);
+}
+
+// Every kind of light the CPU samples: emissive faces and spheres (found by bisection and by the
+// sphere's index), an importance-sampled environment map and the alias table of more than eight
+// lights, on the device against the CPU.
+TEST(CudaBackend, MatchesCpuWithAreaLightsAndAnEnvironmentMap) {
+  REQUIRE_GPU();
+  const std::string dir = ::testing::TempDir();
+  std::ofstream(dir + "cuda_lamp.obj") << "v -0.5 2 -1\nv 1 2 -1\nv 1 2 0.5\nv -0.5 2 0.5\nf 1 2 3 4\n";
+  ImageRGB sky(32, 16);
+  for (uint32_t y = 0; y < 16; ++y)
+    for (uint32_t x = 0; x < 32; ++x)
+      sky.set(x, y, x == 20 && y == 5 ? Vec3(200.0f) : Vec3(0.2f + 0.02f * x, 0.3f, 0.5f));
+  writeImage(dir + "cuda_sky.pfm", sky, OutputDesc{});
+  std::string lights;
+  for (int i = 0; i < 9; ++i)
+    lights += std::string(i ? ", " : "") + R"({"position": [)" + std::to_string(i - 4) +
+              R"(, 3, 2], "intensity": )" + std::to_string(50 + 10 * i) + "}";
+  const SceneData data = test::loadTestScene(R"({
+    "camera": {"width": 48, "height": 36, "fov": 50, "position": [0, 1.5, 6], "look_at": [0, 0.5, 0],
+               "spp": 16},
+    "render": {"max_depth": 6, "seed": 3},
+    "environment": {"map": ")" + dir + R"(cuda_sky.pfm", "strength": 0.5, "rotation": [0, 30, 0]},
+    "spheres": [{"position": [0, -1000, 0], "radius": 1000, "color": 0.7},
+                {"position": [1.2, 0.5, 0], "radius": 0.5,
+                 "material": {"type": "emissive", "radiance": [3, 2, 1]}}],
+    "objects": [{"file": ")" + dir + R"(cuda_lamp.obj", "material": {"type": "emissive", "radiance": 4}}],
+    "lights": [)" + lights + "]}");
+  ASSERT_GT(data.lights.size(), size_t(kSampleEveryLightUpTo));
+  const RenderResult cpu = renderCpu(data.view(), RenderOptions{});
+  const RenderResult gpu = renderCuda(data);
+  double relMse = 0;
+  for (size_t i = 0; i < cpu.image.pixels.size(); ++i) {
+    const double a = cpu.image.pixels[i], b = gpu.image.pixels[i];
+    relMse += (a - b) * (a - b) / (a * a + 1e-2);
+  }
+  EXPECT_LT(relMse / double(cpu.image.pixels.size()), 1e-4);
   EXPECT_EQ(cpu.rays.camera, gpu.rays.camera);
 }
 
