@@ -57,6 +57,17 @@ TEST(AnimationErrors, Frames) {
             "s.json: animation.fps: expected a positive number, got 0");
 }
 
+// Every frame's camera is checked at load, so a sequence never writes frames before a bad one:
+// here the field of view shrinks to 1e-38 at the last frame.
+TEST(AnimationErrors, CameraThatBecomesUnusableAtSomeFrame) {
+  EXPECT_EQ(trackError(R"({"target": "camera", "property": "fov", "keys": [[0, 60], [9, 1e-38]]})"),
+            "s.json: animation: at frame 9 camera.fov expected an invertible matrix K (the field "
+            "of view gives none)");
+  // An animation as long as the limit with a camera track is checked in bounded time.
+  EXPECT_EQ(error(R"({"frames": 1000001})"),
+            "s.json: animation.frames: expected a positive integer of at most 1000000, got 1000001");
+}
+
 TEST(AnimationErrors, UnknownKeys) {
   EXPECT_EQ(error(R"({"frames": 2, "trakcs": []})"),
             "s.json: animation.trakcs: unknown key, did you mean \"tracks\"?");

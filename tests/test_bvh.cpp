@@ -239,6 +239,27 @@ TEST(Aabb, BoundsOperations) {
   EXPECT_FALSE(b.contains(u));
 }
 
+// Rays with a NaN or infinite origin or direction hit nothing (regression: their NaN slab tests
+// counted every slot of a node as hit, empty slots included, and traversal followed an empty
+// slot's child 0xffffffff out of the node array).
+TEST(Bvh, NonFiniteRaysHitNothing) {
+  const TestScene s = randomSoup(6, 1, 5);  // 7 primitives: the root has empty slots
+  const GeometryView view = s.view();
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const float inf = std::numeric_limits<float>::infinity();
+  const Vec3 bad[] = {Vec3(nan, 0, 1), Vec3(0, inf, 0), Vec3(-inf, nan, 0)};
+  for (const Vec3& v : bad) {
+    for (bool originBad : {false, true}) {
+      Ray r;
+      r.origin = originBad ? v : Vec3(0.1f, 0.2f, -30.0f);
+      r.direction = originBad ? Vec3(0, 0, 1) : v;
+      Hit hit;
+      EXPECT_FALSE(intersectClosest(view, r, &hit));
+      EXPECT_FALSE(intersectAny(view, r, 0xffffffffu));
+    }
+  }
+}
+
 TEST(Bvh, MatchesBruteForceOnRandomSoup) {
   const TestScene s = randomSoup(2000, 200, 1);
   expectValidBvh(s);

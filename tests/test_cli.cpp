@@ -322,6 +322,23 @@ std::string animatedScene(int frames, const std::string& tracks) {
   "animation": {"frames": )" + std::to_string(frames) + R"(, "tracks": [)" + tracks + "]}}";
 }
 
+// A camera that becomes unusable at the last frame (fov -> 1e-38) is found before any frame is
+// written, and `info` reports the same error (regression: frames 0-2 were written, then exit 2).
+TEST_F(CliTest, SequenceWithABadLastFrameWritesNothing) {
+  writeFile("anim.json", animatedScene(4, R"({"target": "camera", "property": "fov",
+                                              "keys": [[0, 60], [3, 1e-38]]})"));
+  const RunResult r = run("render anim.json -o f/ --format pfm --backend cpu");
+  EXPECT_EQ(r.exitCode, 2);
+  const std::string message =
+      "candela: error: anim.json: animation: at frame 3 camera.fov expected an invertible matrix "
+      "K (the field of view gives none)\n";
+  EXPECT_EQ(r.err, message);
+  EXPECT_FALSE(fs::exists(path("f/frame_0000.pfm")));
+  const RunResult info = run("info anim.json");
+  EXPECT_EQ(info.exitCode, 2);
+  EXPECT_EQ(info.err, message);
+}
+
 // The still that the animation above shows at a frame: the ball at x, the camera's fov.
 std::string stillScene(const std::string& x, const std::string& fov) {
   return R"({

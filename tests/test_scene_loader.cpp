@@ -442,6 +442,38 @@ TEST_F(SceneLoader, RenderSettings) {
   EXPECT_FLOAT_EQ(parse(R"({"camera": {}, "render": {"gamma": 1.8}})").output.gamma, 1.8f);
 }
 
+// Cameras whose rays would not be finite are refused at load, naming the key that causes it
+// (regression: each of these crashed in traversal, which followed empty BVH slots on NaN rays).
+TEST_F(SceneLoader, CameraWithNonFiniteRaysIsRefused) {
+  EXPECT_EQ(cameraError(R"({"width": 8, "height": 8,
+                           "intrinsics": {"fx": 1e-45, "fy": 1e-45, "cx": 1, "cy": 1}})"),
+            "s.json: camera.intrinsics: gives rays that are not finite (at pixel (0, 0)); "
+            "expected intrinsics whose inverse maps every pixel to a finite direction");
+  EXPECT_EQ(cameraError(R"({"intrinsics": [[1, 3e38, 2], [0, 1, 2], [0, 0, 1]]})"),
+            "s.json: camera.intrinsics: gives rays that are not finite (at pixel (0, 0)); "
+            "expected intrinsics whose inverse maps every pixel to a finite direction");
+  EXPECT_EQ(cameraError(R"({"aperture_radius": 1e-45, "focus_distance": 1e-40})"),
+            "s.json: camera.focus_distance: with aperture_radius 1.4013e-45 and focus distance "
+            "9.99995e-41 the lens gives rays that are not finite; expected a larger aperture or "
+            "focus distance");
+  EXPECT_EQ(cameraError(R"({"position": [0, 0, 0], "look_at": [1e-45, 0, 0]})"),
+            "s.json: camera.look_at: gives the camera no valid orientation (its rays would not be "
+            "finite)");
+  EXPECT_EQ(cameraError(R"({"fov": 1e-38})"),  // a field of view is not blamed as intrinsics
+            "s.json: camera.fov: expected an invertible matrix K (the field of view gives none)");
+}
+
+// The image must fit in memory; width x height used to wrap in size_t and uint32 arithmetic.
+TEST_F(SceneLoader, ImageTooLargeForMemoryIsRefused) {
+  EXPECT_EQ(cameraError(R"({"width": 4294901790, "height": 1431677601})"),
+            "s.json: camera.width: an image of 4294901790 x 1431677601 pixels would need "
+            "6.87e+10 GiB; expected at most 268435456 pixels (16384 x 16384)");
+  EXPECT_EQ(cameraError(R"({"width": 16384, "height": 16385})"),
+            "s.json: camera.height: an image of 16384 x 16385 pixels would need 3 GiB; expected "
+            "at most 268435456 pixels (16384 x 16384)");
+  EXPECT_EQ(parse(R"({"camera": {"width": 16384, "height": 16384}})").camera.width, 16384u);
+}
+
 TEST_F(SceneLoader, CameraWithFovAndEulerRotation) {
   const CameraDesc c = camera(R"({"width": 640, "height": 480.0, "fov": 45, "position": [0, 0, 55],
                                   "rotation": [10, 20, 30], "spp": 4})");

@@ -5,6 +5,7 @@
 // reported for t in (0, ray.tMax); a scene with no nodes is all miss.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 
 #include "core/bits.h"
@@ -44,6 +45,14 @@ CANDELA_HDI bool intersectPrimitive(const GeometryView& scene, const Ray& ray, u
   return true;
 }
 
+// Whether every component of the ray's origin and direction is finite (NaN fails every
+// comparison; infinities exceed the largest float).
+CANDELA_HDI bool isFiniteRay(const Ray& ray) {
+  return fabsf(ray.origin.x) <= kInfinity && fabsf(ray.origin.y) <= kInfinity &&
+         fabsf(ray.origin.z) <= kInfinity && fabsf(ray.direction.x) <= kInfinity &&
+         fabsf(ray.direction.y) <= kInfinity && fabsf(ray.direction.z) <= kInfinity;
+}
+
 namespace detail {
 
 // The one traversal loop. anyHit: stop at the first hit not on `skipPrim`; otherwise find the
@@ -56,7 +65,10 @@ namespace detail {
 // hit is known a popped subtree that starts beyond it is skipped without touching its node.
 CANDELA_HDI bool traverseBvh(const GeometryView& scene, const Ray& ray, bool anyHit, uint32_t skipPrim,
                              Hit* hit) {
-  if (scene.nodeCount == 0) return false;
+  // A ray with a non-finite origin or direction hits nothing: its slab tests could make NaN,
+  // which would count every slot of a node as hit, the empty ones (child kNoBvhChild) included.
+  // With finite rays an empty slot's box (lo = +inf, hi = -inf) is always missed.
+  if (scene.nodeCount == 0 || !isFiniteRay(ray)) return false;
   const RayBoxTester box(
       ray.origin, Vec3(1.0f / ray.direction.x, 1.0f / ray.direction.y, 1.0f / ray.direction.z));
   float tMax = ray.tMax;

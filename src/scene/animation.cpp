@@ -1,6 +1,8 @@
 // Evaluating animation tracks; see animation.h.
 #include "scene/animation.h"
 
+#include <algorithm>
+
 namespace candela {
 namespace {
 
@@ -55,12 +57,23 @@ Vec3 evaluateTrack(const AnimTrack& track, uint32_t frame) {
   const std::vector<AnimKey>& keys = track.keys;
   if (frame <= keys.front().frame) return keys.front().value;
   if (frame >= keys.back().frame) return keys.back().value;
-  size_t k = 0;
-  while (keys[k + 1].frame <= frame) ++k;  // keys[k].frame <= frame < keys[k + 1].frame
+  // The last key at or before `frame`, by bisection: keys[k].frame <= frame < keys[k + 1].frame.
+  const auto after = std::upper_bound(keys.begin(), keys.end(), frame,
+                                      [](uint32_t f, const AnimKey& key) { return f < key.frame; });
+  const size_t k = size_t(after - keys.begin()) - 1;
   const AnimKey& a = keys[k];
   const AnimKey& b = keys[k + 1];
   const float t = float(frame - a.frame) / float(b.frame - a.frame);
   return a.value + (b.value - a.value) * t;  // exactly a.value at t = 0
+}
+
+CameraDesc cameraAtFrame(const CameraDesc& camera, const AnimationDesc& animation,
+                         uint32_t frame) {
+  CameraDesc result = camera;
+  for (const AnimTrack& track : animation.tracks)
+    if (track.target == AnimTarget::Camera)
+      applyToCamera(result, track.property, evaluateTrack(track, frame));
+  return result;
 }
 
 SceneDesc sceneAtFrame(const SceneDesc& scene, uint32_t frame) {

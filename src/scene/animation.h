@@ -12,8 +12,14 @@
 
 namespace candela {
 
+// The most frames an animation may have: a million frames are 11.5 hours at 24 fps.
+constexpr uint32_t kMaxFrames = 1000000;
+
 // The value of `track` at `frame` (scalars in all three components).
 Vec3 evaluateTrack(const AnimTrack& track, uint32_t frame);
+
+// `camera` with the camera tracks of `animation` applied at `frame`.
+CameraDesc cameraAtFrame(const CameraDesc& camera, const AnimationDesc& animation, uint32_t frame);
 
 // The still scene at `frame`: every track applied, render.seed + frame, and no animation block.
 // Works for scenes without animation too (only the seed changes). A colour track on an object

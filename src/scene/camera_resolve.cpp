@@ -1,9 +1,13 @@
 #include "scene/camera_resolve.h"
 
 #include <cmath>
+#include <cstdio>
+#include <optional>
+#include <string>
 
 #include "core/constants.h"
 #include "core/rotation.h"
+#include "render/camera_ray.h"
 #include "scene/scene_error.h"
 
 namespace candela {
@@ -21,6 +25,69 @@ Mat3 intrinsicMatrix(const CameraDesc& desc) {
 
 namespace {
 
+// Where K comes from: the intrinsics, or the field of view.
+std::string intrinsicsPath(const CameraDesc& desc) {
+  return desc.intrinsics ? "camera.intrinsics" : "camera.fov";
+}
+
+// Where the camera's pose comes from.
+std::string posePath(const CameraDesc& desc) {
+  if (desc.extrinsicsR) return "camera.extrinsics";
+  return desc.lookAt ? "camera.look_at" : "camera.rotation";
+}
+
+std::string formatNumber(float value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", double(value));
+  return text;
+}
+
+bool finite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+// A ray the renderer can trace: a finite origin and a finite unit direction.
+bool traceable(const Ray& ray) {
+  return finite(ray.origin) && finite(ray.direction) &&
+         std::fabs(length(ray.direction) - 1.0f) < 1e-3f;
+}
+
+// Every ray the camera can make must be traceable: a non-finite direction would send traversal
+// into every box. The pose must be a rotation; the rays through the image's corners (K^-1 is
+// affine in the pixel, so they bound the rest) and, with a lens, from the lens's rim must be
+// finite.
+std::optional<CameraProblem> rayProblem(const Camera& cam, const CameraDesc& desc) {
+  bool pose = finite(cam.position);
+  for (int c = 0; c < 3; ++c) {
+    const Vec3 axis = cam.cameraToWorld.column(c);
+    pose = pose && finite(axis) && std::fabs(length(axis) - 1.0f) < 1e-3f;
+  }
+  if (!pose)
+    return CameraProblem{posePath(desc),
+                         "gives the camera no valid orientation (its rays would not be finite)"};
+  const float w = float(cam.width), h = float(cam.height);
+  const float corners[5][2] = {{0, 0}, {w, 0}, {0, h}, {w, h}, {0.5f * w, 0.5f * h}};
+  Camera pinhole = cam;
+  pinhole.apertureRadius = 0.0f;
+  for (const auto& p : corners)
+    if (!traceable(generateCameraRay(pinhole, p[0], p[1], 0.5f, 0.5f)))
+      return CameraProblem{intrinsicsPath(desc),
+                           "gives rays that are not finite (at pixel (" + formatNumber(p[0]) +
+                               ", " + formatNumber(p[1]) +
+                               ")); expected intrinsics whose inverse maps every pixel to a "
+                               "finite direction"};
+  if (cam.apertureRadius <= 0.0f) return std::nullopt;
+  const float rim[5][2] = {{0, 0.5f}, {1, 0.5f}, {0.5f, 0}, {0.5f, 1}, {0.5f, 0.5f}};
+  for (const auto& p : corners)
+    for (const auto& lens : rim)
+      if (!traceable(generateCameraRay(cam, p[0], p[1], lens[0], lens[1])))
+        return CameraProblem{
+            desc.focusDistance ? "camera.focus_distance" : "camera.aperture_radius",
+            "with aperture_radius " + formatNumber(cam.apertureRadius) + " and focus distance " +
+                formatNumber(cam.focusDistance) +
+                " the lens gives rays that are not finite; expected a larger aperture or focus "
+                "distance"};
+  return std::nullopt;
+}
+
 // The contract's "rotation" camera looks along -z with +y up; OpenCV axes flip y and z.
 const Mat3 kGlToOpenCv = Mat3::diagonal(Vec3(1.0f, -1.0f, -1.0f));
 
@@ -33,13 +100,16 @@ Mat3 lookAtBasis(const Vec3& eye, const Vec3& target, const Vec3& up) {
 
 }  // namespace
 
-Camera resolveCamera(const CameraDesc& desc, const std::string& fileLabel) {
-  Camera cam;
+namespace {
+
+std::optional<CameraProblem> makeCamera(const CameraDesc& desc, Camera* out) {
+  Camera& cam = *out;
   cam.width = desc.width;
   cam.height = desc.height;
   if (!invert(intrinsicMatrix(desc), &cam.inverseK))
-    throw SceneError(fileLabel + ": camera.intrinsics: expected an invertible matrix K");
-
+    return CameraProblem{intrinsicsPath(desc),
+                         std::string("expected an invertible matrix K") +
+                             (desc.intrinsics ? "" : " (the field of view gives none)")};
   if (desc.extrinsicsR && desc.extrinsicsT) {
     // E maps world to camera: x_c = R x_w + t, so the centre is -R^T t.
     cam.cameraToWorld = desc.extrinsicsR->transposed();
@@ -51,7 +121,6 @@ Camera resolveCamera(const CameraDesc& desc, const std::string& fileLabel) {
     cam.position = desc.position;
     cam.cameraToWorld = eulerRotation(desc.rotation) * kGlToOpenCv;
   }
-
   cam.apertureRadius = desc.apertureRadius;
   if (desc.focusDistance) {
     cam.focusDistance = *desc.focusDistance;
@@ -59,6 +128,20 @@ Camera resolveCamera(const CameraDesc& desc, const std::string& fileLabel) {
     // Distance to look_at measured along the viewing axis (the focus plane is perpendicular).
     cam.focusDistance = dot(*desc.lookAt - cam.position, cam.cameraToWorld.column(2));
   }
+  return rayProblem(cam, desc);
+}
+
+}  // namespace
+
+std::optional<CameraProblem> cameraProblem(const CameraDesc& desc) {
+  Camera unused;
+  return makeCamera(desc, &unused);
+}
+
+Camera resolveCamera(const CameraDesc& desc, const std::string& fileLabel) {
+  Camera cam;
+  if (const std::optional<CameraProblem> problem = makeCamera(desc, &cam))
+    throw SceneError(fileLabel + ": " + problem->path + ": " + problem->message);
   return cam;
 }
 

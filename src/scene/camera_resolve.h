@@ -3,12 +3,26 @@
 // camera-to-world rotation (+x right, +y down, +z forward).
 #pragma once
 
-#include "scene/scene_desc.h"
+#include <optional>
+#include <string>
+
 #include "render/camera.h"
+#include "scene/scene_desc.h"
 
 namespace candela {
 
-// The description must be validated; throws SceneError only for a singular K.
+// What keeps a camera description from making a camera whose every ray is finite: the JSON path
+// to blame and what is wrong there.
+struct CameraProblem {
+  std::string path;  // e.g. "camera.intrinsics"
+  std::string message;
+};
+
+// Why `desc` makes no usable camera (K not invertible; a pose that is no rotation; pixels or lens
+// points whose rays are not finite), or nullopt when it makes one.
+std::optional<CameraProblem> cameraProblem(const CameraDesc& desc);
+
+// The camera of `desc`; throws SceneError "file: path: message" for a cameraProblem.
 Camera resolveCamera(const CameraDesc& desc, const std::string& fileLabel);
 
 // Pixel coordinates (u right, v down, pixel centres at +0.5) of a world point seen by the

@@ -223,9 +223,15 @@ def test_refit_reproduces_committed_figures(br, path):
 
 @pytest.fixture(scope='module')
 def committed(br):
+    """The newest committed run with the default and cat scenes and the seed table, which the tests
+    below edit (a run of other scenes alone, e.g. --scenes cornell,lamp,sky, has none of them)."""
     assert RESULTS, 'no bench/results/*.json'
-    with open(RESULTS[-1]) as f:
-        return json.load(f)
+    for path in reversed(RESULTS):
+        with open(path) as f:
+            res = json.load(f)
+        if {'default', 'cat'} <= set(res['scenes']) and 'seed_table' in res:
+            return res
+    pytest.fail('no bench/results/*.json with the default and cat scenes and the seed table')
 
 
 @pytest.mark.parametrize('path', RESULTS, ids=os.path.basename)
@@ -344,3 +350,56 @@ def test_report_rejects_invalid_results(committed, tmp_path):
     assert "missing key 'scenes.cat.cpu.rays_per_second_by_type'" in r.stderr
     assert 'Traceback' not in r.stderr
     assert path.read_text() == before  # left as it was
+
+
+# ---------------------------------------------------------------- emitter scenes (issue 17)
+
+def test_generated_torus_is_closed_and_wound_outwards(br):
+    text = br.torus_obj(6, 1.2, 16, 8)
+    verts = [tuple(map(float, l.split()[1:])) for l in text.splitlines() if l.startswith('v ')]
+    tris = [tuple(int(x) - 1 for x in l.split()[1:]) for l in text.splitlines() if l.startswith('f ')]
+    assert len(tris) == 2 * 16 * 8
+    edges = {}
+    for t in tris:
+        for a, b in ((t[0], t[1]), (t[1], t[2]), (t[2], t[0])):
+            edges[(a, b)] = edges.get((a, b), 0) + 1
+    # closed and consistently wound: every directed edge once, and its reverse once
+    assert all(n == 1 and edges.get((b, a)) == 1 for (a, b), n in edges.items())
+    # counter-clockwise seen from outside: each face normal points away from the tube's axis circle
+    for t in tris:
+        p = [verts[i] for i in t]
+        u = [p[1][k] - p[0][k] for k in range(3)]
+        v = [p[2][k] - p[0][k] for k in range(3)]
+        n = [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]]
+        c = [sum(q[k] for q in p) / 3 for k in range(3)]
+        r = (c[0] ** 2 + c[2] ** 2) ** 0.5
+        axis = [6 * c[0] / r, 0.0, 6 * c[2] / r]
+        assert sum(n[k] * (c[k] - axis[k]) for k in range(3)) > 0
+
+
+def test_emitter_templates_need_no_assets(br, tmp_path):
+    env = {'REPO': br.REPO, 'ASSETS': str(tmp_path / 'no-assets')}
+    for name in br.EMITTER_SCENES:
+        scene = br.load_template(os.path.join(br.REPO, 'bench', 'scenes', name + '.json'), env)
+        br.prepare_files(scene, str(tmp_path))
+        assert scene['render']['max_depth'] == 5 and scene['camera']['width'] == 512
+        for f in br.mesh_files(scene) + ([br.environment_map(scene)] if br.environment_map(scene) else []):
+            assert os.path.isabs(f) and os.path.exists(f), f
+    lamp = br.load_template(os.path.join(br.REPO, 'bench', 'scenes', 'lamp.json'), env)
+    assert lamp['lights'] == []  # the base's point light is dropped
+    assert br.environment_map(br.load_template(os.path.join(br.REPO, 'bench', 'scenes', 'sky.json'), env))
+
+
+def test_partial_run_rewrites_only_its_docs_block(br, committed, tmp_path):
+    docs = tmp_path / 'performance.md'
+    docs.write_text(f'# Performance\n\n{br.BEGIN}\nmesh table\n{br.END}\n')
+    emitters = copy.deepcopy(committed)
+    emitters['scenes'] = {'cornell': emitters['scenes']['default']}
+    emitters['skipped'] = {}
+    del emitters['seed_table']
+    for md, begin, end, heading in br.docs_blocks(emitters):
+        br.write_docs(md, str(docs), begin, end, heading)
+    text = docs.read_text()
+    assert f'{br.BEGIN}\nmesh table\n{br.END}' in text
+    assert '## Emitter scenes (issue 17)' in text and '| cornell | cpu |' in text
+    assert [b for _, b, _, _ in br.docs_blocks(committed)] == [br.BEGIN]

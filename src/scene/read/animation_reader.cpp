@@ -6,6 +6,7 @@
 #include <map>
 
 #include "scene/animation.h"
+#include "scene/camera_resolve.h"
 #include "scene/read/did_you_mean.h"
 #include "scene/read/entity_reader.h"
 
@@ -216,34 +217,29 @@ void checkLens(const JsonValue& value, const AnimationDesc& animation, const Sce
                "camera, or a focus_distance track");
 }
 
-// A look_at camera must have a view direction, not parallel to up, at every frame.
-void checkViewAtEveryFrame(const JsonValue& value, const AnimationDesc& animation,
-                           const SceneDesc& scene) {
-  if (!scene.camera.lookAt) return;
-  bool animated = false;
+// The camera must make finite rays at every frame (scene/camera_resolve.h), and a look_at camera
+// must have a view direction, not parallel to up: checked for every frame when the camera is
+// animated, so that no frame of a sequence is written before a bad one is found.
+void checkCameraAtEveryFrame(const JsonValue& value, const AnimationDesc& animation,
+                             const SceneDesc& scene) {
+  AnimationDesc cameraTracks;
   for (const AnimTrack& t : animation.tracks)
-    animated = animated || (t.target == AnimTarget::Camera &&
-                            (t.property == AnimProperty::Position ||
-                             t.property == AnimProperty::LookAt || t.property == AnimProperty::Up));
-  if (!animated) return;
-  SceneDesc still = scene;
-  still.animation = animation;
-  still.spheres.clear();  // only the camera matters here; avoid copying meshes per frame
-  still.objects.clear();
-  still.lights.clear();
-  still.animation->tracks.clear();
-  for (const AnimTrack& t : animation.tracks)
-    if (t.target == AnimTarget::Camera) still.animation->tracks.push_back(t);
+    if (t.target == AnimTarget::Camera) cameraTracks.tracks.push_back(t);
+  if (cameraTracks.tracks.empty()) return;
   for (uint32_t frame = 0; frame < animation.frames; ++frame) {
-    const CameraDesc c = sceneAtFrame(still, frame).camera;
-    const Vec3 f = *c.lookAt - c.position;
-    const std::string at = "at frame " + std::to_string(frame) + " the camera";
-    if (isBlack(f)) value.fail(at + " looks at its own position");
-    const double fx = f.x, fy = f.y, fz = f.z, ux = c.up.x, uy = c.up.y, uz = c.up.z;
-    const double cx = fy * uz - fz * uy, cy = fz * ux - fx * uz, cz = fx * uy - fy * ux;
-    const double norm2 = (fx * fx + fy * fy + fz * fz) * (ux * ux + uy * uy + uz * uz);
-    if (!((cx * cx + cy * cy + cz * cz) / norm2 > 1e-12))
-      value.fail(at + " looks along its up direction");
+    const CameraDesc c = cameraAtFrame(scene.camera, cameraTracks, frame);
+    const std::string at = "at frame " + std::to_string(frame) + " ";
+    if (c.lookAt) {
+      const Vec3 f = *c.lookAt - c.position;
+      if (isBlack(f)) value.fail(at + "the camera looks at its own position");
+      const double fx = f.x, fy = f.y, fz = f.z, ux = c.up.x, uy = c.up.y, uz = c.up.z;
+      const double cx = fy * uz - fz * uy, cy = fz * ux - fx * uz, cz = fx * uy - fy * ux;
+      const double norm2 = (fx * fx + fy * fy + fz * fz) * (ux * ux + uy * uy + uz * uz);
+      if (!((cx * cx + cy * cy + cz * cz) / norm2 > 1e-12))
+        value.fail(at + "the camera looks along its up direction");
+    }
+    if (const std::optional<CameraProblem> problem = cameraProblem(c))
+      value.fail(at + problem->path + " " + problem->message);
   }
 }
 
@@ -253,7 +249,7 @@ AnimationDesc readAnimation(const JsonValue& value, const SceneDesc& scene) {
   JsonObject fields(value, {"frames", "fps", "tracks"});
   AnimationDesc animation;
   animation.frames =
-      uint32_t(fields.require("frames").integer(1, UINT32_MAX, "a positive integer"));
+      uint32_t(fields.require("frames").integer(1, kMaxFrames, "a positive integer"));
   if (std::optional<JsonValue> fps = fields.get("fps")) animation.fps = fps->positiveNumber();
 
   const Targets targets(scene);
@@ -280,7 +276,7 @@ AnimationDesc readAnimation(const JsonValue& value, const SceneDesc& scene) {
   }
   fields.finish();
   checkLens(value, animation, scene);
-  checkViewAtEveryFrame(value, animation, scene);
+  checkCameraAtEveryFrame(value, animation, scene);
   return animation;
 }
 

@@ -1,6 +1,8 @@
 // Reading the camera; see camera_reader.h.
 #include "scene/read/camera_reader.h"
 
+#include <cstdio>
+
 #include <cmath>
 #include <cstdint>
 
@@ -90,6 +92,20 @@ void readPose(JsonObject& fields, CameraDesc& camera) {
   }
 }
 
+// The image must fit in memory: at most kMaxPixels pixels, each of which the renderer keeps as
+// three floats (and a PNG as three bytes more).
+void checkImageSize(JsonObject& fields, const CameraDesc& camera) {
+  const uint64_t pixels = uint64_t(camera.width) * camera.height;
+  if (pixels <= kMaxPixels) return;
+  const std::string key = camera.width >= camera.height ? "width" : "height";
+  char gib[32];
+  std::snprintf(gib, sizeof gib, "%.3g", double(pixels) * 12.0 / double(1ull << 30));
+  fields.get(key)->fail("an image of " + std::to_string(camera.width) + " x " +
+                          std::to_string(camera.height) + " pixels would need " + gib +
+                          " GiB; expected at most " + std::to_string(kMaxPixels) +
+                          " pixels (16384 x 16384)");
+}
+
 }  // namespace
 
 CameraDesc readCamera(const JsonValue& value, RenderSettings& render) {
@@ -101,6 +117,8 @@ CameraDesc readCamera(const JsonValue& value, RenderSettings& render) {
     camera.width = static_cast<uint32_t>(width->integer(1, kMaxUint32, "a positive integer"));
   if (std::optional<JsonValue> height = fields.get("height"))
     camera.height = static_cast<uint32_t>(height->integer(1, kMaxUint32, "a positive integer"));
+
+  checkImageSize(fields, camera);
 
   fields.exclusive("fov", "intrinsics");
   if (std::optional<JsonValue> fov = fields.get("fov")) {

@@ -13,6 +13,9 @@
 
 namespace candela {
 
+// The most pixels an image may have (16384 x 16384): its float sums alone take 3 GiB.
+constexpr uint64_t kMaxPixels = uint64_t(1) << 28;
+
 // The camera's spp (the scene's samples per pixel) goes to `render`.
 CameraDesc readCamera(const JsonValue& value, RenderSettings& render);
 

@@ -1,10 +1,13 @@
 // The scene loader's top level; see scene_loader.h.
 #include "scene/read/scene_loader.h"
 
+#include <algorithm>
+
 #include <filesystem>
 #include <map>
 #include <vector>
 
+#include "scene/camera_resolve.h"
 #include "scene/read/json_parse.h"
 #include "scene/read/obj_loader.h"
 #include "scene/read/animation_reader.h"
@@ -99,9 +102,16 @@ SceneDesc parseSceneText(const std::string& text, const std::string& fileLabel,
 
   if (std::optional<JsonValue> environment = top.get("environment"))
     scene.environment = readEnvironment(*environment, baseDir);
-  // Last: tracks are checked against the camera and the entities they animate.
+  // Last: tracks are checked against the camera and the entities they animate, and an animated
+  // camera at every frame; a still camera is checked here.
   if (std::optional<JsonValue> animation = top.get("animation"))
     scene.animation = readAnimation(*animation, scene);
+  const bool cameraAnimated =
+      scene.animation && std::any_of(scene.animation->tracks.begin(), scene.animation->tracks.end(),
+                                     [](const AnimTrack& t) { return t.target == AnimTarget::Camera; });
+  if (!cameraAnimated)
+    if (const std::optional<CameraProblem> problem = cameraProblem(scene.camera))
+      failAt(fileLabel, problem->path, problem->message);
   top.finish();
 
   loadMeshes(scene, writtenNames);
