@@ -13,6 +13,7 @@
 #include "core/constants.h"
 #include "core/frame.h"
 #include "core/sampling.h"
+#include "geometry/spherical_triangle.h"
 #include "geometry/triangle_intersect.h"
 #include "render/light_sample.h"
 #include "render_test_util.h"
@@ -117,9 +118,15 @@ SceneData oneEmissiveTriangle(const std::string& name, const std::string& vertic
 
 // Light sampling of a triangle against an independent estimate of the same irradiance by cosine
 // sampling of the hemisphere, and its pdf against emitterPdf, which MIS evaluates for a
-// BSDF-sampled ray that hits the triangle.
-TEST(AreaLights, TriangleSamplingAgreesWithCosineSamplingAndItsPdf) {
-  const SceneData data = oneEmissiveTriangle("area_tri.obj", "v -1 3 -1\nv 2 2.5 -0.5\nv 0 3.5 2\n");
+// BSDF-sampled ray that hits the triangle. A near, large triangle is sampled by solid angle, a
+// far, small one by area: both must be unbiased and consistent.
+void expectTriangleSamplingAgreesWithCosineSampling(const std::string& name,
+                                                    const std::vector<DVec>& corners,
+                                                    bool bySolidAngle) {
+  std::string obj;
+  for (const DVec& c : corners)
+    obj += "v " + std::to_string(c.x) + " " + std::to_string(c.y) + " " + std::to_string(c.z) + "\n";
+  const SceneData data = oneEmissiveTriangle(name, obj);
   ASSERT_EQ(data.lights.size(), 1u);
   const SceneView view = data.view();
   const Light& light = view.lights[0];
@@ -131,6 +138,9 @@ TEST(AreaLights, TriangleSamplingAgreesWithCosineSamplingAndItsPdf) {
   const Vec3 x(0.2f, 0.0f, 0.1f), n(0.0f, 1.0f, 0.0f);
   const Vec3 ng = normalize(cross(p1 - p0, p2 - p0));
   ASSERT_LT(dot(ng, Vec3(0, 1, 0)), 0.0f) << "the triangle must face the point below it";
+  float solidAngle;
+  EXPECT_EQ(sampledBySolidAngle(p0, p1, p2, 0.5f * length(cross(p1 - p0, p2 - p0)), x, &solidAngle),
+            bySolidAngle);
 
   std::mt19937 gen(7);
   std::uniform_real_distribution<float> u(0.0f, 1.0f);
@@ -165,11 +175,44 @@ TEST(AreaLights, TriangleSamplingAgreesWithCosineSamplingAndItsPdf) {
   double lightError, cosineError;
   const double byLight = meanAndError(lightSum, lightSum2, &lightError);
   const double byCosine = meanAndError(cosineSum, cosineSum2, &cosineError);
-  const double exact = lambertIrradiance({{-1, 3, -1}, {2, 2.5, -0.5}, {0, 3.5, 2}}, {0.2, 0, 0.1},
-                                         {0, 1, 0}, 2.0);
+  const double exact = lambertIrradiance(corners, {0.2, 0, 0.1}, {0, 1, 0}, 2.0);
   EXPECT_NEAR(byLight, exact, kZ * lightError + 1e-4 * exact);
   EXPECT_NEAR(byCosine, exact, kZ * cosineError + 1e-4 * exact);
   EXPECT_LT(lightError, cosineError) << "light sampling should be the better estimator here";
+}
+
+TEST(AreaLights, TriangleSamplingBySolidAngleAgreesWithCosineSamplingAndItsPdf) {
+  expectTriangleSamplingAgreesWithCosineSampling(
+      "area_near.obj", {{-1, 1.5, -1}, {2, 1.25, -0.5}, {0, 1.75, 2}}, true);
+}
+
+TEST(AreaLights, TriangleSamplingByAreaAgreesWithCosineSamplingAndItsPdf) {
+  expectTriangleSamplingAgreesWithCosineSampling(
+      "area_far.obj", {{0, 40, 0}, {0.5, 40, 0}, {0.3, 40, 0.6}}, false);
+}
+
+// Sampling by solid angle lands on the triangle, and spreads its directions evenly: the share of
+// samples in a sub-triangle is that sub-triangle's share of the solid angle.
+TEST(AreaLights, SphericalTriangleSamplingIsUniformInSolidAngle) {
+  const Vec3 p0(-1, 2, -1), p1(2, 1.5f, -0.5f), p2(0, 2.5f, 2), x(0.1f, 0, 0.2f);
+  const Vec3 mid01 = 0.5f * (p0 + p1), mid02 = 0.5f * (p0 + p2);  // sub-triangle (p0, m01, m02)
+  const auto solidAngle = [&x](const Vec3& a, const Vec3& b, const Vec3& c) {
+    return sphericalTriangleArea(normalize(a - x), normalize(b - x), normalize(c - x));
+  };
+  const float share = solidAngle(p0, mid01, mid02) / solidAngle(p0, p1, p2);
+  std::mt19937 gen(11);
+  std::uniform_real_distribution<float> u(0.0f, 1.0f);
+  const int draws = 200000;
+  int inside = 0;
+  for (int i = 0; i < draws; ++i) {
+    float b[3], pdf;
+    ASSERT_TRUE(sampleSphericalTriangle(p0, p1, p2, x, u(gen), u(gen), b, &pdf));
+    for (float w : b) ASSERT_TRUE(w >= 0.0f && w <= 1.0f) << i;
+    ASSERT_NEAR(pdf, 1.0f / solidAngle(p0, p1, p2), 1e-3f * pdf);
+    inside += b[1] + b[2] <= 0.5f;  // the sub-triangle at p0: b1 + b2 <= 1/2
+  }
+  const double expected = share * draws, sigma = std::sqrt(draws * share * (1 - share));
+  EXPECT_NEAR(inside, expected, kZ * sigma);
 }
 
 // A triangle emits from its outside only: behind it, light sampling finds nothing.

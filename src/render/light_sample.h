@@ -2,8 +2,8 @@
 // environment.
 //
 // A point light of power P seen from distance d contributes irradiance (P / 4 pi) cos / d^2.
-// A sphere is sampled uniformly by the solid angle of the cone it subtends, a triangle uniformly
-// by area; either pdf can be evaluated again when a BSDF-sampled ray hits the emitter, for
+// A sphere is sampled uniformly by the solid angle of the cone it subtends, a triangle by the
+// solid angle it subtends or, where that is ill-conditioned, by area; either pdf can be evaluated again when a BSDF-sampled ray hits the emitter, for
 // multiple importance sampling (emitterPdf).
 #pragma once
 
@@ -12,6 +12,7 @@
 #include "core/check.h"
 #include "core/frame.h"
 #include "core/sampling.h"
+#include "geometry/spherical_triangle.h"
 #include "render/scene_view.h"
 
 namespace candela {
@@ -113,8 +114,24 @@ CANDELA_HDI bool sampleSphereLight(const SceneView& scene, const Light& l, const
   return s->distance > 0.0f;
 }
 
-// A point on triangle light `l`, uniform by area: its solid-angle pdf is d^2 / (cos_light area).
-// The triangle emits from its outside only (render/bsdf.h's convention for ng).
+// Whether triangle (p0, p1, p2) is sampled by the solid angle it subtends at p, which is then
+// `*solidAngle`; else by area. Sampling by solid angle costs about as much as the rest of a
+// shadow ray and pays only where the triangle fills much of the view (docs/performance.md): so
+// only where area / distance^2 to its centroid is at least kSolidAngleSamplingFrom, and the
+// solid angle is well conditioned (geometry/spherical_triangle.h).
+constexpr float kSolidAngleSamplingFrom = 1.0f;
+CANDELA_HDI bool sampledBySolidAngle(const Vec3& p0, const Vec3& p1, const Vec3& p2, float area,
+                                     const Vec3& p, float* solidAngle) {
+  const float d2 = lengthSquared((p0 + p1 + p2) * (1.0f / 3.0f) - p);
+  if (!(area >= kSolidAngleSamplingFrom * d2)) return false;
+  *solidAngle = sphericalTriangleArea(normalize(p0 - p), normalize(p1 - p), normalize(p2 - p));
+  return *solidAngle >= kMinSphericalSolidAngle && *solidAngle <= kMaxSphericalSolidAngle;
+}
+
+// A point on triangle light `l`: uniform over the solid angle it subtends at p where
+// sampledBySolidAngle says so (pdf 1 / solid angle), else uniform by area (pdf
+// d^2 / (cos_light area)). The
+// triangle emits from its outside only (render/bsdf.h's convention for ng).
 CANDELA_HDI bool sampleTriangleLight(const SceneView& scene, const Light& l, const Vec3& p, float u1,
                                      float u2, LightSample* s) {
   CANDELA_DCHECK(l.shape < scene.triangleCount);
@@ -122,20 +139,30 @@ CANDELA_HDI bool sampleTriangleLight(const SceneView& scene, const Light& l, con
   const Vec3& p0 = scene.positions[tri.v[0]];
   const Vec3& p1 = scene.positions[tri.v[1]];
   const Vec3& p2 = scene.positions[tri.v[2]];
-  const float su = sqrtf(u1);
-  const float b1 = 1.0f - su, b2 = u2 * su;
-  const Vec3 onLight = (1.0f - b1 - b2) * p0 + b1 * p1 + b2 * p2;
   const Vec3 n = cross(p1 - p0, p2 - p0);
   const float twiceArea = length(n);
-  const Vec3 toLight = onLight - p;
+  if (!(twiceArea > 0.0f)) return false;
+  float solidAngle = 0.0f;
+  const bool spherical = sampledBySolidAngle(p0, p1, p2, 0.5f * twiceArea, p, &solidAngle);
+  float b[3];
+  if (spherical) {
+    float unused;
+    if (!sampleSphericalTriangle(p0, p1, p2, p, u1, u2, b, &unused)) return false;
+  } else {
+    const float su = sqrtf(u1);
+    b[1] = 1.0f - su;
+    b[2] = u2 * su;
+    b[0] = 1.0f - b[1] - b[2];
+  }
+  const Vec3 toLight = (b[0] * p0 + b[1] * p1 + b[2] * p2) - p;
   const float dist2 = lengthSquared(toLight);
-  if (!(twiceArea > 0.0f) || !(dist2 > 0.0f)) return false;
+  if (!(dist2 > 0.0f)) return false;
   s->distance = sqrtf(dist2);
   s->wi = toLight / s->distance;
   const float cosLight = -dot(s->wi, n) / twiceArea;
   if (!(cosLight > 0.0f)) return false;
   s->radiance = scene.materials[tri.material].radiance;
-  s->pdf = dist2 / (cosLight * 0.5f * twiceArea);
+  s->pdf = spherical ? 1.0f / solidAngle : dist2 / (cosLight * 0.5f * twiceArea);
   s->isDelta = false;
   return true;
 }
@@ -203,8 +230,11 @@ CANDELA_HDI float emitterPdf(const SceneView& scene, const Light& l, const Vec3&
     case LightType::Triangle: {
       const Triangle& tri = scene.triangles[l.shape];
       const Vec3& p0 = scene.positions[tri.v[0]];
-      const float area = 0.5f * length(cross(scene.positions[tri.v[1]] - p0,
-                                              scene.positions[tri.v[2]] - p0));
+      const Vec3& p1 = scene.positions[tri.v[1]];
+      const Vec3& p2 = scene.positions[tri.v[2]];
+      const float area = 0.5f * length(cross(p1 - p0, p2 - p0));
+      float solidAngle = 0.0f;
+      if (sampledBySolidAngle(p0, p1, p2, area, from, &solidAngle)) return 1.0f / solidAngle;
       const float cosLight = fabsf(dot(wi, ng));
       return cosLight > 0.0f && area > 0.0f ? t * t / (cosLight * area) : 0.0f;
     }

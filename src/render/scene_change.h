@@ -12,6 +12,12 @@ enum class SceneChange : uint8_t {
   Structure = 2,  // everything: triangles and the BVH's layout too (a rebuild, or a new scene)
 };
 
+// "values", "motion" or "structure".
+constexpr const char* sceneChangeName(SceneChange change) {
+  return change == SceneChange::Values ? "values"
+                                       : (change == SceneChange::Motion ? "motion" : "structure");
+}
+
 // Whether an array that `rewrittenBy` changes may differ after `change`.
 constexpr bool mayRewrite(SceneChange change, SceneChange rewrittenBy) {
   return uint8_t(change) >= uint8_t(rewrittenBy);

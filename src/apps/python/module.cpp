@@ -165,15 +165,7 @@ NB_MODULE(_candela, m) {
         // scene: "values" (reused), "motion" (refitted) or "structure" (built); None before any.
         std::lock_guard<std::mutex> lock(s.cache->mutex);
         if (!s.cache->renderer) return std::nullopt;
-        switch (s.cache->frames.change()) {
-          case SceneChange::Values:
-            return "values";
-          case SceneChange::Motion:
-            return "motion";
-          case SceneChange::Structure:
-            break;
-        }
-        return "structure";
+        return std::string(sceneChangeName(s.cache->frames.change()));
       })
       .def("frame", [](const Scene& s, uint32_t i) {
         if (i >= s.frameCount())
