@@ -45,10 +45,11 @@ CANDELA_HDI Vec3 sampleOneLight(const SceneView& scene, const Light& light, cons
   const Vec3 f = evalDiffuse(m, wo, sp.ng, sp.ns, ls.wi);
   if (isBlack(f)) return Vec3(0.0f);
   Ray shadow = spawnRay(sp, ls.wi);
-  const Vec3 target = sp.p + ls.wi * ls.distance;
   // The environment lies beyond everything: nothing short of infinity may block it.
-  shadow.tMax = ls.distance >= kInfinity ? kInfinity
-                                         : length(target - shadow.origin) * (1.0f - kShadowEpsilon);
+  if (ls.distance < kInfinity) {
+    const Vec3 target = sp.p + ls.wi * ls.distance;
+    shadow.tMax = length(target - shadow.origin) * (1.0f - kShadowEpsilon);
+  }
   ++counters.shadow;
   const bool hasShape = light.type == LightType::Sphere || light.type == LightType::Triangle;
   const uint32_t skip = hasShape ? lightPrimitive(scene, light) : kNoPrimitive;
