@@ -5,6 +5,11 @@ The shared harness (../shared/reference/mitsuba_ref.py) maps the original scene 
 has no environment maps; this adds them. Everything else goes through the harness unchanged.
 
     /tmp/mi/bin/python tools/mitsuba_envmap.py SCENE.json OUT.exr [--spp N] [--seed S] [--time]
+                                               [--threads T]
+
+It prints the harness's line (`SCENE: WxH spp=N variant=llvm_ad_rgb camera=mitsuba load=Ls
+render=Rs samples/s=...`, then `mean rgb = ...`), which bench/run parses for its timings; --time
+renders 1 spp first (JIT warm-up) and times the render after it, as the harness does.
 
 Mapping: candela looks a map frame direction d up at u = 0.5 + atan2(d.x, -d.z) / (2 pi), Mitsuba's
 envmap at u = atan2(d.x, -d.z) / (2 pi) (its seam at -z), the same mapping turned 180 degrees about
@@ -65,13 +70,18 @@ def main(argv=None):
     ap.add_argument('--spp', type=int, default=None)
     ap.add_argument('--seed', type=int, default=0)
     ap.add_argument('--time', action='store_true', help='a 1-spp warm-up first, then time')
+    ap.add_argument('--threads', type=int, default=None)
     a = ap.parse_args(argv)
     mi.set_variant('llvm_ad_rgb')
     env, scene = environment_map(a.scene)
     if env is None:
         return mr.main([a.scene, a.out, '--seed', str(a.seed)] +
-                       (['--spp', str(a.spp)] if a.spp else []) + (['--time'] if a.time else []))
+                       (['--spp', str(a.spp)] if a.spp else []) + (['--time'] if a.time else []) +
+                       (['--threads', str(a.threads)] if a.threads else []))
+    if a.threads:
+        dr.set_thread_count(a.threads)
     base_dir = os.path.dirname(os.path.abspath(a.scene))
+    t0 = time.perf_counter()
     with tempfile.TemporaryDirectory() as work:
         # Beside the original, so that its relative mesh paths still resolve.
         stripped = os.path.join(base_dir, f'.mitsuba_envmap_{os.getpid()}.json')
@@ -85,14 +95,26 @@ def main(argv=None):
         d['envmap'] = envmap_emitter(env, base_dir, work)
         loaded = mi.load_dict(d)
         spp = a.spp or sc['camera']['spp']
+        t_load = time.perf_counter() - t0
+        t_warm = None
         if a.time:
+            t1 = time.perf_counter()
             mr.render(sc, loaded, 1, a.seed + 987654)
+            t_warm = time.perf_counter() - t1
         t = time.perf_counter()
         img = mr.render(sc, loaded, spp, a.seed)
         seconds = time.perf_counter() - t
     mr.write_exr(a.out, img)
-    print(f'{a.scene}: spp={spp} render={seconds:.2f}s '
-          f'mean rgb = {img.reshape(-1, 3).astype(np.float64).mean(0).tolist()}')
+    W, H = sc['camera']['W'], sc['camera']['H']
+    ns = W * H * spp
+    msg = (f'{a.scene}: {W}x{H} spp={spp} variant=llvm_ad_rgb camera=mitsuba '
+           f'load={t_load:.2f}s render={seconds:.2f}s '
+           f'samples/s={ns / seconds:.4g} ({ns / seconds / 1e6:.3f} Msamples/s)')
+    if t_warm is not None:
+        msg += f' warmup(1spp)={t_warm:.2f}s'
+    print(msg)
+    print(f'mean rgb = {img.reshape(-1, 3).astype(np.float64).mean(0).tolist()}  '
+          f'nonfinite={int((~np.isfinite(img)).sum())}')
     return 0
 
 
