@@ -138,7 +138,10 @@ TEST_F(CliTest, BadOptionValuesExitTwo) {
        {"render tiny.json --spp 0", "render tiny.json --spp abc", "render tiny.json --spp -4",
         "render tiny.json --max-depth 0", "render tiny.json --seed -1",
         "render tiny.json --threads 0", "render tiny.json --backend metal",
-        "render tiny.json --frobnicate", "render", "launch tiny.json"}) {
+        "render tiny.json --frobnicate", "render", "launch tiny.json",
+        // Regressions: a seed past 2^64 - 1 was clamped, and a NaN frame rate accepted.
+        "render tiny.json --seed 18446744073709551616", "render tiny.json --spp 4294967296",
+        "render tiny.json -o f/ --fps nan", "render tiny.json -o f/ --fps inf"}) {
     const RunResult r = run(args);
     EXPECT_EQ(r.exitCode, 2) << args << "\n" << r.err;
     EXPECT_EQ(r.err.rfind("candela: error: ", 0), 0u) << args << "\n" << r.err;

@@ -1,6 +1,7 @@
 // Scene loading: every error class of docs/scene-format.md pinned to its exact message, and the
 // values that each accepted form of the format turns into.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <stdlib.h>
 
 #include <cstdint>
@@ -444,6 +445,28 @@ TEST_F(SceneLoader, RenderSettings) {
 
 // Cameras whose rays would not be finite are refused at load, naming the key that causes it
 // (regression: each of these crashed in traversal, which followed empty BVH slots on NaN rays).
+// Input that would hang or exhaust memory ends in one short message, quickly.
+TEST_F(SceneLoader, PipesDevicesDeepNestingAndHugeKeysAreRefusedQuickly) {
+  const std::string fifo = dir.path() + "/scene.fifo";
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  EXPECT_EQ(errorOf([&] { loadSceneFile(fifo); }),
+            fifo + ": cannot open scene file (not a regular file: a pipe, socket or device cannot "
+                   "be read as one)");
+  EXPECT_EQ(error(R"({"camera": {}, "objects": [{"file": "/dev/zero"}]})"),
+            "s.json: objects[0].file: cannot open \"/dev/zero\" (not a regular file: a pipe, "
+            "socket or device cannot be read as one)");
+  const std::string deep = std::string(100000, '[') + std::string(100000, ']');
+  const std::string nested = error(R"({"camera": {}, "spheres": )" + deep + "}");
+  EXPECT_EQ(nested.rfind("s.json: spheres[0][0][0]", 0), 0u) << nested.substr(0, 200);
+  EXPECT_NE(nested.find(": nested deeper than 64 levels; a scene never needs that"),
+            std::string::npos);
+  EXPECT_LT(nested.size(), 250u);
+  const std::string longKey(1 << 20, 'x');
+  const std::string unknown = error(R"({"camera": {}, ")" + longKey + R"(": 1})");
+  EXPECT_LT(unknown.size(), 400u);
+  EXPECT_EQ(unknown.rfind("s.json: [\"xxxxxxxx", 0), 0u) << unknown.substr(0, 200);
+}
+
 TEST_F(SceneLoader, CameraWithNonFiniteRaysIsRefused) {
   EXPECT_EQ(cameraError(R"({"width": 8, "height": 8,
                            "intrinsics": {"fx": 1e-45, "fy": 1e-45, "cx": 1, "cy": 1}})"),

@@ -17,6 +17,7 @@
 #define CANDELA_GETPID getpid
 #endif
 
+#include "core/input_file.h"
 #include "image/image_io.h"
 
 namespace fs = std::filesystem;
@@ -76,6 +77,8 @@ void writeFileAtomically(const std::string& path, const std::string& bytes) {
 }
 
 std::string readFileBytes(const std::string& path) {
+  const std::string problem = inputFileProblem(path);
+  if (!problem.empty()) fail(path, problem);
   std::ifstream in(path, std::ios::binary);
   if (!in) fail(path, std::string("cannot open: ") + std::strerror(errno));
   std::ostringstream bytes;

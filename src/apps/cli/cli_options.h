@@ -2,6 +2,7 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <cmath>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -41,18 +42,34 @@ struct InfoOptions {
 
 // Accepts plain decimal integers only and strips leading zeros, because CLI11 would otherwise
 // read "010" as octal, "0x10" as hex and wrap "-1" around for unsigned types.
-inline CLI::Validator decimalInteger(bool positive) {
+inline CLI::Validator decimalInteger(bool positive, uint64_t max) {
   return CLI::Validator(
-      [positive](std::string& text) -> std::string {
+      [positive, max](std::string& text) -> std::string {
         const bool digits =
             !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
         if (!digits) return "expected a non-negative whole number, got '" + text + "'";
         const size_t first = text.find_first_not_of('0');
         text = first == std::string::npos ? "0" : text.substr(first);
         if (positive && text == "0") return "expected a positive whole number, got 0";
+        // Compared as decimal text, so that no conversion can wrap or clamp a larger number.
+        const std::string largest = std::to_string(max);
+        if (text.size() > largest.size() || (text.size() == largest.size() && text > largest))
+          return "expected a whole number of at most " + largest + ", got " + text;
         return {};
       },
       positive ? "POSITIVE" : "");
+}
+
+// A finite number above 0 (CLI::PositiveNumber lets NaN through).
+inline CLI::Validator finitePositiveNumber() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        double value = 0;
+        if (!CLI::detail::lexical_cast(text, value) || !std::isfinite(value) || !(value > 0))
+          return "expected a finite positive number, got '" + text + "'";
+        return {};
+      },
+      "POSITIVE");
 }
 
 // Accepts the names of backendFromName.

@@ -84,16 +84,16 @@ CLI::App* addRenderCommand(CLI::App& app, RenderCommandOptions* options) {
                   "sequence a folder (default: out/<first scene name>/)");
   cmd->add_option_function<uint32_t>(
          "--spp", [options](const uint32_t& v) { options->spp = v; }, "Samples per pixel")
-      ->transform(decimalInteger(true));
+      ->transform(decimalInteger(true, UINT32_MAX));
   cmd->add_option_function<uint64_t>(
          "--seed", [options](const uint64_t& v) { options->seed = v; }, "Random seed")
-      ->transform(decimalInteger(false));
+      ->transform(decimalInteger(false, UINT64_MAX));
   cmd->add_option_function<uint32_t>(
          "--max-depth", [options](const uint32_t& v) { options->maxDepth = v; },
          "Most surface interactions along a path")
-      ->transform(decimalInteger(true));
+      ->transform(decimalInteger(true, UINT32_MAX));
   cmd->add_option("--threads", options->threads, "CPU worker threads (default: all cores)")
-      ->transform(decimalInteger(true));
+      ->transform(decimalInteger(true, INT32_MAX));
   cmd->add_option_function<std::string>(
          "--backend",
          [options](const std::string& name) { backendFromName(name, &options->backend); },
@@ -118,7 +118,7 @@ CLI::App* addRenderCommand(CLI::App& app, RenderCommandOptions* options) {
   cmd->add_option_function<double>(
          "--fps", [options](const double& v) { options->fps = v; },
          "Frame rate of the video (default: the animation's fps, else 24)")
-      ->check(CLI::PositiveNumber);
+      ->check(finitePositiveNumber());
   return cmd;
 }
 

@@ -30,11 +30,18 @@ static std::string lowerCase(std::string s) {
 }
 
 std::string closestMatch(const std::string& word, const std::vector<std::string>& candidates) {
+  // A typo of a name is about as long as the name: longer words are never compared, and a
+  // candidate whose length differs by more than the threshold cannot be within it.
+  constexpr size_t kLongestCompared = 64;
+  if (word.size() > kLongestCompared) return "";
   const std::string lowered = lowerCase(word);
   const size_t threshold = lowered.size() < 5 ? 1 : 2;
   std::string best;
   size_t bestDistance = threshold + 1;
   for (const std::string& candidate : candidates) {
+    const size_t gap = candidate.size() > lowered.size() ? candidate.size() - lowered.size()
+                                                         : lowered.size() - candidate.size();
+    if (gap > threshold) continue;
     const size_t distance = editDistance(lowered, lowerCase(candidate));
     if (distance < bestDistance) {
       best = candidate;

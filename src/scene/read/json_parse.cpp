@@ -15,6 +15,14 @@ namespace {
 // nlohmann's error id for a number that does not fit a double.
 constexpr int kNumberOverflow = 406;
 
+// Deeper than any scene needs (its deepest values sit about 6 levels down).
+constexpr size_t kMaxJsonDepth = 64;
+
+// A path of a deep nest, cut to its start and end.
+std::string shortenedPath(const std::string& path) {
+  return path.size() <= 120 ? path : path.substr(0, 56) + "..." + path.substr(path.size() - 56);
+}
+
 class DomBuilder : public nlohmann::json_sax<Json> {
  public:
   DomBuilder(const std::string& text, const std::string& file) : text_(text), file_(file) {}
@@ -88,6 +96,12 @@ class DomBuilder : public nlohmann::json_sax<Json> {
   }
 
   bool open(Json&& container) {
+    // Each open container keeps its path: bounding the depth bounds that memory (it grew with the
+    // square of the depth) as well as the work of every message.
+    if (stack_.size() >= kMaxJsonDepth)
+      failAt(file_, shortenedPath(slotPath()),
+             "nested deeper than " + std::to_string(kMaxJsonDepth) +
+                 " levels; a scene never needs that");
     std::string path = slotPath();
     // Containers on the stack stay put: an array only grows again after its last element closed.
     Json* inserted = insert(std::move(container));

@@ -19,6 +19,13 @@ static bool isIdentifier(const std::string& key) {
 }
 
 std::string memberPath(const std::string& base, const std::string& key) {
+  // Paths are for messages: a key longer than any name is shown by its start.
+  constexpr size_t kLongestShown = 64;
+  if (key.size() > kLongestShown) {
+    size_t cut = kLongestShown;
+    while (cut > 0 && (static_cast<unsigned char>(key[cut]) & 0xC0) == 0x80) --cut;
+    return base + "[" + quoted(key.substr(0, cut)) + "...]";
+  }
   if (!isIdentifier(key)) return base + "[" + quoted(key) + "]";
   return base.empty() ? key : base + "." + key;
 }

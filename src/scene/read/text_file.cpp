@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <system_error>
 
+#include "core/input_file.h"
+
 namespace candela {
 
 static std::string describeErrno(int error) {
@@ -12,6 +14,8 @@ static std::string describeErrno(int error) {
 }
 
 bool readTextFile(const std::string& path, std::string* contents, std::string* reason) {
+  *reason = inputFileProblem(path);
+  if (!reason->empty()) return false;
   errno = 0;
   std::FILE* file = std::fopen(path.c_str(), "rb");
   if (file == nullptr) {
@@ -21,7 +25,14 @@ bool readTextFile(const std::string& path, std::string* contents, std::string* r
   std::string data;
   char buffer[1 << 16];
   size_t count = 0;
-  while ((count = std::fread(buffer, 1, sizeof buffer, file)) > 0) data.append(buffer, count);
+  while ((count = std::fread(buffer, 1, sizeof buffer, file)) > 0) {
+    data.append(buffer, count);
+    if (data.size() > kMaxInputFileBytes) {  // it grew while being read
+      std::fclose(file);
+      *reason = "larger than an input file may be";
+      return false;
+    }
+  }
   // A directory opens fine on POSIX and only fails here, with EISDIR.
   const bool failed = std::ferror(file) != 0;
   const int error = errno;
