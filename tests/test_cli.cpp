@@ -272,45 +272,49 @@ TEST_F(CliTest, QuietPrintsNothing) {
   EXPECT_EQ(candela::readImage(path("q.exr").string()).width, 16u);
 }
 
+// SIGINT (Ctrl-C) and SIGTERM (a scheduler, `kill`) both stop the render cleanly.
 TEST_F(CliTest, InterruptStopsWithoutWritingAnImage) {
-  // Long enough (about 10^9 samples) that the render is still running after a second.
-  writeFile("long.json", R"({
-    "camera": {"width": 512, "height": 512, "spp": 4096, "position": [0, 0, 5]},
-    "spheres": [{"position": [0, 0, 0], "radius": 1, "color": 0.5}],
-    "lights": [{"position": [0, 3, 3], "intensity": 100}]
-  })");
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, 1, path("stdout.txt").c_str(),
-                                   O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_addopen(&actions, 2, path("stderr.txt").c_str(),
-                                   O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  const std::string binary = CANDELA_BINARY, scene = path("long.json").string(),
-                    output = path("long.png").string();
-  char* argv[] = {const_cast<char*>(binary.c_str()), const_cast<char*>("render"),
-                  const_cast<char*>(scene.c_str()),  const_cast<char*>("-o"),
-                  const_cast<char*>(output.c_str()), const_cast<char*>("--backend"),
-                  const_cast<char*>("cpu"),          nullptr};
-  pid_t pid = 0;
-  ASSERT_EQ(posix_spawn(&pid, binary.c_str(), &actions, nullptr, argv, environ), 0);
-  posix_spawn_file_actions_destroy(&actions);
+  for (const int signal : {SIGINT, SIGTERM}) {
+    SCOPED_TRACE(signal == SIGINT ? "SIGINT" : "SIGTERM");
+    // Long enough (about 10^9 samples) that the render is still running after a second.
+    writeFile("long.json", R"({
+      "camera": {"width": 512, "height": 512, "spp": 4096, "position": [0, 0, 5]},
+      "spheres": [{"position": [0, 0, 0], "radius": 1, "color": 0.5}],
+      "lights": [{"position": [0, 3, 3], "intensity": 100}]
+    })");
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_addopen(&actions, 1, path("stdout.txt").c_str(),
+                                     O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    posix_spawn_file_actions_addopen(&actions, 2, path("stderr.txt").c_str(),
+                                     O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    const std::string binary = CANDELA_BINARY, scene = path("long.json").string(),
+                      output = path("long.png").string();
+    char* argv[] = {const_cast<char*>(binary.c_str()), const_cast<char*>("render"),
+                    const_cast<char*>(scene.c_str()),  const_cast<char*>("-o"),
+                    const_cast<char*>(output.c_str()), const_cast<char*>("--backend"),
+                    const_cast<char*>("cpu"),          nullptr};
+    pid_t pid = 0;
+    ASSERT_EQ(posix_spawn(&pid, binary.c_str(), &actions, nullptr, argv, environ), 0);
+    posix_spawn_file_actions_destroy(&actions);
 
-  std::this_thread::sleep_for(std::chrono::seconds(1));
-  kill(pid, SIGINT);
-  int status = 0;
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
-  while (waitpid(pid, &status, WNOHANG) == 0) {
-    if (std::chrono::steady_clock::now() > deadline) {
-      kill(pid, SIGKILL);
-      waitpid(pid, &status, 0);
-      FAIL() << "the render did not stop within 30 s of SIGINT";
+    std::this_thread::sleep_for(std::chrono::seconds(1));
+    kill(pid, signal);
+    int status = 0;
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+    while (waitpid(pid, &status, WNOHANG) == 0) {
+      if (std::chrono::steady_clock::now() > deadline) {
+        kill(pid, SIGKILL);
+        waitpid(pid, &status, 0);
+        FAIL() << "the render did not stop within 30 s of the signal";
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
     }
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    ASSERT_TRUE(WIFEXITED(status)) << "killed by a signal instead of exiting cleanly";
+    EXPECT_EQ(WEXITSTATUS(status), 130);
+    EXPECT_EQ(slurp(path("stderr.txt")), "candela: interrupted, no image written\n");
+    EXPECT_FALSE(fs::exists(path("long.png")));
   }
-  ASSERT_TRUE(WIFEXITED(status)) << "killed by a signal instead of exiting cleanly";
-  EXPECT_EQ(WEXITSTATUS(status), 130);
-  EXPECT_EQ(slurp(path("stderr.txt")), "candela: interrupted, no image written\n");
-  EXPECT_FALSE(fs::exists(path("long.png")));
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -405,8 +409,8 @@ TEST_F(CliTest, ExistingFramesAreKeptUnlessOverwrite) {
   writeFile("anim.json", animatedScene(3, ""));
   ASSERT_EQ(run("render anim.json -o f/ --backend cpu").exitCode, 0);
   const std::string first = slurp(path("f/frame_0000.png"));
-  writeFile("f/frame_0001.png", "not a png");  // stands for a frame that must be kept
-  fs::remove(path("f/frame_0002.png"));        // stands for a frame an interruption lost
+  writeFile("f/frame_0001.png", first);  // a whole PNG: stands for a frame that must be kept
+  fs::remove(path("f/frame_0002.png"));  // stands for a frame an interruption lost
 
   const RunResult resumed = run("render anim.json -o f/ --backend cpu");
   ASSERT_EQ(resumed.exitCode, 0) << resumed.err;
@@ -414,7 +418,7 @@ TEST_F(CliTest, ExistingFramesAreKeptUnlessOverwrite) {
       << resumed.out;
   EXPECT_NE(resumed.out.find("f/frame_0002.png: 16x12"), std::string::npos) << resumed.out;
   EXPECT_EQ(resumed.out.find("frame_0001.png: "), std::string::npos) << resumed.out;
-  EXPECT_EQ(slurp(path("f/frame_0001.png")), "not a png");
+  EXPECT_EQ(slurp(path("f/frame_0001.png")), first);
   EXPECT_EQ(slurp(path("f/frame_0000.png")), first);
   uint32_t w = 0, h = 0;
   EXPECT_TRUE(pngSize(path("f/frame_0002.png"), &w, &h));
@@ -423,6 +427,30 @@ TEST_F(CliTest, ExistingFramesAreKeptUnlessOverwrite) {
   ASSERT_EQ(again.exitCode, 0) << again.err;
   EXPECT_TRUE(pngSize(path("f/frame_0001.png"), &w, &h));
   EXPECT_EQ(slurp(path("f/frame_0000.png")), first) << "the same frame renders the same image";
+}
+
+// Resuming counts a frame as done only when its file is whole (regression: any path counted,
+// a 0-byte file or a directory included), and clears the temporary files of a killed run.
+TEST_F(CliTest, ResumeRendersIncompleteFramesAgainAndClearsStaleTemporaries) {
+  writeFile("anim.json", animatedScene(4, ""));
+  ASSERT_EQ(run("render anim.json -o f/ --backend cpu").exitCode, 0);
+  ASSERT_EQ(run("render anim.json -o p/ --format pfm --backend cpu").exitCode, 0);
+  const std::string png = slurp(path("f/frame_0001.png")), pfm = slurp(path("p/frame_0001.pfm"));
+  writeFile("f/frame_0001.png", "");                            // empty
+  writeFile("f/frame_0002.png", png.substr(0, png.size() / 2));  // cut short
+  writeFile("p/frame_0001.pfm", pfm.substr(0, pfm.size() - 4));  // one float short
+  writeFile("f/.frame_0003.png.tmp-999999999-0", "half");        // a dead process's
+  const RunResult r = run("render anim.json -o f/ --backend cpu");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("f/: 2 of 4 frames exist and are kept"), std::string::npos) << r.out;
+  EXPECT_EQ(slurp(path("f/frame_0001.png")), png);
+  uint32_t w = 0, h = 0;
+  EXPECT_TRUE(pngSize(path("f/frame_0002.png"), &w, &h));
+  EXPECT_FALSE(fs::exists(path("f/.frame_0003.png.tmp-999999999-0")));
+  const RunResult p = run("render anim.json -o p/ --format pfm --backend cpu");
+  ASSERT_EQ(p.exitCode, 0) << p.err;
+  EXPECT_NE(p.out.find("p/: 3 of 4 frames exist and are kept"), std::string::npos) << p.out;
+  EXPECT_EQ(slurp(path("p/frame_0001.pfm")), pfm);
 }
 
 TEST_F(CliTest, FramesRangeEndIsExclusive) {

@@ -13,6 +13,7 @@
 #include <process.h>
 #define CANDELA_GETPID _getpid
 #else
+#include <signal.h>
 #include <unistd.h>
 #define CANDELA_GETPID getpid
 #endif
@@ -74,6 +75,27 @@ void writeFileAtomically(const std::string& path, const std::string& bytes) {
     std::remove(temp.c_str());
     fail(path, std::string("cannot replace the file: ") + std::strerror(err));
   }
+}
+
+size_t removeStaleTemporaryFiles(const std::string& dir) {
+  std::error_code error;
+  size_t removed = 0;
+  for (const fs::directory_entry& entry : fs::directory_iterator(dir, error)) {
+    const std::string name = entry.path().filename().string();
+    const size_t tmp = name.rfind(".tmp-");
+    if (name.empty() || name[0] != '.' || tmp == std::string::npos) continue;
+    const size_t dash = name.find('-', tmp + 5);
+    if (dash == std::string::npos) continue;
+    const std::string pid = name.substr(tmp + 5, dash - tmp - 5);
+    if (pid.empty() || pid.size() > 9 || pid.find_first_not_of("0123456789") != std::string::npos)
+      continue;
+#if !defined(_WIN32)
+    // kill(pid, 0) probes without signalling: ESRCH means no such process.
+    if (kill(pid_t(std::stol(pid)), 0) == 0 || errno != ESRCH) continue;
+#endif
+    if (fs::remove(entry.path(), error)) ++removed;
+  }
+  return removed;
 }
 
 std::string readFileBytes(const std::string& path) {

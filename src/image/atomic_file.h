@@ -6,6 +6,7 @@
 // leaves no partial file behind.
 #pragma once
 
+#include <cstddef>
 #include <string>
 
 namespace candela {
@@ -15,5 +16,9 @@ void writeFileAtomically(const std::string& path, const std::string& bytes);
 
 // Throws ImageWriteError with the path and the reason.
 std::string readFileBytes(const std::string& path);
+
+// Removes the temporary files writeFileAtomically left in `dir` when its process died (killed
+// mid-write): those whose process no longer runs. Returns how many it removed.
+size_t removeStaleTemporaryFiles(const std::string& dir);
 
 }  // namespace candela

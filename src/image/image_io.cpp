@@ -3,7 +3,9 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
 #include <filesystem>
+#include <fstream>
 
 #include "image/atomic_file.h"
 #include "image/image_codecs.h"
@@ -72,6 +74,42 @@ void writeImage(const std::string& path, const ImageRGB& image, const OutputDesc
     throw ImageWriteError(path + ": " + e.what());
   }
   writeFileAtomically(path, bytes);
+}
+
+bool isCompleteImageFile(const std::string& path) {
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(path, error)) return false;
+  const uintmax_t size = std::filesystem::file_size(path, error);
+  if (error || size < 12) return false;
+  std::ifstream in(path, std::ios::binary);
+  std::string head(64, '\0'), tail(12, '\0');
+  in.read(&head[0], std::streamsize(head.size()));
+  head.resize(size_t(in.gcount()));
+  in.clear();
+  in.seekg(-12, std::ios::end);
+  in.read(&tail[0], 12);
+  if (!in) return false;
+  switch (formatOf(path)) {
+    case ImageFormat::Png:
+      return head.compare(0, 8, "\x89PNG\r\n\x1a\n") == 0 &&
+             tail.compare(4, 8, "IEND\xae\x42\x60\x82") == 0;
+    case ImageFormat::Exr:
+      return head.compare(0, 4, "\x76\x2f\x31\x01") == 0;
+    case ImageFormat::Pfm: {
+      char kind = 0;
+      unsigned long width = 0, height = 0;
+      float scale = 0;
+      int consumed = 0;
+      if (std::sscanf(head.c_str(), "P%c %lu %lu %f%n", &kind, &width, &height, &scale, &consumed) != 4 ||
+          (kind != 'F' && kind != 'f'))
+        return false;
+      const uintmax_t channels = kind == 'F' ? 3 : 1;
+      // The header ends with one whitespace byte after the scale.
+      return size == uintmax_t(consumed) + 1 + uintmax_t(width) * height * channels * 4;
+    }
+    default:
+      return false;
+  }
 }
 
 ImageRGB readImage(const std::string& path) {

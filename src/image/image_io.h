@@ -26,6 +26,11 @@ void writeImage(const std::string& path, const ImageRGB& image, const OutputDesc
 // tools); throws ImageWriteError (the image module's one error type, naming the path) on failure.
 ImageRGB readImage(const std::string& path);
 
+// Whether `path` is a regular file that holds a whole image of its extension's format, by a
+// cheap look at its ends: PNG's signature and final IEND chunk, a PFM's header and the size it
+// implies, EXR's magic number. What a resumed sequence counts as a finished frame.
+bool isCompleteImageFile(const std::string& path);
+
 // 8-bit encoding of one linear value: exposure, clamp to [0,1], then the gamma or sRGB curve.
 uint8_t encode8bit(float linear, const OutputDesc& output);
 

@@ -1,4 +1,5 @@
-// Ctrl-C handling: while an InterruptGuard lives, SIGINT sets a flag instead of killing.
+// Ctrl-C handling: while an InterruptGuard lives, SIGINT (and SIGTERM, which a job control or
+// a scheduler sends) sets a flag instead of killing.
 //
 // The render loop polls the flag and stops at the next tile, so the CLI can exit cleanly without
 // writing an image. A second Ctrl-C gets the default behaviour (the process ends at once), for
@@ -20,7 +21,8 @@ class InterruptGuard {
   bool interrupted() const { return flag().load(); }
 
  private:
-  void (*previous_)(int);
+  void (*previousInt_)(int);
+  void (*previousTerm_)(int);
 };
 
 }  // namespace candela::cli

@@ -12,6 +12,7 @@
 #include "apps/cli/render_command.h"
 #include "apps/cli/summary.h"
 #include "apps/cli/video.h"
+#include "image/atomic_file.h"
 #include "image/image_io.h"
 #include "scene/animation.h"
 #include "scene/frame_scene.h"
@@ -132,8 +133,12 @@ int runSequence(const RenderCommandOptions& options, std::vector<SceneDesc> scen
   if (ec) throw ImageWriteError(dir + ": cannot create the frame folder: " + ec.message());
   const int digits = frameDigits(count);
   std::vector<uint32_t> todo;
+  // A frame counts as done only when its file is whole; what a killed run left half-written
+  // beside it (a temporary file of a process that is gone) is cleared away.
+  removeStaleTemporaryFiles(dir);
   for (uint32_t f = range.begin; f < range.end; ++f)
-    if (options.overwrite || !fs::exists(framePath(dir, f, digits, format))) todo.push_back(f);
+    if (options.overwrite || !isCompleteImageFile(framePath(dir, f, digits, format)))
+      todo.push_back(f);
   const uint32_t kept = range.end - range.begin - uint32_t(todo.size());
   if (!options.quiet) {
     if (!backendNote.empty()) std::fprintf(stderr, "candela: note: %s\n", backendNote.c_str());
