@@ -62,10 +62,10 @@ std::string writeObj(const std::string& name, const std::string& text) {
 // origin. At max_depth 1 a pixel shows rho / pi times the quad's irradiance, found by light
 // sampling and by the scattered ray, weighted by MIS.
 TEST(AreaLights, EmissiveQuadOverFloorMatchesLambertsFormula) {
-  const std::string floor = writeObj("area_floor.obj",
-                                     "v -50 0 -50\nv -50 0 50\nv 50 0 50\nv 50 0 -50\nf 1 2 3 4\n");
-  const std::string lamp = writeObj(
-      "area_lamp.obj", "v -0.5 2 -1\nv 1 2 -1\nv 1 2 0.5\nv -0.5 2 0.5\nf 1 2 3 4\n");
+  const std::string floor =
+      writeObj("area_floor.obj", "v -50 0 -50\nv -50 0 50\nv 50 0 50\nv 50 0 -50\nf 1 2 3 4\n");
+  const std::string lamp =
+      writeObj("area_lamp.obj", "v -0.5 2 -1\nv 1 2 -1\nv 1 2 0.5\nv -0.5 2 0.5\nf 1 2 3 4\n");
   const double rho = 0.5, L = 5;
   const RenderResult r = test::renderTestScene(R"({
     "camera": {"width": 8, "height": 8, "fov": 0.2, "position": [0, 1, 0], "look_at": [0, 0, 0],
@@ -86,15 +86,16 @@ TEST(AreaLights, EmissiveQuadOverFloorMatchesLambertsFormula) {
 // An emissive sphere that is not declared as a light is one: over a floor point straight below
 // it, a sphere of radiance L and radius r at distance d gives irradiance pi L r^2 / d^2.
 TEST(AreaLights, EmissiveSphereIsALightWithItsClosedFormIrradiance) {
-  const std::string floor = writeObj("area_floor2.obj",
-                                     "v -50 0 -50\nv -50 0 50\nv 50 0 50\nv 50 0 -50\nf 1 2 3 4\n");
+  const std::string floor =
+      writeObj("area_floor2.obj", "v -50 0 -50\nv -50 0 50\nv 50 0 50\nv 50 0 -50\nf 1 2 3 4\n");
   const std::string json = R"({
     "camera": {"width": 8, "height": 8, "fov": 0.2, "position": [0, 1, 0], "look_at": [0, 0, 0],
                "up": [0, 0, -1], "spp": 256},
     "render": {"max_depth": 1},
     "spheres": [{"position": [0, 3, 0], "radius": 0.5,
                  "material": {"type": "emissive", "radiance": [4, 2, 1]}}],
-    "objects": [{"file": ")" + floor + R"(", "color": 0.5}]})";
+    "objects": [{"file": ")" +
+                           floor + R"(", "color": 0.5}]})";
   const SceneData data = test::loadTestScene(json);
   ASSERT_EQ(data.lights.size(), 1u);
   EXPECT_EQ(data.lights[0].type, LightType::Sphere);
@@ -113,7 +114,8 @@ TEST(AreaLights, EmissiveSphereIsALightWithItsClosedFormIrradiance) {
 SceneData oneEmissiveTriangle(const std::string& name, const std::string& vertices) {
   const std::string obj = writeObj(name, vertices + "f 1 2 3\n");
   return test::loadTestScene(R"({"camera": {"width": 4, "height": 4},
-      "objects": [{"file": ")" + obj + R"(", "material": {"type": "emissive", "radiance": 2}}]})");
+      "objects": [{"file": ")" +
+                             obj + R"(", "material": {"type": "emissive", "radiance": 2}}]})");
 }
 
 // Light sampling of a triangle against an independent estimate of the same irradiance by cosine
@@ -125,7 +127,8 @@ void expectTriangleSamplingAgreesWithCosineSampling(const std::string& name,
                                                     bool bySolidAngle) {
   std::string obj;
   for (const DVec& c : corners)
-    obj += "v " + std::to_string(c.x) + " " + std::to_string(c.y) + " " + std::to_string(c.z) + "\n";
+    obj +=
+        "v " + std::to_string(c.x) + " " + std::to_string(c.y) + " " + std::to_string(c.z) + "\n";
   const SceneData data = oneEmissiveTriangle(name, obj);
   ASSERT_EQ(data.lights.size(), 1u);
   const SceneView view = data.view();
@@ -187,8 +190,8 @@ TEST(AreaLights, TriangleSamplingBySolidAngleAgreesWithCosineSamplingAndItsPdf) 
 }
 
 TEST(AreaLights, TriangleSamplingByAreaAgreesWithCosineSamplingAndItsPdf) {
-  expectTriangleSamplingAgreesWithCosineSampling(
-      "area_far.obj", {{0, 40, 0}, {0.5, 40, 0}, {0.3, 40, 0.6}}, false);
+  expectTriangleSamplingAgreesWithCosineSampling("area_far.obj",
+                                                 {{0, 40, 0}, {0.5, 40, 0}, {0.3, 40, 0.6}}, false);
 }
 
 // Sampling by solid angle lands on the triangle, and spreads its directions evenly: the share of
@@ -264,10 +267,10 @@ TEST(AreaLights, EveryEmissiveTriangleIsALightPickedByPower) {
 // MTL Ke makes a face group emissive with that radiance; a negative Ke is refused.
 TEST(AreaLights, MtlKeMakesFacesEmissive) {
   writeObj("area_lamp.mtl", "newmtl lamp\nKd 0 0 0\nKe 3 2 1\nnewmtl wall\nKd 0.5 0.5 0.5\n");
-  const std::string obj = writeObj(
-      "area_lamp_mtl.obj",
-      "mtllib area_lamp.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nusemtl lamp\nf 1 2 3\n"
-      "usemtl wall\nf 2 4 3\n");
+  const std::string obj =
+      writeObj("area_lamp_mtl.obj",
+               "mtllib area_lamp.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nusemtl lamp\nf 1 2 3\n"
+               "usemtl wall\nf 2 4 3\n");
   const MeshDesc mesh = loadObjFile(obj, "lamp.obj");
   ASSERT_EQ(mesh.triangles.size(), 2u);
   const Material& lamp = mesh.materials[mesh.triangles[0].material];
@@ -277,8 +280,9 @@ TEST(AreaLights, MtlKeMakesFacesEmissive) {
   EXPECT_EQ(mesh.materials[mesh.triangles[1].material].type, MaterialType::Diffuse);
 
   writeObj("area_bad.mtl", "newmtl lamp\nKe 1 -2 1\n");
-  const std::string bad = writeObj("area_bad.obj", "mtllib area_bad.mtl\nv 0 0 0\nv 1 0 0\n"
-                                                   "v 0 1 0\nusemtl lamp\nf 1 2 3\n");
+  const std::string bad = writeObj("area_bad.obj",
+                                   "mtllib area_bad.mtl\nv 0 0 0\nv 1 0 0\n"
+                                   "v 0 1 0\nusemtl lamp\nf 1 2 3\n");
   try {
     loadObjFile(bad, "bad.obj");
     FAIL() << "a negative Ke was accepted";

@@ -1,9 +1,9 @@
 // CANDELA_DCHECK: in a build that checks (debug, or CANDELA_FORCE_DCHECK as here) a failed
 // invariant stops the program with the condition and its place; a holding one does nothing.
 #define CANDELA_FORCE_DCHECK 1
-#include "core/check.h"
-
 #include <gtest/gtest.h>
+
+#include "core/check.h"
 
 namespace candela {
 namespace {

@@ -36,7 +36,8 @@ std::string writeMap(const std::string& name, uint32_t w, uint32_t h, F texel) {
 
 SceneData sceneWithEnvironment(const std::string& environment, const std::string& rest = "") {
   return test::loadTestScene(R"({"camera": {"width": 8, "height": 8, "fov": 10, "spp": 4},
-                                 "environment": )" + environment + rest + "}");
+                                 "environment": )" +
+                             environment + rest + "}");
 }
 
 // The map's left half blue, right half red, its top quarter green: the default camera, looking
@@ -98,7 +99,8 @@ TEST(Environment, MapSamplingIsConsistentWithItsPdf) {
       byLight += v;
       byLight2 += v * v;
     }
-    const float z = 1 - 2 * u(gen), r = std::sqrt(std::max(0.0f, 1 - z * z)), phi = 2 * kPi * u(gen);
+    const float z = 1 - 2 * u(gen), r = std::sqrt(std::max(0.0f, 1 - z * z)),
+                phi = 2 * kPi * u(gen);
     const Vec3 w(r * std::cos(phi), r * std::sin(phi), z);
     pdfIntegral += environmentPdf(view, w) * 4 * kPi;
     const double v = environmentRadiance(view, w).x * std::max(0.0f, dot(w, n)) * 4 * kPi;
@@ -119,7 +121,8 @@ TEST(Environment, MapSamplingIsConsistentWithItsPdf) {
 // A diffuse sphere of albedo a alone under an environment of radiance 1 everywhere shows a,
 // whether the environment is constant or a map of ones, turned or not.
 TEST(Environment, FurnaceUnderAUniformMapShowsTheAlbedo) {
-  const std::string map = writeMap("env_ones.pfm", 16, 8, [](uint32_t, uint32_t) { return Vec3(0.5f); });
+  const std::string map =
+      writeMap("env_ones.pfm", 16, 8, [](uint32_t, uint32_t) { return Vec3(0.5f); });
   for (const std::string& environment :
        {std::string(R"({"color": 1})"),
         R"({"map": ")" + map + R"(", "strength": 2, "rotation": [30, 60, 10]})"}) {
@@ -164,15 +167,17 @@ std::string loadError(const std::string& environment) {
 }
 
 TEST(Environment, BadMapsAreRefusedWithOneMessage) {
-  EXPECT_EQ(loadError(R"({"map": "no_such_sky.exr"})").rfind(
-                "s.json: environment.map: cannot read the environment map: ", 0),
+  EXPECT_EQ(loadError(R"({"map": "no_such_sky.exr"})")
+                .rfind("s.json: environment.map: cannot read the environment map: ", 0),
             0u);
   const float nan = std::numeric_limits<float>::quiet_NaN();
-  writeMap("env_nan.pfm", 4, 2, [&](uint32_t x, uint32_t y) { return Vec3(x == 2 && y == 1 ? nan : 1.0f); });
+  writeMap("env_nan.pfm", 4, 2,
+           [&](uint32_t x, uint32_t y) { return Vec3(x == 2 && y == 1 ? nan : 1.0f); });
   EXPECT_EQ(loadError(R"({"map": "env_nan.pfm"})"),
             "s.json: environment.map: env_nan.pfm: texel (2, 1) is NaN; expected finite, "
             "non-negative radiance in every texel");
-  writeMap("env_negative.pfm", 4, 2, [](uint32_t x, uint32_t) { return Vec3(1, x == 3 ? -1.0f : 1.0f, 1); });
+  writeMap("env_negative.pfm", 4, 2,
+           [](uint32_t x, uint32_t) { return Vec3(1, x == 3 ? -1.0f : 1.0f, 1); });
   EXPECT_EQ(loadError(R"({"map": "env_negative.pfm"})"),
             "s.json: environment.map: env_negative.pfm: texel (3, 0) is negative; expected finite, "
             "non-negative radiance in every texel");
@@ -181,8 +186,8 @@ TEST(Environment, BadMapsAreRefusedWithOneMessage) {
   EXPECT_NE(loadError(R"({"map": "env_inf.pfm"})").find(": texel (0, 1) is infinite;"),
             std::string::npos);
   std::ofstream(tempPath("env_text.exr")) << "not an image";
-  EXPECT_EQ(loadError(R"({"map": "env_text.exr"})").rfind(
-                "s.json: environment.map: cannot read the environment map: ", 0),
+  EXPECT_EQ(loadError(R"({"map": "env_text.exr"})")
+                .rfind("s.json: environment.map: cannot read the environment map: ", 0),
             0u);
   EXPECT_EQ(loadError(R"({"color": 1, "strength": 2})"),
             "s.json: environment.strength: not used by a constant environment (only with a "

@@ -35,7 +35,8 @@ Vec3 sunDirection() {
 Vec3 skyRadiance(const Vec3& d) {
   const Vec3 sun = sunDirection();
   const float cosSun = d.x * sun.x + d.y * sun.y + d.z * sun.z;
-  if (cosSun >= std::cos(radians(kSunRadius))) return Vec3(kSunRadiance, kSunRadiance * 0.95f, kSunRadiance * 0.85f);
+  if (cosSun >= std::cos(radians(kSunRadius)))
+    return Vec3(kSunRadiance, kSunRadiance * 0.95f, kSunRadiance * 0.85f);
   if (d.y < 0.0f) {
     const float fade = std::exp(d.y * 12.0f);  // the haze of the horizon over the ground
     return Vec3(0.10f, 0.09f, 0.07f) * (1.0f - fade) + Vec3(0.6f, 0.65f, 0.7f) * fade;
@@ -59,8 +60,8 @@ candela::ImageRGB makeSky() {
           // The mapping's inverse: u = 0.5 + phi / (2 pi), v = theta / pi.
           const float u = (i + (si + 0.5f) / kSub) / kWidth, v = (j + (sj + 0.5f) / kSub) / kHeight;
           const float theta = candela::kPi * v, phi = 2.0f * candela::kPi * (u - 0.5f);
-          sum += skyRadiance({std::sin(theta) * std::sin(phi), std::cos(theta),
-                              -std::sin(theta) * std::cos(phi)});
+          sum += skyRadiance(
+              {std::sin(theta) * std::sin(phi), std::cos(theta), -std::sin(theta) * std::cos(phi)});
         }
       image.set(i, j, sum / float(kSub * kSub));
     }

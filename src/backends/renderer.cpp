@@ -42,8 +42,10 @@ bool cudaUsable(std::string* reason) {
 #if defined(CANDELA_HAS_CUDA)
   return cudaBackendAvailable(reason);
 #else
-  if (reason) *reason = "this build has no CUDA backend (configure with -DCANDELA_CUDA=ON on a "
-                        "machine with the CUDA toolkit)";
+  if (reason)
+    *reason =
+        "this build has no CUDA backend (configure with -DCANDELA_CUDA=ON on a "
+        "machine with the CUDA toolkit)";
   return false;
 #endif
 }
@@ -53,8 +55,9 @@ Backend chooseBackend(Backend requested, std::string* note) {
   switch (requested) {
     case Backend::Auto:
       if (note && cudaUsable(&reason))
-        *note = "a GPU is present but `auto` renders on the CPU until the CUDA backend has passed "
-                "its tests on a real GPU; ask for the cuda backend to use it";
+        *note =
+            "a GPU is present but `auto` renders on the CPU until the CUDA backend has passed "
+            "its tests on a real GPU; ask for the cuda backend to use it";
       return Backend::Cpu;
     case Backend::Cpu:
       return Backend::Cpu;

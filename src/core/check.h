@@ -32,8 +32,8 @@ namespace candela::detail {
 
 }  // namespace candela::detail
 
-#define CANDELA_DCHECK(condition)                                                 \
-  do {                                                                            \
+#define CANDELA_DCHECK(condition)                                                      \
+  do {                                                                                 \
     if (!(condition)) ::candela::detail::dcheckFailed(#condition, __FILE__, __LINE__); \
   } while (false)
 #endif

@@ -39,8 +39,7 @@ CANDELA_HDI bool sampleSphericalTriangle(const Vec3& p0, const Vec3& p1, const V
                                          float* pdf) {
   const Vec3 a = normalize(p0 - p), bv = normalize(p1 - p), c = normalize(p2 - p);
   Vec3 nab = cross(a, bv), nbc = cross(bv, c), nca = cross(c, a);
-  if (!(lengthSquared(nab) > 0.0f) || !(lengthSquared(nbc) > 0.0f) ||
-      !(lengthSquared(nca) > 0.0f))
+  if (!(lengthSquared(nab) > 0.0f) || !(lengthSquared(nbc) > 0.0f) || !(lengthSquared(nca) > 0.0f))
     return false;
   nab = normalize(nab);
   nbc = normalize(nbc);
@@ -58,7 +57,8 @@ CANDELA_HDI bool sampleSphericalTriangle(const Vec3& p0, const Vec3& p1, const V
   const float sinPhi = sinf(sampledPlusPi) * cosAlpha - cosf(sampledPlusPi) * sinAlpha;
   const float cosPhi = cosf(sampledPlusPi) * cosAlpha + sinf(sampledPlusPi) * sinAlpha;
   const float k1 = cosPhi + cosAlpha, k2 = sinPhi - sinAlpha * dot(a, bv);
-  float cosBp = (k2 + (k2 * cosPhi - k1 * sinPhi) * cosAlpha) / ((k2 * sinPhi + k1 * cosPhi) * sinAlpha);
+  float cosBp =
+      (k2 + (k2 * cosPhi - k1 * sinPhi) * cosAlpha) / ((k2 * sinPhi + k1 * cosPhi) * sinAlpha);
   cosBp = cosBp < -1.0f ? -1.0f : (cosBp > 1.0f ? 1.0f : cosBp);
   const float sinBp = sqrtf(maxf(0.0f, 1.0f - cosBp * cosBp));
   const Vec3 cp = cosBp * a + sinBp * normalize(gramSchmidt(c, a));

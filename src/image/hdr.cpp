@@ -31,8 +31,8 @@ ImageRGB decodeHdr(const std::string& bytes) {
       stbi_loadf_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()), int(bytes.size()),
                              &width, &height, &channels, 3),
       stbi_image_free);
-  if (!pixels) throw ImageWriteError(std::string("not a Radiance HDR image (") +
-                                     stbi_failure_reason() + ")");
+  if (!pixels)
+    throw ImageWriteError(std::string("not a Radiance HDR image (") + stbi_failure_reason() + ")");
   ImageRGB image{static_cast<uint32_t>(width), static_cast<uint32_t>(height)};
   std::copy(pixels.get(), pixels.get() + image.pixels.size(), image.pixels.begin());
   return image;

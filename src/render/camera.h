@@ -12,9 +12,9 @@ namespace candela {
 
 struct Camera {
   uint32_t width = 512, height = 512;
-  Mat3 inverseK;         // pixel (u, v, 1) -> camera-space direction with z = 1
-  Mat3 cameraToWorld;    // OpenCV camera axes -> world
-  Vec3 position;         // camera centre in world space
+  Mat3 inverseK;       // pixel (u, v, 1) -> camera-space direction with z = 1
+  Mat3 cameraToWorld;  // OpenCV camera axes -> world
+  Vec3 position;       // camera centre in world space
   float apertureRadius = 0;
   float focusDistance = 1;  // along camera +z
 };

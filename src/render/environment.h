@@ -56,7 +56,8 @@ CANDELA_HDI Vec3 lookupMap(const Vec3* texels, uint32_t width, uint32_t height, 
   const int32_t x1 = x0 + 1 < w ? x0 + 1 : 0;
   const int32_t y0 = y0f < 0.0f ? 0 : (int32_t(y0f) < h ? int32_t(y0f) : h - 1);
   const int32_t y1 = y0 + 1 < h ? (y0f < 0.0f ? 0 : y0 + 1) : h - 1;
-  const Vec3 top = (1.0f - fx) * texels[size_t(y0) * width + x0] + fx * texels[size_t(y0) * width + x1];
+  const Vec3 top =
+      (1.0f - fx) * texels[size_t(y0) * width + x0] + fx * texels[size_t(y0) * width + x1];
   const Vec3 bottom =
       (1.0f - fx) * texels[size_t(y1) * width + x0] + fx * texels[size_t(y1) * width + x1];
   return (1.0f - fy) * top + fy * bottom;

@@ -19,9 +19,9 @@ enum class LightType : uint32_t { Point = 0, Sphere = 1, Triangle = 2, Environme
 
 struct Light {
   LightType type = LightType::Point;
-  Vec3 position;        // point lights
-  Vec3 power;           // point lights: total emitted power (color * intensity)
-  uint32_t shape = 0;   // area lights: index into the scene's spheres or triangles, by type
+  Vec3 position;       // point lights
+  Vec3 power;          // point lights: total emitted power (color * intensity)
+  uint32_t shape = 0;  // area lights: index into the scene's spheres or triangles, by type
   // The probability that next-event estimation samples this light at a shading point: 1 when the
   // scene has at most kSampleEveryLightUpTo lights (each gets its own shadow ray), else one light
   // is picked in proportion to its power by Walker's alias method: a uniform u picks slot

@@ -22,14 +22,14 @@ namespace candela {
 // envTexels is the environment map (width x height, rows from the top; empty for a constant
 // environment) and envConditionalCdf/envMarginalCdf its sampling distribution
 // (core/distribution2d.h).
-#define CANDELA_SHADING_ARRAYS(X)                                 \
-  X(Material, materials, materialCount, Values)                    \
-  X(Light, lights, lightCount, Values)                             \
-  X(Vec3, envTexels, envTexelCount, Values)                        \
-  X(float, envConditionalCdf, envConditionalCdfCount, Values)      \
+#define CANDELA_SHADING_ARRAYS(X)                             \
+  X(Material, materials, materialCount, Values)               \
+  X(Light, lights, lightCount, Values)                        \
+  X(Vec3, envTexels, envTexelCount, Values)                   \
+  X(float, envConditionalCdf, envConditionalCdfCount, Values) \
   X(float, envMarginalCdf, envMarginalCdfCount, Values)
 
-// Every array of the kernel's scene: SceneData, SceneView::set and the CUDA upload expand this.
+// Every array of the kernel's scene: SceneData, SceneData::view and the CUDA upload expand this.
 #define CANDELA_SCENE_ARRAYS(X) CANDELA_GEOMETRY_ARRAYS(X) CANDELA_SHADING_ARRAYS(X)
 
 struct SceneView : GeometryView {

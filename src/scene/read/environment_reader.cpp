@@ -21,8 +21,7 @@ std::string badTexel(const ImageRGB& image) {
         const float v = t[c];
         const char* what =
             std::isnan(v) ? "NaN" : (std::isinf(v) ? "infinite" : (v < 0 ? "negative" : nullptr));
-        if (what)
-          return "texel (" + std::to_string(x) + ", " + std::to_string(y) + ") is " + what;
+        if (what) return "texel (" + std::to_string(x) + ", " + std::to_string(y) + ") is " + what;
       }
     }
   return "";
