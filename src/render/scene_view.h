@@ -29,7 +29,8 @@ namespace candela {
   X(float, envConditionalCdf, envConditionalCdfCount, Values) \
   X(float, envMarginalCdf, envMarginalCdfCount, Values)
 
-// Every array of the kernel's scene: SceneData, SceneData::view and the CUDA upload expand this.
+// Every array of the kernel's scene: SceneData, SceneData::view and the CUDA upload expand
+// this.
 #define CANDELA_SCENE_ARRAYS(X) CANDELA_GEOMETRY_ARRAYS(X) CANDELA_SHADING_ARRAYS(X)
 
 struct SceneView : GeometryView {
