@@ -4,8 +4,10 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
+#include "image/image.h"
 #include "render/scene_view.h"
 
 namespace candela {
@@ -23,6 +25,8 @@ struct SceneData {
   CANDELA_SCENE_ARRAYS(CANDELA_OWNED_ARRAY)
   uint32_t firstTriangleLight = 0;
   Environment environment;
+  // The map the env* arrays were made from: a frame that keeps it keeps them (host only).
+  std::shared_ptr<const ImageRGB> environmentMap;
   Camera camera;
   RenderSettings settings;
   BvhStats bvh;

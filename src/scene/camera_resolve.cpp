@@ -36,12 +36,6 @@ std::string posePath(const CameraDesc& desc) {
   return desc.lookAt ? "camera.look_at" : "camera.rotation";
 }
 
-std::string formatNumber(float value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", double(value));
-  return text;
-}
-
 bool finite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 // A ray the renderer can trace: a finite origin and a finite unit direction.

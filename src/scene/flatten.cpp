@@ -100,25 +100,23 @@ void addLight(SceneData& s, const LightDesc& d) {
   s.lights.push_back(light);
 }
 
-double sumOf(const Vec3& v) { return double(v.x) + double(v.y) + double(v.z); }
-
 // The power that light selection weighs a light by: the sum of its RGB power. An emitting
 // surface of radiance L and area A emits pi A L (from one side of a triangle, all of a sphere).
 double selectionPower(const SceneData& s, const Light& l) {
   switch (l.type) {
     case LightType::Point:
-      return std::max(0.0, sumOf(l.power));
+      return std::max(0.0, componentSum(l.power));
     case LightType::Sphere: {
       const Sphere& sphere = s.spheres[l.shape];
       const double r = sphere.radius;
-      return 4.0 * kPi * kPi * r * r * sumOf(s.materials[sphere.material].radiance);
+      return 4.0 * kPi * kPi * r * r * componentSum(s.materials[sphere.material].radiance);
     }
     case LightType::Triangle: {
       const Triangle& t = s.triangles[l.shape];
       const Vec3& p0 = s.positions[t.v[0]];
       const double area =
           0.5 * double(length(cross(s.positions[t.v[1]] - p0, s.positions[t.v[2]] - p0)));
-      return kPi * area * sumOf(s.materials[t.material].radiance);
+      return kPi * area * componentSum(s.materials[t.material].radiance);
     }
     case LightType::Environment: {
       // What crosses a disc the size of the scene (pbrt-v4's estimate): pi R^2 times the mean
@@ -154,16 +152,20 @@ void addEmitterLights(SceneData& s) {
     s.lights.push_back(light);
   }
   s.firstTriangleLight = uint32_t(s.lights.size());
-  for (uint32_t i = 0; i < s.triangles.size(); ++i) {
-    if (!emits(s.materials[s.triangles[i].material])) continue;
-    Light light;
-    light.type = LightType::Triangle;
-    light.shape = i;
-    s.lights.push_back(light);
+  // Every frame that reuses the geometry comes here: a scene of millions of triangles and no
+  // emissive material must not pay for a look at each triangle.
+  if (std::any_of(s.materials.begin(), s.materials.end(), emits)) {
+    for (uint32_t i = 0; i < s.triangles.size(); ++i) {
+      if (!emits(s.materials[s.triangles[i].material])) continue;
+      Light light;
+      light.type = LightType::Triangle;
+      light.shape = i;
+      s.lights.push_back(light);
+    }
   }
-  std::vector<double> powers;
-  powers.reserve(s.lights.size());
-  for (const Light& l : s.lights) powers.push_back(selectionPower(s, l));
+  std::vector<double> powers;  // only picking one light weighs them
+  if (s.lights.size() > kSampleEveryLightUpTo)
+    for (const Light& l : s.lights) powers.push_back(selectionPower(s, l));
   setLightSelection(s.lights, powers);
 }
 

@@ -12,8 +12,6 @@
 namespace candela {
 namespace {
 
-double sumOf(const Vec3& v) { return double(v.x) + double(v.y) + double(v.z); }
-
 // sin(theta) at the centre of row j of an h-row map.
 double rowSinTheta(uint32_t j, uint32_t h) { return std::sin(kPi * (j + 0.5) / h); }
 
@@ -21,12 +19,13 @@ double rowSinTheta(uint32_t j, uint32_t h) { return std::sin(kPi * (j + 0.5) / h
 
 void flattenEnvironment(const EnvironmentDesc& desc, SceneData& s) {
   Environment e;
-  s.envTexels.clear();
-  s.envConditionalCdf.clear();
-  s.envMarginalCdf.clear();
   if (!desc.image) {
     e.radiance = desc.color;
     s.environment = e;
+    s.envTexels.clear();
+    s.envConditionalCdf.clear();
+    s.envMarginalCdf.clear();
+    s.environmentMap.reset();
     return;
   }
   const ImageRGB& image = *desc.image;
@@ -35,6 +34,11 @@ void flattenEnvironment(const EnvironmentDesc& desc, SceneData& s) {
   e.fromWorld = e.toWorld.transposed();
   e.width = image.width;
   e.height = image.height;
+  s.environment = e;
+  // The texels and their distribution depend on the map alone (not on strength, tint or
+  // rotation): the frames of an animation build them once.
+  if (s.environmentMap == desc.image) return;
+  s.environmentMap = desc.image;
   const uint32_t w = image.width, h = image.height;
   s.envTexels.resize(size_t(w) * h);
   for (uint32_t y = 0; y < h; ++y)
@@ -50,23 +54,22 @@ void flattenEnvironment(const EnvironmentDesc& desc, SceneData& s) {
         for (int dx = -1; dx <= 1; ++dx) {
           const uint32_t ny = uint32_t(std::clamp(int(y) + dy, 0, int(h) - 1));
           const uint32_t nx = (x + w + uint32_t(dx + 1) - 1) % w;
-          brightest = std::max(brightest, sumOf(s.envTexels[size_t(ny) * w + nx]));
+          brightest = std::max(brightest, componentSum(s.envTexels[size_t(ny) * w + nx]));
         }
       f[size_t(y) * w + x] = brightest * rowSinTheta(y, h);
     }
   buildDistribution2D(f, w, h, &s.envConditionalCdf, &s.envMarginalCdf);
-  s.environment = e;
 }
 
 double environmentMeanRadiance(const SceneData& s) {
   const Environment& e = s.environment;
-  if (e.width == 0) return sumOf(e.radiance);
+  if (e.width == 0) return componentSum(e.radiance);
   double weighted = 0.0, weights = 0.0;
   for (uint32_t y = 0; y < e.height; ++y) {
     const double sinTheta = rowSinTheta(y, e.height);
     for (uint32_t x = 0; x < e.width; ++x) {
       const Vec3 t = e.radiance * s.envTexels[size_t(y) * e.width + x];
-      weighted += sumOf(t) * sinTheta;
+      weighted += componentSum(t) * sinTheta;
       weights += sinTheta;
     }
   }

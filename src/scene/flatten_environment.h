@@ -8,7 +8,7 @@
 namespace candela {
 
 // Sets scene.environment and the env* arrays from `desc` (its light index is left to
-// addEmitterLights).
+// addEmitterLights); arrays already made from the same map are kept.
 void flattenEnvironment(const EnvironmentDesc& desc, SceneData& scene);
 
 // The sum of the RGB radiance of the environment, averaged over directions.

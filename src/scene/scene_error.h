@@ -5,6 +5,7 @@
 // The CLI prints it and exits 2; Python raises it as a ValueError subclass.
 #pragma once
 
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 
@@ -14,5 +15,12 @@ class SceneError : public std::runtime_error {
  public:
   explicit SceneError(const std::string& message) : std::runtime_error(message) {}
 };
+
+// A number as messages show it: the shortest of %g, e.g. "1e-45", "0.5".
+inline std::string formatNumber(float value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", static_cast<double>(value));
+  return text;
+}
 
 }  // namespace candela

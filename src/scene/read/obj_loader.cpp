@@ -16,12 +16,6 @@ namespace {
 
 std::string firstLine(const std::string& text) { return text.substr(0, text.find('\n')); }
 
-std::string formatNumber(float value) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%g", static_cast<double>(value));
-  return buffer;
-}
-
 Vec3 vec3At(const std::vector<tinyobj::real_t>& values, size_t index) {
   return {values[3 * index], values[3 * index + 1], values[3 * index + 2]};
 }
