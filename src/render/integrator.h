@@ -26,7 +26,6 @@ constexpr float kShadowEpsilon = 1e-4f;
 // Russian roulette starts after this many interactions (Mitsuba's default; docs/performance.md
 // has what earlier starts cost).
 constexpr uint32_t kRouletteDepth = 5;
-constexpr uint32_t kNoPrimitive = 0xffffffffu;
 
 CANDELA_HDI Ray spawnRay(const SurfacePoint& sp, const Vec3& wi) {
   Ray r;
@@ -51,9 +50,7 @@ CANDELA_HDI Vec3 sampleOneLight(const SceneView& scene, const Light& light, cons
     shadow.tMax = length(target - shadow.origin) * (1.0f - kShadowEpsilon);
   }
   ++counters.shadow;
-  const bool hasShape = light.type == LightType::Sphere || light.type == LightType::Triangle;
-  const uint32_t skip = hasShape ? lightPrimitive(scene, light) : kNoPrimitive;
-  if (intersectAny(scene, shadow, skip)) return Vec3(0.0f);
+  if (intersectAny(scene, shadow, lightPrimitive(scene, light))) return Vec3(0.0f);
   const float lightPdf = light.selectPmf * ls.pdf;
   const float weight =
       ls.isDelta ? 1.0f : powerHeuristic(lightPdf, diffusePdf(wo, sp.ng, sp.ns, ls.wi));

@@ -71,10 +71,19 @@ CANDELA_HDI int32_t lightOfPrimitive(const SceneView& scene, uint32_t prim) {
   return lo < scene.lightCount && scene.lights[lo].shape == triangle ? int32_t(lo) : -1;
 }
 
-// The primitive index of an area light's shape (spheres first, then triangles); the shadow ray
-// towards a point sampled on it skips it.
+// The primitive index of an area light's shape (spheres first, then triangles), which the shadow
+// ray towards a point sampled on it skips; 0xffffffff (none) for a light without a shape.
 CANDELA_HDI uint32_t lightPrimitive(const SceneView& scene, const Light& l) {
-  return l.type == LightType::Triangle ? scene.sphereCount + l.shape : l.shape;
+  switch (l.type) {
+    case LightType::Sphere:
+      return l.shape;
+    case LightType::Triangle:
+      return scene.sphereCount + l.shape;
+    case LightType::Point:
+    case LightType::Environment:
+      break;
+  }
+  return 0xffffffffu;
 }
 
 CANDELA_HDI bool samplePointLight(const Light& l, const Vec3& p, LightSample* s) {
