@@ -23,7 +23,7 @@ TEST(BruteForce, TraversalWithoutBvhGivesTheSameImage) {
                {"type": "sphere", "position": [-3, 3, 1], "radius": 0.4, "intensity": 300}]})";
   const RenderResult withBvh = renderCpu(test::loadTestScene(json).view(), RenderOptions{});
   SceneDesc desc = parseSceneText(json, "test.json", ".");
-  desc.flatBvh = true;
+  desc.ownBvh = OwnBvh::Flat;
   const SceneData flat = flattenScene(desc);
   EXPECT_EQ(flat.bvh.leafCount, 1u) << "8 triangles and 4 spheres fit one leaf of 255";
   const RenderResult bruteForce = renderCpu(flat.view(), RenderOptions{});

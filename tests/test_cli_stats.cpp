@@ -11,6 +11,7 @@
 #include <sstream>
 #include <string>
 
+#include "backends/cpu/cpu_engine.h"
 #include "render/scene_view.h"
 
 namespace fs = std::filesystem;
@@ -45,8 +46,8 @@ class CliStatsTest : public ::testing::Test {
   void TearDown() override { fs::remove_all(dir_); }
 
   int run(const std::string& args) const {
-    const std::string command = "cd '" + dir_.string() + "' && '" + CANDELA_BINARY +
-                                "' render " + args + " > stdout.txt 2> stderr.txt < /dev/null";
+    const std::string command = "cd '" + dir_.string() + "' && '" + CANDELA_BINARY + "' render " +
+                                args + " > stdout.txt 2> stderr.txt < /dev/null";
     const int status = std::system(command.c_str());
     return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   }
@@ -68,16 +69,46 @@ class CliStatsTest : public ::testing::Test {
   fs::path dir_;
 };
 
-TEST_F(CliStatsTest, WritesEveryKeyWithSaneNumbers) {
-  ASSERT_EQ(run("scene.json -o out.pfm -q --backend cpu --threads 2 --stats stats.json"), 0)
+// Each CPU engine of this build: candela's own BVH, and Embree where the build has it.
+class CliStatsEngineTest : public CliStatsTest,
+                           public ::testing::WithParamInterface<std::string> {};
+
+TEST_P(CliStatsEngineTest, WritesEveryKeyWithSaneNumbers) {
+  const std::string engine = GetParam();
+  if (engine == "embree" && !candela::embreeAvailable()) GTEST_SKIP() << "no Embree in this build";
+  ASSERT_EQ(run("scene.json -o out.pfm -q --backend cpu --threads 2 --cpu-engine " + engine +
+                " --stats stats.json"),
+            0)
       << stderrText();
   const json s = readJson("stats.json");
-  for (const char* key :
-       {"scene", "backend", "threads", "width", "height", "spp", "max_depth", "integrator",
-        "antialiasing", "use_bvh", "load_seconds", "flatten_seconds", "bvh_build_seconds",
-        "bvh_mtris_per_second", "triangles", "spheres", "bvh_nodes", "bvh_leaves",
-        "bvh_max_depth", "memory_bytes", "bytes_per_triangle", "render_seconds", "samples",
-        "samples_per_second", "rays", "rays_per_second", "peak_rss_bytes"})
+  for (const char* key : {"scene",
+                          "backend",
+                          "threads",
+                          "width",
+                          "height",
+                          "spp",
+                          "max_depth",
+                          "integrator",
+                          "antialiasing",
+                          "use_bvh",
+                          "engine",
+                          "load_seconds",
+                          "flatten_seconds",
+                          "bvh_build_seconds",
+                          "bvh_mtris_per_second",
+                          "triangles",
+                          "spheres",
+                          "bvh_nodes",
+                          "bvh_leaves",
+                          "bvh_max_depth",
+                          "memory_bytes",
+                          "bytes_per_triangle",
+                          "render_seconds",
+                          "samples",
+                          "samples_per_second",
+                          "rays",
+                          "rays_per_second",
+                          "peak_rss_bytes"})
     EXPECT_TRUE(s.contains(key)) << key;
 
   EXPECT_EQ(s["scene"], "scene.json");
@@ -92,22 +123,27 @@ TEST_F(CliStatsTest, WritesEveryKeyWithSaneNumbers) {
   EXPECT_EQ(s["use_bvh"], true);
   EXPECT_EQ(s["triangles"], 2);
   EXPECT_EQ(s["spheres"], 1);
-  EXPECT_GE(s["bvh_nodes"].get<int>(), 1);
-  EXPECT_GE(s["bvh_leaves"].get<int>(), 1);
+  EXPECT_EQ(s["engine"], engine);
+  // The own BVH is built only for the engine that traces it.
+  EXPECT_EQ(s["bvh_nodes"].get<int>() >= 1, engine == "bvh");
+  EXPECT_EQ(s["bvh_leaves"].get<int>() >= 1, engine == "bvh");
 
-  for (const char* key : {"load_seconds", "flatten_seconds", "bvh_build_seconds",
-                          "render_seconds", "bvh_mtris_per_second"}) {
+  for (const char* key : {"load_seconds", "flatten_seconds", "bvh_build_seconds", "render_seconds",
+                          "bvh_mtris_per_second"}) {
     EXPECT_GE(s[key].get<double>(), 0) << key;
     EXPECT_LT(s[key].get<double>(), 60) << key;
   }
-  EXPECT_LE(s["bvh_build_seconds"].get<double>(), s["flatten_seconds"].get<double>() + 1e-3);
+  if (engine == "bvh") {
+    EXPECT_LE(s["bvh_build_seconds"].get<double>(), s["flatten_seconds"].get<double>() + 1e-3);
+  }
 
   const json& m = s["memory_bytes"];
   EXPECT_EQ(m["triangles"].get<int>() % 2, 0);
   EXPECT_EQ(m["positions"].get<int>(), 4 * 12);  // four float3 vertices
   EXPECT_EQ(m["total"].get<int>(), m["nodes"].get<int>() + m["prim_indices"].get<int>() +
                                        m["positions"].get<int>() + m["normals"].get<int>() +
-                                       m["triangles"].get<int>());
+                                       m["triangles"].get<int>() + m["engine"].get<int>());
+  EXPECT_EQ(m["engine"].get<int>() > 0, engine == "embree");  // Embree's BVH and vertex copy
   EXPECT_EQ(m["nodes"].get<int>(), int(sizeof(candela::BvhNode)) * s["bvh_nodes"].get<int>());
   EXPECT_DOUBLE_EQ(s["bytes_per_triangle"].get<double>(), m["total"].get<double>() / 2);
 
@@ -130,10 +166,12 @@ TEST_F(CliStatsTest, WritesEveryKeyWithSaneNumbers) {
   EXPECT_LT(s["peak_rss_bytes"].get<double>(), 4e9);
 }
 
+INSTANTIATE_TEST_SUITE_P(Engines, CliStatsEngineTest, ::testing::Values("bvh", "embree"));
+
 TEST_F(CliStatsTest, NoBvhIsReportedAndTracesTheSameRays) {
-  ASSERT_EQ(run("scene.json -o a.pfm -q --backend cpu --stats a.json"), 0) << stderrText();
-  ASSERT_EQ(run("scene.json -o b.pfm -q --backend cpu --no-bvh --stats b.json"), 0)
+  ASSERT_EQ(run("scene.json -o a.pfm -q --backend cpu --cpu-engine bvh --stats a.json"), 0)
       << stderrText();
+  ASSERT_EQ(run("scene.json -o b.pfm -q --backend cpu --no-bvh --stats b.json"), 0) << stderrText();
   const json a = readJson("a.json"), b = readJson("b.json");
   EXPECT_EQ(a["use_bvh"], true);
   EXPECT_EQ(b["use_bvh"], false);

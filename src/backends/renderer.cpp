@@ -68,11 +68,15 @@ Backend chooseBackend(Backend requested, std::string* note) {
   return Backend::Cpu;
 }
 
-std::unique_ptr<Renderer> makeRenderer(Backend backend) {
+bool needsOwnBvh(Backend backend, CpuEngine cpuEngine) {
+  return backend == Backend::Cuda || cpuEngine != CpuEngine::Embree;
+}
+
+std::unique_ptr<Renderer> makeRenderer(Backend backend, CpuEngine cpuEngine) {
   switch (backend) {
     case Backend::Auto:
     case Backend::Cpu:
-      return std::make_unique<CpuRenderer>();
+      return std::make_unique<CpuRenderer>(cpuEngine);
     case Backend::Cuda:
 #if defined(CANDELA_HAS_CUDA)
       return std::make_unique<CudaRenderer>();

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "backends/backend_error.h"
+#include "backends/cpu/cpu_engine.h"
 #include "backends/render_options.h"
 #include "render/render_result.h"
 #include "render/scene_change.h"
@@ -33,6 +34,13 @@ bool cudaUsable(std::string* reason);
 // can run here: BackendError otherwise.
 Backend chooseBackend(Backend requested, std::string* note);
 
+// The ray engine a renderer traces with and what its own acceleration structure cost.
+struct AccelerationStats {
+  const char* engine = "bvh";  // "bvh": candela's own, built with the scene (SceneData::bvh)
+  double buildSeconds = 0;     // the engine's own build in the last setScene (0 for "bvh")
+  uint64_t bytes = 0;          // the engine's own memory (0 for "bvh")
+};
+
 class Renderer {
  public:
   virtual ~Renderer() = default;
@@ -43,9 +51,16 @@ class Renderer {
 
   // Renders the scene given last. Throws BackendError on a failure of the device.
   virtual RenderResult render(const RenderOptions& options) = 0;
+
+  virtual AccelerationStats acceleration() const { return {}; }
 };
 
-// A renderer on `backend`, which chooseBackend returned.
-std::unique_ptr<Renderer> makeRenderer(Backend backend);
+// Whether the scene given to a renderer of `backend` with `cpuEngine` must carry candela's own
+// BVH: every engine but the CPU's Embree, which builds its own, traces it.
+bool needsOwnBvh(Backend backend, CpuEngine cpuEngine);
+
+// A renderer on `backend`, which chooseBackend returned; the CPU traces with `cpuEngine`, which
+// resolveCpuEngine returned (the GPU ignores it: it always runs candela's own BVH).
+std::unique_ptr<Renderer> makeRenderer(Backend backend, CpuEngine cpuEngine);
 
 }  // namespace candela

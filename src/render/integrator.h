@@ -12,7 +12,6 @@
 #include "core/check.h"
 #include "core/float_error.h"
 #include "core/sobol_sampler.h"
-#include "geometry/bvh_traverse.h"
 #include "geometry/surface.h"
 #include "render/bsdf.h"
 #include "render/light_sample.h"
@@ -35,10 +34,11 @@ CANDELA_HDI Ray spawnRay(const SurfacePoint& sp, const Vec3& wi) {
 }
 
 // Direct light at a diffuse point from one light, by one shadow ray, weighted by the probability
-// light.selectPmf of sampling that light.
-CANDELA_HDI Vec3 sampleOneLight(const SceneView& scene, const Light& light, const Material& m,
-                                const SurfacePoint& sp, const Vec3& wo, float u1, float u2,
-                                RayCounters& counters) {
+// light.selectPmf of sampling that light. `tracer` answers the ray queries (geometry/bvh_tracer.h).
+template <class Tracer>
+CANDELA_HDI Vec3 sampleOneLight(const SceneView& scene, const Tracer& tracer, const Light& light,
+                                const Material& m, const SurfacePoint& sp, const Vec3& wo, float u1,
+                                float u2, RayCounters& counters) {
   LightSample ls;
   if (!sampleLight(scene, light, sp.p, u1, u2, &ls)) return Vec3(0.0f);
   const Vec3 f = evalDiffuse(m, wo, sp.ng, sp.ns, ls.wi);
@@ -50,7 +50,7 @@ CANDELA_HDI Vec3 sampleOneLight(const SceneView& scene, const Light& light, cons
     shadow.tMax = length(target - shadow.origin) * (1.0f - kShadowEpsilon);
   }
   ++counters.shadow;
-  if (intersectAny(scene, shadow, lightPrimitive(scene, light))) return Vec3(0.0f);
+  if (tracer.occluded(shadow, lightPrimitive(scene, light))) return Vec3(0.0f);
   const float lightPdf = light.selectPmf * ls.pdf;
   const float weight =
       ls.isDelta ? 1.0f : powerHeuristic(lightPdf, diffusePdf(wo, sp.ng, sp.ns, ls.wi));
@@ -66,8 +66,10 @@ CANDELA_HDI void drawLightNumbers(SampleStream& rng, const Light& light, float* 
 
 // Direct light at a diffuse point: from each light when there are few (kSampleEveryLightUpTo),
 // else from one picked in proportion to power.
-CANDELA_HDI Vec3 estimateDirect(const SceneView& scene, const Material& m, const SurfacePoint& sp,
-                                const Vec3& wo, SampleStream& rng, RayCounters& counters) {
+template <class Tracer>
+CANDELA_HDI Vec3 estimateDirect(const SceneView& scene, const Tracer& tracer, const Material& m,
+                                const SurfacePoint& sp, const Vec3& wo, SampleStream& rng,
+                                RayCounters& counters) {
   // One dimension per light, or two for the picked one (the pick and its light's sample),
   // whatever the geometry, so the stream's layout never depends on it.
   float u1 = 0.0f, u2 = 0.0f;
@@ -75,7 +77,7 @@ CANDELA_HDI Vec3 estimateDirect(const SceneView& scene, const Material& m, const
     Vec3 sum(0.0f);
     for (uint32_t i = 0; i < scene.lightCount; ++i) {
       drawLightNumbers(rng, scene.lights[i], &u1, &u2);
-      sum += sampleOneLight(scene, scene.lights[i], m, sp, wo, u1, u2, counters);
+      sum += sampleOneLight(scene, tracer, scene.lights[i], m, sp, wo, u1, u2, counters);
     }
     return sum;
   }
@@ -86,12 +88,13 @@ CANDELA_HDI Vec3 estimateDirect(const SceneView& scene, const Material& m, const
     return Vec3(0.0f);
   }
   drawLightNumbers(rng, scene.lights[index], &u1, &u2);
-  return sampleOneLight(scene, scene.lights[index], m, sp, wo, u1, u2, counters);
+  return sampleOneLight(scene, tracer, scene.lights[index], m, sp, wo, u1, u2, counters);
 }
 
 // Radiance arriving at the camera along `ray` (one sample).
-CANDELA_HDI Vec3 traceRadiance(const SceneView& scene, Ray ray, SampleStream& rng,
-                               RayCounters& counters) {
+template <class Tracer>
+CANDELA_HDI Vec3 traceRadiance(const SceneView& scene, const Tracer& tracer, Ray ray,
+                               SampleStream& rng, RayCounters& counters) {
   Vec3 radiance(0.0f), throughput(1.0f);
   uint32_t maxDepth = scene.settings.maxDepth;
   bool specularBounce = true;  // the camera counts as specular: emitters seen directly count fully
@@ -100,12 +103,12 @@ CANDELA_HDI Vec3 traceRadiance(const SceneView& scene, Ray ray, SampleStream& rn
 
   for (uint32_t depth = 1;; ++depth) {
     Hit hit;
-    if (!intersectClosest(scene, ray, &hit)) {
+    if (!tracer.closest(ray, &hit)) {
       const int32_t light = specularBounce ? -1 : scene.environment.light;
-      const float weight =
-          light < 0 ? 1.0f
-                    : powerHeuristic(bsdfPdf, scene.lights[light].selectPmf *
-                                                  environmentPdf(scene, ray.direction));
+      const float weight = light < 0
+                               ? 1.0f
+                               : powerHeuristic(bsdfPdf, scene.lights[light].selectPmf *
+                                                             environmentPdf(scene, ray.direction));
       radiance += throughput * environmentRadiance(scene, ray.direction) * weight;
       break;
     }
@@ -120,8 +123,8 @@ CANDELA_HDI Vec3 traceRadiance(const SceneView& scene, Ray ray, SampleStream& rn
         const int32_t light = specularBounce ? -1 : lightOfPrimitive(scene, hit.prim);
         if (light >= 0) {
           const Light& l = scene.lights[light];
-          weight = powerHeuristic(
-              bsdfPdf, l.selectPmf * emitterPdf(scene, l, bouncePoint, ray.direction, hit.t, sp.ng));
+          weight = powerHeuristic(bsdfPdf, l.selectPmf * emitterPdf(scene, l, bouncePoint,
+                                                                    ray.direction, hit.t, sp.ng));
         }
         radiance += throughput * m.radiance * weight;
       }
@@ -130,7 +133,7 @@ CANDELA_HDI Vec3 traceRadiance(const SceneView& scene, Ray ray, SampleStream& rn
     if (depth > maxDepth) break;
 
     if (m.type == MaterialType::Diffuse) {
-      radiance += throughput * estimateDirect(scene, m, sp, wo, rng, counters);
+      radiance += throughput * estimateDirect(scene, tracer, m, sp, wo, rng, counters);
       // "direct": the scattered ray below only gathers emission; nothing scatters after it.
       if (scene.settings.integrator == IntegratorType::Direct) maxDepth = depth;
     }

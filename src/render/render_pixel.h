@@ -15,8 +15,10 @@ CANDELA_HDI bool isFinite(const Vec3& v) {
 
 // Sum of the radiance of samples [sampleBegin, sampleBegin + sampleCount) of pixel (x, y).
 // Each sample's random numbers depend only on (seed, pixel, sample index, dimension) and spp.
-CANDELA_HDI Vec3 renderPixelSamples(const SceneView& scene, uint32_t x, uint32_t y,
-                                    uint32_t sampleBegin, uint32_t sampleCount,
+// `tracer` answers the ray queries (geometry/bvh_tracer.h).
+template <class Tracer>
+CANDELA_HDI Vec3 renderPixelSamples(const SceneView& scene, const Tracer& tracer, uint32_t x,
+                                    uint32_t y, uint32_t sampleBegin, uint32_t sampleCount,
                                     RayCounters& counters) {
   const uint64_t pixelIndex = uint64_t(y) * scene.camera.width + x;
   Vec3 sum(0.0f);
@@ -28,7 +30,7 @@ CANDELA_HDI Vec3 renderPixelSamples(const SceneView& scene, uint32_t x, uint32_t
     rng.next2DIfUsed(scene.camera.apertureRadius > 0.0f, &lensU, &lensV);
     const Ray ray = generateCameraRay(scene.camera, float(x) + jx, float(y) + jy, lensU, lensV);
     ++counters.camera;
-    const Vec3 L = traceRadiance(scene, ray, rng, counters);
+    const Vec3 L = traceRadiance(scene, tracer, ray, rng, counters);
     // A non-finite sample (a degenerate mesh, say) would poison the pixel; it counts as black.
     if (isFinite(L)) sum += L;
   }

@@ -221,10 +221,10 @@ void orderTrianglesByLeaf(SceneData& s) {
 
 namespace {
 
-// The BVH over a flattened scene's contents (the one-level tree for `flat`), then the
-// triangles in its leaf order.
-void addBvh(SceneData& s, bool flat) {
-  BvhBuildResult bvh = (flat ? buildFlatBvh : buildBvh)(
+// The BVH `kind` over a flattened scene's contents, then the triangles in its leaf order.
+void addBvh(SceneData& s, OwnBvh kind) {
+  if (kind == OwnBvh::None) return;
+  BvhBuildResult bvh = (kind == OwnBvh::Flat ? buildFlatBvh : buildBvh)(
       s.spheres.data(), uint32_t(s.spheres.size()), s.positions.data(), s.triangles.data(),
       uint32_t(s.triangles.size()));
   s.nodes = std::move(bvh.wideNodes);
@@ -240,7 +240,7 @@ void addBvh(SceneData& s, bool flat) {
 
 SceneData flattenScene(const SceneDesc& desc) {
   SceneData s = flattenSceneContents(desc);
-  addBvh(s, desc.flatBvh);
+  addBvh(s, desc.ownBvh);
   addEmitterLights(s);
   return s;
 }
@@ -248,7 +248,7 @@ SceneData flattenScene(const SceneDesc& desc) {
 SceneData flattenScene(SceneDesc&& desc) {
   SceneData s = flattenSceneContents(desc);
   for (ObjectDesc& object : desc.objects) object.mesh = MeshDesc();
-  addBvh(s, desc.flatBvh);
+  addBvh(s, desc.ownBvh);
   addEmitterLights(s);
   return s;
 }

@@ -40,7 +40,7 @@ uint64_t hashOf(const std::vector<T>& items) {
 // Both keys list the same things; the structure key leaves out what a refit can follow.
 std::string sceneKey(const SceneDesc& desc, bool withTransforms) {
   KeyWriter key;
-  key.add(desc.flatBvh);
+  key.add(desc.ownBvh);
   key.add(desc.spheres.size());
   for (const SphereDesc& s : desc.spheres) {
     if (withTransforms) {
@@ -86,7 +86,12 @@ const SceneData& FrameScene::prepare(const SceneDesc& desc) {
     change_ = SceneChange::Values;
   } else {
     bool refitted = false;
-    if (!structureKey_.empty() && structure == structureKey_ && !data_.nodes.empty()) {
+    if (!structureKey_.empty() && structure == structureKey_ && desc.ownBvh == OwnBvh::None) {
+      // No own BVH to refit (Embree refits its own): the same triangles, moved.
+      data_ = flattenSceneContents(desc);
+      addEmitterLights(data_);
+      refitted = true;
+    } else if (!structureKey_.empty() && structure == structureKey_ && !data_.nodes.empty()) {
       SceneData moved = flattenSceneContents(desc);
       moved.nodes = std::move(data_.nodes);
       moved.primIndices = std::move(data_.primIndices);

@@ -119,13 +119,17 @@ struct AnimationDesc {
   std::vector<AnimTrack> tracks;
 };
 
+// Sah: the tree the own engine and the GPU trace. Flat: one level, so every ray tests every
+// primitive (`candela render --no-bvh`, benchmarks only: shows what the BVH buys). None: the CPU
+// traces with Embree, which builds its own.
+enum class OwnBvh : uint8_t { Sah, Flat, None };
+
 struct SceneDesc {
   std::string file;  // the scene file as named by the user, prefix of every message
   CameraDesc camera;
   RenderSettings render;  // the file's camera.spp is render.spp
-  // Benchmarks only (`candela render --no-bvh`): a BVH of one level, so every ray is tested
-  // against every primitive; shows what the BVH buys. Images are the same either way.
-  bool flatBvh = false;
+  // Which of candela's own BVHs flattening builds (images are the same with each).
+  OwnBvh ownBvh = OwnBvh::Sah;
   OutputDesc output;
   std::vector<SphereDesc> spheres;
   std::vector<ObjectDesc> objects;

@@ -21,6 +21,7 @@ struct RenderCommandOptions {
   std::optional<uint32_t> maxDepth;
   int threads = 0;  // 0: all cores
   Backend backend = Backend::Auto;
+  CpuEngine cpuEngine = CpuEngine::Auto;
   bool quiet = false;
   std::string stats;  // --stats FILE.json: write the render's measured figures (stills only)
   bool noBvh = false;  // --no-bvh: brute force over all primitives (benchmarks only)
@@ -70,6 +71,17 @@ inline CLI::Validator finitePositiveNumber() {
         return {};
       },
       "POSITIVE");
+}
+
+// Accepts the names of cpuEngineFromName.
+inline CLI::Validator cpuEngineChoice() {
+  return CLI::Validator(
+      [](std::string& name) -> std::string {
+        CpuEngine ignored;
+        if (cpuEngineFromName(name, &ignored)) return {};
+        return "expected auto, embree or bvh, got '" + name + "'";
+      },
+      "{auto,embree,bvh}");
 }
 
 // Accepts the names of backendFromName.

@@ -6,13 +6,13 @@
 // runs before rendering, and the image file is replaced atomically.
 #include "apps/cli/render_command.h"
 
+#include <tbb/task_arena.h>
+
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <utility>
-
-#include <tbb/task_arena.h>
 
 #include "apps/cli/cli_error.h"
 #include "apps/cli/interrupt.h"
@@ -65,11 +65,23 @@ int renderStill(const RenderCommandOptions& options, SceneDesc desc, double load
 
 }  // namespace
 
-void applyOverrides(const RenderCommandOptions& options, SceneDesc* desc) {
+CpuEngine chooseCpuEngine(const RenderCommandOptions& options) {
+  if (options.noBvh && options.cpuEngine == CpuEngine::Embree)
+    throw CliError(kExitUsage,
+                   "--no-bvh tests every primitive with candela's own engine; it cannot be "
+                   "combined with --cpu-engine embree");
+  return resolveCpuEngine(options.cpuEngine, options.noBvh);
+}
+
+void applyOverrides(const RenderCommandOptions& options, Backend backend, CpuEngine engine,
+                    SceneDesc* desc) {
   if (options.spp) desc->render.spp = *options.spp;
   if (options.seed) desc->render.seed = *options.seed;
   if (options.maxDepth) desc->render.maxDepth = *options.maxDepth;
-  if (options.noBvh) desc->flatBvh = true;
+  if (options.noBvh)
+    desc->ownBvh = OwnBvh::Flat;
+  else if (!needsOwnBvh(backend, engine))
+    desc->ownBvh = OwnBvh::None;
 }
 
 CLI::App* addRenderCommand(CLI::App& app, RenderCommandOptions* options) {
@@ -99,6 +111,12 @@ CLI::App* addRenderCommand(CLI::App& app, RenderCommandOptions* options) {
          [options](const std::string& name) { backendFromName(name, &options->backend); },
          "auto, cpu or cuda (default: auto)")
       ->check(backendChoice());
+  cmd->add_option_function<std::string>(
+         "--cpu-engine",
+         [options](const std::string& name) { cpuEngineFromName(name, &options->cpuEngine); },
+         "Ray engine of the CPU backend: auto (Embree where the build has it), embree, or bvh "
+         "(candela's own, the GPU's)")
+      ->check(cpuEngineChoice());
   cmd->add_flag("-q,--quiet", options->quiet, "No progress bar and no summary");
   cmd->add_option("--stats", options->stats,
                   "Also write the render's measured figures (load, BVH build, memory, rays, "
@@ -132,8 +150,8 @@ int runRender(const RenderCommandOptions& options) {
   std::vector<SceneDesc> scenes;
   for (const std::string& file : options.scenes) scenes.push_back(loadSceneFile(file));
   const double loadSeconds = secondsSince(loadStart);
-  const bool sequence = scenes.size() > 1 || scenes[0].animation ||
-                        options.sequenceOptionGiven() || isFolderOutput(options.output);
+  const bool sequence = scenes.size() > 1 || scenes[0].animation || options.sequenceOptionGiven() ||
+                        isFolderOutput(options.output);
   if (sequence && !options.stats.empty())
     throw CliError(kExitUsage, "--stats works for a single still image, not for a sequence");
   if (sequence) return runSequence(options, std::move(scenes));
@@ -144,13 +162,13 @@ namespace {
 
 int renderStill(const RenderCommandOptions& options, SceneDesc desc, double loadSeconds) {
   const std::string& sceneFile = options.scenes[0];
-  const std::string output =
-      options.output.empty() ? defaultOutputPath(sceneFile) : options.output;
+  const std::string output = options.output.empty() ? defaultOutputPath(sceneFile) : options.output;
   checkOutputPath(output);
   std::string backendNote;
   const Backend backend = chooseBackend(options.backend, &backendNote);
+  const CpuEngine engine = chooseCpuEngine(options);
 
-  applyOverrides(options, &desc);
+  applyOverrides(options, backend, engine, &desc);
   const auto flattenStart = std::chrono::steady_clock::now();
   const SceneData scene = flattenScene(std::move(desc));  // only desc.output is used below
   const double flattenSeconds = secondsSince(flattenStart);
@@ -167,7 +185,7 @@ int renderStill(const RenderCommandOptions& options, SceneDesc desc, double load
   render.threads = options.threads;
   render.cancel = &interrupt.flag();
   if (bar) render.progress = [&bar](double fraction) { bar->update(fraction); };
-  const std::unique_ptr<Renderer> renderer = makeRenderer(backend);
+  const std::unique_ptr<Renderer> renderer = makeRenderer(backend, engine);
   renderer->setScene(scene, SceneChange::Structure);
   const RenderResult result = renderer->render(render);
   if (bar) bar->clear();
@@ -186,6 +204,7 @@ int renderStill(const RenderCommandOptions& options, SceneDesc desc, double load
     info.useBvh = !options.noBvh;
     info.loadSeconds = loadSeconds;
     info.flattenSeconds = flattenSeconds;
+    info.acceleration = renderer->acceleration();
     createParentDirectories(options.stats);
     writeRenderStats(options.stats, info, scene, result);
   }

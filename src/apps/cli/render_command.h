@@ -21,7 +21,13 @@ CLI::App* addRenderCommand(CLI::App& app, RenderCommandOptions* options);
 // ImageWriteError and std::exception for main() to report.
 int runRender(const RenderCommandOptions& options);
 
-// Command-line values win over the scene file's (spp, seed, max depth).
-void applyOverrides(const RenderCommandOptions& options, SceneDesc* desc);
+// The CPU engine the options ask for, resolved by resolveCpuEngine; CliError (usage) for
+// --no-bvh with --cpu-engine embree.
+CpuEngine chooseCpuEngine(const RenderCommandOptions& options);
+
+// Command-line values win over the scene file's (spp, seed, max depth); candela's own BVH is
+// left out where the renderer (`backend` with `engine`) does not trace it.
+void applyOverrides(const RenderCommandOptions& options, Backend backend, CpuEngine engine,
+                    SceneDesc* desc);
 
 }  // namespace candela::cli

@@ -126,7 +126,8 @@ int runSequence(const RenderCommandOptions& options, std::vector<SceneDesc> scen
   const FrameRange range = parseFrames(options.frames, count);
   std::string backendNote;
   const Backend backend = chooseBackend(options.backend, &backendNote);
-  for (SceneDesc& scene : scenes) applyOverrides(options, &scene);
+  const CpuEngine engine = chooseCpuEngine(options);
+  for (SceneDesc& scene : scenes) applyOverrides(options, backend, engine, &scene);
 
   std::error_code ec;
   fs::create_directories(dir, ec);
@@ -151,7 +152,7 @@ int runSequence(const RenderCommandOptions& options, std::vector<SceneDesc> scen
   std::unique_ptr<ProgressBar> bar;
   if (ProgressBar::wanted(options.quiet)) bar = std::make_unique<ProgressBar>(stderr);
   FrameScene frameScene;
-  const std::unique_ptr<Renderer> renderer = makeRenderer(backend);
+  const std::unique_ptr<Renderer> renderer = makeRenderer(backend, engine);
   const auto start = std::chrono::steady_clock::now();
   for (size_t k = 0; k < todo.size(); ++k) {
     const uint32_t frame = todo[k];

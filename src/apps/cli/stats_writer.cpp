@@ -64,7 +64,11 @@ std::string renderStatsJson(const RenderStats& info, const SceneData& scene,
   const uint64_t nodes = bytesOf(scene.nodes), prims = bytesOf(scene.primIndices),
                  positions = bytesOf(scene.positions), normals = bytesOf(scene.normals),
                  tris = bytesOf(scene.triangles);
-  const uint64_t total = nodes + prims + positions + normals + tris;
+  const uint64_t engine = info.acceleration.bytes;
+  const uint64_t total = nodes + prims + positions + normals + tris + engine;
+  const double buildSeconds = std::string(info.acceleration.engine) == "bvh"
+                                  ? scene.bvh.buildSeconds
+                                  : info.acceleration.buildSeconds;
   const double samples = double(result.image.width) * double(result.image.height) * double(s.spp);
 
   std::ostringstream o;
@@ -82,9 +86,10 @@ std::string renderStatsJson(const RenderStats& info, const SceneData& scene,
   o << "  \"use_bvh\": " << (info.useBvh ? "true" : "false") << ",\n";
   o << "  \"load_seconds\": " << jsonNumber(info.loadSeconds) << ",\n";
   o << "  \"flatten_seconds\": " << jsonNumber(info.flattenSeconds) << ",\n";
-  o << "  \"bvh_build_seconds\": " << jsonNumber(scene.bvh.buildSeconds) << ",\n";
-  o << "  \"bvh_mtris_per_second\": "
-    << jsonNumber(rate(double(triangles), scene.bvh.buildSeconds) / 1e6) << ",\n";
+  o << "  \"engine\": " << jsonString(info.acceleration.engine) << ",\n";
+  o << "  \"bvh_build_seconds\": " << jsonNumber(buildSeconds) << ",\n";
+  o << "  \"bvh_mtris_per_second\": " << jsonNumber(rate(double(triangles), buildSeconds) / 1e6)
+    << ",\n";
   o << "  \"triangles\": " << jsonCount(triangles) << ",\n";
   o << "  \"spheres\": " << jsonCount(scene.spheres.size()) << ",\n";
   o << "  \"bvh_nodes\": " << scene.bvh.nodeCount << ",\n";
@@ -92,9 +97,10 @@ std::string renderStatsJson(const RenderStats& info, const SceneData& scene,
   o << "  \"bvh_max_depth\": " << scene.bvh.maxDepth << ",\n";
   o << "  \"memory_bytes\": {\"nodes\": " << nodes << ", \"prim_indices\": " << prims
     << ", \"positions\": " << positions << ", \"normals\": " << normals
-    << ", \"triangles\": " << tris << ", \"total\": " << total << "},\n";
-  o << "  \"bytes_per_triangle\": "
-    << jsonNumber(triangles ? double(total) / double(triangles) : 0) << ",\n";
+    << ", \"triangles\": " << tris << ", \"engine\": " << engine << ", \"total\": " << total
+    << "},\n";
+  o << "  \"bytes_per_triangle\": " << jsonNumber(triangles ? double(total) / double(triangles) : 0)
+    << ",\n";
   o << "  \"render_seconds\": " << jsonNumber(result.seconds) << ",\n";
   o << "  \"samples\": " << jsonNumber(samples) << ",\n";
   o << "  \"samples_per_second\": " << jsonNumber(rate(samples, result.seconds)) << ",\n";

@@ -4,11 +4,13 @@
 // Keys (seconds are wall time; bytes are the host arrays' sizes, capacity excluded):
 //   scene, backend, threads, width, height, spp, max_depth, integrator, antialiasing, use_bvh,
 //   load_seconds       reading and validating the scene file (meshes included)
-//   flatten_seconds    flattenScene: meshes to world space + BVH build
-//   bvh_build_seconds  the BVH build alone (SceneData::bvh.buildSeconds)
+//   flatten_seconds    flattenScene: meshes to world space (+ candela's own BVH build)
+//   engine             the ray engine: "bvh" (candela's own) or "embree" (the CPU's, when built)
+//   bvh_build_seconds  the engine's BVH build alone (SceneData::bvh.buildSeconds, or Embree's)
 //   bvh_mtris_per_second  triangles / bvh_build_seconds / 1e6
-//   triangles, spheres, bvh_nodes, bvh_leaves, bvh_max_depth
-//   memory_bytes {nodes, prim_indices, positions, normals, triangles, total}
+//   triangles, spheres, bvh_nodes, bvh_leaves, bvh_max_depth (the own BVH's; 0 with Embree)
+//   memory_bytes {nodes, prim_indices, positions, normals, triangles, engine, total}; engine:
+//                      what Embree holds (its BVH and vertex copy)
 //   bytes_per_triangle  memory_bytes.total / triangles (0 without triangles)
 //   render_seconds, samples, samples_per_second
 //   rays {camera, bounce, shadow, total}, rays_per_second
@@ -17,6 +19,7 @@
 
 #include <string>
 
+#include "backends/renderer.h"
 #include "render/render_result.h"
 #include "render/scene_data.h"
 
@@ -29,6 +32,7 @@ struct RenderStats {
   bool useBvh = true;  // false under --no-bvh (the one-level tree of the benchmarks)
   double loadSeconds = 0;
   double flattenSeconds = 0;
+  AccelerationStats acceleration;  // the renderer's ray engine
 };
 
 // The JSON text (one object, trailing newline).

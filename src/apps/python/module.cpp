@@ -98,11 +98,13 @@ ImageArray render(const Scene& scene, std::optional<uint32_t> spp, std::optional
   RenderCache& cache = *scene.cache;
   runInterruptible([&](const std::atomic<bool>& cancel) {
     std::lock_guard<std::mutex> lock(cache.mutex);
+    const CpuEngine engine = resolveCpuEngine(CpuEngine::Auto, false);
+    if (!needsOwnBvh(chosen, engine)) desc.ownBvh = OwnBvh::None;
     const SceneData& data = cache.frames.prepare(desc);
     SceneChange change = cache.frames.change();
     if (!cache.renderer || cache.backend != chosen) {
       cache.renderer.reset();  // a GPU's copy is freed before the next is made
-      cache.renderer = makeRenderer(chosen);
+      cache.renderer = makeRenderer(chosen, engine);
       cache.backend = chosen;
       change = SceneChange::Structure;
     }

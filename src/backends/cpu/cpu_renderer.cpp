@@ -9,7 +9,12 @@
 #include <memory>
 #include <mutex>
 
+#include "geometry/bvh_tracer.h"
 #include "render/render_pixel.h"
+
+#if defined(CANDELA_HAS_EMBREE)
+#include "backends/cpu/embree_scene.h"
+#endif
 
 namespace candela {
 
@@ -17,9 +22,9 @@ namespace {
 
 constexpr uint32_t kTileSize = 16;
 
-}  // namespace
-
-RenderResult renderCpu(const SceneView& scene, const RenderOptions& options) {
+template <class Tracer>
+RenderResult renderTiles(const SceneView& scene, const Tracer& tracer,
+                         const RenderOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   const uint32_t width = scene.camera.width, height = scene.camera.height;
   const SampleRange samples = resolveSampleRange(options.samples, scene.settings.spp);
@@ -43,30 +48,78 @@ RenderResult renderCpu(const SceneView& scene, const RenderOptions& options) {
   // One tile per task: tiles are independent, so the result never depends on the schedule.
   tbb::parallel_for(tbb::blocked_range<uint32_t>(0, tilesX * tilesY, 1),
                     [&](const tbb::blocked_range<uint32_t>& range) {
-    RayCounters& local = counters.local();
-    for (uint32_t tile = range.begin(); tile != range.end(); ++tile) {
-      if (options.cancel && options.cancel->load(std::memory_order_relaxed)) {
-        cancelled = true;
-        return;
-      }
-      const uint32_t x0 = (tile % tilesX) * kTileSize, y0 = (tile / tilesX) * kTileSize;
-      const uint32_t x1 = std::min(x0 + kTileSize, width), y1 = std::min(y0 + kTileSize, height);
-      for (uint32_t y = y0; y < y1; ++y)
-        for (uint32_t x = x0; x < x1; ++x)
-          result.image.set(x, y, renderPixelSamples(scene, x, y, samples.begin, samples.count, local) /
-                                     float(samples.count));
-      if (options.progress) {
-        std::lock_guard<std::mutex> lock(progressMutex);
-        pixelsDone += uint64_t(x1 - x0) * (y1 - y0);
-        options.progress(double(pixelsDone) / pixelsTotal);
-      }
-    }
-  });
+                      RayCounters& local = counters.local();
+                      for (uint32_t tile = range.begin(); tile != range.end(); ++tile) {
+                        if (options.cancel && options.cancel->load(std::memory_order_relaxed)) {
+                          cancelled = true;
+                          return;
+                        }
+                        const uint32_t x0 = (tile % tilesX) * kTileSize,
+                                       y0 = (tile / tilesX) * kTileSize;
+                        const uint32_t x1 = std::min(x0 + kTileSize, width),
+                                       y1 = std::min(y0 + kTileSize, height);
+                        for (uint32_t y = y0; y < y1; ++y)
+                          for (uint32_t x = x0; x < x1; ++x)
+                            result.image.set(x, y,
+                                             renderPixelSamples(scene, tracer, x, y, samples.begin,
+                                                                samples.count, local) /
+                                                 float(samples.count));
+                        if (options.progress) {
+                          std::lock_guard<std::mutex> lock(progressMutex);
+                          pixelsDone += uint64_t(x1 - x0) * (y1 - y0);
+                          options.progress(double(pixelsDone) / pixelsTotal);
+                        }
+                      }
+                    });
 
   for (const RayCounters& c : counters) result.rays += c;
   result.cancelled = cancelled.load();
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
+}
+
+}  // namespace
+
+RenderResult renderCpu(const SceneView& scene, const RenderOptions& options) {
+  return renderTiles(scene, BvhTracer{&scene}, options);
+}
+
+#if !defined(CANDELA_HAS_EMBREE)
+// Declared only so that unique_ptr<EmbreeScene> can be destroyed in a build without Embree.
+class EmbreeScene {};
+#endif
+
+CpuRenderer::CpuRenderer(CpuEngine engine) : engine_(engine) {}
+CpuRenderer::~CpuRenderer() = default;
+
+void CpuRenderer::setScene(const SceneData& scene, SceneChange change) {
+  view_ = scene.view();
+#if defined(CANDELA_HAS_EMBREE)
+  if (engine_ == CpuEngine::Embree) {
+    if (!embree_) {
+      embree_ = std::make_unique<EmbreeScene>();
+      change = SceneChange::Structure;
+    }
+    embree_->update(scene, change);
+  }
+#else
+  (void)change;
+#endif
+}
+
+AccelerationStats CpuRenderer::acceleration() const {
+#if defined(CANDELA_HAS_EMBREE)
+  if (engine_ == CpuEngine::Embree && embree_)
+    return {"embree", embree_->buildSeconds(), EmbreeScene::bytesInUse()};
+#endif
+  return {};
+}
+
+RenderResult CpuRenderer::render(const RenderOptions& options) {
+#if defined(CANDELA_HAS_EMBREE)
+  if (engine_ == CpuEngine::Embree) return renderTiles(view_, embree_->tracer(), options);
+#endif
+  return renderCpu(view_, options);
 }
 
 }  // namespace candela

@@ -6,6 +6,7 @@
 
 #include "backends/cuda/cuda_check.h"
 #include "backends/cuda/device_buffer.h"
+#include "geometry/bvh_tracer.h"
 #include "render/render_pixel.h"
 
 namespace candela {
@@ -55,7 +56,7 @@ __global__ void renderPassKernel(SceneView scene, uint32_t sampleBegin, uint32_t
   const uint32_t y = blockIdx.y * blockDim.y + threadIdx.y;
   RayCounters counters;
   if (x < scene.camera.width && y < scene.camera.height) {
-    const Vec3 sum = renderPixelSamples(scene, x, y, sampleBegin, sampleCount, counters);
+    const Vec3 sum = renderPixelSamples(scene, BvhTracer{&scene}, x, y, sampleBegin, sampleCount, counters);
     float3& acc = accumulation[size_t(y) * scene.camera.width + x];
     acc.x += sum.x;
     acc.y += sum.y;

@@ -1,0 +1,26 @@
+// BvhTracer: the ray engine over candela's own BVH (geometry/bvh_traverse.h), the one the CUDA
+// backend uses and the CPU's fallback.
+//
+// The integrator reaches geometry through a tracer, a small value with two queries:
+//   closest(ray, &hit)   the nearest hit for t in (0, ray.tMax), as intersectClosest;
+//   occluded(ray, skip)  whether anything but primitive `skip` blocks the ray, as intersectAny.
+// Any engine with that pair (the CPU's Embree tracer, backends/cpu/embree_tracer.h) renders the
+// same image up to rounding, with the primitive numbering of geometry/geometry_view.h.
+#pragma once
+
+#include "geometry/bvh_traverse.h"
+
+namespace candela {
+
+struct BvhTracer {
+  const GeometryView* geometry;
+
+  CANDELA_HDI bool closest(const Ray& ray, Hit* hit) const {
+    return intersectClosest(*geometry, ray, hit);
+  }
+  CANDELA_HDI bool occluded(const Ray& ray, uint32_t skipPrim) const {
+    return intersectAny(*geometry, ray, skipPrim);
+  }
+};
+
+}  // namespace candela

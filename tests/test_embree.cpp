@@ -1,0 +1,207 @@
+// The CPU's Embree engine against candela's own: the same hits ray by ray, the same images up to
+// rounding, and frames of an animation (refits) as a fresh build of each frame renders them.
+#include <gtest/gtest.h>
+
+#include <random>
+#include <string>
+#include <vector>
+
+#include "backends/cpu/cpu_engine.h"
+#include "backends/cpu/cpu_renderer.h"
+#include "render_test_util.h"
+#include "scene/animation.h"
+#include "scene/frame_scene.h"
+#include "test_random.h"
+
+#if defined(CANDELA_HAS_EMBREE)
+#include "backends/cpu/embree_scene.h"
+#include "geometry/bvh_traverse.h"
+#endif
+
+namespace candela {
+namespace {
+
+#if !defined(CANDELA_HAS_EMBREE)
+
+TEST(Embree, EngineIsAbsent) {
+  EXPECT_FALSE(embreeAvailable());
+  EXPECT_EQ(resolveCpuEngine(CpuEngine::Auto, false), CpuEngine::Bvh);
+  EXPECT_THROW(resolveCpuEngine(CpuEngine::Embree, false), BackendError);
+  GTEST_SKIP() << "this build has no Embree (CANDELA_EMBREE): its engine tests do not apply";
+}
+
+#else
+
+constexpr uint32_t kNone = 0xffffffffu;
+
+TEST(Embree, EngineChoice) {
+  EXPECT_TRUE(embreeAvailable());
+  EXPECT_EQ(resolveCpuEngine(CpuEngine::Auto, false), CpuEngine::Embree);
+  EXPECT_EQ(resolveCpuEngine(CpuEngine::Auto, true), CpuEngine::Bvh);  // --no-bvh
+  EXPECT_EQ(resolveCpuEngine(CpuEngine::Bvh, false), CpuEngine::Bvh);
+  EXPECT_THROW(resolveCpuEngine(CpuEngine::Embree, true), BackendError);
+  CpuEngine e;
+  EXPECT_TRUE(cpuEngineFromName("EMBREE", &e));
+  EXPECT_EQ(e, CpuEngine::Embree);
+  EXPECT_FALSE(cpuEngineFromName("optix", &e));
+}
+
+// Random spheres (some large, so that rays start inside them) and random triangles in a box.
+SceneData randomScene(uint32_t seed) {
+  std::mt19937 gen(seed);
+  std::uniform_real_distribution<float> u(-4.0f, 4.0f), r(0.05f, 1.5f);
+  SceneData s;
+  for (int i = 0; i < 40; ++i) s.spheres.push_back(Sphere{Vec3(u(gen), u(gen), u(gen)), r(gen), 0});
+  for (int i = 0; i < 400; ++i) {
+    const Vec3 a(u(gen), u(gen), u(gen));
+    const uint32_t first = uint32_t(s.positions.size());
+    s.positions.insert(s.positions.end(), {a, a + test::randomUnitVector(gen) * r(gen),
+                                           a + test::randomUnitVector(gen) * r(gen)});
+    s.triangles.push_back(Triangle{{first, first + 1, first + 2}, 0});
+  }
+  return s;
+}
+
+// Closest hits and shadow queries agree with testing every primitive (candela's own tests),
+// to the rounding of the two triangle tests: where the nearest primitive differs, the two hits
+// lie at the same distance (two primitives crossing there).
+TEST(Embree, HitsMatchBruteForceRayByRay) {
+  for (uint32_t seed : {1u, 2u, 3u}) {
+    const SceneData scene = randomScene(seed);
+    const SceneView view = scene.view();
+    EmbreeScene embree;
+    embree.update(scene, SceneChange::Structure);
+    const EmbreeTracer tracer = embree.tracer();
+    std::mt19937 gen(seed + 100);
+    std::uniform_real_distribution<float> u(-5.0f, 5.0f);
+    int hits = 0, occludedAgree = 0, shadowRays = 0;
+    for (int i = 0; i < 4000; ++i) {
+      Ray ray;
+      ray.origin = Vec3(u(gen), u(gen), u(gen));
+      ray.direction = test::randomUnitVector(gen) * (0.5f + float(i % 3));  // not unit length
+      if (i % 4 == 0) ray.tMax = 3.0f;
+      Hit expected, got;
+      const bool found = intersectClosestBruteForce(view, ray, &expected);
+      ASSERT_EQ(tracer.closest(ray, &got), found) << "seed " << seed << " ray " << i;
+      if (found) {
+        ++hits;
+        EXPECT_NEAR(got.t, expected.t, 1e-4f * expected.t) << "ray " << i;
+        if (got.prim == expected.prim && expected.prim >= scene.spheres.size()) {
+          EXPECT_NEAR(got.b1, expected.b1, 1e-4f);
+          EXPECT_NEAR(got.b2, expected.b2, 1e-4f);
+        } else if (got.prim != expected.prim) {
+          EXPECT_NEAR(got.t, expected.t, 1e-5f * expected.t) << "ray " << i;
+        }
+      }
+      // A shadow query skipping nothing, the nearest primitive, or a random one.
+      uint32_t skip = kNone;
+      if (i % 3 == 1 && found) skip = expected.prim;
+      if (i % 3 == 2) skip = uint32_t(gen() % view.primitiveCount());
+      ++shadowRays;
+      occludedAgree += tracer.occluded(ray, skip) == intersectAnyBruteForce(view, ray, skip);
+    }
+    EXPECT_GT(hits, 1000);
+    // Only a ray grazing an edge within rounding may be answered differently.
+    EXPECT_GE(occludedAgree, shadowRays - 2) << "seed " << seed;
+  }
+}
+
+TEST(Embree, NonFiniteRaysHitNothing) {
+  const SceneData scene = randomScene(7);
+  EmbreeScene embree;
+  embree.update(scene, SceneChange::Structure);
+  Ray ray;
+  ray.origin = Vec3(0.0f);
+  ray.direction = Vec3(std::nanf(""), 1.0f, 0.0f);
+  Hit hit;
+  EXPECT_FALSE(embree.tracer().closest(ray, &hit));
+  EXPECT_FALSE(embree.tracer().occluded(ray, kNone));
+}
+
+TEST(Embree, EmptySceneIsAllMiss) {
+  SceneData empty;
+  EmbreeScene embree;
+  embree.update(empty, SceneChange::Structure);
+  Ray ray;
+  ray.origin = Vec3(0.0f);
+  ray.direction = Vec3(0.0f, 0.0f, -1.0f);
+  Hit hit;
+  EXPECT_FALSE(embree.tracer().closest(ray, &hit));
+  EXPECT_FALSE(embree.tracer().occluded(ray, kNone));
+}
+
+// Mean over pixels and channels of (a - b)^2 / (b^2 + 0.01), compare.py's relMSE.
+double relMse(const ImageRGB& a, const ImageRGB& b) {
+  double sum = 0;
+  for (size_t i = 0; i < a.pixels.size(); ++i) {
+    const double d = double(a.pixels[i]) - b.pixels[i];
+    sum += d * d / (double(b.pixels[i]) * b.pixels[i] + 0.01);
+  }
+  return sum / double(a.pixels.size());
+}
+
+RenderResult renderWith(CpuEngine engine, const SceneDesc& scene) {
+  SceneDesc desc = scene;
+  if (engine == CpuEngine::Embree) desc.ownBvh = OwnBvh::None;
+  const SceneData data = flattenScene(desc);
+  CpuRenderer renderer(engine);
+  renderer.setScene(data, SceneChange::Structure);
+  return renderer.render(RenderOptions{});
+}
+
+// Both engines trace the same sample streams; paths part only where a hit point differs by
+// rounding, so the images differ by far less than the noise of one seed against another.
+TEST(Embree, RendersTheSameImageAsTheOwnBvhUpToRounding) {
+  const std::string dir = std::string(CANDELA_SOURCE_DIR) + "/scenes/meshes/cornell/";
+  const std::string json = R"({"camera": {"width": 48, "height": 40, "fov": 40, "spp": 16,
+        "position": [2.78, 2.73, -8.0], "look_at": [2.78, 2.73, 0]},
+    "render": {"max_depth": 6},
+    "environment": {"color": [0.2, 0.3, 0.4]},
+    "spheres": [{"position": [1.8, 0.8, 2], "radius": 0.8, "material": {"type": "glass"}},
+                {"position": [3.8, 0.8, 3], "radius": 0.8, "material": {"type": "mirror"}},
+                {"position": [2.8, 4.5, 2.5], "radius": 0.3,
+                 "material": {"type": "emissive", "radiance": 5}}],
+    "objects": [{"file": ")" +
+                           dir + R"(white.obj", "color": [0.7, 0.7, 0.7]},
+                {"file": ")" +
+                           dir + R"(red.obj", "color": [0.6, 0.1, 0.1]},
+                {"file": ")" +
+                           dir + R"(lamp.obj", "material": {"type": "emissive",
+                 "radiance": [17, 12, 4]}}],
+    "lights": [{"position": [2.78, 5.0, 2.7], "intensity": 3}]})";
+  SceneDesc scene = parseSceneText(json, "test.json", ".");
+  const ImageRGB own = renderWith(CpuEngine::Bvh, scene).image;
+  const ImageRGB embree = renderWith(CpuEngine::Embree, scene).image;
+  scene.render.seed = 99;
+  const ImageRGB otherSeed = renderWith(CpuEngine::Bvh, scene).image;
+  const double noise = relMse(otherSeed, own);
+  EXPECT_GT(noise, 0.0);
+  EXPECT_LT(relMse(embree, own), 0.05 * noise) << "noise between seeds " << noise;
+}
+
+// The orbit example's frames (the camera moves: values; the knot turns: a refit of Embree's
+// BVH) through one resident renderer, each as a renderer built for that frame alone renders it.
+TEST(Embree, AnimationFramesRenderAsFreshBuilds) {
+  SceneDesc orbit = loadSceneFile(std::string(CANDELA_SOURCE_DIR) + "/scenes/orbit.json");
+  orbit.camera.width = 40;
+  orbit.camera.height = 30;
+  orbit.render.spp = 2;
+  orbit.ownBvh = OwnBvh::None;
+  FrameScene frames;
+  CpuRenderer resident(CpuEngine::Embree);
+  bool sawMotion = false;
+  for (uint32_t f = 0; f < 4; ++f) {
+    const SceneDesc still = sceneAtFrame(orbit, f);
+    resident.setScene(frames.prepare(still), frames.change());
+    sawMotion = sawMotion || frames.change() == SceneChange::Motion;
+    const ImageRGB image = resident.render(RenderOptions{}).image;
+    const ImageRGB fresh = renderWith(CpuEngine::Embree, still).image;
+    EXPECT_LT(relMse(image, fresh), 1e-6) << "frame " << f;
+  }
+  EXPECT_TRUE(sawMotion);
+}
+
+#endif
+
+}  // namespace
+}  // namespace candela
