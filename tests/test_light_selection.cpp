@@ -6,8 +6,8 @@
 #include <vector>
 
 #include "render/light_sample.h"
-#include "scene/light_selection.h"
 #include "render_test_util.h"
+#include "scene/light_selection.h"
 
 namespace candela {
 namespace {
@@ -19,14 +19,31 @@ SceneView viewOf(const std::vector<Light>& lights) {
   return v;
 }
 
-TEST(LightSelection, FewLightsAreEachSampled) {
+TEST(LightSelection, FewPointLightsAreEachSampled) {
+  const SceneData data = test::loadTestScene(R"({
+    "camera": {"width": 4, "height": 4, "fov": 40},
+    "lights": [{"position": [0, 1, 0], "intensity": 0},
+               {"position": [0, 1, 0], "intensity": 2},
+               {"position": [0, 5, 0], "intensity": 3}]})");
+  ASSERT_EQ(data.lights.size(), 3u);
+  EXPECT_TRUE(data.sampleEveryLight);
+  EXPECT_TRUE(data.view().sampleEveryLight);
+  for (const Light& l : data.lights) EXPECT_EQ(l.selectPmf, 1.0f);
+}
+
+// With an area light among few lights, one light is picked by power; the unlit one never.
+TEST(LightSelection, FewLightsWithAnAreaLightArePickedByPower) {
   const SceneData data = test::loadTestScene(R"({
     "camera": {"width": 4, "height": 4, "fov": 40},
     "lights": [{"position": [0, 1, 0], "intensity": 0},
                {"position": [0, 1, 0], "intensity": 2},
                {"type": "sphere", "position": [0, 5, 0], "radius": 1, "intensity": 3}]})");
   ASSERT_EQ(data.lights.size(), 3u);
-  for (const Light& l : data.lights) EXPECT_EQ(l.selectPmf, 1.0f);
+  EXPECT_FALSE(data.sampleEveryLight);
+  EXPECT_EQ(data.lights[0].selectPmf, 0.0f);
+  EXPECT_GT(data.lights[1].selectPmf, 0.0f);
+  EXPECT_GT(data.lights[2].selectPmf, 0.0f);
+  EXPECT_NEAR(data.lights[1].selectPmf + data.lights[2].selectPmf, 1.0f, 1e-6f);
 }
 
 TEST(LightSelection, ManyLightsArePickedByPowerSkippingLightsWithout) {
@@ -39,7 +56,8 @@ TEST(LightSelection, ManyLightsArePickedByPowerSkippingLightsWithout) {
   for (uint32_t i = 5; i <= kSampleEveryLightUpTo; ++i)
     lights += R"(, {"position": [0, 1, 0], "intensity": 0})";
   const SceneData data = test::loadTestScene(R"({"camera": {"width": 4, "height": 4, "fov": 40},
-                                                 "lights": [)" + lights + "]}");
+                                                 "lights": [)" +
+                                             lights + "]}");
   ASSERT_EQ(data.lights.size(), kSampleEveryLightUpTo + 1);
   // Powers (RGB sums): 0, 6, 0, 18, then nothing.
   for (size_t i = 0; i < data.lights.size(); ++i)

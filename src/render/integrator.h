@@ -64,8 +64,8 @@ CANDELA_HDI void drawLightNumbers(SampleStream& rng, const Light& light, float* 
   rng.next2DIfUsed(light.type != LightType::Point, u1, u2);
 }
 
-// Direct light at a diffuse point: from each light when there are few (kSampleEveryLightUpTo),
-// else from one picked in proportion to power.
+// Direct light at a diffuse point: from each light when the scene says so (a few point lights:
+// render/light.h, sampleEveryLight), else from one picked in proportion to power.
 template <class Tracer>
 CANDELA_HDI Vec3 estimateDirect(const SceneView& scene, const Tracer& tracer, const Material& m,
                                 const SurfacePoint& sp, const Vec3& wo, SampleStream& rng,
@@ -73,7 +73,7 @@ CANDELA_HDI Vec3 estimateDirect(const SceneView& scene, const Tracer& tracer, co
   // One dimension per light, or two for the picked one (the pick and its light's sample),
   // whatever the geometry, so the stream's layout never depends on it.
   float u1 = 0.0f, u2 = 0.0f;
-  if (scene.lightCount <= kSampleEveryLightUpTo) {
+  if (scene.sampleEveryLight) {
     Vec3 sum(0.0f);
     for (uint32_t i = 0; i < scene.lightCount; ++i) {
       drawLightNumbers(rng, scene.lights[i], &u1, &u2);

@@ -12,6 +12,7 @@ SceneView SceneData::view() const {
   CANDELA_SCENE_ARRAYS(CANDELA_VIEW_OF)
 #undef CANDELA_VIEW_OF
   v.firstTriangleLight = firstTriangleLight;
+  v.sampleEveryLight = sampleEveryLight;
   v.environment = environment;
   v.emissionReachable = !isBlack(environment.radiance);
   for (const Material& m : materials) v.emissionReachable |= m.type == MaterialType::Emissive;

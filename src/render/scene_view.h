@@ -37,6 +37,9 @@ struct SceneView : GeometryView {
   CANDELA_SHADING_ARRAYS(CANDELA_VIEW_ARRAY_FIELDS)
 
   uint32_t firstTriangleLight = 0;  // lights from here on are triangles (see lightOfPrimitive)
+  // Whether next-event estimation samples every light at each shading point rather than one
+  // picked by power (render/light.h, sampleEveryLight).
+  bool sampleEveryLight = false;
   Environment environment;
   // Whether a scattered ray can find any light: an emissive material (sphere lights included) or
   // a nonzero environment. Without, light arrives only by shadow rays to point lights, and the

@@ -163,8 +163,9 @@ void addEmitterLights(SceneData& s) {
       s.lights.push_back(light);
     }
   }
+  s.sampleEveryLight = sampleEveryLight(s.lights.data(), s.lights.size());
   std::vector<double> powers;  // only picking one light weighs them
-  if (s.lights.size() > kSampleEveryLightUpTo)
+  if (!s.sampleEveryLight)
     for (const Light& l : s.lights) powers.push_back(selectionPower(s, l));
   setLightSelection(s.lights, powers);
 }

@@ -7,7 +7,7 @@ namespace candela {
 
 void setLightSelection(std::vector<Light>& lights, const std::vector<double>& powers) {
   const size_t n = lights.size();
-  if (n <= kSampleEveryLightUpTo) {
+  if (powers.empty()) {
     for (Light& l : lights) {
       l.selectPmf = 1.0f;
       l.aliasThreshold = 1.0f;

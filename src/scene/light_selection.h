@@ -9,9 +9,9 @@
 
 namespace candela {
 
-// Sets every light's selectPmf, aliasThreshold and alias from `powers` (one per light, each
-// >= 0: the sum of its RGB power; unread, and may be empty, when every light is sampled). Lights
-// without power are never picked.
+// Sets every light's selectPmf, aliasThreshold and alias from `powers`: one per light, each >= 0
+// (the sum of its RGB power), or empty when every light is sampled (render/light.h,
+// sampleEveryLight), which makes each selectPmf 1. Lights without power are never picked.
 void setLightSelection(std::vector<Light>& lights, const std::vector<double>& powers);
 
 }  // namespace candela
