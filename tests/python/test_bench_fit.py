@@ -401,5 +401,24 @@ def test_partial_run_rewrites_only_its_docs_block(br, committed, tmp_path):
         br.write_docs(md, str(docs), begin, end, heading)
     text = docs.read_text()
     assert f'{br.BEGIN}\nmesh table\n{br.END}' in text
-    assert '## Emitter scenes (issue 17)' in text and '| cornell | cpu |' in text
+    assert '## Emitter scenes (issue 17)' in text and '| cornell | cpu, bvh |' in text
     assert [b for _, b, _, _ in br.docs_blocks(committed)] == [br.BEGIN]
+
+
+def test_engines_are_rows_of_their_own_and_the_own_bvh_time_ratio_follows_samples_per_second(br, committed):
+    res = copy.deepcopy(committed)
+    res['scenes'] = {'cornell': res['scenes']['default']}
+    sc = res['scenes']['cornell']
+    for run in sc['cpu']['all_runs']:
+        run['engine'] = 'embree'
+    sc['cpu-bvh'] = copy.deepcopy(sc['cpu'])
+    for run in sc['cpu-bvh']['all_runs']:
+        run['engine'] = 'bvh'
+    sc['cpu-bvh']['median']['samples_per_second'] = sc['cpu']['median']['samples_per_second'] / 2
+    br.validate_results(res)
+    text = br.markdown(res)
+    assert '| cornell | cpu, embree |' in text and '| cornell | cpu, bvh |' in text
+    assert 'time ratio, own BVH |' in text
+    ratio = sc['time_to_error']['ratio']
+    row = next(line for line in text.splitlines() if line.startswith('| cornell | 16 |'))
+    assert row.rstrip(' |').endswith(br.fmt(ratio * 2))

@@ -113,7 +113,7 @@ void EmbreeScene::build(const SceneData& scene) {
 
   scene_ = rtcNewScene(device_);
   rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION);
-  rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_HIGH);
+  rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_MEDIUM);
   sphereArray_ = scene.spheres.data();
   sphereCount_ = uint32_t(scene.spheres.size());
 
