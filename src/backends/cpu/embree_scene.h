@@ -1,9 +1,10 @@
 // EmbreeScene: a scene's geometry as Embree holds it, kept in step with the frames of an
 // animation; tracer() is what the integrator traces with (backends/cpu/embree_tracer.h).
 //
-// Embree builds its own BVH (binned SAH, RTC_BUILD_QUALITY_MEDIUM: docs/performance.md) over a copy of
-// the vertices and the scene's own triangle array, shared. A frame whose primitives moved
-// (SceneChange::Motion) rewrites the vertices and refits that BVH; a new structure rebuilds it.
+// Embree builds its own BVH (binned SAH at RTC_BUILD_QUALITY_MEDIUM: docs/performance.md) over
+// a copy of the vertices and the scene's own triangle array, shared. A frame whose primitives
+// moved (SceneChange::Motion) rewrites the vertices and refits that BVH; a new structure
+// rebuilds it.
 // Embree picks the widest SIMD the CPU has at run time (SSE2 up to AVX-512).
 #pragma once
 
