@@ -13,15 +13,16 @@ CANDELA_HDI bool isFinite(const Vec3& v) {
   return fabsf(v.x) <= kInfinity && fabsf(v.y) <= kInfinity && fabsf(v.z) <= kInfinity;
 }
 
-// Sum of the radiance of samples [sampleBegin, sampleBegin + sampleCount) of pixel (x, y).
-// Each sample's random numbers depend only on (seed, pixel, sample index, dimension) and spp.
-// `tracer` answers the ray queries (geometry/bvh_tracer.h).
+// `sum` plus the radiance of samples [sampleBegin, sampleBegin + sampleCount) of pixel (x, y),
+// added one by one in index order (so a pixel rendered in several calls, each continuing the
+// last one's sum, is bit-identical to one call). Each sample's random numbers depend only on
+// (seed, pixel, sample index, dimension) and spp. `tracer` answers the ray queries
+// (geometry/bvh_tracer.h).
 template <class Tracer>
 CANDELA_HDI Vec3 renderPixelSamples(const SceneView& scene, const Tracer& tracer, uint32_t x,
                                     uint32_t y, uint32_t sampleBegin, uint32_t sampleCount,
-                                    RayCounters& counters) {
+                                    RayCounters& counters, Vec3 sum = Vec3(0.0f)) {
   const uint64_t pixelIndex = uint64_t(y) * scene.camera.width + x;
-  Vec3 sum(0.0f);
   for (uint32_t s = sampleBegin; s < sampleBegin + sampleCount; ++s) {
     SampleStream rng(scene.settings.seed, pixelIndex, s, scene.settings.spp);
     float jx = 0.5f, jy = 0.5f, lensU = 0.5f, lensV = 0.5f;

@@ -21,6 +21,9 @@ namespace candela {
 namespace {
 
 constexpr uint32_t kTileSize = 16;
+// Samples of one pixel between two looks at the cancel flag, so that Ctrl-C stops a render of
+// very many samples per pixel within moments, not at the end of its tile.
+constexpr uint32_t kSamplesPerCancelCheck = 64;
 
 template <class Tracer>
 RenderResult renderTiles(const SceneView& scene, const Tracer& tracer,
@@ -44,30 +47,41 @@ RenderResult renderTiles(const SceneView& scene, const Tracer& tracer,
   uint64_t pixelsDone = 0;
   const double pixelsTotal = double(width) * height;
   std::atomic<bool> cancelled{false};
+  auto stopAsked = [&] {
+    return options.cancel && options.cancel->load(std::memory_order_relaxed);
+  };
+
+  // Renders one tile; false when a cancel stopped it.
+  auto renderTile = [&](uint32_t tile, RayCounters& local) {
+    const uint32_t x0 = (tile % tilesX) * kTileSize, y0 = (tile / tilesX) * kTileSize;
+    const uint32_t x1 = std::min(x0 + kTileSize, width), y1 = std::min(y0 + kTileSize, height);
+    for (uint32_t y = y0; y < y1; ++y) {
+      for (uint32_t x = x0; x < x1; ++x) {
+        Vec3 sum(0.0f);
+        for (uint32_t done = 0; done < samples.count; done += kSamplesPerCancelCheck) {
+          if (stopAsked()) return false;
+          const uint32_t count = std::min(kSamplesPerCancelCheck, samples.count - done);
+          sum = renderPixelSamples(scene, tracer, x, y, samples.begin + done, count, local, sum);
+        }
+        result.image.set(x, y, sum / float(samples.count));
+      }
+    }
+    if (options.progress) {
+      std::lock_guard<std::mutex> lock(progressMutex);
+      pixelsDone += uint64_t(x1 - x0) * (y1 - y0);
+      options.progress(double(pixelsDone) / pixelsTotal);
+    }
+    return true;
+  };
 
   // One tile per task: tiles are independent, so the result never depends on the schedule.
   tbb::parallel_for(tbb::blocked_range<uint32_t>(0, tilesX * tilesY, 1),
                     [&](const tbb::blocked_range<uint32_t>& range) {
                       RayCounters& local = counters.local();
                       for (uint32_t tile = range.begin(); tile != range.end(); ++tile) {
-                        if (options.cancel && options.cancel->load(std::memory_order_relaxed)) {
+                        if (!renderTile(tile, local)) {
                           cancelled = true;
                           return;
-                        }
-                        const uint32_t x0 = (tile % tilesX) * kTileSize,
-                                       y0 = (tile / tilesX) * kTileSize;
-                        const uint32_t x1 = std::min(x0 + kTileSize, width),
-                                       y1 = std::min(y0 + kTileSize, height);
-                        for (uint32_t y = y0; y < y1; ++y)
-                          for (uint32_t x = x0; x < x1; ++x)
-                            result.image.set(x, y,
-                                             renderPixelSamples(scene, tracer, x, y, samples.begin,
-                                                                samples.count, local) /
-                                                 float(samples.count));
-                        if (options.progress) {
-                          std::lock_guard<std::mutex> lock(progressMutex);
-                          pixelsDone += uint64_t(x1 - x0) * (y1 - y0);
-                          options.progress(double(pixelsDone) / pixelsTotal);
                         }
                       }
                     });
