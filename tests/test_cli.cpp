@@ -83,6 +83,12 @@ class CliTest : public ::testing::Test {
     return result;
   }
 
+  // With so many samples that a render would last hours: an error that comes back within the
+  // minute was found before rendering (`timeout` ends the run with 124 otherwise).
+  RunResult runEndless(const std::string& args) const {
+    return run(args + " --backend cpu --spp 1000000000", "timeout 60");
+  }
+
   fs::path dir_;
 };
 
@@ -503,6 +509,43 @@ TEST_F(CliTest, BadSceneInASequenceIsReportedBeforeAnythingRenders) {
             "candela: error: anim.json: animation: a scene with an animation block is rendered "
             "on its own, not in a sequence of scene files\n");
   EXPECT_FALSE(fs::exists(path("f")));
+}
+
+// Frames and the video are checked against the files the scenes read before anything renders.
+TEST_F(CliTest, SequenceNeverOverwritesItsInputsWithFramesOrTheVideo) {
+  writeFile("a.json", kTinyScene);
+  writeFile("frame_0001.png", kTinyScene);  // a scene file that is named like a frame
+  RunResult r = runEndless("render a.json frame_0001.png -o ./");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_EQ(r.err,
+            "candela: error: frame_0001.png: frame 1 of the sequence would overwrite the scene "
+            "file, which the render reads\n");
+  EXPECT_FALSE(fs::exists(path("frame_0000.png")));
+
+  r = runEndless("render a.json a.json -o f/ --video a.json");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_EQ(r.err,
+            "candela: error: a.json: --video would overwrite the scene file a.json, which the "
+            "render reads\n");
+  r = runEndless("render a.json a.json -o f/ --video f/frame_0001.png");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_EQ(r.err,
+            "candela: error: f/frame_0001.png: --video would overwrite frame 1 of the sequence\n");
+  EXPECT_FALSE(fs::exists(path("f")));
+  EXPECT_EQ(slurp(path("a.json")), kTinyScene);
+}
+
+TEST_F(CliTest, UnwritableFrameFolderIsFoundBeforeRendering) {
+  writeFile("a.json", kTinyScene);
+  writeFile("plain", "a file where the frame folder should be");
+  RunResult r = runEndless("render a.json a.json -o plain/");
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_EQ(r.err,
+            "candela: error: plain/: cannot write the frames there: 'plain' is not a folder\n");
+  r = runEndless("render a.json a.json -o plain/f/");
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_EQ(r.err,
+            "candela: error: plain/f/: cannot write the frames there: 'plain' is not a folder\n");
 }
 
 TEST_F(CliTest, VideoWithoutFfmpegKeepsTheFramesAndSaysHowToInstallIt) {
