@@ -18,6 +18,7 @@
 #include <sstream>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include "backends/renderer.h"
 #include "image/image_io.h"
@@ -557,6 +558,30 @@ TEST_F(CliTest, VideoWithoutFfmpegKeepsTheFramesAndSaysHowToInstallIt) {
   EXPECT_TRUE(fs::exists(path("f/frame_0000.png")));
   EXPECT_TRUE(fs::exists(path("f/frame_0001.png")));
   EXPECT_FALSE(fs::exists(path("v.mp4")));
+}
+
+// Names that ffmpeg would read as an option ('-'), a protocol (':') or a frame pattern ('%') reach
+// it as file names. A stand-in ffmpeg on PATH records its arguments.
+TEST_F(CliTest, VideoNamesReachFfmpegAsFileNames) {
+  fs::create_directories(path("bin"));
+  writeFile("bin/ffmpeg",
+            "#!/bin/sh\nfor a in \"$@\"; do printf '%s\\n' \"$a\"; done > args.txt\n");
+  fs::permissions(path("bin/ffmpeg"), fs::perms::owner_all);
+  writeFile("anim.json", animatedScene(2, ""));
+  const RunResult r = run("render anim.json -o '-a%04d:b/' --video=-v:1.mp4 --backend cpu -q",
+                          "PATH='" + path("bin").string() + "':/usr/bin:/bin");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  std::vector<std::string> args;
+  std::istringstream lines(slurp(path("args.txt")));
+  for (std::string line; std::getline(lines, line);) args.push_back(line);
+  ASSERT_FALSE(args.empty());
+  const auto input = std::find(args.begin(), args.end(), "-i");
+  ASSERT_NE(input, args.end());
+  ASSERT_NE(input + 1, args.end());
+  EXPECT_EQ(input[1], "file:-a%%04d:b/frame_%04d.png");
+  EXPECT_NE(std::find(args.begin(), args.end(), "sequence"), args.end());  // -pattern_type
+  EXPECT_EQ(args.back(), "file:-v:1.mp4");
+  EXPECT_TRUE(fs::exists(path("-a%04d:b/frame_0001.png")));
 }
 
 TEST_F(CliTest, VideoHasOneFramePerRenderedFrame) {

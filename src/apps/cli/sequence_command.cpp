@@ -237,7 +237,8 @@ int runSequence(const RenderCommandOptions& options, std::vector<SceneDesc> scen
 
   if (!options.video.empty()) {
     VideoJob job;
-    job.pattern = (fs::path(dir) / ("frame_%0" + std::to_string(digits) + "d.png")).string();
+    job.folder = dir;
+    job.digits = digits;
     job.first = range.begin;
     job.count = range.end - range.begin;
     job.fps = options.fps ? *options.fps : (animated ? scenes[0].animation->fps : 24.0);
