@@ -532,6 +532,9 @@ TEST_F(CliTest, SequenceNeverOverwritesItsInputsWithFramesOrTheVideo) {
   EXPECT_EQ(r.exitCode, 2);
   EXPECT_EQ(r.err,
             "candela: error: f/frame_0001.png: --video would overwrite frame 1 of the sequence\n");
+  r = runEndless("render a.json a.json -o f/ --video f");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_EQ(r.err, "candela: error: f: --video names the folder of the frames\n");
   EXPECT_FALSE(fs::exists(path("f")));
   EXPECT_EQ(slurp(path("a.json")), kTinyScene);
 }

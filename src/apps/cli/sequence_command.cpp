@@ -110,6 +110,8 @@ void checkSequenceOutputs(const RenderCommandOptions& options, const std::vector
                                      " of the sequence would overwrite " + in.kind +
                                      ", which the render reads");
   if (options.video.empty()) return;
+  if (sameFile(options.video, dir))
+    throw CliError(kExitUsage, options.video + ": --video names the folder of the frames");
   checkOutputFiles({{"--video", options.video}}, inputs);
   if (const std::optional<uint32_t> frame = frameOf(options.video, dir, range, digits, format))
     throw CliError(kExitUsage, options.video + ": --video would overwrite frame " +
