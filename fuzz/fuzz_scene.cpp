@@ -16,7 +16,7 @@
 namespace candela::fuzz {
 namespace {
 
-// A corner and the centre of the image, one sample each, with paths cut at a few bounces:
+// Two opposite corners and the centre of the image, one sample each, paths cut at a few bounces:
 // enough to reach traversal, materials and lights without making slow inputs of long paths.
 void traceSomePixels(SceneData& scene) {
   scene.settings.maxDepth = std::min<uint32_t>(scene.settings.maxDepth, 4);
