@@ -18,6 +18,7 @@
 #include <sstream>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include "backends/renderer.h"
 #include "image/image_io.h"
@@ -81,6 +82,12 @@ class CliTest : public ::testing::Test {
     fs::remove(path("stdout.txt"));
     fs::remove(path("stderr.txt"));
     return result;
+  }
+
+  // With so many samples that a render would last hours: an error that comes back within the
+  // minute was found before rendering (`timeout` ends the run with 124 otherwise).
+  RunResult runEndless(const std::string& args) const {
+    return run(args + " --backend cpu --spp 1000000000", "timeout 60");
   }
 
   fs::path dir_;
@@ -505,6 +512,46 @@ TEST_F(CliTest, BadSceneInASequenceIsReportedBeforeAnythingRenders) {
   EXPECT_FALSE(fs::exists(path("f")));
 }
 
+// Frames and the video are checked against the files the scenes read before anything renders.
+TEST_F(CliTest, SequenceNeverOverwritesItsInputsWithFramesOrTheVideo) {
+  writeFile("a.json", kTinyScene);
+  writeFile("frame_0001.png", kTinyScene);  // a scene file that is named like a frame
+  RunResult r = runEndless("render a.json frame_0001.png -o ./");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_EQ(r.err,
+            "candela: error: frame_0001.png: frame 1 of the sequence would overwrite the scene "
+            "file, which the render reads\n");
+  EXPECT_FALSE(fs::exists(path("frame_0000.png")));
+
+  r = runEndless("render a.json a.json -o f/ --video a.json");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_EQ(r.err,
+            "candela: error: a.json: --video would overwrite the scene file a.json, which the "
+            "render reads\n");
+  r = runEndless("render a.json a.json -o f/ --video f/frame_0001.png");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_EQ(r.err,
+            "candela: error: f/frame_0001.png: --video would overwrite frame 1 of the sequence\n");
+  r = runEndless("render a.json a.json -o f/ --video f");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_EQ(r.err, "candela: error: f: --video names the folder of the frames\n");
+  EXPECT_FALSE(fs::exists(path("f")));
+  EXPECT_EQ(slurp(path("a.json")), kTinyScene);
+}
+
+TEST_F(CliTest, UnwritableFrameFolderIsFoundBeforeRendering) {
+  writeFile("a.json", kTinyScene);
+  writeFile("plain", "a file where the frame folder should be");
+  RunResult r = runEndless("render a.json a.json -o plain/");
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_EQ(r.err,
+            "candela: error: plain/: cannot write the frames there: 'plain' is not a folder\n");
+  r = runEndless("render a.json a.json -o plain/f/");
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_EQ(r.err,
+            "candela: error: plain/f/: cannot write the frames there: 'plain' is not a folder\n");
+}
+
 TEST_F(CliTest, VideoWithoutFfmpegKeepsTheFramesAndSaysHowToInstallIt) {
   writeFile("anim.json", animatedScene(2, ""));
   const RunResult r = run("render anim.json -o f/ --video v.mp4 --backend cpu", "PATH=/nowhere");
@@ -514,6 +561,30 @@ TEST_F(CliTest, VideoWithoutFfmpegKeepsTheFramesAndSaysHowToInstallIt) {
   EXPECT_TRUE(fs::exists(path("f/frame_0000.png")));
   EXPECT_TRUE(fs::exists(path("f/frame_0001.png")));
   EXPECT_FALSE(fs::exists(path("v.mp4")));
+}
+
+// Names that ffmpeg would read as an option ('-'), a protocol (':') or a frame pattern ('%') reach
+// it as file names. A stand-in ffmpeg on PATH records its arguments.
+TEST_F(CliTest, VideoNamesReachFfmpegAsFileNames) {
+  fs::create_directories(path("bin"));
+  writeFile("bin/ffmpeg",
+            "#!/bin/sh\nfor a in \"$@\"; do printf '%s\\n' \"$a\"; done > args.txt\n");
+  fs::permissions(path("bin/ffmpeg"), fs::perms::owner_all);
+  writeFile("anim.json", animatedScene(2, ""));
+  const RunResult r = run("render anim.json -o '-a%04d:b/' --video=-v:1.mp4 --backend cpu -q",
+                          "PATH='" + path("bin").string() + "':/usr/bin:/bin");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  std::vector<std::string> args;
+  std::istringstream lines(slurp(path("args.txt")));
+  for (std::string line; std::getline(lines, line);) args.push_back(line);
+  ASSERT_FALSE(args.empty());
+  const auto input = std::find(args.begin(), args.end(), "-i");
+  ASSERT_NE(input, args.end());
+  ASSERT_NE(input + 1, args.end());
+  EXPECT_EQ(input[1], "file:-a%%04d:b/frame_%04d.png");
+  EXPECT_NE(std::find(args.begin(), args.end(), "sequence"), args.end());  // -pattern_type
+  EXPECT_EQ(args.back(), "file:-v:1.mp4");
+  EXPECT_TRUE(fs::exists(path("-a%04d:b/frame_0001.png")));
 }
 
 TEST_F(CliTest, VideoHasOneFramePerRenderedFrame) {

@@ -4,12 +4,14 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "backends/cpu/cpu_engine.h"
 #include "render/scene_view.h"
@@ -45,9 +47,10 @@ class CliStatsTest : public ::testing::Test {
   }
   void TearDown() override { fs::remove_all(dir_); }
 
-  int run(const std::string& args) const {
-    const std::string command = "cd '" + dir_.string() + "' && '" + CANDELA_BINARY + "' render " +
-                                args + " > stdout.txt 2> stderr.txt < /dev/null";
+  // `shell` runs first in the same shell (ulimit, trap).
+  int run(const std::string& args, const std::string& shell = "") const {
+    const std::string command = "cd '" + dir_.string() + "' && " + shell + " '" + CANDELA_BINARY +
+                                "' render " + args + " > stdout.txt 2> stderr.txt < /dev/null";
     const int status = std::system(command.c_str());
     return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   }
@@ -64,6 +67,30 @@ class CliStatsTest : public ::testing::Test {
     std::stringstream text;
     text << in.rdbuf();
     return text.str();
+  }
+
+  // With so many samples that a render would last hours: an error that comes back within the
+  // minute was found before rendering (`timeout` ends the run with 124 otherwise).
+  int runEndless(const std::string& args) const {
+    return run(args + " --spp 1000000000", "timeout 60");
+  }
+
+  std::string read(const std::string& name) const {
+    std::ifstream in(dir_ / name, std::ios::binary);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+  }
+
+  // The entries of the test folder other than the shell's redirections.
+  std::vector<std::string> files() const {
+    std::vector<std::string> names;
+    for (const fs::directory_entry& e : fs::directory_iterator(dir_)) {
+      const std::string name = e.path().filename().string();
+      if (name != "stdout.txt" && name != "stderr.txt") names.push_back(name);
+    }
+    std::sort(names.begin(), names.end());
+    return names;
   }
 
   fs::path dir_;
@@ -192,6 +219,73 @@ TEST_F(CliStatsTest, StatsWithASequenceIsAUsageError) {
   EXPECT_EQ(run("scene.json scene.json -o frames/ -q --stats s.json"), 2);
   EXPECT_NE(stderrText().find("--stats"), std::string::npos);
   EXPECT_FALSE(fs::exists(dir_ / "s.json"));
+}
+
+TEST_F(CliStatsTest, StatsNeverOverwritesAFileTheRenderReads) {
+  std::ofstream(dir_ / "quad.obj") << "mtllib m.mtl\n" << kQuad;
+  std::ofstream(dir_ / "m.mtl") << "newmtl grey\nKd 0.5 0.5 0.5\n";
+  fs::create_directory(dir_ / "sub");
+  fs::create_symlink("scene.json", dir_ / "link.json");
+  const std::string scene = read("scene.json");
+  const std::pair<const char*, const char*> cases[] = {
+      {"scene.json", "the scene file scene.json"},
+      {"./scene.json", "the scene file scene.json"},
+      {"sub/../scene.json", "the scene file scene.json"},
+      {"link.json", "the scene file scene.json"},
+      {"quad.obj", "the mesh quad.obj"},
+      {"m.mtl", "the material library m.mtl"}};
+  for (const auto& [stats, input] : cases) {
+    EXPECT_EQ(runEndless(std::string("scene.json -o out.pfm -q --stats ") + stats), 2) << stats;
+    EXPECT_EQ(stderrText(), std::string("candela: error: ") + stats + ": --stats would overwrite " +
+                                input + ", which the render reads\n");
+  }
+  EXPECT_EQ(read("scene.json"), scene);
+  EXPECT_FALSE(fs::exists(dir_ / "out.pfm"));
+}
+
+TEST_F(CliStatsTest, StatsAndImageNeverNameTheSameFile) {
+  for (const char* stats : {"out.png", "./out.png"}) {
+    EXPECT_EQ(runEndless(std::string("scene.json -o out.png -q --stats ") + stats), 2);
+    EXPECT_EQ(stderrText(), std::string("candela: error: ") + stats +
+                                ": -o and --stats name the same file; give each its own\n");
+  }
+  EXPECT_FALSE(fs::exists(dir_ / "out.png"));
+}
+
+TEST_F(CliStatsTest, OutputsThatCannotBeWrittenAreFoundBeforeRendering) {
+  std::ofstream(dir_ / "plain") << "a file where a folder should be";
+  fs::create_directory(dir_ / "sub");
+  const std::pair<const char*, const char*> cases[] = {
+      {"plain/s.json", "'plain' is not a folder"},
+      {"sub", "is a folder, not a file"},
+      {"/dev/null", "is a device, pipe or socket, not a regular file"}};
+  for (const auto& [stats, reason] : cases) {
+    EXPECT_EQ(runEndless(std::string("scene.json -o out.pfm -q --stats ") + stats), 1);
+    EXPECT_EQ(stderrText(),
+              std::string("candela: error: ") + stats + ": cannot write there: " + reason + "\n");
+  }
+  EXPECT_EQ(runEndless("scene.json -o plain/out.pfm -q"), 1);
+  EXPECT_EQ(stderrText(),
+            "candela: error: plain/out.pfm: cannot write there: 'plain' is not a folder\n");
+  EXPECT_TRUE(fs::is_character_file("/dev/null"));
+  EXPECT_FALSE(fs::exists(dir_ / "out.pfm"));
+}
+
+// The image is written in full first, but renamed into place only once the statistics are too.
+TEST_F(CliStatsTest, AFailedStatsWriteLeavesNoImage) {
+  // 512-byte files at most: the 16x12 PNG fits, the statistics do not. SIGXFSZ ignored, so the
+  // write fails with EFBIG instead of killing the process.
+  EXPECT_EQ(run("scene.json -o out.png -q --stats s.json", "trap '' XFSZ; ulimit -f 1;"), 1);
+  EXPECT_EQ(stderrText(), "candela: error: s.json: write failed: File too large\n");
+  EXPECT_EQ(files(), (std::vector<std::string>{"quad.obj", "scene.json"}));
+}
+
+TEST_F(CliStatsTest, StatsThroughALinkReplaceTheFileItPointsTo) {
+  std::ofstream(dir_ / "real.json") << "old";
+  fs::create_symlink("real.json", dir_ / "link.json");
+  ASSERT_EQ(run("scene.json -o out.png -q --stats link.json"), 0) << stderrText();
+  EXPECT_TRUE(fs::is_symlink(dir_ / "link.json"));
+  EXPECT_EQ(readJson("real.json")["width"], 16);
 }
 
 }  // namespace

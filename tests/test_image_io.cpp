@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "image/atomic_file.h"
 #include "image/image_io.h"
 
 #define STB_IMAGE_IMPLEMENTATION
@@ -220,6 +221,27 @@ TEST_F(ImageIoTest, NoTemporaryFileAfterSuccess) {
   writeImage(path("a.pfm"), testImage(5, 5), {});  // replacing an existing file
   EXPECT_EQ(listing(), (std::vector<std::string>{"a.exr", "a.pfm", "a.png"}));
   EXPECT_EQ(readImage(path("a.pfm")).width, 5u);
+}
+
+// Files that appear together or not at all: nothing is in place before commit, and a staged file
+// that is never committed leaves nothing behind.
+TEST_F(ImageIoTest, StagedFilesAppearOnlyWhenCommitted) {
+  {
+    StagedFile a(path("a.json"), "{}");
+    StagedFile b(path("b.png"), "png");
+    EXPECT_FALSE(fs::exists(path("a.json")));
+    a.commit();
+    EXPECT_TRUE(fs::exists(path("a.json")));
+  }  // b is dropped uncommitted
+  EXPECT_EQ(listing(), std::vector<std::string>{"a.json"});
+}
+
+TEST_F(ImageIoTest, WritingThroughALinkKeepsTheLink) {
+  writeFileAtomically(path("real.txt"), "old");
+  fs::create_symlink("real.txt", path("link.txt"));
+  writeFileAtomically(path("link.txt"), "new");
+  EXPECT_TRUE(fs::is_symlink(path("link.txt")));
+  EXPECT_EQ(readFileBytes(path("real.txt")), "new");
 }
 
 TEST_F(ImageIoTest, UnsupportedExtensionIsRejected) {

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <stdlib.h>
 
+#include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <filesystem>
@@ -10,6 +11,7 @@
 #include <string>
 
 #include "scene/read/obj_loader.h"
+#include "scene/read/polygon_triangulation.h"
 #include "scene/scene_error.h"
 
 namespace candela {
@@ -87,6 +89,47 @@ TEST_F(ObjLoader, QuadBecomesTwoTrianglesWithTheSameWinding) {
 TEST_F(ObjLoader, PentagonBecomesThreeTriangles) {
   const MeshDesc mesh = load("v 0 0 0\nv 1 0 0\nv 1.5 1 0\nv 0.5 2 0\nv -0.5 1 0\nf 1 2 3 4 5\n");
   EXPECT_EQ(mesh.triangles.size(), 3u);
+}
+
+// Corners on the unit circle; every `dent`-th one (if any) pulled in to make the face concave.
+std::string circleFace(size_t corners, size_t dent) {
+  std::string text;
+  for (size_t i = 0; i < corners; ++i) {
+    const double angle = 2 * 3.14159265358979323846 * double(i) / double(corners);
+    const double r = dent != 0 && i % dent == 0 ? 0.5 : 1.0;
+    text += "v " + std::to_string(r * std::cos(angle)) + " " + std::to_string(r * std::sin(angle)) +
+            " 0\n";
+  }
+  text += "f";
+  for (size_t i = 0; i < corners; ++i) text += " " + std::to_string(i + 1);
+  return text + "\n";
+}
+
+TEST_F(ObjLoader, ConcavePolygonKeepsItsCornersReferencesAndWinding) {
+  // An arrow head, counter-clockwise from +z, with relative indices and one normal per corner.
+  const MeshDesc mesh = load(
+      "v 0 0 0\nv 2 1 0\nv 0 2 0\nv 0.5 1 0\nv 1 1 0\nvn 0 0 1\nf -5//1 -4//1 -3//1 -2//1 -1//1\n");
+  ASSERT_EQ(mesh.triangles.size(), 3u);
+  for (const MeshTriangle& t : mesh.triangles) {
+    const Vec3 n = cross(mesh.positions[t.v[1]] - mesh.positions[t.v[0]],
+                         mesh.positions[t.v[2]] - mesh.positions[t.v[0]]);
+    EXPECT_GE(n.z, 0) << "counter-clockwise seen from +z, as written";
+    for (int i = 0; i < 3; ++i) EXPECT_EQ(t.n[i], 0);
+  }
+}
+
+// A face of a million corners took tinyobjloader minutes and came out as no face at all.
+TEST_F(ObjLoader, HugeConvexFaceIsTriangulated) {
+  const MeshDesc mesh = load(circleFace(1000000, 0));
+  EXPECT_EQ(mesh.triangles.size(), 999998u);
+}
+
+TEST_F(ObjLoader, HugeConcaveFaceIsRefusedWithItsLine) {
+  EXPECT_EQ(load(circleFace(kMaxConcaveFaceCorners, 2)).triangles.size(),
+            kMaxConcaveFaceCorners - 2);
+  EXPECT_EQ(error(circleFace(kMaxConcaveFaceCorners + 1, 2)),
+            "m.obj:10002: a concave face of 10001 corners; a face that is not convex may have at "
+            "most 10000 (split it into smaller faces)");
 }
 
 TEST_F(ObjLoader, NegativeIndicesCountBackFromTheLatestVertex) {

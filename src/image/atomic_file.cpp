@@ -49,10 +49,19 @@ bool writeAndSync(std::FILE* file, const std::string& bytes) {
   return true;
 }
 
+// The file a symbolic link points to, so that the rename replaces that file and keeps the link.
+std::string followLink(const std::string& path) {
+  std::error_code error;
+  if (!fs::is_symlink(path, error)) return path;
+  const fs::path target = fs::weakly_canonical(path, error);
+  return error ? path : target.string();
+}
+
 }  // namespace
 
-void writeFileAtomically(const std::string& path, const std::string& bytes) {
-  const fs::path target(path);
+StagedFile::StagedFile(const std::string& path, const std::string& bytes)
+    : path_(path), target_(followLink(path)) {
+  const fs::path target(target_);
   if (target.filename().empty()) fail(path, "not a file name");
   const fs::path dir = target.parent_path();
   std::error_code ec;
@@ -70,11 +79,25 @@ void writeFileAtomically(const std::string& path, const std::string& bytes) {
     std::remove(temp.c_str());
     fail(path, std::string("write failed: ") + std::strerror(err));
   }
-  if (std::rename(temp.c_str(), path.c_str()) != 0) {
+  temp_ = temp;
+}
+
+StagedFile::~StagedFile() {
+  if (!temp_.empty()) std::remove(temp_.c_str());
+}
+
+void StagedFile::commit() {
+  if (std::rename(temp_.c_str(), target_.c_str()) != 0) {
     const int err = errno;
-    std::remove(temp.c_str());
-    fail(path, std::string("cannot replace the file: ") + std::strerror(err));
+    std::remove(temp_.c_str());
+    temp_.clear();
+    fail(path_, std::string("cannot replace the file: ") + std::strerror(err));
   }
+  temp_.clear();
+}
+
+void writeFileAtomically(const std::string& path, const std::string& bytes) {
+  StagedFile(path, bytes).commit();
 }
 
 size_t removeStaleTemporaryFiles(const std::string& dir) {

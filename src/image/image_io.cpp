@@ -47,6 +47,10 @@ bool isSupportedImagePath(const std::string& path) {
 }
 
 void writeImage(const std::string& path, const ImageRGB& image, const OutputDesc& output) {
+  writeFileAtomically(path, encodeImage(path, image, output));
+}
+
+std::string encodeImage(const std::string& path, const ImageRGB& image, const OutputDesc& output) {
   const ImageFormat format = formatOf(path);
   if (format == ImageFormat::Unknown || format == ImageFormat::Hdr)
     unsupported(path, ".png, .exr or .pfm");
@@ -73,7 +77,7 @@ void writeImage(const std::string& path, const ImageRGB& image, const OutputDesc
   } catch (const ImageWriteError& e) {
     throw ImageWriteError(path + ": " + e.what());
   }
-  writeFileAtomically(path, bytes);
+  return bytes;
 }
 
 bool isCompleteImageFile(const std::string& path) {

@@ -22,6 +22,9 @@ bool isSupportedImagePath(const std::string& path);
 // Throws ImageWriteError (naming the path and the reason) on failure; leaves no partial file.
 void writeImage(const std::string& path, const ImageRGB& image, const OutputDesc& output);
 
+// The bytes writeImage writes, in the format of `path`'s extension; throws ImageWriteError.
+std::string encodeImage(const std::string& path, const ImageRGB& image, const OutputDesc& output);
+
 // Reads .exr, .pfm and Radiance .hdr files as linear float RGB (environment maps, tests and
 // tools); throws ImageWriteError (the image module's one error type, naming the path) on failure.
 ImageRGB readImage(const std::string& path);

@@ -42,6 +42,7 @@ struct MeshDesc {
   std::vector<Vec3> normals;              // from the file's `vn`; may be empty
   std::vector<MeshTriangle> triangles;
   std::vector<Material> materials;  // from the MTL (Kd as diffuse), else one diffuse 0.8
+  std::vector<std::string> materialFiles;  // the MTL files read, beside the OBJ file
 };
 
 struct ObjectDesc {

@@ -2,8 +2,10 @@
 // output path, apply the command-line overrides, render with a progress bar and Ctrl-C support,
 // write the image, report) or hand the scenes to the sequence renderer.
 //
-// Nothing is written to the output path unless the render completes: every check that can fail
-// runs before rendering, and the image file is replaced atomically.
+// Nothing is written unless the render completes: every check that can fail runs before rendering
+// (output_check.h: no output replaces an input or another output, and each can be written), and
+// the image and the --stats file are both written in full under temporary names beside their
+// targets before either is renamed into place, so a failure leaves neither.
 #include "apps/cli/render_command.h"
 
 #include <tbb/task_arena.h>
@@ -12,14 +14,17 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <utility>
 
 #include "apps/cli/cli_error.h"
 #include "apps/cli/interrupt.h"
+#include "apps/cli/output_check.h"
 #include "apps/cli/progress_bar.h"
 #include "apps/cli/sequence_command.h"
 #include "apps/cli/stats_writer.h"
 #include "apps/cli/summary.h"
+#include "image/atomic_file.h"
 #include "image/image_io.h"
 #include "scene/flatten.h"
 #include "scene/read/scene_loader.h"
@@ -164,6 +169,10 @@ int renderStill(const RenderCommandOptions& options, SceneDesc desc, double load
   const std::string& sceneFile = options.scenes[0];
   const std::string output = options.output.empty() ? defaultOutputPath(sceneFile) : options.output;
   checkOutputPath(output);
+  std::vector<OutputFile> outputs = {
+      {options.output.empty() ? "the default output" : "-o", output}};
+  if (!options.stats.empty()) outputs.push_back({"--stats", options.stats});
+  checkOutputFiles(outputs, inputFiles({desc}));
   std::string backendNote;
   const Backend backend = chooseBackend(options.backend, &backendNote);
   const CpuEngine engine = chooseCpuEngine(options);
@@ -195,7 +204,8 @@ int renderStill(const RenderCommandOptions& options, SceneDesc desc, double load
     return kExitInterrupted;
   }
   createParentDirectories(output);
-  writeImage(output, result.image, desc.output);
+  StagedFile image(output, encodeImage(output, result.image, desc.output));
+  std::optional<StagedFile> stats;
   if (!options.stats.empty()) {
     RenderStats info;
     info.scene = sceneFile;
@@ -206,8 +216,10 @@ int renderStill(const RenderCommandOptions& options, SceneDesc desc, double load
     info.flattenSeconds = flattenSeconds;
     info.acceleration = renderer->acceleration();
     createParentDirectories(options.stats);
-    writeRenderStats(options.stats, info, scene, result);
+    stats.emplace(options.stats, renderStatsJson(info, scene, result));
   }
+  image.commit();
+  if (stats) stats->commit();
   if (!options.quiet)
     std::printf("%s\n", renderSummary(output, scene.settings.spp, result).c_str());
   return kExitOk;

@@ -5,9 +5,11 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <optional>
 
 #include "apps/cli/cli_error.h"
 #include "apps/cli/interrupt.h"
+#include "apps/cli/output_check.h"
 #include "apps/cli/progress_bar.h"
 #include "apps/cli/render_command.h"
 #include "apps/cli/summary.h"
@@ -73,6 +75,49 @@ std::string framePath(const std::string& dir, uint32_t frame, int digits,
   return (fs::path(dir) / name).string();
 }
 
+// The frame that `file` is, when it is one of the frames [range) that this run writes in `dir`.
+std::optional<uint32_t> frameOf(const std::string& file, const std::string& dir, FrameRange range,
+                                int digits, const std::string& format) {
+  const fs::path path(file);
+  const std::string name = path.filename().string();
+  const std::string prefix = "frame_", suffix = "." + format;
+  if (name.size() != prefix.size() + size_t(digits) + suffix.size() ||
+      name.compare(0, prefix.size(), prefix) != 0 ||
+      name.compare(name.size() - suffix.size(), suffix.size(), suffix) != 0)
+    return std::nullopt;
+  const std::string number = name.substr(prefix.size(), size_t(digits));
+  if (number.find_first_not_of("0123456789") != std::string::npos) return std::nullopt;
+  const uint32_t frame = uint32_t(std::stoul(number));
+  if (frame < range.begin || frame >= range.end) return std::nullopt;
+  const fs::path folder = path.parent_path().empty() ? fs::path(".") : path.parent_path();
+  if (!sameFile(folder.string(), dir)) return std::nullopt;
+  return frame;
+}
+
+// Where the sequence writes, checked before anything renders (output_check.h): the frame folder
+// can be made and written in, no frame replaces a file the scenes read, and the video replaces
+// neither an input nor a frame.
+void checkSequenceOutputs(const RenderCommandOptions& options, const std::vector<SceneDesc>& scenes,
+                          const std::string& dir, FrameRange range, int digits,
+                          const std::string& format) {
+  const std::string reason = unwritableReason(dir, true);
+  if (!reason.empty())
+    throw CliError(kExitFailure, dir + ": cannot write the frames there: " + reason);
+  const std::vector<InputFile> inputs = inputFiles(scenes);
+  for (const InputFile& in : inputs)
+    if (const std::optional<uint32_t> frame = frameOf(in.path, dir, range, digits, format))
+      throw CliError(kExitUsage, in.path + ": frame " + std::to_string(*frame) +
+                                     " of the sequence would overwrite " + in.kind +
+                                     ", which the render reads");
+  if (options.video.empty()) return;
+  if (sameFile(options.video, dir))
+    throw CliError(kExitUsage, options.video + ": --video names the folder of the frames");
+  checkOutputFiles({{"--video", options.video}}, inputs);
+  if (const std::optional<uint32_t> frame = frameOf(options.video, dir, range, digits, format))
+    throw CliError(kExitUsage, options.video + ": --video would overwrite frame " +
+                                   std::to_string(*frame) + " of the sequence");
+}
+
 // The checks that need every scene: no animation block inside a sequence of files, and one image
 // size for a video.
 void checkScenes(const RenderCommandOptions& options, const std::vector<SceneDesc>& scenes) {
@@ -129,10 +174,11 @@ int runSequence(const RenderCommandOptions& options, std::vector<SceneDesc> scen
   const CpuEngine engine = chooseCpuEngine(options);
   for (SceneDesc& scene : scenes) applyOverrides(options, backend, engine, &scene);
 
+  const int digits = frameDigits(count);
+  checkSequenceOutputs(options, scenes, dir, range, digits, format);
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (ec) throw ImageWriteError(dir + ": cannot create the frame folder: " + ec.message());
-  const int digits = frameDigits(count);
   std::vector<uint32_t> todo;
   // A frame counts as done only when its file is whole; what a killed run left half-written
   // beside it (a temporary file of a process that is gone) is cleared away.
@@ -193,7 +239,8 @@ int runSequence(const RenderCommandOptions& options, std::vector<SceneDesc> scen
 
   if (!options.video.empty()) {
     VideoJob job;
-    job.pattern = (fs::path(dir) / ("frame_%0" + std::to_string(digits) + "d.png")).string();
+    job.folder = dir;
+    job.digits = digits;
     job.first = range.begin;
     job.count = range.end - range.begin;
     job.fps = options.fps ? *options.fps : (animated ? scenes[0].animation->fps : 24.0);

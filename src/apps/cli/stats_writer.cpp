@@ -6,10 +6,7 @@
 #include <cinttypes>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <sstream>
-
-#include "image/image_io.h"
 
 namespace candela::cli {
 
@@ -113,15 +110,6 @@ std::string renderStatsJson(const RenderStats& info, const SceneData& scene,
   o << "  \"peak_rss_bytes\": " << peakRssBytes() << "\n";
   o << "}\n";
   return o.str();
-}
-
-void writeRenderStats(const std::string& path, const RenderStats& info, const SceneData& scene,
-                      const RenderResult& result) {
-  const std::string text = renderStatsJson(info, scene, result);
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  out << text;
-  out.close();
-  if (!out) throw ImageWriteError(path + ": cannot write the statistics file");
 }
 
 }  // namespace candela::cli

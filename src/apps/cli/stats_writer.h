@@ -42,8 +42,4 @@ std::string renderStatsJson(const RenderStats& info, const SceneData& scene,
 // Peak resident set size of this process so far, in bytes.
 long long peakRssBytes();
 
-// Writes renderStatsJson to `path`; throws ImageWriteError on failure.
-void writeRenderStats(const std::string& path, const RenderStats& info, const SceneData& scene,
-                      const RenderResult& result);
-
 }  // namespace candela::cli

@@ -34,6 +34,22 @@ std::string findOnPath(const std::string& program) {
   return "";
 }
 
+namespace {
+
+// ffmpeg takes an argument that starts with '-' for an option and one that starts with "name:"
+// for a URL of that protocol; the file protocol's URL is the path, whatever it holds.
+std::string fileUrl(const std::string& path) { return "file:" + path; }
+
+// The image2 demuxer's pattern of the frame names: a '%' of the folder's name is written "%%".
+std::string framePattern(const std::string& folder, int digits) {
+  std::string escaped;
+  for (const char c : folder) escaped += c == '%' ? std::string("%%") : std::string(1, c);
+  return (std::filesystem::path(escaped) / ("frame_%0" + std::to_string(digits) + "d.png"))
+      .string();
+}
+
+}  // namespace
+
 void encodeVideo(const VideoJob& job) {
   const std::string ffmpeg = findOnPath("ffmpeg");
   if (ffmpeg.empty())
@@ -51,10 +67,11 @@ void encodeVideo(const VideoJob& job) {
   std::snprintf(fps, sizeof fps, "%.9g", job.fps);
   const std::vector<std::string> args = {
       ffmpeg, "-hide_banner", "-loglevel", "error", "-y", "-framerate", fps, "-start_number",
-      std::to_string(job.first), "-i", job.pattern, "-frames:v", std::to_string(job.count),
+      std::to_string(job.first), "-f", "image2", "-pattern_type", "sequence", "-i",
+      fileUrl(framePattern(job.folder, job.digits)), "-frames:v", std::to_string(job.count),
       // yuv420p needs even sizes: round each down to even (a 1-pixel crop at most).
       "-vf", "scale=trunc(iw/2)*2:trunc(ih/2)*2", "-c:v", "libx264", "-pix_fmt", "yuv420p",
-      job.output};
+      fileUrl(job.output)};
   std::vector<char*> argv;
   for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
   argv.push_back(nullptr);

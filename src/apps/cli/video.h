@@ -9,7 +9,8 @@ namespace candela::cli {
 std::string findOnPath(const std::string& program);
 
 struct VideoJob {
-  std::string pattern;  // printf-style frame names, e.g. "frames/frame_%04d.png"
+  std::string folder;   // of the frames, named frame_0000.png, ...
+  int digits = 4;       // of the frame numbers in their names
   unsigned first = 0;   // number of the first frame
   unsigned count = 0;   // frames to encode
   double fps = 24;
@@ -17,8 +18,10 @@ struct VideoJob {
 };
 
 // Runs ffmpeg: H.264 in yuv420p (plays everywhere), odd sizes scaled down to even ones as
-// yuv420p requires. Throws CliError (exit 1) when ffmpeg is missing, with how to install it, or
-// when it fails; the frames are never touched.
+// yuv420p requires. Whatever their names, the folder and the output reach ffmpeg as file names:
+// never as options (a leading '-'), protocols ("name:") or frame number patterns ('%'). Throws
+// CliError (exit 1) when ffmpeg is missing, with how to install it, or when it fails; the frames
+// are never touched.
 void encodeVideo(const VideoJob& job);
 
 }  // namespace candela::cli

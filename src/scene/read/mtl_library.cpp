@@ -33,7 +33,9 @@ MtlLibrary readMtlLibrary(const std::string& objPath, const std::vector<std::str
   MtlLibrary library;
   for (const std::string& name : names) {
     std::string contents, reason;
-    if (!readTextFile((folder / name).string(), &contents, &reason)) continue;
+    const std::string path = (folder / name).string();
+    if (!readTextFile(path, &contents, &reason)) continue;
+    library.files.push_back(path);
     collectKdNames(contents, library.kdNames);
     library.text += contents + "\n";
   }

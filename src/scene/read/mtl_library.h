@@ -12,8 +12,9 @@
 namespace candela {
 
 struct MtlLibrary {
-  std::string text;               // every readable file, concatenated
-  std::set<std::string> kdNames;  // materials with a Kd statement
+  std::string text;                // every readable file, concatenated
+  std::set<std::string> kdNames;   // materials with a Kd statement
+  std::vector<std::string> files;  // the files read, as paths from the OBJ file's folder
 };
 
 // Files that cannot be read are skipped: their materials fall back to the default.

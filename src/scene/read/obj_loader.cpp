@@ -119,6 +119,7 @@ MeshDesc loadObjFile(const std::string& path, const std::string& label) {
 
   MeshDesc mesh = buildMesh(reader, library, label);
   if (mesh.triangles.empty()) throw SceneError(label + ": expected at least one face, got none");
+  mesh.materialFiles = library.files;
   return mesh;
 }
 

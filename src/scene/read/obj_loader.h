@@ -1,12 +1,13 @@
 // Wavefront OBJ (+ MTL) file -> MeshDesc, in object space.
 //
-// Polygons are triangulated (tinyobjloader: quads split along the shorter diagonal, larger
-// polygons by ear clipping), keeping the file's vertex order, so a face's outside stays the side
-// its vertices wind counter-clockwise around. Vertex normals are kept where all three corners of a
-// triangle have one; otherwise the triangle's normal indices are -1 (face normal). Each MTL
-// material becomes a diffuse Material with colour Kd; faces without one (no usemtl, no MTL
-// file, or a name the MTL does not define) use an extra diffuse 0.8 entry. A missing MTL file is
-// not an error: its faces fall back to that entry.
+// Polygons are triangulated (quads split along the shorter diagonal by tinyobjloader, larger
+// polygons fanned when convex and ear-clipped when not, see polygon_triangulation.h), keeping the
+// file's vertex order, so a face's outside stays the side its vertices wind counter-clockwise
+// around. Vertex normals are kept where all three corners of a triangle have one; otherwise the
+// triangle's normal indices are -1 (face normal). Each MTL material becomes a diffuse Material
+// with colour Kd; faces without one (no usemtl, no MTL file, or a name the MTL does not define)
+// use an extra diffuse 0.8 entry. A missing MTL file is not an error: its faces fall back to that
+// entry.
 //
 // Errors throw SceneError, with `label` (how the caller shows the path) naming the file:
 //   cannot open "<label>" (<reason>)

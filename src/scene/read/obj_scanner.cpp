@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <string_view>
 
+#include "scene/read/polygon_triangulation.h"
 #include "scene/scene_error.h"
 
 namespace candela {
@@ -93,10 +94,12 @@ class Scanner {
   void index(std::string_view digits, std::string_view token, long long count,
              const std::string& name, const char* singular, const char* plural) const;
   void materialLibraries(std::string_view arguments, ObjScan& out) const;
+  void polygon(const std::vector<std::string_view>& tokens, ObjScan& out) const;
 
   const std::string& label_;
   size_t line_ = 0;
   long long vertices_ = 0, texcoords_ = 0, normals_ = 0;
+  std::vector<Vec3> positions_;  // of the vertices so far, for triangulating polygons
 };
 
 void Scanner::scanLine(std::string_view line, size_t number, ObjScan& out) {
@@ -129,6 +132,10 @@ void Scanner::scanLine(std::string_view line, size_t number, ObjScan& out) {
   while (!whole.empty() && isBlank(whole.back())) whole.remove_suffix(1);
   if (keyword == "v") {
     numbers(tokens, 3, 7, "a vertex \"v x y z\"", whole);
+    Vec3 position;
+    for (int i = 0; i < 3; ++i)
+      position[i] = float(std::strtod(std::string(tokens[i]).c_str(), nullptr));
+    positions_.push_back(position);
     ++vertices_;
   } else if (keyword == "vn") {
     numbers(tokens, 3, 3, "a normal \"vn x y z\"", whole);
@@ -138,6 +145,10 @@ void Scanner::scanLine(std::string_view line, size_t number, ObjScan& out) {
     ++texcoords_;
   } else if (keyword == "f") {
     references(tokens, 3, "a face with at least 3 vertices", "face index", whole);
+    if (tokens.size() > 4) {
+      polygon(tokens, out);
+      return;
+    }
   } else if (keyword == "l") {
     references(tokens, 2, "a line with at least 2 vertices", "vertex index", whole);
   } else {
@@ -228,6 +239,32 @@ void Scanner::materialLibraries(std::string_view arguments, ObjScan& out) const 
     }
   }
   flush();
+}
+
+// A face of more than four corners goes to tinyobjloader as triangles, which keep the corners'
+// references as written (tinyobjloader's own ear clipping takes quadratic time and more, and may
+// drop a face); quads it splits itself, along the shorter diagonal.
+void Scanner::polygon(const std::vector<std::string_view>& tokens, ObjScan& out) const {
+  std::vector<Vec3> corners;
+  corners.reserve(tokens.size());
+  for (std::string_view token : tokens) {
+    const long long index = std::strtoll(std::string(token.substr(0, token.find('/'))).c_str(),
+                                         nullptr, 10);  // checked by reference()
+    corners.push_back(positions_[size_t(index > 0 ? index - 1 : vertices_ + index)]);
+  }
+  std::vector<CornerTriangle> triangles;
+  if (!triangulatePolygon(corners, &triangles))
+    fail("a concave face of " + std::to_string(tokens.size()) +
+         " corners; a face that is not convex may have at most " +
+         std::to_string(kMaxConcaveFaceCorners) + " (split it into smaller faces)");
+  for (const CornerTriangle& triangle : triangles) {
+    out.text += 'f';
+    for (const uint32_t corner : triangle) {
+      out.text += ' ';
+      out.text.append(tokens[corner].data(), tokens[corner].size());
+    }
+    out.text += '\n';
+  }
 }
 
 }  // namespace

@@ -5,7 +5,8 @@
 // does refuse without a line number. This pass checks every statement first and throws SceneError
 // "<label>:<line>: <reason>" for the first fault (lines are 1-based; \n, \r\n and a lone \r all
 // end a line). It returns the text tinyobjloader should parse: the same statements with data lines
-// normalised (single spaces, trailing comments removed) and every line ending in \n.
+// normalised (single spaces, trailing comments removed), faces of more than four corners cut into
+// triangles (polygon_triangulation.h) and every line ending in \n.
 #pragma once
 
 #include <string>
