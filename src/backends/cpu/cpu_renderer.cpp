@@ -124,7 +124,7 @@ void CpuRenderer::setScene(const SceneData& scene, SceneChange change) {
 AccelerationStats CpuRenderer::acceleration() const {
 #if defined(CANDELA_HAS_EMBREE)
   if (engine_ == CpuEngine::Embree && embree_)
-    return {"embree", embree_->buildSeconds(), EmbreeScene::bytesInUse()};
+    return {"embree", embree_->buildSeconds(), embree_->bytes()};
 #endif
   return {};
 }

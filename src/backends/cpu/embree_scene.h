@@ -1,16 +1,18 @@
-// EmbreeScene: a scene's geometry as Embree holds it, kept in step with the frames of an
-// animation; tracer() is what the integrator traces with (backends/cpu/embree_tracer.h).
+// EmbreeScene: a scene's geometry as the Embree engine holds it, kept in step with the frames of
+// an animation; tracer() is what the integrator traces with (backends/cpu/embree_tracer.h).
 //
-// Embree builds its own BVH (binned SAH at RTC_BUILD_QUALITY_MEDIUM: docs/performance.md) over
-// a copy of the vertices and the scene's own triangle array, shared. A frame whose primitives
-// moved (SceneChange::Motion) rewrites the vertices and refits that BVH; a new structure
-// rebuilds it.
-// Embree picks the widest SIMD the CPU has at run time (SSE2 up to AVX-512).
+// Embree builds its own BVH over the triangles (binned SAH at RTC_BUILD_QUALITY_MEDIUM:
+// docs/performance.md), from a copy of the vertices and the scene's own triangle array, shared.
+// The spheres get a BVH of candela's own. A frame whose primitives moved (SceneChange::Motion)
+// rewrites the vertices and refits Embree's BVH, and rebuilds the spheres' (they are few); a new
+// structure rebuilds both. Embree picks the widest SIMD the CPU has at run time (SSE2 up to
+// AVX-512).
 #pragma once
 
 #include <embree3/rtcore.h>
 
 #include <cstddef>
+#include <vector>
 
 #include "backends/cpu/embree_tracer.h"
 #include "render/scene_change.h"
@@ -30,22 +32,25 @@ class EmbreeScene {
   // last; the first call takes everything. Throws BackendError when Embree fails (out of memory).
   void update(const SceneData& scene, SceneChange change);
 
-  EmbreeTracer tracer() const { return EmbreeTracer{scene_, sphereCount_}; }
+  EmbreeTracer tracer() const { return EmbreeTracer{scene_, sphereView_, sphereCount_}; }
   // Seconds the last update spent building or refitting Embree's BVH.
   double buildSeconds() const { return buildSeconds_; }
-  // Bytes Embree holds now for this process (BVH, vertex copy), from its memory monitor.
-  static size_t bytesInUse();
+  // Bytes the engine holds: what Embree has now for this process (its BVH, its vertex copy; from
+  // its memory monitor) and the spheres' BVH.
+  size_t bytes() const;
 
  private:
   void build(const SceneData& scene);
   void refit(const SceneData& scene);
+  void buildSphereBvh(const SceneData& scene);
   void commit();
 
   RTCDevice device_ = nullptr;
-  RTCScene scene_ = nullptr;
+  RTCScene scene_ = nullptr;  // the triangles; null when there are none
   RTCGeometry triangles_ = nullptr;
-  RTCGeometry spheres_ = nullptr;
-  const Sphere* sphereArray_ = nullptr;  // the spheres' user data: the scene given last
+  std::vector<BvhNode> sphereNodes_;
+  std::vector<uint32_t> spherePrims_;
+  GeometryView sphereView_;  // the spheres of the scene given last, with sphereNodes_
   uint32_t sphereCount_ = 0;
   double buildSeconds_ = 0;
 };

@@ -1,11 +1,12 @@
 // EmbreeTracer: the CPU's ray engine on Intel Embree 3 (a tracer in the sense of
 // geometry/bvh_tracer.h), over an EmbreeScene (backends/cpu/embree_scene.h).
 //
-// The triangles are one Embree triangle geometry and the spheres one user geometry that runs
-// candela's own sphere test, so hits carry the primitive numbering of geometry/geometry_view.h
-// and the integrator cannot tell the engines apart. A shadow ray's skipped primitive rides in the
-// intersection context: the sphere callback reads it, and for a skipped triangle a context filter
-// rejects that one triangle's hits.
+// Embree holds the triangles, as one triangle geometry; the spheres stay in a BVH of candela's own
+// over the spheres alone, traced inline first, so a ray pays no callback per sphere (Embree's user
+// geometry cost the sphere-walled default room a fifth of its speed) and a sphere hit shortens
+// the ray Embree then traces. Hits carry the primitive numbering of geometry/geometry_view.h, so
+// the integrator cannot tell the engines apart. A shadow ray's skipped triangle is rejected by a
+// context filter that reads it from the intersection context.
 #pragma once
 
 #include <embree3/rtcore.h>
@@ -15,9 +16,6 @@
 #include "geometry/bvh_traverse.h"
 
 namespace candela {
-
-// Embree's geometry ids of candela's two primitive kinds.
-constexpr unsigned kEmbreeTriangles = 0, kEmbreeSpheres = 1;
 
 // An intersection context that names the primitive a shadow ray must not hit.
 struct EmbreeSkipContext {
@@ -30,21 +28,23 @@ struct EmbreeSkipContext {
 void rejectSkippedTriangle(const RTCFilterFunctionNArguments* args);
 
 struct EmbreeTracer {
-  RTCScene scene;
+  RTCScene triangles;    // null when the scene has none
+  GeometryView spheres;  // the spheres and their own BVH (no triangles)
   uint32_t sphereCount;
 
   bool closest(const Ray& ray, Hit* hit) const {
     if (!isFiniteRay(ray)) return false;  // Embree's behaviour on NaN rays is undefined
+    const bool sphereFound = intersectClosest(spheres, ray, hit);
+    if (!triangles) return sphereFound;
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     RTCRayHit rayHit;
-    setRay(ray, &rayHit.ray);
+    setRay(ray, sphereFound ? hit->t : ray.tMax, &rayHit.ray);
     rayHit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-    rtcIntersect1(scene, &context, &rayHit);
-    if (rayHit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
+    rtcIntersect1(triangles, &context, &rayHit);
+    if (rayHit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return sphereFound;
     hit->t = rayHit.ray.tfar;
-    hit->prim =
-        rayHit.hit.geomID == kEmbreeTriangles ? sphereCount + rayHit.hit.primID : rayHit.hit.primID;
+    hit->prim = sphereCount + rayHit.hit.primID;
     hit->b1 = rayHit.hit.u;
     hit->b2 = rayHit.hit.v;
     return true;
@@ -52,6 +52,8 @@ struct EmbreeTracer {
 
   bool occluded(const Ray& ray, uint32_t skipPrim) const {
     if (!isFiniteRay(ray)) return false;
+    if (intersectAny(spheres, ray, skipPrim)) return true;
+    if (!triangles) return false;
     EmbreeSkipContext context;
     rtcInitIntersectContext(&context.base);
     context.skipPrim = skipPrim;
@@ -59,13 +61,13 @@ struct EmbreeTracer {
     if (skipPrim >= sphereCount && skipPrim != 0xffffffffu)
       context.base.filter = rejectSkippedTriangle;
     RTCRay r;
-    setRay(ray, &r);
-    rtcOccluded1(scene, &context.base, &r);
+    setRay(ray, ray.tMax, &r);
+    rtcOccluded1(triangles, &context.base, &r);
     return r.tfar < 0.0f;  // Embree marks an occluded ray with tfar = -inf
   }
 
  private:
-  static void setRay(const Ray& ray, RTCRay* r) {
+  static void setRay(const Ray& ray, float tMax, RTCRay* r) {
     r->org_x = ray.origin.x;
     r->org_y = ray.origin.y;
     r->org_z = ray.origin.z;
@@ -74,7 +76,7 @@ struct EmbreeTracer {
     r->dir_y = ray.direction.y;
     r->dir_z = ray.direction.z;
     r->time = 0.0f;
-    r->tfar = ray.tMax;
+    r->tfar = tMax;
     r->mask = 0xffffffffu;
     r->id = 0;
     r->flags = 0;
