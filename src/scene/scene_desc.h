@@ -139,4 +139,11 @@ struct SceneDesc {
   std::optional<AnimationDesc> animation;  // absent: a still image
 };
 
+// The triangles of all the scene's meshes.
+inline uint64_t meshTriangleCount(const SceneDesc& desc) {
+  uint64_t count = 0;
+  for (const ObjectDesc& object : desc.objects) count += object.mesh.triangles.size();
+  return count;
+}
+
 }  // namespace candela

@@ -70,12 +70,12 @@ int renderStill(const RenderCommandOptions& options, SceneDesc desc, double load
 
 }  // namespace
 
-CpuEngine chooseCpuEngine(const RenderCommandOptions& options) {
+CpuEngine chooseCpuEngine(const RenderCommandOptions& options, uint64_t triangles) {
   if (options.noBvh && options.cpuEngine == CpuEngine::Embree)
     throw CliError(kExitUsage,
                    "--no-bvh tests every primitive with candela's own engine; it cannot be "
                    "combined with --cpu-engine embree");
-  return resolveCpuEngine(options.cpuEngine, options.noBvh);
+  return resolveCpuEngine(options.cpuEngine, options.noBvh, triangles);
 }
 
 void applyOverrides(const RenderCommandOptions& options, Backend backend, CpuEngine engine,
@@ -175,7 +175,7 @@ int renderStill(const RenderCommandOptions& options, SceneDesc desc, double load
   checkOutputFiles(outputs, inputFiles({desc}));
   std::string backendNote;
   const Backend backend = chooseBackend(options.backend, &backendNote);
-  const CpuEngine engine = chooseCpuEngine(options);
+  const CpuEngine engine = chooseCpuEngine(options, meshTriangleCount(desc));
 
   applyOverrides(options, backend, engine, &desc);
   const auto flattenStart = std::chrono::steady_clock::now();

@@ -21,9 +21,9 @@ CLI::App* addRenderCommand(CLI::App& app, RenderCommandOptions* options);
 // ImageWriteError and std::exception for main() to report.
 int runRender(const RenderCommandOptions& options);
 
-// The CPU engine the options ask for, resolved by resolveCpuEngine; CliError (usage) for
-// --no-bvh with --cpu-engine embree.
-CpuEngine chooseCpuEngine(const RenderCommandOptions& options);
+// The CPU engine the options ask for, resolved by resolveCpuEngine for scenes of at most
+// `triangles` triangles; CliError (usage) for --no-bvh with --cpu-engine embree.
+CpuEngine chooseCpuEngine(const RenderCommandOptions& options, uint64_t triangles);
 
 // Command-line values win over the scene file's (spp, seed, max depth); candela's own BVH is
 // left out where the renderer (`backend` with `engine`) does not trace it.

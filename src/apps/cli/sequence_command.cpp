@@ -1,6 +1,7 @@
 // Rendering a sequence of frames; see sequence_command.h.
 #include "apps/cli/sequence_command.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -129,16 +130,17 @@ void checkScenes(const RenderCommandOptions& options, const std::vector<SceneDes
                          "not in a sequence of scene files");
   if (options.video.empty()) return;
   if (!options.format.empty() && options.format != "png")
-    throw CliError(kExitUsage, "--video needs PNG frames (ffmpeg encodes the 8-bit images), got "
-                               "--format " + options.format);
+    throw CliError(kExitUsage,
+                   "--video needs PNG frames (ffmpeg encodes the 8-bit images), got "
+                   "--format " +
+                       options.format);
   for (const SceneDesc& s : scenes)
     if (s.camera.width != scenes[0].camera.width || s.camera.height != scenes[0].camera.height)
-      throw CliError(kExitUsage, "--video: every frame must have the same size, but " +
-                                     scenes[0].file + " is " +
-                                     std::to_string(scenes[0].camera.width) + "x" +
-                                     std::to_string(scenes[0].camera.height) + " and " + s.file +
-                                     " is " + std::to_string(s.camera.width) + "x" +
-                                     std::to_string(s.camera.height));
+      throw CliError(kExitUsage,
+                     "--video: every frame must have the same size, but " + scenes[0].file +
+                         " is " + std::to_string(scenes[0].camera.width) + "x" +
+                         std::to_string(scenes[0].camera.height) + " and " + s.file + " is " +
+                         std::to_string(s.camera.width) + "x" + std::to_string(s.camera.height));
 }
 
 // How a frame's scene was prepared, for the per-frame summary line.
@@ -171,7 +173,9 @@ int runSequence(const RenderCommandOptions& options, std::vector<SceneDesc> scen
   const FrameRange range = parseFrames(options.frames, count);
   std::string backendNote;
   const Backend backend = chooseBackend(options.backend, &backendNote);
-  const CpuEngine engine = chooseCpuEngine(options);
+  uint64_t triangles = 0;
+  for (const SceneDesc& scene : scenes) triangles = std::max(triangles, meshTriangleCount(scene));
+  const CpuEngine engine = chooseCpuEngine(options, triangles);
   for (SceneDesc& scene : scenes) applyOverrides(options, backend, engine, &scene);
 
   const int digits = frameDigits(count);
@@ -228,8 +232,7 @@ int runSequence(const RenderCommandOptions& options, std::vector<SceneDesc> scen
     if (!options.quiet) {
       std::printf("%s (scene %s in %.3f ms)\n",
                   renderSummary(path, data.settings.spp, result).c_str(),
-                  preparationName(frameScene.change()),
-                  frameScene.seconds() * 1e3);
+                  preparationName(frameScene.change()), frameScene.seconds() * 1e3);
       std::fflush(stdout);
     }
   }

@@ -98,7 +98,7 @@ ImageArray render(const Scene& scene, std::optional<uint32_t> spp, std::optional
   RenderCache& cache = *scene.cache;
   runInterruptible([&](const std::atomic<bool>& cancel) {
     std::lock_guard<std::mutex> lock(cache.mutex);
-    const CpuEngine engine = resolveCpuEngine(CpuEngine::Auto, false);
+    const CpuEngine engine = resolveCpuEngine(CpuEngine::Auto, false, meshTriangleCount(desc));
     if (!needsOwnBvh(chosen, engine)) desc.ownBvh = OwnBvh::None;
     const SceneData& data = cache.frames.prepare(desc);
     SceneChange change = cache.frames.change();

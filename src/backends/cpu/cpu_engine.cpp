@@ -39,9 +39,10 @@ bool embreeAvailable() {
 #endif
 }
 
-CpuEngine resolveCpuEngine(CpuEngine requested, bool flatBvh) {
+CpuEngine resolveCpuEngine(CpuEngine requested, bool flatBvh, uint64_t triangles) {
   if (requested == CpuEngine::Auto)
-    return embreeAvailable() && !flatBvh ? CpuEngine::Embree : CpuEngine::Bvh;
+    return embreeAvailable() && !flatBvh && triangles >= kEmbreeFromTriangles ? CpuEngine::Embree
+                                                                              : CpuEngine::Bvh;
   if (requested == CpuEngine::Embree) {
     if (!embreeAvailable())
       throw BackendError(

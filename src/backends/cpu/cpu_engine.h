@@ -17,9 +17,17 @@ bool cpuEngineFromName(const std::string& name, CpuEngine* engine);
 // Whether this build has the Embree engine (CANDELA_EMBREE).
 bool embreeAvailable();
 
-// Resolves Auto to Embree where the build has it, else the own BVH; `flatBvh` (--no-bvh, which
-// asks for the own engine's one-level tree) resolves Auto to the own BVH. Throws BackendError
-// for Embree in a build without it, or with flatBvh.
-CpuEngine resolveCpuEngine(CpuEngine requested, bool flatBvh);
+// Auto picks Embree for scenes of at least this many triangles. Below it the own BVH was as fast
+// or faster where spheres make much of the scene: the default room of huge spheres and a 4,320-
+// triangle knot took 1.27x the CPU time with Embree (the spheres stay in an own BVH, and each
+// ray pays the call into Embree besides), while scenes of 12k to 8.5M triangles took 0.5-0.83x
+// (docs/performance.md).
+constexpr uint64_t kEmbreeFromTriangles = 10000;
+
+// Resolves Auto to Embree where the build has it and the scene has at least
+// kEmbreeFromTriangles triangles, else to the own BVH; `flatBvh` (--no-bvh, which asks for the own
+// engine's one-level tree) resolves Auto to the own BVH. Throws BackendError for Embree in a
+// build without it, or with flatBvh.
+CpuEngine resolveCpuEngine(CpuEngine requested, bool flatBvh, uint64_t triangles);
 
 }  // namespace candela
