@@ -214,6 +214,17 @@ TEST_F(ObjLoader, CommentsGroupsAndIgnoredStatements) {
   EXPECT_EQ(mesh.triangles.size(), 1u);
 }
 
+// Statements candela ignores are not handed to tinyobjloader, which parsed some itself: a skin
+// weight's joint of 3e38 (undefined behaviour, found by the fuzzer) or below 0 (its own error),
+// tag counts that allocate hundreds of kilobytes per line, a smoothing group beyond int.
+TEST_F(ObjLoader, IgnoredStatementsNeverReachTinyobjloader) {
+  std::string text = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvw 0 3e38 0\nvw 1 -1 0.5\ns 99999999999\n";
+  for (int i = 0; i < 100; ++i) text += "t crease 8192/8192/8192\n";
+  const MeshDesc mesh = load(text + "l 1 2\np 3\nf 1 2 3\n");
+  EXPECT_EQ(mesh.positions.size(), 3u);
+  EXPECT_EQ(mesh.triangles.size(), 1u);
+}
+
 TEST_F(ObjLoader, MalformedFilesNameTheLine) {
   const std::string square(kSquare);
   EXPECT_EQ(error(square + "f 1 2 99\n"), "m.obj:5: face index 99 out of range (4 vertices)");

@@ -119,6 +119,9 @@ void Scanner::scanLine(std::string_view line, size_t number, ObjScan& out) {
     } else if (std::find(std::begin(kIgnoredStatements), std::end(kIgnoredStatements), keyword) ==
                std::end(kIgnoredStatements)) {
       fail("unknown statement " + shown(keyword));
+    } else if (keyword != "usemtl") {
+      out.text += '\n';  // unused, and unchecked: tinyobjloader must not parse it either
+      return;
     }
     out.text.append(line.data(), line.size());
     out.text += '\n';
@@ -151,8 +154,12 @@ void Scanner::scanLine(std::string_view line, size_t number, ObjScan& out) {
     }
   } else if (keyword == "l") {
     references(tokens, 2, "a line with at least 2 vertices", "vertex index", whole);
+    out.text += '\n';  // checked, but not rendered
+    return;
   } else {
     references(tokens, 1, "a point with at least 1 vertex", "vertex index", whole);
+    out.text += '\n';
+    return;
   }
   out.text.append(keyword.data(), keyword.size());
   for (std::string_view token : tokens) {

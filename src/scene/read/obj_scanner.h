@@ -4,9 +4,12 @@
 // list, ignores statements it does not know, stops at a comment after a face, and reports what it
 // does refuse without a line number. This pass checks every statement first and throws SceneError
 // "<label>:<line>: <reason>" for the first fault (lines are 1-based; \n, \r\n and a lone \r all
-// end a line). It returns the text tinyobjloader should parse: the same statements with data lines
-// normalised (single spaces, trailing comments removed), faces of more than four corners cut into
-// triangles (polygon_triangulation.h) and every line ending in \n.
+// end a line). It returns the text tinyobjloader should parse: only the statements candela uses
+// (v, vn, vt, f, usemtl, mtllib; the others become empty lines, since tinyobjloader would parse
+// some of them unchecked: "vw" and "t" numbers out of range, "t" tag counts that allocate hundreds
+// of kilobytes a line), with data lines normalised (single spaces, trailing comments removed),
+// faces of more than four corners cut into triangles (polygon_triangulation.h) and every line
+// ending in \n.
 #pragma once
 
 #include <string>
