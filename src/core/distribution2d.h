@@ -2,7 +2,10 @@
 // PiecewiseConstant2D), stored as cumulative sums: `marginal` (rows + 1 values) over the rows and,
 // per row, `conditional` (columns + 1 values each) over its columns. Sampling inverts the sums
 // and is continuous within a cell; the density of a point is its cell's share times the cell
-// count. Built on the host (buildDistribution2D), sampled by the kernel.
+// count. Each sum has a guide table (Chen and Asau's cutpoints): where the search for u in [k/n,
+// (k+1)/n) starts and ends, so inverting costs a step or two rather than log2(n) dependent loads,
+// with the very result of the full search. Built on the host (buildDistribution2D), sampled by
+// the kernel.
 #pragma once
 
 #include <cstddef>
@@ -15,8 +18,15 @@ namespace candela {
 
 // Inverts cdf[0..n] (non-decreasing, cdf[0] = 0, cdf[n] = 1) at u in [0, 1): the point in [0, 1)
 // whose segment holds u, its segment and the density there (0 for a segment of no mass).
-CANDELA_HDI float sampleCdf(const float* cdf, uint32_t n, float u, uint32_t* segment, float* pdf) {
-  uint32_t lo = 0, hi = n;  // the first segment o with cdf[o + 1] > u
+// guide[0..n] is cdf's guide table (buildGuide).
+CANDELA_HDI float sampleCdf(const float* cdf, const uint32_t* guide, uint32_t n, float u,
+                            uint32_t* segment, float* pdf) {
+  // The segment sought is the first o with cdf[o + 1] > u. The guide brackets it in [lo, hi];
+  // the two loops only widen the bracket where rounding put u * n in the neighbouring cell.
+  const uint32_t cell = u * float(n) < float(n) ? uint32_t(u * float(n)) : n - 1;
+  uint32_t lo = guide[cell], hi = guide[cell + 1];
+  while (lo > 0 && cdf[lo] > u) --lo;
+  while (hi < n - 1 && cdf[hi + 1] <= u) ++hi;
   while (lo < hi) {
     const uint32_t mid = (lo + hi) / 2;
     if (cdf[mid + 1] <= u) {
@@ -25,7 +35,7 @@ CANDELA_HDI float sampleCdf(const float* cdf, uint32_t n, float u, uint32_t* seg
       hi = mid;
     }
   }
-  const uint32_t o = lo < n ? lo : n - 1;
+  const uint32_t o = lo;
   const float width = cdf[o + 1] - cdf[o];
   float t = width > 0.0f ? (u - cdf[o]) / width : 0.5f;
   t = t < 0.0f ? 0.0f : (t < 0.99999994f ? t : 0.99999994f);  // stay inside the segment
@@ -37,14 +47,18 @@ CANDELA_HDI float sampleCdf(const float* cdf, uint32_t n, float u, uint32_t* seg
 struct Distribution2D {
   const float* conditional;  // rows x (columns + 1)
   const float* marginal;     // rows + 1
+  const uint32_t* conditionalGuide;  // rows x (columns + 1)
+  const uint32_t* marginalGuide;     // rows + 1
   uint32_t columns, rows;
 
   // A point (x, y) in [0,1)^2 from uniform (u1, u2), with its density; false where it has none.
   CANDELA_HDI bool sample(float u1, float u2, float* x, float* y, float* pdf) const {
     uint32_t row, column;
     float pdfRow, pdfColumn;
-    *y = sampleCdf(marginal, rows, u2, &row, &pdfRow);
-    *x = sampleCdf(conditional + size_t(row) * (columns + 1), columns, u1, &column, &pdfColumn);
+    *y = sampleCdf(marginal, marginalGuide, rows, u2, &row, &pdfRow);
+    const size_t rowStart = size_t(row) * (columns + 1);
+    *x = sampleCdf(conditional + rowStart, conditionalGuide + rowStart, columns, u1, &column,
+                   &pdfColumn);
     *pdf = pdfRow * pdfColumn;
     return *pdf > 0.0f;
   }
@@ -59,11 +73,29 @@ struct Distribution2D {
   }
 };
 
-// The cumulative sums of f (rows x columns, row-major, every value >= 0). A row without mass
-// gets a uniform conditional (never reached: its marginal share is 0); without any mass at all
-// the marginal is uniform too.
+// The guide table of cdf[0..n]: guide[k], k in [0, n], is the first segment o with
+// cdf[o + 1] > k / n (n - 1 where none is), computed in the float arithmetic sampleCdf uses.
+inline void buildGuide(const float* cdf, uint32_t n, uint32_t* guide) {
+  uint32_t o = 0;
+  for (uint32_t k = 0; k <= n; ++k) {
+    const float u = float(k) / float(n);
+    while (o < n - 1 && cdf[o + 1] <= u) ++o;
+    guide[k] = o;
+  }
+}
+
+struct Distribution2DArrays {
+  std::vector<float> conditional, marginal;
+  std::vector<uint32_t> conditionalGuide, marginalGuide;
+};
+
+// The cumulative sums of f (rows x columns, row-major, every value >= 0) and their guide tables.
+// A row without mass gets a uniform conditional (never reached: its marginal share is 0); without
+// any mass at all the marginal is uniform too.
 inline void buildDistribution2D(const std::vector<double>& f, uint32_t columns, uint32_t rows,
-                                std::vector<float>* conditional, std::vector<float>* marginal) {
+                                Distribution2DArrays* d) {
+  std::vector<float>* conditional = &d->conditional;
+  std::vector<float>* marginal = &d->marginal;
   conditional->assign(size_t(rows) * (columns + 1), 0.0f);
   std::vector<double> rowSums(rows, 0.0);
   for (uint32_t j = 0; j < rows; ++j) {
@@ -87,6 +119,14 @@ inline void buildDistribution2D(const std::vector<double>& f, uint32_t columns, 
     (*marginal)[j + 1] = total > 0.0 ? float(running / total) : float(double(j + 1) / rows);
   }
   (*marginal)[rows] = 1.0f;
+
+  d->conditionalGuide.assign(conditional->size(), 0);
+  for (uint32_t j = 0; j < rows; ++j) {
+    const size_t start = size_t(j) * (columns + 1);
+    buildGuide(conditional->data() + start, columns, d->conditionalGuide.data() + start);
+  }
+  d->marginalGuide.assign(marginal->size(), 0);
+  buildGuide(marginal->data(), rows, d->marginalGuide.data());
 }
 
 }  // namespace candela

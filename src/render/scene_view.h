@@ -20,14 +20,16 @@ namespace candela {
 
 // The arrays that shade the geometry, in the form of CANDELA_GEOMETRY_ARRAYS.
 // envTexels is the environment map (width x height, rows from the top; empty for a constant
-// environment) and envConditionalCdf/envMarginalCdf its sampling distribution
-// (core/distribution2d.h).
+// environment) and envConditionalCdf/envMarginalCdf with their guide tables its sampling
+// distribution (core/distribution2d.h).
 #define CANDELA_SHADING_ARRAYS(X)                             \
   X(Material, materials, materialCount, Values)               \
   X(Light, lights, lightCount, Values)                        \
   X(Vec3, envTexels, envTexelCount, Values)                   \
   X(float, envConditionalCdf, envConditionalCdfCount, Values) \
-  X(float, envMarginalCdf, envMarginalCdfCount, Values)
+  X(float, envMarginalCdf, envMarginalCdfCount, Values)           \
+  X(uint32_t, envConditionalGuide, envConditionalGuideCount, Values) \
+  X(uint32_t, envMarginalGuide, envMarginalGuideCount, Values)
 
 // Every array of the kernel's scene: SceneData, SceneData::view and the CUDA upload expand
 // this.
@@ -61,8 +63,8 @@ CANDELA_HDI Vec3 environmentRadiance(const SceneView& scene, const Vec3& d) {
 
 // The environment map's sampling distribution.
 CANDELA_HDI Distribution2D environmentDistribution(const SceneView& scene) {
-  return {scene.envConditionalCdf, scene.envMarginalCdf, scene.environment.width,
-          scene.environment.height};
+  return {scene.envConditionalCdf, scene.envMarginalCdf, scene.envConditionalGuide,
+          scene.envMarginalGuide, scene.environment.width, scene.environment.height};
 }
 
 }  // namespace candela

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include "core/constants.h"
@@ -25,6 +26,8 @@ void flattenEnvironment(const EnvironmentDesc& desc, SceneData& s) {
     s.envTexels.clear();
     s.envConditionalCdf.clear();
     s.envMarginalCdf.clear();
+    s.envConditionalGuide.clear();
+    s.envMarginalGuide.clear();
     s.environmentMap.reset();
     return;
   }
@@ -58,7 +61,12 @@ void flattenEnvironment(const EnvironmentDesc& desc, SceneData& s) {
         }
       f[size_t(y) * w + x] = brightest * rowSinTheta(y, h);
     }
-  buildDistribution2D(f, w, h, &s.envConditionalCdf, &s.envMarginalCdf);
+  Distribution2DArrays d;
+  buildDistribution2D(f, w, h, &d);
+  s.envConditionalCdf = std::move(d.conditional);
+  s.envMarginalCdf = std::move(d.marginal);
+  s.envConditionalGuide = std::move(d.conditionalGuide);
+  s.envMarginalGuide = std::move(d.marginalGuide);
 }
 
 double environmentMeanRadiance(const SceneData& s) {
