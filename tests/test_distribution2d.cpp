@@ -1,6 +1,7 @@
-// The guide tables of core/distribution2d.h: inverting a cdf through its guide gives exactly the
-// segment the full binary search gives, for cdfs with plateaus (cells of no mass), a single
-// dominant cell, and u at every cutpoint k / n and its float neighbours.
+// core/distribution2d.h. Inverting a cdf through its guide gives exactly the segment the full
+// binary search gives, and a point inside that segment's cell, for cdfs with plateaus (cells of
+// no mass), a single dominant cell, and u at every cutpoint k / n, every cdf value and their float
+// neighbours; sampled points follow the density pdf() reports.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -40,8 +41,10 @@ void expectGuidedSearchIsExact(const std::vector<double>& f) {
     if (!(u >= 0.0f && u < 1.0f)) continue;
     uint32_t segment;
     float pdf;
-    sampleCdf(cdf.data(), d.conditionalGuide.data(), n, u, &segment, &pdf);
+    const float x = sampleCdf(cdf.data(), d.conditionalGuide.data(), n, u, &segment, &pdf);
     ASSERT_EQ(segment, searchAll(cdf, u)) << "u = " << u << ", n = " << n;
+    // The point lies in its segment's cell as the density lookup finds cells.
+    ASSERT_EQ(uint32_t(x * float(n)), segment) << "u = " << u << ", x = " << x;
   }
 }
 

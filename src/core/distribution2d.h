@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/device.h"
+#include "core/float_error.h"
 
 namespace candela {
 
@@ -41,7 +42,12 @@ CANDELA_HDI float sampleCdf(const float* cdf, const uint32_t* guide, uint32_t n,
   t = t < 0.0f ? 0.0f : (t < 0.99999994f ? t : 0.99999994f);  // stay inside the segment
   *segment = o;
   *pdf = width * float(n);
-  return (float(o) + t) / float(n);
+  // Rounding can carry (o + t) / n onto a neighbouring cell's edge; the point must stay in cell
+  // o as Distribution2D::pdf finds cells (floor of x n), or MIS would weigh it by the wrong pdf.
+  float x = (float(o) + t) / float(n);
+  while (x * float(n) >= float(o + 1)) x = nextFloatDown(x);
+  while (x * float(n) < float(o)) x = nextFloatUp(x);
+  return x;
 }
 
 struct Distribution2D {
