@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <complex>
 
 #include "render/fresnel.h"
 
@@ -128,6 +129,35 @@ TEST(FresnelDielectric, ReflectanceIsTheSameFromBothSidesOfTheInterface) {
       EXPECT_NEAR(fresnelDielectric(cosI, eta), fresnelDielectric(cosT, 1.0f / eta), 1e-5);
     }
   }
+}
+
+// A conductor's reflectance (fresnelConductor) against the Fresnel equations in complex
+// arithmetic: r_s = (cos i - n cos t) / (cos i + n cos t), r_p = (n cos i - cos t) /
+// (n cos i + cos t), n = eta + i k, cos t = sqrt(1 - sin^2 i / n^2).
+double referenceConductor(double cosI, double eta, double k) {
+  const std::complex<double> n(eta, k);
+  const std::complex<double> cosT = std::sqrt(1.0 - (1.0 - cosI * cosI) / (n * n));
+  const std::complex<double> rs = (cosI - n * cosT) / (cosI + n * cosT);
+  const std::complex<double> rp = (n * cosI - cosT) / (n * cosI + cosT);
+  return 0.5 * (std::norm(rs) + std::norm(rp));
+}
+
+TEST(FresnelConductor, MatchesTheComplexFresnelEquations) {
+  const double metals[][2] = {{0.143, 3.983}, {1.6575, 9.2238}, {4.3697, 5.2066}, {0.2, 0.0},
+                              {1.5, 0.0}};
+  for (const auto& m : metals)
+    for (double cosI : {1.0, 0.9, 0.6, 0.3, 0.1, 0.01}) {
+      const double expected = referenceConductor(cosI, m[0], m[1]);
+      EXPECT_NEAR(fresnelConductor(float(cosI), float(m[0]), float(m[1])), expected,
+                  2e-5 + 1e-4 * expected)
+          << "eta " << m[0] << " k " << m[1] << " cos " << cosI;
+    }
+  // Normal incidence: ((eta - 1)^2 + k^2) / ((eta + 1)^2 + k^2); grazing: 1.
+  EXPECT_NEAR(fresnelConductor(1.0f, 0.143f, 3.983f),
+              ((0.143 - 1) * (0.143 - 1) + 3.983 * 3.983) / (1.143 * 1.143 + 3.983 * 3.983), 1e-5);
+  EXPECT_NEAR(fresnelConductor(0.0f, 0.143f, 3.983f), 1.0f, 1e-5f);
+  // With k = 0 it is the dielectric's reflectance.
+  EXPECT_NEAR(fresnelConductor(0.5f, 1.5f, 0.0f), fresnelDielectric(0.5f, 1.5f), 1e-6f);
 }
 
 }  // namespace

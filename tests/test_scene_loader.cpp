@@ -206,12 +206,69 @@ TEST_F(SceneLoader, ZeroSamplesPerPixel) {
 TEST_F(SceneLoader, UnknownMaterialType) {
   EXPECT_EQ(errorWith(R"("materials": {"m": {"type": "metal"}})"),
             "s.json: materials.m.type: expected one of \"diffuse\", \"mirror\", \"glass\", "
-            "\"emissive\", got a string \"metal\"");
+            "\"emissive\", \"conductor\", \"plastic\", got a string \"metal\"");
   EXPECT_EQ(
       errorWith(
           R"("spheres": [{"position": [0, 0, 0], "radius": 1, "material": {"type": "glas"}}])"),
       "s.json: spheres[0].material.type: expected one of \"diffuse\", \"mirror\", \"glass\", "
-      "\"emissive\", got a string \"glas\", did you mean \"glass\"?");
+      "\"emissive\", \"conductor\", \"plastic\", got a string \"glas\", did you mean "
+      "\"glass\"?");
+}
+
+TEST_F(SceneLoader, RoughMaterialsAreRead) {
+  const SceneDesc scene = parse(R"({"camera": {"width": 4, "height": 4, "fov": 60, "spp": 1},
+    "materials": {"gold": {"type": "conductor", "metal": "Au", "roughness": 0.3},
+                  "steel": {"type": "conductor", "color": [0.6, 0.6, 0.65]},
+                  "frosted": {"type": "glass", "ior": 1.45, "roughness": 0.2},
+                  "red": {"type": "plastic", "color": [0.8, 0.1, 0.1], "roughness": 0.4}},
+    "spheres": [{"position": [0, 0, -5], "radius": 1, "material": "gold"},
+                {"position": [2, 0, -5], "radius": 1, "material": "steel"},
+                {"position": [4, 0, -5], "radius": 1, "material": "frosted"},
+                {"position": [6, 0, -5], "radius": 1, "material": "red"},
+                {"position": [8, 0, -5], "radius": 1, "material": {"type": "plastic"}}]})");
+  const Material& gold = scene.spheres[0].material;
+  EXPECT_EQ(gold.type, MaterialType::Conductor);
+  EXPECT_TRUE(gold.metal);
+  EXPECT_FLOAT_EQ(gold.roughness, 0.3f);
+  EXPECT_NEAR(gold.metalK.x, 3.98f, 0.01f);
+  const Material& steel = scene.spheres[1].material;
+  EXPECT_FALSE(steel.metal);
+  EXPECT_EQ(steel.roughness, 0.0f);
+  expectVec3(steel.color, 0.6f, 0.6f, 0.65f);
+  EXPECT_EQ(scene.spheres[2].material.type, MaterialType::Glass);
+  EXPECT_FLOAT_EQ(scene.spheres[2].material.roughness, 0.2f);
+  EXPECT_FLOAT_EQ(scene.spheres[2].material.ior, 1.45f);
+  const Material& red = scene.spheres[3].material;
+  EXPECT_EQ(red.type, MaterialType::Plastic);
+  // Its derived values are filled in: the coat transmits most light at normal incidence.
+  EXPECT_GT(red.plasticTransmittance[kPlasticTableSize - 1], 0.9f);
+  EXPECT_GT(red.plasticInternalReflectance, 0.3f);
+  // Plastic's defaults are Mitsuba's: base 0.5, ior 1.5, smooth.
+  expectVec3(scene.spheres[4].material.color, 0.5f, 0.5f, 0.5f);
+  EXPECT_FLOAT_EQ(scene.spheres[4].material.ior, 1.5f);
+}
+
+TEST_F(SceneLoader, BadRoughMaterialsAreRefused) {
+  EXPECT_EQ(errorWith(R"("materials": {"m": {"type": "conductor", "roughness": 1.5}})"),
+            "s.json: materials.m.roughness: expected a roughness in [0, 1], got 1.5");
+  EXPECT_EQ(errorWith(R"("materials": {"m": {"type": "glass", "roughness": -0.1}})"),
+            "s.json: materials.m.roughness: expected a roughness in [0, 1], got -0.1");
+  EXPECT_EQ(errorWith(R"("materials": {"m": {"type": "plastic", "roughness": "rough"}})"),
+            "s.json: materials.m.roughness: expected a roughness in [0, 1], got a string "
+            "\"rough\"");
+  EXPECT_EQ(errorWith(R"("materials": {"m": {"type": "conductor", "metal": "Gold"}})"),
+            "s.json: materials.m.metal: expected one of \"Ag\", \"Al\", \"Au\", \"Cr\", "
+            "\"Cu\", got a string \"Gold\"");
+  EXPECT_EQ(errorWith(R"("materials": {"m": {"type": "conductor", "metal": "Au", "color": 1}})"),
+            "s.json: materials.m: give a conductor either \"color\" or \"metal\", not both");
+  EXPECT_EQ(errorWith(R"("materials": {"m": {"type": "plastic", "metal": "Au"}})"),
+            "s.json: materials.m.metal: not used by a \"plastic\" material");
+  EXPECT_EQ(errorWith(R"("materials": {"m": {"type": "conductor", "ior": 1.5}})"),
+            "s.json: materials.m.ior: not used by a \"conductor\" material");
+  EXPECT_EQ(errorWith(R"("materials": {"m": {"type": "diffuse", "roughness": 0.5}})"),
+            "s.json: materials.m.roughness: not used by a \"diffuse\" material");
+  EXPECT_EQ(errorWith(R"("materials": {"m": {"type": "mirror", "roughness": 0.5}})"),
+            "s.json: materials.m.roughness: not used by a \"mirror\" material");
 }
 
 TEST_F(SceneLoader, UnknownLightType) {
@@ -576,7 +633,9 @@ TEST_F(SceneLoader, MaterialForms) {
   expectVec3(inlined.color, 0.9f, 0.9f, 0.9f);
 
   const Material& shorthand = scene.spheres[2].material;
-  EXPECT_EQ(shorthand.type, MaterialType::Mirror);
+  EXPECT_EQ(shorthand.type, MaterialType::Conductor);  // a mirror: roughness 0, no Fresnel
+  EXPECT_EQ(shorthand.roughness, 0.0f);
+  EXPECT_FALSE(shorthand.metal);
   expectVec3(shorthand.color, 0.5f, 0.6f, 0.7f);
 
   EXPECT_EQ(scene.spheres[3].material.type, MaterialType::Diffuse);
@@ -586,7 +645,7 @@ TEST_F(SceneLoader, MaterialForms) {
   expectVec3(scene.spheres[4].material.color, 0.25f, 0.25f, 0.25f);
 
   // The library's "glass" (a mirror) wins over the shorthand of the same name.
-  EXPECT_EQ(scene.spheres[5].material.type, MaterialType::Mirror);
+  EXPECT_EQ(scene.spheres[5].material.type, MaterialType::Conductor);
 
   EXPECT_EQ(scene.spheres[6].material.type, MaterialType::Emissive);
   expectVec3(scene.spheres[6].material.radiance, 4, 3, 2);

@@ -1,86 +1,127 @@
-// The three scattering materials: Lambertian diffuse, perfect mirror and smooth glass.
+// The BSDF of a surface point: one interface (eval, pdf, sample, and whether a smooth lobe exists)
+// over every material, dispatched by a switch on the material's tag, so the integrator never
+// names a material type and the code runs unchanged in CUDA.
 //
 // Conventions: wo points from the surface towards where the light goes (the previous vertex);
 // ng is the geometric normal on the primitive's outside, ns the shading normal in ng's
-// hemisphere. Diffuse and mirror reflect on both sides; glass tells outside from inside by ng.
-// A sample's `weight` is f * |cos| / pdf, the factor the path throughput is multiplied by.
+// hemisphere. The materials work in a local shading frame whose +z is ns turned to wo's side, so
+// each sees wo above its surface; glass alone tells outside from inside (by ng) and inverts its
+// index inside. A direction that the local frame calls a reflection must leave on wo's side of
+// the geometry, and a transmission on the other, or it carries nothing: shading normals must not
+// let light through an opaque surface or leak around a glass one.
 #pragma once
 
 #include "core/frame.h"
-#include "core/sampling.h"
-#include "render/fresnel.h"
+#include "render/bsdf_conductor.h"
+#include "render/bsdf_dielectric.h"
+#include "render/bsdf_diffuse.h"
+#include "render/bsdf_plastic.h"
+#include "render/bsdf_sample.h"
 #include "render/material.h"
 
 namespace candela {
-
-struct BsdfSample {
-  Vec3 wi;
-  Vec3 weight;
-  float pdf = 0;       // solid-angle density; meaningful only when !specular
-  bool specular = false;
-};
 
 // The shading normal turned to wo's side of the surface (decided by the geometric normal).
 CANDELA_HDI Vec3 facingNormal(const Vec3& wo, const Vec3& ng, const Vec3& ns) {
   return dot(wo, ng) >= 0.0f ? ns : -ns;
 }
 
-// Diffuse f * cos for a direction wi; zero when wi leaves through the other side of the surface.
-CANDELA_HDI Vec3 evalDiffuse(const Material& m, const Vec3& wo, const Vec3& ng, const Vec3& ns,
-                             const Vec3& wi) {
-  if (dot(wo, ng) * dot(wi, ng) <= 0.0f) return Vec3(0.0f);
-  const float cosTheta = dot(wi, facingNormal(wo, ng, ns));
-  return cosTheta > 0.0f ? m.color * (cosTheta * kInvPi) : Vec3(0.0f);
+struct Bsdf {
+  const Material* material;
+  Vec3 color;   // the material's colour at this point (textures resolved)
+  Frame frame;  // +z: the shading normal on wo's side
+  Vec3 ng;
+  float side;   // +1 when wo lies on ng's side (outside), else -1
+  Vec3 wo;      // local
+  float eta;    // glass: eta_t / eta_i for light leaving towards wo's side
+};
+
+CANDELA_HDI Bsdf makeBsdf(const Material& m, const Vec3& color, const Vec3& wo, const Vec3& ng,
+                          const Vec3& ns) {
+  const float side = dot(wo, ng) >= 0.0f ? 1.0f : -1.0f;
+  const Frame frame(facingNormal(wo, ng, ns));
+  return {&m, color, frame, ng, side, frame.toLocal(wo), side > 0.0f ? m.ior : 1.0f / m.ior};
 }
 
-CANDELA_HDI float diffusePdf(const Vec3& wo, const Vec3& ng, const Vec3& ns, const Vec3& wi) {
-  if (dot(wo, ng) * dot(wi, ng) <= 0.0f) return 0.0f;
-  return cosineHemispherePdf(dot(wi, facingNormal(wo, ng, ns)));
-}
-
-// Samples a scattered direction; false when the path ends (the sample left through the wrong
-// side of the surface, which shading normals can cause).
-CANDELA_HDI bool sampleBsdf(const Material& m, const Vec3& wo, const Vec3& ng, const Vec3& ns,
-                            float u1, float u2, BsdfSample* s) {
-  const Vec3 n = facingNormal(wo, ng, ns);
-  const float side = dot(wo, ng) >= 0.0f ? 1.0f : -1.0f;  // wo's side of the geometry
+// Whether some lobe has a density (next-event estimation and MIS apply), rather than only mirror
+// and refraction directions.
+CANDELA_HDI bool hasSmoothLobe(const Material& m) {
   switch (m.type) {
-    case MaterialType::Diffuse: {
-      const Vec3 local = sampleCosineHemisphere(u1, u2);
-      s->wi = Frame(n).toWorld(local);
-      s->pdf = cosineHemispherePdf(local.z);
-      s->weight = m.color;  // (albedo / pi) * cos / (cos / pi)
-      s->specular = false;
-      return side * dot(s->wi, ng) > 0.0f && s->pdf > 0.0f;
-    }
-    case MaterialType::Mirror: {
-      s->wi = reflect(wo, n);
-      s->weight = m.color;
-      s->pdf = 0.0f;
-      s->specular = true;
-      return side * dot(s->wi, ng) > 0.0f;
-    }
-    case MaterialType::Glass: {
-      // eta = eta_t / eta_i: entering from outside the ratio is ior, leaving it is 1 / ior.
-      const float eta = side > 0.0f ? m.ior : 1.0f / m.ior;
-      const float cosThetaI = maxf(0.0f, dot(wo, n));
-      const float reflectance = fresnelDielectric(cosThetaI, eta);
-      s->pdf = 0.0f;
-      s->specular = true;
-      if (u1 < reflectance) {
-        s->wi = reflect(wo, n);
-        s->weight = Vec3(1.0f);  // F / (probability F)
-        return side * dot(s->wi, ng) > 0.0f;
-      }
-      if (!refract(wo, n, eta, &s->wi)) return false;  // unreachable: F = 1 under TIR
-      // (1 - F) / (probability 1 - F), radiance scaled by (eta_i / eta_t)^2, tinted by color.
-      s->weight = m.color * (1.0f / (eta * eta));
-      return side * dot(s->wi, ng) < 0.0f;
-    }
+    case MaterialType::Diffuse:
+    case MaterialType::Plastic:
+      return true;
+    case MaterialType::Conductor:
+    case MaterialType::Glass:
+      return roughnessToAlpha(m.roughness) >= kSmoothAlpha;
     case MaterialType::Emissive:
       return false;
   }
   return false;
+}
+
+// Whether sampleBsdf reads its first number (a choice between lobes); the integrator draws it
+// only for such materials.
+CANDELA_HDI bool usesLobeChoice(const Material& m) {
+  return m.type == MaterialType::Plastic ||
+         (m.type == MaterialType::Glass && !dielectricIsSmooth(m));
+}
+
+CANDELA_HDI bool isEmissive(const Material& m) { return m.type == MaterialType::Emissive; }
+
+// Whether wi, local z of sign wiLocalZ, leaves on the side of the geometry the lobe implies.
+CANDELA_HDI bool leavesOnItsSide(const Bsdf& b, const Vec3& wi, float wiLocalZ) {
+  const float geometric = b.side * dot(wi, b.ng);
+  return wiLocalZ > 0.0f ? geometric > 0.0f : geometric < 0.0f;
+}
+
+// f |cos(wi)| and the solid-angle pdf with which sampleBsdf picks wi (zero for delta lobes).
+CANDELA_HDI Vec3 evalBsdf(const Bsdf& b, const Vec3& wi, float* pdf) {
+  *pdf = 0.0f;
+  const Vec3 local = b.frame.toLocal(wi);
+  if (!leavesOnItsSide(b, wi, local.z)) return Vec3(0.0f);
+  const Material& m = *b.material;
+  switch (m.type) {
+    case MaterialType::Diffuse:
+      *pdf = diffusePdf(local);
+      return diffuseEval(b.color, local);
+    case MaterialType::Conductor:
+      *pdf = conductorPdf(m, b.wo, local);
+      return conductorEval(m, b.color, b.wo, local);
+    case MaterialType::Glass:
+      return dielectricEvalPdf(m, b.color, b.eta, b.wo, local, pdf);
+    case MaterialType::Plastic:
+      return plasticEvalPdf(m, b.color, b.wo, local, pdf);
+    case MaterialType::Emissive:
+      break;
+  }
+  return Vec3(0.0f);
+}
+
+// A scattered direction from (uc, u1, u2): uc picks a lobe where usesLobeChoice says so. False
+// when the path ends (no direction, or one leaving through the wrong side of the geometry).
+CANDELA_HDI bool sampleBsdf(const Bsdf& b, float uc, float u1, float u2, BsdfSample* s) {
+  const Material& m = *b.material;
+  bool sampled = false;
+  switch (m.type) {
+    case MaterialType::Diffuse:
+      sampled = diffuseSample(b.color, u1, u2, s);
+      break;
+    case MaterialType::Conductor:
+      sampled = conductorSample(m, b.color, b.wo, u1, u2, s);
+      break;
+    case MaterialType::Glass:
+      sampled = dielectricSample(m, b.color, b.eta, b.wo, uc, u1, u2, s);
+      break;
+    case MaterialType::Plastic:
+      sampled = plasticSample(m, b.color, b.wo, uc, u1, u2, s);
+      break;
+    case MaterialType::Emissive:
+      break;
+  }
+  if (!sampled) return false;
+  const float localZ = s->wi.z;
+  s->wi = b.frame.toWorld(s->wi);
+  return leavesOnItsSide(b, s->wi, localZ);
 }
 
 }  // namespace candela

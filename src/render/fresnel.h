@@ -1,5 +1,6 @@
-// Exact unpolarised Fresnel reflectance of a smooth dielectric interface, and the reflection and
-// refraction directions. Directions point away from the surface; n is on the side of wi.
+// Exact unpolarised Fresnel reflectance of smooth dielectric and conductor interfaces, and the
+// reflection and refraction directions. Directions point away from the surface; n is on the side
+// of wi.
 #pragma once
 
 #include <cmath>
@@ -16,6 +17,25 @@ CANDELA_HDI float fresnelDielectric(float cosThetaI, float eta) {
   const float rParallel = (eta * cosThetaI - cosThetaT) / (eta * cosThetaI + cosThetaT);
   const float rPerpendicular = (cosThetaI - eta * cosThetaT) / (cosThetaI + eta * cosThetaT);
   return 0.5f * (rParallel * rParallel + rPerpendicular * rPerpendicular);
+}
+
+// A conductor of complex relative index eta + i k, per colour channel ("Optics", K. D. Moeller,
+// 1988, as in Mitsuba 3's fresnel_conductor); cosThetaI in [0, 1].
+CANDELA_HDI float fresnelConductor(float cosThetaI, float eta, float k) {
+  const float cos2 = cosThetaI * cosThetaI, sin2 = 1.0f - cos2, sin4 = sin2 * sin2;
+  const float temp = eta * eta - k * k - sin2;
+  const float a2pb2 = sqrtf(maxf(0.0f, temp * temp + 4.0f * k * k * eta * eta));
+  const float a = sqrtf(maxf(0.0f, 0.5f * (a2pb2 + temp)));
+  const float term1 = a2pb2 + cos2, term2 = 2.0f * cosThetaI * a;
+  const float rs = (term1 - term2) / (term1 + term2);
+  const float term3 = a2pb2 * cos2 + sin4, term4 = term2 * sin2;
+  const float rp = rs * (term3 - term4) / (term3 + term4);
+  return 0.5f * (rs + rp);
+}
+
+CANDELA_HDI Vec3 fresnelConductor(float cosThetaI, const Vec3& eta, const Vec3& k) {
+  return {fresnelConductor(cosThetaI, eta.x, k.x), fresnelConductor(cosThetaI, eta.y, k.y),
+          fresnelConductor(cosThetaI, eta.z, k.z)};
 }
 
 CANDELA_HDI Vec3 reflect(const Vec3& wo, const Vec3& n) { return -wo + n * (2.0f * dot(wo, n)); }

@@ -33,15 +33,17 @@ CANDELA_HDI Ray spawnRay(const SurfacePoint& sp, const Vec3& wi) {
   return r;
 }
 
-// Direct light at a diffuse point from one light, by one shadow ray, weighted by the probability
-// light.selectPmf of sampling that light. `tracer` answers the ray queries (geometry/bvh_tracer.h).
+// Direct light at a point with a smooth BSDF lobe from one light, by one shadow ray, weighted by
+// the probability light.selectPmf of sampling that light. `tracer` answers the ray queries
+// (geometry/bvh_tracer.h).
 template <class Tracer>
 CANDELA_HDI Vec3 sampleOneLight(const SceneView& scene, const Tracer& tracer, const Light& light,
-                                const Material& m, const SurfacePoint& sp, const Vec3& wo, float u1,
-                                float u2, RayCounters& counters) {
+                                const Bsdf& bsdf, const SurfacePoint& sp, float u1, float u2,
+                                RayCounters& counters) {
   LightSample ls;
   if (!sampleLight(scene, light, sp.p, u1, u2, &ls)) return Vec3(0.0f);
-  const Vec3 f = evalDiffuse(m, wo, sp.ng, sp.ns, ls.wi);
+  float bsdfPdf;
+  const Vec3 f = evalBsdf(bsdf, ls.wi, &bsdfPdf);
   if (isBlack(f)) return Vec3(0.0f);
   Ray shadow = spawnRay(sp, ls.wi);
   // The environment lies beyond everything: nothing short of infinity may block it.
@@ -52,8 +54,7 @@ CANDELA_HDI Vec3 sampleOneLight(const SceneView& scene, const Tracer& tracer, co
   ++counters.shadow;
   if (tracer.occluded(shadow, lightPrimitive(scene, light))) return Vec3(0.0f);
   const float lightPdf = light.selectPmf * ls.pdf;
-  const float weight =
-      ls.isDelta ? 1.0f : powerHeuristic(lightPdf, diffusePdf(wo, sp.ng, sp.ns, ls.wi));
+  const float weight = ls.isDelta ? 1.0f : powerHeuristic(lightPdf, bsdfPdf);
   return f * ls.radiance * (weight / lightPdf);
 }
 
@@ -64,12 +65,11 @@ CANDELA_HDI void drawLightNumbers(SampleStream& rng, const Light& light, float* 
   rng.next2DIfUsed(light.type != LightType::Point, u1, u2);
 }
 
-// Direct light at a diffuse point: from each light when the scene says so (a few point lights:
-// render/light.h, sampleEveryLight), else from one picked in proportion to power.
+// Direct light at a point with a smooth BSDF lobe: from each light when the scene says so (a few
+// point lights: render/light.h, sampleEveryLight), else from one picked in proportion to power.
 template <class Tracer>
-CANDELA_HDI Vec3 estimateDirect(const SceneView& scene, const Tracer& tracer, const Material& m,
-                                const SurfacePoint& sp, const Vec3& wo, SampleStream& rng,
-                                RayCounters& counters) {
+CANDELA_HDI Vec3 estimateDirect(const SceneView& scene, const Tracer& tracer, const Bsdf& bsdf,
+                                const SurfacePoint& sp, SampleStream& rng, RayCounters& counters) {
   // One dimension per light, or two for the picked one (the pick and its light's sample),
   // whatever the geometry, so the stream's layout never depends on it.
   float u1 = 0.0f, u2 = 0.0f;
@@ -77,7 +77,7 @@ CANDELA_HDI Vec3 estimateDirect(const SceneView& scene, const Tracer& tracer, co
     Vec3 sum(0.0f);
     for (uint32_t i = 0; i < scene.lightCount; ++i) {
       drawLightNumbers(rng, scene.lights[i], &u1, &u2);
-      sum += sampleOneLight(scene, tracer, scene.lights[i], m, sp, wo, u1, u2, counters);
+      sum += sampleOneLight(scene, tracer, scene.lights[i], bsdf, sp, u1, u2, counters);
     }
     return sum;
   }
@@ -88,7 +88,7 @@ CANDELA_HDI Vec3 estimateDirect(const SceneView& scene, const Tracer& tracer, co
     return Vec3(0.0f);
   }
   drawLightNumbers(rng, scene.lights[index], &u1, &u2);
-  return sampleOneLight(scene, tracer, scene.lights[index], m, sp, wo, u1, u2, counters);
+  return sampleOneLight(scene, tracer, scene.lights[index], bsdf, sp, u1, u2, counters);
 }
 
 // Radiance arriving at the camera along `ray` (one sample).
@@ -98,7 +98,10 @@ CANDELA_HDI Vec3 traceRadiance(const SceneView& scene, const Tracer& tracer, Ray
   Vec3 radiance(0.0f), throughput(1.0f);
   uint32_t maxDepth = scene.settings.maxDepth;
   bool specularBounce = true;  // the camera counts as specular: emitters seen directly count fully
-  float bsdfPdf = 0.0f;        // pdf of the last diffuse bounce, for MIS on area lights
+  float bsdfPdf = 0.0f;        // pdf of the last non-delta bounce, for MIS on area lights
+  // The product of eta^2 over the transmissions so far: Russian roulette judges the throughput
+  // without the 1 / eta^2 radiance scaling, which says nothing about the path's worth.
+  float etaScale = 1.0f;
   Vec3 bouncePoint(0.0f);
 
   for (uint32_t depth = 1;; ++depth) {
@@ -117,7 +120,7 @@ CANDELA_HDI Vec3 traceRadiance(const SceneView& scene, const Tracer& tracer, Ray
     const Material& m = scene.materials[sp.material];
     const Vec3 wo = -ray.direction;
 
-    if (m.type == MaterialType::Emissive) {
+    if (isEmissive(m)) {
       if (dot(wo, sp.ng) > 0.0f) {  // emitters emit from their outside only
         float weight = 1.0f;
         const int32_t light = specularBounce ? -1 : lightOfPrimitive(scene, hit.prim);
@@ -132,25 +135,28 @@ CANDELA_HDI Vec3 traceRadiance(const SceneView& scene, const Tracer& tracer, Ray
     }
     if (depth > maxDepth) break;
 
-    if (m.type == MaterialType::Diffuse) {
-      radiance += throughput * estimateDirect(scene, tracer, m, sp, wo, rng, counters);
+    const Bsdf bsdf = makeBsdf(m, m.color, wo, sp.ng, sp.ns);
+    if (hasSmoothLobe(m)) {
+      radiance += throughput * estimateDirect(scene, tracer, bsdf, sp, rng, counters);
       // "direct": the scattered ray below only gathers emission; nothing scatters after it.
       if (scene.settings.integrator == IntegratorType::Direct) maxDepth = depth;
     }
 
     if (depth == maxDepth && !scene.emissionReachable) break;
 
+    const float uc = usesLobeChoice(m) ? rng.next1D() : 0.0f;
     float u1, u2;
     rng.next2D(&u1, &u2);
     BsdfSample bs;
-    if (!sampleBsdf(m, wo, sp.ng, sp.ns, u1, u2, &bs)) break;
+    if (!sampleBsdf(bsdf, uc, u1, u2, &bs)) break;
     throughput *= bs.weight;
-    specularBounce = bs.specular;
+    etaScale *= bs.eta * bs.eta;
+    specularBounce = bs.delta;
     bsdfPdf = bs.pdf;
     bouncePoint = sp.p;
 
     if (depth >= kRouletteDepth) {
-      const float survive = minf(0.95f, maxComponent(throughput));
+      const float survive = minf(0.95f, maxComponent(throughput) * etaScale);
       if (rng.next1D() >= survive) break;
       throughput /= survive;
     }

@@ -1,6 +1,8 @@
 // Materials: a plain tag and the parameters of every kind, read by render/bsdf.h.
 //
-// The scene description and the kernel share this struct: a material has one home.
+// The scene description and the kernel share this struct: a material has one home. What a
+// material derives from its parameters (the plastic's internal reflectance and transmittance
+// table) is filled in once on the host by prepareMaterial (render/material_prepare.h).
 #pragma once
 
 #include <cstdint>
@@ -9,13 +11,33 @@
 
 namespace candela {
 
-enum class MaterialType : uint32_t { Diffuse = 0, Mirror = 1, Glass = 2, Emissive = 3 };
+enum class MaterialType : uint32_t {
+  Diffuse = 0,
+  Conductor = 1,  // the contract's "mirror" is a conductor of roughness 0
+  Glass = 2,
+  Emissive = 3,
+  Plastic = 4,
+};
+
+// Samples of the rough plastic's coating transmittance over cos(theta) in [0, 1] (Mitsuba 3's
+// MTS_ROUGH_TRANSMITTANCE_RES is 64 for the same table).
+constexpr uint32_t kPlasticTableSize = 64;
 
 struct Material {
   MaterialType type = MaterialType::Diffuse;
-  Vec3 color{0.8f};     // diffuse albedo, mirror tint or glass transmission tint
-  float ior = 1.5f;     // glass: relative index, outside -> inside
+  // Diffuse albedo, conductor reflectance (tinting the metal's Fresnel when `metal`), glass
+  // transmission tint or plastic base colour.
+  Vec3 color{0.8f};
+  float ior = 1.5f;        // glass and plastic: relative index, outside -> inside
+  float roughness = 0.0f;  // conductor, glass, plastic: in [0, 1], alpha = roughness^2
+  bool metal = false;      // conductor: Fresnel of the complex index metalEta + i metalK
+  Vec3 metalEta{0.0f}, metalK{0.0f};
   Vec3 radiance{0.0f};  // emissive: emitted radiance from the front side
+
+  // Plastic, derived (prepareMaterial): the diffuse light's chance to be reflected back down by
+  // the coating from inside, and the coating's transmittance from outside by cos(theta).
+  float plasticInternalReflectance = 0.0f;
+  float plasticTransmittance[kPlasticTableSize] = {};
 };
 
 }  // namespace candela

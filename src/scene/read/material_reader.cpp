@@ -1,50 +1,95 @@
 // Reading materials; see material_reader.h.
 #include "scene/read/material_reader.h"
 
+#include <algorithm>
 #include <vector>
 
+#include "render/material_prepare.h"
 #include "scene/read/did_you_mean.h"
+#include "scene/read/metal_table.h"
 
 namespace candela {
 namespace {
 
-const std::vector<std::string> kTypeNames = {"diffuse", "mirror", "glass", "emissive"};
-const MaterialType kTypes[] = {MaterialType::Diffuse, MaterialType::Mirror, MaterialType::Glass,
-                               MaterialType::Emissive};
-// The types the seed shorthand may name: the first three of the above.
+const std::vector<std::string> kTypeNames = {"diffuse", "mirror",    "glass",
+                                             "emissive", "conductor", "plastic"};
+// The types the seed shorthand may name: the first three.
 constexpr size_t kShorthandCount = 3;
+enum TypeIndex : size_t { kDiffuse, kMirror, kGlass, kEmissive, kConductor, kPlastic };
+
+// Every field a material may have, and which of them each type reads.
+const std::vector<std::string> kFields = {"color", "ior", "roughness", "metal", "radiance"};
+const std::vector<std::vector<std::string>> kFieldsOf = {
+    {"color"},                      // diffuse
+    {"color"},                      // mirror
+    {"color", "ior", "roughness"},  // glass
+    {"radiance"},                   // emissive
+    {"color", "roughness", "metal"},
+    {"color", "ior", "roughness"},  // plastic
+};
 
 std::string notUsedBy(size_t type) {
-  return std::string("not used by ") + (kTypes[type] == MaterialType::Emissive ? "an " : "a ") +
+  return std::string("not used by ") + (type == kEmissive ? "an " : "a ") +
          quoted(kTypeNames[type]) + " material";
 }
 
-// The fields of a material of type kTypes[type], read from `fields`: the material object itself,
-// or for the shorthand the sphere or object that carries them.
+float readRoughness(JsonObject& fields) {
+  const std::optional<JsonValue> value = fields.get("roughness");
+  if (!value) return 0.0f;
+  const float roughness = value->number("a roughness in [0, 1]");
+  if (!(roughness >= 0.0f && roughness <= 1.0f)) value->failExpected("a roughness in [0, 1]");
+  return roughness;
+}
+
+void readMetal(const JsonValue& value, Material* material) {
+  std::vector<std::string> names;
+  for (const NamedMetal& metal : namedMetals()) names.push_back(metal.name);
+  const NamedMetal& metal = namedMetals()[value.choice(names)];
+  material->metal = true;
+  material->metalEta = metal.eta;
+  material->metalK = metal.k;
+}
+
+// The fields of a material of type kTypeNames[type], read from `fields`: the material object
+// itself, or for the shorthand the sphere or object that carries them.
 Material readFields(JsonObject& fields, size_t type) {
+  for (const std::string& field : kFields) {
+    const std::vector<std::string>& used = kFieldsOf[type];
+    if (std::find(used.begin(), used.end(), field) == used.end())
+      fields.reject(field, notUsedBy(type));
+  }
   Material material;
-  material.type = kTypes[type];
-  switch (material.type) {
-    case MaterialType::Diffuse:
-    case MaterialType::Mirror:
-    case MaterialType::Glass: {
-      const float defaultColor = material.type == MaterialType::Diffuse ? 0.8f : 1.0f;
-      const std::optional<JsonValue> color = fields.get("color");
-      material.color = color ? color->colour() : Vec3(defaultColor);
-      if (material.type == MaterialType::Glass) {
-        if (std::optional<JsonValue> ior = fields.get("ior")) material.ior = ior->positiveNumber();
-      } else {
-        fields.reject("ior", notUsedBy(type));
-      }
-      fields.reject("radiance", notUsedBy(type));
+  if (type == kEmissive) {
+    material.type = MaterialType::Emissive;
+    material.radiance = fields.require("radiance").colour();
+    return material;
+  }
+  const float defaultColor[] = {0.8f, 1.0f, 1.0f, 0.0f, 1.0f, 0.5f};
+  const std::optional<JsonValue> color = fields.get("color");
+  material.color = color ? color->colour() : Vec3(defaultColor[type]);
+  switch (type) {
+    case kDiffuse:
+      material.type = MaterialType::Diffuse;
       break;
-    }
-    case MaterialType::Emissive:
-      material.radiance = fields.require("radiance").colour();
-      fields.reject("color", notUsedBy(type));
-      fields.reject("ior", notUsedBy(type));
+    case kMirror:
+      material.type = MaterialType::Conductor;
+      break;
+    case kConductor:
+      material.type = MaterialType::Conductor;
+      material.roughness = readRoughness(fields);
+      if (std::optional<JsonValue> metal = fields.get("metal")) {
+        if (color) fields.fail("give a conductor either \"color\" or \"metal\", not both");
+        readMetal(*metal, &material);
+      }
+      break;
+    case kGlass:
+    case kPlastic:
+      material.type = type == kGlass ? MaterialType::Glass : MaterialType::Plastic;
+      material.roughness = readRoughness(fields);
+      if (std::optional<JsonValue> ior = fields.get("ior")) material.ior = ior->positiveNumber();
       break;
   }
+  prepareMaterial(&material);
   return material;
 }
 
@@ -79,7 +124,9 @@ MaterialLibrary readMaterialLibrary(const JsonValue& value) {
 }
 
 Material readMaterial(const JsonValue& value) {
-  JsonObject fields(value, {"type", "color", "ior", "radiance"}, "a material object");
+  std::vector<std::string> known = {"type"};
+  known.insert(known.end(), kFields.begin(), kFields.end());
+  JsonObject fields(value, known, "a material object");
   const size_t type = fields.require("type").choice(kTypeNames);
   Material material = readFields(fields, type);
   fields.finish();

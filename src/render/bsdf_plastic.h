@@ -1,0 +1,81 @@
+// Plastic: a diffuse base of colour `color` under a dielectric coating of index `ior`, smooth
+// (a mirror-reflecting coat) or rough (a GGX coat), as Mitsuba 3's plastic and roughplastic with
+// nonlinear = false. Light that enters the coat, scatters diffusely and leaves again is weighted
+// by the coat's transmittance on both ways, 1 / eta^2 for the change of solid angle, and
+// 1 / (1 - R_int) for its repeated internal reflections (render/material_prepare.h computes R_int
+// and the rough coat's transmittance table). Local shading frame of render/bsdf.h, wo.z > 0.
+#pragma once
+
+#include "core/sampling.h"
+#include "render/bsdf_sample.h"
+#include "render/fresnel.h"
+#include "render/material.h"
+#include "render/microfacet.h"
+
+namespace candela {
+
+// The coat's transmittance at cos(theta): 1 - F for a smooth coat; for a rough one the table
+// of what its BTDF transmits (masking takes some of it, so it is less than 1 - reflectance).
+CANDELA_HDI float plasticTransmittance(const Material& m, float cosTheta) {
+  if (roughnessToAlpha(m.roughness) < kSmoothAlpha)
+    return 1.0f - fresnelDielectric(cosTheta, m.ior);
+  const float x = minf(maxf(cosTheta, 0.0f), 1.0f) * float(kPlasticTableSize - 1);
+  const uint32_t i = x < float(kPlasticTableSize - 2) ? uint32_t(x) : kPlasticTableSize - 2;
+  const float w = x - float(i);
+  return (1.0f - w) * m.plasticTransmittance[i] + w * m.plasticTransmittance[i + 1];
+}
+
+// Probability of sampling the coat's reflection rather than the base (Mitsuba's choice: the
+// coat's reflectance against the base's mean albedo).
+CANDELA_HDI float plasticCoatProbability(const Vec3& color, float transmittanceO) {
+  const float coatWeight = 1.0f / (1.0f + (color.x + color.y + color.z) * (1.0f / 3.0f));
+  const float coat = (1.0f - transmittanceO) * coatWeight;
+  const float base = transmittanceO * (1.0f - coatWeight);
+  return coat + base > 0.0f ? coat / (coat + base) : 0.0f;
+}
+
+// The smooth part (base, and a rough coat's reflection): f |cos(wi)| and its pdf.
+CANDELA_HDI Vec3 plasticEvalPdf(const Material& m, const Vec3& color, const Vec3& wo,
+                                const Vec3& wi, float* pdf) {
+  *pdf = 0.0f;
+  if (wo.z <= 0.0f || wi.z <= 0.0f) return Vec3(0.0f);
+  const float to = plasticTransmittance(m, wo.z), ti = plasticTransmittance(m, wi.z);
+  const float coatProbability = plasticCoatProbability(color, to);
+  const Vec3 base = color * (kInvPi * wi.z * to * ti /
+                             (m.ior * m.ior * (1.0f - m.plasticInternalReflectance)));
+  *pdf = (1.0f - coatProbability) * cosineHemispherePdf(wi.z);
+  const float alpha = roughnessToAlpha(m.roughness);
+  if (alpha < kSmoothAlpha) return base;
+  const Vec3 h = normalize(wo + wi);
+  const float d = ggxD(h, alpha);
+  *pdf += coatProbability * ggxG1(wo, h, alpha) * d / (4.0f * wo.z);
+  const float coat = fresnelDielectric(dot(wo, h), m.ior) * d * ggxG(wo, wi, h, alpha) /
+                     (4.0f * wo.z);
+  return base + Vec3(coat);
+}
+
+CANDELA_HDI bool plasticSample(const Material& m, const Vec3& color, const Vec3& wo, float uc,
+                               float u1, float u2, BsdfSample* s) {
+  if (wo.z <= 0.0f) return false;
+  const float alpha = roughnessToAlpha(m.roughness);
+  const float coatProbability = plasticCoatProbability(color, plasticTransmittance(m, wo.z));
+  if (uc < coatProbability) {
+    if (alpha < kSmoothAlpha) {
+      s->wi = Vec3(-wo.x, -wo.y, wo.z);
+      s->weight = Vec3(fresnelDielectric(wo.z, m.ior) / coatProbability);
+      s->pdf = 0.0f;
+      s->delta = true;
+      return true;
+    }
+    s->wi = reflect(wo, sampleGgxVisible(wo, alpha, u1, u2));
+  } else {
+    s->wi = sampleCosineHemisphere(u1, u2);
+  }
+  const Vec3 f = plasticEvalPdf(m, color, wo, s->wi, &s->pdf);
+  if (!(s->pdf > 0.0f)) return false;
+  s->weight = f / s->pdf;
+  s->delta = false;
+  return true;
+}
+
+}  // namespace candela

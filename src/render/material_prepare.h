@@ -1,0 +1,18 @@
+// What a material derives from its parameters once, on the host, before rendering: the plastic's
+// internal reflectance and coating transmittance table (render/bsdf_plastic.h).
+#pragma once
+
+#include "render/material.h"
+
+namespace candela {
+
+// Fills m's derived fields from its type, colour, ior and roughness. Idempotent.
+void prepareMaterial(Material* m);
+
+// The share of light arriving at cos(theta) = mu that a GGX dielectric coating (relative index
+// eta, alpha >= kSmoothAlpha) reflects, and the share it transmits, in single scattering (the
+// integrals of its BRDF and BTDF times the cosine, by quadrature over the visible normals).
+double roughCoatReflectance(double mu, float eta, float alpha);
+double roughCoatTransmittance(double mu, float eta, float alpha);
+
+}  // namespace candela
