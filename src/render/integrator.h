@@ -16,6 +16,7 @@
 #include "render/bsdf.h"
 #include "render/light_sample.h"
 #include "render/ray_counters.h"
+#include "render/surface_color.h"
 
 namespace candela {
 
@@ -114,7 +115,8 @@ CANDELA_HDI Vec3 traceRadiance(const SceneView& scene, const Tracer& tracer, Ray
     }
     const SurfacePoint sp = surfaceAt(scene, ray, hit);
     CANDELA_DCHECK(sp.material < scene.materialCount);
-    const Material& m = scene.materials[sp.material];
+    Material m = scene.materials[sp.material];
+    m.color = surfaceColor(scene, m, sp);
     const Vec3 wo = -ray.direction;
 
     if (m.type == MaterialType::Emissive) {

@@ -5,7 +5,9 @@
 
 #include <cstdint>
 
+#include "core/texture.h"
 #include "core/vec3.h"
+#include "geometry/alpha_mask.h"
 
 namespace candela {
 
@@ -16,6 +18,8 @@ struct Material {
   Vec3 color{0.8f};     // diffuse albedo, mirror tint or glass transmission tint
   float ior = 1.5f;     // glass: relative index, outside -> inside
   Vec3 radiance{0.0f};  // emissive: emitted radiance from the front side
+  TextureRef colorTexture;  // diffuse: a texture that `color` tints (render/surface_color.h)
+  AlphaMask alpha;          // how much of the surface is there (geometry/alpha_mask.h)
 };
 
 }  // namespace candela

@@ -21,7 +21,7 @@ std::string notUsedBy(size_t type) {
 
 // The fields of a material of type kTypes[type], read from `fields`: the material object itself,
 // or for the shorthand the sphere or object that carries them.
-Material readFields(JsonObject& fields, size_t type) {
+Material readFields(JsonObject& fields, size_t type, TextureLoader& textures) {
   Material material;
   material.type = kTypes[type];
   switch (material.type) {
@@ -30,7 +30,10 @@ Material readFields(JsonObject& fields, size_t type) {
     case MaterialType::Glass: {
       const float defaultColor = material.type == MaterialType::Diffuse ? 0.8f : 1.0f;
       const std::optional<JsonValue> color = fields.get("color");
-      material.color = color ? color->colour() : Vec3(defaultColor);
+      if (color && material.type == MaterialType::Diffuse)
+        material.color = readTexturedColour(*color, textures, &material.colorTexture);
+      else
+        material.color = color ? color->colour() : Vec3(defaultColor);
       if (material.type == MaterialType::Glass) {
         if (std::optional<JsonValue> ior = fields.get("ior")) material.ior = ior->positiveNumber();
       } else {
@@ -67,33 +70,33 @@ Material readFields(JsonObject& fields, size_t type) {
 
 }  // namespace
 
-MaterialLibrary readMaterialLibrary(const JsonValue& value) {
+MaterialLibrary readMaterialLibrary(const JsonValue& value, TextureLoader& textures) {
   if (!value.json().is_object()) value.failExpected("an object (material name -> material)");
   MaterialLibrary library;
   for (const auto& item : value.json().items()) {
     if (isCommentKey(item.key())) continue;
     const JsonValue material(item.value(), value.file(), memberPath(value.path(), item.key()));
-    library[item.key()] = readMaterial(material);
+    library[item.key()] = readMaterial(material, textures);
   }
   return library;
 }
 
-Material readMaterial(const JsonValue& value) {
+Material readMaterial(const JsonValue& value, TextureLoader& textures) {
   JsonObject fields(value, {"type", "color", "ior", "radiance"}, "a material object");
   const size_t type = fields.require("type").choice(kTypeNames);
-  Material material = readFields(fields, type);
+  Material material = readFields(fields, type, textures);
   fields.finish();
   return material;
 }
 
-std::optional<Material> readMaterialReference(JsonObject& owner,
-                                                  const MaterialLibrary& library) {
+std::optional<Material> readMaterialReference(JsonObject& owner, const MaterialLibrary& library,
+                                              TextureLoader& textures) {
   const std::optional<JsonValue> reference = owner.get("material");
   if (!reference) {
     owner.reject("ior", "not used without a \"glass\" material");
     if (std::optional<JsonValue> color = owner.get("color")) {
       Material diffuse;
-      diffuse.color = color->colour();
+      diffuse.color = readTexturedColour(*color, textures, &diffuse.colorTexture);
       return diffuse;
     }
     return std::nullopt;
@@ -102,7 +105,7 @@ std::optional<Material> readMaterialReference(JsonObject& owner,
     const std::string reason = "not used beside an inline material (put it inside \"material\")";
     owner.reject("color", reason);
     owner.reject("ior", reason);
-    return readMaterial(*reference);
+    return readMaterial(*reference, textures);
   }
   if (!reference->json().is_string())
     reference->failExpected("a material name or a material object");
@@ -118,7 +121,7 @@ std::optional<Material> readMaterialReference(JsonObject& owner,
     return named->second;
   }
   for (size_t type = 0; type < kShorthandCount; ++type)
-    if (name == kTypeNames[type]) return readFields(owner, type);
+    if (name == kTypeNames[type]) return readFields(owner, type, textures);
   failUnknownMaterial(*reference, name, library);
 }
 
