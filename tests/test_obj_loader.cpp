@@ -324,6 +324,14 @@ TEST(ObjAsset, CatLoadsWithItsMaterial) {
   EXPECT_FLOAT_EQ(mesh.materials[0].color.x, 1);
   EXPECT_FLOAT_EQ(mesh.materials[0].color.y, 1);
   EXPECT_FLOAT_EQ(mesh.materials[0].color.z, 1);
+  // map_Kd and map_d name cat_diff.png, a 512x1024 RGBA image: read once as colour, once as mask.
+  ASSERT_EQ(textures.size(), 2u);
+  EXPECT_EQ(textures[0]->width, 512u);
+  EXPECT_EQ(textures[0]->height, 1024u);
+  EXPECT_EQ(mesh.materials[0].colorTexture.index, 0);
+  EXPECT_EQ(mesh.materials[0].alpha.texture.index, 1);
+  EXPECT_EQ(mesh.materials[0].alpha.channel, 3u);
+  EXPECT_FALSE(mesh.uvs.empty());
   for (const MeshTriangle& t : mesh.triangles) {
     ASSERT_EQ(t.material, 0u);
     ASSERT_GE(t.n[0], 0);
