@@ -271,7 +271,9 @@ TEST(AreaLights, MtlKeMakesFacesEmissive) {
       writeObj("area_lamp_mtl.obj",
                "mtllib area_lamp.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nusemtl lamp\nf 1 2 3\n"
                "usemtl wall\nf 2 4 3\n");
-  const MeshDesc mesh = loadObjFile(obj, "lamp.obj");
+  std::vector<std::shared_ptr<const TextureDesc>> textures;
+  TextureLoader loader(textures, ".");
+  const MeshDesc mesh = loadObjFile(obj, "lamp.obj", loader);
   ASSERT_EQ(mesh.triangles.size(), 2u);
   const Material& lamp = mesh.materials[mesh.triangles[0].material];
   EXPECT_EQ(lamp.type, MaterialType::Emissive);
@@ -284,7 +286,7 @@ TEST(AreaLights, MtlKeMakesFacesEmissive) {
                                    "mtllib area_bad.mtl\nv 0 0 0\nv 1 0 0\n"
                                    "v 0 1 0\nusemtl lamp\nf 1 2 3\n");
   try {
-    loadObjFile(bad, "bad.obj");
+    loadObjFile(bad, "bad.obj", loader);
     FAIL() << "a negative Ke was accepted";
   } catch (const SceneError& e) {
     EXPECT_EQ(std::string(e.what()),

@@ -209,7 +209,9 @@ TEST(Bsdf, WhiteFurnaceNeverGainsEnergy) {
       // Single scattering loses what bounces more than once among the facets; never gains.
       const float c = albedo(conductor(r, false), wo, kSamples).x;
       EXPECT_LE(c, 1.0f + 1e-4f);
-      if (r <= 0.2f && cosTheta >= 0.2f) EXPECT_GT(c, 0.97f);
+      if (r <= 0.2f && cosTheta >= 0.2f) {
+        EXPECT_GT(c, 0.97f);
+      }
       EXPECT_LE(albedo(glass(r, 1.5f), wo, kSamples).x, 1.0f + 0.01f);
       EXPECT_LE(albedo(plastic(r, Vec3(1.0f)), wo, kSamples).x, 1.0f + 0.01f);
     }

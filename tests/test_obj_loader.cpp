@@ -39,7 +39,7 @@ class ObjLoader : public ::testing::Test {
  protected:
   MeshDesc load(const std::string& text, const std::string& mtl = "") const {
     if (!mtl.empty()) dir.write("m.mtl", mtl);
-    return loadObjFile(dir.write("m.obj", text), "m.obj");
+    return loadObjFile(dir.write("m.obj", text), "m.obj", loader);
   }
   // The message of the SceneError that loading `text` throws, or a note that it threw none.
   std::string error(const std::string& text) const {
@@ -52,6 +52,8 @@ class ObjLoader : public ::testing::Test {
   }
 
   TempDir dir;
+  mutable std::vector<std::shared_ptr<const TextureDesc>> textures;
+  mutable TextureLoader loader{textures, "."};
 };
 
 void expectTriangle(const MeshTriangle& t, uint32_t a, uint32_t b, uint32_t c) {
@@ -258,7 +260,7 @@ TEST_F(ObjLoader, FileWithoutFacesIsAnError) {
 
 TEST_F(ObjLoader, MissingFile) {
   try {
-    loadObjFile("/nonexistent/candela/x.obj", "meshes/x.obj");
+    loadObjFile("/nonexistent/candela/x.obj", "meshes/x.obj", loader);
     FAIL() << "no SceneError";
   } catch (const SceneError& e) {
     EXPECT_EQ(std::string(e.what()), "cannot open \"meshes/x.obj\" (No such file or directory)");
@@ -311,7 +313,9 @@ TEST(ObjAsset, CatLoadsWithItsMaterial) {
       (assets ? std::string(assets) : std::string(CANDELA_SOURCE_DIR) + "/../shared/assets") +
       "/cat/cat.obj";
   if (!std::filesystem::exists(path)) GTEST_SKIP() << "shared asset " << path << " is not present";
-  const MeshDesc mesh = loadObjFile(path, "cat.obj");
+  std::vector<std::shared_ptr<const TextureDesc>> textures;
+  TextureLoader loader(textures, ".");
+  const MeshDesc mesh = loadObjFile(path, "cat.obj", loader);
   EXPECT_EQ(mesh.triangles.size(), 3954u);
   EXPECT_EQ(mesh.positions.size(), 2247u);
   EXPECT_EQ(mesh.normals.size(), 2152u);
@@ -320,6 +324,14 @@ TEST(ObjAsset, CatLoadsWithItsMaterial) {
   EXPECT_FLOAT_EQ(mesh.materials[0].color.x, 1);
   EXPECT_FLOAT_EQ(mesh.materials[0].color.y, 1);
   EXPECT_FLOAT_EQ(mesh.materials[0].color.z, 1);
+  // map_Kd and map_d name cat_diff.png, a 512x1024 RGBA image: read once as colour, once as mask.
+  ASSERT_EQ(textures.size(), 2u);
+  EXPECT_EQ(textures[0]->width, 512u);
+  EXPECT_EQ(textures[0]->height, 1024u);
+  EXPECT_EQ(mesh.materials[0].colorTexture.index, 0);
+  EXPECT_EQ(mesh.materials[0].alpha.texture.index, 1);
+  EXPECT_EQ(mesh.materials[0].alpha.channel, 3u);
+  EXPECT_FALSE(mesh.uvs.empty());
   for (const MeshTriangle& t : mesh.triangles) {
     ASSERT_EQ(t.material, 0u);
     ASSERT_GE(t.n[0], 0);

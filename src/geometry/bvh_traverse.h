@@ -11,6 +11,7 @@
 #include "core/bits.h"
 #include "core/check.h"
 #include "geometry/aabb.h"
+#include "geometry/alpha_test.h"
 #include "geometry/ray.h"
 #include "geometry/sphere_intersect.h"
 #include "geometry/geometry_view.h"
@@ -22,6 +23,7 @@ namespace candela {
 constexpr int kBvhStackSize = 3 * 63 + 1;
 
 // Intersects primitive `prim` (GeometryView numbering) for t in (0, tMax); fills `hit` on a hit.
+// A triangle hit that its material's alpha mask rejects (geometry/alpha_test.h) is no hit.
 CANDELA_HDI bool intersectPrimitive(const GeometryView& scene, const Ray& ray, uint32_t prim,
                                     float tMax, Hit* hit) {
   if (prim < scene.sphereCount) {
@@ -38,6 +40,7 @@ CANDELA_HDI bool intersectPrimitive(const GeometryView& scene, const Ray& ray, u
                          scene.positions[tri.v[2]], ray, tMax, &th)) {
     return false;
   }
+  if (!alphaKeepsHit(scene, tri, th.b1, th.b2, ray)) return false;  // masked out: not a surface
   hit->t = th.t;
   hit->prim = prim;
   hit->b1 = th.b1;

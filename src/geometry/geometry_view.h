@@ -7,6 +7,9 @@
 // - `normals` is empty or parallel to `positions`: normals[i] is vertex i's shading normal,
 //   octahedrally encoded (core/oct_normal.h); "none" makes a triangle with such a vertex use its
 //   face normal.
+// - `uvs` is empty or parallel to `positions` (texture coordinates, (0, 0) for vertices of meshes
+//   without any). The texture pool (core/texture.h) lives here too, since alpha tests during
+//   traversal read it; `alphaMasks` is empty when no material is masked, else one per material.
 // - Primitive index p in [0, sphereCount) is spheres[p]; p >= sphereCount is triangle
 //   p - sphereCount. The BVH leaves index `primIndices`, which hold such primitive indices.
 #pragma once
@@ -16,7 +19,10 @@
 
 #include "core/device.h"
 #include "core/oct_normal.h"
+#include "core/texture.h"
+#include "core/vec2.h"
 #include "core/vec3.h"
+#include "geometry/alpha_mask.h"
 #include "geometry/bvh_node.h"
 #include "geometry/shapes.h"
 
@@ -30,9 +36,15 @@ namespace candela {
   X(Sphere, spheres, sphereCount, Motion)          \
   X(Vec3, positions, positionCount, Motion)        \
   X(OctNormal, normals, normalCount, Motion)       \
+  X(Vec2, uvs, uvCount, Structure)                 \
   X(Triangle, triangles, triangleCount, Structure) \
   X(BvhNode, nodes, nodeCount, Motion)             \
-  X(uint32_t, primIndices, primIndexCount, Structure)
+  X(uint32_t, primIndices, primIndexCount, Structure) \
+  X(AlphaMask, alphaMasks, alphaMaskCount, Values)      \
+  X(Texture, textures, textureCount, Values)            \
+  X(uint8_t, texels8, texel8Count, Values)              \
+  X(float, texelsF, texelFCount, Values)                \
+  X(float, srgbToLinear, srgbToLinearCount, Values)
 
 #define CANDELA_VIEW_ARRAY_FIELDS(Type, name, count, rewrittenBy) \
   const Type* name = nullptr;                                     \
@@ -42,6 +54,9 @@ struct GeometryView {
   CANDELA_GEOMETRY_ARRAYS(CANDELA_VIEW_ARRAY_FIELDS)
 
   CANDELA_HDI uint32_t primitiveCount() const { return sphereCount + triangleCount; }
+  CANDELA_HDI TexturePool texturePool() const {
+    return {textures, texels8, texelsF, srgbToLinear};
+  }
 };
 static_assert(std::is_trivially_copyable<GeometryView>::value,
               "GeometryView must be trivially copyable");

@@ -17,6 +17,7 @@
 #include "core/vec3.h"
 #include "geometry/geometry_view.h"
 #include "geometry/ray.h"
+#include "geometry/surface_uv.h"
 
 namespace candela {
 
@@ -25,6 +26,7 @@ struct SurfacePoint {
   Vec3 error;  // absolute bound on the error of p, per axis
   Vec3 ng;     // unit geometric normal, towards the primitive's outside
   Vec3 ns;     // unit shading normal, dot(ns, ng) >= 0
+  Vec2 uv;     // texture coordinates (geometry/surface_uv.h)
   uint32_t material;
 };
 
@@ -41,6 +43,7 @@ CANDELA_HDI SurfacePoint sphereSurfaceAt(const Sphere& s, const Ray& ray, float 
   sp.error = gammaBound(5) * abs(local) + gammaBound(1) * abs(sp.p);
   sp.ng = normalize(local);
   sp.ns = sp.ng;
+  sp.uv = sphereUv(sp.ng);
   sp.material = s.material;
   return sp;
 }
@@ -71,6 +74,7 @@ CANDELA_HDI SurfacePoint triangleSurfaceAt(const GeometryView& scene, const Tria
       if (lengthSquared(n) > 0.0f) sp.ns = faceForward(normalize(n), sp.ng);
     }
   }
+  sp.uv = triangleUv(scene, tri, b1, b2);
   sp.material = tri.material;
   return sp;
 }

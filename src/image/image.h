@@ -27,4 +27,12 @@ struct ImageRGB {
   }
 };
 
+// Image8: an 8-bit image as decoded from PNG or JPEG, expanded to RGBA (alpha 255 where the file
+// has none), row-major from the top-left pixel.
+struct Image8 {
+  uint32_t width = 0, height = 0;
+  uint32_t channels = 0;        // in the file: 1 grey, 2 grey + alpha, 3 RGB, 4 RGBA
+  std::vector<uint8_t> pixels;  // 4 * width * height
+};
+
 }  // namespace candela

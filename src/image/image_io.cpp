@@ -135,4 +135,15 @@ ImageRGB readImage(const std::string& path) {
   }
 }
 
+Image8 readImage8(const std::string& path) {
+  const std::string ext = lowercaseExtension(path);
+  if (ext != ".png" && ext != ".jpg" && ext != ".jpeg") unsupported(path, ".png, .jpg or .jpeg");
+  const std::string bytes = readFileBytes(path);
+  try {
+    return decodeImage8(bytes);
+  } catch (const ImageWriteError& e) {
+    throw ImageWriteError(path + ": " + e.what());
+  }
+}
+
 }  // namespace candela

@@ -7,7 +7,9 @@
 
 #include <cstdint>
 
+#include "core/texture.h"
 #include "core/vec3.h"
+#include "geometry/alpha_mask.h"
 
 namespace candela {
 
@@ -33,6 +35,8 @@ struct Material {
   bool metal = false;      // conductor: Fresnel of the complex index metalEta + i metalK
   Vec3 metalEta{0.0f}, metalK{0.0f};
   Vec3 radiance{0.0f};  // emissive: emitted radiance from the front side
+  TextureRef colorTexture;  // diffuse: a texture that `color` tints (render/surface_color.h)
+  AlphaMask alpha;          // how much of the surface is there (geometry/alpha_mask.h)
 
   // Plastic, derived (prepareMaterial): the diffuse light's chance to be reflected back down by
   // the coating from inside, and the coating's transmittance from outside by cos(theta).

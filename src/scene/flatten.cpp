@@ -24,10 +24,10 @@ uint32_t addMaterial(SceneData& s, const Material& m) {
 // the inverse transpose, R * (n / scale). A mirroring scale reverses the winding, so the vertex
 // order is swapped to keep each face's outside where it was.
 //
-// The renderer keeps one normal per vertex (normals run parallel to positions), so a position
-// that the file pairs with several normals (a crease) is split into one vertex per normal; a
-// vertex of a face without normals gets the encoding "none" (OctNormal()), meaning "use the face
-// normal".
+// The renderer keeps one normal and one uv per vertex (both run parallel to positions), so a
+// position that the file pairs with several normals (a crease) or several uvs (a texture seam) is
+// split into one vertex per combination; a vertex of a face without normals gets the encoding
+// "none" (OctNormal()), meaning "use the face normal", and one without uvs the uv (0, 0).
 // With `geometry` false only the object's materials are appended (see refreshSceneValues).
 void addObject(SceneData& s, const ObjectDesc& obj, bool geometry) {
   const MeshDesc& mesh = obj.mesh;
@@ -45,20 +45,31 @@ void addObject(SceneData& s, const ObjectDesc& obj, bool geometry) {
   for (const Vec3& p : mesh.positions) s.positions.push_back(obj.position + r * (obj.scale * p));
 
   const bool withNormals = obj.smooth && !mesh.normals.empty();
-  constexpr int32_t kUnset = -2;
-  // The file's normal index of each emitted vertex (-1: none), from `base` on.
-  std::vector<int32_t> normalOf(withNormals ? mesh.positions.size() : 0, kUnset);
-  std::unordered_map<uint64_t, uint32_t> splits;
-  const auto vertexFor = [&](uint32_t v, int32_t n) -> uint32_t {
-    if (!withNormals) return base + v;
-    int32_t& slot = normalOf[v];
-    if (slot == kUnset) slot = n;
-    if (slot == n) return base + v;
-    const uint64_t key = (uint64_t(v) << 32) | uint32_t(n);
+  const bool withUvs = !mesh.uvs.empty();
+  // The file's (normal, uv) indices of each emitted vertex (-1: none), from `base` on.
+  struct Attributes {
+    int32_t n, t;
+    bool operator==(const Attributes& o) const { return n == o.n && t == o.t; }
+  };
+  constexpr Attributes kUnset{-2, -2};
+  std::vector<Attributes> attributesOf(withNormals || withUvs ? mesh.positions.size() : 0, kUnset);
+  struct SplitHash {
+    size_t operator()(const std::pair<uint32_t, uint64_t>& k) const {
+      return std::hash<uint64_t>()(k.second * 0x9e3779b97f4a7c15ull ^ k.first);
+    }
+  };
+  std::unordered_map<std::pair<uint32_t, uint64_t>, uint32_t, SplitHash> splits;
+  const auto vertexFor = [&](uint32_t v, int32_t n, int32_t t) -> uint32_t {
+    if (!withNormals && !withUvs) return base + v;
+    const Attributes a{withNormals ? n : -1, withUvs ? t : -1};
+    Attributes& slot = attributesOf[v];
+    if (slot == kUnset) slot = a;
+    if (slot == a) return base + v;
+    const auto key = std::make_pair(v, (uint64_t(uint32_t(a.n)) << 32) | uint32_t(a.t));
     const auto [it, inserted] = splits.try_emplace(key, uint32_t(s.positions.size()));
     if (inserted) {
       s.positions.push_back(s.positions[base + v]);
-      normalOf.push_back(n);
+      attributesOf.push_back(a);
     }
     return it->second;
   };
@@ -66,7 +77,7 @@ void addObject(SceneData& s, const ObjectDesc& obj, bool geometry) {
   const bool mirrored = obj.scale.x * obj.scale.y * obj.scale.z < 0.0f;
   for (const MeshTriangle& t : mesh.triangles) {
     Triangle w;
-    for (int k = 0; k < 3; ++k) w.v[k] = vertexFor(t.v[k], t.n[k]);
+    for (int k = 0; k < 3; ++k) w.v[k] = vertexFor(t.v[k], t.n[k], t.t[k]);
     if (mirrored) std::swap(w.v[1], w.v[2]);
     w.material = obj.material ? materialBase : materialBase + t.material;
     s.triangles.push_back(w);
@@ -74,9 +85,14 @@ void addObject(SceneData& s, const ObjectDesc& obj, bool geometry) {
 
   if (withNormals) {
     s.normals.resize(base, OctNormal());  // earlier vertices without normals
-    for (const int32_t n : normalOf)
-      s.normals.push_back(n >= 0 ? encodeOctNormal(r * (mesh.normals[uint32_t(n)] / obj.scale))
-                                 : OctNormal());
+    for (const Attributes& a : attributesOf)
+      s.normals.push_back(a.n >= 0 ? encodeOctNormal(r * (mesh.normals[uint32_t(a.n)] / obj.scale))
+                                   : OctNormal());
+  }
+  if (withUvs) {
+    s.uvs.resize(base, Vec2());  // earlier vertices without uvs
+    for (const Attributes& a : attributesOf)
+      s.uvs.push_back(a.t >= 0 ? mesh.uvs[uint32_t(a.t)] : Vec2());
   }
 }
 
@@ -172,6 +188,30 @@ void addEmitterLights(SceneData& s) {
 
 namespace {
 
+// The texture pool, the sRGB table and the materials' alpha masks (each only when used).
+void addTextures(SceneData& s, const SceneDesc& desc) {
+  for (const std::shared_ptr<const TextureDesc>& t : desc.textures) {
+    Texture texture;
+    texture.width = t->width;
+    texture.height = t->height;
+    texture.format = t->format;
+    std::vector<float>& floats = s.texelsF;
+    std::vector<uint8_t>& bytes = s.texels8;
+    const bool isFloat = t->format == TextureFormat::Float;
+    texture.offset = uint32_t(isFloat ? floats.size() : bytes.size());
+    if (isFloat)
+      floats.insert(floats.end(), t->texelsF.begin(), t->texelsF.end());
+    else
+      bytes.insert(bytes.end(), t->texels8.begin(), t->texels8.end());
+    s.textures.push_back(texture);
+  }
+  if (!s.textures.empty())
+    for (int i = 0; i < 256; ++i) s.srgbToLinear.push_back(srgbToLinearValue(float(i) / 255.0f));
+  const auto masked = [](const Material& m) { return isMasked(m.alpha); };
+  if (std::any_of(s.materials.begin(), s.materials.end(), masked))
+    for (const Material& m : s.materials) s.alphaMasks.push_back(m.alpha);
+}
+
 // Everything but the BVH; mesh vertices and triangles only with `geometry`. The order of
 // materials depends only on the scene's structure, so triangles keep valid material indices
 // when a refresh re-appends the materials.
@@ -181,8 +221,10 @@ void addContents(SceneData& s, const SceneDesc& desc, bool geometry) {
   // Lights after plain spheres: sphere lights append their own emissive spheres.
   for (const LightDesc& ld : desc.lights) addLight(s, ld);
   for (const ObjectDesc& od : desc.objects) addObject(s, od, geometry);
-  // Vertices after the last smooth mesh have no normals either.
+  // Vertices after the last smooth (or textured) mesh have no normals (or uvs) either.
   if (geometry && !s.normals.empty()) s.normals.resize(s.positions.size(), OctNormal());
+  if (geometry && !s.uvs.empty()) s.uvs.resize(s.positions.size(), Vec2());
+  addTextures(s, desc);
 
   flattenEnvironment(desc.environment, s);
   s.camera = resolveCamera(desc.camera, desc.file);
@@ -195,6 +237,11 @@ void refreshSceneValues(SceneData& s, const SceneDesc& desc) {
   s.materials.clear();
   s.spheres.clear();
   s.lights.clear();
+  s.textures.clear();
+  s.texels8.clear();
+  s.texelsF.clear();
+  s.srgbToLinear.clear();
+  s.alphaMasks.clear();
   addContents(s, desc, false);
   addEmitterLights(s);
 }

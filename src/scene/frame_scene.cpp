@@ -68,6 +68,7 @@ std::string sceneKey(const SceneDesc& desc, bool withTransforms) {
     key.add(o.mesh.materials.size());
     key.add(hashOf(o.mesh.positions));
     key.add(hashOf(o.mesh.normals));
+    key.add(hashOf(o.mesh.uvs));
     key.add(hashOf(o.mesh.triangles));
   }
   return key.take();

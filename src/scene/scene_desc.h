@@ -12,6 +12,8 @@
 #include <vector>
 
 #include "core/mat3.h"
+#include "core/texture.h"
+#include "core/vec2.h"
 #include "core/vec3.h"
 #include "image/image.h"
 #include "image/output_desc.h"
@@ -29,17 +31,19 @@ struct SphereDesc {
   Material material;
 };
 
-// A triangle as the OBJ file indexes it: positions and normals separately.
+// A triangle as the OBJ file indexes it: positions, normals and uvs separately.
 struct MeshTriangle {
   uint32_t v[3];    // into MeshDesc::positions
   int32_t n[3];     // into MeshDesc::normals, or -1 on all three corners: use the face normal
   uint32_t material;  // into MeshDesc::materials
+  int32_t t[3] = {-1, -1, -1};  // into MeshDesc::uvs, or -1 on all three corners: uv (0, 0)
 };
 
 // A triangle mesh in object space as read from an OBJ file (polygons already triangulated).
 struct MeshDesc {
   std::vector<Vec3> positions;
   std::vector<Vec3> normals;              // from the file's `vn`; may be empty
+  std::vector<Vec2> uvs;                  // from the file's `vt` (u, v); may be empty
   std::vector<MeshTriangle> triangles;
   std::vector<Material> materials;  // from the MTL (Kd as diffuse), else one diffuse 0.8
   std::vector<std::string> materialFiles;  // the MTL files read, beside the OBJ file
@@ -120,6 +124,16 @@ struct AnimationDesc {
   std::vector<AnimTrack> tracks;
 };
 
+// An image texture as read (core/texture.h): RGBA texels from the top row, 8-bit for the 8-bit
+// formats, float for TextureFormat::Float. Materials name it by its index in SceneDesc::textures.
+struct TextureDesc {
+  std::string file;  // as resolved, for messages
+  TextureFormat format = TextureFormat::Srgb8;
+  uint32_t width = 0, height = 0;
+  std::vector<uint8_t> texels8;  // 4 * width * height, or empty
+  std::vector<float> texelsF;    // 4 * width * height, or empty
+};
+
 // Sah: the tree the own engine and the GPU trace. Flat: one level, so every ray tests every
 // primitive (`candela render --no-bvh`, benchmarks only: shows what the BVH buys). None: the CPU
 // traces with Embree, which builds its own.
@@ -136,6 +150,8 @@ struct SceneDesc {
   std::vector<ObjectDesc> objects;
   std::vector<LightDesc> lights;
   EnvironmentDesc environment;
+  // The images materials name by TextureRef::index, each file read once; shared by frames.
+  std::vector<std::shared_ptr<const TextureDesc>> textures;
   std::optional<AnimationDesc> animation;  // absent: a still image
 };
 

@@ -24,6 +24,7 @@ std::vector<InputFile> inputFiles(const std::vector<SceneDesc>& scenes) {
     }
     if (!scene.environment.map.empty())
       files.push_back({scene.environment.map, "the environment map"});
+    for (const auto& texture : scene.textures) files.push_back({texture->file, "a texture"});
   }
   return files;
 }

@@ -1,5 +1,5 @@
 // Where a render writes, checked before anything renders: no output may replace a file the render
-// reads (a scene file, a mesh, a material library, an environment map) or another output, and
+// reads (a scene file, a mesh, a material library, an environment map, a texture) or another output, and
 // each must be a file whose folder exists or can be made, and can be written in. Paths are
 // compared as the files they name: "./a.json", "x/../a.json", a link to a.json and a.json are
 // all one file.

@@ -27,6 +27,23 @@ void keepError(void*, RTCError, const char* message) { lastError = message ? mes
 
 }  // namespace
 
+void rejectMaskedHit(const RTCFilterFunctionNArguments* args) {
+  const auto* geometry = static_cast<const GeometryView*>(args->geometryUserPtr);
+  const unsigned n = args->N;
+  for (unsigned i = 0; i < n; ++i) {
+    if (args->valid[i] != -1) continue;
+    Ray ray;
+    ray.origin = Vec3(RTCRayN_org_x(args->ray, n, i), RTCRayN_org_y(args->ray, n, i),
+                      RTCRayN_org_z(args->ray, n, i));
+    ray.direction = Vec3(RTCRayN_dir_x(args->ray, n, i), RTCRayN_dir_y(args->ray, n, i),
+                         RTCRayN_dir_z(args->ray, n, i));
+    const Triangle& tri = geometry->triangles[RTCHitN_primID(args->hit, n, i)];
+    if (!alphaKeepsHit(*geometry, tri, RTCHitN_u(args->hit, n, i), RTCHitN_v(args->hit, n, i),
+                       ray))
+      args->valid[i] = 0;
+  }
+}
+
 void rejectSkippedTriangle(const RTCFilterFunctionNArguments* args) {
   const auto* context = reinterpret_cast<const EmbreeSkipContext*>(args->context);
   const RTCHit* hit = reinterpret_cast<const RTCHit*>(args->hit);
@@ -61,6 +78,20 @@ void EmbreeScene::update(const SceneData& scene, SceneChange change) {
   }
   // A frame of new values keeps the geometry, but its arrays may lie elsewhere.
   sphereView_.spheres = scene.spheres.data();
+  updateMasks(scene);
+}
+
+void EmbreeScene::updateMasks(const SceneData& scene) {
+  const SceneView view = scene.view();
+  maskView_ = view;  // the geometry part: triangles, uvs, masks and textures
+  const bool masked = view.alphaMaskCount != 0;
+  if (!triangles_ || masked == filtered_) return;
+  // Scenes without masks pay nothing: the filters are installed only when a material is masked.
+  rtcSetGeometryIntersectFilterFunction(triangles_, masked ? rejectMaskedHit : nullptr);
+  rtcSetGeometryOccludedFilterFunction(triangles_, masked ? rejectMaskedHit : nullptr);
+  rtcCommitGeometry(triangles_);
+  commit();
+  filtered_ = masked;
 }
 
 void EmbreeScene::buildSphereBvh(const SceneData& scene) {
@@ -92,6 +123,12 @@ void EmbreeScene::build(const SceneData& scene) {
   rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION);
   rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_MEDIUM);
   triangles_ = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
+  rtcSetGeometryUserData(triangles_, &maskView_);
+  filtered_ = !scene.alphaMasks.empty();
+  if (filtered_) {
+    rtcSetGeometryIntersectFilterFunction(triangles_, rejectMaskedHit);
+    rtcSetGeometryOccludedFilterFunction(triangles_, rejectMaskedHit);
+  }
   // Embree reads vertices with 16-byte loads, so it gets its own padded copy; the triangles'
   // fourth word (the material) is passed over by the stride.
   void* vertices = rtcSetNewGeometryBuffer(triangles_, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,

@@ -5,7 +5,9 @@
 // docs/performance.md), from a copy of the vertices and the scene's own triangle array, shared.
 // The spheres get a BVH of candela's own. A frame whose primitives moved (SceneChange::Motion)
 // rewrites the vertices and refits Embree's BVH, and rebuilds the spheres' (they are few); a new
-// structure rebuilds both. Embree picks the widest SIMD the CPU has at run time (SSE2 up to
+// structure rebuilds both. Alpha-masked materials (geometry/alpha_mask.h) get intersection and
+// occlusion filters on the triangles that apply the same test as candela's own traversal.
+// Embree picks the widest SIMD the CPU has at run time (SSE2 up to
 // AVX-512).
 #pragma once
 
@@ -44,6 +46,7 @@ class EmbreeScene {
   void refit(const SceneData& scene);
   void buildSphereBvh(const SceneData& scene);
   void commit();
+  void updateMasks(const SceneData& scene);
 
   RTCDevice device_ = nullptr;
   RTCScene scene_ = nullptr;  // the triangles; null when there are none
@@ -53,6 +56,10 @@ class EmbreeScene {
   GeometryView sphereView_;  // the spheres of the scene given last, with sphereNodes_
   uint32_t sphereCount_ = 0;
   double buildSeconds_ = 0;
+  // What the alpha filter reads (the triangles, uvs, masks and textures of the scene given last),
+  // and whether the filter is installed: only while some material is masked.
+  GeometryView maskView_;
+  bool filtered_ = false;
 };
 
 }  // namespace candela

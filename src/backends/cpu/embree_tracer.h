@@ -26,6 +26,9 @@ struct EmbreeSkipContext {
 
 // Context filter: rejects hits on the skipped triangle.
 void rejectSkippedTriangle(const RTCFilterFunctionNArguments* args);
+// Geometry filter (intersection and occlusion) of scenes with alpha masks: rejects the hits that
+// alphaKeepsHit (geometry/alpha_test.h) rejects; its user data is the scene's GeometryView.
+void rejectMaskedHit(const RTCFilterFunctionNArguments* args);
 
 struct EmbreeTracer {
   RTCScene triangles;    // null when the scene has none

@@ -37,7 +37,8 @@ Vec3 readScale(const JsonValue& value) {
   return scale;
 }
 
-SphereDesc readSphere(const JsonValue& value, const MaterialLibrary& library) {
+SphereDesc readSphere(const JsonValue& value, const MaterialLibrary& library,
+                      TextureLoader& textures) {
   JsonObject fields(value, {"id", "position", "center", "radius", "material", "color", "ior"});
   SphereDesc sphere;
   sphere.where = value.path();
@@ -48,13 +49,13 @@ SphereDesc readSphere(const JsonValue& value, const MaterialLibrary& library) {
   if (!position) fields.fail("missing required key \"position\"");
   sphere.position = position->vec3();
   sphere.radius = fields.require("radius").positiveNumber();
-  sphere.material = readMaterialReference(fields, library).value_or(Material{});
+  sphere.material = readMaterialReference(fields, library, textures).value_or(Material{});
   fields.finish();
   return sphere;
 }
 
 ObjectDesc readObject(const JsonValue& value, const MaterialLibrary& library,
-                      const std::string& baseDir) {
+                      const std::string& baseDir, TextureLoader& textures) {
   JsonObject fields(
       value, {"id", "file", "position", "rotation", "scale", "material", "color", "ior", "smooth"});
   ObjectDesc object;
@@ -71,7 +72,7 @@ ObjectDesc readObject(const JsonValue& value, const MaterialLibrary& library,
     object.rotation = rotation->vec3();
   if (std::optional<JsonValue> scale = fields.get("scale")) object.scale = readScale(*scale);
   if (std::optional<JsonValue> smooth = fields.get("smooth")) object.smooth = smooth->boolean();
-  object.material = readMaterialReference(fields, library);
+  object.material = readMaterialReference(fields, library, textures);
   fields.finish();
   return object;
 }

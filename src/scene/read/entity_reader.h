@@ -13,9 +13,10 @@
 
 namespace candela {
 
-SphereDesc readSphere(const JsonValue& value, const MaterialLibrary& library);
+SphereDesc readSphere(const JsonValue& value, const MaterialLibrary& library,
+                      TextureLoader& textures);
 ObjectDesc readObject(const JsonValue& value, const MaterialLibrary& library,
-                      const std::string& baseDir);
+                      const std::string& baseDir, TextureLoader& textures);
 LightDesc readLight(const JsonValue& value);
 
 // An object's scale: a number or [sx, sy, sz], every factor non-zero (zero would flatten the

@@ -52,7 +52,7 @@ void readMetal(const JsonValue& value, Material* material) {
 
 // The fields of a material of type kTypeNames[type], read from `fields`: the material object
 // itself, or for the shorthand the sphere or object that carries them.
-Material readFields(JsonObject& fields, size_t type) {
+Material readFields(JsonObject& fields, size_t type, TextureLoader& textures) {
   for (const std::string& field : kFields) {
     const std::vector<std::string>& used = kFieldsOf[type];
     if (std::find(used.begin(), used.end(), field) == used.end())
@@ -66,7 +66,11 @@ Material readFields(JsonObject& fields, size_t type) {
   }
   const float defaultColor[] = {0.8f, 1.0f, 1.0f, 0.0f, 1.0f, 0.5f};
   const std::optional<JsonValue> color = fields.get("color");
-  material.color = color ? color->colour() : Vec3(defaultColor[type]);
+  // Glass alone takes no texture: its colour tints what passes through, not a surface.
+  if (color && type != kGlass)
+    material.color = readTexturedColour(*color, textures, &material.colorTexture);
+  else
+    material.color = color ? color->colour() : Vec3(defaultColor[type]);
   switch (type) {
     case kDiffuse:
       material.type = MaterialType::Diffuse;
@@ -112,35 +116,35 @@ Material readFields(JsonObject& fields, size_t type) {
 
 }  // namespace
 
-MaterialLibrary readMaterialLibrary(const JsonValue& value) {
+MaterialLibrary readMaterialLibrary(const JsonValue& value, TextureLoader& textures) {
   if (!value.json().is_object()) value.failExpected("an object (material name -> material)");
   MaterialLibrary library;
   for (const auto& item : value.json().items()) {
     if (isCommentKey(item.key())) continue;
     const JsonValue material(item.value(), value.file(), memberPath(value.path(), item.key()));
-    library[item.key()] = readMaterial(material);
+    library[item.key()] = readMaterial(material, textures);
   }
   return library;
 }
 
-Material readMaterial(const JsonValue& value) {
+Material readMaterial(const JsonValue& value, TextureLoader& textures) {
   std::vector<std::string> known = {"type"};
   known.insert(known.end(), kFields.begin(), kFields.end());
   JsonObject fields(value, known, "a material object");
   const size_t type = fields.require("type").choice(kTypeNames);
-  Material material = readFields(fields, type);
+  Material material = readFields(fields, type, textures);
   fields.finish();
   return material;
 }
 
-std::optional<Material> readMaterialReference(JsonObject& owner,
-                                                  const MaterialLibrary& library) {
+std::optional<Material> readMaterialReference(JsonObject& owner, const MaterialLibrary& library,
+                                              TextureLoader& textures) {
   const std::optional<JsonValue> reference = owner.get("material");
   if (!reference) {
     owner.reject("ior", "not used without a \"glass\" material");
     if (std::optional<JsonValue> color = owner.get("color")) {
       Material diffuse;
-      diffuse.color = color->colour();
+      diffuse.color = readTexturedColour(*color, textures, &diffuse.colorTexture);
       return diffuse;
     }
     return std::nullopt;
@@ -149,7 +153,7 @@ std::optional<Material> readMaterialReference(JsonObject& owner,
     const std::string reason = "not used beside an inline material (put it inside \"material\")";
     owner.reject("color", reason);
     owner.reject("ior", reason);
-    return readMaterial(*reference);
+    return readMaterial(*reference, textures);
   }
   if (!reference->json().is_string())
     reference->failExpected("a material name or a material object");
@@ -165,7 +169,7 @@ std::optional<Material> readMaterialReference(JsonObject& owner,
     return named->second;
   }
   for (size_t type = 0; type < kShorthandCount; ++type)
-    if (name == kTypeNames[type]) return readFields(owner, type);
+    if (name == kTypeNames[type]) return readFields(owner, type, textures);
   failUnknownMaterial(*reference, name, library);
 }
 

@@ -14,6 +14,7 @@
 #include <string>
 
 #include "scene/read/json_reader.h"
+#include "scene/read/texture_reader.h"
 #include "scene/scene_desc.h"
 
 namespace candela {
@@ -21,14 +22,15 @@ namespace candela {
 using MaterialLibrary = std::map<std::string, Material>;
 
 // The top-level "materials" object: name -> material object.
-MaterialLibrary readMaterialLibrary(const JsonValue& value);
+MaterialLibrary readMaterialLibrary(const JsonValue& value, TextureLoader& textures);
 
 // A material object {"type": ..., fields of that type}.
-Material readMaterial(const JsonValue& value);
+// A diffuse "color" may be a texture (texture_reader.h), loaded through `textures`.
+Material readMaterial(const JsonValue& value, TextureLoader& textures);
 
 // The material that `owner` (a sphere or object) gives through its "material", "color" and "ior"
 // keys; nothing when it gives none.
-std::optional<Material> readMaterialReference(JsonObject& owner,
-                                                  const MaterialLibrary& library);
+std::optional<Material> readMaterialReference(JsonObject& owner, const MaterialLibrary& library,
+                                              TextureLoader& textures);
 
 }  // namespace candela

@@ -9,10 +9,13 @@
 namespace candela {
 
 // Material names as tinyobjloader reads them: everything after "newmtl" and one blank.
-static void collectKdNames(const std::string& text, std::set<std::string>& kdNames) {
+static void collectStatements(const std::string& text, const std::string& label,
+                              const std::string& folder, MtlLibrary& library) {
   std::istringstream lines(text);
   std::string line, current;
+  size_t number = 0;
   while (std::getline(lines, line)) {
+    ++number;
     if (!line.empty() && line.back() == '\r') line.pop_back();
     const size_t start = line.find_first_not_of(" \t");
     if (start == std::string::npos) continue;
@@ -21,22 +24,41 @@ static void collectKdNames(const std::string& text, std::set<std::string>& kdNam
       return statement.compare(0, length, keyword) == 0 && statement.size() > length &&
              (statement[length] == ' ' || statement[length] == '\t');
     };
+    const auto keep = [&](size_t length) {
+      std::string arguments = statement.substr(length);
+      const size_t first = arguments.find_first_not_of(" \t");
+      const size_t last = arguments.find_last_not_of(" \t");
+      arguments = first == std::string::npos ? "" : arguments.substr(first, last - first + 1);
+      return MtlStatement{label, folder, number, arguments};
+    };
+    MtlTextures& own = library.statements[current];
     if (isKeyword("newmtl", 6))
       current = statement.substr(7);
     else if (isKeyword("Kd", 2))
-      kdNames.insert(current);
+      library.kdNames.insert(current);
+    else if (isKeyword("map_Kd", 6))
+      own.mapKd = keep(6);
+    else if (isKeyword("map_d", 5))
+      own.mapD = keep(5);
+    else if (isKeyword("d", 1))
+      own.d = keep(1);
+    else if (isKeyword("Tr", 2))
+      own.tr = keep(2);
   }
 }
 
-MtlLibrary readMtlLibrary(const std::string& objPath, const std::vector<std::string>& names) {
+MtlLibrary readMtlLibrary(const std::string& objPath, const std::string& objLabel,
+                          const std::vector<std::string>& names) {
   const std::filesystem::path folder = std::filesystem::path(objPath).parent_path();
+  const std::filesystem::path labelFolder = std::filesystem::path(objLabel).parent_path();
   MtlLibrary library;
   for (const std::string& name : names) {
     std::string contents, reason;
     const std::string path = (folder / name).string();
     if (!readTextFile(path, &contents, &reason)) continue;
     library.files.push_back(path);
-    collectKdNames(contents, library.kdNames);
+    collectStatements(contents, (labelFolder / name).string(),
+                      std::filesystem::path(path).parent_path().string(), library);
     library.text += contents + "\n";
   }
   return library;

@@ -1,23 +1,42 @@
 // The MTL side of an OBJ file: the material libraries that its `mtllib` statements name.
 //
-// tinyobjloader parses the MTL text; this reads the files (relative to the OBJ's folder) and notes
+// tinyobjloader parses the MTL text; this reads the files (relative to the OBJ's folder), notes
 // which materials set Kd, since tinyobjloader reports a material without Kd as black where the
-// format wants the default diffuse 0.8.
+// format wants the default diffuse 0.8, and keeps the statements candela reads itself (textures
+// and alpha), with their file and line for messages.
 #pragma once
 
+#include <map>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
 
 namespace candela {
 
+// One MTL statement: where it is and what follows its keyword (trimmed).
+struct MtlStatement {
+  std::string file;    // the MTL file as messages show it
+  std::string folder;  // the MTL file's folder, against which texture names are resolved
+  size_t line = 0;     // 1-based
+  std::string arguments;
+};
+
+// The statements of one material that candela reads itself; the last of each kind counts.
+struct MtlTextures {
+  std::optional<MtlStatement> mapKd, d, tr, mapD;
+};
+
 struct MtlLibrary {
   std::string text;                // every readable file, concatenated
   std::set<std::string> kdNames;   // materials with a Kd statement
+  std::map<std::string, MtlTextures> statements;  // by material name
   std::vector<std::string> files;  // the files read, as paths from the OBJ file's folder
 };
 
-// Files that cannot be read are skipped: their materials fall back to the default.
-MtlLibrary readMtlLibrary(const std::string& objPath, const std::vector<std::string>& names);
+// Files that cannot be read are skipped: their materials fall back to the default. `objLabel`
+// is the OBJ file as messages show it; MTL files are shown beside it.
+MtlLibrary readMtlLibrary(const std::string& objPath, const std::string& objLabel,
+                          const std::vector<std::string>& names);
 
 }  // namespace candela

@@ -5,6 +5,9 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <sstream>
 
 #include "scene/read/mtl_library.h"
 #include "scene/read/obj_scanner.h"
@@ -32,10 +35,77 @@ Vec3 mtlColour(const tinyobj::real_t* values, const char* key, const std::string
   return colour;
 }
 
+[[noreturn]] void failAt(const MtlStatement& statement, const std::string& reason) {
+  throw SceneError(statement.file + ":" + std::to_string(statement.line) + ": " + reason);
+}
+
+// A number in [0, 1] from `d` or `Tr` (its only argument).
+float unitNumber(const MtlStatement& statement, const char* keyword) {
+  const std::string& text = statement.arguments;
+  char* end = nullptr;
+  const float value = std::strtof(text.c_str(), &end);
+  if (text.empty() || end != text.c_str() + text.size() || !(value >= 0.0f && value <= 1.0f))
+    failAt(statement, std::string("expected ") + keyword + " between 0 and 1, got \"" + text +
+                          "\"");
+  return value;
+}
+
+// A texture statement "map_Kd [-s u v [w]] file": its texture, loaded for `use`. The -s scale
+// is honoured (w ignored); other options are refused.
+TextureRef mtlTexture(const MtlStatement& statement, const char* keyword, TextureUse use,
+                      TextureLoader& textures, bool* hasAlpha) {
+  TextureRef ref;
+  std::string rest = statement.arguments;
+  while (!rest.empty() && rest[0] == '-') {
+    std::istringstream in(rest);
+    std::string option;
+    in >> option;
+    if (option != "-s")
+      failAt(statement, std::string(keyword) + " option \"" + option +
+                            "\" is not supported (only -s)");
+    float scale[3] = {1.0f, 1.0f, 1.0f};
+    int count = 0;
+    for (std::string word; count < 3 && in >> word; ++count) {
+      char* end = nullptr;
+      const float value = std::strtof(word.c_str(), &end);
+      if (end != word.c_str() + word.size()) {
+        in.seekg(-std::streamoff(word.size()), std::ios::cur);  // the file name
+        break;
+      }
+      if (!(std::isfinite(value) && value != 0.0f))
+        failAt(statement, std::string(keyword) + " -s: expected finite, non-zero scales, got \"" +
+                              word + "\"");
+      scale[count] = value;
+    }
+    if (count == 0) failAt(statement, std::string(keyword) + " -s: expected a scale");
+    ref.scaleU = scale[0];
+    ref.scaleV = count > 1 ? scale[1] : scale[0];
+    std::string remaining;
+    std::getline(in, remaining);
+    const size_t first = remaining.find_first_not_of(" \t");
+    rest = first == std::string::npos ? "" : remaining.substr(first);
+  }
+  if (rest.empty()) failAt(statement, std::string("expected a file name after ") + keyword);
+  const std::filesystem::path name(rest);
+  const std::string path =
+      name.is_absolute() ? rest : (std::filesystem::path(statement.folder) / name).string();
+  try {
+    const LoadedTexture loaded = textures.load(path, use);
+    ref.index = loaded.index;
+    if (hasAlpha) *hasAlpha = loaded.hasAlpha;
+  } catch (const SceneError& e) {
+    failAt(statement, e.what());
+  }
+  return ref;
+}
+
 // One material per MTL material: emissive with radiance Ke where Ke is not black, else diffuse
-// with colour Kd, or 0.8 where the material sets none.
+// with colour Kd (0.8 where the material sets none), times map_Kd when it has one, with alpha
+// d (or 1 - Tr; d wins when both are given) times map_d's alpha channel (or, for an image without
+// one, its first channel).
 std::vector<Material> mtlMaterials(const std::vector<tinyobj::material_t>& materials,
-                                   const MtlLibrary& library, const std::string& label) {
+                                   const MtlLibrary& library, const std::string& label,
+                                   TextureLoader& textures) {
   std::vector<Material> result;
   for (size_t i = 0; i < materials.size(); ++i) {
     const tinyobj::material_t& material = materials[i];
@@ -43,13 +113,30 @@ std::vector<Material> mtlMaterials(const std::vector<tinyobj::material_t>& mater
     if (i + 1 == materials.size() && material.name.empty()) break;
     Material desc;
     desc.type = MaterialType::Diffuse;
-    if (library.kdNames.count(material.name) != 0)
-      desc.color = mtlColour(material.diffuse, "Kd", material.name, label);
+    const bool hasKd = library.kdNames.count(material.name) != 0;
+    if (hasKd) desc.color = mtlColour(material.diffuse, "Kd", material.name, label);
     const Vec3 emission = mtlColour(material.emission, "Ke", material.name, label);
     if (!isBlack(emission)) {
       desc.type = MaterialType::Emissive;
       desc.color = Vec3(0.0f);
       desc.radiance = emission;
+    }
+    const auto found = library.statements.find(material.name);
+    if (found != library.statements.end() && desc.type == MaterialType::Diffuse) {
+      const MtlTextures& s = found->second;
+      if (s.mapKd) {
+        desc.colorTexture = mtlTexture(*s.mapKd, "map_Kd", TextureUse::Color, textures, nullptr);
+        if (!hasKd) desc.color = Vec3(1.0f);
+      }
+      if (s.d)
+        desc.alpha.constant = unitNumber(*s.d, "d");
+      else if (s.tr)
+        desc.alpha.constant = 1.0f - unitNumber(*s.tr, "Tr");
+      if (s.mapD) {
+        bool hasAlpha = false;
+        desc.alpha.texture = mtlTexture(*s.mapD, "map_d", TextureUse::Mask, textures, &hasAlpha);
+        desc.alpha.channel = hasAlpha ? 3 : 0;
+      }
     }
     result.push_back(desc);
   }
@@ -57,7 +144,7 @@ std::vector<Material> mtlMaterials(const std::vector<tinyobj::material_t>& mater
 }
 
 MeshDesc buildMesh(const tinyobj::ObjReader& reader, const MtlLibrary& library,
-                   const std::string& label) {
+                   const std::string& label, TextureLoader& textures) {
   const tinyobj::attrib_t& attrib = reader.GetAttrib();
   MeshDesc mesh;
   mesh.positions.reserve(attrib.vertices.size() / 3);
@@ -66,7 +153,10 @@ MeshDesc buildMesh(const tinyobj::ObjReader& reader, const MtlLibrary& library,
   mesh.normals.reserve(attrib.normals.size() / 3);
   for (size_t i = 0; i < attrib.normals.size() / 3; ++i)
     mesh.normals.push_back(vec3At(attrib.normals, i));
-  mesh.materials = mtlMaterials(reader.GetMaterials(), library, label);
+  mesh.uvs.reserve(attrib.texcoords.size() / 2);
+  for (size_t i = 0; i < attrib.texcoords.size() / 2; ++i)
+    mesh.uvs.push_back(Vec2(attrib.texcoords[2 * i], attrib.texcoords[2 * i + 1]));
+  mesh.materials = mtlMaterials(reader.GetMaterials(), library, label, textures);
 
   const auto mtlCount = static_cast<int>(mesh.materials.size());
   const auto fallback = static_cast<uint32_t>(mesh.materials.size());
@@ -77,7 +167,7 @@ MeshDesc buildMesh(const tinyobj::ObjReader& reader, const MtlLibrary& library,
       if (shape.mesh.num_face_vertices[face] != 3)
         throw SceneError(label + ": a polygon was not triangulated");
       MeshTriangle triangle;
-      bool allNormals = true;
+      bool allNormals = true, allUvs = true;
       for (int corner = 0; corner < 3; ++corner) {
         const tinyobj::index_t& index = indices[3 * face + corner];
         // The scanner checked every index; this guards against a tinyobjloader surprise.
@@ -88,8 +178,12 @@ MeshDesc buildMesh(const tinyobj::ObjReader& reader, const MtlLibrary& library,
         triangle.n[corner] = index.normal_index;
         allNormals = allNormals && index.normal_index >= 0 &&
                      static_cast<size_t>(index.normal_index) < mesh.normals.size();
+        triangle.t[corner] = index.texcoord_index;
+        allUvs = allUvs && index.texcoord_index >= 0 &&
+                 static_cast<size_t>(index.texcoord_index) < mesh.uvs.size();
       }
       if (!allNormals) triangle.n[0] = triangle.n[1] = triangle.n[2] = -1;
+      if (!allUvs) triangle.t[0] = triangle.t[1] = triangle.t[2] = -1;
       const int material = shape.mesh.material_ids[face];
       const bool known = material >= 0 && material < mtlCount;
       triangle.material = known ? static_cast<uint32_t>(material) : fallback;
@@ -103,7 +197,7 @@ MeshDesc buildMesh(const tinyobj::ObjReader& reader, const MtlLibrary& library,
 
 }  // namespace
 
-MeshDesc loadObjFile(const std::string& path, const std::string& label) {
+MeshDesc loadObjFile(const std::string& path, const std::string& label, TextureLoader& textures) {
   std::string text, reason;
   if (!readTextFile(path, &text, &reason))
     throw SceneError("cannot open \"" + label + "\" (" + reason + ")");
@@ -112,12 +206,12 @@ MeshDesc loadObjFile(const std::string& path, const std::string& label) {
   tinyobj::ObjReaderConfig config;
   config.triangulate = true;
   config.vertex_color = false;
-  const MtlLibrary library = readMtlLibrary(path, scan.materialLibraries);
+  const MtlLibrary library = readMtlLibrary(path, label, scan.materialLibraries);
   tinyobj::ObjReader reader;
   if (!reader.ParseFromString(scan.text, library.text, config))
     throw SceneError(label + ": " + firstLine(reader.Error()));
 
-  MeshDesc mesh = buildMesh(reader, library, label);
+  MeshDesc mesh = buildMesh(reader, library, label, textures);
   if (mesh.triangles.empty()) throw SceneError(label + ": expected at least one face, got none");
   mesh.materialFiles = library.files;
   return mesh;

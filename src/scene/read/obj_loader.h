@@ -4,8 +4,10 @@
 // polygons fanned when convex and ear-clipped when not, see polygon_triangulation.h), keeping the
 // file's vertex order, so a face's outside stays the side its vertices wind counter-clockwise
 // around. Vertex normals are kept where all three corners of a triangle have one; otherwise the
-// triangle's normal indices are -1 (face normal). Each MTL material becomes a diffuse Material
-// with colour Kd; faces without one (no usemtl, no MTL file, or a name the MTL does not define)
+// triangle's normal indices are -1 (face normal); likewise for texture coordinates (`vt`, u and v;
+// a third component is ignored). Each MTL material becomes a diffuse Material with colour Kd,
+// textured by map_Kd and masked by d, Tr and map_d (textures through `textures`, relative to the
+// MTL file; see mtlMaterials in obj_loader.cpp); faces without one (no usemtl, no MTL file, or a name the MTL does not define)
 // use an extra diffuse 0.8 entry. A missing MTL file is not an error: its faces fall back to that
 // entry.
 //
@@ -13,14 +15,16 @@
 //   cannot open "<label>" (<reason>)
 //   <label>:<line>: <reason>            malformed statements, see obj_scanner.h
 //   <label>: <reason>                   faults without a line, e.g. a file with no faces
+//   <mtl file>:<line>: <reason>         bad texture or alpha statements in an MTL file
 #pragma once
 
 #include <string>
 
+#include "scene/read/texture_reader.h"
 #include "scene/scene_desc.h"
 
 namespace candela {
 
-MeshDesc loadObjFile(const std::string& path, const std::string& label);
+MeshDesc loadObjFile(const std::string& path, const std::string& label, TextureLoader& textures);
 
 }  // namespace candela

@@ -46,7 +46,8 @@ void forEachElement(JsonObject& top, const std::string& key, Read read) {
 
 // The OBJ files named by the scene's objects, each read once however many objects use it. A
 // failure is reported at the object's "file" key, with the file as the scene wrote it.
-void loadMeshes(SceneDesc& scene, const std::vector<std::string>& writtenNames) {
+void loadMeshes(SceneDesc& scene, const std::vector<std::string>& writtenNames,
+                TextureLoader& textures) {
   std::map<std::string, const MeshDesc*> loaded;  // resolved path -> first object's mesh
   for (size_t i = 0; i < scene.objects.size(); ++i) {
     ObjectDesc& object = scene.objects[i];
@@ -56,7 +57,7 @@ void loadMeshes(SceneDesc& scene, const std::vector<std::string>& writtenNames) 
       continue;
     }
     try {
-      object.mesh = loadObjFile(object.file, writtenNames[i]);
+      object.mesh = loadObjFile(object.file, writtenNames[i], textures);
     } catch (const SceneError& error) {
       failAt(scene.file, memberPath(object.where, "file"), error.what());
     }
@@ -80,18 +81,19 @@ SceneDesc parseSceneText(const std::string& text, const std::string& fileLabel,
   if (std::optional<JsonValue> render = top.get("render"))
     readRender(*render, scene.render, scene.output);
 
+  TextureLoader textures(scene.textures, baseDir);
   MaterialLibrary library;
   if (std::optional<JsonValue> materials = top.get("materials"))
-    library = readMaterialLibrary(*materials);
+    library = readMaterialLibrary(*materials, textures);
 
   IdRegistry ids;
   forEachElement(top, "spheres", [&](const JsonValue& element) {
-    scene.spheres.push_back(readSphere(element, library));
+    scene.spheres.push_back(readSphere(element, library, textures));
     ids.add(scene.spheres.back().id, scene.spheres.back().where, fileLabel);
   });
   std::vector<std::string> writtenNames;
   forEachElement(top, "objects", [&](const JsonValue& element) {
-    scene.objects.push_back(readObject(element, library, baseDir));
+    scene.objects.push_back(readObject(element, library, baseDir, textures));
     ids.add(scene.objects.back().id, scene.objects.back().where, fileLabel);
     writtenNames.push_back(element.json().at("file").get<std::string>());
   });
@@ -114,7 +116,7 @@ SceneDesc parseSceneText(const std::string& text, const std::string& fileLabel,
       failAt(fileLabel, problem->path, problem->message);
   top.finish();
 
-  loadMeshes(scene, writtenNames);
+  loadMeshes(scene, writtenNames, textures);
   return scene;
 }
 

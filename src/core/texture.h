@@ -1,0 +1,105 @@
+// Image textures: a descriptor into a flat texel pool, and the bilinear lookup that both backends
+// (and the geometry layer's alpha tests) use.
+//
+// Conventions:
+// - Texels are RGBA, stored row by row from the image's TOP row. 8-bit textures live in a uint8
+//   pool (4 bytes a texel), float ones in a float pool (4 floats a texel); `offset` is the index
+//   of the texture's first element in its pool.
+// - (u, v) = (0, 0) is the image's bottom-left corner, (1, 1) its top-right (OBJ's convention),
+//   and texel (i, j) (j counted from the top) has its centre at u = (i + 0.5) / W,
+//   v = 1 - (j + 0.5) / H. Lookups repeat in both u and v and interpolate bilinearly.
+// - Srgb8 decodes R, G and B through a 256-entry table (sRGB -> linear, made once on the host);
+//   alpha is linear in every format.
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+
+#include "core/device.h"
+#include "core/vec3.h"
+
+namespace candela {
+
+enum class TextureFormat : uint32_t { Srgb8 = 0, Linear8 = 1, Float = 2 };
+
+struct Texture {
+  uint32_t offset = 0;  // first element in texels8 (8-bit formats) or texelsF (Float)
+  uint32_t width = 0, height = 0;
+  TextureFormat format = TextureFormat::Srgb8;
+};
+
+// A material's use of a texture: which one, and how many times it repeats across uv's [0, 1).
+struct TextureRef {
+  int32_t index = -1;  // into the scene's textures; -1: none
+  float scaleU = 1, scaleV = 1;
+};
+
+// The scene's texture arrays, as the lookup reads them.
+struct TexturePool {
+  const Texture* textures = nullptr;
+  const uint8_t* texels8 = nullptr;
+  const float* texelsF = nullptr;
+  const float* srgbToLinear = nullptr;  // 256 entries
+};
+
+struct TextureSample {
+  Vec3 rgb;
+  float alpha = 1;
+};
+
+namespace detail {
+
+// Texel (x, y) of `t` (x, y within the image) as linear RGBA, accumulated with weight w.
+CANDELA_HDI void addTexel(const TexturePool& pool, const Texture& t, uint32_t x, uint32_t y,
+                          float w, float out[4]) {
+  const uint32_t i = t.offset + 4u * (y * t.width + x);
+  if (t.format == TextureFormat::Float) {
+    for (int c = 0; c < 4; ++c) out[c] += w * pool.texelsF[i + c];
+    return;
+  }
+  const uint8_t* p = pool.texels8 + i;
+  if (t.format == TextureFormat::Srgb8) {
+    for (int c = 0; c < 3; ++c) out[c] += w * pool.srgbToLinear[p[c]];
+  } else {
+    for (int c = 0; c < 3; ++c) out[c] += w * (float(p[c]) * (1.0f / 255.0f));
+  }
+  out[3] += w * (float(p[3]) * (1.0f / 255.0f));
+}
+
+// The fractional part of a coordinate, in [0, 1); NaN and infinities give 0.
+CANDELA_HDI float wrapUnit(float a) {
+  const float f = a - floorf(a);
+  return f >= 0.0f && f < 1.0f ? f : 0.0f;
+}
+
+}  // namespace detail
+
+// The texture `ref` at (u, v), scaled by (scaleU, scaleV) first: bilinear, repeating.
+CANDELA_HDI TextureSample lookupTexture(const TexturePool& pool, const TextureRef& ref, float u,
+                                        float v) {
+  const Texture& t = pool.textures[ref.index];
+  // Continuous texel coordinates with texel centres at integers, x right and y down.
+  const float x = detail::wrapUnit(u * ref.scaleU) * float(t.width) - 0.5f;
+  const float y = (1.0f - detail::wrapUnit(v * ref.scaleV)) * float(t.height) - 0.5f;
+  const float x0f = floorf(x), y0f = floorf(y);
+  const float fx = x - x0f, fy = y - y0f;
+  // x0f and y0f lie in [-1, W - 1] and [-1, H - 1]: one wrap suffices.
+  const int32_t w = int32_t(t.width), h = int32_t(t.height);
+  int32_t x0 = int32_t(x0f), y0 = int32_t(y0f);
+  x0 = x0 < 0 ? x0 + w : (x0 >= w ? x0 - w : x0);
+  y0 = y0 < 0 ? y0 + h : (y0 >= h ? y0 - h : y0);
+  const int32_t x1 = x0 + 1 == w ? 0 : x0 + 1, y1 = y0 + 1 == h ? 0 : y0 + 1;
+  float sum[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+  detail::addTexel(pool, t, uint32_t(x0), uint32_t(y0), (1.0f - fx) * (1.0f - fy), sum);
+  detail::addTexel(pool, t, uint32_t(x1), uint32_t(y0), fx * (1.0f - fy), sum);
+  detail::addTexel(pool, t, uint32_t(x0), uint32_t(y1), (1.0f - fx) * fy, sum);
+  detail::addTexel(pool, t, uint32_t(x1), uint32_t(y1), fx * fy, sum);
+  return {Vec3(sum[0], sum[1], sum[2]), sum[3]};
+}
+
+// sRGB's decoding curve (IEC 61966-2-1), for the host to fill TexturePool::srgbToLinear.
+inline float srgbToLinearValue(float s) {
+  return s <= 0.04045f ? s / 12.92f : std::pow((s + 0.055f) / 1.055f, 2.4f);
+}
+
+}  // namespace candela

@@ -1,0 +1,25 @@
+// AlphaMask: how much of a material's surface is there, for the alpha test of traversal.
+//
+// A hit of alpha a is kept when a >= u, u a pseudo-random number hashed from the ray's origin and
+// direction (pbrt-v4's GeometricPrimitive::Intersect): a = 0 is never a surface, a = 1 always, and
+// in between the surface lets a fraction 1 - a of rays through, camera, bounce and shadow rays
+// alike. Alpha is the product of `constant` and, when `texture` names one, the texture's channel
+// `channel` (3: alpha; 0: red, for masks without an alpha channel). Only triangles are masked.
+#pragma once
+
+#include <cstdint>
+
+#include "core/texture.h"
+
+namespace candela {
+
+struct AlphaMask {
+  float constant = 1.0f;  // in [0, 1]
+  TextureRef texture;     // index -1: none
+  uint32_t channel = 3;   // of the texture: 0 (R) or 3 (A)
+};
+
+// Whether a material with this mask is ever anything but opaque.
+inline bool isMasked(const AlphaMask& m) { return m.constant < 1.0f || m.texture.index >= 0; }
+
+}  // namespace candela

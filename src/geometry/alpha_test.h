@@ -1,0 +1,68 @@
+// The alpha test of traversal (geometry/alpha_mask.h): whether a triangle hit is a surface.
+#pragma once
+
+#include <cstdint>
+#include <cstring>
+
+#include "core/texture.h"
+#include "geometry/geometry_view.h"
+#include "geometry/ray.h"
+#include "geometry/surface_uv.h"
+
+namespace candela {
+
+namespace detail {
+
+CANDELA_HDI uint32_t floatBits(float f) {
+  uint32_t u;
+  memcpy(&u, &f, sizeof u);
+  return u;
+}
+
+// MurmurHash3's finaliser: every input bit affects every output bit.
+CANDELA_HDI uint32_t mixBits(uint32_t h) {
+  h ^= h >> 16;
+  h *= 0x85ebca6bu;
+  h ^= h >> 13;
+  h *= 0xc2b2ae35u;
+  return h ^ (h >> 16);
+}
+
+}  // namespace detail
+
+// A number in [0, 1) that is a pure function of the ray's origin and direction: the same ray
+// meets the same threshold in every engine and on every run.
+CANDELA_HDI float rayHash(const Ray& ray) {
+  const float words[6] = {ray.origin.x,    ray.origin.y,    ray.origin.z,
+                          ray.direction.x, ray.direction.y, ray.direction.z};
+  uint32_t h = 0x9e3779b9u;
+  for (int i = 0; i < 6; ++i) h = detail::mixBits(h ^ detail::floatBits(words[i]));
+  return float(h >> 8) * (1.0f / 16777216.0f);
+}
+
+// The alpha of triangle `tri` at barycentrics (b1, b2), in [0, 1]; the scene must have masks.
+CANDELA_HDI float triangleAlpha(const GeometryView& scene, const Triangle& tri, float b1,
+                                float b2) {
+  const AlphaMask& mask = scene.alphaMasks[tri.material];
+  float alpha = mask.constant;
+  if (mask.texture.index >= 0) {
+    const Vec2 uv = triangleUv(scene, tri, b1, b2);
+    const TextureSample s = lookupTexture(scene.texturePool(), mask.texture, uv.x, uv.y);
+    alpha *= mask.channel == 3 ? s.alpha : s.rgb.x;
+  }
+  return alpha;
+}
+
+// Whether `ray`'s hit of `tri` at (b1, b2) counts: always without masks, never at alpha 0.
+CANDELA_HDI bool alphaKeepsHit(const GeometryView& scene, const Triangle& tri, float b1, float b2,
+                               const Ray& ray) {
+  if (scene.alphaMaskCount == 0) return true;
+  const AlphaMask& mask = scene.alphaMasks[tri.material];
+  if (mask.constant >= 1.0f && mask.texture.index < 0) return true;
+  const float alpha = triangleAlpha(scene, tri, b1, b2);
+  if (alpha >= 1.0f) return true;
+  if (!(alpha > 0.0f)) return false;
+  return rayHash(ray) < alpha;
+}
+
+}  // namespace candela

@@ -1,0 +1,17 @@
+// The colour of a material at a surface point: `color` alone, or its texture times `color` (a
+// tint, 1 unless the scene or the MTL's Kd sets another).
+#pragma once
+
+#include "core/texture.h"
+#include "geometry/surface.h"
+#include "render/material.h"
+#include "render/scene_view.h"
+
+namespace candela {
+
+CANDELA_HDI Vec3 surfaceColor(const SceneView& scene, const Material& m, const SurfacePoint& sp) {
+  if (m.colorTexture.index < 0) return m.color;
+  return m.color * lookupTexture(scene.texturePool(), m.colorTexture, sp.uv.x, sp.uv.y).rgb;
+}
+
+}  // namespace candela

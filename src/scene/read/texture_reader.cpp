@@ -1,0 +1,120 @@
+// Reading textures; see texture_reader.h.
+#include "scene/read/texture_reader.h"
+
+#include <cmath>
+#include <exception>
+#include <cctype>
+#include <filesystem>
+
+#include "image/image_io.h"
+#include "scene/scene_error.h"
+
+namespace candela {
+namespace {
+
+// Texture offsets are 32-bit element indices: a texture may hold at most 2^28 texels.
+constexpr uint64_t kMaxTexels = uint64_t(1) << 28;
+
+bool isFloatFile(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return ext == ".exr" || ext == ".pfm" || ext == ".hdr";
+}
+
+std::string texelProblem(const ImageRGB& image) {
+  for (uint32_t y = 0; y < image.height; ++y)
+    for (uint32_t x = 0; x < image.width; ++x)
+      for (int c = 0; c < 3; ++c) {
+        const float v = image.at(x, y)[c];
+        if (!(v >= 0.0f && std::isfinite(v)))
+          return "texel (" + std::to_string(x) + ", " + std::to_string(y) + ") is " +
+                 (std::isnan(v) ? "NaN" : (std::isinf(v) ? "infinite" : "negative")) +
+                 "; expected finite, non-negative values in every texel";
+      }
+  return "";
+}
+
+TextureDesc decode(const std::string& path, TextureUse use, bool* hasAlpha) {
+  TextureDesc t;
+  t.file = path;
+  if (isFloatFile(path)) {
+    const ImageRGB image = readImage(path);
+    const std::string problem = texelProblem(image);
+    if (!problem.empty()) throw SceneError(problem);
+    t.format = TextureFormat::Float;
+    t.width = image.width;
+    t.height = image.height;
+    t.texelsF.reserve(size_t(4) * image.width * image.height);
+    for (size_t i = 0; i + 2 < image.pixels.size(); i += 3)
+      t.texelsF.insert(t.texelsF.end(),
+                       {image.pixels[i], image.pixels[i + 1], image.pixels[i + 2], 1.0f});
+    *hasAlpha = false;
+  } else {
+    Image8 image = readImage8(path);
+    t.format = use == TextureUse::Color ? TextureFormat::Srgb8 : TextureFormat::Linear8;
+    t.width = image.width;
+    t.height = image.height;
+    t.texels8 = std::move(image.pixels);
+    *hasAlpha = image.channels == 2 || image.channels == 4;
+  }
+  return t;
+}
+
+}  // namespace
+
+LoadedTexture TextureLoader::load(const std::string& path, TextureUse use) {
+  std::error_code error;
+  std::filesystem::path canonical = std::filesystem::weakly_canonical(path, error);
+  const std::string key = error ? path : canonical.string();
+  const auto found = loaded_.find({key, use});
+  if (found != loaded_.end()) return found->second;
+
+  LoadedTexture result;
+  TextureDesc texture;
+  try {
+    texture = decode(path, use, &result.hasAlpha);
+  } catch (const SceneError&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw SceneError(std::string("cannot read the texture: ") + e.what());
+  }
+  if (texture.width == 0 || texture.height == 0)
+    throw SceneError(path + ": the texture is empty");
+  if (uint64_t(texture.width) * texture.height > kMaxTexels)
+    throw SceneError(path + ": the texture has more than 2^28 texels");
+  result.index = int32_t(textures_.size());
+  textures_.push_back(std::make_shared<const TextureDesc>(std::move(texture)));
+  loaded_.emplace(std::make_pair(key, use), result);
+  return result;
+}
+
+Vec3 readTexturedColour(const JsonValue& value, TextureLoader& textures, TextureRef* texture) {
+  if (!value.json().is_object()) return value.colour();
+  JsonObject fields(value, {"texture", "scale"}, "a colour or a texture object");
+  const JsonValue file = fields.require("texture");
+  const std::string written = file.string();
+  if (written.empty()) file.failExpected("the path of an image file");
+  const std::filesystem::path path(written);
+  const std::string resolved =
+      path.is_absolute() ? written : (std::filesystem::path(textures.baseDir()) / path).string();
+  TextureRef ref;
+  if (std::optional<JsonValue> scale = fields.get("scale")) {
+    const std::string expectation = "an array of 2 finite, non-zero numbers";
+    if (!scale->json().is_array() || scale->json().size() != 2) scale->failExpected(expectation);
+    const std::vector<JsonValue> e = scale->elements();
+    ref.scaleU = e[0].number("a finite, non-zero number");
+    ref.scaleV = e[1].number("a finite, non-zero number");
+    if (ref.scaleU == 0) e[0].failExpected("a finite, non-zero number");
+    if (ref.scaleV == 0) e[1].failExpected("a finite, non-zero number");
+  }
+  fields.finish();
+  try {
+    ref.index = textures.load(resolved, TextureUse::Color).index;
+  } catch (const SceneError& e) {
+    file.fail(e.what());
+  }
+  *texture = ref;
+  return Vec3(1.0f);
+}
+
+}  // namespace candela

@@ -1,0 +1,53 @@
+// Image textures in a scene: reading each file once, and colours that may be textured.
+//
+// A colour field that takes a texture accepts, besides a grey or [r, g, b],
+//   {"texture": "wood.png", "scale": [su, sv]}
+// with the file relative to the scene file's folder and `scale` (default [1, 1]) finite and
+// non-zero. PNG and JPEG are 8-bit sRGB (colours) or linear (masks); EXR, PFM and .hdr are linear
+// float. Any other colour field refuses a texture object (JsonValue::colour).
+#pragma once
+
+#include <map>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "scene/read/json_reader.h"
+#include "scene/scene_desc.h"
+
+namespace candela {
+
+// What a texture is read for: a colour (8-bit files decoded from sRGB) or a mask (linear).
+enum class TextureUse { Color, Mask };
+
+struct LoadedTexture {
+  int32_t index = -1;     // into the scene's textures
+  bool hasAlpha = false;  // the file has an alpha channel (8-bit files with 2 or 4 channels)
+};
+
+// Reads textures into a scene's list, each (file, use) once, by canonical path.
+class TextureLoader {
+ public:
+  // `baseDir`: the scene file's folder, against which JSON names are resolved.
+  TextureLoader(std::vector<std::shared_ptr<const TextureDesc>>& textures, std::string baseDir)
+      : textures_(textures), baseDir_(std::move(baseDir)) {}
+
+  const std::string& baseDir() const { return baseDir_; }
+
+  // The texture of the file at `path`; throws SceneError "<reason>" (naming the file as given)
+  // when it cannot be read, is empty or too large, or holds a texel that is not finite and
+  // non-negative.
+  LoadedTexture load(const std::string& path, TextureUse use);
+
+ private:
+  std::vector<std::shared_ptr<const TextureDesc>>& textures_;
+  std::string baseDir_;
+  std::map<std::pair<std::string, TextureUse>, LoadedTexture> loaded_;
+};
+
+// A colour that may be textured: returns the colour (1 for a texture: the texture alone) and sets
+// `*texture` when `value` is a texture object. Errors name the JSON path.
+Vec3 readTexturedColour(const JsonValue& value, TextureLoader& textures, TextureRef* texture);
+
+}  // namespace candela

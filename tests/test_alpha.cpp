@@ -1,0 +1,94 @@
+// Alpha masks (MTL d, Tr, map_d): a masked-out surface is no surface for camera and shadow rays,
+// in both CPU ray engines. A black blocker quad hangs between a point light and a grey floor, and
+// the camera looks down through it at a patch of floor so small that the floor's radiance is
+// L0 = rho I / (4 pi^2 d^2) all over it: alpha 0 shows L0 (no blocker, no shadow), alpha 1 shows
+// 0 (the black blocker), and alpha 0.5 a quarter of L0 (half the camera rays reach the floor,
+// and half of those points see the light).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "backends/cpu/cpu_engine.h"
+#include "backends/cpu/cpu_renderer.h"
+#include "core/constants.h"
+#include "render_test_util.h"
+#include "scene/flatten.h"
+#include "scene/read/scene_loader.h"
+#include "texture_test_util.h"
+
+namespace candela {
+namespace {
+
+constexpr float kRho = 0.5f, kIntensity = 7896.0f, kDistance = 10.0f;
+const double kL0 = kRho * kIntensity / (4.0 * kPi * kPi * kDistance * kDistance);
+
+std::vector<CpuEngine> engines() {
+  std::vector<CpuEngine> list = {CpuEngine::Bvh};
+  if (embreeAvailable()) list.push_back(CpuEngine::Embree);
+  return list;
+}
+
+// The mean radiance (channel 0) of the view, with the blocker's MTL statements `blocker`.
+double renderMean(const std::string& blocker, CpuEngine engine, const test::TextureDir& dir) {
+  dir.write("scene.mtl", "newmtl floor\nKd 0.5 0.5 0.5\nnewmtl blocker\nKd 0 0 0\n" + blocker);
+  dir.write("scene.obj",
+            "mtllib scene.mtl\n"
+            "v -10 0 -10\nv 10 0 -10\nv 10 0 10\nv -10 0 10\n"
+            "v -3 5 -3\nv 3 5 -3\nv 3 5 3\nv -3 5 3\n"
+            "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
+            "usemtl floor\nf 4 3 2 1\nusemtl blocker\nf 8/4 7/3 6/2 5/1\n");
+  const std::string json = R"({
+    "camera": {"width": 32, "height": 32, "fov": 1, "spp": 4, "position": [0, 20, 0],
+               "look_at": [0, 0, 0], "up": [0, 0, -1]},
+    "render": {"max_depth": 1},
+    "objects": [{"file": "scene.obj"}],
+    "lights": [{"position": [0, 10, 0], "intensity": 7896}]
+  })";
+  SceneDesc desc = parseSceneText(json, "alpha.json", dir.path());
+  if (engine == CpuEngine::Embree) desc.ownBvh = OwnBvh::None;
+  const SceneData data = flattenScene(desc);
+  CpuRenderer renderer(engine);
+  renderer.setScene(data, SceneChange::Structure);
+  const RenderResult r = renderer.render(RenderOptions{});
+  return test::regionStats(r.image, 0, 0, 32, 32, 0).mean;
+}
+
+class Alpha : public ::testing::TestWithParam<CpuEngine> {
+ protected:
+  test::TextureDir dir;
+};
+
+TEST_P(Alpha, ZeroIsNoSurfaceOneIsOpaque) {
+  EXPECT_NEAR(renderMean("d 0\n", GetParam(), dir), kL0, 2e-3 * kL0);
+  EXPECT_NEAR(renderMean("Tr 1\n", GetParam(), dir), kL0, 2e-3 * kL0);
+  EXPECT_EQ(renderMean("d 1\n", GetParam(), dir), 0.0);
+  EXPECT_EQ(renderMean("", GetParam(), dir), 0.0);
+}
+
+TEST_P(Alpha, HalfPassesHalfTheRays) {
+  // 4096 camera samples, each reaching a lit floor with probability 1/4: the fraction's standard
+  // deviation is sqrt(3/16 / 4096) = 0.0068.
+  EXPECT_NEAR(renderMean("d 0.5\n", GetParam(), dir) / kL0, 0.25, 4 * 0.0068);
+}
+
+TEST_P(Alpha, MaskTextures) {
+  // An RGBA texture masks by its alpha; a grey one by its grey.
+  ASSERT_TRUE(test::writeTestPng(dir.file("clear.png"), 1, 1, 4, {255, 255, 255, 0}));
+  ASSERT_TRUE(test::writeTestPng(dir.file("white.png"), 1, 1, 1, {255}));
+  ASSERT_TRUE(test::writeTestPng(dir.file("black.png"), 1, 1, 1, {0}));
+  EXPECT_NEAR(renderMean("map_d clear.png\n", GetParam(), dir), kL0, 2e-3 * kL0);
+  EXPECT_NEAR(renderMean("map_d black.png\n", GetParam(), dir), kL0, 2e-3 * kL0);
+  EXPECT_EQ(renderMean("map_d white.png\n", GetParam(), dir), 0.0);
+  // The constant and the texture multiply.
+  EXPECT_NEAR(renderMean("d 0\nmap_d white.png\n", GetParam(), dir), kL0, 2e-3 * kL0);
+}
+
+INSTANTIATE_TEST_SUITE_P(Engines, Alpha, ::testing::ValuesIn(engines()),
+                         [](const ::testing::TestParamInfo<CpuEngine>& engine) {
+                           return std::string(engine.param == CpuEngine::Embree ? "Embree" : "Bvh");
+                         });
+
+}  // namespace
+}  // namespace candela

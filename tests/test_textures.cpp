@@ -1,0 +1,335 @@
+// Textures: the bilinear lookup against hand-computed values (sRGB table, wrap, v flip, scale),
+// sphere and OBJ texture coordinates (v/vt/vn corners split into vertices), a textured quad's
+// albedo in a furnace, and the messages of bad texture input.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "core/constants.h"
+#include "core/texture.h"
+#include "geometry/surface_uv.h"
+#include "render_test_util.h"
+#include "scene/flatten.h"
+#include "scene/read/obj_loader.h"
+#include "scene/read/scene_loader.h"
+#include "scene/scene_error.h"
+#include "texture_test_util.h"
+
+#define STB_IMAGE_WRITE_IMPLEMENTATION
+#define STB_IMAGE_WRITE_STATIC
+#if defined(__GNUC__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wunused-function"
+#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
+#endif
+#include <stb/stb_image_write.h>
+#if defined(__GNUC__)
+#pragma GCC diagnostic pop
+#endif
+
+namespace candela {
+namespace test {
+
+bool writeTestPng(const std::string& path, int width, int height, int channels,
+                  const std::vector<uint8_t>& bytes) {
+  return stbi_write_png(path.c_str(), width, height, channels, bytes.data(), width * channels) != 0;
+}
+
+}  // namespace test
+
+namespace {
+
+std::vector<float> srgbTable() {
+  std::vector<float> table;
+  for (int i = 0; i < 256; ++i) table.push_back(srgbToLinearValue(float(i) / 255.0f));
+  return table;
+}
+
+float srgb(int byte) { return srgbToLinearValue(float(byte) / 255.0f); }
+
+// A 2x2 sRGB texture; top row (10, 20, 30, 255) (200, 100, 50, 0), bottom row (0, 0, 0, 255)
+// (255, 255, 255, 128).
+class TextureLookup : public ::testing::Test {
+ protected:
+  TextureLookup() {
+    texture.width = texture.height = 2;
+    texture.format = TextureFormat::Srgb8;
+    pool.textures = &texture;
+    pool.texels8 = texels.data();
+    pool.srgbToLinear = table.data();
+    ref.index = 0;
+  }
+  void expectNear(const TextureSample& s, const Vec3& rgb, float alpha) const {
+    EXPECT_NEAR(s.rgb.x, rgb.x, 1e-6f);
+    EXPECT_NEAR(s.rgb.y, rgb.y, 1e-6f);
+    EXPECT_NEAR(s.rgb.z, rgb.z, 1e-6f);
+    EXPECT_NEAR(s.alpha, alpha, 1e-6f);
+  }
+
+  std::vector<uint8_t> texels = {10, 20, 30, 255, 200, 100, 50, 0, 0, 0, 0, 255, 255, 255, 255, 128};
+  std::vector<float> table = srgbTable();
+  Texture texture;
+  TexturePool pool;
+  TextureRef ref;
+};
+
+TEST_F(TextureLookup, TexelCentresDecodeSrgbAndFlipV) {
+  // v = 0 is the bottom row: (0.25, 0.75) is the top-left texel, (0.25, 0.25) the bottom-left.
+  expectNear(lookupTexture(pool, ref, 0.25f, 0.75f), Vec3(srgb(10), srgb(20), srgb(30)), 1.0f);
+  expectNear(lookupTexture(pool, ref, 0.75f, 0.75f), Vec3(srgb(200), srgb(100), srgb(50)), 0.0f);
+  expectNear(lookupTexture(pool, ref, 0.25f, 0.25f), Vec3(0.0f), 1.0f);
+  expectNear(lookupTexture(pool, ref, 0.75f, 0.25f), Vec3(1.0f), 128.0f / 255.0f);
+}
+
+TEST_F(TextureLookup, BilinearBetweenCentres) {
+  // (0.375, 0.625) lies a quarter of the way from the top-left centre to each neighbour.
+  const float w00 = 0.75f * 0.75f, w10 = 0.25f * 0.75f, w01 = 0.75f * 0.25f, w11 = 0.25f * 0.25f;
+  const Vec3 expected(w00 * srgb(10) + w10 * srgb(200) + w11 * 1.0f,
+                      w00 * srgb(20) + w10 * srgb(100) + w11 * 1.0f,
+                      w00 * srgb(30) + w10 * srgb(50) + w11 * 1.0f);
+  expectNear(lookupTexture(pool, ref, 0.375f, 0.625f), expected,
+             w00 + w01 + w11 * 128.0f / 255.0f);
+}
+
+TEST_F(TextureLookup, RepeatsInBothDirections) {
+  // u = 0 lies halfway between the last column's centre and the first's.
+  const Vec3 topMean = 0.5f * (Vec3(srgb(10), srgb(20), srgb(30)) +
+                               Vec3(srgb(200), srgb(100), srgb(50)));
+  expectNear(lookupTexture(pool, ref, 0.0f, 0.75f), topMean, 0.5f);
+  expectNear(lookupTexture(pool, ref, 0.5f, 0.75f), topMean, 0.5f);
+  // Far outside [0, 1), as the cat's uvs are.
+  expectNear(lookupTexture(pool, ref, 7.25f, -2.25f), Vec3(srgb(10), srgb(20), srgb(30)), 1.0f);
+  expectNear(lookupTexture(pool, ref, -0.75f, 3.25f), Vec3(0.0f), 1.0f);
+  // NaN coordinates read a texel instead of memory outside the texture.
+  const TextureSample s = lookupTexture(pool, ref, NAN, NAN);
+  EXPECT_TRUE(std::isfinite(s.rgb.x) && std::isfinite(s.alpha));
+}
+
+TEST_F(TextureLookup, ScaleMultipliesUvFirst) {
+  ref.scaleU = 2.0f;
+  ref.scaleV = -2.0f;
+  // (0.125 * 2, 0.375 * -2) = (0.25, -0.75), which repeats to (0.25, 0.25): bottom-left.
+  expectNear(lookupTexture(pool, ref, 0.125f, 0.375f), Vec3(0.0f), 1.0f);
+  expectNear(lookupTexture(pool, ref, 0.125f, 0.125f), Vec3(srgb(10), srgb(20), srgb(30)), 1.0f);
+}
+
+TEST_F(TextureLookup, LinearAndFloatFormats) {
+  texture.format = TextureFormat::Linear8;
+  expectNear(lookupTexture(pool, ref, 0.25f, 0.75f), Vec3(10.0f, 20.0f, 30.0f) / 255.0f, 1.0f);
+  const std::vector<float> floats = {0.5f, 2.0f, 0.0f, 1.0f, 1.5f, 0.0f, 4.0f, 0.5f,
+                                     0.0f, 0.0f, 0.0f, 1.0f, 0.0f, 0.0f, 0.0f, 1.0f};
+  texture.format = TextureFormat::Float;
+  pool.texelsF = floats.data();
+  expectNear(lookupTexture(pool, ref, 0.5f, 0.75f), Vec3(1.0f, 1.0f, 2.0f), 0.75f);
+}
+
+TEST(SphereUv, EquirectangularWithVUp) {
+  const auto expectUv = [](const Vec3& d, float u, float v) {
+    const Vec2 uv = sphereUv(d);
+    EXPECT_NEAR(uv.x, u, 1e-6f) << d.x << " " << d.y << " " << d.z;
+    EXPECT_NEAR(uv.y, v, 1e-6f) << d.x << " " << d.y << " " << d.z;
+  };
+  expectUv(Vec3(0, 0, -1), 0.5f, 0.5f);  // what the default camera sees at the centre
+  expectUv(Vec3(1, 0, 0), 0.75f, 0.5f);
+  expectUv(Vec3(-1, 0, 0), 0.25f, 0.5f);
+  expectUv(Vec3(0, 0, 1), 0.0f, 0.5f);  // the seam, wrapped from 1
+  expectUv(Vec3(0, 1, 0), 0.5f, 1.0f);  // top pole
+  expectUv(Vec3(0, -1, 0), 0.5f, 0.0f);  // bottom pole: v = 0
+  const float s = std::sqrt(0.5f);
+  expectUv(Vec3(0, s, -s), 0.5f, 0.75f);
+}
+
+// Corners that pair a position with another uv (a seam) or normal become separate vertices.
+TEST(ObjUv, VtIsReadAndSeamsSplitVertices) {
+  test::TextureDir dir;
+  SceneDesc desc;
+  TextureLoader loader(desc.textures, dir.path());
+  const std::string obj = dir.write("q.obj",
+                                    "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
+                                    "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nvt 0.5 0.25 0.7\n"
+                                    "vn 0 0 1\nvn 0 1 0\n"
+                                    "f 1/1/1 2/2/1 3/3/1\nf 1/5/1 3/3/1 4/4/1\nf 1/1/2 3/3/1 4/4/1\n");
+  ObjectDesc object;
+  object.file = obj;
+  object.mesh = loadObjFile(obj, "q.obj", loader);
+  const MeshDesc& mesh = object.mesh;
+  ASSERT_EQ(mesh.uvs.size(), 5u);
+  EXPECT_EQ(mesh.uvs[4].x, 0.5f);
+  EXPECT_EQ(mesh.uvs[4].y, 0.25f);  // the third component is ignored
+  EXPECT_EQ(mesh.triangles[1].t[0], 4);
+  EXPECT_EQ(mesh.triangles[2].t[0], 0);
+
+  desc.objects.push_back(object);
+  const SceneData s = flattenSceneContents(desc);
+  ASSERT_EQ(s.uvs.size(), s.positions.size());
+  // Vertex 1 (0-based 0) appears with (vt 1, vn 1), (vt 5, vn 1) and (vt 1, vn 2): three vertices.
+  EXPECT_EQ(s.positions.size(), 6u);
+  ASSERT_EQ(s.triangles.size(), 3u);
+  const uint32_t a = s.triangles[0].v[0], b = s.triangles[1].v[0], c = s.triangles[2].v[0];
+  EXPECT_NE(a, b);
+  EXPECT_NE(a, c);
+  EXPECT_NE(b, c);
+  for (uint32_t v : {a, b, c}) EXPECT_EQ(s.positions[v].x, 0.0f);
+  EXPECT_EQ(s.uvs[a].x, 0.0f);
+  EXPECT_EQ(s.uvs[b].x, 0.5f);
+  EXPECT_EQ(s.uvs[b].y, 0.25f);
+  EXPECT_EQ(s.uvs[c].x, 0.0f);
+  // Shared corners with equal attributes stay shared.
+  EXPECT_EQ(s.triangles[0].v[2], s.triangles[1].v[1]);
+  const GeometryView g = s.view();
+  const Vec2 mid = triangleUv(g, s.triangles[0], 0.5f, 0.25f);  // b0 = 0.25
+  EXPECT_FLOAT_EQ(mid.x, 0.75f);  // 0.25 * 0 + 0.5 * 1 + 0.25 * 1
+  EXPECT_FLOAT_EQ(mid.y, 0.25f);  // 0.25 * 0 + 0.5 * 0 + 0.25 * 1
+}
+
+// A quad of uvs [0,1]^2 textured by a 2x1 image, seen through exactly two pixel columns whose
+// centres fall on the two texel centres (u = 0.25 and 0.75), under a uniform white environment
+// with max_depth 1: each column's radiance is its texel's albedo.
+TEST(TextureRender, QuadShowsEachTexelsAlbedoInAFurnace) {
+  test::TextureDir dir;
+  ASSERT_TRUE(test::writeTestPng(dir.file("two.png"), 2, 1, 3, {40, 160, 230, 250, 120, 20}));
+  dir.write("quad.obj",
+            "v -1 -9 0\nv 1 -9 0\nv 1 9 0\nv -1 9 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
+            "f 1/1 2/2 3/3 4/4\n");
+  // fov 30 at distance 1 / tan(15 deg): the view spans x in [-1, 1].
+  const std::string json = R"({
+    "camera": {"width": 2, "height": 16, "fov": 30, "position": [0, 0, 3.7320508], "spp": 2048},
+    "render": {"max_depth": 1, "antialiasing": false},
+    "objects": [{"file": "quad.obj", "color": {"texture": "two.png"}}],
+    "environment": {"color": 1}
+  })";
+  const RenderResult r = test::renderTestScene(json, 0, dir.path());
+  const float left[3] = {srgb(40), srgb(160), srgb(230)}, right[3] = {srgb(250), srgb(120), srgb(20)};
+  for (int c = 0; c < 3; ++c) {
+    const test::RegionStats l = test::regionStats(r.image, 0, 0, 1, 16, c);
+    const test::RegionStats rr = test::regionStats(r.image, 1, 0, 2, 16, c);
+    EXPECT_NEAR(l.mean, left[c], 4 * l.standardError() + 2e-3) << "channel " << c;
+    EXPECT_NEAR(rr.mean, right[c], 4 * rr.standardError() + 2e-3) << "channel " << c;
+  }
+}
+
+std::string loadError(const std::string& json, const std::string& baseDir) {
+  try {
+    parseSceneText(json, "scene.json", baseDir);
+  } catch (const SceneError& e) {
+    return e.what();
+  }
+  return "(no SceneError)";
+}
+
+TEST(TextureErrors, JsonMessagesNameThePath) {
+  test::TextureDir dir;
+  ASSERT_TRUE(test::writeTestPng(dir.file("ok.png"), 1, 1, 3, {1, 2, 3}));
+  const auto scene = [](const std::string& material) {
+    return R"({"camera": {}, "spheres": [{"position": [0, 0, 0], "radius": 1, "material": )" +
+           material + "}]}";
+  };
+  const std::string missing = loadError(
+      scene(R"({"type": "diffuse", "color": {"texture": "wood.png"}})"), dir.path());
+  EXPECT_EQ(missing.rfind("scene.json: spheres[0].material.color.texture: cannot read the texture: ",
+                          0),
+            0u)
+      << missing;
+  EXPECT_NE(missing.find("wood.png"), std::string::npos) << missing;
+  EXPECT_EQ(loadError(scene(R"({"type": "diffuse", "color": {"texture": "ok.png", "scale": [1, 0]}})"),
+                      dir.path()),
+            "scene.json: spheres[0].material.color.scale[1]: expected a finite, non-zero number, "
+            "got 0");
+  EXPECT_EQ(loadError(scene(R"({"type": "diffuse", "color": {"texture": "ok.png", "scale": 2}})"),
+                      dir.path()),
+            "scene.json: spheres[0].material.color.scale: expected an array of 2 finite, non-zero "
+            "numbers, got 2");
+  EXPECT_EQ(loadError(scene(R"({"type": "glass", "color": {"texture": "ok.png"}})"), dir.path()),
+            "scene.json: spheres[0].material.color: a texture on a field that takes none (expected "
+            "a number or an array of 3 numbers)");
+  EXPECT_EQ(loadError(scene(R"({"type": "emissive", "radiance": {"texture": "ok.png"}})"),
+                      dir.path()),
+            "scene.json: spheres[0].material.radiance: a texture on a field that takes none "
+            "(expected a number or an array of 3 numbers)");
+  EXPECT_EQ(loadError(scene(R"({"type": "diffuse", "color": {"texture": "ok.png", "wrap": 1}})"),
+                      dir.path()),
+            "scene.json: spheres[0].material.color.wrap: unknown key, expected one of \"texture\", "
+            "\"scale\"");
+}
+
+TEST(TextureErrors, MtlMessagesNameFileAndLine) {
+  test::TextureDir dir;
+  SceneDesc desc;
+  TextureLoader loader(desc.textures, dir.path());
+  const std::string obj =
+      dir.write("m.obj", "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl a\nf 1 2 3\n");
+  const auto error = [&](const std::string& mtl) -> std::string {
+    dir.write("m.mtl", mtl);
+    try {
+      loadObjFile(obj, "meshes/m.obj", loader);
+    } catch (const SceneError& e) {
+      return e.what();
+    }
+    return "(no SceneError)";
+  };
+  const std::string missing = error("newmtl a\nKd 1 1 1\nmap_d mask.png\n");
+  EXPECT_EQ(missing.rfind("meshes/m.mtl:3: cannot read the texture: ", 0), 0u) << missing;
+  EXPECT_NE(missing.find("mask.png"), std::string::npos) << missing;
+  EXPECT_EQ(error("newmtl a\nd 1.5\n"), "meshes/m.mtl:2: expected d between 0 and 1, got \"1.5\"");
+  EXPECT_EQ(error("newmtl a\n\nTr x\n"), "meshes/m.mtl:3: expected Tr between 0 and 1, got \"x\"");
+  EXPECT_EQ(error("newmtl a\nmap_Kd -clamp on a.png\n"),
+            "meshes/m.mtl:2: map_Kd option \"-clamp\" is not supported (only -s)");
+  ASSERT_TRUE(test::writeTestPng(dir.file("not.png"), 1, 1, 1, {0}));
+  dir.write("bad.png", "not a png");
+  const std::string unreadable = error("newmtl a\nmap_Kd bad.png\n");
+  EXPECT_EQ(unreadable.rfind("meshes/m.mtl:2: cannot read the texture: ", 0), 0u) << unreadable;
+}
+
+TEST(TextureLoading, EachFileOnceWithScaleFromMtl) {
+  test::TextureDir dir;
+  ASSERT_TRUE(test::writeTestPng(dir.file("t.png"), 1, 1, 4, {1, 2, 3, 4}));
+  ASSERT_TRUE(test::writeTestPng(dir.file("g.png"), 1, 1, 1, {7}));
+  dir.write("m.mtl",
+            "newmtl a\nmap_Kd -s 2 3 1 t.png\nmap_d t.png\nnewmtl b\nKd 0.5 0.5 0.5\n"
+            "map_Kd ./t.png\nTr 0.25\nmap_d g.png\n");
+  const std::string obj = dir.write(
+      "m.obj", "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl a\nf 1 2 3\nusemtl b\nf 1 3 2\n");
+  SceneDesc desc;
+  TextureLoader loader(desc.textures, dir.path());
+  const MeshDesc mesh = loadObjFile(obj, "m.obj", loader);
+  ASSERT_EQ(mesh.materials.size(), 2u);
+  const Material& a = mesh.materials[0];
+  const Material& b = mesh.materials[1];
+  // t.png as a colour (sRGB) once, as a mask (linear) once, g.png as a mask.
+  ASSERT_EQ(desc.textures.size(), 3u);
+  EXPECT_EQ(a.colorTexture.index, b.colorTexture.index);
+  EXPECT_EQ(desc.textures[size_t(a.colorTexture.index)]->format, TextureFormat::Srgb8);
+  EXPECT_EQ(a.colorTexture.scaleU, 2.0f);
+  EXPECT_EQ(a.colorTexture.scaleV, 3.0f);
+  EXPECT_EQ(a.color.x, 1.0f);  // no Kd: the texture alone
+  EXPECT_EQ(b.color.x, 0.5f);  // Kd tints the texture
+  EXPECT_EQ(a.alpha.channel, 3u);  // t.png has an alpha channel
+  EXPECT_EQ(desc.textures[size_t(a.alpha.texture.index)]->format, TextureFormat::Linear8);
+  EXPECT_EQ(b.alpha.channel, 0u);  // g.png has none: its grey is the mask
+  EXPECT_FLOAT_EQ(b.alpha.constant, 0.75f);
+}
+
+// The command line: a bad texture exits 2 with one line and writes nothing.
+TEST(TextureCli, MissingTextureExitsTwoAndWritesNothing) {
+  test::TextureDir dir;
+  dir.write("s.json", R"({"camera": {"width": 4, "height": 4},
+    "spheres": [{"position": [0, 0, -3], "radius": 1, "color": {"texture": "gone.png"}}]})");
+  const std::string command = "cd '" + dir.path() + "' && '" + CANDELA_BINARY +
+                              "' render s.json -o out.png > /dev/null 2> err.txt";
+  const int status = std::system(command.c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 2);
+  std::ifstream in(dir.file("err.txt"));
+  std::string line, rest;
+  std::getline(in, line);
+  EXPECT_FALSE(std::getline(in, rest)) << "one line only";
+  EXPECT_EQ(line.rfind("candela: error: s.json: spheres[0].color.texture: cannot read the texture",
+                       0),
+            0u)
+      << line;
+  EXPECT_FALSE(std::filesystem::exists(dir.file("out.png")));
+}
+
+}  // namespace
+}  // namespace candela
