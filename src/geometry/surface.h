@@ -26,7 +26,6 @@ struct SurfacePoint {
   Vec3 error;  // absolute bound on the error of p, per axis
   Vec3 ng;     // unit geometric normal, towards the primitive's outside
   Vec3 ns;     // unit shading normal, dot(ns, ng) >= 0
-  Vec2 uv;     // texture coordinates (geometry/surface_uv.h)
   uint32_t material;
 };
 
@@ -43,7 +42,6 @@ CANDELA_HDI SurfacePoint sphereSurfaceAt(const Sphere& s, const Ray& ray, float 
   sp.error = gammaBound(5) * abs(local) + gammaBound(1) * abs(sp.p);
   sp.ng = normalize(local);
   sp.ns = sp.ng;
-  sp.uv = sphereUv(sp.ng);
   sp.material = s.material;
   return sp;
 }
@@ -74,7 +72,6 @@ CANDELA_HDI SurfacePoint triangleSurfaceAt(const GeometryView& scene, const Tria
       if (lengthSquared(n) > 0.0f) sp.ns = faceForward(normalize(n), sp.ng);
     }
   }
-  sp.uv = triangleUv(scene, tri, b1, b2);
   sp.material = tri.material;
   return sp;
 }
@@ -83,6 +80,13 @@ CANDELA_HDI SurfacePoint triangleSurfaceAt(const GeometryView& scene, const Tria
 CANDELA_HDI SurfacePoint surfaceAt(const GeometryView& scene, const Ray& ray, const Hit& hit) {
   if (hit.prim < scene.sphereCount) return sphereSurfaceAt(scene.spheres[hit.prim], ray, hit.t);
   return triangleSurfaceAt(scene, scene.triangles[hit.prim - scene.sphereCount], hit.b1, hit.b2);
+}
+
+// The texture coordinates at `hit` (geometry/surface_uv.h), whose surface is `sp`: computed only
+// where a texture asks, since a sphere's cost two inverse trigonometric functions.
+CANDELA_HDI Vec2 surfaceUv(const GeometryView& scene, const Hit& hit, const SurfacePoint& sp) {
+  if (hit.prim < scene.sphereCount) return sphereUv(sp.ng);
+  return triangleUv(scene, scene.triangles[hit.prim - scene.sphereCount], hit.b1, hit.b2);
 }
 
 }  // namespace candela

@@ -136,7 +136,7 @@ CANDELA_HDI Vec3 traceRadiance(const SceneView& scene, const Tracer& tracer, Ray
     }
     if (depth > maxDepth) break;
 
-    const Bsdf bsdf = makeBsdf(m, surfaceColor(scene, m, sp), wo, sp.ng, sp.ns);
+    const Bsdf bsdf = makeBsdf(m, surfaceColor(scene, m, hit, sp), wo, sp.ng, sp.ns);
     if (hasSmoothLobe(m)) {
       radiance += throughput * estimateDirect(scene, tracer, bsdf, sp, rng, counters);
       // "direct": the scattered ray below only gathers emission; nothing scatters after it.

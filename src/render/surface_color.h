@@ -9,9 +9,11 @@
 
 namespace candela {
 
-CANDELA_HDI Vec3 surfaceColor(const SceneView& scene, const Material& m, const SurfacePoint& sp) {
+CANDELA_HDI Vec3 surfaceColor(const SceneView& scene, const Material& m, const Hit& hit,
+                              const SurfacePoint& sp) {
   if (m.colorTexture.index < 0) return m.color;
-  return m.color * lookupTexture(scene.texturePool(), m.colorTexture, sp.uv.x, sp.uv.y).rgb;
+  const Vec2 uv = surfaceUv(scene, hit, sp);
+  return m.color * lookupTexture(scene.texturePool(), m.colorTexture, uv.x, uv.y).rgb;
 }
 
 }  // namespace candela
