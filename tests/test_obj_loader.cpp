@@ -200,6 +200,39 @@ TEST_F(ObjLoader, MtlMaterialWithoutKdIsDefaultDiffuse) {
   EXPECT_FLOAT_EQ(mesh.materials[0].color.x, 0.8f);
 }
 
+// Ks turns a material glossy: plastic over Kd (index Ni), or without a diffuse colour a
+// conductor of reflectance Ks; Ns sets the roughness (alpha = sqrt(2 / (Ns + 2)), roughness =
+// sqrt(alpha)); Ks black leaves it diffuse.
+TEST_F(ObjLoader, MtlSpecularMapsToPlasticOrConductor) {
+  const MeshDesc mesh = load(std::string("mtllib m.mtl\n") + kSquare +
+                                 "usemtl varnish\nf 1 2 3\n"
+                                 "usemtl chrome\nf 1 3 4\n"
+                                 "usemtl matte\nf 1 2 4\n",
+                             "newmtl varnish\nKd 0.5 0.2 0.1\nKs 1 1 1\nNs 98\nNi 1.45\n"
+                             "newmtl chrome\nKd 0 0 0\nKs 0.9 0.9 0.95\nNs 0\n"
+                             "newmtl matte\nKd 0.3 0.3 0.3\nKs 0 0 0\nNs 500\nNi 1.0\n");
+  const Material& varnish = mesh.materials[mesh.triangles[0].material];
+  EXPECT_EQ(varnish.type, MaterialType::Plastic);
+  EXPECT_FLOAT_EQ(varnish.color.x, 0.5f);
+  EXPECT_FLOAT_EQ(varnish.ior, 1.45f);
+  EXPECT_NEAR(varnish.roughness, std::sqrt(std::sqrt(2.0f / 100.0f)), 1e-6f);
+  EXPECT_GT(varnish.plasticInternalReflectance, 0.3f);  // prepared
+  const Material& chrome = mesh.materials[mesh.triangles[1].material];
+  EXPECT_EQ(chrome.type, MaterialType::Conductor);
+  EXPECT_FALSE(chrome.metal);
+  EXPECT_FLOAT_EQ(chrome.color.z, 0.95f);
+  EXPECT_FLOAT_EQ(chrome.roughness, 1.0f);  // Ns 0: alpha 1
+  const Material& matte = mesh.materials[mesh.triangles[2].material];
+  EXPECT_EQ(matte.type, MaterialType::Diffuse);
+}
+
+TEST_F(ObjLoader, MtlPlasticKeepsIorWhereNiSaysNothing) {
+  const MeshDesc mesh = load(std::string("mtllib m.mtl\nusemtl a\n") + kSquare + "f 1 2 3\n",
+                             "newmtl a\nKd 0.5 0.5 0.5\nKs 0.5 0.5 0.5\nNi 1.0\n");
+  EXPECT_EQ(mesh.materials[0].type, MaterialType::Plastic);
+  EXPECT_FLOAT_EQ(mesh.materials[0].ior, 1.5f);
+}
+
 TEST_F(ObjLoader, MissingMtlFileFallsBackToTheDefaultMaterial) {
   const MeshDesc mesh =
       load(std::string("mtllib absent.mtl\nusemtl red\n") + kSquare + "f 1 2 3\n");

@@ -3,12 +3,14 @@
 
 #include <tiny_obj_loader.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <sstream>
 
+#include "render/material_prepare.h"
 #include "scene/read/mtl_library.h"
 #include "scene/read/obj_scanner.h"
 #include "scene/scene_error.h"
@@ -99,10 +101,18 @@ TextureRef mtlTexture(const MtlStatement& statement, const char* keyword, Textur
   return ref;
 }
 
-// One material per MTL material: emissive with radiance Ke where Ke is not black, else diffuse
-// with colour Kd (0.8 where the material sets none), times map_Kd when it has one, with alpha
-// d (or 1 - Tr; d wins when both are given) times map_d's alpha channel (or, for an image without
-// one, its first channel).
+// The roughness that stands for a Phong exponent Ns: Walter et al. 2007's equivalent microfacet
+// alpha sqrt(2 / (Ns + 2)), as roughness = sqrt(alpha).
+float roughnessOfPhongExponent(float ns) {
+  return std::min(1.0f, std::sqrt(std::sqrt(2.0f / (std::max(ns, 0.0f) + 2.0f))));
+}
+
+// One material per MTL material (docs/scene-format.md, MTL materials): emissive with radiance Ke
+// where Ke is not black; else with a Ks that is not black a plastic (colour Kd or map_Kd, index
+// Ni) or, without a diffuse colour, a conductor of reflectance Ks, rough as Ns says; else diffuse
+// with colour Kd (0.8 where the material sets none), times map_Kd when it has one. Alpha is d (or
+// 1 - Tr; d wins when both are given) times map_d's alpha channel (or, for an image without one,
+// its first channel).
 std::vector<Material> mtlMaterials(const std::vector<tinyobj::material_t>& materials,
                                    const MtlLibrary& library, const std::string& label,
                                    TextureLoader& textures) {
@@ -136,6 +146,23 @@ std::vector<Material> mtlMaterials(const std::vector<tinyobj::material_t>& mater
         bool hasAlpha = false;
         desc.alpha.texture = mtlTexture(*s.mapD, "map_d", TextureUse::Mask, textures, &hasAlpha);
         desc.alpha.channel = hasAlpha ? 3 : 0;
+      }
+    }
+    const Vec3 specular = mtlColour(material.specular, "Ks", material.name, label);
+    if (desc.type == MaterialType::Diffuse && !isBlack(specular)) {
+      if (!(std::isfinite(material.shininess) && material.shininess >= 0.0f))
+        throw SceneError(label + ": material \"" + material.name +
+                         "\": expected a finite, non-negative Ns, got " +
+                         formatNumber(material.shininess));
+      desc.roughness = roughnessOfPhongExponent(material.shininess);
+      if (isBlack(desc.color) && desc.colorTexture.index < 0) {
+        desc.type = MaterialType::Conductor;
+        desc.color = specular;
+      } else {
+        desc.type = MaterialType::Plastic;
+        // tinyobjloader's default Ni is 1, which exporters also write for "not set".
+        if (std::isfinite(material.ior) && material.ior > 1.0f) desc.ior = material.ior;
+        prepareMaterial(&desc);
       }
     }
     result.push_back(desc);
