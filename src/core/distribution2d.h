@@ -20,7 +20,7 @@ namespace candela {
 // Inverts cdf[0..n] (non-decreasing, cdf[0] = 0, cdf[n] = 1) at u in [0, 1): the point in [0, 1)
 // whose segment holds u, its segment and the density there (0 for a segment of no mass).
 // guide[0..n] is cdf's guide table (buildGuide).
-CANDELA_HDI float sampleCdf(const float* cdf, const uint32_t* guide, uint32_t n, float u,
+CANDELA_HDI_ALWAYS float sampleCdf(const float* cdf, const uint32_t* guide, uint32_t n, float u,
                             uint32_t* segment, float* pdf) {
   // The segment sought is the first o with cdf[o + 1] > u. The guide brackets it in [lo, hi];
   // the two loops only widen the bracket where rounding put u * n in the neighbouring cell.

@@ -54,7 +54,7 @@ CANDELA_HDI float nextFloatDown(float v) {
 
 // Origin for a ray leaving point p (absolute error bound `error` per axis) in direction w,
 // on the side of geometric normal n that w points to.
-CANDELA_HDI Vec3 offsetRayOrigin(const Vec3& p, const Vec3& error, const Vec3& n, const Vec3& w) {
+CANDELA_HDI_ALWAYS Vec3 offsetRayOrigin(const Vec3& p, const Vec3& error, const Vec3& n, const Vec3& w) {
   const float d = dot(abs(n), error);
   Vec3 offset = n * d;
   if (dot(w, n) < 0.0f) offset = -offset;

@@ -88,7 +88,7 @@ CANDELA_HDI uint32_t permutationMask(uint32_t n) {
 // Element i of a pseudo-random permutation of [0, n) chosen by `seed` (Kensler 2013,
 // "Correlated Multi-Jittered Sampling"), by cycle walking over the power-of-two range w + 1,
 // w = permutationMask(n).
-CANDELA_HDI uint32_t permutationElement(uint32_t i, uint32_t n, uint32_t w, uint32_t seed) {
+CANDELA_HDI_ALWAYS uint32_t permutationElement(uint32_t i, uint32_t n, uint32_t w, uint32_t seed) {
   do {
     i ^= seed;
     i *= 0xe170893du;
@@ -113,7 +113,7 @@ CANDELA_HDI uint32_t permutationElement(uint32_t i, uint32_t n, uint32_t w, uint
   return n == w + 1 ? (i + seed) & w : (i + seed) % n;
 }
 
-CANDELA_HDI uint32_t permutationElement(uint32_t i, uint32_t n, uint32_t seed) {
+CANDELA_HDI_ALWAYS uint32_t permutationElement(uint32_t i, uint32_t n, uint32_t seed) {
   return permutationElement(i, n, permutationMask(n), seed);
 }
 
@@ -134,7 +134,7 @@ class SampleStream {
   // owenScramble(sobolDimension0(index), s) and owenScramble(sobolDimension1(index), s),
   // computed in the bit-reversed domain, where dimension 0 is the index itself: two bit
   // reversals per 2D sample instead of six, the same bits.
-  CANDELA_HDI float next1D() {
+  CANDELA_HDI_ALWAYS float next1D() {
     const uint64_t h = dimensionHash();
     const uint32_t index = permutationElement(sampleIndex_, spp_, sppMask_, uint32_t(h));
     return bitsToUnitFloat(reverseBits32(laineKarrasHash(index, uint32_t(h >> 32))));
@@ -145,7 +145,7 @@ class SampleStream {
   CANDELA_HDI void skip() { ++dimension_; }
 
   // next2D when `used`, else skip(): for a dimension that only some lights or cameras need.
-  CANDELA_HDI void next2DIfUsed(bool used, float* u, float* v) {
+  CANDELA_HDI_ALWAYS void next2DIfUsed(bool used, float* u, float* v) {
     if (used) {
       next2D(u, v);
     } else {
@@ -153,7 +153,7 @@ class SampleStream {
     }
   }
 
-  CANDELA_HDI void next2D(float* u, float* v) {
+  CANDELA_HDI_ALWAYS void next2D(float* u, float* v) {
     const uint64_t h = dimensionHash();
     const uint32_t index = permutationElement(sampleIndex_, spp_, sppMask_, uint32_t(h));
     const uint64_t scramble = mix64(h);

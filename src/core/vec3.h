@@ -38,8 +38,8 @@ CANDELA_HDI Vec3 cross(const Vec3& a, const Vec3& b) {
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
 CANDELA_HDI float lengthSquared(const Vec3& a) { return dot(a, a); }
-CANDELA_HDI float length(const Vec3& a) { return sqrtf(dot(a, a)); }
-CANDELA_HDI Vec3 normalize(const Vec3& a) { return a * (1.0f / length(a)); }
+CANDELA_HDI_ALWAYS float length(const Vec3& a) { return sqrtf(dot(a, a)); }
+CANDELA_HDI_ALWAYS Vec3 normalize(const Vec3& a) { return a * (1.0f / length(a)); }
 CANDELA_HDI Vec3 abs(const Vec3& a) { return {fabsf(a.x), fabsf(a.y), fabsf(a.z)}; }
 // Plain comparisons rather than fminf/fmaxf: those keep IEEE NaN rules that x86-64 compilers
 // can only honour with a library call, which costs the BVH build and traversal dearly.

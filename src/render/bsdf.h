@@ -32,7 +32,7 @@ struct Bsdf {
   Frame frame;  // +z: the shading normal on wo's side
   Vec3 ng;
   float side;   // +1 when wo lies on ng's side (outside), else -1
-  Vec3 wo;      // local
+  Vec3 wo;      // local (unset for a diffuse surface)
   float eta;    // glass: eta_t / eta_i for light leaving towards wo's side
 };
 
@@ -40,7 +40,9 @@ CANDELA_HDI Bsdf makeBsdf(const Material& m, const Vec3& color, const Vec3& wo, 
                           const Vec3& ns) {
   const float side = dot(wo, ng) >= 0.0f ? 1.0f : -1.0f;
   const Frame frame(facingNormal(wo, ng, ns));
-  return {&m, color, frame, ng, side, frame.toLocal(wo), side > 0.0f ? m.ior : 1.0f / m.ior};
+  // A diffuse surface, the most common, never reads wo.
+  const Vec3 woLocal = m.type == MaterialType::Diffuse ? Vec3(0.0f) : frame.toLocal(wo);
+  return {&m, color, frame, ng, side, woLocal, side > 0.0f ? m.ior : 1.0f / m.ior};
 }
 
 // Whether some lobe has a density (next-event estimation and MIS apply), rather than only mirror
@@ -74,50 +76,62 @@ CANDELA_HDI bool leavesOnItsSide(const Bsdf& b, const Vec3& wi, float wiLocalZ) 
   return wiLocalZ > 0.0f ? geometric > 0.0f : geometric < 0.0f;
 }
 
-// f |cos(wi)| and the solid-angle pdf with which sampleBsdf picks wi (zero for delta lobes).
-CANDELA_HDI Vec3 evalBsdf(const Bsdf& b, const Vec3& wi, float* pdf) {
-  *pdf = 0.0f;
-  const Vec3 local = b.frame.toLocal(wi);
-  if (!leavesOnItsSide(b, wi, local.z)) return Vec3(0.0f);
+// evalBsdf for every material but diffuse, at wi in the local frame.
+CANDELA_HD_NOINLINE inline Vec3 evalNonDiffuse(const Bsdf& b, const Vec3& wi, float* pdf) {
   const Material& m = *b.material;
   switch (m.type) {
-    case MaterialType::Diffuse:
-      *pdf = diffusePdf(local);
-      return diffuseEval(b.color, local);
     case MaterialType::Conductor:
-      *pdf = conductorPdf(m, b.wo, local);
-      return conductorEval(m, b.color, b.wo, local);
+      *pdf = conductorPdf(m, b.wo, wi);
+      return conductorEval(m, b.color, b.wo, wi);
     case MaterialType::Glass:
-      return dielectricEvalPdf(m, b.color, b.eta, b.wo, local, pdf);
+      return dielectricEvalPdf(m, b.color, b.eta, b.wo, wi, pdf);
     case MaterialType::Plastic:
-      return plasticEvalPdf(m, b.color, b.wo, local, pdf);
+      return plasticEvalPdf(m, b.color, b.wo, wi, pdf);
+    case MaterialType::Diffuse:
     case MaterialType::Emissive:
       break;
   }
   return Vec3(0.0f);
 }
 
-// A scattered direction from (uc, u1, u2): uc picks a lobe where usesLobeChoice says so. False
-// when the path ends (no direction, or one leaving through the wrong side of the geometry).
-CANDELA_HDI bool sampleBsdf(const Bsdf& b, float uc, float u1, float u2, BsdfSample* s) {
+// f |cos(wi)| and the solid-angle pdf with which sampleBsdf picks wi (zero for delta lobes).
+CANDELA_HDI Vec3 evalBsdf(const Bsdf& b, const Vec3& wi, float* pdf) {
+  *pdf = 0.0f;
+  if (b.material->type == MaterialType::Diffuse) {  // the common case needs only the cosine
+    const float cosTheta = dot(wi, b.frame.n);
+    if (!leavesOnItsSide(b, wi, cosTheta)) return Vec3(0.0f);
+    *pdf = cosineHemispherePdf(cosTheta);
+    return diffuseEval(b.color, Vec3(0.0f, 0.0f, cosTheta));
+  }
+  const Vec3 local = b.frame.toLocal(wi);
+  if (!leavesOnItsSide(b, wi, local.z)) return Vec3(0.0f);
+  return evalNonDiffuse(b, local, pdf);
+}
+
+// sampleBsdf for every material but diffuse, in the local frame.
+CANDELA_HD_NOINLINE inline bool sampleNonDiffuse(const Bsdf& b, float uc, float u1, float u2,
+                                                 BsdfSample* s) {
   const Material& m = *b.material;
-  bool sampled = false;
   switch (m.type) {
-    case MaterialType::Diffuse:
-      sampled = diffuseSample(b.color, u1, u2, s);
-      break;
     case MaterialType::Conductor:
-      sampled = conductorSample(m, b.color, b.wo, u1, u2, s);
-      break;
+      return conductorSample(m, b.color, b.wo, u1, u2, s);
     case MaterialType::Glass:
-      sampled = dielectricSample(m, b.color, b.eta, b.wo, uc, u1, u2, s);
-      break;
+      return dielectricSample(m, b.color, b.eta, b.wo, uc, u1, u2, s);
     case MaterialType::Plastic:
-      sampled = plasticSample(m, b.color, b.wo, uc, u1, u2, s);
-      break;
+      return plasticSample(m, b.color, b.wo, uc, u1, u2, s);
+    case MaterialType::Diffuse:
     case MaterialType::Emissive:
       break;
   }
+  return false;
+}
+
+// A scattered direction from (uc, u1, u2): uc picks a lobe where usesLobeChoice says so. False
+// when the path ends (no direction, or one leaving through the wrong side of the geometry).
+CANDELA_HDI bool sampleBsdf(const Bsdf& b, float uc, float u1, float u2, BsdfSample* s) {
+  const bool sampled = b.material->type == MaterialType::Diffuse
+                           ? diffuseSample(b.color, u1, u2, s)
+                           : sampleNonDiffuse(b, uc, u1, u2, s);
   if (!sampled) return false;
   const float localZ = s->wi.z;
   s->wi = b.frame.toWorld(s->wi);

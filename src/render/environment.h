@@ -32,7 +32,7 @@ struct Environment {
 // The map coordinates of a unit direction in the map's frame. theta comes from atan2, not acos,
 // which loses the precision near the poles that the sampling pdf's 1/sin(theta) needs; both
 // angles by core/trig.h's polynomial, accurate to a millionth of a texel of any map.
-CANDELA_HDI void directionToMap(const Vec3& d, float* u, float* v) {
+CANDELA_HDI_ALWAYS void directionToMap(const Vec3& d, float* u, float* v) {
   float x = 0.5f + atan2Approx(d.x, -d.z) * (0.5f * kInvPi);
   x -= floorf(x);
   *u = x < 1.0f ? x : 0.0f;
@@ -48,7 +48,7 @@ CANDELA_HDI Vec3 mapToDirection(float u, float v, float* sinTheta) {
 }
 
 // Bilinear lookup of map point (u, v) in texels (width x height, rows from the top).
-CANDELA_HDI Vec3 lookupMap(const Vec3* texels, uint32_t width, uint32_t height, float u, float v) {
+CANDELA_HDI_ALWAYS Vec3 lookupMap(const Vec3* texels, uint32_t width, uint32_t height, float u, float v) {
   const float x = u * float(width) - 0.5f, y = v * float(height) - 0.5f;
   const float x0f = floorf(x), y0f = floorf(y);
   const float fx = x - x0f, fy = y - y0f;

@@ -179,7 +179,7 @@ CANDELA_HDI bool sampleTriangleLight(const SceneView& scene, const Light& l, con
 // The solid-angle pdf with which the environment light samples world direction wi: a map by its
 // distribution (the density over the map divided by the Jacobian 2 pi^2 sin(theta)), a constant
 // environment uniformly over the sphere.
-CANDELA_HDI float environmentPdf(const SceneView& scene, const Vec3& wi) {
+CANDELA_HDI_ALWAYS float environmentPdf(const SceneView& scene, const Vec3& wi) {
   const Environment& e = scene.environment;
   if (e.width == 0) return kInv4Pi;
   const Vec3 d = e.fromWorld * wi;

@@ -53,7 +53,7 @@ struct SceneView : GeometryView {
 static_assert(std::is_trivially_copyable<SceneView>::value, "SceneView must be trivially copyable");
 
 // The environment's radiance along world direction `d` (unit length).
-CANDELA_HDI Vec3 environmentRadiance(const SceneView& scene, const Vec3& d) {
+CANDELA_HDI_ALWAYS Vec3 environmentRadiance(const SceneView& scene, const Vec3& d) {
   const Environment& e = scene.environment;
   if (e.width == 0) return e.radiance;
   float u, v;
