@@ -46,6 +46,31 @@ TEST(LightSelection, FewLightsWithAnAreaLightArePickedByPower) {
   EXPECT_NEAR(data.lights[1].selectPmf + data.lights[2].selectPmf, 1.0f, 1e-6f);
 }
 
+// The environment takes half the picks beside other lights, however large the scene's bounds
+// (a ground sphere of radius 1000 once made its estimated power dwarf a lamp's); the other
+// lights share the rest by power. Alone, it takes them all.
+TEST(LightSelection, EnvironmentTakesHalfThePicksBesideOtherLights) {
+  const SceneData data = test::loadTestScene(R"({
+    "camera": {"width": 4, "height": 4, "fov": 40},
+    "environment": {"color": 0.5},
+    "spheres": [{"position": [0, -1000, 0], "radius": 1000}],
+    "lights": [{"type": "sphere", "position": [0, 5, 0], "radius": 1, "intensity": 10},
+               {"type": "sphere", "position": [0, 5, 3], "radius": 1, "intensity": 30}]})");
+  ASSERT_EQ(data.lights.size(), 3u);
+  float environment = 0.0f;
+  for (const Light& l : data.lights)
+    if (l.type == LightType::Environment) environment = l.selectPmf;
+  EXPECT_NEAR(environment, 0.5f, 1e-6f);
+  EXPECT_NEAR(data.lights[0].selectPmf, 0.125f, 1e-6f);
+  EXPECT_NEAR(data.lights[1].selectPmf, 0.375f, 1e-6f);
+
+  const SceneData alone = test::loadTestScene(R"({
+    "camera": {"width": 4, "height": 4, "fov": 40}, "environment": {"color": 0.5},
+    "spheres": [{"position": [0, -1000, 0], "radius": 1000}]})");
+  ASSERT_EQ(alone.lights.size(), 1u);
+  EXPECT_EQ(alone.lights[0].selectPmf, 1.0f);
+}
+
 TEST(LightSelection, ManyLightsArePickedByPowerSkippingLightsWithout) {
   std::string lights = R"({"position": [0, 1, 0], "intensity": 0},
                           {"position": [0, 1, 0], "intensity": 2},

@@ -146,6 +146,23 @@ double selectionPower(const SceneData& s, const Light& l) {
   return 0.0;
 }
 
+// The environment is picked half the time when the scene has other lights, which share the
+// other half by power (pbrt-v4's BVHLightSampler does the same). Its power, estimated through
+// the scene's bounding sphere, grows with the square of the scene's size: a ground sphere of
+// radius 1000 made it a million times a lamp's, and the lamp was then found only by chance.
+void shareWithEnvironment(const std::vector<Light>& lights, std::vector<double>& powers) {
+  double bounded = 0.0;
+  size_t environment = lights.size();
+  for (size_t i = 0; i < lights.size(); ++i) {
+    if (lights[i].type == LightType::Environment)
+      environment = i;
+    else
+      bounded += powers[i];
+  }
+  if (environment < lights.size() && bounded > 0.0 && powers[environment] > 0.0)
+    powers[environment] = bounded;
+}
+
 bool emits(const Material& m) { return m.type == MaterialType::Emissive && !isBlack(m.radiance); }
 
 }  // namespace
@@ -181,8 +198,10 @@ void addEmitterLights(SceneData& s) {
   }
   s.sampleEveryLight = sampleEveryLight(s.lights.data(), s.lights.size());
   std::vector<double> powers;  // only picking one light weighs them
-  if (!s.sampleEveryLight)
+  if (!s.sampleEveryLight) {
     for (const Light& l : s.lights) powers.push_back(selectionPower(s, l));
+    shareWithEnvironment(s.lights, powers);
+  }
   setLightSelection(s.lights, powers);
 }
 
