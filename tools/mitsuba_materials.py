@@ -17,9 +17,16 @@ harness does for diffuse, since candela's reflect on both sides:
   plastic, roughness 0        -> plastic, int_ior = ior, ext_ior 1, diffuse_reflectance = color,
                                  nonlinear false
   plastic, roughness r > 0    -> roughplastic, ggx, alpha = r^2, the same
+  {"texture": T, "scale": [su, sv]} as a colour (spheres only: the harness builds meshes without
+  texture coordinates) -> a bilinear, repeating `bitmap` of T mirrored left to right, with to_uv
+  scaling by (su, sv), on a sphere turned so that Mitsuba's parametrisation (u = atan2(y, x) /
+  2 pi, v = acos(z) / pi about local +z, v = 0 on the image's top row) becomes candela's (u =
+  0.5 + atan2(d.x, -d.z) / 2 pi, v = 1 - acos(d.y) / pi, v = 0 on the bottom row). Integer scales
+  only: the mirroring and the turn agree with candela's lookup up to whole repeats.
 """
 import os
 import sys
+import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
@@ -33,15 +40,49 @@ harness_make_mat = cs._make_mat
 harness_bsdf_dict = mr.bsdf_dict
 
 
+WORK = tempfile.mkdtemp(prefix='candela_mitsuba_textures_')
+mirrored = {}
+
+
+def colour(ctx, fields, default, path):
+    """The harness's colour, or a texture reference {'texture': absolute path, 'scale': [su, sv]}."""
+    value = fields.get('color', default)
+    if isinstance(value, dict):
+        name = value['texture']
+        if not os.path.isabs(name):
+            name = os.path.join(os.path.dirname(os.path.abspath(ctx.fname)), name)
+        return {'texture': name, 'scale': [float(x) for x in value.get('scale', [1, 1])]}
+    return ctx.color(value, path + '.color')
+
+
+def spectrum(c):
+    """A Mitsuba texture for a colour or a texture reference."""
+    if not isinstance(c, dict):
+        return mr.rgb(c)
+    name = c['texture']
+    if name not in mirrored:
+        image = mr.np.array(mr.mi.Bitmap(name))
+        mirrored[name] = os.path.join(WORK, f'{len(mirrored)}_' + os.path.basename(name))
+        mr.mi.Bitmap(mr.np.ascontiguousarray(image[:, ::-1])).write(mirrored[name])
+    su, sv = c['scale']
+    return {'type': 'bitmap', 'filename': mirrored[name], 'filter_type': 'bilinear',
+            'wrap_mode': 'repeat', 'to_uv': mr.mi.ScalarTransform4f().scale([su, sv, 1])}
+
+
+def textured(mat):
+    return isinstance(mat.get('color'), dict)
+
+
 def make_mat(ctx, t, fields, path):
     roughness = float(fields.get('roughness', 0.0))
+    if t == 'diffuse' and isinstance(fields.get('color'), dict):
+        return dict(type='diffuse', color=colour(ctx, fields, 0.8, path))
     if t == 'conductor':
-        mat = dict(type='conductor', roughness=roughness, metal=fields.get('metal'),
-                   color=ctx.color(fields.get('color', 1.0), path + '.color'))
-        return mat
+        return dict(type='conductor', roughness=roughness, metal=fields.get('metal'),
+                    color=colour(ctx, fields, 1.0, path))
     if t == 'plastic':
         return dict(type='plastic', roughness=roughness,
-                    color=ctx.color(fields.get('color', 0.5), path + '.color'),
+                    color=colour(ctx, fields, 0.5, path),
                     ior=ctx.number(fields.get('ior', 1.5), path + '.ior', positive=True))
     mat = harness_make_mat(ctx, t, fields, path)
     if t == 'glass':
@@ -56,14 +97,14 @@ def bsdf_dict(mat):
         if mat['metal']:
             d = {'material': mat['metal']}
         else:
-            d = {'material': 'none', 'specular_reflectance': mr.rgb(mat['color'])}
+            d = {'material': 'none', 'specular_reflectance': spectrum(mat['color'])}
         d['type'] = 'conductor'
         if r > 0:
             d.update(type='roughconductor', distribution='ggx', alpha=alpha)
         return {'type': 'twosided', 'bsdf': d}
     if t == 'plastic':
         d = {'type': 'plastic', 'int_ior': float(mat['ior']), 'ext_ior': 1.0,
-             'diffuse_reflectance': mr.rgb(mat['color']), 'nonlinear': False}
+             'diffuse_reflectance': spectrum(mat['color']), 'nonlinear': False}
         if r > 0:
             d.update(type='roughplastic', distribution='ggx', alpha=alpha)
         return {'type': 'twosided', 'bsdf': d}
@@ -71,11 +112,33 @@ def bsdf_dict(mat):
         return {'type': 'roughdielectric', 'distribution': 'ggx', 'alpha': alpha,
                 'int_ior': float(mat['ior']), 'ext_ior': 1.0,
                 'specular_transmittance': mr.rgb(mat['color'])}
+    if t == 'diffuse' and textured(mat):
+        return {'type': 'twosided',
+                'bsdf': {'type': 'diffuse', 'reflectance': spectrum(mat['color'])}}
     return harness_bsdf_dict(mat)
 
 
+# Local sphere axes from candela's world directions d: l = (d.z, d.x, d.y); to_world is the inverse.
+SPHERE_TO_WORLD = [[0, 1, 0], [0, 0, 1], [1, 0, 0]]
+
+
+def scene_dict(sc, *args, **kwargs):
+    d = harness_scene_dict(sc, *args, **kwargs)
+    for i, s in enumerate(sc['spheres']):
+        if textured(s['mat']):
+            sphere = d[f'sphere{i}']
+            c, r = sphere.pop('center'), sphere.pop('radius')
+            M = mr.np.eye(4)
+            M[:3, :3] = mr.np.array(SPHERE_TO_WORLD, dtype=float) * r
+            M[:3, 3] = c
+            sphere['to_world'] = mr.mi.ScalarTransform4f(M.tolist())
+    return d
+
+
+harness_scene_dict = mr.scene_dict
 cs._make_mat = make_mat
 mr.bsdf_dict = bsdf_dict
+mr.scene_dict = scene_dict
 
 if __name__ == '__main__':
     sys.exit(mitsuba_envmap.main())
