@@ -209,6 +209,71 @@ TEST(TextureRender, QuadShowsEachTexelsAlbedoInAFurnace) {
   }
 }
 
+// An MTL map_Ke makes the face an emitter whose radiance is Ke times the texture: seen directly,
+// each texel's column shows 2 x its colour.
+TEST(TextureRender, MapKeEmitsTheTextureSeenDirectly) {
+  test::TextureDir dir;
+  ASSERT_TRUE(test::writeTestPng(dir.file("two.png"), 2, 1, 3, {40, 160, 230, 250, 120, 20}));
+  dir.write("lamp.mtl", "newmtl lamp\nKe 2 2 2\nmap_Ke two.png\n");
+  dir.write("quad.obj",
+            "mtllib lamp.mtl\nv -1 -9 0\nv 1 -9 0\nv 1 9 0\nv -1 9 0\nvt 0 0\nvt 1 0\nvt 1 1\n"
+            "vt 0 1\nusemtl lamp\nf 1/1 2/2 3/3 4/4\n");
+  const std::string json = R"({
+    "camera": {"width": 2, "height": 16, "fov": 30, "position": [0, 0, 3.7320508], "spp": 4},
+    "render": {"max_depth": 1, "antialiasing": false},
+    "objects": [{"file": "quad.obj"}]
+  })";
+  const RenderResult r = test::renderTestScene(json, 0, dir.path());
+  const float left[3] = {srgb(40), srgb(160), srgb(230)}, right[3] = {srgb(250), srgb(120), srgb(20)};
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_NEAR(test::regionStats(r.image, 0, 0, 1, 16, c).mean, 2 * left[c], 1e-5) << c;
+    EXPECT_NEAR(test::regionStats(r.image, 1, 0, 2, 16, c).mean, 2 * right[c], 1e-5) << c;
+  }
+}
+
+// As a light, a textured emitter (a 2x1 texture across a ceiling quad) lights a floor as two
+// untextured quads of its two colours do: the same radiance at every point, so the same image up
+// to noise. This checks the light samples' texture lookups and the texture's share in the power.
+TEST(TextureRender, MapKeLightsLikeTheSameColoursUntextured) {
+  test::TextureDir dir;
+  ASSERT_TRUE(test::writeTestPng(dir.file("two.png"), 2, 1, 3, {255, 60, 0, 0, 60, 255}));
+  dir.write("lamp.mtl", "newmtl lamp\nKe 3 3 3\nmap_Ke two.png\n");
+  // The ceiling at y = 2, facing down (counter-clockwise seen from below), u along x.
+  dir.write("textured.obj",
+            "mtllib lamp.mtl\nv -1 2 -1\nv 1 2 -1\nv 1 2 1\nv -1 2 1\nvt 0 0\nvt 1 0\nvt 1 1\n"
+            "vt 0 1\nusemtl lamp\nf 1/1 2/2 3/3 4/4\n");
+  const float red[3] = {srgb(255), srgb(60), srgb(0)}, blue[3] = {srgb(0), srgb(60), srgb(255)};
+  const auto quad = [](float x0, float x1) {
+    return "v " + std::to_string(x0) + " 2 -1\nv " + std::to_string(x1) + " 2 -1\nv " +
+           std::to_string(x1) + " 2 1\nv " + std::to_string(x0) + " 2 1\nf 1 2 3 4\n";
+  };
+  dir.write("left.obj", quad(-1, 0));
+  dir.write("right.obj", quad(0, 1));
+  const auto rgb = [](const float c[3]) {
+    return "[" + std::to_string(3 * c[0]) + ", " + std::to_string(3 * c[1]) + ", " +
+           std::to_string(3 * c[2]) + "]";
+  };
+  const std::string common = R"("camera": {"width": 32, "height": 32, "fov": 60,
+      "position": [0, 1.2, 3], "look_at": [0, 0, 0], "spp": 256},
+    "render": {"max_depth": 1}, "spheres": [{"position": [0, -1000, 0], "radius": 1000}],)";
+  const RenderResult textured = test::renderTestScene(
+      "{" + common + R"("objects": [{"file": "textured.obj"}]})", 0, dir.path());
+  const RenderResult plain = test::renderTestScene(
+      "{" + common + R"("objects": [{"file": "left.obj", "material": {"type": "emissive",
+      "radiance": )" + rgb(red) + R"(}}, {"file": "right.obj", "material": {"type": "emissive",
+      "radiance": )" + rgb(blue) + "}}]}",
+      0, dir.path());
+  // The floor's left and right halves (below the horizon line of the ceiling's view).
+  for (uint32_t x0 : {0u, 16u})
+    for (int c = 0; c < 3; ++c) {
+      const test::RegionStats a = test::regionStats(textured.image, x0, 20, x0 + 16, 32, c);
+      const test::RegionStats b = test::regionStats(plain.image, x0, 20, x0 + 16, 32, c);
+      EXPECT_GT(b.mean, 0.0);
+      EXPECT_NEAR(a.mean, b.mean, 4 * std::hypot(a.standardError(), b.standardError()) + 1e-4)
+          << "half at " << x0 << ", channel " << c;
+    }
+}
+
 std::string loadError(const std::string& json, const std::string& baseDir) {
   try {
     parseSceneText(json, "scene.json", baseDir);

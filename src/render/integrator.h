@@ -130,7 +130,7 @@ CANDELA_HDI Vec3 traceRadiance(const SceneView& scene, const Tracer& tracer, Ray
           weight = powerHeuristic(bsdfPdf, l.selectPmf * emitterPdf(scene, l, bouncePoint,
                                                                     ray.direction, hit.t, sp.ng));
         }
-        radiance += throughput * m.radiance * weight;
+        radiance += throughput * surfaceRadiance(scene, m, hit, sp) * weight;
       }
       break;
     }

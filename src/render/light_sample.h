@@ -14,6 +14,7 @@
 #include "core/sampling.h"
 #include "geometry/spherical_triangle.h"
 #include "render/scene_view.h"
+#include "render/surface_color.h"
 
 namespace candela {
 
@@ -170,7 +171,8 @@ CANDELA_HDI bool sampleTriangleLight(const SceneView& scene, const Light& l, con
   s->wi = toLight / s->distance;
   const float cosLight = -dot(s->wi, n) / twiceArea;
   if (!(cosLight > 0.0f)) return false;
-  s->radiance = scene.materials[tri.material].radiance;
+  s->radiance = emittedRadiance(scene, scene.materials[tri.material],
+                                triangleUv(scene, tri, b[1], b[2]));
   s->pdf = spherical ? 1.0f / solidAngle : dist2 / (cosLight * 0.5f * twiceArea);
   s->isDelta = false;
   return true;

@@ -35,7 +35,8 @@ struct Material {
   bool metal = false;      // conductor: Fresnel of the complex index metalEta + i metalK
   Vec3 metalEta{0.0f}, metalK{0.0f};
   Vec3 radiance{0.0f};  // emissive: emitted radiance from the front side
-  TextureRef colorTexture;  // diffuse: a texture that `color` tints (render/surface_color.h)
+  TextureRef colorTexture;     // a texture that `color` tints (render/surface_color.h)
+  TextureRef emissionTexture;  // emissive: a texture that `radiance` tints (MTL map_Ke)
   AlphaMask alpha;          // how much of the surface is there (geometry/alpha_mask.h)
 
   // Plastic, derived (prepareMaterial): the diffuse light's chance to be reflected back down by

@@ -1,5 +1,5 @@
 // The colour of a material at a surface point: `color` alone, or its texture times `color` (a
-// tint, 1 unless the scene or the MTL's Kd sets another).
+// tint, 1 unless the scene or the MTL's Kd sets another); likewise an emitter's radiance.
 #pragma once
 
 #include "core/texture.h"
@@ -14,6 +14,19 @@ CANDELA_HDI Vec3 surfaceColor(const SceneView& scene, const Material& m, const H
   if (m.colorTexture.index < 0) return m.color;
   const Vec2 uv = surfaceUv(scene, hit, sp);
   return m.color * lookupTexture(scene.texturePool(), m.colorTexture, uv.x, uv.y).rgb;
+}
+
+// The radiance an emissive material emits at texture coordinates uv: `radiance`, times its
+// emission texture where it has one.
+CANDELA_HDI Vec3 emittedRadiance(const SceneView& scene, const Material& m, const Vec2& uv) {
+  if (m.emissionTexture.index < 0) return m.radiance;
+  return m.radiance * lookupTexture(scene.texturePool(), m.emissionTexture, uv.x, uv.y).rgb;
+}
+
+CANDELA_HDI Vec3 surfaceRadiance(const SceneView& scene, const Material& m, const Hit& hit,
+                                 const SurfacePoint& sp) {
+  if (m.emissionTexture.index < 0) return m.radiance;
+  return emittedRadiance(scene, m, surfaceUv(scene, hit, sp));
 }
 
 }  // namespace candela

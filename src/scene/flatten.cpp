@@ -132,7 +132,10 @@ double selectionPower(const SceneData& s, const Light& l) {
       const Vec3& p0 = s.positions[t.v[0]];
       const double area =
           0.5 * double(length(cross(s.positions[t.v[1]] - p0, s.positions[t.v[2]] - p0)));
-      return kPi * area * componentSum(s.materials[t.material].radiance);
+      const Material& m = s.materials[t.material];
+      const Vec3 tint =
+          m.emissionTexture.index >= 0 ? s.textureMeans[m.emissionTexture.index] : Vec3(1.0f);
+      return kPi * area * componentSum(m.radiance * tint);
     }
     case LightType::Environment: {
       // What crosses a disc the size of the scene (pbrt-v4's estimate): pi R^2 times the mean
@@ -226,6 +229,22 @@ void addTextures(SceneData& s, const SceneDesc& desc) {
   }
   if (!s.textures.empty())
     for (int i = 0; i < 256; ++i) s.srgbToLinear.push_back(srgbToLinearValue(float(i) / 255.0f));
+  // Each texel's centre looks that texel up exactly.
+  const TexturePool pool = s.view().texturePool();
+  for (uint32_t i = 0; i < s.textures.size(); ++i) {
+    const Texture& t = s.textures[i];
+    TextureRef ref;
+    ref.index = int32_t(i);
+    double sum[3] = {0.0, 0.0, 0.0};
+    for (uint32_t y = 0; y < t.height; ++y)
+      for (uint32_t x = 0; x < t.width; ++x) {
+        const Vec3 c = lookupTexture(pool, ref, (x + 0.5f) / float(t.width),
+                                     1.0f - (y + 0.5f) / float(t.height)).rgb;
+        for (int k = 0; k < 3; ++k) sum[k] += c[k];
+      }
+    const double n = double(t.width) * t.height;
+    s.textureMeans.push_back(Vec3(float(sum[0] / n), float(sum[1] / n), float(sum[2] / n)));
+  }
   const auto masked = [](const Material& m) { return isMasked(m.alpha); };
   if (std::any_of(s.materials.begin(), s.materials.end(), masked))
     for (const Material& m : s.materials) s.alphaMasks.push_back(m.alpha);
@@ -261,6 +280,7 @@ void refreshSceneValues(SceneData& s, const SceneDesc& desc) {
   s.texelsF.clear();
   s.srgbToLinear.clear();
   s.alphaMasks.clear();
+  s.textureMeans.clear();
   addContents(s, desc, false);
   addEmitterLights(s);
 }

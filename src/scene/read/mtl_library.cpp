@@ -38,6 +38,8 @@ static void collectStatements(const std::string& text, const std::string& label,
       library.kdNames.insert(current);
     else if (isKeyword("map_Kd", 6))
       own.mapKd = keep(6);
+    else if (isKeyword("map_Ke", 6))
+      own.mapKe = keep(6);
     else if (isKeyword("map_d", 5))
       own.mapD = keep(5);
     else if (isKeyword("d", 1))

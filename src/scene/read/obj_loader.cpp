@@ -108,7 +108,7 @@ float roughnessOfPhongExponent(float ns) {
 }
 
 // One material per MTL material (docs/scene-format.md, MTL materials): emissive with radiance Ke
-// where Ke is not black; else with a Ks that is not black a plastic (colour Kd or map_Kd, index
+// (times map_Ke, Ke 1 where only map_Ke is given) where either is set; else with a Ks that is not black a plastic (colour Kd or map_Kd, index
 // Ni) or, without a diffuse colour, a conductor of reflectance Ks, rough as Ns says; else diffuse
 // with colour Kd (0.8 where the material sets none), times map_Kd when it has one. Alpha is d (or
 // 1 - Tr; d wins when both are given) times map_d's alpha channel (or, for an image without one,
@@ -125,13 +125,18 @@ std::vector<Material> mtlMaterials(const std::vector<tinyobj::material_t>& mater
     desc.type = MaterialType::Diffuse;
     const bool hasKd = library.kdNames.count(material.name) != 0;
     if (hasKd) desc.color = mtlColour(material.diffuse, "Kd", material.name, label);
-    const Vec3 emission = mtlColour(material.emission, "Ke", material.name, label);
+    Vec3 emission = mtlColour(material.emission, "Ke", material.name, label);
+    const auto found = library.statements.find(material.name);
+    if (found != library.statements.end() && found->second.mapKe) {
+      desc.emissionTexture =
+          mtlTexture(*found->second.mapKe, "map_Ke", TextureUse::Color, textures, nullptr);
+      if (isBlack(emission)) emission = Vec3(1.0f);  // map_Ke alone: the texture is the radiance
+    }
     if (!isBlack(emission)) {
       desc.type = MaterialType::Emissive;
       desc.color = Vec3(0.0f);
       desc.radiance = emission;
     }
-    const auto found = library.statements.find(material.name);
     if (found != library.statements.end() && desc.type == MaterialType::Diffuse) {
       const MtlTextures& s = found->second;
       if (s.mapKd) {
