@@ -3,6 +3,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <mutex>
+#include <utility>
 
 #include "render/fresnel.h"
 #include "render/microfacet.h"
@@ -48,6 +51,30 @@ double roughCoatTransmittance(double mu, float eta, float alpha) {
   });
 }
 
+namespace {
+
+struct RoughCoat {
+  float transmittance[kPlasticTableSize];
+  float internalReflectance;
+};
+
+// As Mitsuba 3's roughplastic: the table samples mu = i / (n - 1), and the internal reflectance
+// is the mean of 2 mu R(mu) over the same points (slightly below the integral, kept so that the
+// two renderers agree).
+RoughCoat roughCoat(float eta, float alpha) {
+  RoughCoat coat;
+  double internal = 0.0;
+  for (uint32_t i = 0; i < kPlasticTableSize; ++i) {
+    const double mu = double(i) / (kPlasticTableSize - 1);
+    coat.transmittance[i] = float(roughCoatTransmittance(mu, eta, alpha));
+    internal += 2.0 * std::max(mu, 1e-6) * roughCoatReflectance(mu, 1.0f / eta, alpha);
+  }
+  coat.internalReflectance = float(internal / kPlasticTableSize);
+  return coat;
+}
+
+}  // namespace
+
 void prepareMaterial(Material* m) {
   if (m->type != MaterialType::Plastic) return;
   const float alpha = roughnessToAlpha(m->roughness);
@@ -64,16 +91,16 @@ void prepareMaterial(Material* m) {
     m->plasticInternalReflectance = float(sum / kIntervals);
     return;
   }
-  // As Mitsuba 3's roughplastic: the table samples mu = i / (n - 1), and the internal
-  // reflectance is the mean of 2 mu R(mu) over the same points (slightly below the integral,
-  // kept so that the two renderers agree).
-  double internal = 0.0;
-  for (uint32_t i = 0; i < kPlasticTableSize; ++i) {
-    const double mu = double(i) / (kPlasticTableSize - 1);
-    m->plasticTransmittance[i] = float(roughCoatTransmittance(mu, eta, alpha));
-    internal += 2.0 * std::max(mu, 1e-6) * roughCoatReflectance(mu, 1.0f / eta, alpha);
-  }
-  m->plasticInternalReflectance = float(internal / kPlasticTableSize);
+  // A tenth of a second each: an MTL file of many glossy materials shares a few coatings.
+  static std::mutex mutex;
+  static std::map<std::pair<float, float>, RoughCoat> coats;
+  std::lock_guard<std::mutex> lock(mutex);
+  auto found = coats.find({eta, alpha});
+  if (found == coats.end())
+    found = coats.emplace(std::make_pair(eta, alpha), roughCoat(eta, alpha)).first;
+  std::copy(found->second.transmittance, found->second.transmittance + kPlasticTableSize,
+            m->plasticTransmittance);
+  m->plasticInternalReflectance = found->second.internalReflectance;
 }
 
 }  // namespace candela
