@@ -141,7 +141,8 @@ TEST(Bsdf, SamplesFollowThePdf) {
       ++bins;
     }
     if (pooledExpected >= 5.0) {
-      chi2 += (pooledObserved - pooledExpected) * (pooledObserved - pooledExpected) / pooledExpected;
+      chi2 +=
+          (pooledObserved - pooledExpected) * (pooledObserved - pooledExpected) / pooledExpected;
       ++bins;
     } else {
       EXPECT_LT(pooledObserved, 25.0) << "samples where the pdf says there are almost none";
@@ -173,8 +174,8 @@ TEST(Bsdf, IsReciprocal) {
       const float scale = transmit ? c.material.ior * c.material.ior : 1.0f;
       for (int a = 0; a < 3; ++a)
         ASSERT_NEAR(forward[a] * scale, backward[a], 2e-3f * backward[a] + 1e-5f)
-            << "wo " << wo.x << " " << wo.y << " " << wo.z << ", wi " << wi.x << " " << wi.y
-            << " " << wi.z;
+            << "wo " << wo.x << " " << wo.y << " " << wo.z << ", wi " << wi.x << " " << wi.y << " "
+            << wi.z;
     }
   }
 }
@@ -223,8 +224,8 @@ TEST(Bsdf, WhiteFurnaceNeverGainsEnergy) {
 TEST(Bsdf, PlasticAlbedoMatchesMitsuba) {
   const struct {
     float roughness, cosTheta, mitsuba;
-  } references[] = {{0.5f, 0.95f, 0.7400f}, {0.5f, 0.2f, 0.6985f},
-                    {1.0f, 0.95f, 0.3312f}, {1.0f, 0.2f, 0.1959f}};
+  } references[] = {
+      {0.5f, 0.95f, 0.7400f}, {0.5f, 0.2f, 0.6985f}, {1.0f, 0.95f, 0.3312f}, {1.0f, 0.2f, 0.1959f}};
   for (const auto& r : references)
     EXPECT_NEAR(albedo(plastic(r.roughness, Vec3(1.0f)), direction(r.cosTheta, 0.7f), 200000).x,
                 r.mitsuba, 0.01f * r.mitsuba)

@@ -23,9 +23,12 @@ Vec3 direction(float cosTheta, float phi) {
 
 // (wo, wi) pairs: index k of the table below.
 const Vec3 kPairs[][2] = {
-    {direction(0.9f, 0.3f), direction(0.8f, 3.3f)},  {direction(0.5f, 1.0f), direction(0.6f, 4.0f)},
-    {direction(0.3f, 0.0f), direction(0.95f, 2.0f)}, {direction(0.9f, 0.3f), direction(-0.7f, 3.5f)},
-    {direction(-0.8f, 0.3f), direction(0.6f, 3.0f)}, {direction(0.7f, 0.1f), direction(-0.9f, 3.0f)},
+    {direction(0.9f, 0.3f), direction(0.8f, 3.3f)},
+    {direction(0.5f, 1.0f), direction(0.6f, 4.0f)},
+    {direction(0.3f, 0.0f), direction(0.95f, 2.0f)},
+    {direction(0.9f, 0.3f), direction(-0.7f, 3.5f)},
+    {direction(-0.8f, 0.3f), direction(0.6f, 3.0f)},
+    {direction(0.7f, 0.1f), direction(-0.9f, 3.0f)},
 };
 
 Material material(const std::string& name) {

@@ -51,7 +51,7 @@ void expectGuidedSearchIsExact(const std::vector<double>& f) {
 TEST(Distribution2D, GuidedInversionFindsTheSegmentOfTheFullSearch) {
   expectGuidedSearchIsExact({1.0});
   expectGuidedSearchIsExact({1, 2, 3, 4, 5, 6, 7});
-  expectGuidedSearchIsExact({0, 0, 5, 0, 0, 0, 1, 0});               // plateaus
+  expectGuidedSearchIsExact({0, 0, 5, 0, 0, 0, 1, 0});                // plateaus
   expectGuidedSearchIsExact({1e-9, 1e-9, 1e9, 1e-9, 0, 1e-9, 1e-9});  // one cell has it all
   std::mt19937 rng(3);
   std::exponential_distribution<double> sizes(1.0);
@@ -67,8 +67,8 @@ TEST(Distribution2D, SampledDensityMatchesPdf) {
   const std::vector<double> f = {1, 0, 2, 3, 1, 0, 0, 0, 0, 0, 4, 1, 1, 1, 8};
   Distribution2DArrays d;
   buildDistribution2D(f, columns, rows, &d);
-  const Distribution2D sampler{d.conditional.data(), d.marginal.data(), d.conditionalGuide.data(),
-                               d.marginalGuide.data(), columns, rows};
+  const Distribution2D sampler{d.conditional.data(),   d.marginal.data(), d.conditionalGuide.data(),
+                               d.marginalGuide.data(), columns,           rows};
   std::vector<double> counts(f.size(), 0.0);
   const int n = 200000;
   std::mt19937 rng(11);

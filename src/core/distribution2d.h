@@ -21,7 +21,7 @@ namespace candela {
 // whose segment holds u, its segment and the density there (0 for a segment of no mass).
 // guide[0..n] is cdf's guide table (buildGuide).
 CANDELA_HDI_ALWAYS float sampleCdf(const float* cdf, const uint32_t* guide, uint32_t n, float u,
-                            uint32_t* segment, float* pdf) {
+                                   uint32_t* segment, float* pdf) {
   // The segment sought is the first o with cdf[o + 1] > u. The guide brackets it in [lo, hi];
   // the two loops only widen the bracket where rounding put u * n in the neighbouring cell.
   const uint32_t cell = u * float(n) < float(n) ? uint32_t(u * float(n)) : n - 1;
@@ -51,8 +51,8 @@ CANDELA_HDI_ALWAYS float sampleCdf(const float* cdf, const uint32_t* guide, uint
 }
 
 struct Distribution2D {
-  const float* conditional;  // rows x (columns + 1)
-  const float* marginal;     // rows + 1
+  const float* conditional;          // rows x (columns + 1)
+  const float* marginal;             // rows + 1
   const uint32_t* conditionalGuide;  // rows x (columns + 1)
   const uint32_t* marginalGuide;     // rows + 1
   uint32_t columns, rows;

@@ -31,9 +31,9 @@ struct Bsdf {
   Vec3 color;   // the material's colour at this point (textures resolved)
   Frame frame;  // +z: the shading normal on wo's side
   Vec3 ng;
-  float side;   // +1 when wo lies on ng's side (outside), else -1
-  Vec3 wo;      // local (unset for a diffuse surface)
-  float eta;    // glass: eta_t / eta_i for light leaving towards wo's side
+  float side;  // +1 when wo lies on ng's side (outside), else -1
+  Vec3 wo;     // local (unset for a diffuse surface)
+  float eta;   // glass: eta_t / eta_i for light leaving towards wo's side
 };
 
 CANDELA_HDI Bsdf makeBsdf(const Material& m, const Vec3& color, const Vec3& wo, const Vec3& ng,

@@ -51,8 +51,8 @@ CANDELA_HDI Vec3 dielectricEvalPdf(const Material& m, const Vec3& color, float e
   const float dwmDwi = fabsf(dot(wi, wm)) / (denom * denom);
   *pdf = visible * dwmDwi * (1.0f - F);
   // D G (1 - F) |wi.wm wo.wm| / (|wi.z wo.z| denom^2) |wi.z|, radiance scaled by 1 / eta^2.
-  const float ft = dg * (1.0f - F) * fabsf(dot(wi, wm) * dot(wo, wm)) /
-                   (wo.z * denom * denom * etap * etap);
+  const float ft =
+      dg * (1.0f - F) * fabsf(dot(wi, wm) * dot(wo, wm)) / (wo.z * denom * denom * etap * etap);
   return color * ft;
 }
 

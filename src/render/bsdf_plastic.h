@@ -41,16 +41,16 @@ CANDELA_HDI Vec3 plasticEvalPdf(const Material& m, const Vec3& color, const Vec3
   if (wo.z <= 0.0f || wi.z <= 0.0f) return Vec3(0.0f);
   const float to = plasticTransmittance(m, wo.z), ti = plasticTransmittance(m, wi.z);
   const float coatProbability = plasticCoatProbability(color, to);
-  const Vec3 base = color * (kInvPi * wi.z * to * ti /
-                             (m.ior * m.ior * (1.0f - m.plasticInternalReflectance)));
+  const Vec3 base =
+      color * (kInvPi * wi.z * to * ti / (m.ior * m.ior * (1.0f - m.plasticInternalReflectance)));
   *pdf = (1.0f - coatProbability) * cosineHemispherePdf(wi.z);
   const float alpha = roughnessToAlpha(m.roughness);
   if (alpha < kSmoothAlpha) return base;
   const Vec3 h = normalize(wo + wi);
   const float d = ggxD(h, alpha);
   *pdf += coatProbability * ggxG1(wo, h, alpha) * d / (4.0f * wo.z);
-  const float coat = fresnelDielectric(dot(wo, h), m.ior) * d * ggxG(wo, wi, h, alpha) /
-                     (4.0f * wo.z);
+  const float coat =
+      fresnelDielectric(dot(wo, h), m.ior) * d * ggxG(wo, wi, h, alpha) / (4.0f * wo.z);
   return base + Vec3(coat);
 }
 
