@@ -153,8 +153,11 @@ def test_render_releases_the_gil(scene_dict):
 
 
 def test_ctrl_c_cancels_a_render(tmp_path):
+    # The child sets Python's own SIGINT handler: started from a background job (as CI runs),
+    # it inherits SIGINT ignored, and Python then leaves it ignored.
     script = textwrap.dedent(f"""
-        import sys, time
+        import signal, sys, time
+        signal.signal(signal.SIGINT, signal.default_int_handler)
         sys.path.insert(0, {os.path.dirname(__file__)!r})
         import candela
         from conftest import tiny_scene
