@@ -28,7 +28,7 @@ constexpr float kShadowEpsilon = 1e-4f;
 // has what earlier starts cost).
 constexpr uint32_t kRouletteDepth = 5;
 
-CANDELA_HDI Ray spawnRay(const SurfacePoint& sp, const Vec3& wi) {
+CANDELA_HDI_ALWAYS Ray spawnRay(const SurfacePoint& sp, const Vec3& wi) {
   Ray r;
   r.origin = offsetRayOrigin(sp.p, sp.error, sp.ng, wi);
   r.direction = wi;
