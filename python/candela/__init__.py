@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import json
 import os
-from typing import Any, Optional, Tuple
+from typing import Any, Dict, Optional, Sequence, Tuple
 
 import numpy as np
 
@@ -105,8 +105,15 @@ class Scene:
 
     def render(self, spp: Optional[int] = None, seed: Optional[int] = None,
                backend: str = "auto", sample_range: Optional[Tuple[int, int]] = None,
-               threads: int = 0) -> np.ndarray:
+               threads: int = 0, aovs: Optional[Sequence[str]] = None
+               ) -> np.ndarray | Dict[str, np.ndarray]:
         """Renders to a float32 array (height, width, 3) of linear radiance.
+
+        aovs: render passes to return as well (docs/aovs.md): "depth", "distance", "normal",
+        "normal_camera", "albedo", "position", "instance", "material". With aovs the result is
+        a dict: "image" the radiance, and one array per pass, (height, width) float32 for depth
+        and distance, (height, width, 3) float32 for the others, (height, width) uint32 for the
+        ids. An unknown pass name raises ValueError.
 
         spp and seed override the scene's. backend: "auto" (the CPU until the CUDA backend has
         passed its tests on a GPU), "cpu" or "cuda" (untested; RuntimeError where it cannot
@@ -121,7 +128,11 @@ class Scene:
         """
         if sample_range is not None:
             sample_range = (int(sample_range[0]), int(sample_range[1]))
-        return self._core.render(spp, seed, backend, sample_range, threads)
+        if aovs is not None:
+            if isinstance(aovs, str):
+                raise TypeError("aovs must be a list of pass names, e.g. ['depth', 'normal']")
+            aovs = [str(a) for a in aovs]
+        return self._core.render(spp, seed, backend, sample_range, threads, aovs)
 
     def __repr__(self) -> str:
         frame = "" if self.frame_index is None else f", frame {self.frame_index}"

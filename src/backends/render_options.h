@@ -19,6 +19,9 @@ struct RenderOptions {
   // Render only these sample indices and return their mean (default: all spp). Throws
   // std::invalid_argument for a range outside [0, spp).
   SampleRange samples;
+  // Also record the samples' first hits for render passes (RenderResult::aovs). Off, the
+  // integrator runs without any pass code.
+  bool aovs = false;
   std::string sceneLabel;  // the scene file, named in error messages
 };
 

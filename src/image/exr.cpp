@@ -22,7 +22,9 @@ constexpr const char* kChannels[3] = {"R", "G", "B"};
 
 }  // namespace
 
-std::string encodeExr(const ImageRGB& image) {
+std::string encodeExr(const ImageRGB& image) { return encodeExr(image, {}); }
+
+std::string encodeExr(const ImageRGB& image, const std::vector<ImageLayer>& layers) {
   try {
     Imf::Header header(int(image.width), int(image.height));
     header.compression() = Imf::ZIP_COMPRESSION;
@@ -36,6 +38,27 @@ std::string encodeExr(const ImageRGB& image) {
       frame.insert(kChannels[c],
                    Imf::Slice(Imf::FLOAT, base + c * sizeof(float), xStride, yStride));
 
+    // Integer layers are converted to uint32 first; the buffers must outlive writePixels.
+    std::vector<std::vector<uint32_t>> integers;
+    integers.reserve(layers.size());
+    for (const ImageLayer& layer : layers) {
+      if (layer.width != image.width || layer.height != image.height ||
+          layer.pixels.size() != layer.channels.size() * size_t(layer.width) * layer.height)
+        throw ImageWriteError("layer " + layer.name + " does not match the image size");
+      const size_t n = layer.channels.size();
+      char* data = reinterpret_cast<char*>(const_cast<float*>(layer.pixels.data()));
+      if (layer.integer) {
+        integers.emplace_back(layer.pixels.begin(), layer.pixels.end());
+        data = reinterpret_cast<char*>(integers.back().data());
+      }
+      const Imf::PixelType type = layer.integer ? Imf::UINT : Imf::FLOAT;
+      for (size_t c = 0; c < n; ++c) {
+        const std::string name = layer.name + "." + layer.channels[c];
+        header.channels().insert(name, Imf::Channel(type));
+        frame.insert(name, Imf::Slice(type, data + c * 4, n * 4, n * 4 * image.width));
+      }
+    }
+
     Imf::StdOSStream stream;
     {
       Imf::OutputFile file(stream, header);  // flushes on destruction
@@ -43,8 +66,35 @@ std::string encodeExr(const ImageRGB& image) {
       file.writePixels(int(image.height));
     }
     return stream.str();
+  } catch (const ImageWriteError&) {
+    throw;
   } catch (const std::exception& e) {
     throw ImageWriteError(std::string("EXR encoding failed: ") + e.what());
+  }
+}
+
+ExrChannels decodeExrChannels(const std::string& bytes) {
+  try {
+    Imf::StdISStream stream;
+    stream.str(bytes);
+    Imf::InputFile file(stream);
+    const Imath::Box2i window = file.header().dataWindow();
+    ExrChannels out;
+    out.width = uint32_t(window.max.x - window.min.x + 1);
+    out.height = uint32_t(window.max.y - window.min.y + 1);
+    Imf::FrameBuffer frame;
+    const Imf::ChannelList& list = file.header().channels();
+    for (auto it = list.begin(); it != list.end(); ++it)
+      out.channels.push_back({it.name(), it.channel().type == Imf::UINT,
+                              std::vector<float>(size_t(out.width) * out.height)});
+    for (ExrChannel& c : out.channels)
+      frame.insert(c.name, Imf::Slice::Make(Imf::FLOAT, c.pixels.data(), window, sizeof(float),
+                                            sizeof(float) * out.width));
+    file.setFrameBuffer(frame);
+    file.readPixels(window.min.y, window.max.y);
+    return out;
+  } catch (const std::exception& e) {
+    throw ImageWriteError(std::string("cannot decode EXR: ") + e.what());
   }
 }
 

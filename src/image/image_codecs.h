@@ -7,7 +7,10 @@
 
 #include <string>
 
+#include <vector>
+
 #include "image/image.h"
+#include "image/image_layer.h"
 #include "image/output_desc.h"
 
 namespace candela {
@@ -17,11 +20,17 @@ std::string encodePng(const ImageRGB& image, const OutputDesc& output);
 
 // OpenEXR, three 32-bit FLOAT channels R, G, B, lossless ZIP compression, linear values.
 std::string encodeExr(const ImageRGB& image);
+// The same with each layer's channels beside R, G, B ("depth.Z", ...); integer layers as UINT.
+std::string encodeExr(const ImageRGB& image, const std::vector<ImageLayer>& layers);
+// Every channel of an EXR, as float.
+ExrChannels decodeExrChannels(const std::string& bytes);
 // Any scanline or tiled EXR; R, G, B are converted to float, a missing channel reads as 0.
 ImageRGB decodeExr(const std::string& bytes);
 
 // Portable float map "PF": little-endian floats, rows stored bottom-to-top.
 std::string encodePfm(const ImageRGB& image);
+// A layer of 1 channel as grey "Pf", of 3 as "PF".
+std::string encodePfm(const ImageLayer& layer);
 // Accepts "PF" (RGB) and "Pf" (grey, replicated to RGB) in either byte order.
 ImageRGB decodePfm(const std::string& bytes);
 

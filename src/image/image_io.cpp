@@ -80,6 +80,35 @@ std::string encodeImage(const std::string& path, const ImageRGB& image, const Ou
   return bytes;
 }
 
+std::string encodeLayeredExr(const std::string& path, const ImageRGB& image,
+                             const std::vector<ImageLayer>& layers) {
+  if (formatOf(path) != ImageFormat::Exr) unsupported(path, ".exr for an image with layers");
+  try {
+    return encodeExr(image, layers);
+  } catch (const ImageWriteError& e) {
+    throw ImageWriteError(path + ": " + e.what());
+  }
+}
+
+std::string encodeLayerPfm(const std::string& path, const ImageLayer& layer) {
+  if (formatOf(path) != ImageFormat::Pfm) unsupported(path, ".pfm for a layer");
+  try {
+    return encodePfm(layer);
+  } catch (const ImageWriteError& e) {
+    throw ImageWriteError(path + ": " + e.what());
+  }
+}
+
+ExrChannels readExrChannels(const std::string& path) {
+  if (formatOf(path) != ImageFormat::Exr) unsupported(path, ".exr");
+  const std::string bytes = readFileBytes(path);
+  try {
+    return decodeExrChannels(bytes);
+  } catch (const ImageWriteError& e) {
+    throw ImageWriteError(path + ": " + e.what());
+  }
+}
+
 bool isCompleteImageFile(const std::string& path) {
   std::error_code error;
   if (!std::filesystem::is_regular_file(path, error)) return false;

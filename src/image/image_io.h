@@ -6,7 +6,10 @@
 #include <stdexcept>
 #include <string>
 
+#include <vector>
+
 #include "image/image.h"
+#include "image/image_layer.h"
 #include "image/output_desc.h"
 
 namespace candela {
@@ -24,6 +27,18 @@ void writeImage(const std::string& path, const ImageRGB& image, const OutputDesc
 
 // The bytes writeImage writes, in the format of `path`'s extension; throws ImageWriteError.
 std::string encodeImage(const std::string& path, const ImageRGB& image, const OutputDesc& output);
+
+// A multi-layer .exr: the image as R, G, B and each layer's channels beside them (render passes);
+// throws ImageWriteError, also for a path that is not .exr.
+std::string encodeLayeredExr(const std::string& path, const ImageRGB& image,
+                             const std::vector<ImageLayer>& layers);
+
+// One layer of 1 or 3 channels as a .pfm (grey "Pf" or "PF"); throws ImageWriteError, also for a
+// path that is not .pfm.
+std::string encodeLayerPfm(const std::string& path, const ImageLayer& layer);
+
+// Every channel of an .exr file as float (tests and tools); throws ImageWriteError.
+ExrChannels readExrChannels(const std::string& path);
 
 // Reads .exr, .pfm and Radiance .hdr files as linear float RGB (environment maps, tests and
 // tools); throws ImageWriteError (the image module's one error type, naming the path) on failure.

@@ -47,6 +47,19 @@ std::string encodePfm(const ImageRGB& image) {
   return out;
 }
 
+std::string encodePfm(const ImageLayer& layer) {
+  const size_t n = layer.channels.size();
+  if (n != 1 && n != 3) throw ImageWriteError("PFM holds 1 or 3 channels, not " + std::to_string(n));
+  std::string out = std::string(n == 1 ? "Pf" : "PF") + "\n" + std::to_string(layer.width) + " " +
+                    std::to_string(layer.height) + "\n-1.0\n";
+  out.reserve(out.size() + 4 * layer.pixels.size());
+  for (uint32_t row = layer.height; row-- > 0;) {
+    const float* p = layer.pixels.data() + n * layer.width * row;
+    for (size_t i = 0; i < n * layer.width; ++i) appendFloat(&out, p[i], true);
+  }
+  return out;
+}
+
 ImageRGB decodePfm(const std::string& bytes) {
   std::istringstream header(bytes);
   std::string magic;

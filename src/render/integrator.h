@@ -13,6 +13,7 @@
 #include "core/float_error.h"
 #include "core/sobol_sampler.h"
 #include "geometry/surface.h"
+#include "render/aov.h"
 #include "render/bsdf.h"
 #include "render/light_sample.h"
 #include "render/ray_counters.h"
@@ -27,7 +28,7 @@ constexpr float kShadowEpsilon = 1e-4f;
 // has what earlier starts cost).
 constexpr uint32_t kRouletteDepth = 5;
 
-CANDELA_HDI Ray spawnRay(const SurfacePoint& sp, const Vec3& wi) {
+CANDELA_HDI_ALWAYS Ray spawnRay(const SurfacePoint& sp, const Vec3& wi) {
   Ray r;
   r.origin = offsetRayOrigin(sp.p, sp.error, sp.ng, wi);
   r.direction = wi;
@@ -92,10 +93,13 @@ CANDELA_HDI Vec3 estimateDirect(const SceneView& scene, const Tracer& tracer, co
   return sampleOneLight(scene, tracer, scene.lights[index], bsdf, sp, u1, u2, counters);
 }
 
-// Radiance arriving at the camera along `ray` (one sample).
-template <class Tracer>
+// Radiance arriving at the camera along `ray` (one sample). With kAovs, `first` (zeroed by the
+// caller) also receives the sample's first hit and albedo (render/aov.h); that work is compiled
+// only into the kAovs instance, and it draws no random numbers, so the radiance is the same.
+template <bool kAovs = false, class Tracer>
 CANDELA_HDI Vec3 traceRadiance(const SceneView& scene, const Tracer& tracer, Ray ray,
-                               SampleStream& rng, RayCounters& counters) {
+                               SampleStream& rng, RayCounters& counters,
+                               FirstHit* first = nullptr) {
   Vec3 radiance(0.0f), throughput(1.0f);
   uint32_t maxDepth = scene.settings.maxDepth;
   bool specularBounce = true;  // the camera counts as specular: emitters seen directly count fully
@@ -120,6 +124,21 @@ CANDELA_HDI Vec3 traceRadiance(const SceneView& scene, const Tracer& tracer, Ray
     CANDELA_DCHECK(sp.material < scene.materialCount);
     const Material& m = scene.materials[sp.material];
     const Vec3 wo = -ray.direction;
+    if constexpr (kAovs) {
+      if (depth == 1) {
+        first->hit = true;
+        first->position = sp.p;
+        first->normal = dot(wo, sp.ng) < 0.0f ? -sp.ns : sp.ns;
+        first->material = sp.material;
+      }
+      if (!first->albedoDone && (isEmissive(m) || hasSmoothLobe(m))) {
+        first->albedoDone = true;
+        if (isEmissive(m))
+          first->albedo = dot(wo, sp.ng) > 0.0f ? clampUnit(m.radiance) : Vec3(0.0f);
+        else
+          first->albedo = aovAlbedo(m, surfaceColor(scene, m, hit, sp));
+      }
+    }
 
     if (isEmissive(m)) {
       if (dot(wo, sp.ng) > 0.0f) {  // emitters emit from their outside only

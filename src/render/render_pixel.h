@@ -17,11 +17,13 @@ CANDELA_HDI bool isFinite(const Vec3& v) {
 // added one by one in index order (so a pixel rendered in several calls, each continuing the
 // last one's sum, is bit-identical to one call). Each sample's random numbers depend only on
 // (seed, pixel, sample index, dimension) and spp. `tracer` answers the ray queries
-// (geometry/bvh_tracer.h).
-template <class Tracer>
+// (geometry/bvh_tracer.h). With kAovs the samples' first hits are added to `aov` too
+// (render/aov.h); the radiance is the same either way.
+template <bool kAovs = false, class Tracer>
 CANDELA_HDI Vec3 renderPixelSamples(const SceneView& scene, const Tracer& tracer, uint32_t x,
                                     uint32_t y, uint32_t sampleBegin, uint32_t sampleCount,
-                                    RayCounters& counters, Vec3 sum = Vec3(0.0f)) {
+                                    RayCounters& counters, Vec3 sum = Vec3(0.0f),
+                                    AovPixel* aov = nullptr) {
   const uint64_t pixelIndex = uint64_t(y) * scene.camera.width + x;
   for (uint32_t s = sampleBegin; s < sampleBegin + sampleCount; ++s) {
     SampleStream rng(scene.settings.seed, pixelIndex, s, scene.settings.spp);
@@ -31,9 +33,11 @@ CANDELA_HDI Vec3 renderPixelSamples(const SceneView& scene, const Tracer& tracer
     rng.next2DIfUsed(scene.camera.apertureRadius > 0.0f, &lensU, &lensV);
     const Ray ray = generateCameraRay(scene.camera, float(x) + jx, float(y) + jy, lensU, lensV);
     ++counters.camera;
-    const Vec3 L = traceRadiance(scene, tracer, ray, rng, counters);
+    FirstHit first;
+    const Vec3 L = traceRadiance<kAovs>(scene, tracer, ray, rng, counters, kAovs ? &first : nullptr);
     // A non-finite sample (a degenerate mesh, say) would poison the pixel; it counts as black.
     if (isFinite(L)) sum += L;
+    if constexpr (kAovs) addAovSample(aov, first, jx, jy, scene.camera.position);
   }
   return sum;
 }

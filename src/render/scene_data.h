@@ -33,6 +33,9 @@ struct SceneData {
   Camera camera;
   RenderSettings settings;
   BvhStats bvh;
+  // Host only: the instance number (docs/aovs.md) of the entity each material belongs to; every
+  // sphere, object and sphere light appends materials of its own, so a material names one.
+  std::vector<uint32_t> materialInstances;
 
   SceneView view() const;
   // World-space bounds of all geometry (empty scene: min > max).

@@ -250,15 +250,32 @@ void addTextures(SceneData& s, const SceneDesc& desc) {
     for (const Material& m : s.materials) s.alphaMasks.push_back(m.alpha);
 }
 
+// The materials appended since the last call belong to instance `instance` (docs/aovs.md).
+void tagInstance(SceneData& s, uint32_t instance) {
+  s.materialInstances.resize(s.materials.size(), instance);
+}
+
 // Everything but the BVH; mesh vertices and triangles only with `geometry`. The order of
 // materials depends only on the scene's structure, so triangles keep valid material indices
 // when a refresh re-appends the materials.
 void addContents(SceneData& s, const SceneDesc& desc, bool geometry) {
-  for (const SphereDesc& sd : desc.spheres)
+  // Instances are numbered from 1: spheres, then objects, then lights, in file order.
+  const uint32_t sphereCount = uint32_t(desc.spheres.size());
+  const uint32_t firstLight = sphereCount + uint32_t(desc.objects.size());
+  for (uint32_t i = 0; i < sphereCount; ++i) {
+    const SphereDesc& sd = desc.spheres[i];
     s.spheres.push_back(Sphere{sd.position, sd.radius, addMaterial(s, sd.material)});
+    tagInstance(s, i + 1);
+  }
   // Lights after plain spheres: sphere lights append their own emissive spheres.
-  for (const LightDesc& ld : desc.lights) addLight(s, ld);
-  for (const ObjectDesc& od : desc.objects) addObject(s, od, geometry);
+  for (uint32_t i = 0; i < desc.lights.size(); ++i) {
+    addLight(s, desc.lights[i]);
+    tagInstance(s, firstLight + i + 1);
+  }
+  for (uint32_t i = 0; i < desc.objects.size(); ++i) {
+    addObject(s, desc.objects[i], geometry);
+    tagInstance(s, sphereCount + i + 1);
+  }
   // Vertices after the last smooth (or textured) mesh have no normals (or uvs) either.
   if (geometry && !s.normals.empty()) s.normals.resize(s.positions.size(), OctNormal());
   if (geometry && !s.uvs.empty()) s.uvs.resize(s.positions.size(), Vec2());
@@ -273,6 +290,7 @@ void addContents(SceneData& s, const SceneDesc& desc, bool geometry) {
 
 void refreshSceneValues(SceneData& s, const SceneDesc& desc) {
   s.materials.clear();
+  s.materialInstances.clear();
   s.spheres.clear();
   s.lights.clear();
   s.textures.clear();

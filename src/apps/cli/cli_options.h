@@ -24,6 +24,7 @@ struct RenderCommandOptions {
   CpuEngine cpuEngine = CpuEngine::Auto;
   bool quiet = false;
   std::string stats;  // --stats FILE.json: write the render's measured figures (stills only)
+  std::string aovs;    // --aov depth,normal,...: render passes (docs/aovs.md); empty: none
   bool noBvh = false;  // --no-bvh: brute force over all primitives (benchmarks only)
   // Sequences only (see sequence_command.h); `sequenceOptionGiven` says whether any was set.
   std::string format;               // png, exr or pfm; empty: png

@@ -13,13 +13,16 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <list>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <utility>
 
 #include "apps/cli/cli_error.h"
 #include "apps/cli/interrupt.h"
 #include "apps/cli/output_check.h"
+#include "apps/cli/pass_files.h"
 #include "apps/cli/progress_bar.h"
 #include "apps/cli/sequence_command.h"
 #include "apps/cli/stats_writer.h"
@@ -78,6 +81,15 @@ CpuEngine chooseCpuEngine(const RenderCommandOptions& options, uint64_t triangle
   return resolveCpuEngine(options.cpuEngine, options.noBvh, triangles);
 }
 
+std::vector<Aov> chooseAovs(const RenderCommandOptions& options) {
+  if (options.aovs.empty()) return {};
+  try {
+    return parseAovList(options.aovs);
+  } catch (const std::invalid_argument& e) {
+    throw CliError(kExitUsage, std::string("--aov: ") + e.what());
+  }
+}
+
 void applyOverrides(const RenderCommandOptions& options, Backend backend, CpuEngine engine,
                     SceneDesc* desc) {
   if (options.spp) desc->render.spp = *options.spp;
@@ -126,6 +138,10 @@ CLI::App* addRenderCommand(CLI::App& app, RenderCommandOptions* options) {
   cmd->add_option("--stats", options->stats,
                   "Also write the render's measured figures (load, BVH build, memory, rays, "
                   "samples/s, peak RSS) to this JSON file; single stills only");
+  cmd->add_option("--aov", options->aovs,
+                  "Render passes to write beside the image, comma-separated: depth, distance, "
+                  "normal, normal_camera, albedo, position, instance, material (in an .exr as "
+                  "layers, else as sibling .pfm files: out.depth.pfm)");
   cmd->add_flag("--no-bvh", options->noBvh,
                 "Benchmarks only: test every primitive for every ray instead of using the BVH")
       ->group("");  // hidden from --help
@@ -150,6 +166,7 @@ int runRender(const RenderCommandOptions& options) {
   // while the scenes load instead of inside the first parallel step, the BVH build
   // (docs/performance.md).
   tbb::this_task_arena::enqueue([] {});
+  chooseAovs(options);  // an unknown pass is refused before anything loads
   // Every scene is loaded and validated before anything renders or is written.
   const auto loadStart = std::chrono::steady_clock::now();
   std::vector<SceneDesc> scenes;
@@ -169,8 +186,10 @@ int renderStill(const RenderCommandOptions& options, SceneDesc desc, double load
   const std::string& sceneFile = options.scenes[0];
   const std::string output = options.output.empty() ? defaultOutputPath(sceneFile) : options.output;
   checkOutputPath(output);
+  const std::vector<Aov> aovs = chooseAovs(options);
   std::vector<OutputFile> outputs = {
       {options.output.empty() ? "the default output" : "-o", output}};
+  for (const std::string& pass : passFilePaths(output, aovs)) outputs.push_back({"--aov", pass});
   if (!options.stats.empty()) outputs.push_back({"--stats", options.stats});
   checkOutputFiles(outputs, inputFiles({desc}));
   std::string backendNote;
@@ -193,6 +212,7 @@ int renderStill(const RenderCommandOptions& options, SceneDesc desc, double load
   render.sceneLabel = sceneFile;
   render.threads = options.threads;
   render.cancel = &interrupt.flag();
+  render.aovs = !aovs.empty();
   if (bar) render.progress = [&bar](double fraction) { bar->update(fraction); };
   const std::unique_ptr<Renderer> renderer = makeRenderer(backend, engine);
   renderer->setScene(scene, SceneChange::Structure);
@@ -204,7 +224,9 @@ int renderStill(const RenderCommandOptions& options, SceneDesc desc, double load
     return kExitInterrupted;
   }
   createParentDirectories(output);
-  StagedFile image(output, encodeImage(output, result.image, desc.output));
+  std::list<StagedFile> images;  // the image and its pass files, all or none
+  for (const auto& [path, bytes] : encodeWithPasses(output, result, scene, aovs, desc.output))
+    images.emplace_back(path, bytes);
   std::optional<StagedFile> stats;
   if (!options.stats.empty()) {
     RenderStats info;
@@ -218,7 +240,7 @@ int renderStill(const RenderCommandOptions& options, SceneDesc desc, double load
     createParentDirectories(options.stats);
     stats.emplace(options.stats, renderStatsJson(info, scene, result));
   }
-  image.commit();
+  for (StagedFile& file : images) file.commit();
   if (stats) stats->commit();
   if (!options.quiet)
     std::printf("%s\n", renderSummary(output, scene.settings.spp, result).c_str());

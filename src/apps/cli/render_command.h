@@ -1,6 +1,6 @@
 // `candela render SCENE [SCENE...] [-o OUT] [--spp N] [--seed N] [--max-depth N] [--threads N]
 //                 [--backend auto|cpu|cuda] [--quiet] [--stats FILE.json]
-//                 [--format png|exr|pfm] [--frames A:B] [--overwrite] [--video OUT.mp4] [--fps N]`
+//                 [--aov depth,normal,...] [--format png|exr|pfm] [--frames A:B] [--overwrite] [--video OUT.mp4] [--fps N]`
 //
 // One scene without an animation block and an image file (or nothing) for -o: one image, as
 // always. Several scenes, an animation block, a folder for -o (ending in '/' or existing) or any
@@ -10,6 +10,7 @@
 #include <CLI/CLI.hpp>
 
 #include "apps/cli/cli_options.h"
+#include "render/aov_layers.h"
 #include "scene/scene_desc.h"
 
 namespace candela::cli {
@@ -24,6 +25,9 @@ int runRender(const RenderCommandOptions& options);
 // The CPU engine the options ask for, resolved by resolveCpuEngine for scenes of at most
 // `triangles` triangles; CliError (usage) for --no-bvh with --cpu-engine embree.
 CpuEngine chooseCpuEngine(const RenderCommandOptions& options, uint64_t triangles);
+
+// The passes --aov asks for, in its order; CliError (usage) naming an unknown one.
+std::vector<Aov> chooseAovs(const RenderCommandOptions& options);
 
 // Command-line values win over the scene file's (spp, seed, max depth); candela's own BVH is
 // left out where the renderer (`backend` with `engine`) does not trace it.

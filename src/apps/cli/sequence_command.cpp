@@ -5,12 +5,14 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <list>
 #include <memory>
 #include <optional>
 
 #include "apps/cli/cli_error.h"
 #include "apps/cli/interrupt.h"
 #include "apps/cli/output_check.h"
+#include "apps/cli/pass_files.h"
 #include "apps/cli/progress_bar.h"
 #include "apps/cli/render_command.h"
 #include "apps/cli/summary.h"
@@ -98,25 +100,35 @@ std::optional<uint32_t> frameOf(const std::string& file, const std::string& dir,
 // Where the sequence writes, checked before anything renders (output_check.h): the frame folder
 // can be made and written in, no frame replaces a file the scenes read, and the video replaces
 // neither an input nor a frame.
+// The "formats" a frame's files end in: "png", and for passes beside it "depth.pfm", ...
+std::vector<std::string> frameSuffixes(const std::string& format, const std::vector<Aov>& aovs) {
+  std::vector<std::string> suffixes = {format};
+  for (const std::string& pass : passFilePaths("frame." + format, aovs))
+    suffixes.push_back(pass.substr(std::string("frame.").size()));
+  return suffixes;
+}
+
 void checkSequenceOutputs(const RenderCommandOptions& options, const std::vector<SceneDesc>& scenes,
                           const std::string& dir, FrameRange range, int digits,
-                          const std::string& format) {
+                          const std::vector<std::string>& suffixes) {
   const std::string reason = unwritableReason(dir, true);
   if (!reason.empty())
     throw CliError(kExitFailure, dir + ": cannot write the frames there: " + reason);
   const std::vector<InputFile> inputs = inputFiles(scenes);
-  for (const InputFile& in : inputs)
-    if (const std::optional<uint32_t> frame = frameOf(in.path, dir, range, digits, format))
-      throw CliError(kExitUsage, in.path + ": frame " + std::to_string(*frame) +
-                                     " of the sequence would overwrite " + in.kind +
-                                     ", which the render reads");
+  for (const std::string& format : suffixes)
+    for (const InputFile& in : inputs)
+      if (const std::optional<uint32_t> frame = frameOf(in.path, dir, range, digits, format))
+        throw CliError(kExitUsage, in.path + ": frame " + std::to_string(*frame) +
+                                       " of the sequence would overwrite " + in.kind +
+                                       ", which the render reads");
   if (options.video.empty()) return;
   if (sameFile(options.video, dir))
     throw CliError(kExitUsage, options.video + ": --video names the folder of the frames");
   checkOutputFiles({{"--video", options.video}}, inputs);
-  if (const std::optional<uint32_t> frame = frameOf(options.video, dir, range, digits, format))
-    throw CliError(kExitUsage, options.video + ": --video would overwrite frame " +
-                                   std::to_string(*frame) + " of the sequence");
+  for (const std::string& format : suffixes)
+    if (const std::optional<uint32_t> frame = frameOf(options.video, dir, range, digits, format))
+      throw CliError(kExitUsage, options.video + ": --video would overwrite frame " +
+                                     std::to_string(*frame) + " of the sequence");
 }
 
 // The checks that need every scene: no animation block inside a sequence of files, and one image
@@ -171,6 +183,8 @@ int runSequence(const RenderCommandOptions& options, std::vector<SceneDesc> scen
                                    ": a sequence is written to a folder (e.g. -o frames/), not "
                                    "to one image");
   const FrameRange range = parseFrames(options.frames, count);
+  const std::vector<Aov> aovs = chooseAovs(options);
+  const std::vector<std::string> suffixes = frameSuffixes(format, aovs);
   std::string backendNote;
   const Backend backend = chooseBackend(options.backend, &backendNote);
   uint64_t triangles = 0;
@@ -179,7 +193,7 @@ int runSequence(const RenderCommandOptions& options, std::vector<SceneDesc> scen
   for (SceneDesc& scene : scenes) applyOverrides(options, backend, engine, &scene);
 
   const int digits = frameDigits(count);
-  checkSequenceOutputs(options, scenes, dir, range, digits, format);
+  checkSequenceOutputs(options, scenes, dir, range, digits, suffixes);
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (ec) throw ImageWriteError(dir + ": cannot create the frame folder: " + ec.message());
@@ -187,9 +201,13 @@ int runSequence(const RenderCommandOptions& options, std::vector<SceneDesc> scen
   // A frame counts as done only when its file is whole; what a killed run left half-written
   // beside it (a temporary file of a process that is gone) is cleared away.
   removeStaleTemporaryFiles(dir);
-  for (uint32_t f = range.begin; f < range.end; ++f)
-    if (options.overwrite || !isCompleteImageFile(framePath(dir, f, digits, format)))
-      todo.push_back(f);
+  // A frame is done when its image and every pass file beside it are.
+  for (uint32_t f = range.begin; f < range.end; ++f) {
+    bool done = !options.overwrite;
+    for (const std::string& suffix : suffixes)
+      done = done && isCompleteImageFile(framePath(dir, f, digits, suffix));
+    if (!done) todo.push_back(f);
+  }
   const uint32_t kept = range.end - range.begin - uint32_t(todo.size());
   if (!options.quiet) {
     if (!backendNote.empty()) std::fprintf(stderr, "candela: note: %s\n", backendNote.c_str());
@@ -216,6 +234,7 @@ int runSequence(const RenderCommandOptions& options, std::vector<SceneDesc> scen
     render.sceneLabel = still.file;
     render.threads = options.threads;
     render.cancel = &interrupt.flag();
+    render.aovs = !aovs.empty();
     if (bar) render.progress = [&bar](double fraction) { bar->update(fraction); };
     renderer->setScene(data, frameScene.change());
     const RenderResult result = renderer->render(render);
@@ -228,7 +247,10 @@ int runSequence(const RenderCommandOptions& options, std::vector<SceneDesc> scen
       return kExitInterrupted;
     }
     const std::string path = framePath(dir, frame, digits, format);
-    writeImage(path, result.image, still.output);
+    std::list<StagedFile> files;  // the frame and its pass files, all or none
+    for (const auto& [file, bytes] : encodeWithPasses(path, result, data, aovs, still.output))
+      files.emplace_back(file, bytes);
+    for (StagedFile& file : files) file.commit();
     if (!options.quiet) {
       std::printf("%s (scene %s in %.3f ms)\n",
                   renderSummary(path, data.settings.spp, result).c_str(),

@@ -12,6 +12,7 @@
 #include <nanobind/stl/shared_ptr.h>
 #include <nanobind/stl/string.h>
 #include <nanobind/stl/tuple.h>
+#include <nanobind/stl/vector.h>
 
 #include <cstring>
 #include <memory>
@@ -25,6 +26,7 @@
 #include "apps/python/interruptible.h"
 #include "backends/renderer.h"
 #include "image/image_io.h"
+#include "render/aov_layers.h"
 #include "scene/animation.h"
 #include "scene/frame_scene.h"
 #include "scene/scene_error.h"
@@ -75,9 +77,24 @@ ImageArray toArray(ImageRGB&& image) {
   return ImageArray(pixels->data(), {size_t(image.height), size_t(image.width), size_t(3)}, owner);
 }
 
-ImageArray render(const Scene& scene, std::optional<uint32_t> spp, std::optional<uint64_t> seed,
+// A pass as an array: (H, W) for one channel, (H, W, 3) for three; ids as uint32.
+nb::object layerToArray(ImageLayer&& layer) {
+  const size_t h = layer.height, w = layer.width, n = layer.channels.size();
+  if (layer.integer) {
+    auto* ids = new std::vector<uint32_t>(layer.pixels.begin(), layer.pixels.end());
+    nb::capsule owner(ids, [](void* p) noexcept { delete static_cast<std::vector<uint32_t>*>(p); });
+    return nb::cast(nb::ndarray<nb::numpy, uint32_t>(ids->data(), {h, w}, owner));
+  }
+  auto* values = new std::vector<float>(std::move(layer.pixels));
+  nb::capsule owner(values, [](void* p) noexcept { delete static_cast<std::vector<float>*>(p); });
+  if (n == 1) return nb::cast(nb::ndarray<nb::numpy, float>(values->data(), {h, w}, owner));
+  return nb::cast(nb::ndarray<nb::numpy, float>(values->data(), {h, w, n}, owner));
+}
+
+nb::object render(const Scene& scene, std::optional<uint32_t> spp, std::optional<uint64_t> seed,
                   const std::string& backend, std::optional<std::tuple<uint32_t, uint32_t>> range,
-                  int threads) {
+                  int threads, std::optional<std::vector<std::string>> aovNames) {
+  const std::vector<Aov> aovs = aovNames ? aovsFromNames(*aovNames) : std::vector<Aov>();
   SceneDesc desc = scene.still();
   if (spp) {
     if (*spp == 0) throw std::invalid_argument("spp must be positive");
@@ -94,7 +111,9 @@ ImageArray render(const Scene& scene, std::optional<uint32_t> spp, std::optional
   options.threads = threads;
   options.samples = samples;
   options.sceneLabel = desc.file;
+  options.aovs = aovNames.has_value();
   RenderResult result;
+  std::vector<ImageLayer> layers;
   RenderCache& cache = *scene.cache;
   runInterruptible([&](const std::atomic<bool>& cancel) {
     std::lock_guard<std::mutex> lock(cache.mutex);
@@ -111,8 +130,16 @@ ImageArray render(const Scene& scene, std::optional<uint32_t> spp, std::optional
     options.cancel = &cancel;
     cache.renderer->setScene(data, change);
     result = cache.renderer->render(options);
+    if (!result.cancelled && aovNames) layers = makeAovLayers(data, aovs, result.aovs);
   });
-  return toArray(std::move(result.image));
+  if (!aovNames) return nb::cast(toArray(std::move(result.image)));
+  nb::dict out;
+  out["image"] = toArray(std::move(result.image));
+  for (ImageLayer& layer : layers) {
+    const std::string name = layer.name;
+    out[name.c_str()] = layerToArray(std::move(layer));
+  }
+  return out;
 }
 
 void writeImageArray(const std::string& path, const ImageInput& img, bool srgb, float gamma,
@@ -176,7 +203,7 @@ NB_MODULE(_candela, m) {
         return Scene{s.desc, i, s.cache};
       }, "index"_a)
       .def("render", &render, "spp"_a = nb::none(), "seed"_a = nb::none(), "backend"_a = "auto",
-           "sample_range"_a = nb::none(), "threads"_a = 0);
+           "sample_range"_a = nb::none(), "threads"_a = 0, "aovs"_a = nb::none());
 
   m.def("write_image", &writeImageArray, "path"_a, "img"_a, "srgb"_a, "gamma"_a, "exposure"_a);
   m.def("cuda_available", [] {

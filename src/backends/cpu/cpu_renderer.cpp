@@ -25,8 +25,8 @@ constexpr uint32_t kTileSize = 16;
 // very many samples per pixel within moments, not at the end of its tile.
 constexpr uint32_t kSamplesPerCancelCheck = 64;
 
-template <class Tracer>
-RenderResult renderTiles(const SceneView& scene, const Tracer& tracer,
+template <bool kAovs, class Tracer>
+RenderResult renderTilesWith(const SceneView& scene, const Tracer& tracer,
                          const RenderOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   const uint32_t width = scene.camera.width, height = scene.camera.height;
@@ -36,6 +36,7 @@ RenderResult renderTiles(const SceneView& scene, const Tracer& tracer,
 
   RenderResult result;
   result.image = ImageRGB(width, height);
+  if (kAovs) result.aovs.resize(size_t(width) * height);
 
   std::unique_ptr<tbb::global_control> threadLimit;
   if (options.threads > 0)
@@ -58,10 +59,12 @@ RenderResult renderTiles(const SceneView& scene, const Tracer& tracer,
     for (uint32_t y = y0; y < y1; ++y) {
       for (uint32_t x = x0; x < x1; ++x) {
         Vec3 sum(0.0f);
+        AovPixel* aov = kAovs ? &result.aovs[size_t(y) * width + x] : nullptr;
         for (uint32_t done = 0; done < samples.count; done += kSamplesPerCancelCheck) {
           if (stopAsked()) return false;
           const uint32_t count = std::min(kSamplesPerCancelCheck, samples.count - done);
-          sum = renderPixelSamples(scene, tracer, x, y, samples.begin + done, count, local, sum);
+          sum = renderPixelSamples<kAovs>(scene, tracer, x, y, samples.begin + done, count, local,
+                                          sum, aov);
         }
         result.image.set(x, y, sum / float(samples.count));
       }
@@ -90,6 +93,14 @@ RenderResult renderTiles(const SceneView& scene, const Tracer& tracer,
   result.cancelled = cancelled.load();
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
+}
+
+// The instance with or without the passes: only a render that asks for them runs their code.
+template <class Tracer>
+RenderResult renderTiles(const SceneView& scene, const Tracer& tracer,
+                         const RenderOptions& options) {
+  return options.aovs ? renderTilesWith<true>(scene, tracer, options)
+                      : renderTilesWith<false>(scene, tracer, options);
 }
 
 }  // namespace

@@ -50,14 +50,22 @@ __device__ void addCounters(unsigned long long* global, const RayCounters& c) {
   }
 }
 
+// With kAovs each pixel's pass sums (render/aov.h) continue from the last pass's.
+template <bool kAovs>
 __global__ void renderPassKernel(SceneView scene, uint32_t sampleBegin, uint32_t sampleCount,
-                                 float3* accumulation, unsigned long long* rayCounts) {
+                                 float3* accumulation, AovPixel* aovs,
+                                 unsigned long long* rayCounts) {
   const uint32_t x = blockIdx.x * blockDim.x + threadIdx.x;
   const uint32_t y = blockIdx.y * blockDim.y + threadIdx.y;
   RayCounters counters;
   if (x < scene.camera.width && y < scene.camera.height) {
-    const Vec3 sum = renderPixelSamples(scene, BvhTracer{&scene}, x, y, sampleBegin, sampleCount, counters);
-    float3& acc = accumulation[size_t(y) * scene.camera.width + x];
+    const size_t pixel = size_t(y) * scene.camera.width + x;
+    AovPixel aov;
+    if (kAovs) aov = aovs[pixel];
+    const Vec3 sum = renderPixelSamples<kAovs>(scene, BvhTracer{&scene}, x, y, sampleBegin,
+                                               sampleCount, counters, Vec3(0.0f), &aov);
+    if (kAovs) aovs[pixel] = aov;
+    float3& acc = accumulation[pixel];
     acc.x += sum.x;
     acc.y += sum.y;
     acc.z += sum.z;
@@ -111,6 +119,8 @@ RenderResult CudaRenderer::render(const RenderOptions& options) {
 
   DeviceBuffer<float3> accumulation(size_t(width) * height);
   accumulation.zero();
+  DeviceBuffer<AovPixel> aovs;
+  if (options.aovs) aovs.upload(std::vector<AovPixel>(size_t(width) * height));
   DeviceBuffer<unsigned long long> rayCounts(3);
   rayCounts.zero();
 
@@ -127,7 +137,12 @@ RenderResult CudaRenderer::render(const RenderOptions& options) {
       break;
     }
     const uint32_t count = end - begin < perPass ? end - begin : perPass;
-    renderPassKernel<<<grid, block>>>(view, begin, count, accumulation.get(), rayCounts.get());
+    if (options.aovs)
+      renderPassKernel<true><<<grid, block>>>(view, begin, count, accumulation.get(), aovs.get(),
+                                              rayCounts.get());
+    else
+      renderPassKernel<false><<<grid, block>>>(view, begin, count, accumulation.get(), nullptr,
+                                               rayCounts.get());
     cudaError_t err = cudaGetLastError();
     if (err == cudaSuccess) err = cudaEventRecord(passDone);
     if (err == cudaSuccess) err = cudaEventSynchronize(passDone);  // sleeps, does not spin
@@ -152,6 +167,7 @@ RenderResult CudaRenderer::render(const RenderOptions& options) {
     result.image.pixels[3 * i + 1] = sums[i].y * inv;
     result.image.pixels[3 * i + 2] = sums[i].z * inv;
   }
+  if (options.aovs) aovs.download(&result.aovs);
   result.rays.camera = counts[0];
   result.rays.bounce = counts[1];
   result.rays.shadow = counts[2];

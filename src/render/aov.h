@@ -1,0 +1,75 @@
+// Render passes (AOVs): what a camera sample records at its first hit, besides radiance, and how
+// a pixel sums those records (docs/aovs.md).
+//
+// The integrator fills a FirstHit only when asked (traceRadiance<true>); a render without passes
+// never touches one. A pixel keeps sums for the filtered passes (means over the samples that hit
+// a surface, or over all samples for albedo) and, for the id passes, the record of the sample
+// whose jitter lies nearest the pixel centre. The host turns them into images
+// (render/aov_layers.h), so the kernel stores nothing it could derive there (depth, camera-space
+// normals and ids all come from these fields).
+#pragma once
+
+#include <cstdint>
+
+#include "core/vec3.h"
+#include "render/fresnel.h"
+#include "render/material.h"
+
+namespace candela {
+
+// One camera sample's first hit. `albedo` is that of the first surface with a non-delta lobe
+// along the sampled path (mirrors and smooth glass are followed), or of an emitter's radiance
+// clamped to [0, 1]; `albedoDone` says it was found.
+struct FirstHit {
+  Vec3 position{0.0f};  // world space
+  Vec3 normal{0.0f};    // world-space shading normal, turned to face the incoming ray
+  Vec3 albedo{0.0f};
+  uint32_t material = 0;  // flattened material index, valid when `hit`
+  bool hit = false;
+  bool albedoDone = false;
+};
+
+// What a pass uses as the colour of a material whose colour (texture included) is `color`: the
+// BSDF's colour, with a named metal's reflectance at normal incidence.
+CANDELA_HDI Vec3 aovAlbedo(const Material& m, const Vec3& color) {
+  if (m.type == MaterialType::Conductor && m.metal)
+    return color * fresnelConductor(1.0f, m.metalEta, m.metalK);
+  return color;
+}
+
+CANDELA_HDI Vec3 clampUnit(const Vec3& v) {
+  return {minf(1.0f, maxf(0.0f, v.x)), minf(1.0f, maxf(0.0f, v.y)), minf(1.0f, maxf(0.0f, v.z))};
+}
+
+// A pixel's passes, summed over its samples in index order like its radiance.
+struct AovPixel {
+  Vec3 positionSum{0.0f};  // over samples that hit
+  Vec3 normalSum{0.0f};    // over samples that hit
+  Vec3 albedoSum{0.0f};    // over all samples (the background adds 0)
+  float distanceSum = 0.0f;  // |position - camera centre|, over samples that hit
+  uint32_t hits = 0;
+  uint32_t samples = 0;
+  // The id passes' sample: the one nearest the pixel centre, the earliest of equals.
+  float nearestDistance2 = 3.0f;  // above any squared jitter offset, so sample 0 always wins
+  int32_t nearestMaterial = -1;   // -1: that sample saw the background
+};
+
+// Adds sample `first` taken at jitter (jx, jy) in the pixel, by a camera centred at `eye`.
+CANDELA_HDI void addAovSample(AovPixel* pixel, const FirstHit& first, float jx, float jy,
+                              const Vec3& eye) {
+  ++pixel->samples;
+  pixel->albedoSum += first.albedo;
+  if (first.hit) {
+    pixel->positionSum += first.position;
+    pixel->normalSum += first.normal;
+    pixel->distanceSum += length(first.position - eye);
+    ++pixel->hits;
+  }
+  const float dx = jx - 0.5f, dy = jy - 0.5f, d2 = dx * dx + dy * dy;
+  if (d2 < pixel->nearestDistance2) {
+    pixel->nearestDistance2 = d2;
+    pixel->nearestMaterial = first.hit ? int32_t(first.material) : -1;
+  }
+}
+
+}  // namespace candela

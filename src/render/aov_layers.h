@@ -1,0 +1,34 @@
+// The render passes by name, and their images made from a render's per-pixel sums
+// (render/aov.h). The definitions are in docs/aovs.md; a new pass joins the table in
+// aov_layers.cpp and the switch of makeAovLayers.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "image/image_layer.h"
+#include "render/aov.h"
+#include "render/scene_data.h"
+
+namespace candela {
+
+enum class Aov { Depth, Distance, Normal, NormalCamera, Albedo, Position, Instance, Material };
+
+// "depth", "normal_camera", ...
+const char* aovName(Aov aov);
+
+// "depth, distance, normal, ..." for messages.
+std::string knownAovNames();
+
+// The passes named in `names`, in that order, each once. Throws std::invalid_argument naming an
+// unknown pass and listing the known ones.
+std::vector<Aov> aovsFromNames(const std::vector<std::string>& names);
+
+// The same from a comma-separated list, "depth,normal" (spaces around names are ignored).
+std::vector<Aov> parseAovList(const std::string& list);
+
+// One layer per pass in `aovs`, from `pixels` (RenderResult::aovs) of a render of `scene`.
+std::vector<ImageLayer> makeAovLayers(const SceneData& scene, const std::vector<Aov>& aovs,
+                                      const std::vector<AovPixel>& pixels);
+
+}  // namespace candela

@@ -1,0 +1,138 @@
+// `candela render --aov`: passes as layers of a multi-layer EXR, as sibling .pfm files beside a
+// PNG, per frame of a sequence, and the usage errors, through the real binary (CANDELA_BINARY).
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "image/image_io.h"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// A grey unit sphere 5 before the camera, on a 15x15 image whose centre pixel lies on its axis.
+const char* kScene = R"({
+  "camera": {"width": 15, "height": 15, "fov": 30, "spp": 4, "position": [0, 0, 5]},
+  "render": {"antialiasing": false},
+  "spheres": [{"position": [0, 0, 0], "radius": 1, "color": 0.5}],
+  "lights": [{"position": [0, 3, 3], "intensity": 100}]
+})";
+
+class CliAovTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = fs::temp_directory_path() /
+           ("candela_cli_aov_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+    std::ofstream(dir_ / "s.json") << kScene;
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  fs::path path(const std::string& name) const { return dir_ / name; }
+
+  // Exit code and stderr of `candela <args>` run in the test directory.
+  int run(const std::string& args, std::string* err = nullptr) const {
+    const std::string command = "cd '" + dir_.string() + "' && '" + CANDELA_BINARY + "' " + args +
+                                " > /dev/null 2> stderr.txt < /dev/null";
+    const int status = std::system(command.c_str());
+    if (err) {
+      std::ifstream in(path("stderr.txt"));
+      std::ostringstream s;
+      s << in.rdbuf();
+      *err = s.str();
+    }
+    fs::remove(path("stderr.txt"));
+    return status != -1 && WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  }
+
+  fs::path dir_;
+};
+
+const candela::ExrChannel* channel(const candela::ExrChannels& exr, const std::string& name) {
+  for (const candela::ExrChannel& c : exr.channels)
+    if (c.name == name) return &c;
+  return nullptr;
+}
+
+TEST_F(CliAovTest, ExrHoldsThePassesAsLayersBesideTheImage) {
+  ASSERT_EQ(run("render s.json -q -o plain.exr"), 0);
+  ASSERT_EQ(run("render s.json -q -o out.exr --aov depth,normal,instance,material"), 0);
+  const candela::ExrChannels exr = candela::readExrChannels(path("out.exr").string());
+  std::vector<std::string> names;
+  for (const candela::ExrChannel& c : exr.channels) names.push_back(c.name);
+  EXPECT_EQ(names, (std::vector<std::string>{"B", "G", "R", "depth.Z", "instance.id",
+                                             "material.id", "normal.X", "normal.Y",
+                                             "normal.Z"}));
+  EXPECT_TRUE(channel(exr, "instance.id")->isUint);
+  EXPECT_FALSE(channel(exr, "depth.Z")->isUint);
+  const size_t centre = 7 * 15 + 7;
+  EXPECT_NEAR(channel(exr, "depth.Z")->pixels[centre], 4.0f, 1e-5f);
+  EXPECT_NEAR(channel(exr, "normal.Z")->pixels[centre], 1.0f, 1e-6f);
+  EXPECT_EQ(channel(exr, "instance.id")->pixels[centre], 1.0f);
+  EXPECT_EQ(channel(exr, "material.id")->pixels[centre], 1.0f);
+  EXPECT_TRUE(std::isinf(channel(exr, "depth.Z")->pixels[0]));  // the background
+  EXPECT_EQ(channel(exr, "instance.id")->pixels[0], 0.0f);
+  // The beauty channels are those of a render without passes.
+  const candela::ExrChannels plain = candela::readExrChannels(path("plain.exr").string());
+  for (const char* c : {"R", "G", "B"})
+    EXPECT_EQ(channel(exr, c)->pixels, channel(plain, c)->pixels) << c;
+}
+
+TEST_F(CliAovTest, PngGetsSiblingPfmFiles) {
+  ASSERT_EQ(run("render s.json -q -o img/out.png --aov depth,albedo,instance"), 0);
+  EXPECT_TRUE(fs::exists(path("img/out.png")));
+  const candela::ImageRGB depth = candela::readImage(path("img/out.depth.pfm").string());
+  EXPECT_NEAR(depth.at(7, 7).x, 4.0f, 1e-5f);
+  const candela::ImageRGB albedo = candela::readImage(path("img/out.albedo.pfm").string());
+  EXPECT_FLOAT_EQ(albedo.at(7, 7).y, 0.5f);
+  const candela::ImageRGB ids = candela::readImage(path("img/out.instance.pfm").string());
+  EXPECT_EQ(ids.at(7, 7).x, 1.0f);
+  EXPECT_EQ(ids.at(0, 0).x, 0.0f);
+  // Grey PFM for one channel: a header, then 4 bytes per pixel.
+  EXPECT_EQ(fs::file_size(path("img/out.depth.pfm")), std::string("Pf\n15 15\n-1.0\n").size() + 4 * 225);
+}
+
+TEST_F(CliAovTest, UnknownPassIsAUsageErrorListingTheKnownOnes) {
+  std::string err;
+  EXPECT_EQ(run("render s.json -o out.png --aov depth,nromal", &err), 2);
+  EXPECT_EQ(err,
+            "candela: error: --aov: unknown render pass \"nromal\"; the passes are: depth, "
+            "distance, normal, normal_camera, albedo, position, instance, material\n");
+  EXPECT_FALSE(fs::exists(path("out.png")));
+}
+
+TEST_F(CliAovTest, SiblingFilesNeverOverwriteAnInput) {
+  std::ofstream(path("out.depth.pfm")) << kScene;  // a scene file named like a pass file
+  std::string err;
+  EXPECT_EQ(run("render out.depth.pfm -o out.png --aov depth", &err), 2);
+  EXPECT_NE(err.find("out.depth.pfm: --aov would overwrite the scene file"), std::string::npos)
+      << err;
+  EXPECT_FALSE(fs::exists(path("out.png")));
+}
+
+TEST_F(CliAovTest, SequencesWritePassesPerFrame) {
+  ASSERT_EQ(run("render s.json s.json -q -o f/ --aov depth"), 0);
+  for (const char* name : {"f/frame_0000.png", "f/frame_0000.depth.pfm", "f/frame_0001.png",
+                           "f/frame_0001.depth.pfm"})
+    EXPECT_TRUE(fs::exists(path(name))) << name;
+  // A frame whose pass file is missing is rendered again.
+  fs::remove(path("f/frame_0001.depth.pfm"));
+  ASSERT_EQ(run("render s.json s.json -q -o f/ --aov depth"), 0);
+  EXPECT_TRUE(fs::exists(path("f/frame_0001.depth.pfm")));
+  ASSERT_EQ(run("render s.json -q -o g/ --format exr --aov depth"), 0);
+  const candela::ExrChannels exr = candela::readExrChannels(path("g/frame_0000.exr").string());
+  EXPECT_NE(channel(exr, "depth.Z"), nullptr);
+}
+
+}  // namespace
