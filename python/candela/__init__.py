@@ -105,9 +105,14 @@ class Scene:
 
     def render(self, spp: Optional[int] = None, seed: Optional[int] = None,
                backend: str = "auto", sample_range: Optional[Tuple[int, int]] = None,
-               threads: int = 0, aovs: Optional[Sequence[str]] = None
+               threads: int = 0, aovs: Optional[Sequence[str]] = None, denoise: bool = False
                ) -> np.ndarray | Dict[str, np.ndarray]:
         """Renders to a float32 array (height, width, 3) of linear radiance.
+
+        denoise: run Intel Open Image Denoise (PyPI `pyoidn`) on the result, guided by the
+        albedo and normal passes (candela.denoise); candela.denoise.DenoiserUnavailable where it
+        is not installed. With aovs as well, "image" is the denoised radiance and "noisy" the
+        render as it came.
 
         aovs: render passes to return as well (docs/aovs.md): "depth", "distance", "normal",
         "normal_camera", "albedo", "position", "instance", "material". With aovs the result is
@@ -132,7 +137,18 @@ class Scene:
             if isinstance(aovs, str):
                 raise TypeError("aovs must be a list of pass names, e.g. ['depth', 'normal']")
             aovs = [str(a) for a in aovs]
-        return self._core.render(spp, seed, backend, sample_range, threads, aovs)
+        if not denoise:
+            return self._core.render(spp, seed, backend, sample_range, threads, aovs)
+        from . import denoise as oidn
+        oidn._oidn()  # fail before rendering where the denoiser is missing
+        passes = list(dict.fromkeys((aovs or []) + ["albedo", "normal"]))
+        result = self._core.render(spp, seed, backend, sample_range, threads, passes)
+        clean = oidn.denoise(result["image"], result["albedo"], result["normal"])
+        if aovs is None:
+            return clean
+        result["noisy"] = result["image"]
+        result["image"] = clean
+        return {k: v for k, v in result.items() if k in ("image", "noisy") or k in aovs}
 
     def __repr__(self) -> str:
         frame = "" if self.frame_index is None else f", frame {self.frame_index}"
