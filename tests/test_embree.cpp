@@ -25,8 +25,8 @@ namespace {
 
 TEST(Embree, EngineIsAbsent) {
   EXPECT_FALSE(embreeAvailable());
-  EXPECT_EQ(resolveCpuEngine(CpuEngine::Auto, false, kEmbreeFromTriangles), CpuEngine::Bvh);
-  EXPECT_THROW(resolveCpuEngine(CpuEngine::Embree, false, 0), BackendError);
+  EXPECT_EQ(resolveCpuEngine(CpuEngine::Auto, false, kEmbreeFromTriangles, 0), CpuEngine::Bvh);
+  EXPECT_THROW(resolveCpuEngine(CpuEngine::Embree, false, 0, 0), BackendError);
   GTEST_SKIP() << "this build has no Embree (CANDELA_EMBREE): its engine tests do not apply";
 }
 
@@ -36,12 +36,18 @@ constexpr uint32_t kNone = 0xffffffffu;
 
 TEST(Embree, EngineChoice) {
   EXPECT_TRUE(embreeAvailable());
-  EXPECT_EQ(resolveCpuEngine(CpuEngine::Auto, false, kEmbreeFromTriangles), CpuEngine::Embree);
-  EXPECT_EQ(resolveCpuEngine(CpuEngine::Auto, false, kEmbreeFromTriangles - 1), CpuEngine::Bvh);
-  EXPECT_EQ(resolveCpuEngine(CpuEngine::Auto, true, kEmbreeFromTriangles), CpuEngine::Bvh);
-  EXPECT_EQ(resolveCpuEngine(CpuEngine::Bvh, false, kEmbreeFromTriangles), CpuEngine::Bvh);
-  EXPECT_EQ(resolveCpuEngine(CpuEngine::Embree, false, 0), CpuEngine::Embree);  // asked for
-  EXPECT_THROW(resolveCpuEngine(CpuEngine::Embree, true, 0), BackendError);
+  const uint64_t many = kEmbreeUpToSpheres + 1, few = kEmbreeUpToSpheres;
+  EXPECT_EQ(resolveCpuEngine(CpuEngine::Auto, false, kEmbreeFromTriangles, many),
+            CpuEngine::Embree);
+  EXPECT_EQ(resolveCpuEngine(CpuEngine::Auto, false, kEmbreeFromTriangles - 1, many),
+            CpuEngine::Bvh);
+  // Below the triangle count, few spheres still favour Embree; a scene of spheres alone never.
+  EXPECT_EQ(resolveCpuEngine(CpuEngine::Auto, false, 32, few), CpuEngine::Embree);
+  EXPECT_EQ(resolveCpuEngine(CpuEngine::Auto, false, 0, 0), CpuEngine::Bvh);
+  EXPECT_EQ(resolveCpuEngine(CpuEngine::Auto, true, kEmbreeFromTriangles, 0), CpuEngine::Bvh);
+  EXPECT_EQ(resolveCpuEngine(CpuEngine::Bvh, false, kEmbreeFromTriangles, 0), CpuEngine::Bvh);
+  EXPECT_EQ(resolveCpuEngine(CpuEngine::Embree, false, 0, many), CpuEngine::Embree);  // asked for
+  EXPECT_THROW(resolveCpuEngine(CpuEngine::Embree, true, 0, 0), BackendError);
   CpuEngine e;
   EXPECT_TRUE(cpuEngineFromName("EMBREE", &e));
   EXPECT_EQ(e, CpuEngine::Embree);

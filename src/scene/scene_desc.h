@@ -162,4 +162,11 @@ inline uint64_t meshTriangleCount(const SceneDesc& desc) {
   return count;
 }
 
+// The scene's spheres, sphere lights included (each is an emissive sphere).
+inline uint64_t sphereCount(const SceneDesc& desc) {
+  uint64_t count = desc.spheres.size();
+  for (const LightDesc& light : desc.lights) count += light.type == LightType::Sphere ? 1 : 0;
+  return count;
+}
+
 }  // namespace candela

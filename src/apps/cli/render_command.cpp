@@ -73,12 +73,13 @@ int renderStill(const RenderCommandOptions& options, SceneDesc desc, double load
 
 }  // namespace
 
-CpuEngine chooseCpuEngine(const RenderCommandOptions& options, uint64_t triangles) {
+CpuEngine chooseCpuEngine(const RenderCommandOptions& options, uint64_t triangles,
+                          uint64_t spheres) {
   if (options.noBvh && options.cpuEngine == CpuEngine::Embree)
     throw CliError(kExitUsage,
                    "--no-bvh tests every primitive with candela's own engine; it cannot be "
                    "combined with --cpu-engine embree");
-  return resolveCpuEngine(options.cpuEngine, options.noBvh, triangles);
+  return resolveCpuEngine(options.cpuEngine, options.noBvh, triangles, spheres);
 }
 
 std::vector<Aov> chooseAovs(const RenderCommandOptions& options) {
@@ -194,7 +195,7 @@ int renderStill(const RenderCommandOptions& options, SceneDesc desc, double load
   checkOutputFiles(outputs, inputFiles({desc}));
   std::string backendNote;
   const Backend backend = chooseBackend(options.backend, &backendNote);
-  const CpuEngine engine = chooseCpuEngine(options, meshTriangleCount(desc));
+  const CpuEngine engine = chooseCpuEngine(options, meshTriangleCount(desc), sphereCount(desc));
 
   applyOverrides(options, backend, engine, &desc);
   const auto flattenStart = std::chrono::steady_clock::now();

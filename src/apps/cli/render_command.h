@@ -23,8 +23,10 @@ CLI::App* addRenderCommand(CLI::App& app, RenderCommandOptions* options);
 int runRender(const RenderCommandOptions& options);
 
 // The CPU engine the options ask for, resolved by resolveCpuEngine for scenes of at most
-// `triangles` triangles; CliError (usage) for --no-bvh with --cpu-engine embree.
-CpuEngine chooseCpuEngine(const RenderCommandOptions& options, uint64_t triangles);
+// `triangles` triangles and `spheres` spheres; CliError (usage) for --no-bvh with --cpu-engine
+// embree.
+CpuEngine chooseCpuEngine(const RenderCommandOptions& options, uint64_t triangles,
+                          uint64_t spheres);
 
 // The passes --aov asks for, in its order; CliError (usage) naming an unknown one.
 std::vector<Aov> chooseAovs(const RenderCommandOptions& options);

@@ -187,9 +187,12 @@ int runSequence(const RenderCommandOptions& options, std::vector<SceneDesc> scen
   const std::vector<std::string> suffixes = frameSuffixes(format, aovs);
   std::string backendNote;
   const Backend backend = chooseBackend(options.backend, &backendNote);
-  uint64_t triangles = 0;
-  for (const SceneDesc& scene : scenes) triangles = std::max(triangles, meshTriangleCount(scene));
-  const CpuEngine engine = chooseCpuEngine(options, triangles);
+  uint64_t triangles = 0, spheres = 0;
+  for (const SceneDesc& scene : scenes) {
+    triangles = std::max(triangles, meshTriangleCount(scene));
+    spheres = std::max(spheres, sphereCount(scene));
+  }
+  const CpuEngine engine = chooseCpuEngine(options, triangles, spheres);
   for (SceneDesc& scene : scenes) applyOverrides(options, backend, engine, &scene);
 
   const int digits = frameDigits(count);

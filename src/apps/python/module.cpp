@@ -117,7 +117,8 @@ nb::object render(const Scene& scene, std::optional<uint32_t> spp, std::optional
   RenderCache& cache = *scene.cache;
   runInterruptible([&](const std::atomic<bool>& cancel) {
     std::lock_guard<std::mutex> lock(cache.mutex);
-    const CpuEngine engine = resolveCpuEngine(CpuEngine::Auto, false, meshTriangleCount(desc));
+    const CpuEngine engine =
+        resolveCpuEngine(CpuEngine::Auto, false, meshTriangleCount(desc), sphereCount(desc));
     if (!needsOwnBvh(chosen, engine)) desc.ownBvh = OwnBvh::None;
     const SceneData& data = cache.frames.prepare(desc);
     SceneChange change = cache.frames.change();

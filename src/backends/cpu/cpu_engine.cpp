@@ -39,10 +39,13 @@ bool embreeAvailable() {
 #endif
 }
 
-CpuEngine resolveCpuEngine(CpuEngine requested, bool flatBvh, uint64_t triangles) {
-  if (requested == CpuEngine::Auto)
-    return embreeAvailable() && !flatBvh && triangles >= kEmbreeFromTriangles ? CpuEngine::Embree
-                                                                              : CpuEngine::Bvh;
+CpuEngine resolveCpuEngine(CpuEngine requested, bool flatBvh, uint64_t triangles,
+                           uint64_t spheres) {
+  if (requested == CpuEngine::Auto) {
+    const bool favoured = triangles >= kEmbreeFromTriangles ||
+                          (triangles > 0 && spheres <= kEmbreeUpToSpheres);
+    return embreeAvailable() && !flatBvh && favoured ? CpuEngine::Embree : CpuEngine::Bvh;
+  }
   if (requested == CpuEngine::Embree) {
     if (!embreeAvailable())
       throw BackendError(
