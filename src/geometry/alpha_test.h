@@ -2,8 +2,9 @@
 #pragma once
 
 #include <cstdint>
-#include <cstring>
 
+#include "core/float_error.h"
+#include "core/rng.h"
 #include "core/texture.h"
 #include "geometry/geometry_view.h"
 #include "geometry/ray.h"
@@ -11,33 +12,14 @@
 
 namespace candela {
 
-namespace detail {
-
-CANDELA_HDI uint32_t floatBits(float f) {
-  uint32_t u;
-  memcpy(&u, &f, sizeof u);
-  return u;
-}
-
-// MurmurHash3's finaliser: every input bit affects every output bit.
-CANDELA_HDI uint32_t mixBits(uint32_t h) {
-  h ^= h >> 16;
-  h *= 0x85ebca6bu;
-  h ^= h >> 13;
-  h *= 0xc2b2ae35u;
-  return h ^ (h >> 16);
-}
-
-}  // namespace detail
-
 // A number in [0, 1) that is a pure function of the ray's origin and direction: the same ray
 // meets the same threshold in every engine and on every run.
 CANDELA_HDI float rayHash(const Ray& ray) {
   const float words[6] = {ray.origin.x,    ray.origin.y,    ray.origin.z,
                           ray.direction.x, ray.direction.y, ray.direction.z};
-  uint32_t h = 0x9e3779b9u;
-  for (int i = 0; i < 6; ++i) h = detail::mixBits(h ^ detail::floatBits(words[i]));
-  return float(h >> 8) * (1.0f / 16777216.0f);
+  uint64_t h = 0x9e3779b97f4a7c15ull;
+  for (int i = 0; i < 6; ++i) h = mix64(h ^ floatToBits(words[i]));
+  return toUnitFloat(h);
 }
 
 // The alpha of triangle `tri` at barycentrics (b1, b2), in [0, 1]; the scene must have masks.
