@@ -28,7 +28,8 @@ struct SceneData {
   Environment environment;
   // The map the env* arrays were made from: a frame that keeps it keeps them (host only).
   std::shared_ptr<const ImageRGB> environmentMap;
-  // The mean linear colour of each texture (host only): what a textured emitter's power weighs.
+  // The mean linear colour of each emission texture (host only; 1 for the others): what a
+  // textured emitter's power weighs.
   std::vector<Vec3> textureMeans;
   Camera camera;
   RenderSettings settings;

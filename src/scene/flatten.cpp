@@ -229,9 +229,15 @@ void addTextures(SceneData& s, const SceneDesc& desc) {
   }
   if (!s.textures.empty())
     for (int i = 0; i < 256; ++i) s.srgbToLinear.push_back(srgbToLinearValue(float(i) / 255.0f));
-  // Each texel's centre looks that texel up exactly.
+  // Only emission textures weigh light selection: colour textures, the usual and the large ones,
+  // are not walked on every refresh. Each texel's centre looks that texel up exactly.
+  std::vector<bool> lights(s.textures.size(), false);
+  for (const Material& m : s.materials)
+    if (m.emissionTexture.index >= 0) lights[m.emissionTexture.index] = true;
   const TexturePool pool = s.view().texturePool();
+  s.textureMeans.assign(s.textures.size(), Vec3(1.0f));
   for (uint32_t i = 0; i < s.textures.size(); ++i) {
+    if (!lights[i]) continue;
     const Texture& t = s.textures[i];
     TextureRef ref;
     ref.index = int32_t(i);
@@ -243,7 +249,7 @@ void addTextures(SceneData& s, const SceneDesc& desc) {
         for (int k = 0; k < 3; ++k) sum[k] += c[k];
       }
     const double n = double(t.width) * t.height;
-    s.textureMeans.push_back(Vec3(float(sum[0] / n), float(sum[1] / n), float(sum[2] / n)));
+    s.textureMeans[i] = Vec3(float(sum[0] / n), float(sum[1] / n), float(sum[2] / n));
   }
   const auto masked = [](const Material& m) { return isMasked(m.alpha); };
   if (std::any_of(s.materials.begin(), s.materials.end(), masked))
