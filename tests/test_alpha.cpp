@@ -31,7 +31,7 @@ std::vector<CpuEngine> engines() {
 }
 
 // The mean radiance (channel 0) of the view, with the blocker's MTL statements `blocker`.
-double renderMean(const std::string& blocker, CpuEngine engine, const test::TextureDir& dir) {
+double renderMean(const std::string& blocker, CpuEngine engine, const test::TempDir& dir) {
   dir.write("scene.mtl", "newmtl floor\nKd 0.5 0.5 0.5\nnewmtl blocker\nKd 0 0 0\n" + blocker);
   dir.write("scene.obj",
             "mtllib scene.mtl\n"
@@ -57,7 +57,7 @@ double renderMean(const std::string& blocker, CpuEngine engine, const test::Text
 
 class Alpha : public ::testing::TestWithParam<CpuEngine> {
  protected:
-  test::TextureDir dir;
+  test::TempDir dir;
 };
 
 TEST_P(Alpha, ZeroIsNoSurfaceOneIsOpaque) {

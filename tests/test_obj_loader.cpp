@@ -13,27 +13,12 @@
 #include "scene/read/obj_loader.h"
 #include "scene/read/polygon_triangulation.h"
 #include "scene/scene_error.h"
+#include "temp_dir.h"
 
 namespace candela {
 namespace {
 
-// A fresh folder under the system's temp folder, removed with everything in it at the end.
-class TempDir {
- public:
-  TempDir() {
-    std::string pattern = (std::filesystem::temp_directory_path() / "candela-obj-XXXXXX").string();
-    path_ = mkdtemp(pattern.data());
-  }
-  ~TempDir() { std::filesystem::remove_all(path_); }
-  std::string write(const std::string& name, const std::string& contents) const {
-    const std::filesystem::path file = path_ / name;
-    std::ofstream(file, std::ios::binary) << contents;
-    return file.string();
-  }
-
- private:
-  std::filesystem::path path_;
-};
+using test::TempDir;
 
 class ObjLoader : public ::testing::Test {
  protected:

@@ -142,7 +142,7 @@ TEST(SphereUv, EquirectangularWithVUp) {
 
 // Corners that pair a position with another uv (a seam) or normal become separate vertices.
 TEST(ObjUv, VtIsReadAndSeamsSplitVertices) {
-  test::TextureDir dir;
+  test::TempDir dir;
   SceneDesc desc;
   TextureLoader loader(desc.textures, dir.path());
   const std::string obj = dir.write("q.obj",
@@ -187,7 +187,7 @@ TEST(ObjUv, VtIsReadAndSeamsSplitVertices) {
 // centres fall on the two texel centres (u = 0.25 and 0.75), under a uniform white environment
 // with max_depth 1: each column's radiance is its texel's albedo.
 TEST(TextureRender, QuadShowsEachTexelsAlbedoInAFurnace) {
-  test::TextureDir dir;
+  test::TempDir dir;
   ASSERT_TRUE(test::writeTestPng(dir.file("two.png"), 2, 1, 3, {40, 160, 230, 250, 120, 20}));
   dir.write("quad.obj",
             "v -1 -9 0\nv 1 -9 0\nv 1 9 0\nv -1 9 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
@@ -212,7 +212,7 @@ TEST(TextureRender, QuadShowsEachTexelsAlbedoInAFurnace) {
 // An MTL map_Ke makes the face an emitter whose radiance is Ke times the texture: seen directly,
 // each texel's column shows 2 x its colour.
 TEST(TextureRender, MapKeEmitsTheTextureSeenDirectly) {
-  test::TextureDir dir;
+  test::TempDir dir;
   ASSERT_TRUE(test::writeTestPng(dir.file("two.png"), 2, 1, 3, {40, 160, 230, 250, 120, 20}));
   dir.write("lamp.mtl", "newmtl lamp\nKe 2 2 2\nmap_Ke two.png\n");
   dir.write("quad.obj",
@@ -235,7 +235,7 @@ TEST(TextureRender, MapKeEmitsTheTextureSeenDirectly) {
 // untextured quads of its two colours do: the same radiance at every point, so the same image up
 // to noise. This checks the light samples' texture lookups and the texture's share in the power.
 TEST(TextureRender, MapKeLightsLikeTheSameColoursUntextured) {
-  test::TextureDir dir;
+  test::TempDir dir;
   ASSERT_TRUE(test::writeTestPng(dir.file("two.png"), 2, 1, 3, {255, 60, 0, 0, 60, 255}));
   dir.write("lamp.mtl", "newmtl lamp\nKe 3 3 3\nmap_Ke two.png\n");
   // The ceiling at y = 2, facing down (counter-clockwise seen from below), u along x.
@@ -284,7 +284,7 @@ std::string loadError(const std::string& json, const std::string& baseDir) {
 }
 
 TEST(TextureErrors, JsonMessagesNameThePath) {
-  test::TextureDir dir;
+  test::TempDir dir;
   ASSERT_TRUE(test::writeTestPng(dir.file("ok.png"), 1, 1, 3, {1, 2, 3}));
   const auto scene = [](const std::string& material) {
     return R"({"camera": {}, "spheres": [{"position": [0, 0, 0], "radius": 1, "material": )" +
@@ -319,7 +319,7 @@ TEST(TextureErrors, JsonMessagesNameThePath) {
 }
 
 TEST(TextureErrors, MtlMessagesNameFileAndLine) {
-  test::TextureDir dir;
+  test::TempDir dir;
   SceneDesc desc;
   TextureLoader loader(desc.textures, dir.path());
   const std::string obj =
@@ -347,7 +347,7 @@ TEST(TextureErrors, MtlMessagesNameFileAndLine) {
 }
 
 TEST(TextureLoading, EachFileOnceWithScaleFromMtl) {
-  test::TextureDir dir;
+  test::TempDir dir;
   ASSERT_TRUE(test::writeTestPng(dir.file("t.png"), 1, 1, 4, {1, 2, 3, 4}));
   ASSERT_TRUE(test::writeTestPng(dir.file("g.png"), 1, 1, 1, {7}));
   dir.write("m.mtl",
@@ -377,7 +377,7 @@ TEST(TextureLoading, EachFileOnceWithScaleFromMtl) {
 
 // The command line: a bad texture exits 2 with one line and writes nothing.
 TEST(TextureCli, MissingTextureExitsTwoAndWritesNothing) {
-  test::TextureDir dir;
+  test::TempDir dir;
   dir.write("s.json", R"({"camera": {"width": 4, "height": 4},
     "spheres": [{"position": [0, 0, -3], "radius": 1, "color": {"texture": "gone.png"}}]})");
   const std::string command = "cd '" + dir.path() + "' && '" + CANDELA_BINARY +
