@@ -73,6 +73,16 @@ std::string encodeExr(const ImageRGB& image, const std::vector<ImageLayer>& laye
   }
 }
 
+// The data window's size, refused beyond 2^20 a side (a corrupt header could ask for any size).
+static void checkedWindowSize(const Imath::Box2i& window, uint32_t* width, uint32_t* height) {
+  const long long w = (long long)window.max.x - window.min.x + 1;
+  const long long h = (long long)window.max.y - window.min.y + 1;
+  if (w <= 0 || h <= 0 || w > (1 << 20) || h > (1 << 20))
+    throw ImageWriteError("unsupported EXR data window");
+  *width = uint32_t(w);
+  *height = uint32_t(h);
+}
+
 ExrChannels decodeExrChannels(const std::string& bytes) {
   try {
     Imf::StdISStream stream;
@@ -80,8 +90,7 @@ ExrChannels decodeExrChannels(const std::string& bytes) {
     Imf::InputFile file(stream);
     const Imath::Box2i window = file.header().dataWindow();
     ExrChannels out;
-    out.width = uint32_t(window.max.x - window.min.x + 1);
-    out.height = uint32_t(window.max.y - window.min.y + 1);
+    checkedWindowSize(window, &out.width, &out.height);
     Imf::FrameBuffer frame;
     const Imf::ChannelList& list = file.header().channels();
     for (auto it = list.begin(); it != list.end(); ++it)
@@ -93,6 +102,8 @@ ExrChannels decodeExrChannels(const std::string& bytes) {
     file.setFrameBuffer(frame);
     file.readPixels(window.min.y, window.max.y);
     return out;
+  } catch (const ImageWriteError&) {
+    throw;
   } catch (const std::exception& e) {
     throw ImageWriteError(std::string("cannot decode EXR: ") + e.what());
   }
@@ -104,12 +115,10 @@ ImageRGB decodeExr(const std::string& bytes) {
     stream.str(bytes);
     Imf::InputFile file(stream);
     const Imath::Box2i window = file.header().dataWindow();
-    const long long width = (long long)window.max.x - window.min.x + 1;
-    const long long height = (long long)window.max.y - window.min.y + 1;
-    if (width <= 0 || height <= 0 || width > (1 << 20) || height > (1 << 20))
-      throw ImageWriteError("unsupported EXR data window");
+    uint32_t width, height;
+    checkedWindowSize(window, &width, &height);
 
-    ImageRGB image{uint32_t(width), uint32_t(height)};
+    ImageRGB image{width, height};
     const size_t xStride = 3 * sizeof(float), yStride = xStride * image.width;
     Imf::FrameBuffer frame;
     for (int c = 0; c < 3; ++c) {
