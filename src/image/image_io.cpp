@@ -46,6 +46,13 @@ bool isSupportedImagePath(const std::string& path) {
   return format != ImageFormat::Unknown && format != ImageFormat::Hdr;
 }
 
+bool isExrPath(const std::string& path) { return formatOf(path) == ImageFormat::Exr; }
+
+bool isFloatImagePath(const std::string& path) {
+  const ImageFormat format = formatOf(path);
+  return format == ImageFormat::Exr || format == ImageFormat::Pfm || format == ImageFormat::Hdr;
+}
+
 void writeImage(const std::string& path, const ImageRGB& image, const OutputDesc& output) {
   writeFileAtomically(path, encodeImage(path, image, output));
 }

@@ -22,6 +22,11 @@ class ImageWriteError : public std::runtime_error {
 // True when `path` ends in an extension writeImage understands (case-insensitive).
 bool isSupportedImagePath(const std::string& path);
 
+// Whether `path` names an EXR file, and whether it names a float (linear) image: EXR, PFM or
+// Radiance .hdr; both by its extension, in any case.
+bool isExrPath(const std::string& path);
+bool isFloatImagePath(const std::string& path);
+
 // Throws ImageWriteError (naming the path and the reason) on failure; leaves no partial file.
 void writeImage(const std::string& path, const ImageRGB& image, const OutputDesc& output);
 

@@ -1,8 +1,6 @@
 // Pass files beside an image; see pass_files.h.
 #include "apps/cli/pass_files.h"
 
-#include <algorithm>
-#include <cctype>
 #include <filesystem>
 
 #include "image/image_io.h"
@@ -13,13 +11,6 @@ namespace candela::cli {
 
 namespace {
 
-bool isExr(const std::string& path) {
-  std::string ext = fs::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return char(std::tolower(c)); });
-  return ext == ".exr";
-}
-
 std::string siblingPath(const std::string& image, const char* pass) {
   const fs::path path(image);
   return (path.parent_path() / (path.stem().string() + "." + pass + ".pfm")).string();
@@ -29,7 +20,7 @@ std::string siblingPath(const std::string& image, const char* pass) {
 
 std::vector<std::string> passFilePaths(const std::string& image, const std::vector<Aov>& aovs) {
   std::vector<std::string> paths;
-  if (isExr(image)) return paths;
+  if (isExrPath(image)) return paths;
   for (Aov aov : aovs) paths.push_back(siblingPath(image, aovName(aov)));
   return paths;
 }
@@ -39,7 +30,7 @@ std::vector<std::pair<std::string, std::string>> encodeWithPasses(
     const std::vector<Aov>& aovs, const OutputDesc& output) {
   if (aovs.empty()) return {{image, encodeImage(image, result.image, output)}};
   const std::vector<ImageLayer> layers = makeAovLayers(scene, aovs, result.aovs);
-  if (isExr(image)) return {{image, encodeLayeredExr(image, result.image, layers)}};
+  if (isExrPath(image)) return {{image, encodeLayeredExr(image, result.image, layers)}};
   std::vector<std::pair<std::string, std::string>> files = {
       {image, encodeImage(image, result.image, output)}};
   const std::vector<std::string> paths = passFilePaths(image, aovs);

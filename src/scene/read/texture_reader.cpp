@@ -3,7 +3,6 @@
 
 #include <cmath>
 #include <exception>
-#include <cctype>
 #include <filesystem>
 
 #include "image/image_io.h"
@@ -14,12 +13,6 @@ namespace {
 
 // Texture offsets are 32-bit element indices: a texture may hold at most 2^28 texels.
 constexpr uint64_t kMaxTexels = uint64_t(1) << 28;
-
-bool isFloatFile(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
-  return ext == ".exr" || ext == ".pfm" || ext == ".hdr";
-}
 
 std::string texelProblem(const ImageRGB& image) {
   for (uint32_t y = 0; y < image.height; ++y)
@@ -37,7 +30,7 @@ std::string texelProblem(const ImageRGB& image) {
 TextureDesc decode(const std::string& path, TextureUse use, bool* hasAlpha) {
   TextureDesc t;
   t.file = path;
-  if (isFloatFile(path)) {
+  if (isFloatImagePath(path)) {
     const ImageRGB image = readImage(path);
     const std::string problem = texelProblem(image);
     if (!problem.empty()) throw SceneError(problem);
