@@ -36,13 +36,16 @@ constexpr uint32_t kNone = 0xffffffffu;
 
 TEST(Embree, EngineChoice) {
   EXPECT_TRUE(embreeAvailable());
-  const uint64_t many = kEmbreeUpToSpheres + 1, few = kEmbreeUpToSpheres;
+  const uint64_t many = kSphereBlocksUpTo + 1, few = kSphereBlocksUpTo;
   EXPECT_EQ(resolveCpuEngine(CpuEngine::Auto, false, kEmbreeFromTriangles, many),
             CpuEngine::Embree);
   EXPECT_EQ(resolveCpuEngine(CpuEngine::Auto, false, kEmbreeFromTriangles - 1, many),
             CpuEngine::Bvh);
-  // Below the triangle count, few spheres still favour Embree; a scene of spheres alone never.
+  // Below the triangle count, few spheres (in blocks) still favour Embree, with or without
+  // triangles; an empty scene goes to the own BVH.
   EXPECT_EQ(resolveCpuEngine(CpuEngine::Auto, false, 32, few), CpuEngine::Embree);
+  EXPECT_EQ(resolveCpuEngine(CpuEngine::Auto, false, 0, few), CpuEngine::Embree);
+  EXPECT_EQ(resolveCpuEngine(CpuEngine::Auto, false, 0, many), CpuEngine::Bvh);
   EXPECT_EQ(resolveCpuEngine(CpuEngine::Auto, false, 0, 0), CpuEngine::Bvh);
   EXPECT_EQ(resolveCpuEngine(CpuEngine::Auto, true, kEmbreeFromTriangles, 0), CpuEngine::Bvh);
   EXPECT_EQ(resolveCpuEngine(CpuEngine::Bvh, false, kEmbreeFromTriangles, 0), CpuEngine::Bvh);
@@ -54,12 +57,13 @@ TEST(Embree, EngineChoice) {
   EXPECT_FALSE(cpuEngineFromName("optix", &e));
 }
 
-// Random spheres (some large, so that rays start inside them) and random triangles in a box.
-SceneData randomScene(uint32_t seed) {
+// Random spheres (some large, so that rays start inside them) and random triangles in a box;
+// 40 spheres go into the engine's sphere BVH, up to kSphereBlocksUpTo into its sphere blocks.
+SceneData randomScene(uint32_t seed, int sphereCount = 40) {
   std::mt19937 gen(seed);
   std::uniform_real_distribution<float> u(-4.0f, 4.0f), r(0.05f, 1.5f);
   SceneData s;
-  for (int i = 0; i < 40; ++i) s.spheres.push_back(Sphere{Vec3(u(gen), u(gen), u(gen)), r(gen), 0});
+  for (int i = 0; i < sphereCount; ++i) s.spheres.push_back(Sphere{Vec3(u(gen), u(gen), u(gen)), r(gen), 0});
   for (int i = 0; i < 400; ++i) {
     const Vec3 a(u(gen), u(gen), u(gen));
     const uint32_t first = uint32_t(s.positions.size());
@@ -74,8 +78,8 @@ SceneData randomScene(uint32_t seed) {
 // to the rounding of the two triangle tests: where the nearest primitive differs, the two hits
 // lie at the same distance (two primitives crossing there).
 TEST(Embree, HitsMatchBruteForceRayByRay) {
-  for (uint32_t seed : {1u, 2u, 3u}) {
-    const SceneData scene = randomScene(seed);
+  for (uint32_t seed : {1u, 2u, 3u, 4u}) {
+    const SceneData scene = randomScene(seed, seed == 4 ? 10 : 40);
     const SceneView view = scene.view();
     EmbreeScene embree;
     embree.update(scene, SceneChange::Structure);

@@ -43,7 +43,7 @@ CpuEngine resolveCpuEngine(CpuEngine requested, bool flatBvh, uint64_t triangles
                            uint64_t spheres) {
   if (requested == CpuEngine::Auto) {
     const bool favoured = triangles >= kEmbreeFromTriangles ||
-                          (triangles > 0 && spheres <= kEmbreeUpToSpheres);
+                          (triangles + spheres > 0 && spheres <= kSphereBlocksUpTo);
     return embreeAvailable() && !flatBvh && favoured ? CpuEngine::Embree : CpuEngine::Bvh;
   }
   if (requested == CpuEngine::Embree) {

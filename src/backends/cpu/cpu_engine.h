@@ -2,7 +2,10 @@
 // the CPU's widest SIMD) or candela's own 4-wide BVH, the one the CUDA backend runs.
 #pragma once
 
+#include <cstdint>
 #include <string>
+
+#include "backends/cpu/sphere_blocks.h"
 
 namespace candela {
 
@@ -18,13 +21,13 @@ bool cpuEngineFromName(const std::string& name, CpuEngine* engine);
 bool embreeAvailable();
 
 // Auto picks Embree for scenes of at least kEmbreeFromTriangles triangles, and for smaller scenes
-// with triangles and at most kEmbreeUpToSpheres spheres. With Embree the spheres stay in an own
-// BVH traced first, so a ray pays two traversals: the default room of nine spheres (six of them
-// its walls) and a 4,320-triangle knot took 1.25x the CPU time with Embree, while the sky scene
-// (four spheres, the same knot) took 0.85x, the Cornell box (32 triangles) 0.95x and scenes of 12k
-// to 8.5M triangles 0.5-0.83x (docs/performance.md).
+// of at most kSphereBlocksUpTo spheres (backends/cpu/sphere_blocks.h), which the Embree engine
+// tests four at a time: there, on one core, the default room (nine spheres, a 4,320-triangle
+// knot) took 0.86x the own BVH's CPU time, the same room without the knot 0.67x, 32 spheres 0.81x,
+// the Cornell box (32 triangles) 0.95x and scenes of 12k to 8.5M triangles 0.5-0.83x. With more
+// spheres the Embree engine puts them in a BVH of their own, traced before Embree's, and the own
+// BVH, one traversal for all, is as fast or faster (docs/performance.md).
 constexpr uint64_t kEmbreeFromTriangles = 10000;
-constexpr uint64_t kEmbreeUpToSpheres = 4;
 
 // Resolves Auto to Embree where the build has it and the scene's `triangles` and `spheres` (sphere
 // lights included) favour it as above, else to the own BVH; `flatBvh` (--no-bvh, which asks for

@@ -66,12 +66,13 @@ EmbreeScene::~EmbreeScene() {
 
 size_t EmbreeScene::bytes() const {
   return size_t(std::max(0LL, embreeBytes.load())) + sphereNodes_.size() * sizeof(BvhNode) +
-         spherePrims_.size() * sizeof(uint32_t);
+         spherePrims_.size() * sizeof(uint32_t) + sphereBlocks_.bytes();
 }
 
 void EmbreeScene::update(const SceneData& scene, SceneChange change) {
   if (change == SceneChange::Structure ||
-      (scene_ == nullptr && triangles_ == nullptr && sphereNodes_.empty())) {
+      (scene_ == nullptr && triangles_ == nullptr && sphereNodes_.empty() &&
+       sphereBlocks_.view().blockCount == 0)) {
     build(scene);
   } else if (change == SceneChange::Motion) {
     refit(scene);
@@ -94,11 +95,18 @@ void EmbreeScene::updateMasks(const SceneData& scene) {
   filtered_ = masked;
 }
 
-void EmbreeScene::buildSphereBvh(const SceneData& scene) {
+void EmbreeScene::placeSpheres(const SceneData& scene) {
   sphereCount_ = uint32_t(scene.spheres.size());
-  BvhBuildResult bvh = buildBvh(scene.spheres.data(), sphereCount_, nullptr, nullptr, 0);
-  sphereNodes_ = std::move(bvh.wideNodes);
-  spherePrims_ = std::move(bvh.primIndices);
+  sphereNodes_.clear();
+  spherePrims_.clear();
+  if (sphereCount_ <= kSphereBlocksUpTo) {
+    sphereBlocks_.assign(scene.spheres.data(), sphereCount_);
+  } else {
+    sphereBlocks_.assign(nullptr, 0);
+    BvhBuildResult bvh = buildBvh(scene.spheres.data(), sphereCount_, nullptr, nullptr, 0);
+    sphereNodes_ = std::move(bvh.wideNodes);
+    spherePrims_ = std::move(bvh.primIndices);
+  }
   sphereView_ = GeometryView();
   sphereView_.spheres = scene.spheres.data();
   sphereView_.sphereCount = sphereCount_;
@@ -115,7 +123,7 @@ void EmbreeScene::build(const SceneData& scene) {
   triangles_ = nullptr;
   lastError.clear();
   const auto start = std::chrono::steady_clock::now();
-  buildSphereBvh(scene);
+  placeSpheres(scene);
   buildSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (scene.triangles.empty()) return;
 
@@ -145,7 +153,7 @@ void EmbreeScene::build(const SceneData& scene) {
 void EmbreeScene::refit(const SceneData& scene) {
   lastError.clear();
   const auto start = std::chrono::steady_clock::now();
-  buildSphereBvh(scene);
+  placeSpheres(scene);
   buildSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!triangles_) return;
   void* vertices = rtcGetGeometryBufferData(triangles_, RTC_BUFFER_TYPE_VERTEX, 0);

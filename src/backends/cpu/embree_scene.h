@@ -3,8 +3,9 @@
 //
 // Embree builds its own BVH over the triangles (binned SAH at RTC_BUILD_QUALITY_MEDIUM:
 // docs/performance.md), from a copy of the vertices and the scene's own triangle array, shared.
-// The spheres get a BVH of candela's own. A frame whose primitives moved (SceneChange::Motion)
-// rewrites the vertices and refits Embree's BVH, and rebuilds the spheres' (they are few); a new
+// The spheres stay candela's: in blocks of four when they are few, else in a BVH of their own. A
+// frame whose primitives moved (SceneChange::Motion) rewrites the vertices and refits Embree's
+// BVH, and places the spheres anew (they are few); a new
 // structure rebuilds both. Alpha-masked materials (geometry/alpha_mask.h) get intersection and
 // occlusion filters on the triangles that apply the same test as candela's own traversal.
 // Embree picks the widest SIMD the CPU has at run time (SSE2 up to
@@ -34,7 +35,9 @@ class EmbreeScene {
   // last; the first call takes everything. Throws BackendError when Embree fails (out of memory).
   void update(const SceneData& scene, SceneChange change);
 
-  EmbreeTracer tracer() const { return EmbreeTracer{scene_, sphereView_, sphereCount_}; }
+  EmbreeTracer tracer() const {
+    return EmbreeTracer{scene_, sphereView_, sphereBlocks_.view(), sphereCount_};
+  }
   // Seconds the last update spent building or refitting Embree's BVH.
   double buildSeconds() const { return buildSeconds_; }
   // Bytes the engine holds: what Embree has now for this process (its BVH, its vertex copy; from
@@ -44,7 +47,7 @@ class EmbreeScene {
  private:
   void build(const SceneData& scene);
   void refit(const SceneData& scene);
-  void buildSphereBvh(const SceneData& scene);
+  void placeSpheres(const SceneData& scene);
   void commit();
   void updateMasks(const SceneData& scene);
 
@@ -53,6 +56,7 @@ class EmbreeScene {
   RTCGeometry triangles_ = nullptr;
   std::vector<BvhNode> sphereNodes_;
   std::vector<uint32_t> spherePrims_;
+  SphereBlocks sphereBlocks_;
   GeometryView sphereView_;  // the spheres of the scene given last, with sphereNodes_
   uint32_t sphereCount_ = 0;
   double buildSeconds_ = 0;

@@ -1,10 +1,11 @@
 // EmbreeTracer: the CPU's ray engine on Intel Embree 3 (a tracer in the sense of
 // geometry/bvh_tracer.h), over an EmbreeScene (backends/cpu/embree_scene.h).
 //
-// Embree holds the triangles, as one triangle geometry; the spheres stay in a BVH of candela's own
-// over the spheres alone, traced inline first, so a ray pays no callback per sphere (Embree's user
-// geometry cost the sphere-walled default room a fifth of its speed) and a sphere hit shortens
-// the ray Embree then traces. Hits carry the primitive numbering of geometry/geometry_view.h, so
+// Embree holds the triangles, as one triangle geometry; the spheres stay candela's own, traced
+// inline first, so a ray pays no callback per sphere (Embree's user geometry cost the
+// sphere-walled default room a fifth of its speed) and a sphere hit shortens the ray Embree then
+// traces. A few spheres are tested four at a time (backends/cpu/sphere_blocks.h), more through a
+// BVH over the spheres alone. Hits carry the primitive numbering of geometry/geometry_view.h, so
 // the integrator cannot tell the engines apart. A shadow ray's skipped triangle is rejected by a
 // context filter that reads it from the intersection context.
 #pragma once
@@ -13,6 +14,7 @@
 
 #include <cstdint>
 
+#include "backends/cpu/sphere_blocks.h"
 #include "geometry/bvh_traverse.h"
 
 namespace candela {
@@ -32,12 +34,13 @@ void rejectMaskedHit(const RTCFilterFunctionNArguments* args);
 
 struct EmbreeTracer {
   RTCScene triangles;    // null when the scene has none
-  GeometryView spheres;  // the spheres and their own BVH (no triangles)
+  GeometryView spheres;  // the spheres and, when they are not in blocks, their BVH (no triangles)
+  SphereBlocksView sphereBlocks;  // the spheres in blocks of four, when they are few; else empty
   uint32_t sphereCount;
 
   bool closest(const Ray& ray, Hit* hit) const {
     if (!isFiniteRay(ray)) return false;  // Embree's behaviour on NaN rays is undefined
-    const bool sphereFound = intersectClosest(spheres, ray, hit);
+    const bool sphereFound = closestSphereOf(ray, hit);
     if (!triangles) return sphereFound;
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
@@ -55,7 +58,9 @@ struct EmbreeTracer {
 
   bool occluded(const Ray& ray, uint32_t skipPrim) const {
     if (!isFiniteRay(ray)) return false;
-    if (intersectAny(spheres, ray, skipPrim)) return true;
+    if (sphereBlocks.blockCount != 0 ? anySphere(sphereBlocks, ray, skipPrim)
+                                     : intersectAny(spheres, ray, skipPrim))
+      return true;
     if (!triangles) return false;
     EmbreeSkipContext context;
     rtcInitIntersectContext(&context.base);
@@ -70,6 +75,13 @@ struct EmbreeTracer {
   }
 
  private:
+  bool closestSphereOf(const Ray& ray, Hit* hit) const {
+    if (sphereBlocks.blockCount == 0) return intersectClosest(spheres, ray, hit);
+    if (!closestSphere(sphereBlocks, ray, ray.tMax, &hit->t, &hit->prim)) return false;
+    hit->b1 = hit->b2 = 0.0f;
+    return true;
+  }
+
   static void setRay(const Ray& ray, float tMax, RTCRay* r) {
     r->org_x = ray.origin.x;
     r->org_y = ray.origin.y;
