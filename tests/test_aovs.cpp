@@ -75,7 +75,7 @@ TEST(Aovs, UnknownPassNamesAreRefusedWithTheKnownOnes) {
   } catch (const std::invalid_argument& e) {
     EXPECT_EQ(std::string(e.what()),
               "unknown render pass \"normals\"; the passes are: depth, distance, normal, "
-              "normal_camera, albedo, position, instance, material");
+              "normal_camera, albedo, position, instance, material, flow");
   }
   const std::vector<Aov> aovs = parseAovList(" normal , depth,normal");
   ASSERT_EQ(aovs.size(), 2u);

@@ -108,7 +108,7 @@ TEST_F(CliAovTest, UnknownPassIsAUsageErrorListingTheKnownOnes) {
   EXPECT_EQ(run("render s.json -o out.png --aov depth,nromal", &err), 2);
   EXPECT_EQ(err,
             "candela: error: --aov: unknown render pass \"nromal\"; the passes are: depth, "
-            "distance, normal, normal_camera, albedo, position, instance, material\n");
+            "distance, normal, normal_camera, albedo, position, instance, material, flow\n");
   EXPECT_FALSE(fs::exists(path("out.png")));
 }
 
@@ -133,6 +133,44 @@ TEST_F(CliAovTest, SequencesWritePassesPerFrame) {
   ASSERT_EQ(run("render s.json -q -o g/ --format exr --aov depth"), 0);
   const candela::ExrChannels exr = candela::readExrChannels(path("g/frame_0000.exr").string());
   EXPECT_NE(channel(exr, "depth.Z"), nullptr);
+}
+
+// The flow pass of an animation: the sphere moves right by 0.25 a frame, so its centre pixel's
+// flow is f 0.25 / 4 (its nearest point is 4 from the camera) in every frame but the last, after
+// which nothing moves; as a PFM it is three channels, the third 0, as flow datasets write it.
+TEST_F(CliAovTest, AnimationsWriteTheirFlowPerFrame) {
+  std::ofstream(path("moving.json")) << R"({
+    "camera": {"width": 15, "height": 15, "fov": 30, "spp": 1, "position": [0, 0, 5]},
+    "render": {"antialiasing": false},
+    "spheres": [{"id": "ball", "position": [0, 0, 0], "radius": 1, "color": 0.5}],
+    "lights": [{"position": [0, 3, 3], "intensity": 100}],
+    "animation": {"frames": 3, "tracks": [
+      {"target": "ball", "property": "position", "keys": [[0, [0, 0, 0]], [2, [0.5, 0, 0]]]}]}
+  })";
+  ASSERT_EQ(run("render moving.json -q -o f/ --format exr --aov flow"), 0);
+  const float f = 7.5f / std::tan(15.0f * 3.14159265f / 180.0f);
+  const candela::ExrChannels exr = candela::readExrChannels(path("f/frame_0000.exr").string());
+  const candela::ExrChannel* x = channel(exr, "flow.X");
+  ASSERT_NE(x, nullptr);
+  ASSERT_NE(channel(exr, "flow.Y"), nullptr);
+  EXPECT_NEAR(x->pixels[7 * 15 + 7], f * 0.25f / 4.0f, 1e-4f);
+  const candela::ExrChannels last = candela::readExrChannels(path("f/frame_0002.exr").string());
+  EXPECT_EQ(channel(last, "flow.X")->pixels[7 * 15 + 7], 0.0f);
+
+  ASSERT_EQ(run("render moving.json -q -o g/ --aov flow"), 0);
+  // In frame 1 the sphere is 0.25 off the axis: the centre pixel's point lies deeper.
+  const candela::ImageRGB pfm = candela::readImage(path("g/frame_0001.flow.pfm").string());
+  EXPECT_NEAR(pfm.at(7, 7).x, f * 0.25f / (5.0f - std::sqrt(1.0f - 0.0625f)), 1e-4f);
+  EXPECT_EQ(pfm.at(7, 7).z, 0.0f);
+}
+
+TEST_F(CliAovTest, FlowOfSeveralSceneFilesIsAUsageError) {
+  std::string err;
+  EXPECT_EQ(run("render s.json s.json -o f/ --aov flow", &err), 2);
+  EXPECT_NE(err.find("--aov flow: the flow pass is the motion of one animated scene"),
+            std::string::npos)
+      << err;
+  EXPECT_FALSE(fs::exists(path("f/frame_0000.png")));
 }
 
 }  // namespace

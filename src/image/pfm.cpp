@@ -49,13 +49,17 @@ std::string encodePfm(const ImageRGB& image) {
 
 std::string encodePfm(const ImageLayer& layer) {
   const size_t n = layer.channels.size();
-  if (n != 1 && n != 3) throw ImageWriteError("PFM holds 1 or 3 channels, not " + std::to_string(n));
+  if (n < 1 || n > 3)
+    throw ImageWriteError("PFM holds 1 or 3 channels, not " + std::to_string(n));
+  // Two channels (a flow field) go out as three with a zero third, as flow datasets' PFMs do.
+  const size_t written = n == 1 ? 1 : 3;
   std::string out = std::string(n == 1 ? "Pf" : "PF") + "\n" + std::to_string(layer.width) + " " +
                     std::to_string(layer.height) + "\n-1.0\n";
-  out.reserve(out.size() + 4 * layer.pixels.size());
+  out.reserve(out.size() + 4 * written * size_t(layer.width) * layer.height);
   for (uint32_t row = layer.height; row-- > 0;) {
     const float* p = layer.pixels.data() + n * layer.width * row;
-    for (size_t i = 0; i < n * layer.width; ++i) appendFloat(&out, p[i], true);
+    for (uint32_t x = 0; x < layer.width; ++x, p += n)
+      for (size_t c = 0; c < written; ++c) appendFloat(&out, c < n ? p[c] : 0.0f, true);
   }
   return out;
 }

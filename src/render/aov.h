@@ -11,6 +11,7 @@
 
 #include <cstdint>
 
+#include "core/vec2.h"
 #include "core/vec3.h"
 #include "render/fresnel.h"
 #include "render/material.h"
@@ -47,6 +48,8 @@ struct AovPixel {
   Vec3 normalSum{0.0f};    // over samples that hit
   Vec3 albedoSum{0.0f};    // over all samples (the background adds 0)
   float distanceSum = 0.0f;  // |position - camera centre|, over samples that hit
+  Vec2 flowSum;              // over samples whose flow is defined (render/flow.h)
+  uint32_t flowSamples = 0;
   uint32_t hits = 0;
   uint32_t samples = 0;
   // The id passes' sample: the one nearest the pixel centre, the earliest of equals.
@@ -54,10 +57,15 @@ struct AovPixel {
   int32_t nearestMaterial = -1;   // -1: that sample saw the background
 };
 
-// Adds sample `first` taken at jitter (jx, jy) in the pixel, by a camera centred at `eye`.
+// Adds sample `first` taken at jitter (jx, jy) in the pixel, by a camera centred at `eye`, and
+// its optical flow `flow` where `hasFlow`.
 CANDELA_HDI void addAovSample(AovPixel* pixel, const FirstHit& first, float jx, float jy,
-                              const Vec3& eye) {
+                              const Vec3& eye, bool hasFlow, const Vec2& flow) {
   ++pixel->samples;
+  if (hasFlow) {
+    pixel->flowSum = pixel->flowSum + flow;
+    ++pixel->flowSamples;
+  }
   pixel->albedoSum += first.albedo;
   if (first.hit) {
     pixel->positionSum += first.position;

@@ -2,6 +2,7 @@
 #include "render/aov_layers.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <stdexcept>
 
@@ -26,6 +27,7 @@ const std::vector<AovInfo>& aovTable() {
       {Aov::Position, "position", {"X", "Y", "Z"}, false},
       {Aov::Instance, "instance", {"id"}, true},
       {Aov::Material, "material", {"id"}, true},
+      {Aov::Flow, "flow", {"X", "Y"}, false},
   };
   return table;
 }
@@ -76,6 +78,13 @@ void resolvePixel(Aov aov, const SceneData& scene, const AovPixel& p, float* out
     case Aov::Material:
       out[0] = float(p.nearestMaterial + 1);
       return;
+    case Aov::Flow: {
+      // Undefined (no sample's point in front of both cameras): NaN, not a made-up motion.
+      const float n = p.flowSamples > 0 ? float(p.flowSamples) : std::nanf("");
+      out[0] = p.flowSum.x / n;
+      out[1] = p.flowSum.y / n;
+      return;
+    }
   }
 }
 

@@ -12,7 +12,7 @@
 
 namespace candela {
 
-enum class Aov { Depth, Distance, Normal, NormalCamera, Albedo, Position, Instance, Material };
+enum class Aov { Depth, Distance, Normal, NormalCamera, Albedo, Position, Instance, Material, Flow };
 
 // "depth", "normal_camera", ...
 const char* aovName(Aov aov);

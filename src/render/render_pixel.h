@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "render/camera_ray.h"
+#include "render/flow.h"
 #include "render/integrator.h"
 
 namespace candela {
@@ -37,7 +38,11 @@ CANDELA_HDI Vec3 renderPixelSamples(const SceneView& scene, const Tracer& tracer
     const Vec3 L = traceRadiance<kAovs>(scene, tracer, ray, rng, counters, kAovs ? &first : nullptr);
     // A non-finite sample (a degenerate mesh, say) would poison the pixel; it counts as black.
     if (isFinite(L)) sum += L;
-    if constexpr (kAovs) addAovSample(aov, first, jx, jy, scene.camera.position);
+    if constexpr (kAovs) {
+      Vec2 flow;
+      const bool hasFlow = scene.flow.enabled && sampleFlow(scene, first, ray.direction, &flow);
+      addAovSample(aov, first, jx, jy, scene.camera.position, hasFlow, flow);
+    }
   }
   return sum;
 }

@@ -18,6 +18,7 @@ SceneView SceneData::view() const {
   for (const Material& m : materials) v.emissionReachable |= m.type == MaterialType::Emissive;
   v.camera = camera;
   v.settings = settings;
+  v.flow = flow;
   return v;
 }
 

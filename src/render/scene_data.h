@@ -33,6 +33,7 @@ struct SceneData {
   std::vector<Vec3> textureMeans;
   Camera camera;
   RenderSettings settings;
+  FlowFrames flow;
   BvhStats bvh;
   // Host only: the instance number (docs/aovs.md) of the entity each material belongs to; every
   // sphere, object and sphere light appends materials of its own, so a material names one.

@@ -14,6 +14,7 @@
 #include "render/environment.h"
 #include "render/light.h"
 #include "render/material.h"
+#include "render/motion.h"
 #include "render/render_settings.h"
 
 namespace candela {
@@ -21,7 +22,8 @@ namespace candela {
 // The arrays that shade the geometry, in the form of CANDELA_GEOMETRY_ARRAYS.
 // envTexels is the environment map (width x height, rows from the top; empty for a constant
 // environment) and envConditionalCdf/envMarginalCdf with their guide tables its sampling
-// distribution (core/distribution2d.h).
+// distribution (core/distribution2d.h). materialMotions, parallel to materials, is the motion of
+// each material's instance to the next frame; only renders with the flow pass have it.
 #define CANDELA_SHADING_ARRAYS(X)                             \
   X(Material, materials, materialCount, Values)               \
   X(Light, lights, lightCount, Values)                        \
@@ -29,7 +31,8 @@ namespace candela {
   X(float, envConditionalCdf, envConditionalCdfCount, Values) \
   X(float, envMarginalCdf, envMarginalCdfCount, Values)           \
   X(uint32_t, envConditionalGuide, envConditionalGuideCount, Values) \
-  X(uint32_t, envMarginalGuide, envMarginalGuideCount, Values)
+  X(uint32_t, envMarginalGuide, envMarginalGuideCount, Values)    \
+  X(InstanceMotion, materialMotions, materialMotionCount, Values)
 
 // Every array of the kernel's scene: SceneData, SceneData::view and the CUDA upload expand
 // this.
@@ -49,6 +52,7 @@ struct SceneView : GeometryView {
   bool emissionReachable = true;
   Camera camera;
   RenderSettings settings;
+  FlowFrames flow;  // the flow pass's cameras (render/flow.h)
 };
 static_assert(std::is_trivially_copyable<SceneView>::value, "SceneView must be trivially copyable");
 

@@ -79,7 +79,7 @@ std::string sceneKey(const SceneDesc& desc, bool withTransforms) {
 std::string geometryKey(const SceneDesc& desc) { return sceneKey(desc, true); }
 std::string structureKey(const SceneDesc& desc) { return sceneKey(desc, false); }
 
-const SceneData& FrameScene::prepare(const SceneDesc& desc) {
+const SceneData& FrameScene::prepare(const SceneDesc& desc, const FlowMotion* flow) {
   const auto start = std::chrono::steady_clock::now();
   std::string geometry = geometryKey(desc), structure = structureKey(desc);
   if (!geometryKey_.empty() && geometry == geometryKey_) {
@@ -112,6 +112,11 @@ const SceneData& FrameScene::prepare(const SceneDesc& desc) {
     change_ = refitted ? SceneChange::Motion : SceneChange::Structure;
     geometryKey_ = std::move(geometry);
     structureKey_ = std::move(structure);
+  }
+  if (flow) {
+    applyFlowMotion(data_, *flow);
+  } else {
+    clearFlowMotion(data_);
   }
   seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return data_;

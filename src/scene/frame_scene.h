@@ -16,6 +16,7 @@
 
 #include "render/scene_change.h"
 #include "render/scene_data.h"
+#include "scene/flow_motion.h"
 #include "scene/scene_desc.h"
 
 namespace candela {
@@ -26,7 +27,8 @@ constexpr double kRefitCostLimit = 1.5;
 class FrameScene {
  public:
   // The renderable scene of `desc` (a still, e.g. from sceneAtFrame); valid until the next call.
-  const SceneData& prepare(const SceneDesc& desc);
+  // With `flow` (flowMotion of this frame and the next) it carries the flow pass's motions.
+  const SceneData& prepare(const SceneDesc& desc, const FlowMotion* flow = nullptr);
 
   // About the last prepare(): what may differ from the frame before (Values: the geometry and
   // BVH were reused; Motion: refitted; Structure: flattened and built afresh), and how long it

@@ -33,3 +33,20 @@ def test_aovs_return_a_dict_of_arrays_and_leave_the_image_alone():
 def test_unknown_aov_is_a_value_error_naming_the_known_ones():
     with pytest.raises(ValueError, match='unknown render pass "nromal"; the passes are: depth'):
         candela.Scene.from_dict(SCENE).render(aovs=["nromal"])
+
+
+def test_flow_of_an_animated_frame_is_an_h_w_2_array_in_pixels():
+    # The sphere moves right by 0.25 a frame: the centre pixel's point, 4 from the camera in
+    # frame 0, moves f 0.25 / 4 pixels right; the background stays.
+    moving = dict(SCENE)
+    moving["spheres"] = [dict(SCENE["spheres"][0], id="ball")]
+    moving["animation"] = {"frames": 3, "tracks": [
+        {"target": "ball", "property": "position", "keys": [[0, [0, 0, 0]], [2, [0.5, 0, 0]]]}]}
+    res = candela.Scene.from_dict(moving).frame(0).render(backend="cpu", aovs=["flow"])
+    assert res["flow"].shape == (15, 15, 2) and res["flow"].dtype == np.float32
+    f = 7.5 / np.tan(np.radians(15))
+    np.testing.assert_allclose(res["flow"][7, 7], [f * 0.25 / 4, 0], atol=1e-4)
+    np.testing.assert_array_equal(res["flow"][0, 0], [0, 0])
+    # A still scene does not move at all.
+    still = candela.Scene.from_dict(SCENE).render(backend="cpu", aovs=["flow"])
+    assert not still["flow"].any()

@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <list>
 #include <memory>
+#include <algorithm>
 #include <optional>
 #include <stdexcept>
 #include <utility>
@@ -30,6 +31,7 @@
 #include "image/atomic_file.h"
 #include "image/image_io.h"
 #include "scene/flatten.h"
+#include "scene/flow_motion.h"
 #include "scene/read/scene_loader.h"
 
 namespace fs = std::filesystem;
@@ -141,8 +143,8 @@ CLI::App* addRenderCommand(CLI::App& app, RenderCommandOptions* options) {
                   "samples/s, peak RSS) to this JSON file; single stills only");
   cmd->add_option("--aov", options->aovs,
                   "Render passes to write beside the image, comma-separated: depth, distance, "
-                  "normal, normal_camera, albedo, position, instance, material (in an .exr as "
-                  "layers, else as sibling .pfm files: out.depth.pfm)");
+                  "normal, normal_camera, albedo, position, instance, material, flow (in an .exr "
+                  "as layers, else as sibling .pfm files: out.depth.pfm)");
   cmd->add_flag("--no-bvh", options->noBvh,
                 "Benchmarks only: test every primitive for every ray instead of using the BVH")
       ->group("");  // hidden from --help
@@ -199,7 +201,11 @@ int renderStill(const RenderCommandOptions& options, SceneDesc desc, double load
 
   applyOverrides(options, backend, engine, &desc);
   const auto flattenStart = std::chrono::steady_clock::now();
-  const SceneData scene = flattenScene(std::move(desc));  // only desc.output is used below
+  // A still does not move: its flow pass is 0 (and NaN nowhere, as both cameras are one).
+  std::optional<FlowMotion> flow;
+  if (std::find(aovs.begin(), aovs.end(), Aov::Flow) != aovs.end()) flow = flowMotion(desc, desc);
+  SceneData scene = flattenScene(std::move(desc));  // only desc.output is used below
+  if (flow) applyFlowMotion(scene, *flow);
   const double flattenSeconds = secondsSince(flattenStart);
   if (!backendNote.empty() && !options.quiet)
     std::fprintf(stderr, "candela: note: %s\n", backendNote.c_str());

@@ -20,6 +20,7 @@
 #include "image/atomic_file.h"
 #include "image/image_io.h"
 #include "scene/animation.h"
+#include "scene/flow_motion.h"
 #include "scene/frame_scene.h"
 #include "scene/scene_error.h"
 
@@ -184,6 +185,13 @@ int runSequence(const RenderCommandOptions& options, std::vector<SceneDesc> scen
                                    "to one image");
   const FrameRange range = parseFrames(options.frames, count);
   const std::vector<Aov> aovs = chooseAovs(options);
+  const bool wantsFlow = std::find(aovs.begin(), aovs.end(), Aov::Flow) != aovs.end();
+  // The flow pass follows one scene's animation to its next frame; separate files say nothing
+  // of how their entities correspond.
+  if (wantsFlow && scenes.size() > 1)
+    throw CliError(kExitUsage,
+                   "--aov flow: the flow pass is the motion of one animated scene; a sequence of "
+                   "several scene files has none (render them one by one, or as one animation)");
   const std::vector<std::string> suffixes = frameSuffixes(format, aovs);
   std::string backendNote;
   const Backend backend = chooseBackend(options.backend, &backendNote);
@@ -228,7 +236,9 @@ int runSequence(const RenderCommandOptions& options, std::vector<SceneDesc> scen
   for (size_t k = 0; k < todo.size(); ++k) {
     const uint32_t frame = todo[k];
     const SceneDesc still = sceneAtFrame(animated ? scenes[0] : scenes[frame], frame);
-    const SceneData& data = frameScene.prepare(still);
+    std::optional<FlowMotion> flow;
+    if (wantsFlow) flow = flowMotion(still, sceneAtFrame(scenes[0], frame + 1));
+    const SceneData& data = frameScene.prepare(still, flow ? &*flow : nullptr);
     if (bar)
       bar->startFrame("frame " + std::to_string(frame) + " (" + std::to_string(k + 1) + "/" +
                           std::to_string(todo.size()) + ")",

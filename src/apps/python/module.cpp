@@ -17,6 +17,7 @@
 #include <cstring>
 #include <memory>
 #include <mutex>
+#include <algorithm>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -120,7 +121,10 @@ nb::object render(const Scene& scene, std::optional<uint32_t> spp, std::optional
     const CpuEngine engine =
         resolveCpuEngine(CpuEngine::Auto, false, meshTriangleCount(desc), sphereCount(desc));
     if (!needsOwnBvh(chosen, engine)) desc.ownBvh = OwnBvh::None;
-    const SceneData& data = cache.frames.prepare(desc);
+    std::optional<FlowMotion> flow;
+    if (std::find(aovs.begin(), aovs.end(), Aov::Flow) != aovs.end())
+      flow = flowMotion(desc, sceneAtFrame(*scene.desc, scene.frame.value_or(0) + 1));
+    const SceneData& data = cache.frames.prepare(desc, flow ? &*flow : nullptr);
     SceneChange change = cache.frames.change();
     if (!cache.renderer || cache.backend != chosen) {
       cache.renderer.reset();  // a GPU's copy is freed before the next is made

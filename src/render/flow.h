@@ -1,0 +1,42 @@
+// The optical flow pass: where a camera sample's first hit moves on the image from this frame to
+// the next (docs/aovs.md).
+#pragma once
+
+#include "core/vec2.h"
+#include "render/aov.h"
+#include "render/scene_view.h"
+
+namespace candela {
+
+// The pixel `c` (camera-space point or direction) falls on, when it lies in front of the camera.
+CANDELA_HDI bool projectToPixel(const Mat3& K, const Vec3& c, Vec2* pixel) {
+  if (!(c.z > 0.0f)) return false;
+  const Vec3 h = K * (c / c.z);
+  *pixel = Vec2(h.x, h.y);
+  return true;
+}
+
+// The forward flow of one sample in pixels: the first hit carried by its instance's motion and
+// projected by the next frame's camera, minus its projection by this frame's; a sample that saw
+// the background follows its ray's direction, a point at infinity, so only the cameras' turning
+// moves it. False where either projection is undefined (the point behind a camera).
+CANDELA_HDI bool sampleFlow(const SceneView& scene, const FirstHit& first, const Vec3& rayDirection,
+                            Vec2* flow) {
+  const FlowCamera& now = scene.flow.now;
+  const FlowCamera& next = scene.flow.next;
+  Vec3 fromNow, fromNext;
+  if (first.hit) {
+    const InstanceMotion& m = scene.materialMotions[first.material];
+    fromNow = now.worldToCamera * (first.position - now.position);
+    fromNext = next.worldToCamera * (m.linear * first.position + m.offset - next.position);
+  } else {
+    fromNow = now.worldToCamera * rayDirection;
+    fromNext = next.worldToCamera * rayDirection;
+  }
+  Vec2 a, b;
+  if (!projectToPixel(now.K, fromNow, &a) || !projectToPixel(next.K, fromNext, &b)) return false;
+  *flow = Vec2(b.x - a.x, b.y - a.y);
+  return true;
+}
+
+}  // namespace candela

@@ -1,0 +1,30 @@
+// What the optical flow pass (docs/aovs.md) knows of the next frame: how each instance moves and
+// how both frames' cameras project.
+#pragma once
+
+#include "core/mat3.h"
+#include "core/vec3.h"
+
+namespace candela {
+
+// An instance's motion to the next frame: a world point p of it moves to linear * p + offset.
+struct InstanceMotion {
+  Mat3 linear = Mat3::diagonal(Vec3(1.0f));
+  Vec3 offset{0.0f};
+};
+
+// A pinhole projection: world point p -> pixel of K * worldToCamera * (p - position), divided
+// by its z (OpenCV camera axes; pixel (0, 0) is the image's top-left corner).
+struct FlowCamera {
+  Mat3 K;
+  Mat3 worldToCamera;
+  Vec3 position{0.0f};
+};
+
+// The two frames of the flow pass; `enabled` only in renders that write it.
+struct FlowFrames {
+  FlowCamera now, next;
+  bool enabled = false;
+};
+
+}  // namespace candela

@@ -1,0 +1,93 @@
+#include "scene/flow_motion.h"
+
+#include <cmath>
+#include <string>
+
+#include "core/rotation.h"
+#include "scene/camera_resolve.h"
+#include "scene/scene_error.h"
+
+namespace candela {
+
+namespace {
+
+// p' = position' + (radius' / radius) (p - position).
+InstanceMotion sphereMotion(const Vec3& position, float radius, const Vec3& nextPosition,
+                            float nextRadius) {
+  InstanceMotion m;
+  if (position.x == nextPosition.x && position.y == nextPosition.y &&
+      position.z == nextPosition.z && radius == nextRadius)
+    return m;
+  const float s = nextRadius / radius;
+  m.linear = Mat3::diagonal(Vec3(s));
+  m.offset = nextPosition - s * position;
+  return m;
+}
+
+bool samePlacement(const ObjectDesc& a, const ObjectDesc& b) {
+  const auto same = [](const Vec3& u, const Vec3& v) { return u.x == v.x && u.y == v.y && u.z == v.z; };
+  return same(a.position, b.position) && same(a.rotation, b.rotation) && same(a.scale, b.scale);
+}
+
+// An object maps a mesh point q to position + R (scale * q); the motion takes a world point of
+// it back to q and forward with the next frame's placement. A zero scale has no way back: its
+// motion is NaN, which leaves its samples out of the pass.
+InstanceMotion objectMotion(const ObjectDesc& now, const ObjectDesc& next) {
+  InstanceMotion m;
+  if (samePlacement(now, next)) return m;
+  const Mat3 r = eulerRotation(now.rotation), rNext = eulerRotation(next.rotation);
+  const Vec3 ratio(next.scale.x / now.scale.x, next.scale.y / now.scale.y,
+                   next.scale.z / now.scale.z);
+  m.linear = rNext * Mat3::diagonal(ratio) * r.transposed();
+  m.offset = next.position - m.linear * now.position;
+  return m;
+}
+
+FlowCamera flowCamera(const CameraDesc& desc, const std::string& label) {
+  const Camera camera = resolveCamera(desc, label);
+  FlowCamera f;
+  f.K = intrinsicMatrix(desc);
+  f.worldToCamera = camera.cameraToWorld.transposed();
+  f.position = camera.position;
+  return f;
+}
+
+}  // namespace
+
+FlowMotion flowMotion(const SceneDesc& now, const SceneDesc& next) {
+  if (now.spheres.size() != next.spheres.size() || now.objects.size() != next.objects.size() ||
+      now.lights.size() != next.lights.size())
+    throw SceneError(next.file + ": the flow pass needs the next frame to hold the same spheres, "
+                     "objects and lights as " + now.file);
+  FlowMotion f;
+  f.instances.resize(1 + now.spheres.size() + now.objects.size() + now.lights.size());
+  size_t i = 1;
+  for (size_t k = 0; k < now.spheres.size(); ++k, ++i)
+    f.instances[i] = sphereMotion(now.spheres[k].position, now.spheres[k].radius,
+                                  next.spheres[k].position, next.spheres[k].radius);
+  for (size_t k = 0; k < now.objects.size(); ++k, ++i)
+    f.instances[i] = objectMotion(now.objects[k], next.objects[k]);
+  for (size_t k = 0; k < now.lights.size(); ++k, ++i)
+    f.instances[i] = sphereMotion(now.lights[k].position, now.lights[k].radius,
+                                  next.lights[k].position, next.lights[k].radius);
+  f.frames.now = flowCamera(now.camera, now.file);
+  f.frames.next = flowCamera(next.camera, next.file);
+  f.frames.enabled = true;
+  return f;
+}
+
+void applyFlowMotion(SceneData& scene, const FlowMotion& motion) {
+  scene.materialMotions.assign(scene.materials.size(), InstanceMotion());
+  for (size_t m = 0; m < scene.materials.size() && m < scene.materialInstances.size(); ++m) {
+    const uint32_t instance = scene.materialInstances[m];
+    if (instance < motion.instances.size()) scene.materialMotions[m] = motion.instances[instance];
+  }
+  scene.flow = motion.frames;
+}
+
+void clearFlowMotion(SceneData& scene) {
+  scene.materialMotions.clear();
+  scene.flow = FlowFrames();
+}
+
+}  // namespace candela

@@ -1,0 +1,30 @@
+// The optical flow pass's view of the next frame (render/motion.h), from the scene at this frame
+// and at the next one: each instance's motion and both cameras.
+#pragma once
+
+#include <vector>
+
+#include "render/motion.h"
+#include "render/scene_data.h"
+#include "scene/scene_desc.h"
+
+namespace candela {
+
+struct FlowMotion {
+  std::vector<InstanceMotion> instances;  // by instance number (docs/aovs.md); [0] unused
+  FlowFrames frames;
+};
+
+// How the entities of `now` move to where `next` (the same scene a frame later: sceneAtFrame of
+// the next frame) has them. An entity whose placement is unchanged gets exactly the identity, so
+// a still scene's flow is exactly 0. Throws SceneError when the two do not list the same
+// entities.
+FlowMotion flowMotion(const SceneDesc& now, const SceneDesc& next);
+
+// Gives `scene` (flattened from `now`) the flow pass's motions and cameras.
+void applyFlowMotion(SceneData& scene, const FlowMotion& motion);
+
+// Takes them away again: a render without the flow pass.
+void clearFlowMotion(SceneData& scene);
+
+}  // namespace candela
