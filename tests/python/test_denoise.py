@@ -37,3 +37,54 @@ def test_a_missing_denoiser_is_named_before_rendering(monkeypatch):
     scene = candela.Scene.from_dict(tiny_scene(size=8))
     with pytest.raises(RuntimeError, match="pip install pyoidn"):
         scene.render(spp=1, denoise=True)
+
+
+# --- `candela render --denoise`: the command line loads the same OIDN (pyoidn's library) --------
+
+REPO = __import__("pathlib").Path(__file__).resolve().parents[2]
+CLI = REPO / "build" / "candela"
+
+
+def cli(*args, env=None):
+    import os
+    import subprocess
+    if not CLI.exists():
+        pytest.skip(f"{CLI} is not built (scripts/build builds it)")
+    return subprocess.run([str(CLI), *map(str, args)], capture_output=True, text=True,
+                          stdin=subprocess.DEVNULL, env={**os.environ, **(env or {})})
+
+
+def read_pfm(path):
+    with open(path, "rb") as f:
+        assert f.readline().strip() == b"PF"
+        width, height = map(int, f.readline().split())
+        scale = float(f.readline())
+        data = np.frombuffer(f.read(), dtype="<f4" if scale < 0 else ">f4")
+    return data.reshape(height, width, 3)[::-1]
+
+
+def test_cli_denoise_matches_python_and_beats_the_raw_render(tmp_path):
+    import json
+    scene_file = tmp_path / "scene.json"
+    scene_file.write_text(json.dumps(tiny_scene(size=64)))
+    raw, clean = tmp_path / "raw.pfm", tmp_path / "clean.pfm"
+    assert cli("render", scene_file, "-q", "--spp", 4, "--seed", 2, "-o", raw).returncode == 0
+    done = cli("render", scene_file, "-q", "--spp", 4, "--seed", 2, "--denoise", "-o", clean)
+    assert done.returncode == 0, done.stderr
+    reference = candela.Scene.load(str(scene_file)).render(spp=1024, seed=1)
+    assert relmse(read_pfm(clean), reference) < 0.5 * relmse(read_pfm(raw), reference)
+    # The same render, guides and filter as scene.render(denoise=True).
+    python = candela.Scene.load(str(scene_file)).render(spp=4, seed=2, denoise=True)
+    np.testing.assert_allclose(read_pfm(clean), python, rtol=1e-3, atol=1e-4)
+
+
+def test_cli_without_the_denoiser_says_how_to_install_it_and_writes_nothing(tmp_path):
+    import json
+    scene_file = tmp_path / "scene.json"
+    scene_file.write_text(json.dumps(tiny_scene(size=8)))
+    out = tmp_path / "out.png"
+    done = cli("render", scene_file, "--denoise", "-o", out,
+               env={"CANDELA_OIDN_LIBRARY": str(tmp_path / "missing.so")})
+    assert done.returncode == 2
+    assert "pip install pyoidn" in done.stderr and "Traceback" not in done.stderr
+    assert not out.exists()

@@ -25,6 +25,7 @@ struct RenderCommandOptions {
   bool quiet = false;
   std::string stats;  // --stats FILE.json: write the render's measured figures (stills only)
   std::string aovs;    // --aov depth,normal,...: render passes (docs/aovs.md); empty: none
+  bool denoise = false;  // --denoise: Open Image Denoise on the image (apps/cli/oidn_denoiser.h)
   bool noBvh = false;  // --no-bvh: brute force over all primitives (benchmarks only)
   // Sequences only (see sequence_command.h); `sequenceOptionGiven` says whether any was set.
   std::string format;               // png, exr or pfm; empty: png

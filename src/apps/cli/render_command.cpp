@@ -22,6 +22,7 @@
 
 #include "apps/cli/cli_error.h"
 #include "apps/cli/interrupt.h"
+#include "apps/cli/oidn_denoiser.h"
 #include "apps/cli/output_check.h"
 #include "apps/cli/pass_files.h"
 #include "apps/cli/progress_bar.h"
@@ -82,6 +83,14 @@ CpuEngine chooseCpuEngine(const RenderCommandOptions& options, uint64_t triangle
                    "--no-bvh tests every primitive with candela's own engine; it cannot be "
                    "combined with --cpu-engine embree");
   return resolveCpuEngine(options.cpuEngine, options.noBvh, triangles, spheres);
+}
+
+std::unique_ptr<OidnDenoiser> loadDenoiser(const RenderCommandOptions& options) {
+  if (!options.denoise) return nullptr;
+  std::string whyNot;
+  std::unique_ptr<OidnDenoiser> denoiser = OidnDenoiser::load(&whyNot);
+  if (!denoiser) throw CliError(kExitUsage, whyNot);
+  return denoiser;
 }
 
 std::vector<Aov> chooseAovs(const RenderCommandOptions& options) {
@@ -145,6 +154,9 @@ CLI::App* addRenderCommand(CLI::App& app, RenderCommandOptions* options) {
                   "Render passes to write beside the image, comma-separated: depth, distance, "
                   "normal, normal_camera, albedo, position, instance, material, flow (in an .exr "
                   "as layers, else as sibling .pfm files: out.depth.pfm)");
+  cmd->add_flag("--denoise", options->denoise,
+                "Denoise the image with Intel Open Image Denoise, guided by the albedo and normal "
+                "passes (needs OIDN 2: pip install pyoidn)");
   cmd->add_flag("--no-bvh", options->noBvh,
                 "Benchmarks only: test every primitive for every ray instead of using the BVH")
       ->group("");  // hidden from --help
@@ -199,6 +211,7 @@ int renderStill(const RenderCommandOptions& options, SceneDesc desc, double load
   const Backend backend = chooseBackend(options.backend, &backendNote);
   const CpuEngine engine = chooseCpuEngine(options, meshTriangleCount(desc), sphereCount(desc));
 
+  const std::unique_ptr<OidnDenoiser> denoiser = loadDenoiser(options);
   applyOverrides(options, backend, engine, &desc);
   const auto flattenStart = std::chrono::steady_clock::now();
   // A still does not move: its flow pass is 0 (and NaN nowhere, as both cameras are one).
@@ -219,12 +232,13 @@ int renderStill(const RenderCommandOptions& options, SceneDesc desc, double load
   render.sceneLabel = sceneFile;
   render.threads = options.threads;
   render.cancel = &interrupt.flag();
-  render.aovs = !aovs.empty();
+  render.aovs = !aovs.empty() || denoiser;
   if (bar) render.progress = [&bar](double fraction) { bar->update(fraction); };
   const std::unique_ptr<Renderer> renderer = makeRenderer(backend, engine);
   renderer->setScene(scene, SceneChange::Structure);
-  const RenderResult result = renderer->render(render);
+  RenderResult result = renderer->render(render);
   if (bar) bar->clear();
+  if (denoiser && !result.cancelled) denoiser->denoise(result, scene);
 
   if (result.cancelled) {
     std::fputs("candela: interrupted, no image written\n", stderr);

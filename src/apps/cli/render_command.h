@@ -7,9 +7,12 @@
 // of the sequence options: a sequence of frames (sequence_command.h).
 #pragma once
 
+#include <memory>
+
 #include <CLI/CLI.hpp>
 
 #include "apps/cli/cli_options.h"
+#include "apps/cli/oidn_denoiser.h"
 #include "render/aov_layers.h"
 #include "scene/scene_desc.h"
 
@@ -30,6 +33,10 @@ CpuEngine chooseCpuEngine(const RenderCommandOptions& options, uint64_t triangle
 
 // The passes --aov asks for, in its order; CliError (usage) naming an unknown one.
 std::vector<Aov> chooseAovs(const RenderCommandOptions& options);
+
+// With --denoise, Open Image Denoise, loaded; CliError (usage) saying how to install it where it
+// is not found. Without, null.
+std::unique_ptr<OidnDenoiser> loadDenoiser(const RenderCommandOptions& options);
 
 // Command-line values win over the scene file's (spp, seed, max depth); candela's own BVH is
 // left out where the renderer (`backend` with `engine`) does not trace it.

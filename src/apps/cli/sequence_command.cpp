@@ -11,6 +11,7 @@
 
 #include "apps/cli/cli_error.h"
 #include "apps/cli/interrupt.h"
+#include "apps/cli/oidn_denoiser.h"
 #include "apps/cli/output_check.h"
 #include "apps/cli/pass_files.h"
 #include "apps/cli/progress_bar.h"
@@ -193,6 +194,7 @@ int runSequence(const RenderCommandOptions& options, std::vector<SceneDesc> scen
                    "--aov flow: the flow pass is the motion of one animated scene; a sequence of "
                    "several scene files has none (render them one by one, or as one animation)");
   const std::vector<std::string> suffixes = frameSuffixes(format, aovs);
+  const std::unique_ptr<OidnDenoiser> denoiser = loadDenoiser(options);
   std::string backendNote;
   const Backend backend = chooseBackend(options.backend, &backendNote);
   uint64_t triangles = 0, spheres = 0;
@@ -247,11 +249,12 @@ int runSequence(const RenderCommandOptions& options, std::vector<SceneDesc> scen
     render.sceneLabel = still.file;
     render.threads = options.threads;
     render.cancel = &interrupt.flag();
-    render.aovs = !aovs.empty();
+    render.aovs = !aovs.empty() || denoiser;
     if (bar) render.progress = [&bar](double fraction) { bar->update(fraction); };
     renderer->setScene(data, frameScene.change());
-    const RenderResult result = renderer->render(render);
+    RenderResult result = renderer->render(render);
     if (bar) bar->clear();
+    if (denoiser && !result.cancelled) denoiser->denoise(result, data);
     if (result.cancelled) {
       std::fprintf(stderr,
                    "candela: interrupted during frame %u; the %zu frames finished are kept, run "

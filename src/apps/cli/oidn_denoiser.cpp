@@ -1,0 +1,152 @@
+#include "apps/cli/oidn_denoiser.h"
+
+#include <dlfcn.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdio>
+#include <cstdlib>
+#include <stdexcept>
+
+#include "render/aov_layers.h"
+
+namespace candela::cli {
+
+// The few entry points of OIDN's C API (OpenImageDenoise/oidn.h, version 2) that denoising
+// needs, declared here because only the library, not its header, comes with pyoidn.
+struct OidnDenoiser::Api {
+  using Device = void*;
+  using Filter = void*;
+  static constexpr int kDeviceTypeDefault = 0;  // OIDN_DEVICE_TYPE_DEFAULT
+  static constexpr int kFormatFloat3 = 3;       // OIDN_FORMAT_FLOAT3
+  Device (*newDevice)(int type);
+  void (*commitDevice)(Device);
+  int (*getDeviceError)(Device, const char** message);
+  void (*releaseDevice)(Device);
+  Filter (*newFilter)(Device, const char* type);
+  void (*setSharedFilterImage)(Filter, const char* name, void* pointer, int format, size_t width,
+                               size_t height, size_t byteOffset, size_t pixelStride,
+                               size_t rowStride);
+  void (*setFilterBool)(Filter, const char* name, bool value);
+  void (*commitFilter)(Filter);
+  void (*executeFilter)(Filter);
+  void (*releaseFilter)(Filter);
+};
+
+namespace {
+
+template <typename F>
+bool bind(void* handle, const char* name, F* f) {
+  *f = reinterpret_cast<F>(dlsym(handle, name));
+  return *f != nullptr;
+}
+
+// The folder of the pyoidn package of python3 on PATH, or "" (no python3, no pyoidn).
+std::string pyoidnLibraryFolder() {
+  FILE* pipe = popen(
+      "python3 -c 'import os, pyoidn; print(os.path.join(os.path.dirname(pyoidn.__file__), "
+      "\"oidn\", \"lib\"))' 2>/dev/null < /dev/null",
+      "r");
+  if (!pipe) return "";
+  std::array<char, 4096> line{};
+  std::string folder;
+  if (std::fgets(line.data(), int(line.size()), pipe)) folder = line.data();
+  const int status = pclose(pipe);
+  while (!folder.empty() && (folder.back() == '\n' || folder.back() == '\r')) folder.pop_back();
+  return status == 0 ? folder : "";
+}
+
+}  // namespace
+
+std::unique_ptr<OidnDenoiser> OidnDenoiser::load(std::string* whyNot) {
+  std::vector<std::string> candidates;
+  if (const char* env = std::getenv("CANDELA_OIDN_LIBRARY"); env && *env) {
+    candidates.push_back(env);
+  } else {
+    candidates.push_back("libOpenImageDenoise.so.2");
+    const std::string folder = pyoidnLibraryFolder();
+    if (!folder.empty()) candidates.push_back(folder + "/libOpenImageDenoise.so.2");
+  }
+  std::string tried;
+  for (const std::string& path : candidates) {
+    void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+    if (!handle) {
+      tried += (tried.empty() ? "" : ", ") + path;
+      continue;
+    }
+    std::unique_ptr<OidnDenoiser> d(new OidnDenoiser);
+    d->handle_ = handle;
+    d->path_ = path;
+    d->api_ = std::make_unique<Api>();
+    Api& a = *d->api_;
+    const bool complete =
+        bind(handle, "oidnNewDevice", &a.newDevice) &&
+        bind(handle, "oidnCommitDevice", &a.commitDevice) &&
+        bind(handle, "oidnGetDeviceError", &a.getDeviceError) &&
+        bind(handle, "oidnReleaseDevice", &a.releaseDevice) &&
+        bind(handle, "oidnNewFilter", &a.newFilter) &&
+        bind(handle, "oidnSetSharedFilterImage", &a.setSharedFilterImage) &&
+        bind(handle, "oidnSetFilterBool", &a.setFilterBool) &&
+        bind(handle, "oidnCommitFilter", &a.commitFilter) &&
+        bind(handle, "oidnExecuteFilter", &a.executeFilter) &&
+        bind(handle, "oidnReleaseFilter", &a.releaseFilter);
+    if (complete) return d;
+    *whyNot = path + " is not Open Image Denoise 2 (an entry point is missing)";
+    return nullptr;
+  }
+  *whyNot = "--denoise needs Intel Open Image Denoise 2, which was not found (tried " + tried +
+            "): install it with `pip install pyoidn` (scripts/install-python does), or set "
+            "CANDELA_OIDN_LIBRARY to its libOpenImageDenoise.so";
+  return nullptr;
+}
+
+OidnDenoiser::~OidnDenoiser() {
+  if (handle_) dlclose(handle_);
+}
+
+void OidnDenoiser::denoise(ImageRGB& image, const std::vector<float>& albedo,
+                           const std::vector<float>& normal) const {
+  const Api& a = *api_;
+  const size_t w = image.width, h = image.height, n = 3 * w * h;
+  if (albedo.size() != n || normal.size() != n)
+    throw std::invalid_argument("denoise: the guides do not match the image's size");
+  // OIDN expects albedo in [0, 1] and normals in [-1, 1]; the passes hold those already, up to
+  // rounding, which the clamps take away.
+  std::vector<float> a01(n), n11(n), out(n);
+  std::transform(albedo.begin(), albedo.end(), a01.begin(),
+                 [](float v) { return std::min(1.0f, std::max(0.0f, v)); });
+  std::transform(normal.begin(), normal.end(), n11.begin(),
+                 [](float v) { return std::min(1.0f, std::max(-1.0f, v)); });
+  void* device = a.newDevice(Api::kDeviceTypeDefault);
+  if (!device) throw std::runtime_error("Open Image Denoise could not create a device");
+  a.commitDevice(device);
+  void* filter = a.newFilter(device, "RT");
+  const size_t pixel = 3 * sizeof(float);
+  a.setSharedFilterImage(filter, "color", image.pixels.data(), Api::kFormatFloat3, w, h, 0, pixel,
+                         pixel * w);
+  a.setSharedFilterImage(filter, "albedo", a01.data(), Api::kFormatFloat3, w, h, 0, pixel,
+                         pixel * w);
+  a.setSharedFilterImage(filter, "normal", n11.data(), Api::kFormatFloat3, w, h, 0, pixel,
+                         pixel * w);
+  a.setSharedFilterImage(filter, "output", out.data(), Api::kFormatFloat3, w, h, 0, pixel,
+                         pixel * w);
+  a.setFilterBool(filter, "hdr", true);
+  a.commitFilter(filter);
+  a.executeFilter(filter);
+  const char* message = nullptr;
+  const int error = a.getDeviceError(device, &message);
+  a.releaseFilter(filter);
+  a.releaseDevice(device);
+  if (error != 0)
+    throw std::runtime_error(std::string("Open Image Denoise failed: ") +
+                             (message ? message : "unknown error"));
+  image.pixels = std::move(out);
+}
+
+void OidnDenoiser::denoise(RenderResult& result, const SceneData& scene) const {
+  const std::vector<ImageLayer> guides =
+      makeAovLayers(scene, {Aov::Albedo, Aov::Normal}, result.aovs);
+  denoise(result.image, guides[0].pixels, guides[1].pixels);
+}
+
+}  // namespace candela::cli
