@@ -44,3 +44,14 @@ def animation_file(tmp_path):
     path = tmp_path / "anim.json"
     path.write_text(json.dumps(animated_scene()))
     return path
+
+
+def read_pfm(path):
+    """An RGB PFM file as an (H, W, 3) float32 array, rows from the top."""
+    import numpy as np
+    with open(path, "rb") as f:
+        assert f.readline().strip() == b"PF"
+        width, height = map(int, f.readline().split())
+        scale = float(f.readline())
+        data = np.frombuffer(f.read(), dtype="<f4" if scale < 0 else ">f4")
+    return data.reshape(height, width, 3)[::-1]  # PFM rows run bottom to top

@@ -5,7 +5,7 @@ import numpy as np
 import pytest
 
 import candela
-from conftest import tiny_scene
+from conftest import read_pfm, tiny_scene
 
 pyoidn = pytest.importorskip("pyoidn", reason="pyoidn (Open Image Denoise) is not installed")
 
@@ -52,15 +52,6 @@ def cli(*args, env=None):
         pytest.skip(f"{CLI} is not built (scripts/build builds it)")
     return subprocess.run([str(CLI), *map(str, args)], capture_output=True, text=True,
                           stdin=subprocess.DEVNULL, env={**os.environ, **(env or {})})
-
-
-def read_pfm(path):
-    with open(path, "rb") as f:
-        assert f.readline().strip() == b"PF"
-        width, height = map(int, f.readline().split())
-        scale = float(f.readline())
-        data = np.frombuffer(f.read(), dtype="<f4" if scale < 0 else ">f4")
-    return data.reshape(height, width, 3)[::-1]
 
 
 def test_cli_denoise_matches_python_and_beats_the_raw_render(tmp_path):

@@ -13,16 +13,7 @@ ray = pytest.importorskip("ray", reason="Ray is not installed (scripts/install-p
 
 import candela  # noqa: E402
 from candela import distributed  # noqa: E402
-from conftest import animated_scene, tiny_scene  # noqa: E402
-
-def read_pfm(path):
-    with open(path, "rb") as f:
-        assert f.readline().strip() == b"PF"
-        width, height = map(int, f.readline().split())
-        scale = float(f.readline())
-        data = np.frombuffer(f.read(), dtype="<f4" if scale < 0 else ">f4")
-    return data.reshape(height, width, 3)[::-1]  # PFM rows run bottom to top
-
+from conftest import animated_scene, read_pfm, tiny_scene  # noqa: E402
 
 @pytest.fixture(scope="module")
 def local_ray():
