@@ -14,6 +14,8 @@
 #include <string>
 
 #include "image/image_io.h"
+#include "moving_sphere_scene.h"
+#include "temp_dir.h"
 
 namespace fs = std::filesystem;
 
@@ -29,21 +31,13 @@ const char* kScene = R"({
 
 class CliAovTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() /
-           ("candela_cli_aov_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-    std::ofstream(dir_ / "s.json") << kScene;
-  }
-  void TearDown() override { fs::remove_all(dir_); }
+  void SetUp() override { dir_.write("s.json", kScene); }
 
-  fs::path path(const std::string& name) const { return dir_ / name; }
+  fs::path path(const std::string& name) const { return dir_.file(name); }
 
   // Exit code and stderr of `candela <args>` run in the test directory.
   int run(const std::string& args, std::string* err = nullptr) const {
-    const std::string command = "cd '" + dir_.string() + "' && '" + CANDELA_BINARY + "' " + args +
+    const std::string command = "cd '" + dir_.path() + "' && '" + CANDELA_BINARY + "' " + args +
                                 " > /dev/null 2> stderr.txt < /dev/null";
     const int status = std::system(command.c_str());
     if (err) {
@@ -56,7 +50,7 @@ class CliAovTest : public ::testing::Test {
     return status != -1 && WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   }
 
-  fs::path dir_;
+  candela::test::TempDir dir_;
 };
 
 const candela::ExrChannel* channel(const candela::ExrChannels& exr, const std::string& name) {
@@ -139,14 +133,7 @@ TEST_F(CliAovTest, SequencesWritePassesPerFrame) {
 // flow is f 0.25 / 4 (its nearest point is 4 from the camera) in every frame but the last, after
 // which nothing moves; as a PFM it is three channels, the third 0, as flow datasets write it.
 TEST_F(CliAovTest, AnimationsWriteTheirFlowPerFrame) {
-  std::ofstream(path("moving.json")) << R"({
-    "camera": {"width": 15, "height": 15, "fov": 30, "spp": 1, "position": [0, 0, 5]},
-    "render": {"antialiasing": false},
-    "spheres": [{"id": "ball", "position": [0, 0, 0], "radius": 1, "color": 0.5}],
-    "lights": [{"position": [0, 3, 3], "intensity": 100}],
-    "animation": {"frames": 3, "tracks": [
-      {"target": "ball", "property": "position", "keys": [[0, [0, 0, 0]], [2, [0.5, 0, 0]]]}]}
-  })";
+  dir_.write("moving.json", candela::test::kMovingSphereScene);
   ASSERT_EQ(run("render moving.json -q -o f/ --format exr --aov flow"), 0);
   const float f = 7.5f / std::tan(15.0f * 3.14159265f / 180.0f);
   const candela::ExrChannels exr = candela::readExrChannels(path("f/frame_0000.exr").string());

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "core/rotation.h"
+#include "moving_sphere_scene.h"
 #include "render/aov_layers.h"
 #include "render_test_util.h"
 #include "scene/animation.h"
@@ -73,14 +74,7 @@ TEST(Flow, CameraSlidingPastAPlane) {
 // A sphere moves right by 0.25 before a still camera 5 away: its nearest point, 4 away, moves
 // f 0.25 / 4 pixels right; the background does not move.
 TEST(Flow, SphereMovingBeforeAStillCamera) {
-  const FlowRender r = renderFlow(R"({
-    "camera": {"width": 15, "height": 15, "fov": 30, "spp": 1, "position": [0, 0, 5]},
-    "render": {"antialiasing": false},
-    "spheres": [{"id": "ball", "position": [0, 0, 0], "radius": 1, "color": 0.5}],
-    "lights": [{"position": [0, 3, 3], "intensity": 100}],
-    "animation": {"frames": 3, "tracks": [
-      {"target": "ball", "property": "position", "keys": [[0, [0, 0, 0]], [2, [0.5, 0, 0]]]}]}
-  })", 0);
+  const FlowRender r = renderFlow(test::kMovingSphereScene, 0);
   const float f = 7.5f / std::tan(15.0f * kPi / 180.0f);
   EXPECT_NEAR(r.at("flow", 7, 7, 0), f * 0.25f / 4.0f, 1e-4f);
   EXPECT_NEAR(r.at("flow", 7, 7, 1), 0.0f, 1e-5f);

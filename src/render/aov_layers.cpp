@@ -124,6 +124,10 @@ std::vector<Aov> parseAovList(const std::string& list) {
   return aovsFromNames(names);
 }
 
+bool hasAov(const std::vector<Aov>& aovs, Aov aov) {
+  return std::find(aovs.begin(), aovs.end(), aov) != aovs.end();
+}
+
 std::vector<ImageLayer> makeAovLayers(const SceneData& scene, const std::vector<Aov>& aovs,
                                       const std::vector<AovPixel>& pixels) {
   const uint32_t width = scene.camera.width, height = scene.camera.height;

@@ -27,6 +27,9 @@ std::vector<Aov> aovsFromNames(const std::vector<std::string>& names);
 // The same from a comma-separated list, "depth,normal" (spaces around names are ignored).
 std::vector<Aov> parseAovList(const std::string& list);
 
+// Whether `aovs` asks for `aov`.
+bool hasAov(const std::vector<Aov>& aovs, Aov aov);
+
 // One layer per pass in `aovs`, from `pixels` (RenderResult::aovs) of a render of `scene`.
 std::vector<ImageLayer> makeAovLayers(const SceneData& scene, const std::vector<Aov>& aovs,
                                       const std::vector<AovPixel>& pixels);

@@ -15,7 +15,6 @@
 #include <filesystem>
 #include <list>
 #include <memory>
-#include <algorithm>
 #include <optional>
 #include <stdexcept>
 #include <utility>
@@ -216,7 +215,7 @@ int renderStill(const RenderCommandOptions& options, SceneDesc desc, double load
   const auto flattenStart = std::chrono::steady_clock::now();
   // A still does not move: its flow pass is 0 (and NaN nowhere, as both cameras are one).
   std::optional<FlowMotion> flow;
-  if (std::find(aovs.begin(), aovs.end(), Aov::Flow) != aovs.end()) flow = flowMotion(desc, desc);
+  if (hasAov(aovs, Aov::Flow)) flow = flowMotion(desc, desc);
   SceneData scene = flattenScene(std::move(desc));  // only desc.output is used below
   if (flow) applyFlowMotion(scene, *flow);
   const double flattenSeconds = secondsSince(flattenStart);

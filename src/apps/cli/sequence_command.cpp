@@ -186,7 +186,7 @@ int runSequence(const RenderCommandOptions& options, std::vector<SceneDesc> scen
                                    "to one image");
   const FrameRange range = parseFrames(options.frames, count);
   const std::vector<Aov> aovs = chooseAovs(options);
-  const bool wantsFlow = std::find(aovs.begin(), aovs.end(), Aov::Flow) != aovs.end();
+  const bool wantsFlow = hasAov(aovs, Aov::Flow);
   // The flow pass follows one scene's animation to its next frame; separate files say nothing
   // of how their entities correspond.
   if (wantsFlow && scenes.size() > 1)

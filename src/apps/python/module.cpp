@@ -17,7 +17,6 @@
 #include <cstring>
 #include <memory>
 #include <mutex>
-#include <algorithm>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -122,7 +121,7 @@ nb::object render(const Scene& scene, std::optional<uint32_t> spp, std::optional
         resolveCpuEngine(CpuEngine::Auto, false, meshTriangleCount(desc), sphereCount(desc));
     if (!needsOwnBvh(chosen, engine)) desc.ownBvh = OwnBvh::None;
     std::optional<FlowMotion> flow;
-    if (std::find(aovs.begin(), aovs.end(), Aov::Flow) != aovs.end())
+    if (hasAov(aovs, Aov::Flow))
       flow = flowMotion(desc, sceneAtFrame(*scene.desc, scene.frame.value_or(0) + 1));
     const SceneData& data = cache.frames.prepare(desc, flow ? &*flow : nullptr);
     SceneChange change = cache.frames.change();

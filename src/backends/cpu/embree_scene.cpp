@@ -70,9 +70,7 @@ size_t EmbreeScene::bytes() const {
 }
 
 void EmbreeScene::update(const SceneData& scene, SceneChange change) {
-  if (change == SceneChange::Structure ||
-      (scene_ == nullptr && triangles_ == nullptr && sphereNodes_.empty() &&
-       sphereBlocks_.view().blockCount == 0)) {
+  if (change == SceneChange::Structure || !built_) {
     build(scene);
   } else if (change == SceneChange::Motion) {
     refit(scene);
@@ -117,6 +115,7 @@ void EmbreeScene::placeSpheres(const SceneData& scene) {
 }
 
 void EmbreeScene::build(const SceneData& scene) {
+  built_ = true;
   if (scene_) rtcReleaseScene(scene_);
   if (triangles_) rtcReleaseGeometry(triangles_);
   scene_ = nullptr;

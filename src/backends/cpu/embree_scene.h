@@ -59,6 +59,7 @@ class EmbreeScene {
   SphereBlocks sphereBlocks_;
   GeometryView sphereView_;  // the spheres of the scene given last, with sphereNodes_
   uint32_t sphereCount_ = 0;
+  bool built_ = false;  // whether update() has built anything yet: the first frame builds
   double buildSeconds_ = 0;
   // What the alpha filter reads (the triangles, uvs, masks and textures of the scene given last),
   // and whether the filter is installed: only while some material is masked.
