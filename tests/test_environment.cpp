@@ -70,9 +70,12 @@ TEST(Environment, MappingPutsTheMapCentreAlongMinusZ) {
   EXPECT_EQ(environmentRadiance(turned, normalize(Vec3(-1, 0, -0.2f))).x, 1.0f);
 }
 
-// The sampled pdf equals the pdf environmentPdf evaluates for the same direction (what MIS needs),
-// the pdf integrates to 1 over the sphere, and light sampling estimates the irradiance that
-// uniform sampling of the sphere estimates.
+// The sampled pdf equals the pdf environmentPdf evaluates for the same direction (what MIS needs)
+// and integrates to 1 over the sphere. The distribution is MIS-compensated: it holds only the
+// texels brighter than the map's mean (the sun here), so light sampling alone would miss the sky,
+// while light sampling beside uniform sampling of the sphere, weighed by the power heuristic as
+// the integrator weighs light and BSDF samples, estimates the irradiance that uniform sampling
+// alone estimates, with less noise.
 TEST(Environment, MapSamplingIsConsistentWithItsPdf) {
   const std::string map = writeMap("env_sun.pfm", 48, 24, [](uint32_t x, uint32_t y) {
     const bool sun = x >= 30 && x < 33 && y >= 6 && y < 8;
@@ -88,34 +91,47 @@ TEST(Environment, MapSamplingIsConsistentWithItsPdf) {
   std::mt19937 gen(3);
   std::uniform_real_distribution<float> u(0.0f, 1.0f);
   const Vec3 n = normalize(Vec3(0.3f, 1.0f, -0.2f));  // irradiance on a surface facing n
+  const float uniformPdf = 1.0f / (4.0f * kPi);
   const int draws = 300000;
-  double byLight = 0, byLight2 = 0, byUniform = 0, byUniform2 = 0, pdfIntegral = 0;
+  double byMis = 0, byMis2 = 0, byUniform = 0, byUniform2 = 0, pdfIntegral = 0;
   for (int i = 0; i < draws; ++i) {
+    double mis = 0.0;
     LightSample ls;
     if (sampleLight(view, light, Vec3(0.0f), u(gen), u(gen), &ls)) {
       ASSERT_NEAR(environmentPdf(view, ls.wi), ls.pdf, 2e-3f * ls.pdf)
           << i << " wi " << ls.wi.x << " " << ls.wi.y << " " << ls.wi.z;
-      const double v = ls.radiance.x * std::max(0.0f, dot(ls.wi, n)) / ls.pdf;
-      byLight += v;
-      byLight2 += v * v;
+      mis += ls.radiance.x * std::max(0.0f, dot(ls.wi, n)) / ls.pdf *
+             powerHeuristic(ls.pdf, uniformPdf);
     }
     const float z = 1 - 2 * u(gen), r = std::sqrt(std::max(0.0f, 1 - z * z)),
                 phi = 2 * kPi * u(gen);
     const Vec3 w(r * std::cos(phi), r * std::sin(phi), z);
-    pdfIntegral += environmentPdf(view, w) * 4 * kPi;
-    const double v = environmentRadiance(view, w).x * std::max(0.0f, dot(w, n)) * 4 * kPi;
+    const float lightPdf = environmentPdf(view, w);
+    pdfIntegral += lightPdf / uniformPdf;
+    const double v = environmentRadiance(view, w).x * std::max(0.0f, dot(w, n)) / uniformPdf;
+    mis += v * powerHeuristic(uniformPdf, lightPdf);
     byUniform += v;
     byUniform2 += v * v;
+    byMis += mis;
+    byMis2 += mis * mis;
   }
   const auto error = [&](double sum, double sum2) {
     const double mean = sum / draws;
     return std::sqrt(std::max(0.0, sum2 / draws - mean * mean) / draws);
   };
   EXPECT_NEAR(pdfIntegral / draws, 1.0, 0.02);
-  const double a = byLight / draws, b = byUniform / draws;
-  const double tolerance = kZ * std::hypot(error(byLight, byLight2), error(byUniform, byUniform2));
+  // The sun's texels are sampled, the sky far from them is not.
+  const auto pdfAtTexel = [&](float x, float y) {
+    float sinTheta;
+    const Vec3 d = mapToDirection((x + 0.5f) / 48, (y + 0.5f) / 24, &sinTheta);
+    return environmentPdf(view, view.environment.toWorld * d);
+  };
+  EXPECT_GT(pdfAtTexel(31, 6), 0.0f);
+  EXPECT_EQ(pdfAtTexel(10, 18), 0.0f);
+  const double a = byMis / draws, b = byUniform / draws;
+  const double tolerance = kZ * std::hypot(error(byMis, byMis2), error(byUniform, byUniform2));
   EXPECT_NEAR(a, b, tolerance);
-  EXPECT_LT(error(byLight, byLight2), error(byUniform, byUniform2)) << "importance should help";
+  EXPECT_LT(error(byMis, byMis2), error(byUniform, byUniform2)) << "importance should help";
 }
 
 // A diffuse sphere of albedo a alone under an environment of radiance 1 everywhere shows a,

@@ -7,7 +7,9 @@
 // image's centre lies along -z, +x right of it, the top row straight up. The map's frame is the
 // world turned by the environment's rotation. Lookups are bilinear (wrapping in u); sampling
 // follows a piecewise-constant distribution over the texels weighted by sin(theta), so a sun in
-// the map is found by shadow rays rather than by chance.
+// the map is found by shadow rays rather than by chance. That distribution is MIS-compensated
+// (scene/flatten_environment.cpp): it leaves out what is dimmer than the map's mean, which only
+// BSDF sampling then finds, so the environment light is valid only beside BSDF sampling.
 #pragma once
 
 #include <cmath>

@@ -16,6 +16,23 @@ namespace {
 // sin(theta) at the centre of row j of an h-row map.
 double rowSinTheta(uint32_t j, uint32_t h) { return std::sin(kPi * (j + 0.5) / h); }
 
+// MIS compensation (Karlik et al. 2019, as pbrt-v4's ImageInfiniteLight): the environment is
+// only ever sampled beside BSDF sampling, whose rays find the whole sphere, so light samples are
+// better spent where the map is brighter than its mean over directions: each brightness becomes
+// its excess over that mean. A map with no excess (a uniform one) keeps its brightness.
+void compensateForMis(std::vector<double>& brightness, uint32_t w, uint32_t h) {
+  double sum = 0.0, weights = 0.0;
+  for (uint32_t y = 0; y < h; ++y)
+    for (uint32_t x = 0; x < w; ++x) {
+      sum += brightness[size_t(y) * w + x] * rowSinTheta(y, h);
+      weights += rowSinTheta(y, h);
+    }
+  const double mean = sum / weights;
+  if (!std::any_of(brightness.begin(), brightness.end(), [&](double b) { return b > mean; }))
+    return;
+  for (double& b : brightness) b = std::max(0.0, b - mean);
+}
+
 }  // namespace
 
 void flattenEnvironment(const EnvironmentDesc& desc, SceneData& s) {
@@ -47,8 +64,8 @@ void flattenEnvironment(const EnvironmentDesc& desc, SceneData& s) {
   for (uint32_t y = 0; y < h; ++y)
     for (uint32_t x = 0; x < w; ++x) s.envTexels[size_t(y) * w + x] = image.at(x, y);
 
-  // A texel's weight is the brightest of it and its neighbours, which bounds the bilinear lookup
-  // over its cell, times sin(theta), the solid angle of its row.
+  // A texel's brightness is the brightest of it and its neighbours, which bounds the bilinear
+  // lookup over its cell.
   std::vector<double> f(size_t(w) * h);
   for (uint32_t y = 0; y < h; ++y)
     for (uint32_t x = 0; x < w; ++x) {
@@ -59,8 +76,11 @@ void flattenEnvironment(const EnvironmentDesc& desc, SceneData& s) {
           const uint32_t nx = (x + w + uint32_t(dx + 1) - 1) % w;
           brightest = std::max(brightest, componentSum(s.envTexels[size_t(ny) * w + nx]));
         }
-      f[size_t(y) * w + x] = brightest * rowSinTheta(y, h);
+      f[size_t(y) * w + x] = brightest;
     }
+  compensateForMis(f, w, h);
+  for (uint32_t y = 0; y < h; ++y)
+    for (uint32_t x = 0; x < w; ++x) f[size_t(y) * w + x] *= rowSinTheta(y, h);
   Distribution2DArrays d;
   buildDistribution2D(f, w, h, &d);
   s.envConditionalCdf = std::move(d.conditional);
