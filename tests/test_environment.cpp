@@ -8,11 +8,13 @@
 #include <limits>
 #include <random>
 #include <string>
+#include <vector>
 
 #include "core/constants.h"
 #include "image/image_io.h"
 #include "render/light_sample.h"
 #include "render_test_util.h"
+#include "scene/flatten_environment.h"
 #include "scene/read/scene_loader.h"
 #include "scene/scene_error.h"
 
@@ -132,6 +134,38 @@ TEST(Environment, MapSamplingIsConsistentWithItsPdf) {
   const double tolerance = kZ * std::hypot(error(byMis, byMis2), error(byUniform, byUniform2));
   EXPECT_NEAR(a, b, tolerance);
   EXPECT_LT(error(byMis, byMis2), error(byUniform, byUniform2)) << "importance should help";
+}
+
+// Each cell of the sampling distribution has the mean of the bilinear lookup over it (here
+// integrated by the midpoint rule on a grid aligned with the bilinear patches, exact for a
+// bilinear function), whether texels are split into 4 x 4, 2 x 2 or not at all.
+TEST(Environment, SamplingCellsHoldTheMeanOfTheLookupOverThem) {
+  const uint32_t w = 6, h = 4;
+  std::mt19937 gen(11);
+  std::uniform_real_distribution<float> u(0.0f, 5.0f);
+  std::vector<Vec3> texels(w * h);
+  for (Vec3& t : texels) t = Vec3(u(gen), u(gen), u(gen));
+  for (const uint32_t k : {1u, 2u, 4u}) {
+    const std::vector<double> cells = environmentCellBrightness(texels, w, h, k);
+    ASSERT_EQ(cells.size(), size_t(k * w) * (k * h));
+    constexpr uint32_t kSteps = 16;  // even: no step straddles a texel centre
+    for (uint32_t cy = 0; cy < k * h; ++cy)
+      for (uint32_t cx = 0; cx < k * w; ++cx) {
+        double sum = 0.0;
+        for (uint32_t j = 0; j < kSteps; ++j)
+          for (uint32_t i = 0; i < kSteps; ++i) {
+            const float x = (float(cx) + (i + 0.5f) / kSteps) / float(k * w);
+            const float y = (float(cy) + (j + 0.5f) / kSteps) / float(k * h);
+            sum += componentSum(lookupMap(texels.data(), w, h, x, y));
+          }
+        EXPECT_NEAR(cells[size_t(cy) * k * w + cx], sum / (kSteps * kSteps), 1e-4)
+            << "k " << k << " cell " << cx << ", " << cy;
+      }
+  }
+  EXPECT_EQ(environmentCellsPerTexel(256, 128), 4u);
+  EXPECT_EQ(environmentCellsPerTexel(1024, 512), 2u);
+  EXPECT_EQ(environmentCellsPerTexel(2048, 1024), 1u);
+  EXPECT_EQ(environmentCellsPerTexel(8192, 4096), 1u);
 }
 
 // A diffuse sphere of albedo a alone under an environment of radiance 1 everywhere shows a,

@@ -6,10 +6,11 @@
 // the image's top-left corner and texel (i, j) covers [i/W, (i+1)/W) x [j/H, (j+1)/H): the
 // image's centre lies along -z, +x right of it, the top row straight up. The map's frame is the
 // world turned by the environment's rotation. Lookups are bilinear (wrapping in u); sampling
-// follows a piecewise-constant distribution over the texels weighted by sin(theta), so a sun in
-// the map is found by shadow rays rather than by chance. That distribution is MIS-compensated
-// (scene/flatten_environment.cpp): it leaves out what is dimmer than the map's mean, which only
-// BSDF sampling then finds, so the environment light is valid only beside BSDF sampling.
+// follows a piecewise-constant distribution over cells of the map (texels split into up to 4 x 4)
+// weighted by sin(theta), so a sun in the map is found by shadow rays rather than by chance. That
+// distribution is MIS-compensated (scene/flatten_environment.cpp): it leaves out what is dimmer
+// than the map's mean, which only BSDF sampling then finds, so the environment light is valid
+// only beside BSDF sampling.
 #pragma once
 
 #include <cmath>
@@ -28,6 +29,7 @@ struct Environment {
   Mat3 toWorld;         // map frame -> world (the rotation); fromWorld is its transpose
   Mat3 fromWorld;
   uint32_t width = 0, height = 0;  // of the map; 0: a constant environment
+  uint32_t sampleColumns = 0, sampleRows = 0;  // of its sampling distribution
   int32_t light = -1;              // its index among the lights; -1: black, not a light
 };
 

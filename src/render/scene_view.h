@@ -68,7 +68,8 @@ CANDELA_HDI_ALWAYS Vec3 environmentRadiance(const SceneView& scene, const Vec3& 
 // The environment map's sampling distribution.
 CANDELA_HDI Distribution2D environmentDistribution(const SceneView& scene) {
   return {scene.envConditionalCdf, scene.envMarginalCdf, scene.envConditionalGuide,
-          scene.envMarginalGuide, scene.environment.width, scene.environment.height};
+          scene.envMarginalGuide, scene.environment.sampleColumns,
+          scene.environment.sampleRows};
 }
 
 }  // namespace candela

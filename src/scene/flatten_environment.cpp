@@ -9,6 +9,7 @@
 #include "core/constants.h"
 #include "core/distribution2d.h"
 #include "core/rotation.h"
+#include "render/environment.h"
 
 namespace candela {
 namespace {
@@ -35,6 +36,34 @@ void compensateForMis(std::vector<double>& brightness, uint32_t w, uint32_t h) {
 
 }  // namespace
 
+uint32_t environmentCellsPerTexel(uint32_t w, uint32_t h) {
+  constexpr uint64_t kMaxCells = uint64_t(1) << 22;  // 8 bytes each: 32 MB
+  for (uint32_t k = 4; k > 1; k /= 2)
+    if (uint64_t(k * k) * w * h <= kMaxCells) return k;
+  return 1;
+}
+
+// Where k is even a cell lies within one bilinear patch (texel centres are the patches'
+// corners), over which the mean of the lookup is its value at the cell's centre; a whole texel's
+// mean (k = 1) is the mean of its quarters'.
+std::vector<double> environmentCellBrightness(const std::vector<Vec3>& texels, uint32_t w,
+                                              uint32_t h, uint32_t k) {
+  const uint32_t split = k < 2 ? 2 : k, sw = split * w, sh = split * h;
+  std::vector<double> f(size_t(sw) * sh);
+  for (uint32_t y = 0; y < sh; ++y)
+    for (uint32_t x = 0; x < sw; ++x)
+      f[size_t(y) * sw + x] = componentSum(lookupMap(
+          texels.data(), w, h, (float(x) + 0.5f) / float(sw), (float(y) + 0.5f) / float(sh)));
+  if (k >= 2) return f;
+  std::vector<double> texelMeans(size_t(w) * h);
+  for (uint32_t y = 0; y < h; ++y)
+    for (uint32_t x = 0; x < w; ++x) {
+      const double* q = &f[size_t(2 * y) * sw + 2 * x];
+      texelMeans[size_t(y) * w + x] = 0.25 * (q[0] + q[1] + q[sw] + q[sw + 1]);
+    }
+  return texelMeans;
+}
+
 void flattenEnvironment(const EnvironmentDesc& desc, SceneData& s) {
   Environment e;
   if (!desc.image) {
@@ -54,35 +83,30 @@ void flattenEnvironment(const EnvironmentDesc& desc, SceneData& s) {
   e.fromWorld = e.toWorld.transposed();
   e.width = image.width;
   e.height = image.height;
-  s.environment = e;
   // The texels and their distribution depend on the map alone (not on strength, tint or
   // rotation): the frames of an animation build them once.
-  if (s.environmentMap == desc.image) return;
+  if (s.environmentMap == desc.image) {
+    e.sampleColumns = s.environment.sampleColumns;
+    e.sampleRows = s.environment.sampleRows;
+    s.environment = e;
+    return;
+  }
+  s.environment = e;
   s.environmentMap = desc.image;
   const uint32_t w = image.width, h = image.height;
   s.envTexels.resize(size_t(w) * h);
   for (uint32_t y = 0; y < h; ++y)
     for (uint32_t x = 0; x < w; ++x) s.envTexels[size_t(y) * w + x] = image.at(x, y);
 
-  // A texel's brightness is the brightest of it and its neighbours, which bounds the bilinear
-  // lookup over its cell.
-  std::vector<double> f(size_t(w) * h);
-  for (uint32_t y = 0; y < h; ++y)
-    for (uint32_t x = 0; x < w; ++x) {
-      double brightest = 0.0;
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dx = -1; dx <= 1; ++dx) {
-          const uint32_t ny = uint32_t(std::clamp(int(y) + dy, 0, int(h) - 1));
-          const uint32_t nx = (x + w + uint32_t(dx + 1) - 1) % w;
-          brightest = std::max(brightest, componentSum(s.envTexels[size_t(ny) * w + nx]));
-        }
-      f[size_t(y) * w + x] = brightest;
-    }
-  compensateForMis(f, w, h);
-  for (uint32_t y = 0; y < h; ++y)
-    for (uint32_t x = 0; x < w; ++x) f[size_t(y) * w + x] *= rowSinTheta(y, h);
+  const uint32_t k = environmentCellsPerTexel(w, h), cw = k * w, ch = k * h;
+  std::vector<double> f = environmentCellBrightness(s.envTexels, w, h, k);
+  compensateForMis(f, cw, ch);
+  for (uint32_t y = 0; y < ch; ++y)
+    for (uint32_t x = 0; x < cw; ++x) f[size_t(y) * cw + x] *= rowSinTheta(y, ch);
+  s.environment.sampleColumns = cw;
+  s.environment.sampleRows = ch;
   Distribution2DArrays d;
-  buildDistribution2D(f, w, h, &d);
+  buildDistribution2D(f, cw, ch, &d);
   s.envConditionalCdf = std::move(d.conditional);
   s.envMarginalCdf = std::move(d.marginal);
   s.envConditionalGuide = std::move(d.conditionalGuide);
