@@ -150,6 +150,8 @@ CANDELA_HDI bool sampleTriangleLight(const SceneView& scene, const Light& l, con
   const Vec3& p1 = scene.positions[tri.v[1]];
   const Vec3& p2 = scene.positions[tri.v[2]];
   const Vec3 n = cross(p1 - p0, p2 - p0);
+  // p behind the triangle's plane sees only its back, which emits nothing: no point to sample.
+  if (!(dot(n, p - p0) > 0.0f)) return false;
   const float twiceArea = length(n);
   if (!(twiceArea > 0.0f)) return false;
   float solidAngle = 0.0f;
@@ -171,8 +173,10 @@ CANDELA_HDI bool sampleTriangleLight(const SceneView& scene, const Light& l, con
   s->wi = toLight / s->distance;
   const float cosLight = -dot(s->wi, n) / twiceArea;
   if (!(cosLight > 0.0f)) return false;
-  s->radiance = emittedRadiance(scene, scene.materials[tri.material],
-                                triangleUv(scene, tri, b[1], b[2]));
+  const Material& m = scene.materials[tri.material];
+  s->radiance = m.emissionTexture.index < 0
+                    ? m.radiance
+                    : emittedRadiance(scene, m, triangleUv(scene, tri, b[1], b[2]));
   s->pdf = spherical ? 1.0f / solidAngle : dist2 / (cosLight * 0.5f * twiceArea);
   s->isDelta = false;
   return true;
