@@ -124,6 +124,7 @@ CANDELA_HDI Vec3 traceRadiance(const SceneView& scene, const Tracer& tracer, Ray
     CANDELA_DCHECK(sp.material < scene.materialCount);
     const Material& m = scene.materials[sp.material];
     const Vec3 wo = -ray.direction;
+    [[maybe_unused]] bool albedoHere = false;  // the albedo pass takes this surface's colour
     if constexpr (kAovs) {
       if (depth == 1) {
         first->hit = true;
@@ -136,7 +137,7 @@ CANDELA_HDI Vec3 traceRadiance(const SceneView& scene, const Tracer& tracer, Ray
         if (isEmissive(m))
           first->albedo = dot(wo, sp.ng) > 0.0f ? clampUnit(m.radiance) : Vec3(0.0f);
         else
-          first->albedo = aovAlbedo(m, surfaceColor(scene, m, hit, sp));
+          albedoHere = true;  // from the surface colour below, looked up once
       }
     }
 
@@ -153,9 +154,16 @@ CANDELA_HDI Vec3 traceRadiance(const SceneView& scene, const Tracer& tracer, Ray
       }
       break;
     }
-    if (depth > maxDepth) break;
+    if (depth > maxDepth) {
+      if constexpr (kAovs)
+        if (albedoHere) first->albedo = aovAlbedo(m, surfaceColor(scene, m, hit, sp));
+      break;
+    }
 
-    const Bsdf bsdf = makeBsdf(m, surfaceColor(scene, m, hit, sp), wo, sp.ng, sp.ns);
+    const Vec3 color = surfaceColor(scene, m, hit, sp);
+    if constexpr (kAovs)
+      if (albedoHere) first->albedo = aovAlbedo(m, color);
+    const Bsdf bsdf = makeBsdf(m, color, wo, sp.ng, sp.ns);
     if (hasSmoothLobe(m)) {
       radiance += throughput * estimateDirect(scene, tracer, bsdf, sp, rng, counters);
       // "direct": the scattered ray below only gathers emission; nothing scatters after it.
