@@ -6,6 +6,7 @@
 
 #include <cstring>
 #include <functional>
+#include <memory>
 #include <random>
 #include <string>
 
@@ -372,6 +373,38 @@ TEST(FrameScene, ObjectTransformChangeRefitsAndMeshChangeRebuilds) {
   scene.objects[0].mesh.positions[2] = Vec3(0, 2, 0);  // same transform, other mesh
   expectSameScene(frames.prepare(scene), flattenScene(scene));
   EXPECT_EQ(frames.change(), SceneChange::Structure);
+}
+
+// A frame that changes only values keeps the texture pool where it is (the GPU backend then
+// uploads it once: render/scene_change.h), and a frame with another texture is a new structure.
+TEST(FrameScene, TexturePoolStaysUntilTheTexturesChange) {
+  const auto texture = [](uint8_t value) {
+    auto t = std::make_shared<TextureDesc>();
+    t->width = 2;
+    t->height = 1;
+    t->texels8.assign(8, value);
+    t->contentHash = value;  // as the reader's hash of the texels would differ
+    return t;
+  };
+  SceneDesc scene;
+  ObjectDesc object;
+  object.mesh.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)};
+  object.mesh.triangles = {MeshTriangle{{0, 1, 2}, {-1, -1, -1}, 0}};
+  Material textured;
+  textured.colorTexture.index = 0;
+  object.mesh.materials = {textured};
+  scene.objects.push_back(object);
+  scene.textures = {texture(100)};
+  FrameScene frames;
+  const uint8_t* pool = frames.prepare(scene).texels8.data();
+  scene.camera.fov = 30;
+  expectSameScene(frames.prepare(scene), flattenScene(scene));
+  EXPECT_EQ(frames.change(), SceneChange::Values);
+  EXPECT_EQ(frames.prepare(scene).texels8.data(), pool) << "the pool was copied again";
+  scene.textures = {texture(200)};
+  expectSameScene(frames.prepare(scene), flattenScene(scene));
+  EXPECT_EQ(frames.change(), SceneChange::Structure);
+  EXPECT_EQ(frames.prepare(scene).texels8[0], 200);
 }
 
 // Two grids of triangles far apart, then moved into each other: refitting would leave boxes that

@@ -31,7 +31,9 @@ namespace candela {
 // Every geometry array, as X(Type, name, count, rewrittenBy): the one list that the views, the
 // owning SceneData and the CUDA upload expand, so an array is added in one place. rewrittenBy is
 // the least change of a frame that may rewrite the array (render/scene_change.h): Motion for what
-// moving primitives changes (a refit), Structure for what only a rebuild changes.
+// moving primitives changes (a refit), Structure for what only a rebuild changes. The texture pool
+// is Structure: the scene keys (scene/frame_scene.cpp) hold every texture's content hash, so a
+// frame with other textures is a new structure, and frames that only move or retint keep it.
 #define CANDELA_GEOMETRY_ARRAYS(X)                 \
   X(Sphere, spheres, sphereCount, Motion)          \
   X(Vec3, positions, positionCount, Motion)        \
@@ -41,10 +43,10 @@ namespace candela {
   X(BvhNode, nodes, nodeCount, Motion)             \
   X(uint32_t, primIndices, primIndexCount, Structure) \
   X(AlphaMask, alphaMasks, alphaMaskCount, Values)      \
-  X(Texture, textures, textureCount, Values)            \
-  X(uint8_t, texels8, texel8Count, Values)              \
-  X(float, texelsF, texelFCount, Values)                \
-  X(float, srgbToLinear, srgbToLinearCount, Values)
+  X(Texture, textures, textureCount, Structure)         \
+  X(uint8_t, texels8, texel8Count, Structure)           \
+  X(float, texelsF, texelFCount, Structure)             \
+  X(float, srgbToLinear, srgbToLinearCount, Structure)
 
 #define CANDELA_VIEW_ARRAY_FIELDS(Type, name, count, rewrittenBy) \
   const Type* name = nullptr;                                     \

@@ -210,8 +210,8 @@ void addEmitterLights(SceneData& s) {
 
 namespace {
 
-// The texture pool, the sRGB table and the materials' alpha masks (each only when used).
-void addTextures(SceneData& s, const SceneDesc& desc) {
+// The texture pool and its sRGB table (only when used).
+void addTexturePool(SceneData& s, const SceneDesc& desc) {
   for (const std::shared_ptr<const TextureDesc>& t : desc.textures) {
     Texture texture;
     texture.width = t->width;
@@ -229,6 +229,11 @@ void addTextures(SceneData& s, const SceneDesc& desc) {
   }
   if (!s.textures.empty())
     for (int i = 0; i < 256; ++i) s.srgbToLinear.push_back(srgbToLinearValue(float(i) / 255.0f));
+}
+
+// What the materials make of the pool: the means of emission textures, and the alpha masks
+// (only when some material has one).
+void addTextureUses(SceneData& s) {
   // Only emission textures weigh light selection: colour textures, the usual and the large ones,
   // are not walked on every refresh. Each texel's centre looks that texel up exactly.
   std::vector<bool> lights(s.textures.size(), false);
@@ -261,9 +266,9 @@ void tagInstance(SceneData& s, uint32_t instance) {
   s.materialInstances.resize(s.materials.size(), instance);
 }
 
-// Everything but the BVH; mesh vertices and triangles only with `geometry`. The order of
-// materials depends only on the scene's structure, so triangles keep valid material indices
-// when a refresh re-appends the materials.
+// Everything but the BVH; mesh vertices, triangles and the texture pool only with `geometry`.
+// The order of materials depends only on the scene's structure, so triangles keep valid material
+// indices when a refresh re-appends the materials.
 void addContents(SceneData& s, const SceneDesc& desc, bool geometry) {
   // Instances are numbered from 1: spheres, then objects, then lights, in file order.
   const uint32_t sphereCount = uint32_t(desc.spheres.size());
@@ -285,7 +290,9 @@ void addContents(SceneData& s, const SceneDesc& desc, bool geometry) {
   // Vertices after the last smooth (or textured) mesh have no normals (or uvs) either.
   if (geometry && !s.normals.empty()) s.normals.resize(s.positions.size(), OctNormal());
   if (geometry && !s.uvs.empty()) s.uvs.resize(s.positions.size(), Vec2());
-  addTextures(s, desc);
+  // A refresh keeps the pool: the frame's textures are the last frame's (equal scene keys).
+  if (geometry) addTexturePool(s, desc);
+  addTextureUses(s);
 
   flattenEnvironment(desc.environment, s);
   s.camera = resolveCamera(desc.camera, desc.file);
@@ -299,10 +306,6 @@ void refreshSceneValues(SceneData& s, const SceneDesc& desc) {
   s.materialInstances.clear();
   s.spheres.clear();
   s.lights.clear();
-  s.textures.clear();
-  s.texels8.clear();
-  s.texelsF.clear();
-  s.srgbToLinear.clear();
   s.alphaMasks.clear();
   s.textureMeans.clear();
   addContents(s, desc, false);

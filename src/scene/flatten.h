@@ -31,7 +31,8 @@ void addEmitterLights(SceneData& scene);
 
 // Replaces the camera, settings, environment, materials, lights and spheres of `scene` (which
 // flattenScene made from a description with the same geometry as `desc`) by those of `desc`,
-// keeping mesh vertices, triangles and the BVH. scene/frame_scene.h decides when that is valid.
+// keeping mesh vertices, triangles, the BVH and the texture pool. scene/frame_scene.h decides
+// when that is valid.
 void refreshSceneValues(SceneData& scene, const SceneDesc& desc);
 
 }  // namespace candela

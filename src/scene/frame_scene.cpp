@@ -71,6 +71,8 @@ std::string sceneKey(const SceneDesc& desc, bool withTransforms) {
     key.add(hashOf(o.mesh.uvs));
     key.add(hashOf(o.mesh.triangles));
   }
+  key.add(desc.textures.size());
+  for (const std::shared_ptr<const TextureDesc>& t : desc.textures) key.add(t->contentHash);
   return key.take();
 }
 

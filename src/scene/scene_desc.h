@@ -132,6 +132,9 @@ struct TextureDesc {
   uint32_t width = 0, height = 0;
   std::vector<uint8_t> texels8;  // 4 * width * height, or empty
   std::vector<float> texelsF;    // 4 * width * height, or empty
+  // Of format, size and texels, set by the reader: frames whose textures have equal hashes share
+  // one texture pool (scene/frame_scene.cpp).
+  uint64_t contentHash = 0;
 };
 
 // Sah: the tree the own engine and the GPU trace. Flat: one level, so every ray tests every

@@ -2,6 +2,8 @@
 #include "scene/read/texture_reader.h"
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <exception>
 #include <filesystem>
 
@@ -27,6 +29,31 @@ std::string texelProblem(const ImageRGB& image) {
   return "";
 }
 
+// A 64-bit hash of the texture's format, size and texel bytes, eight bytes a step (a multiply
+// and rotate mix, as xxHash's), so hashing costs little beside decoding.
+uint64_t contentHash(const TextureDesc& t) {
+  constexpr uint64_t kPrime1 = 0x9e3779b185ebca87ull, kPrime2 = 0xc2b2ae3d27d4eb4full;
+  uint64_t h = kPrime1 ^ (uint64_t(t.format) << 56) ^ (uint64_t(t.width) << 28) ^ t.height;
+  const auto mix = [&h](uint64_t word) {
+    h ^= word * kPrime2;
+    h = ((h << 31) | (h >> 33)) * kPrime1;
+  };
+  const auto hashBytes = [&mix](const unsigned char* p, size_t n) {
+    size_t i = 0;
+    for (; i + 8 <= n; i += 8) {
+      uint64_t word;
+      std::memcpy(&word, p + i, 8);
+      mix(word);
+    }
+    uint64_t tail = n;
+    for (; i < n; ++i) tail = (tail << 8) | p[i];
+    mix(tail);
+  };
+  hashBytes(t.texels8.data(), t.texels8.size());
+  hashBytes(reinterpret_cast<const unsigned char*>(t.texelsF.data()), t.texelsF.size() * sizeof(float));
+  return h ^ (h >> 29);
+}
+
 TextureDesc decode(const std::string& path, TextureUse use, bool* hasAlpha) {
   TextureDesc t;
   t.file = path;
@@ -50,6 +77,7 @@ TextureDesc decode(const std::string& path, TextureUse use, bool* hasAlpha) {
     t.texels8 = std::move(image.pixels);
     *hasAlpha = image.channels == 2 || image.channels == 4;
   }
+  t.contentHash = contentHash(t);
   return t;
 }
 
