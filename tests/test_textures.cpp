@@ -140,6 +140,24 @@ TEST(SphereUv, EquirectangularWithVUp) {
   expectUv(Vec3(0, s, -s), 0.5f, 0.75f);
 }
 
+// The reader hashes what a texture holds (scene/frame_scene.cpp keeps a frame's pool while the
+// hashes stay): two files with the same texels hash alike, a texel or the decoding apart do not.
+TEST(TextureHash, FollowsTheContentNotTheFile) {
+  test::TempDir dir;
+  ASSERT_TRUE(test::writeTestPng(dir.file("a.png"), 3, 1, 3, {1, 2, 3, 4, 5, 6, 7, 8, 9}));
+  ASSERT_TRUE(test::writeTestPng(dir.file("b.png"), 3, 1, 3, {1, 2, 3, 4, 5, 6, 7, 8, 9}));
+  ASSERT_TRUE(test::writeTestPng(dir.file("c.png"), 3, 1, 3, {1, 2, 3, 4, 5, 6, 7, 8, 10}));
+  SceneDesc desc;
+  TextureLoader loader(desc.textures, dir.path());
+  const auto hash = [&](const std::string& file, TextureUse use) {
+    return desc.textures[size_t(loader.load(dir.file(file), use).index)]->contentHash;
+  };
+  const uint64_t a = hash("a.png", TextureUse::Color);
+  EXPECT_EQ(hash("b.png", TextureUse::Color), a);
+  EXPECT_NE(hash("c.png", TextureUse::Color), a);
+  EXPECT_NE(hash("a.png", TextureUse::Mask), a);  // the same bytes read as linear values
+}
+
 // Corners that pair a position with another uv (a seam) or normal become separate vertices.
 TEST(ObjUv, VtIsReadAndSeamsSplitVertices) {
   test::TempDir dir;
