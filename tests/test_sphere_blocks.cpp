@@ -105,15 +105,21 @@ TEST(SphereBlocks, MatchOneSphereAtATimeBitForBit) {
   }
 }
 
+// From the origin down -z, towards the spheres at z = -5 of the tests below.
+Ray rayDownMinusZ() {
+  Ray ray;
+  ray.origin = Vec3(0.0f);
+  ray.direction = Vec3(0, 0, -1);
+  return ray;
+}
+
 TEST(SphereBlocks, ATieGoesToTheLowerIndex) {
   // Five copies of one sphere: whichever block and lane they sit in, the first is reported.
   const Sphere s{Vec3(0, 0, -5), 1};
   const std::vector<Sphere> spheres = {{Vec3(9, 9, 9), 0.5f}, s, s, s, s, s};
   SphereBlocks blocks;
   blocks.assign(spheres.data(), uint32_t(spheres.size()));
-  Ray ray;
-  ray.origin = Vec3(0.0f);
-  ray.direction = Vec3(0, 0, -1);
+  const Ray ray = rayDownMinusZ();
   float t;
   uint32_t prim;
   ASSERT_TRUE(closestSphere(blocks.view(), ray, ray.tMax, &t, &prim));
@@ -124,9 +130,7 @@ TEST(SphereBlocks, ATieGoesToTheLowerIndex) {
 TEST(SphereBlocks, NoSpheresAndDegenerateRaysHitNothing) {
   SphereBlocks none;
   none.assign(nullptr, 0);
-  Ray ray;
-  ray.origin = Vec3(0.0f);
-  ray.direction = Vec3(0, 0, -1);
+  Ray ray = rayDownMinusZ();
   float t;
   uint32_t prim;
   EXPECT_FALSE(closestSphere(none.view(), ray, ray.tMax, &t, &prim));

@@ -201,29 +201,38 @@ TEST(ObjUv, VtIsReadAndSeamsSplitVertices) {
   EXPECT_FLOAT_EQ(mid.y, 0.25f);  // 0.25 * 0 + 0.5 * 0 + 0.25 * 1
 }
 
+// two.png, a 2x1 texture, and quad.obj, a quad of uvs [0,1]^2 facing +z that spans x in [-1, 1]
+// (`header`: lines before its vertices, `use` before its face), both in `dir`. Returns the start
+// of a camera (the caller adds its spp) that sees the quad through two pixel columns, one on
+// each texel's centre (fov 30 at distance 1 / tan(15 deg)).
+std::string writeTwoTexelQuad(const test::TempDir& dir, const std::string& header = "",
+                              const std::string& use = "") {
+  EXPECT_TRUE(test::writeTestPng(dir.file("two.png"), 2, 1, 3, {40, 160, 230, 250, 120, 20}));
+  dir.write("quad.obj", header + "v -1 -9 0\nv 1 -9 0\nv 1 9 0\nv -1 9 0\nvt 0 0\nvt 1 0\n" +
+                            "vt 1 1\nvt 0 1\n" + use + "f 1/1 2/2 3/3 4/4\n");
+  return R"("camera": {"width": 2, "height": 16, "fov": 30, "position": [0, 0, 3.7320508],)";
+}
+
+// The linear colours of two.png's texels.
+const float kTwoLeft[3] = {srgb(40), srgb(160), srgb(230)};
+const float kTwoRight[3] = {srgb(250), srgb(120), srgb(20)};
+
 // A quad of uvs [0,1]^2 textured by a 2x1 image, seen through exactly two pixel columns whose
 // centres fall on the two texel centres (u = 0.25 and 0.75), under a uniform white environment
 // with max_depth 1: each column's radiance is its texel's albedo.
 TEST(TextureRender, QuadShowsEachTexelsAlbedoInAFurnace) {
   test::TempDir dir;
-  ASSERT_TRUE(test::writeTestPng(dir.file("two.png"), 2, 1, 3, {40, 160, 230, 250, 120, 20}));
-  dir.write("quad.obj",
-            "v -1 -9 0\nv 1 -9 0\nv 1 9 0\nv -1 9 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
-            "f 1/1 2/2 3/3 4/4\n");
-  // fov 30 at distance 1 / tan(15 deg): the view spans x in [-1, 1].
-  const std::string json = R"({
-    "camera": {"width": 2, "height": 16, "fov": 30, "position": [0, 0, 3.7320508], "spp": 2048},
+  const std::string json = "{" + writeTwoTexelQuad(dir) + R"( "spp": 2048},
     "render": {"max_depth": 1, "antialiasing": false},
     "objects": [{"file": "quad.obj", "color": {"texture": "two.png"}}],
     "environment": {"color": 1}
   })";
   const RenderResult r = test::renderTestScene(json, 0, dir.path());
-  const float left[3] = {srgb(40), srgb(160), srgb(230)}, right[3] = {srgb(250), srgb(120), srgb(20)};
   for (int c = 0; c < 3; ++c) {
     const test::RegionStats l = test::regionStats(r.image, 0, 0, 1, 16, c);
     const test::RegionStats rr = test::regionStats(r.image, 1, 0, 2, 16, c);
-    EXPECT_NEAR(l.mean, left[c], 4 * l.standardError() + 2e-3) << "channel " << c;
-    EXPECT_NEAR(rr.mean, right[c], 4 * rr.standardError() + 2e-3) << "channel " << c;
+    EXPECT_NEAR(l.mean, kTwoLeft[c], 4 * l.standardError() + 2e-3) << "channel " << c;
+    EXPECT_NEAR(rr.mean, kTwoRight[c], 4 * rr.standardError() + 2e-3) << "channel " << c;
   }
 }
 
@@ -231,21 +240,16 @@ TEST(TextureRender, QuadShowsEachTexelsAlbedoInAFurnace) {
 // each texel's column shows 2 x its colour.
 TEST(TextureRender, MapKeEmitsTheTextureSeenDirectly) {
   test::TempDir dir;
-  ASSERT_TRUE(test::writeTestPng(dir.file("two.png"), 2, 1, 3, {40, 160, 230, 250, 120, 20}));
   dir.write("lamp.mtl", "newmtl lamp\nKe 2 2 2\nmap_Ke two.png\n");
-  dir.write("quad.obj",
-            "mtllib lamp.mtl\nv -1 -9 0\nv 1 -9 0\nv 1 9 0\nv -1 9 0\nvt 0 0\nvt 1 0\nvt 1 1\n"
-            "vt 0 1\nusemtl lamp\nf 1/1 2/2 3/3 4/4\n");
-  const std::string json = R"({
-    "camera": {"width": 2, "height": 16, "fov": 30, "position": [0, 0, 3.7320508], "spp": 4},
+  const std::string json = "{" + writeTwoTexelQuad(dir, "mtllib lamp.mtl\n", "usemtl lamp\n") +
+                           R"( "spp": 4},
     "render": {"max_depth": 1, "antialiasing": false},
     "objects": [{"file": "quad.obj"}]
   })";
   const RenderResult r = test::renderTestScene(json, 0, dir.path());
-  const float left[3] = {srgb(40), srgb(160), srgb(230)}, right[3] = {srgb(250), srgb(120), srgb(20)};
   for (int c = 0; c < 3; ++c) {
-    EXPECT_NEAR(test::regionStats(r.image, 0, 0, 1, 16, c).mean, 2 * left[c], 1e-5) << c;
-    EXPECT_NEAR(test::regionStats(r.image, 1, 0, 2, 16, c).mean, 2 * right[c], 1e-5) << c;
+    EXPECT_NEAR(test::regionStats(r.image, 0, 0, 1, 16, c).mean, 2 * kTwoLeft[c], 1e-5) << c;
+    EXPECT_NEAR(test::regionStats(r.image, 1, 0, 2, 16, c).mean, 2 * kTwoRight[c], 1e-5) << c;
   }
 }
 

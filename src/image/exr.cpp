@@ -83,33 +83,12 @@ static void checkedWindowSize(const Imath::Box2i& window, uint32_t* width, uint3
   *height = uint32_t(h);
 }
 
-ExrChannels decodeExrChannels(const std::string& bytes) {
-  try {
-    Imf::StdISStream stream;
-    stream.str(bytes);
-    Imf::InputFile file(stream);
-    const Imath::Box2i window = file.header().dataWindow();
-    ExrChannels out;
-    checkedWindowSize(window, &out.width, &out.height);
-    Imf::FrameBuffer frame;
-    const Imf::ChannelList& list = file.header().channels();
-    for (auto it = list.begin(); it != list.end(); ++it)
-      out.channels.push_back({it.name(), it.channel().type == Imf::UINT,
-                              std::vector<float>(size_t(out.width) * out.height)});
-    for (ExrChannel& c : out.channels)
-      frame.insert(c.name, Imf::Slice::Make(Imf::FLOAT, c.pixels.data(), window, sizeof(float),
-                                            sizeof(float) * out.width));
-    file.setFrameBuffer(frame);
-    file.readPixels(window.min.y, window.max.y);
-    return out;
-  } catch (const ImageWriteError&) {
-    throw;
-  } catch (const std::exception& e) {
-    throw ImageWriteError(std::string("cannot decode EXR: ") + e.what());
-  }
-}
+namespace {
 
-ImageRGB decodeExr(const std::string& bytes) {
+// Opens the EXR in `bytes` and returns read(file, window, width, height), with OpenEXR's errors
+// (and a data window too large) as ImageWriteError.
+template <typename Read>
+auto readExr(const std::string& bytes, Read read) {
   try {
     Imf::StdISStream stream;
     stream.str(bytes);
@@ -117,9 +96,41 @@ ImageRGB decodeExr(const std::string& bytes) {
     const Imath::Box2i window = file.header().dataWindow();
     uint32_t width, height;
     checkedWindowSize(window, &width, &height);
+    return read(file, window, width, height);
+  } catch (const ImageWriteError&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw ImageWriteError(std::string("cannot decode EXR: ") + e.what());
+  }
+}
 
+}  // namespace
+
+ExrChannels decodeExrChannels(const std::string& bytes) {
+  return readExr(bytes, [](Imf::InputFile& file, const Imath::Box2i& window, uint32_t width,
+                           uint32_t height) {
+    ExrChannels out;
+    out.width = width;
+    out.height = height;
+    Imf::FrameBuffer frame;
+    const Imf::ChannelList& list = file.header().channels();
+    for (auto it = list.begin(); it != list.end(); ++it)
+      out.channels.push_back({it.name(), it.channel().type == Imf::UINT,
+                              std::vector<float>(size_t(width) * height)});
+    for (ExrChannel& c : out.channels)
+      frame.insert(c.name, Imf::Slice::Make(Imf::FLOAT, c.pixels.data(), window, sizeof(float),
+                                            sizeof(float) * width));
+    file.setFrameBuffer(frame);
+    file.readPixels(window.min.y, window.max.y);
+    return out;
+  });
+}
+
+ImageRGB decodeExr(const std::string& bytes) {
+  return readExr(bytes, [](Imf::InputFile& file, const Imath::Box2i& window, uint32_t width,
+                           uint32_t height) {
     ImageRGB image{width, height};
-    const size_t xStride = 3 * sizeof(float), yStride = xStride * image.width;
+    const size_t xStride = 3 * sizeof(float), yStride = xStride * width;
     Imf::FrameBuffer frame;
     for (int c = 0; c < 3; ++c) {
       char* base = reinterpret_cast<char*>(image.pixels.data() + c);
@@ -129,11 +140,7 @@ ImageRGB decodeExr(const std::string& bytes) {
     file.setFrameBuffer(frame);
     file.readPixels(window.min.y, window.max.y);
     return image;
-  } catch (const ImageWriteError&) {
-    throw;
-  } catch (const std::exception& e) {
-    throw ImageWriteError(std::string("cannot decode EXR: ") + e.what());
-  }
+  });
 }
 
 }  // namespace candela
