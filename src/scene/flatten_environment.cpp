@@ -49,19 +49,19 @@ uint32_t environmentCellsPerTexel(uint32_t w, uint32_t h) {
 std::vector<double> environmentCellBrightness(const std::vector<Vec3>& texels, uint32_t w,
                                               uint32_t h, uint32_t k) {
   const uint32_t split = k < 2 ? 2 : k, sw = split * w, sh = split * h;
-  std::vector<double> f(size_t(sw) * sh);
-  for (uint32_t y = 0; y < sh; ++y)
-    for (uint32_t x = 0; x < sw; ++x)
-      f[size_t(y) * sw + x] = componentSum(lookupMap(
-          texels.data(), w, h, (float(x) + 0.5f) / float(sw), (float(y) + 0.5f) / float(sh)));
-  if (k >= 2) return f;
-  std::vector<double> texelMeans(size_t(w) * h);
-  for (uint32_t y = 0; y < h; ++y)
-    for (uint32_t x = 0; x < w; ++x) {
-      const double* q = &f[size_t(2 * y) * sw + 2 * x];
-      texelMeans[size_t(y) * w + x] = 0.25 * (q[0] + q[1] + q[sw] + q[sw + 1]);
-    }
-  return texelMeans;
+  const auto lookup = [&](uint32_t x, uint32_t y) {
+    return componentSum(lookupMap(texels.data(), w, h, (float(x) + 0.5f) / float(sw),
+                                  (float(y) + 0.5f) / float(sh)));
+  };
+  const uint32_t cw = k * w, ch = k * h;
+  std::vector<double> f(size_t(cw) * ch);
+  for (uint32_t y = 0; y < ch; ++y)
+    for (uint32_t x = 0; x < cw; ++x)
+      f[size_t(y) * cw + x] = k >= 2 ? lookup(x, y)
+                                     : 0.25 * (lookup(2 * x, 2 * y) + lookup(2 * x + 1, 2 * y) +
+                                               lookup(2 * x, 2 * y + 1) +
+                                               lookup(2 * x + 1, 2 * y + 1));
+  return f;
 }
 
 void flattenEnvironment(const EnvironmentDesc& desc, SceneData& s) {
