@@ -39,8 +39,6 @@ CANDELA_HDI float triangleAlpha(const GeometryView& scene, const Triangle& tri, 
 // Out of line: inlined into traversal, it slowed scenes without any mask by a tenth.
 CANDELA_HD_COLD inline bool maskedAlphaKeepsHit(const GeometryView& scene, const Triangle& tri,
                                                 float b1, float b2, const Ray& ray) {
-  const AlphaMask& mask = scene.alphaMasks[tri.material];
-  if (mask.constant >= 1.0f && mask.texture.index < 0) return true;
   const float alpha = triangleAlpha(scene, tri, b1, b2);
   if (alpha >= 1.0f) return true;
   if (!(alpha > 0.0f)) return false;

@@ -30,10 +30,11 @@ namespace candela {
 
 // Every geometry array, as X(Type, name, count, rewrittenBy): the one list that the views, the
 // owning SceneData and the CUDA upload expand, so an array is added in one place. rewrittenBy is
-// the least change of a frame that may rewrite the array (render/scene_change.h): Motion for what
-// moving primitives changes (a refit), Structure for what only a rebuild changes. The texture pool
-// is Structure: the scene keys (scene/frame_scene.cpp) hold every texture's content hash, so a
-// frame with other textures is a new structure, and frames that only move or retint keep it.
+// the least change of a frame that may rewrite the array (render/scene_change.h): Values for what
+// any frame may change (the alpha masks follow the materials), Motion for what moving primitives
+// change (a refit), Structure for what only a rebuild changes. The texture pool is Structure: the
+// scene keys (scene/frame_scene.cpp) hold every texture's content hash, so a frame with other
+// textures is a new structure, and frames that only move or retint keep it.
 #define CANDELA_GEOMETRY_ARRAYS(X)                 \
   X(Sphere, spheres, sphereCount, Motion)          \
   X(Vec3, positions, positionCount, Motion)        \

@@ -13,7 +13,7 @@
 
 #include "core/vec2.h"
 #include "core/vec3.h"
-#include "render/fresnel.h"
+#include "render/bsdf_conductor.h"
 #include "render/material.h"
 
 namespace candela {
@@ -33,14 +33,10 @@ struct FirstHit {
 // What a pass uses as the colour of a material whose colour (texture included) is `color`: the
 // BSDF's colour, with a named metal's reflectance at normal incidence.
 CANDELA_HDI Vec3 aovAlbedo(const Material& m, const Vec3& color) {
-  if (m.type == MaterialType::Conductor && m.metal)
-    return color * fresnelConductor(1.0f, m.metalEta, m.metalK);
-  return color;
+  return m.type == MaterialType::Conductor ? conductorFresnel(m, color, 1.0f) : color;
 }
 
-CANDELA_HDI Vec3 clampUnit(const Vec3& v) {
-  return {minf(1.0f, maxf(0.0f, v.x)), minf(1.0f, maxf(0.0f, v.y)), minf(1.0f, maxf(0.0f, v.z))};
-}
+CANDELA_HDI Vec3 clampUnit(const Vec3& v) { return min(Vec3(1.0f), max(Vec3(0.0f), v)); }
 
 // A pixel's passes, summed over its samples in index order like its radiance.
 struct AovPixel {

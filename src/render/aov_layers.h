@@ -1,6 +1,6 @@
 // The render passes by name, and their images made from a render's per-pixel sums
 // (render/aov.h). The definitions are in docs/aovs.md; a new pass joins the table in
-// aov_layers.cpp and the switch of makeAovLayers.
+// aov_layers.cpp (in the enum's order: it is indexed by the enum) and the switch of resolvePixel.
 #pragma once
 
 #include <string>

@@ -32,7 +32,7 @@ struct Bsdf {
   Frame frame;  // +z: the shading normal on wo's side
   Vec3 ng;
   float side;  // +1 when wo lies on ng's side (outside), else -1
-  Vec3 wo;     // local (unset for a diffuse surface)
+  Vec3 wo;     // local (zero for a diffuse surface)
   float eta;   // glass: eta_t / eta_i for light leaving towards wo's side
 };
 
@@ -54,7 +54,7 @@ CANDELA_HDI bool hasSmoothLobe(const Material& m) {
       return true;
     case MaterialType::Conductor:
     case MaterialType::Glass:
-      return roughnessToAlpha(m.roughness) >= kSmoothAlpha;
+      return !isSmooth(m);
     case MaterialType::Emissive:
       return false;
   }
@@ -65,7 +65,7 @@ CANDELA_HDI bool hasSmoothLobe(const Material& m) {
 // only for such materials.
 CANDELA_HDI bool usesLobeChoice(const Material& m) {
   return m.type == MaterialType::Plastic ||
-         (m.type == MaterialType::Glass && !dielectricIsSmooth(m));
+         (m.type == MaterialType::Glass && !isSmooth(m));
 }
 
 CANDELA_HDI bool isEmissive(const Material& m) { return m.type == MaterialType::Emissive; }
@@ -81,8 +81,7 @@ CANDELA_HD_NOINLINE inline Vec3 evalNonDiffuse(const Bsdf& b, const Vec3& wi, fl
   const Material& m = *b.material;
   switch (m.type) {
     case MaterialType::Conductor:
-      *pdf = conductorPdf(m, b.wo, wi);
-      return conductorEval(m, b.color, b.wo, wi);
+      return conductorEvalPdf(m, b.color, b.wo, wi, pdf);
     case MaterialType::Glass:
       return dielectricEvalPdf(m, b.color, b.eta, b.wo, wi, pdf);
     case MaterialType::Plastic:

@@ -15,20 +15,17 @@ CANDELA_HDI Vec3 conductorFresnel(const Material& m, const Vec3& color, float co
   return m.metal ? color * fresnelConductor(cosThetaI, m.metalEta, m.metalK) : color;
 }
 
-CANDELA_HDI Vec3 conductorEval(const Material& m, const Vec3& color, const Vec3& wo,
-                               const Vec3& wi) {
+// f |cos(wi)| and the pdf of sampling wi, together (they share D and G1(wo)).
+CANDELA_HDI Vec3 conductorEvalPdf(const Material& m, const Vec3& color, const Vec3& wo,
+                                  const Vec3& wi, float* pdf) {
+  *pdf = 0.0f;
   const float alpha = roughnessToAlpha(m.roughness);
   if (alpha < kSmoothAlpha || wo.z <= 0.0f || wi.z <= 0.0f) return Vec3(0.0f);
   const Vec3 h = normalize(wo + wi);
-  const float dg = ggxD(h, alpha) * ggxG(wo, wi, h, alpha);
+  const float d = ggxD(h, alpha), g1o = ggxG1(wo, h, alpha);
+  *pdf = g1o * d / (4.0f * wo.z);
+  const float dg = d * (g1o * ggxG1(wi, h, alpha));
   return conductorFresnel(m, color, dot(wo, h)) * (dg / (4.0f * wo.z));
-}
-
-CANDELA_HDI float conductorPdf(const Material& m, const Vec3& wo, const Vec3& wi) {
-  const float alpha = roughnessToAlpha(m.roughness);
-  if (alpha < kSmoothAlpha || wo.z <= 0.0f || wi.z <= 0.0f) return 0.0f;
-  const Vec3 h = normalize(wo + wi);
-  return ggxG1(wo, h, alpha) * ggxD(h, alpha) / (4.0f * wo.z);
 }
 
 CANDELA_HDI bool conductorSample(const Material& m, const Vec3& color, const Vec3& wo, float u1,

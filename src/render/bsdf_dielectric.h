@@ -14,10 +14,6 @@
 
 namespace candela {
 
-CANDELA_HDI bool dielectricIsSmooth(const Material& m) {
-  return roughnessToAlpha(m.roughness) < kSmoothAlpha;
-}
-
 // The microfacet normal that takes wo to wi (reflection when both lie above, else refraction),
 // turned up; false for a pair no visible facet connects.
 CANDELA_HDI bool dielectricHalfVector(const Vec3& wo, const Vec3& wi, float eta, Vec3* wm,
@@ -40,8 +36,9 @@ CANDELA_HDI Vec3 dielectricEvalPdf(const Material& m, const Vec3& color, float e
   float etap;
   if (alpha < kSmoothAlpha || !dielectricHalfVector(wo, wi, eta, &wm, &etap)) return Vec3(0.0f);
   const float F = fresnelDielectric(dot(wo, wm), eta);
-  const float visible = ggxVisiblePdf(wo, wm, alpha);
-  const float dg = ggxD(wm, alpha) * ggxG(wo, wi, wm, alpha);
+  const float d = ggxD(wm, alpha), g1o = ggxG1(wo, wm, alpha);
+  const float visible = g1o * maxf(0.0f, dot(wo, wm)) * d / wo.z;  // ggxVisiblePdf
+  const float dg = d * (g1o * ggxG1(wi, wm, alpha));
   if (wi.z > 0.0f) {
     *pdf = visible / (4.0f * fabsf(dot(wo, wm))) * F;
     return Vec3(dg * F / (4.0f * wo.z));

@@ -11,8 +11,6 @@ CANDELA_HDI Vec3 diffuseEval(const Vec3& color, const Vec3& wi) {
   return wi.z > 0.0f ? color * (wi.z * kInvPi) : Vec3(0.0f);
 }
 
-CANDELA_HDI float diffusePdf(const Vec3& wi) { return cosineHemispherePdf(wi.z); }
-
 CANDELA_HDI bool diffuseSample(const Vec3& color, float u1, float u2, BsdfSample* s) {
   s->wi = sampleCosineHemisphere(u1, u2);
   s->pdf = cosineHemispherePdf(s->wi.z);

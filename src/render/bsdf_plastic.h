@@ -17,8 +17,7 @@ namespace candela {
 // The coat's transmittance at cos(theta): 1 - F for a smooth coat; for a rough one the table
 // of what its BTDF transmits (masking takes some of it, so it is less than 1 - reflectance).
 CANDELA_HDI float plasticTransmittance(const Material& m, float cosTheta) {
-  if (roughnessToAlpha(m.roughness) < kSmoothAlpha)
-    return 1.0f - fresnelDielectric(cosTheta, m.ior);
+  if (isSmooth(m)) return 1.0f - fresnelDielectric(cosTheta, m.ior);
   const float x = minf(maxf(cosTheta, 0.0f), 1.0f) * float(kPlasticTableSize - 1);
   const uint32_t i = x < float(kPlasticTableSize - 2) ? uint32_t(x) : kPlasticTableSize - 2;
   const float w = x - float(i);
@@ -34,31 +33,38 @@ CANDELA_HDI float plasticCoatProbability(const Vec3& color, float transmittanceO
   return coat + base > 0.0f ? coat / (coat + base) : 0.0f;
 }
 
-// The smooth part (base, and a rough coat's reflection): f |cos(wi)| and its pdf.
-CANDELA_HDI Vec3 plasticEvalPdf(const Material& m, const Vec3& color, const Vec3& wo,
-                                const Vec3& wi, float* pdf) {
+// plasticEvalPdf given wo's transmittance `to` and the coat's sampling probability.
+CANDELA_HDI Vec3 plasticEvalPdfAt(const Material& m, const Vec3& color, const Vec3& wo,
+                                  const Vec3& wi, float to, float coatProbability, float* pdf) {
   *pdf = 0.0f;
   if (wo.z <= 0.0f || wi.z <= 0.0f) return Vec3(0.0f);
-  const float to = plasticTransmittance(m, wo.z), ti = plasticTransmittance(m, wi.z);
-  const float coatProbability = plasticCoatProbability(color, to);
+  const float ti = plasticTransmittance(m, wi.z);
   const Vec3 base =
       color * (kInvPi * wi.z * to * ti / (m.ior * m.ior * (1.0f - m.plasticInternalReflectance)));
   *pdf = (1.0f - coatProbability) * cosineHemispherePdf(wi.z);
   const float alpha = roughnessToAlpha(m.roughness);
   if (alpha < kSmoothAlpha) return base;
   const Vec3 h = normalize(wo + wi);
-  const float d = ggxD(h, alpha);
-  *pdf += coatProbability * ggxG1(wo, h, alpha) * d / (4.0f * wo.z);
+  const float d = ggxD(h, alpha), g1o = ggxG1(wo, h, alpha);
+  *pdf += coatProbability * g1o * d / (4.0f * wo.z);
   const float coat =
-      fresnelDielectric(dot(wo, h), m.ior) * d * ggxG(wo, wi, h, alpha) / (4.0f * wo.z);
+      fresnelDielectric(dot(wo, h), m.ior) * d * (g1o * ggxG1(wi, h, alpha)) / (4.0f * wo.z);
   return base + Vec3(coat);
+}
+
+// The smooth part (base, and a rough coat's reflection): f |cos(wi)| and its pdf.
+CANDELA_HDI Vec3 plasticEvalPdf(const Material& m, const Vec3& color, const Vec3& wo,
+                                const Vec3& wi, float* pdf) {
+  const float to = wo.z > 0.0f ? plasticTransmittance(m, wo.z) : 0.0f;
+  return plasticEvalPdfAt(m, color, wo, wi, to, plasticCoatProbability(color, to), pdf);
 }
 
 CANDELA_HDI bool plasticSample(const Material& m, const Vec3& color, const Vec3& wo, float uc,
                                float u1, float u2, BsdfSample* s) {
   if (wo.z <= 0.0f) return false;
   const float alpha = roughnessToAlpha(m.roughness);
-  const float coatProbability = plasticCoatProbability(color, plasticTransmittance(m, wo.z));
+  const float to = plasticTransmittance(m, wo.z);
+  const float coatProbability = plasticCoatProbability(color, to);
   if (uc < coatProbability) {
     if (alpha < kSmoothAlpha) {
       s->wi = Vec3(-wo.x, -wo.y, wo.z);
@@ -71,7 +77,7 @@ CANDELA_HDI bool plasticSample(const Material& m, const Vec3& color, const Vec3&
   } else {
     s->wi = sampleCosineHemisphere(u1, u2);
   }
-  const Vec3 f = plasticEvalPdf(m, color, wo, s->wi, &s->pdf);
+  const Vec3 f = plasticEvalPdfAt(m, color, wo, s->wi, to, coatProbability, &s->pdf);
   if (!(s->pdf > 0.0f)) return false;
   s->weight = f / s->pdf;
   s->delta = false;

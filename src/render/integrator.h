@@ -129,7 +129,7 @@ CANDELA_HDI Vec3 traceRadiance(const SceneView& scene, const Tracer& tracer, Ray
       if (depth == 1) {
         first->hit = true;
         first->position = sp.p;
-        first->normal = dot(wo, sp.ng) < 0.0f ? -sp.ns : sp.ns;
+        first->normal = facingNormal(wo, sp.ng, sp.ns);
         first->material = sp.material;
       }
       if (!first->albedoDone && (isEmissive(m) || hasSmoothLobe(m))) {

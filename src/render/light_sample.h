@@ -173,10 +173,7 @@ CANDELA_HDI bool sampleTriangleLight(const SceneView& scene, const Light& l, con
   s->wi = toLight / s->distance;
   const float cosLight = -dot(s->wi, n) / twiceArea;
   if (!(cosLight > 0.0f)) return false;
-  const Material& m = scene.materials[tri.material];
-  s->radiance = m.emissionTexture.index < 0
-                    ? m.radiance
-                    : emittedRadiance(scene, m, triangleUv(scene, tri, b[1], b[2]));
+  s->radiance = triangleRadiance(scene, scene.materials[tri.material], tri, b[1], b[2]);
   s->pdf = spherical ? 1.0f / solidAngle : dist2 / (cosLight * 0.5f * twiceArea);
   s->isDelta = false;
   return true;

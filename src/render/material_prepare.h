@@ -6,7 +6,7 @@
 
 namespace candela {
 
-// Fills m's derived fields from its type, colour, ior and roughness. Idempotent.
+// Fills m's derived fields from its type, ior and roughness. Idempotent.
 void prepareMaterial(Material* m);
 
 // The share of light arriving at cos(theta) = mu that a GGX dielectric coating (relative index

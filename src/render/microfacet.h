@@ -11,6 +11,7 @@
 
 #include "core/constants.h"
 #include "core/vec3.h"
+#include "render/material.h"
 
 namespace candela {
 
@@ -20,6 +21,11 @@ constexpr float kSmoothAlpha = 1e-3f;
 
 // alpha = roughness^2 (the Disney, glTF and Blender convention).
 CANDELA_HDI float roughnessToAlpha(float roughness) { return roughness * roughness; }
+
+// Whether m's roughness makes it perfectly smooth: a delta lobe.
+CANDELA_HDI bool isSmooth(const Material& m) {
+  return roughnessToAlpha(m.roughness) < kSmoothAlpha;
+}
 
 // Density of microfacet normal m (m.z > 0) per unit projected area.
 CANDELA_HDI float ggxD(const Vec3& m, float alpha) {

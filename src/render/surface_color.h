@@ -23,6 +23,13 @@ CANDELA_HDI Vec3 emittedRadiance(const SceneView& scene, const Material& m, cons
   return m.radiance * lookupTexture(scene.texturePool(), m.emissionTexture, uv.x, uv.y).rgb;
 }
 
+// The radiance of emissive triangle `tri` at barycentrics (b1, b2); UVs only for a texture.
+CANDELA_HDI Vec3 triangleRadiance(const SceneView& scene, const Material& m, const Triangle& tri,
+                                  float b1, float b2) {
+  if (m.emissionTexture.index < 0) return m.radiance;
+  return emittedRadiance(scene, m, triangleUv(scene, tri, b1, b2));
+}
+
 CANDELA_HDI Vec3 surfaceRadiance(const SceneView& scene, const Material& m, const Hit& hit,
                                  const SurfacePoint& sp) {
   if (m.emissionTexture.index < 0) return m.radiance;
