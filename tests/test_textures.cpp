@@ -362,7 +362,6 @@ TEST(TextureErrors, MtlMessagesNameFileAndLine) {
   EXPECT_EQ(error("newmtl a\n\nTr x\n"), "meshes/m.mtl:3: expected Tr between 0 and 1, got \"x\"");
   EXPECT_EQ(error("newmtl a\nmap_Kd -clamp on a.png\n"),
             "meshes/m.mtl:2: map_Kd option \"-clamp\" is not supported (only -s)");
-  ASSERT_TRUE(test::writeTestPng(dir.file("not.png"), 1, 1, 1, {0}));
   dir.write("bad.png", "not a png");
   const std::string unreadable = error("newmtl a\nmap_Kd bad.png\n");
   EXPECT_EQ(unreadable.rfind("meshes/m.mtl:2: cannot read the texture: ", 0), 0u) << unreadable;

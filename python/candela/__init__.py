@@ -115,10 +115,11 @@ class Scene:
         render as it came.
 
         aovs: render passes to return as well (docs/aovs.md): "depth", "distance", "normal",
-        "normal_camera", "albedo", "position", "instance", "material". With aovs the result is
-        a dict: "image" the radiance, and one array per pass, (height, width) float32 for depth
-        and distance, (height, width, 3) float32 for the others, (height, width) uint32 for the
-        ids. An unknown pass name raises ValueError.
+        "normal_camera", "albedo", "position", "instance", "material", "flow". With aovs the
+        result is a dict: "image" the radiance, and one array per pass, (height, width) float32
+        for depth and distance, (height, width, 2) float32 for flow, (height, width, 3) float32
+        for the others, (height, width) uint32 for the ids. An unknown pass name raises
+        ValueError.
 
         spp and seed override the scene's. backend: "auto" (the CPU until the CUDA backend has
         passed its tests on a GPU), "cpu" or "cuda" (untested; RuntimeError where it cannot

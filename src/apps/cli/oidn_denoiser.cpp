@@ -59,22 +59,16 @@ std::string pyoidnLibraryFolder() {
 }  // namespace
 
 std::unique_ptr<OidnDenoiser> OidnDenoiser::load(std::string* whyNot) {
-  std::vector<std::string> candidates;
-  if (const char* env = std::getenv("CANDELA_OIDN_LIBRARY"); env && *env) {
-    candidates.push_back(env);
-  } else {
-    candidates.push_back("libOpenImageDenoise.so.2");
-    const std::string folder = pyoidnLibraryFolder();
-    if (!folder.empty()) candidates.push_back(folder + "/libOpenImageDenoise.so.2");
-  }
   std::string tried;
-  for (const std::string& path : candidates) {
+  std::unique_ptr<OidnDenoiser> d;
+  // Opens `path`; true when it opened, with d set, or whyNot where it is not OIDN 2.
+  const auto open = [&](const std::string& path) {
     void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
     if (!handle) {
       tried += (tried.empty() ? "" : ", ") + path;
-      continue;
+      return false;
     }
-    std::unique_ptr<OidnDenoiser> d(new OidnDenoiser);
+    d.reset(new OidnDenoiser);
     d->handle_ = handle;
     d->path_ = path;
     d->api_ = std::make_unique<Api>();
@@ -90,9 +84,20 @@ std::unique_ptr<OidnDenoiser> OidnDenoiser::load(std::string* whyNot) {
         bind(handle, "oidnCommitFilter", &a.commitFilter) &&
         bind(handle, "oidnExecuteFilter", &a.executeFilter) &&
         bind(handle, "oidnReleaseFilter", &a.releaseFilter);
-    if (complete) return d;
-    *whyNot = path + " is not Open Image Denoise 2 (an entry point is missing)";
-    return nullptr;
+    if (!complete) {
+      d.reset();
+      *whyNot = path + " is not Open Image Denoise 2 (an entry point is missing)";
+    }
+    return true;
+  };
+  // pyoidn's copy is looked for (by running python3) only when the library path has none.
+  if (const char* env = std::getenv("CANDELA_OIDN_LIBRARY"); env && *env) {
+    if (open(env)) return d;
+  } else if (open("libOpenImageDenoise.so.2")) {
+    return d;
+  } else if (const std::string folder = pyoidnLibraryFolder();
+             !folder.empty() && open(folder + "/libOpenImageDenoise.so.2")) {
+    return d;
   }
   *whyNot = "--denoise needs Intel Open Image Denoise 2, which was not found (tried " + tried +
             "): install it with `pip install pyoidn` (scripts/install-python does), or set "

@@ -99,9 +99,6 @@ std::optional<uint32_t> frameOf(const std::string& file, const std::string& dir,
   return frame;
 }
 
-// Where the sequence writes, checked before anything renders (output_check.h): the frame folder
-// can be made and written in, no frame replaces a file the scenes read, and the video replaces
-// neither an input nor a frame.
 // The "formats" a frame's files end in: "png", and for passes beside it "depth.pfm", ...
 std::vector<std::string> frameSuffixes(const std::string& format, const std::vector<Aov>& aovs) {
   std::vector<std::string> suffixes = {format};
@@ -110,6 +107,9 @@ std::vector<std::string> frameSuffixes(const std::string& format, const std::vec
   return suffixes;
 }
 
+// Where the sequence writes, checked before anything renders (output_check.h): the frame folder
+// can be made and written in, no frame replaces a file the scenes read, and the video replaces
+// neither an input nor a frame.
 void checkSequenceOutputs(const RenderCommandOptions& options, const std::vector<SceneDesc>& scenes,
                           const std::string& dir, FrameRange range, int digits,
                           const std::vector<std::string>& suffixes) {
