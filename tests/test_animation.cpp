@@ -375,7 +375,7 @@ TEST(FrameScene, ObjectTransformChangeRefitsAndMeshChangeRebuilds) {
   EXPECT_EQ(frames.change(), SceneChange::Structure);
 }
 
-// A frame that changes only values keeps the texture pool where it is (the GPU backend then
+// Frames that change only values or move primitives keep the texture pool (the GPU backend then
 // uploads it once: render/scene_change.h), and a frame with another texture is a new structure.
 TEST(FrameScene, TexturePoolStaysUntilTheTexturesChange) {
   const auto texture = [](uint8_t value) {
@@ -395,6 +395,9 @@ TEST(FrameScene, TexturePoolStaysUntilTheTexturesChange) {
   object.mesh.materials = {textured};
   scene.objects.push_back(object);
   scene.textures = {texture(100)};
+  auto map = std::make_shared<ImageRGB>(4, 2);
+  map->set(1, 0, Vec3(9, 8, 7));
+  scene.environment.image = map;
   FrameScene frames;
   // A mark in the pool survives a frame that keeps the pool; a copy would put back 100.
   const_cast<uint8_t*>(frames.prepare(scene).texels8.data())[0] = 77;
@@ -404,6 +407,15 @@ TEST(FrameScene, TexturePoolStaysUntilTheTexturesChange) {
   SceneData fresh = flattenScene(scene);  // all else as a fresh flattening has it
   fresh.texels8[0] = 77;
   expectSameScene(frames.prepare(scene), fresh);
+  scene.objects[0].rotation = Vec3(0, 10, 0);  // a refit moves the pool over too
+  const SceneData& moved = frames.prepare(scene);
+  EXPECT_EQ(frames.change(), SceneChange::Motion);
+  EXPECT_EQ(moved.texels8[0], 77) << "the pool was copied again";
+  const SceneData movedFresh = flattenScene(scene);
+  EXPECT_EQ(std::memcmp(&moved.environment, &movedFresh.environment, sizeof(Environment)), 0);
+  EXPECT_TRUE(sameBytes(moved.envTexels, movedFresh.envTexels));
+  EXPECT_TRUE(sameBytes(moved.envConditionalCdf, movedFresh.envConditionalCdf));
+  EXPECT_TRUE(sameBytes(moved.envMarginalGuide, movedFresh.envMarginalGuide));
   scene.textures = {texture(200)};
   expectSameScene(frames.prepare(scene), flattenScene(scene));
   EXPECT_EQ(frames.change(), SceneChange::Structure);

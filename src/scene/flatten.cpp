@@ -266,10 +266,10 @@ void tagInstance(SceneData& s, uint32_t instance) {
   s.materialInstances.resize(s.materials.size(), instance);
 }
 
-// Everything but the BVH; mesh vertices, triangles and the texture pool only with `geometry`.
-// The order of materials depends only on the scene's structure, so triangles keep valid material
-// indices when a refresh re-appends the materials.
-void addContents(SceneData& s, const SceneDesc& desc, bool geometry) {
+// Everything but the BVH; mesh vertices and triangles only with `geometry`, the texture pool
+// only with `texturePool`. The order of materials depends only on the scene's structure, so
+// triangles keep valid material indices when a refresh re-appends the materials.
+void addContents(SceneData& s, const SceneDesc& desc, bool geometry, bool texturePool) {
   // Instances are numbered from 1: spheres, then objects, then lights, in file order.
   const uint32_t sphereCount = uint32_t(desc.spheres.size());
   const uint32_t firstLight = sphereCount + uint32_t(desc.objects.size());
@@ -290,8 +290,7 @@ void addContents(SceneData& s, const SceneDesc& desc, bool geometry) {
   // Vertices after the last smooth (or textured) mesh have no normals (or uvs) either.
   if (geometry && !s.normals.empty()) s.normals.resize(s.positions.size(), OctNormal());
   if (geometry && !s.uvs.empty()) s.uvs.resize(s.positions.size(), Vec2());
-  // A refresh keeps the pool: the frame's textures are the last frame's (equal scene keys).
-  if (geometry) addTexturePool(s, desc);
+  if (texturePool) addTexturePool(s, desc);
   addTextureUses(s);
 
   flattenEnvironment(desc.environment, s);
@@ -308,13 +307,27 @@ void refreshSceneValues(SceneData& s, const SceneDesc& desc) {
   s.lights.clear();
   s.alphaMasks.clear();
   s.textureMeans.clear();
-  addContents(s, desc, false);
+  addContents(s, desc, false, false);  // the frame's textures are the last frame's (equal keys)
   addEmitterLights(s);
 }
 
-SceneData flattenSceneContents(const SceneDesc& desc) {
+SceneData flattenSceneContents(const SceneDesc& desc, SceneData* previous) {
   SceneData s;
-  addContents(s, desc, true);
+  if (previous) {
+    s.textures = std::move(previous->textures);
+    s.texels8 = std::move(previous->texels8);
+    s.texelsF = std::move(previous->texelsF);
+    s.srgbToLinear = std::move(previous->srgbToLinear);
+    // flattenEnvironment keeps these when the map is the same.
+    s.environment = previous->environment;
+    s.environmentMap = std::move(previous->environmentMap);
+    s.envTexels = std::move(previous->envTexels);
+    s.envConditionalCdf = std::move(previous->envConditionalCdf);
+    s.envMarginalCdf = std::move(previous->envMarginalCdf);
+    s.envConditionalGuide = std::move(previous->envConditionalGuide);
+    s.envMarginalGuide = std::move(previous->envMarginalGuide);
+  }
+  addContents(s, desc, true, previous == nullptr);
   return s;
 }
 

@@ -20,8 +20,10 @@ SceneData flattenScene(SceneDesc&& desc);
 // flattenScene without the BVH (nodes and primIndices left empty), with triangles in the order
 // of the description and without the lights of emissive geometry (only the declared lights): for
 // refitting a tree built for a description of the same structure, after which the triangles take
-// the tree's order and addEmitterLights completes the lights.
-SceneData flattenSceneContents(const SceneDesc& desc);
+// the tree's order and addEmitterLights completes the lights. `previous`, where given, is the
+// scene of the last frame, of the same structure: its texture pool and environment map arrays
+// are moved over rather than made again.
+SceneData flattenSceneContents(const SceneDesc& desc, SceneData* previous = nullptr);
 
 // Appends a light for every emissive sphere that is not yet one, for the environment unless it
 // is black, and for every emissive triangle (last, in triangle order, as lightOfPrimitive

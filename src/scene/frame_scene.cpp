@@ -91,11 +91,11 @@ const SceneData& FrameScene::prepare(const SceneDesc& desc, const FlowMotion* fl
     bool refitted = false;
     if (!structureKey_.empty() && structure == structureKey_ && desc.ownBvh == OwnBvh::None) {
       // No own BVH to refit (Embree refits its own): the same triangles, moved.
-      data_ = flattenSceneContents(desc);
+      data_ = flattenSceneContents(desc, &data_);
       addEmitterLights(data_);
       refitted = true;
     } else if (!structureKey_.empty() && structure == structureKey_ && !data_.nodes.empty()) {
-      SceneData moved = flattenSceneContents(desc);
+      SceneData moved = flattenSceneContents(desc, &data_);
       moved.nodes = std::move(data_.nodes);
       moved.primIndices = std::move(data_.primIndices);
       // The same triangles (the structure is unchanged), in the leaf order of the kept tree.
