@@ -29,7 +29,7 @@ ImageRGB decodeExr(const std::string& bytes);
 
 // Portable float map "PF": little-endian floats, rows stored bottom-to-top.
 std::string encodePfm(const ImageRGB& image);
-// A layer of 1 channel as grey "Pf", of 3 as "PF".
+// A layer of 1 channel as grey "Pf", of 2 or 3 as "PF" (2 padded with a zero third).
 std::string encodePfm(const ImageLayer& layer);
 // Accepts "PF" (RGB) and "Pf" (grey, replicated to RGB) in either byte order.
 ImageRGB decodePfm(const std::string& bytes);

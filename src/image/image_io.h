@@ -38,8 +38,8 @@ std::string encodeImage(const std::string& path, const ImageRGB& image, const Ou
 std::string encodeLayeredExr(const std::string& path, const ImageRGB& image,
                              const std::vector<ImageLayer>& layers);
 
-// One layer of 1 or 3 channels as a .pfm (grey "Pf" or "PF"); throws ImageWriteError, also for a
-// path that is not .pfm.
+// One layer of 1, 2 or 3 channels as a .pfm (grey "Pf" or "PF"); throws ImageWriteError, also for
+// a path that is not .pfm.
 std::string encodeLayerPfm(const std::string& path, const ImageLayer& layer);
 
 // Every channel of an .exr file as float (tests and tools); throws ImageWriteError.

@@ -36,32 +36,37 @@ float readFloat(const unsigned char* p, bool littleEndian) {
 
 }  // namespace
 
-std::string encodePfm(const ImageRGB& image) {
-  std::string out =
-      "PF\n" + std::to_string(image.width) + " " + std::to_string(image.height) + "\n-1.0\n";
-  out.reserve(out.size() + 4 * image.pixels.size());
-  for (uint32_t row = image.height; row-- > 0;) {
-    const float* p = image.pixels.data() + size_t(3) * image.width * row;
-    for (size_t i = 0; i < size_t(3) * image.width; ++i) appendFloat(&out, p[i], true);
+namespace {
+
+// A PFM of w x h pixels of n channels each (1, 2 or 3), rows from the top: grey "Pf" for one
+// channel, else "PF" with three, two channels (a flow field) padded with a zero third, as flow
+// datasets' PFMs are. PFM rows run from the bottom.
+std::string encodeRows(uint32_t w, uint32_t h, const float* pixels, size_t n) {
+  const size_t written = n == 1 ? 1 : 3;
+  std::string out = std::string(n == 1 ? "Pf" : "PF") + "\n" + std::to_string(w) + " " +
+                    std::to_string(h) + "\n-1.0\n";
+  out.reserve(out.size() + 4 * written * size_t(w) * h);
+  for (uint32_t row = h; row-- > 0;) {
+    const float* p = pixels + n * w * row;
+    for (uint32_t x = 0; x < w; ++x, p += n)
+      for (size_t c = 0; c < written; ++c) appendFloat(&out, c < n ? p[c] : 0.0f, true);
   }
   return out;
+}
+
+}  // namespace
+
+std::string encodePfm(const ImageRGB& image) {
+  return encodeRows(image.width, image.height, image.pixels.data(), 3);
 }
 
 std::string encodePfm(const ImageLayer& layer) {
   const size_t n = layer.channels.size();
   if (n < 1 || n > 3)
-    throw ImageWriteError("PFM holds 1 or 3 channels, not " + std::to_string(n));
-  // Two channels (a flow field) go out as three with a zero third, as flow datasets' PFMs do.
-  const size_t written = n == 1 ? 1 : 3;
-  std::string out = std::string(n == 1 ? "Pf" : "PF") + "\n" + std::to_string(layer.width) + " " +
-                    std::to_string(layer.height) + "\n-1.0\n";
-  out.reserve(out.size() + 4 * written * size_t(layer.width) * layer.height);
-  for (uint32_t row = layer.height; row-- > 0;) {
-    const float* p = layer.pixels.data() + n * layer.width * row;
-    for (uint32_t x = 0; x < layer.width; ++x, p += n)
-      for (size_t c = 0; c < written; ++c) appendFloat(&out, c < n ? p[c] : 0.0f, true);
-  }
-  return out;
+    throw ImageWriteError("PFM holds 1, 2 or 3 channels, not " + std::to_string(n));
+  if (layer.pixels.size() != n * size_t(layer.width) * layer.height)
+    throw ImageWriteError("layer " + layer.name + " does not match its size");
+  return encodeRows(layer.width, layer.height, layer.pixels.data(), n);
 }
 
 ImageRGB decodePfm(const std::string& bytes) {

@@ -45,7 +45,7 @@ struct MeshDesc {
   std::vector<Vec3> normals;              // from the file's `vn`; may be empty
   std::vector<Vec2> uvs;                  // from the file's `vt` (u, v); may be empty
   std::vector<MeshTriangle> triangles;
-  std::vector<Material> materials;  // from the MTL (Kd as diffuse), else one diffuse 0.8
+  std::vector<Material> materials;  // from the MTL (obj_loader.h's mapping), else diffuse 0.8
   std::vector<std::string> materialFiles;  // the MTL files read, beside the OBJ file
 };
 

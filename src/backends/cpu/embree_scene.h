@@ -5,7 +5,7 @@
 // docs/performance.md), from a copy of the vertices and the scene's own triangle array, shared.
 // The spheres stay candela's: in blocks of four when they are few, else in a BVH of their own. A
 // frame whose primitives moved (SceneChange::Motion) rewrites the vertices and refits Embree's
-// BVH, and places the spheres anew (they are few); a new
+// BVH, and places the spheres anew (their blocks, or their BVH beyond 32 spheres); a new
 // structure rebuilds both. Alpha-masked materials (geometry/alpha_mask.h) get intersection and
 // occlusion filters on the triangles that apply the same test as candela's own traversal.
 // Embree picks the widest SIMD the CPU has at run time (SSE2 up to

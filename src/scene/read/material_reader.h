@@ -25,7 +25,8 @@ using MaterialLibrary = std::map<std::string, Material>;
 MaterialLibrary readMaterialLibrary(const JsonValue& value, TextureLoader& textures);
 
 // A material object {"type": ..., fields of that type}.
-// A diffuse "color" may be a texture (texture_reader.h), loaded through `textures`.
+// A "color" (of any type but glass and emissive) may be a texture (texture_reader.h), loaded
+// through `textures`.
 Material readMaterial(const JsonValue& value, TextureLoader& textures);
 
 // The material that `owner` (a sphere or object) gives through its "material", "color" and "ior"

@@ -5,10 +5,11 @@
 // file's vertex order, so a face's outside stays the side its vertices wind counter-clockwise
 // around. Vertex normals are kept where all three corners of a triangle have one; otherwise the
 // triangle's normal indices are -1 (face normal); likewise for texture coordinates (`vt`, u and v;
-// a third component is ignored). Each MTL material becomes a diffuse Material with colour Kd,
-// textured by map_Kd and masked by d, Tr and map_d (textures through `textures`, relative to the
-// MTL file; see mtlMaterials in obj_loader.cpp); faces without one (no usemtl, no MTL file, or a name the MTL does not define)
-// use an extra diffuse 0.8 entry. A missing MTL file is not an error: its faces fall back to that
+// a third component is ignored). Each MTL material becomes a Material by the mapping of
+// docs/scene-format.md (diffuse by Kd and map_Kd, plastic or conductor by Ks and Ns, emissive by
+// Ke and map_Ke), masked by d, Tr and map_d (textures through `textures`, relative to the MTL
+// file; see mtlMaterials in obj_loader.cpp); faces without one (no usemtl, no MTL file, or a name
+// the MTL does not define) use an extra diffuse 0.8 entry. A missing MTL file is not an error: its faces fall back to that
 // entry.
 //
 // Errors throw SceneError, with `label` (how the caller shows the path) naming the file:
