@@ -16,4 +16,13 @@ CANDELA_HDI int lowestSetBit(uint32_t v) {
 #endif
 }
 
+// Index of the highest set bit of v; v must not be 0.
+CANDELA_HDI int highestSetBit(uint32_t v) {
+#if defined(__CUDA_ARCH__)
+  return 31 - __clz(v);
+#else
+  return 31 - __builtin_clz(v);
+#endif
+}
+
 }  // namespace candela

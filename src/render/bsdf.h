@@ -70,6 +70,13 @@ CANDELA_HDI bool usesLobeChoice(const Material& m) {
 
 CANDELA_HDI bool isEmissive(const Material& m) { return m.type == MaterialType::Emissive; }
 
+// The normal of the hemisphere outside which the BSDF scatters nothing (leavesOnItsSide): the
+// geometric normal on wo's side for the surfaces that only reflect; zero for glass, which also
+// transmits.
+CANDELA_HDI Vec3 reflectingHemisphere(const Bsdf& b) {
+  return b.material->type == MaterialType::Glass ? Vec3(0.0f) : b.ng * b.side;
+}
+
 // Whether wi, local z of sign wiLocalZ, leaves on the side of the geometry the lobe implies.
 CANDELA_HDI bool leavesOnItsSide(const Bsdf& b, const Vec3& wi, float wiLocalZ) {
   const float geometric = b.side * dot(wi, b.ng);

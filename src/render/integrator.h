@@ -16,6 +16,7 @@
 #include "render/aov.h"
 #include "render/bsdf.h"
 #include "render/light_sample.h"
+#include "render/light_selection.h"
 #include "render/ray_counters.h"
 #include "render/surface_color.h"
 
@@ -36,12 +37,12 @@ CANDELA_HDI_ALWAYS Ray spawnRay(const SurfacePoint& sp, const Vec3& wi) {
 }
 
 // Direct light at a point with a smooth BSDF lobe from one light, by one shadow ray, weighted by
-// the probability light.selectPmf of sampling that light. `tracer` answers the ray queries
+// the probability selectPmf of sampling that light. `tracer` answers the ray queries
 // (geometry/bvh_tracer.h).
 template <class Tracer>
 CANDELA_HDI Vec3 sampleOneLight(const SceneView& scene, const Tracer& tracer, const Light& light,
-                                const Bsdf& bsdf, const SurfacePoint& sp, float u1, float u2,
-                                RayCounters& counters) {
+                                float selectPmf, const Bsdf& bsdf, const SurfacePoint& sp,
+                                float u1, float u2, RayCounters& counters) {
   LightSample ls;
   if (!sampleLight(scene, light, sp.p, u1, u2, &ls)) return Vec3(0.0f);
   float bsdfPdf;
@@ -55,7 +56,7 @@ CANDELA_HDI Vec3 sampleOneLight(const SceneView& scene, const Tracer& tracer, co
   }
   ++counters.shadow;
   if (tracer.occluded(shadow, lightPrimitive(scene, light))) return Vec3(0.0f);
-  const float lightPdf = light.selectPmf * ls.pdf;
+  const float lightPdf = selectPmf * ls.pdf;
   const float weight = ls.isDelta ? 1.0f : powerHeuristic(lightPdf, bsdfPdf);
   return f * ls.radiance * (weight / lightPdf);
 }
@@ -68,7 +69,8 @@ CANDELA_HDI void drawLightNumbers(SampleStream& rng, const Light& light, float* 
 }
 
 // Direct light at a point with a smooth BSDF lobe: from each light when the scene says so (a few
-// point lights: render/light.h, sampleEveryLight), else from one picked in proportion to power.
+// point lights: render/light.h, sampleEveryLight), else from one picked by its importance here
+// (render/light_selection.h).
 template <class Tracer>
 CANDELA_HDI Vec3 estimateDirect(const SceneView& scene, const Tracer& tracer, const Bsdf& bsdf,
                                 const SurfacePoint& sp, SampleStream& rng, RayCounters& counters) {
@@ -79,18 +81,20 @@ CANDELA_HDI Vec3 estimateDirect(const SceneView& scene, const Tracer& tracer, co
     Vec3 sum(0.0f);
     for (uint32_t i = 0; i < scene.lightCount; ++i) {
       drawLightNumbers(rng, scene.lights[i], &u1, &u2);
-      sum += sampleOneLight(scene, tracer, scene.lights[i], bsdf, sp, u1, u2, counters);
+      sum += sampleOneLight(scene, tracer, scene.lights[i], 1.0f, bsdf, sp, u1, u2, counters);
     }
     return sum;
   }
   const float uLight = rng.next1D();
-  const int index = selectLight(scene, uLight);
+  float selectPmf;
+  const int index = selectLight(scene, sp.p, reflectingHemisphere(bsdf), uLight, &selectPmf);
   if (index < 0) {
     rng.skip();
     return Vec3(0.0f);
   }
   drawLightNumbers(rng, scene.lights[index], &u1, &u2);
-  return sampleOneLight(scene, tracer, scene.lights[index], bsdf, sp, u1, u2, counters);
+  return sampleOneLight(scene, tracer, scene.lights[index], selectPmf, bsdf, sp, u1, u2,
+                        counters);
 }
 
 // Radiance arriving at the camera along `ray` (one sample). With kAovs, `first` (zeroed by the
@@ -107,16 +111,17 @@ CANDELA_HDI Vec3 traceRadiance(const SceneView& scene, const Tracer& tracer, Ray
   // The product of eta^2 over the transmissions so far: Russian roulette judges the throughput
   // without the 1 / eta^2 radiance scaling, which says nothing about the path's worth.
   float etaScale = 1.0f;
-  Vec3 bouncePoint(0.0f);
+  Vec3 bouncePoint(0.0f), bounceHemisphere(0.0f);  // the last bounce's, for the light's pmf
 
   for (uint32_t depth = 1;; ++depth) {
     Hit hit;
     if (!tracer.closest(ray, &hit)) {
       const int32_t light = specularBounce ? -1 : scene.environment.light;
-      const float weight = light < 0
-                               ? 1.0f
-                               : powerHeuristic(bsdfPdf, scene.lights[light].selectPmf *
-                                                             environmentPdf(scene, ray.direction));
+      const float weight =
+          light < 0 ? 1.0f
+                    : powerHeuristic(bsdfPdf, lightSelectPmf(scene, uint32_t(light), bouncePoint,
+                                                             bounceHemisphere) *
+                                                  environmentPdf(scene, ray.direction));
       radiance += throughput * environmentRadiance(scene, ray.direction) * weight;
       break;
     }
@@ -146,9 +151,11 @@ CANDELA_HDI Vec3 traceRadiance(const SceneView& scene, const Tracer& tracer, Ray
         float weight = 1.0f;
         const int32_t light = specularBounce ? -1 : lightOfPrimitive(scene, hit.prim);
         if (light >= 0) {
-          const Light& l = scene.lights[light];
-          weight = powerHeuristic(bsdfPdf, l.selectPmf * emitterPdf(scene, l, bouncePoint,
-                                                                    ray.direction, hit.t, sp.ng));
+          const float selectPmf =
+              lightSelectPmf(scene, uint32_t(light), bouncePoint, bounceHemisphere);
+          weight = powerHeuristic(
+              bsdfPdf, selectPmf * emitterPdf(scene, scene.lights[light], bouncePoint,
+                                              ray.direction, hit.t, sp.ng));
         }
         radiance += throughput * surfaceRadiance(scene, m, hit, sp) * weight;
       }
@@ -182,6 +189,7 @@ CANDELA_HDI Vec3 traceRadiance(const SceneView& scene, const Tracer& tracer, Ray
     specularBounce = bs.delta;
     bsdfPdf = bs.pdf;
     bouncePoint = sp.p;
+    bounceHemisphere = reflectingHemisphere(bsdf);
 
     if (depth >= kRouletteDepth) {
       const float survive = minf(0.95f, maxComponent(throughput) * etaScale);

@@ -12,6 +12,7 @@
 #include <cstdint>
 
 #include "core/vec3.h"
+#include "render/light_tree.h"
 
 namespace candela {
 
@@ -22,14 +23,9 @@ struct Light {
   Vec3 position;       // point lights
   Vec3 power;          // point lights: total emitted power (color * intensity)
   uint32_t shape = 0;  // area lights: index into the scene's spheres or triangles, by type
-  // The probability that next-event estimation samples this light at a shading point: 1 when the
-  // scene has at most kSampleEveryLightUpTo lights (each gets its own shadow ray), else one light
-  // is picked in proportion to its power by Walker's alias method: a uniform u picks slot
-  // i = floor(u n), which keeps light i when the rest of u scaled is below aliasThreshold, else
-  // takes light `alias`.
-  float selectPmf = 0;
-  float aliasThreshold = 1;
-  uint32_t alias = 0;
+  // The light's path in the light tree (render/light_tree.h): its slot at each level, 3 bits
+  // a level from the lowest, the root's first.
+  uint64_t trail = kNotInLightTree;
 };
 
 // Up to this many point lights, and no other light, every shading point samples each of them:
@@ -37,10 +33,12 @@ struct Light {
 // outweighs the rays it saves (docs/performance.md). An area light or the environment is sampled
 // with noise anyway, and there one light picked by power costs less per unit of error (the
 // Cornell box's quad: 0.83x the time to equal error of sampling both its triangles). Beyond
-// kSampleEveryLightUpTo the cost per shading point would grow with the light count.
+// kSampleEveryLightUpTo the cost per shading point would grow with the light count. Otherwise
+// one light is picked: the environment in a fixed share of the picks, the rest from the light
+// tree (render/light_selection.h).
 constexpr uint32_t kSampleEveryLightUpTo = 8;
 
-// Whether next-event estimation samples each of `count` lights (else one picked by power).
+// Whether next-event estimation samples each of `count` lights (else one is picked).
 inline bool sampleEveryLight(const Light* lights, size_t count) {
   if (count > kSampleEveryLightUpTo) return false;
   for (size_t i = 0; i < count; ++i)

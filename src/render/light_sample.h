@@ -41,20 +41,6 @@ CANDELA_HDI float sphereLightPdf(const Sphere& s, const Vec3& p) {
   return uniformConePdf(sphereConeOneMinusCos(r2 / dist2));
 }
 
-// The light that next-event estimation samples for uniform u in [0, 1): light i with probability
-// scene.lights[i].selectPmf, by the alias table (Light::aliasThreshold). -1 when no light has any
-// power.
-CANDELA_HDI int selectLight(const SceneView& scene, float u) {
-  if (scene.lightCount == 0) return -1;
-  const float scaled = u * float(scene.lightCount);
-  uint32_t slot = uint32_t(scaled);
-  if (slot >= scene.lightCount) slot = scene.lightCount - 1;
-  const Light& l = scene.lights[slot];
-  const uint32_t picked = scaled - float(slot) < l.aliasThreshold ? slot : l.alias;
-  CANDELA_DCHECK(picked < scene.lightCount);
-  return scene.lights[picked].selectPmf > 0.0f ? static_cast<int>(picked) : -1;
-}
-
 // The light whose shape is primitive `prim`, or -1. Triangle lights come last among the lights,
 // in ascending triangle order, so they are found by bisection.
 CANDELA_HDI int32_t lightOfPrimitive(const SceneView& scene, uint32_t prim) {

@@ -13,6 +13,7 @@ SceneView SceneData::view() const {
 #undef CANDELA_VIEW_OF
   v.firstTriangleLight = firstTriangleLight;
   v.sampleEveryLight = sampleEveryLight;
+  v.environmentShare = environmentShare;
   v.environment = environment;
   v.emissionReachable = !isBlack(environment.radiance);
   for (const Material& m : materials) v.emissionReachable |= m.type == MaterialType::Emissive;

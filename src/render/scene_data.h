@@ -25,6 +25,7 @@ struct SceneData {
   CANDELA_SCENE_ARRAYS(CANDELA_OWNED_ARRAY)
   uint32_t firstTriangleLight = 0;
   bool sampleEveryLight = false;
+  float environmentShare = 0.0f;
   Environment environment;
   // The map the env* arrays were made from: a frame that keeps it keeps them (host only).
   std::shared_ptr<const ImageRGB> environmentMap;

@@ -20,13 +20,16 @@
 namespace candela {
 
 // The arrays that shade the geometry, in the form of CANDELA_GEOMETRY_ARRAYS.
-// envTexels is the environment map (width x height, rows from the top; empty for a constant
+// lightTree is the light tree over the lights other than the environment (render/light_tree.h;
+// empty when every light is sampled or none but the environment has power). envTexels is the
+// environment map (width x height, rows from the top; empty for a constant
 // environment) and envConditionalCdf/envMarginalCdf with their guide tables its sampling
 // distribution (core/distribution2d.h). materialMotions, parallel to materials, is the motion of
 // each material's instance to the next frame; only renders with the flow pass have it.
 #define CANDELA_SHADING_ARRAYS(X)                             \
   X(Material, materials, materialCount, Values)               \
   X(Light, lights, lightCount, Values)                        \
+  X(LightTreeNode, lightTree, lightTreeNodeCount, Values)     \
   X(Vec3, envTexels, envTexelCount, Values)                   \
   X(float, envConditionalCdf, envConditionalCdfCount, Values) \
   X(float, envMarginalCdf, envMarginalCdfCount, Values)           \
@@ -43,8 +46,10 @@ struct SceneView : GeometryView {
 
   uint32_t firstTriangleLight = 0;  // lights from here on are triangles (see lightOfPrimitive)
   // Whether next-event estimation samples every light at each shading point rather than one
-  // picked by power (render/light.h, sampleEveryLight).
+  // picked (render/light.h, sampleEveryLight).
   bool sampleEveryLight = false;
+  // The share of picks that go to the environment light; the light tree has the rest.
+  float environmentShare = 0.0f;
   Environment environment;
   // Whether a scattered ray can find any light: an emissive material (sphere lights included) or
   // a nonzero environment. Without, light arrives only by shadow rays to point lights, and the

@@ -9,7 +9,7 @@
 #include "geometry/bvh_build.h"
 #include "scene/camera_resolve.h"
 #include "scene/flatten_environment.h"
-#include "scene/light_selection.h"
+#include "scene/light_tree_build.h"
 
 namespace candela {
 
@@ -149,21 +149,36 @@ double selectionPower(const SceneData& s, const Light& l) {
   return 0.0;
 }
 
-// The environment is picked half the time when the scene has other lights, which share the
-// other half by power (pbrt-v4's BVHLightSampler does the same). Its power, estimated through
-// the scene's bounding sphere, grows with the square of the scene's size: a ground sphere of
-// radius 1000 made it a million times a lamp's, and the lamp was then found only by chance.
-void shareWithEnvironment(const std::vector<Light>& lights, std::vector<double>& powers) {
-  double bounded = 0.0;
-  size_t environment = lights.size();
-  for (size_t i = 0; i < lights.size(); ++i) {
-    if (lights[i].type == LightType::Environment)
-      environment = i;
-    else
-      bounded += powers[i];
+// What the light tree knows of light l (the environment, picked apart from the tree, has no
+// power there).
+LightBounds lightBounds(const SceneData& s, const Light& l) {
+  LightBounds b;
+  b.power = selectionPower(s, l);
+  b.cosThetaO = -1.0;  // points and spheres emit in every direction
+  switch (l.type) {
+    case LightType::Point:
+      b.lo = b.hi = l.position;
+      break;
+    case LightType::Sphere: {
+      const Sphere& sphere = s.spheres[l.shape];
+      b.lo = sphere.center - Vec3(sphere.radius);
+      b.hi = sphere.center + Vec3(sphere.radius);
+      break;
+    }
+    case LightType::Triangle: {
+      const Triangle& t = s.triangles[l.shape];
+      const Vec3 &p0 = s.positions[t.v[0]], &p1 = s.positions[t.v[1]], &p2 = s.positions[t.v[2]];
+      b.lo = min(p0, min(p1, p2));
+      b.hi = max(p0, max(p1, p2));
+      b.axis = cross(p1 - p0, p2 - p0);  // the outside, which alone emits
+      b.cosThetaO = 1.0;
+      break;
+    }
+    case LightType::Environment:
+      b.power = 0.0;
+      break;
   }
-  if (environment < lights.size() && bounded > 0.0 && powers[environment] > 0.0)
-    powers[environment] = bounded;
+  return b;
 }
 
 bool emits(const Material& m) { return m.type == MaterialType::Emissive && !isBlack(m.radiance); }
@@ -200,12 +215,19 @@ void addEmitterLights(SceneData& s) {
     }
   }
   s.sampleEveryLight = sampleEveryLight(s.lights.data(), s.lights.size());
-  std::vector<double> powers;  // only picking one light weighs them
-  if (!s.sampleEveryLight) {
-    for (const Light& l : s.lights) powers.push_back(selectionPower(s, l));
-    shareWithEnvironment(s.lights, powers);
-  }
-  setLightSelection(s.lights, powers);
+  s.lightTree.clear();
+  s.environmentShare = 0.0f;
+  if (s.sampleEveryLight) return;
+  // The environment takes half the picks beside other lights (as pbrt-v4's BVHLightSampler
+  // does): a power estimated through the scene's bounding sphere grows with the square of the
+  // scene's size, and a ground sphere of radius 1000 once made it a million times a lamp's.
+  std::vector<LightBounds> bounds;
+  for (const Light& l : s.lights) bounds.push_back(lightBounds(s, l));
+  std::vector<uint64_t> trails;
+  s.lightTree = buildLightTree(bounds, &trails);
+  for (size_t i = 0; i < s.lights.size(); ++i) s.lights[i].trail = trails[i];
+  if (s.environment.light >= 0 && selectionPower(s, s.lights[s.environment.light]) > 0.0)
+    s.environmentShare = s.lightTree.empty() ? 1.0f : 0.5f;
 }
 
 namespace {

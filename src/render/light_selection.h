@@ -1,0 +1,38 @@
+// Which light next-event estimation samples at a shading point, and with what probability: the
+// environment in its fixed share of the picks (SceneView::environmentShare), every other light
+// through the light tree by its importance at the point (render/light_tree.h). Scenes of a few
+// point lights sample each of them instead (render/light.h, sampleEveryLight).
+#pragma once
+
+#include "render/scene_view.h"
+
+namespace candela {
+
+// The light picked at p, whose reflecting hemisphere is around n (zero where the surface also
+// transmits), for uniform u in [0, 1), and in *pmf the probability of that pick; -1 when no
+// light can reach p.
+CANDELA_HDI int selectLight(const SceneView& scene, const Vec3& p, const Vec3& n, float u,
+                            float* pmf) {
+  const float environment = scene.environmentShare;
+  if (u < environment) {
+    *pmf = environment;
+    return scene.environment.light;
+  }
+  if (scene.lightTreeNodeCount == 0) return -1;
+  const float rest = 1.0f - environment;
+  const int light = pickTreeLight(scene.lightTree, p, n, minf((u - environment) / rest, 0.99999994f), pmf);
+  *pmf *= rest;
+  return light;
+}
+
+// The probability with which selectLight picks light `index` at p with hemisphere normal n.
+CANDELA_HDI float lightSelectPmf(const SceneView& scene, uint32_t index, const Vec3& p,
+                                 const Vec3& n) {
+  if (scene.sampleEveryLight) return 1.0f;
+  const Light& l = scene.lights[index];
+  if (l.type == LightType::Environment) return scene.environmentShare;
+  if (l.trail == kNotInLightTree) return 0.0f;
+  return (1.0f - scene.environmentShare) * treeLightPmf(scene.lightTree, l.trail, p, n);
+}
+
+}  // namespace candela

@@ -1,0 +1,278 @@
+// The light tree's build; see light_tree_build.h.
+#include "scene/light_tree_build.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+
+namespace candela {
+namespace {
+
+constexpr double kPiDouble = 3.14159265358979323846;
+
+struct Direction {
+  double x = 0, y = 0, z = 1;
+};
+
+double dot(const Direction& a, const Direction& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+
+Direction cross(const Direction& a, const Direction& b) {
+  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+
+double safeAcos(double c) { return std::acos(std::clamp(c, -1.0, 1.0)); }
+
+// A group of lights as the tree's importance sees it: a box, a cone of emitting normals and
+// their power.
+struct Cluster {
+  bool empty = true;
+  double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
+  Direction axis;
+  double cosThetaO = 1, thetaO = 0, power = 0;
+
+  double diagonal(int d) const { return hi[d] - lo[d]; }
+  double surfaceArea() const {
+    const double x = diagonal(0), y = diagonal(1), z = diagonal(2);
+    return 2.0 * (x * y + y * z + z * x);
+  }
+};
+
+Cluster clusterOf(const LightBounds& l) {
+  Cluster c;
+  c.empty = false;
+  const float lo[3] = {l.lo.x, l.lo.y, l.lo.z}, hi[3] = {l.hi.x, l.hi.y, l.hi.z};
+  for (int d = 0; d < 3; ++d) {
+    c.lo[d] = lo[d];
+    c.hi[d] = hi[d];
+  }
+  const double n = std::sqrt(double(l.axis.x) * l.axis.x + double(l.axis.y) * l.axis.y +
+                             double(l.axis.z) * l.axis.z);
+  if (n > 0.0) c.axis = {l.axis.x / n, l.axis.y / n, l.axis.z / n};
+  c.cosThetaO = n > 0.0 ? l.cosThetaO : -1.0;
+  c.thetaO = safeAcos(c.cosThetaO);
+  c.power = l.power;
+  return c;
+}
+
+// The smallest cone found holding cones a and b (pbrt-v4's DirectionCone Union), into c.
+void uniteCones(const Cluster& a, const Cluster& b, Cluster* c) {
+  const Cluster& wider = a.thetaO >= b.thetaO ? a : b;
+  const Cluster& narrower = a.thetaO >= b.thetaO ? b : a;
+  c->axis = wider.axis;
+  c->cosThetaO = wider.cosThetaO;
+  c->thetaO = wider.thetaO;
+  if (wider.thetaO >= kPiDouble) return;  // the whole sphere already
+  const double thetaD = safeAcos(dot(a.axis, b.axis));
+  if (std::min(thetaD + narrower.thetaO, kPiDouble) <= wider.thetaO) return;
+  const double thetaO = 0.5 * (a.thetaO + thetaD + b.thetaO);
+  const Direction k = cross(a.axis, b.axis);
+  const double kLength = std::sqrt(dot(k, k));
+  c->cosThetaO = -1.0;
+  c->thetaO = kPiDouble;
+  if (thetaO >= kPiDouble || !(kLength > 0.0)) return;
+  // a's axis turned towards b's by theta_o - theta_a about their common normal.
+  const Direction n{k.x / kLength, k.y / kLength, k.z / kLength};
+  const Direction t = cross(n, a.axis);
+  const double r = thetaO - a.thetaO, cr = std::cos(r), sr = std::sin(r);
+  c->axis = {a.axis.x * cr + t.x * sr, a.axis.y * cr + t.y * sr, a.axis.z * cr + t.z * sr};
+  c->cosThetaO = std::cos(thetaO);
+  c->thetaO = thetaO;
+}
+
+Cluster unite(const Cluster& a, const Cluster& b) {
+  if (a.empty) return b;
+  if (b.empty) return a;
+  Cluster c;
+  c.empty = false;
+  for (int d = 0; d < 3; ++d) {
+    c.lo[d] = std::min(a.lo[d], b.lo[d]);
+    c.hi[d] = std::max(a.hi[d], b.hi[d]);
+  }
+  uniteCones(a, b, &c);
+  c.power = a.power + b.power;
+  return c;
+}
+
+// pbrt-v4's surface area and orientation heuristic for cluster c as one side of a split along
+// `dim` of a range whose box is `whole`: power times the solid angle its cone reaches (theta_e
+// is pi/2 for every light: render/light_tree.h) times its area, more for thin splits.
+double splitCost(const Cluster& c, const Cluster& whole, int dim) {
+  const double thetaO = c.thetaO, thetaE = 0.5 * kPiDouble;
+  const double thetaW = std::min(thetaO + thetaE, kPiDouble);
+  const double sinThetaO = std::sqrt(std::max(0.0, 1.0 - c.cosThetaO * c.cosThetaO));
+  const double mOmega = 2.0 * kPiDouble * (1.0 - c.cosThetaO) +
+                        kPiDouble / 2.0 *
+                            (2.0 * thetaW * sinThetaO - std::cos(thetaO - 2.0 * thetaW) -
+                             2.0 * thetaO * sinThetaO + c.cosThetaO);
+  const double longest = std::max({whole.diagonal(0), whole.diagonal(1), whole.diagonal(2)});
+  const double kr = whole.diagonal(dim) > 0.0 ? longest / whole.diagonal(dim) : 1.0;
+  return c.power * mOmega * kr * c.surfaceArea();
+}
+
+class Builder {
+ public:
+  Builder(const std::vector<LightBounds>& lights, std::vector<uint64_t>* trails)
+      : lights_(lights), trails_(*trails) {
+    for (uint32_t i = 0; i < lights.size(); ++i) {
+      clusters_.push_back(candela::clusterOf(lights[i]));
+      if (lights[i].power > 0.0) order_.push_back(i);
+    }
+  }
+
+  std::vector<LightTreeNode> build() {
+    if (!order_.empty()) buildNode(0, order_.size(), 0, 0);
+    return std::move(nodes_);
+  }
+
+ private:
+  static constexpr int kBuckets = 12;
+
+  Cluster clusterOf(size_t begin, size_t end) const {
+    Cluster c;
+    for (size_t i = begin; i < end; ++i) c = unite(c, clusters_[order_[i]]);
+    return c;
+  }
+
+  double centroid(uint32_t light, int dim) const {
+    const LightBounds& l = lights_[light];
+    const float lo[3] = {l.lo.x, l.lo.y, l.lo.z}, hi[3] = {l.hi.x, l.hi.y, l.hi.z};
+    return 0.5 * (double(lo[dim]) + double(hi[dim]));
+  }
+
+  // Splits [begin, end) (at least 2 lights) in two and returns where the second part starts:
+  // the cheapest of the bucket boundaries along each axis by splitCost, or the middle where the
+  // centroids coincide or the tree must stay balanced to keep within kMaxLightTreeDepth.
+  size_t split(size_t begin, size_t end, uint32_t depth) {
+    const size_t count = end - begin, middle = begin + count / 2;
+    const uint32_t levelsLeft = kMaxLightTreeDepth - depth;
+    const bool balance =
+        levelsLeft < 2 || count > (uint64_t(1) << (kLightTreeTrailBits * (levelsLeft - 2)));
+    Cluster whole;  // only its box counts
+    whole.empty = false;
+    for (int d = 0; d < 3; ++d) {
+      whole.lo[d] = std::numeric_limits<double>::infinity();
+      whole.hi[d] = -whole.lo[d];
+    }
+    for (size_t i = begin; i < end; ++i) {
+      const Cluster& c = clusters_[order_[i]];
+      for (int d = 0; d < 3; ++d) {
+        whole.lo[d] = std::min(whole.lo[d], c.lo[d]);
+        whole.hi[d] = std::max(whole.hi[d], c.hi[d]);
+      }
+    }
+    double cmin[3], cmax[3];
+    for (int d = 0; d < 3; ++d) {
+      cmin[d] = std::numeric_limits<double>::infinity();
+      cmax[d] = -cmin[d];
+      for (size_t i = begin; i < end; ++i) {
+        cmin[d] = std::min(cmin[d], centroid(order_[i], d));
+        cmax[d] = std::max(cmax[d], centroid(order_[i], d));
+      }
+    }
+    auto bucketOf = [&](uint32_t light, int d) {
+      const double t = (centroid(light, d) - cmin[d]) / (cmax[d] - cmin[d]);
+      return std::min(kBuckets - 1, int(kBuckets * t));
+    };
+    double best = std::numeric_limits<double>::infinity();
+    int bestDim = -1, bestBucket = 0;
+    for (int d = 0; d < 3 && !balance; ++d) {
+      if (!(cmax[d] > cmin[d])) continue;
+      Cluster buckets[kBuckets];
+      for (size_t i = begin; i < end; ++i) {
+        const uint32_t l = order_[i];
+        Cluster& b = buckets[bucketOf(l, d)];
+        b = unite(b, clusters_[l]);
+      }
+      Cluster below[kBuckets];  // below[i]: buckets 0..i
+      for (int i = 0; i < kBuckets; ++i) below[i] = unite(i > 0 ? below[i - 1] : Cluster(), buckets[i]);
+      Cluster above;
+      for (int i = kBuckets - 2; i >= 0; --i) {
+        above = unite(above, buckets[i + 1]);
+        if (below[i].empty || above.empty) continue;
+        const double cost = splitCost(below[i], whole, d) + splitCost(above, whole, d);
+        if (cost < best) {
+          best = cost;
+          bestDim = d;
+          bestBucket = i;
+        }
+      }
+    }
+    if (bestDim < 0) {
+      std::nth_element(order_.begin() + begin, order_.begin() + middle, order_.begin() + end);
+      return middle;
+    }
+    const auto second = std::partition(order_.begin() + begin, order_.begin() + end,
+                                       [&](uint32_t l) { return bucketOf(l, bestDim) <= bestBucket; });
+    const size_t at = size_t(second - order_.begin());
+    return at > begin && at < end ? at : middle;
+  }
+
+  // A node for the lights [begin, end) at `depth`, reached by `trail`; returns its index. Its
+  // clusters come of three rounds of splits in two.
+  uint32_t buildNode(size_t begin, size_t end, uint64_t trail, uint32_t depth) {
+    std::vector<size_t> bounds = {begin, end};  // cluster k: [bounds[k], bounds[k + 1])
+    for (int round = 0; round < 3; ++round) {
+      std::vector<size_t> finer = {begin};
+      for (size_t k = 0; k + 1 < bounds.size(); ++k) {
+        if (bounds[k + 1] - bounds[k] > 1) finer.push_back(split(bounds[k], bounds[k + 1], depth));
+        finer.push_back(bounds[k + 1]);
+      }
+      bounds = std::move(finer);
+    }
+    const int groups = int(bounds.size()) - 1;
+    const uint32_t index = uint32_t(nodes_.size());
+    nodes_.emplace_back();
+    LightTreeNode node{};
+    for (int k = 0; k < groups; ++k) {
+      const Cluster c = clusterOf(bounds[k], bounds[k + 1]);
+      const double dx = c.diagonal(0), dy = c.diagonal(1), dz = c.diagonal(2);
+      node.centerX[k] = float(0.5 * (c.lo[0] + c.hi[0]));
+      node.centerY[k] = float(0.5 * (c.lo[1] + c.hi[1]));
+      node.centerZ[k] = float(0.5 * (c.lo[2] + c.hi[2]));
+      // Rounded up, so that the sphere still holds the box in float.
+      node.radius[k] = std::nextafter(float(0.5 * std::sqrt(dx * dx + dy * dy + dz * dz)),
+                                      std::numeric_limits<float>::infinity());
+      node.axisX[k] = float(c.axis.x);
+      node.axisY[k] = float(c.axis.y);
+      node.axisZ[k] = float(c.axis.z);
+      node.cosThetaO[k] = float(c.cosThetaO);
+      node.sinThetaO[k] = float(std::sqrt(std::max(0.0, 1.0 - c.cosThetaO * c.cosThetaO)));
+      node.power[k] = float(c.power);
+      const uint64_t childTrail = trail | (uint64_t(k) << (kLightTreeTrailBits * depth));
+      if (bounds[k + 1] - bounds[k] == 1) {
+        const uint32_t light = order_[bounds[k]];
+        node.child[k] = light | kLightTreeLeaf;
+        trails_[light] = childTrail;
+      } else {
+        node.child[k] = buildNode(bounds[k], bounds[k + 1], childTrail, depth + 1);
+      }
+    }
+    node.byPower = 1;
+    for (int k = 1; k < groups; ++k) {
+      const bool same = node.centerX[k] == node.centerX[0] && node.centerY[k] == node.centerY[0] &&
+                        node.centerZ[k] == node.centerZ[0] && node.radius[k] == node.radius[0] &&
+                        node.axisX[k] == node.axisX[0] && node.axisY[k] == node.axisY[0] &&
+                        node.axisZ[k] == node.axisZ[0] && node.cosThetaO[k] == node.cosThetaO[0];
+      if (!same) node.byPower = 0;
+    }
+    nodes_[index] = node;
+    return index;
+  }
+
+  const std::vector<LightBounds>& lights_;
+  std::vector<uint64_t>& trails_;
+  std::vector<Cluster> clusters_;  // one per light
+  std::vector<uint32_t> order_;
+  std::vector<LightTreeNode> nodes_;
+};
+
+}  // namespace
+
+std::vector<LightTreeNode> buildLightTree(const std::vector<LightBounds>& lights,
+                                          std::vector<uint64_t>* trails) {
+  trails->assign(lights.size(), kNotInLightTree);
+  return Builder(lights, trails).build();
+}
+
+}  // namespace candela

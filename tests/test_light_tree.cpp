@@ -1,0 +1,293 @@
+// Light selection for next-event estimation: the light tree (render/light_tree.h) that picks a
+// light by its importance at the shading point, the environment's share of the picks, and the
+// few point lights that are each sampled.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "render/light_selection.h"
+#include "render_test_util.h"
+#include "scene/light_tree_build.h"
+#include "temp_dir.h"
+
+namespace candela {
+namespace {
+
+struct Lcg {
+  uint32_t state;
+  float next() {
+    state = state * 1664525u + 1013904223u;
+    return float(state >> 8) / float(1u << 24);
+  }
+  Vec3 inBox(float half) { return Vec3(next(), next(), next()) * (2 * half) - Vec3(half); }
+  Vec3 direction() {
+    for (;;) {
+      const Vec3 v = inBox(1.0f);
+      if (lengthSquared(v) > 0.01f && lengthSquared(v) <= 1.0f) return normalize(v);
+    }
+  }
+};
+
+// A scene of `triangles` random emissive triangles (random sizes, orientations and radiances),
+// two sphere lights and two point lights, in a box of half-size 10; its files go to `dir`.
+SceneData randomLights(const test::TempDir& dir, int triangles, uint32_t seed) {
+  Lcg rng{seed};
+  std::string obj, mtl;
+  for (int i = 0; i < triangles; ++i) {
+    const Vec3 c = rng.inBox(10.0f);
+    const float size = 0.05f + 2.0f * rng.next() * rng.next();
+    for (int v = 0; v < 3; ++v) {
+      const Vec3 p = c + rng.inBox(size);
+      obj += "v " + std::to_string(p.x) + " " + std::to_string(p.y) + " " + std::to_string(p.z) +
+             "\n";
+    }
+  }
+  for (int m = 0; m < 3; ++m) {
+    mtl += "newmtl e" + std::to_string(m) + "\nKd 0 0 0\nKe " + std::to_string(1 + 3 * m) +
+           " 2 1\n";
+  }
+  obj = "mtllib lights.mtl\n" + obj;
+  for (int i = 0; i < triangles; ++i) {
+    obj += "usemtl e" + std::to_string(i % 3) + "\nf " + std::to_string(3 * i + 1) + " " +
+           std::to_string(3 * i + 2) + " " + std::to_string(3 * i + 3) + "\n";
+  }
+  dir.write("lights.mtl", mtl);
+  const std::string path = dir.write("lights.obj", obj);
+  return test::loadTestScene(R"({"camera": {"width": 4, "height": 4},
+      "objects": [{"file": ")" + path + R"("}],
+      "lights": [{"type": "sphere", "position": [3, 4, -2], "radius": 0.5, "intensity": 200},
+                 {"type": "sphere", "position": [-6, 1, 5], "radius": 2, "intensity": 50},
+                 {"position": [1, -7, 2], "intensity": 30},
+                 {"position": [8, 8, 8], "intensity": 300, "color": [1, 0.5, 0.25]}]})");
+}
+
+// Whether light l can send any light to p, where a surface reflects only into the hemisphere
+// around n (zero: every direction).
+bool canReach(const SceneView& v, const Light& l, const Vec3& p, const Vec3& n) {
+  const bool anyDirection = lengthSquared(n) == 0.0f;
+  switch (l.type) {
+    case LightType::Point:
+      return anyDirection || dot(n, l.position - p) > 0.0f;
+    case LightType::Sphere: {
+      const Sphere& s = v.spheres[l.shape];
+      return anyDirection || dot(n, s.center - p) > -s.radius;
+    }
+    case LightType::Triangle: {
+      const Triangle& t = v.triangles[l.shape];
+      const Vec3 &p0 = v.positions[t.v[0]], &p1 = v.positions[t.v[1]], &p2 = v.positions[t.v[2]];
+      if (!(dot(cross(p1 - p0, p2 - p0), p - p0) > 0.0f)) return false;  // behind it
+      return anyDirection || dot(n, p0 - p) > 0.0f || dot(n, p1 - p) > 0.0f ||
+             dot(n, p2 - p) > 0.0f;
+    }
+    case LightType::Environment:
+      break;
+  }
+  return true;
+}
+
+TEST(LightTree, FewPointLightsAreEachSampled) {
+  const SceneData data = test::loadTestScene(R"({
+    "camera": {"width": 4, "height": 4, "fov": 40},
+    "lights": [{"position": [0, 1, 0], "intensity": 0},
+               {"position": [0, 1, 0], "intensity": 2},
+               {"position": [0, 5, 0], "intensity": 3}]})");
+  ASSERT_EQ(data.lights.size(), 3u);
+  EXPECT_TRUE(data.view().sampleEveryLight);
+  EXPECT_TRUE(data.lightTree.empty());
+  for (uint32_t i = 0; i < 3; ++i)
+    EXPECT_EQ(lightSelectPmf(data.view(), i, Vec3(0.0f), Vec3(0, 1, 0)), 1.0f);
+}
+
+// The environment takes half the picks beside other lights, however large the scene's bounds
+// (a ground sphere of radius 1000 once made its estimated power dwarf a lamp's); alone, all.
+TEST(LightTree, EnvironmentTakesHalfThePicksBesideOtherLights) {
+  const SceneData data = test::loadTestScene(R"({
+    "camera": {"width": 4, "height": 4, "fov": 40},
+    "environment": {"color": 0.5},
+    "spheres": [{"position": [0, -1000, 0], "radius": 1000}],
+    "lights": [{"type": "sphere", "position": [0, 5, 0], "radius": 1, "intensity": 10},
+               {"type": "sphere", "position": [0, 5, 3], "radius": 1, "intensity": 30}]})");
+  const SceneView view = data.view();
+  ASSERT_EQ(view.lightCount, 3u);
+  ASSERT_GE(view.environment.light, 0);
+  EXPECT_EQ(view.environmentShare, 0.5f);
+  const Vec3 p(0, 1, 0), n(0, 1, 0);
+  EXPECT_EQ(lightSelectPmf(view, uint32_t(view.environment.light), p, n), 0.5f);
+  float pmf = 0;
+  EXPECT_EQ(selectLight(view, p, n, 0.25f, &pmf), view.environment.light);
+  EXPECT_EQ(pmf, 0.5f);
+  EXPECT_NE(selectLight(view, p, n, 0.75f, &pmf), view.environment.light);
+  EXPECT_NEAR(lightSelectPmf(view, 0, p, n) + lightSelectPmf(view, 1, p, n), 0.5f, 1e-6f);
+
+  const SceneData alone = test::loadTestScene(R"({
+    "camera": {"width": 4, "height": 4, "fov": 40}, "environment": {"color": 0.5},
+    "spheres": [{"position": [0, -1000, 0], "radius": 1000}]})");
+  EXPECT_EQ(alone.view().environmentShare, 1.0f);
+  EXPECT_TRUE(alone.lightTree.empty());
+  EXPECT_EQ(selectLight(alone.view(), p, n, 0.9f, &pmf), alone.view().environment.light);
+  EXPECT_EQ(pmf, 1.0f);
+}
+
+// Among random lights at random points: the pick's pmf is the one MIS recomputes from the
+// light's trail, bit for bit; picks follow the pmfs; no light that can send light to the point
+// has pmf 0 (the tree's bound errs only towards more), and most triangles that turn their backs
+// on the point have pmf 0. A pick may end at a node whose clusters all turn out unable to reach
+// the point (their bounds are tighter than their parent's): it then finds no light, which only
+// the pmfs' sum below 1 accounts for.
+TEST(LightTree, PicksFollowTheirPmfWhichMissesNoLightThatReachesThePoint) {
+  test::TempDir dir;
+  const SceneData data = randomLights(dir, 300, 7);
+  const SceneView view = data.view();
+  ASSERT_EQ(view.lightCount, 304u);
+  ASSERT_FALSE(view.sampleEveryLight);
+  Lcg rng{99};
+  int behind = 0, behindWithoutPmf = 0;
+  for (int trial = 0; trial < 40; ++trial) {
+    const Vec3 p = rng.inBox(12.0f);
+    const Vec3 n = trial % 4 == 3 ? Vec3(0.0f) : rng.direction();
+    std::vector<double> pmfs(view.lightCount);
+    double sum = 0;
+    for (uint32_t i = 0; i < view.lightCount; ++i) {
+      pmfs[i] = lightSelectPmf(view, i, p, n);
+      sum += pmfs[i];
+      if (canReach(view, view.lights[i], p, n)) {
+        EXPECT_GT(pmfs[i], 0.0) << "light " << i << ", trial " << trial;
+      } else if (view.lights[i].type == LightType::Triangle) {
+        ++behind;
+        behindWithoutPmf += pmfs[i] == 0.0;
+      }
+    }
+    EXPECT_LE(sum, 1.0 + 1e-5) << trial;
+    std::vector<int> picked(view.lightCount, 0);
+    int none = 0;
+    const int draws = 20000;
+    for (int k = 0; k < draws; ++k) {
+      float pmf = 0;
+      const int i = selectLight(view, p, n, (k + 0.5f) / draws, &pmf);
+      if (i < 0) {
+        ++none;
+        continue;
+      }
+      ASSERT_EQ(pmf, float(pmfs[size_t(i)])) << i;
+      ++picked[size_t(i)];
+    }
+    // Stratified u: off by a few picks per tree level at most.
+    EXPECT_NEAR(none, (1.0 - sum) * draws, 8.0) << trial;
+    for (uint32_t i = 0; i < view.lightCount; ++i)
+      EXPECT_NEAR(picked[i], pmfs[i] * draws, 8.0) << "light " << i << ", trial " << trial;
+  }
+  EXPECT_GT(behind, 1000);  // the test saw many lights that cannot reach the point
+  EXPECT_GT(behindWithoutPmf, 0.9 * behind);
+}
+
+// Far along the normal of a row of coplanar triangles, each is picked in proportion to its
+// power: the tree's distance and orientation terms agree for all of them there.
+TEST(LightTree, FarAwayTheTreePicksByPower) {
+  test::TempDir dir;
+  std::string obj;
+  for (int i = 0; i < 12; ++i) {
+    const double s = 1 + i % 3;  // areas 1/2, 2, 9/2
+    obj += "v " + std::to_string(3 * i) + " 2 0\nv " + std::to_string(3 * i) + " 2 " +
+           std::to_string(s) + "\nv " + std::to_string(3 * i + s) + " 2 0\n";
+  }
+  for (int i = 0; i < 12; ++i)
+    obj += "f " + std::to_string(3 * i + 1) + " " + std::to_string(3 * i + 2) + " " +
+           std::to_string(3 * i + 3) + "\n";
+  const SceneData data = test::loadTestScene(R"({"camera": {"width": 4, "height": 4},
+      "objects": [{"file": ")" + dir.write("row.obj", obj) +
+                                             R"(", "material": {"type": "emissive",
+                                                                  "radiance": 1}}]})");
+  const SceneView view = data.view();
+  ASSERT_EQ(view.lightCount, 12u);
+  auto area = [&](uint32_t i) {  // the BVH build orders the triangles its own way
+    const Triangle& t = view.triangles[view.lights[i].shape];
+    return 0.5 * length(cross(view.positions[t.v[1]] - view.positions[t.v[0]],
+                              view.positions[t.v[2]] - view.positions[t.v[0]]));
+  };
+  double total = 0;
+  for (uint32_t i = 0; i < 12; ++i) total += area(i);
+  for (uint32_t i = 0; i < 12; ++i) {
+    EXPECT_NEAR(lightSelectPmf(view, i, Vec3(18, 1e4f, 1), Vec3(0, -1, 0)), area(i) / total, 1e-4)
+        << i;
+    EXPECT_EQ(lightSelectPmf(view, i, Vec3(18, -1e4f, 1), Vec3(0, 1, 0)), 0.0f) << i;  // behind
+  }
+}
+
+// Lights without power are never picked; without any, nothing is.
+TEST(LightTree, LightsWithoutPowerAreNeverPicked) {
+  std::string lights = R"({"position": [0, 1, 0], "intensity": 0},
+                          {"position": [0, 1, 0], "intensity": 2},
+                          {"type": "sphere", "position": [0, 5, 0], "radius": 1, "intensity": 3},
+                          {"position": [0, 1, 0], "intensity": 1, "color": 0})";
+  const SceneData data = test::loadTestScene(
+      R"({"camera": {"width": 4, "height": 4}, "lights": [)" + lights + "]}");
+  const SceneView view = data.view();
+  EXPECT_EQ(view.lights[0].trail, kNotInLightTree);
+  EXPECT_EQ(view.lights[3].trail, kNotInLightTree);
+  for (float u : {0.0f, 0.3f, 0.99999994f}) {
+    float pmf;
+    const int i = selectLight(view, Vec3(0, -3, 0), Vec3(0.0f), u, &pmf);
+    EXPECT_TRUE(i == 1 || i == 2) << u;
+  }
+  std::vector<uint64_t> trails;
+  EXPECT_TRUE(buildLightTree(std::vector<LightBounds>(3), &trails).empty());
+  EXPECT_EQ(trails, std::vector<uint64_t>(3, kNotInLightTree));
+}
+
+// Every light of a large tree is reached by following its trail, within the depth a trail holds,
+// including lights that all sit at one point (no split separates them).
+TEST(LightTree, TrailsLeadToTheirLights) {
+  for (const bool together : {false, true}) {
+    Lcg rng{3};
+    std::vector<LightBounds> lights(20000);
+    for (LightBounds& l : lights) {
+      l.lo = l.hi = together ? Vec3(1, 2, 3) : rng.inBox(100.0f);
+      l.cosThetaO = -1.0;
+      l.power = 0.5 + rng.next();
+    }
+    std::vector<uint64_t> trails;
+    const std::vector<LightTreeNode> nodes = buildLightTree(lights, &trails);
+    for (uint32_t i = 0; i < lights.size(); ++i) {
+      uint64_t trail = trails[i];
+      uint32_t node = 0, depth = 0;
+      for (;; ++depth) {
+        ASSERT_LT(depth, kMaxLightTreeDepth);
+        const uint32_t child = nodes[node].child[trail & 7u];
+        trail >>= kLightTreeTrailBits;
+        if (child & kLightTreeLeaf) {
+          EXPECT_EQ(child & ~kLightTreeLeaf, i);
+          break;
+        }
+        node = child;
+      }
+      if (together) {
+        EXPECT_LE(depth, 5u);  // balanced: 8^5 > 20000
+      }
+    }
+  }
+}
+
+#if CANDELA_LIGHT_TREE_SSE
+// The host's SSE lanes compute what a CUDA thread computes lane by lane, bit for bit.
+TEST(LightTree, SseLanesMatchTheScalarImportance) {
+  test::TempDir dir;
+  const SceneData data = randomLights(dir, 200, 11);
+  Lcg rng{5};
+  for (const LightTreeNode& node : data.lightTree) {
+    for (int trial = 0; trial < 20; ++trial) {
+      const Vec3 p = rng.inBox(12.0f);
+      const Vec3 n = trial % 3 == 0 ? Vec3(0.0f) : rng.direction();
+      float sse[8];
+      _mm_storeu_ps(sse, lightClusterImportanceSse(node, 0, p, n));
+      _mm_storeu_ps(sse + 4, lightClusterImportanceSse(node, 4, p, n));
+      for (int k = 0; k < kLightTreeWidth; ++k)
+        EXPECT_EQ(sse[k], lightClusterImportanceLane(node, k, p, n)) << k;
+    }
+  }
+}
+#endif
+
+}  // namespace
+}  // namespace candela
