@@ -40,13 +40,13 @@ SceneData randomLights(const test::TempDir& dir, int triangles, uint32_t seed) {
     const float size = 0.05f + 2.0f * rng.next() * rng.next();
     for (int v = 0; v < 3; ++v) {
       const Vec3 p = c + rng.inBox(size);
-      obj += "v " + std::to_string(p.x) + " " + std::to_string(p.y) + " " + std::to_string(p.z) +
-             "\n";
+      obj +=
+          "v " + std::to_string(p.x) + " " + std::to_string(p.y) + " " + std::to_string(p.z) + "\n";
     }
   }
   for (int m = 0; m < 3; ++m) {
-    mtl += "newmtl e" + std::to_string(m) + "\nKd 0 0 0\nKe " + std::to_string(1 + 3 * m) +
-           " 2 1\n";
+    mtl +=
+        "newmtl e" + std::to_string(m) + "\nKd 0 0 0\nKe " + std::to_string(1 + 3 * m) + " 2 1\n";
   }
   obj = "mtllib lights.mtl\n" + obj;
   for (int i = 0; i < triangles; ++i) {
@@ -56,7 +56,8 @@ SceneData randomLights(const test::TempDir& dir, int triangles, uint32_t seed) {
   dir.write("lights.mtl", mtl);
   const std::string path = dir.write("lights.obj", obj);
   return test::loadTestScene(R"({"camera": {"width": 4, "height": 4},
-      "objects": [{"file": ")" + path + R"("}],
+      "objects": [{"file": ")" +
+                             path + R"("}],
       "lights": [{"type": "sphere", "position": [3, 4, -2], "radius": 0.5, "intensity": 200},
                  {"type": "sphere", "position": [-6, 1, 5], "radius": 2, "intensity": 50},
                  {"position": [1, -7, 2], "intensity": 30},
@@ -221,8 +222,8 @@ TEST(LightTree, LightsWithoutPowerAreNeverPicked) {
                           {"position": [0, 1, 0], "intensity": 2},
                           {"type": "sphere", "position": [0, 5, 0], "radius": 1, "intensity": 3},
                           {"position": [0, 1, 0], "intensity": 1, "color": 0})";
-  const SceneData data = test::loadTestScene(
-      R"({"camera": {"width": 4, "height": 4}, "lights": [)" + lights + "]}");
+  const SceneData data =
+      test::loadTestScene(R"({"camera": {"width": 4, "height": 4}, "lights": [)" + lights + "]}");
   const SceneView view = data.view();
   EXPECT_EQ(view.lights[0].trail, kNotInLightTree);
   EXPECT_EQ(view.lights[3].trail, kNotInLightTree);

@@ -31,7 +31,7 @@ struct Light {
 // Up to this many point lights, and no other light, every shading point samples each of them:
 // a point light's shadow ray has no sampling noise of its own, so the noise of picking one
 // outweighs the rays it saves (docs/performance.md). An area light or the environment is sampled
-// with noise anyway, and there one light picked by power costs less per unit of error (the
+// with noise anyway, and there picking one light costs less per unit of error (the
 // Cornell box's quad: 0.83x the time to equal error of sampling both its triangles). Beyond
 // kSampleEveryLightUpTo the cost per shading point would grow with the light count. Otherwise
 // one light is picked: the environment in a fixed share of the picks, the rest from the light

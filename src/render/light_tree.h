@@ -45,8 +45,8 @@ struct alignas(64) LightTreeNode {
   float axisX[kLightTreeWidth], axisY[kLightTreeWidth], axisZ[kLightTreeWidth];
   // The cone around the axis that holds every emitting normal.
   float cosThetaO[kLightTreeWidth], sinThetaO[kLightTreeWidth];
-  float power[kLightTreeWidth];      // 0: an empty slot, never picked
-  uint32_t child[kLightTreeWidth];   // a node index, or a light index | kLightTreeLeaf
+  float power[kLightTreeWidth];     // 0: an empty slot, never picked
+  uint32_t child[kLightTreeWidth];  // a node index, or a light index | kLightTreeLeaf
   // 1 when the clusters share one box and one cone (the two triangles of an axis-aligned
   // quad): their importance is then in proportion to their power everywhere, which the pick
   // takes for it without evaluating it.
@@ -65,8 +65,8 @@ constexpr uint32_t kMaxLightTreeDepth = 21;
 // The angles' cosines and sines all share the divisor d = |p - centre|, so they are carried as
 // d times their value: comparisons then need no division, and the square roots and the two
 // divisions do not wait on one another.
-CANDELA_HDI_ALWAYS float lightClusterImportanceLane(const LightTreeNode& node, int k,
-                                                    const Vec3& p, const Vec3& n) {
+CANDELA_HDI_ALWAYS float lightClusterImportanceLane(const LightTreeNode& node, int k, const Vec3& p,
+                                                    const Vec3& n) {
   const float vx = p.x - node.centerX[k], vy = p.y - node.centerY[k], vz = p.z - node.centerZ[k];
   const float d2 = maxf(vx * vx + vy * vy + vz * vz, 1e-30f);
   const float r = node.radius[k], r2 = r * r;
@@ -98,8 +98,8 @@ CANDELA_HDI_ALWAYS float lightClusterImportanceLane(const LightTreeNode& node, i
 #if CANDELA_LIGHT_TREE_SSE
 // Lanes [first, first + 4) of lightClusterImportanceLane in SSE, operation for operation the
 // same arithmetic, so that both give the same bits.
-CANDELA_HDI_ALWAYS __m128 lightClusterImportanceSse(const LightTreeNode& node, int first, const Vec3& p,
-                                        const Vec3& n) {
+CANDELA_HDI_ALWAYS __m128 lightClusterImportanceSse(const LightTreeNode& node, int first,
+                                                    const Vec3& p, const Vec3& n) {
   const __m128 zero = _mm_setzero_ps(), one = _mm_set1_ps(1.0f);
   const auto select = [](__m128 mask, __m128 a, __m128 b) {
     return _mm_or_ps(_mm_and_ps(mask, a), _mm_andnot_ps(mask, b));
@@ -129,14 +129,14 @@ CANDELA_HDI_ALWAYS __m128 lightClusterImportanceSse(const LightTreeNode& node, i
   const __m128 inCone = _mm_cmpgt_ps(cosW, mul(cosO, d));
   const __m128 cosX = select(inCone, d, add(mul(cosW, cosO), mul(sinW, sinO)));
   const __m128 sinX = select(inCone, zero, sub(mul(sinW, cosO), mul(cosW, sinO)));
-  const __m128 cosP = select(_mm_or_ps(inside, _mm_cmpgt_ps(cosX, cosB)), d2,
-                             add(mul(cosX, cosB), mul(sinX, r)));
+  const __m128 cosP =
+      select(_mm_or_ps(inside, _mm_cmpgt_ps(cosX, cosB)), d2, add(mul(cosX, cosB), mul(sinX, r)));
   const __m128 facing = select(_mm_cmpgt_ps(cosP, zero), mul(cosP, invD2), zero);
-  const __m128 cosI = _mm_xor_ps(_mm_set1_ps(-0.0f), dot(_mm_set1_ps(n.x), _mm_set1_ps(n.y),
-                                                         _mm_set1_ps(n.z), vx, vy, vz));
+  const __m128 cosI = _mm_xor_ps(
+      _mm_set1_ps(-0.0f), dot(_mm_set1_ps(n.x), _mm_set1_ps(n.y), _mm_set1_ps(n.z), vx, vy, vz));
   const __m128 sinI = rootOfDifference(d2, mul(cosI, cosI));
-  const __m128 cosPI = select(_mm_or_ps(inside, _mm_cmpgt_ps(cosI, cosB)), d2,
-                              add(mul(cosI, cosB), mul(sinI, r)));
+  const __m128 cosPI =
+      select(_mm_or_ps(inside, _mm_cmpgt_ps(cosI, cosB)), d2, add(mul(cosI, cosB), mul(sinI, r)));
   const bool hemisphere = n.x != 0.0f || n.y != 0.0f || n.z != 0.0f;
   const __m128 horizon = hemisphere ? _mm_max_ps(mul(cosPI, invD2), zero) : one;
   return mul(mul(load(node.power), invReach), mul(facing, horizon));

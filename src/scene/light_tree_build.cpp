@@ -5,7 +5,6 @@
 #include <cmath>
 #include <limits>
 
-
 namespace candela {
 namespace {
 
@@ -185,7 +184,8 @@ class Builder {
         b = unite(b, clusters_[l]);
       }
       Cluster below[kBuckets];  // below[i]: buckets 0..i
-      for (int i = 0; i < kBuckets; ++i) below[i] = unite(i > 0 ? below[i - 1] : Cluster(), buckets[i]);
+      for (int i = 0; i < kBuckets; ++i)
+        below[i] = unite(i > 0 ? below[i - 1] : Cluster(), buckets[i]);
       Cluster above;
       for (int i = kBuckets - 2; i >= 0; --i) {
         above = unite(above, buckets[i + 1]);
@@ -202,8 +202,9 @@ class Builder {
       std::nth_element(order_.begin() + begin, order_.begin() + middle, order_.begin() + end);
       return middle;
     }
-    const auto second = std::partition(order_.begin() + begin, order_.begin() + end,
-                                       [&](uint32_t l) { return bucketOf(l, bestDim) <= bestBucket; });
+    const auto second =
+        std::partition(order_.begin() + begin, order_.begin() + end,
+                       [&](uint32_t l) { return bucketOf(l, bestDim) <= bestBucket; });
     const size_t at = size_t(second - order_.begin());
     return at > begin && at < end ? at : middle;
   }
