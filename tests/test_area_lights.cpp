@@ -16,6 +16,7 @@
 #include "geometry/spherical_triangle.h"
 #include "geometry/triangle_intersect.h"
 #include "render/light_sample.h"
+#include "render/light_selection.h"
 #include "render_test_util.h"
 #include "scene/flatten.h"
 #include "scene/read/obj_loader.h"
@@ -227,9 +228,10 @@ TEST(AreaLights, TriangleEmitsFromItsOutsideOnly) {
   EXPECT_FALSE(sampleLight(view, view.lights[0], Vec3(0, 0, 0), 0.3f, 0.6f, &ls));
 }
 
-// Many emissive triangles: each is a light, found back from its primitive (how the tree weighs
-// them: test_light_tree.cpp).
-TEST(AreaLights, EveryEmissiveTriangleIsALight) {
+// Many emissive triangles: each is a light, found back from its primitive. Far along their
+// common normal, the light tree picks each in proportion to its power (area times radiance):
+// its distance and orientation terms agree for all of them there; behind them, none.
+TEST(AreaLights, EveryEmissiveTriangleIsALightPickedByPowerFromAfar) {
   std::string obj;
   for (int i = 0; i < 12; ++i) {
     const double s = 1 + i % 3;  // three sizes: areas 1/2, 2, 9/2
@@ -251,6 +253,18 @@ TEST(AreaLights, EveryEmissiveTriangleIsALight) {
     const Light& l = view.lights[i];
     ASSERT_EQ(l.type, LightType::Triangle);
     EXPECT_EQ(lightOfPrimitive(view, view.sphereCount + l.shape), int32_t(i));
+  }
+  auto area = [&](uint32_t i) {  // the BVH build orders the triangles its own way
+    const Triangle& t = view.triangles[view.lights[i].shape];
+    return 0.5 * length(cross(view.positions[t.v[1]] - view.positions[t.v[0]],
+                              view.positions[t.v[2]] - view.positions[t.v[0]]));
+  };
+  double total = 0;
+  for (uint32_t i = 0; i < view.lightCount; ++i) total += area(i);
+  for (uint32_t i = 0; i < view.lightCount; ++i) {
+    EXPECT_NEAR(lightSelectPmf(view, i, Vec3(18, 1e4f, 1), Vec3(0, -1, 0)), area(i) / total, 1e-4)
+        << i;
+    EXPECT_EQ(lightSelectPmf(view, i, Vec3(18, -1e4f, 1), Vec3(0, 1, 0)), 0.0f) << i;
   }
 }
 

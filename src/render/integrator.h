@@ -41,8 +41,8 @@ CANDELA_HDI_ALWAYS Ray spawnRay(const SurfacePoint& sp, const Vec3& wi) {
 // (geometry/bvh_tracer.h).
 template <class Tracer>
 CANDELA_HDI Vec3 sampleOneLight(const SceneView& scene, const Tracer& tracer, const Light& light,
-                                float selectPmf, const Bsdf& bsdf, const SurfacePoint& sp,
-                                float u1, float u2, RayCounters& counters) {
+                                float selectPmf, const Bsdf& bsdf, const SurfacePoint& sp, float u1,
+                                float u2, RayCounters& counters) {
   LightSample ls;
   if (!sampleLight(scene, light, sp.p, u1, u2, &ls)) return Vec3(0.0f);
   float bsdfPdf;
@@ -68,12 +68,14 @@ CANDELA_HDI void drawLightNumbers(SampleStream& rng, const Light& light, float* 
   rng.next2DIfUsed(light.type != LightType::Point, u1, u2);
 }
 
-// Direct light at a point with a smooth BSDF lobe: from each light when the scene says so (a few
-// point lights: render/light.h, sampleEveryLight), else from one picked by its importance here
+// Direct light at a point with a smooth BSDF lobe, which reflects only into the hemisphere around
+// `hemisphere` (reflectingHemisphere): from each light when the scene says so (a few point
+// lights: render/light.h, sampleEveryLight), else from one picked by its importance here
 // (render/light_selection.h).
 template <class Tracer>
 CANDELA_HDI Vec3 estimateDirect(const SceneView& scene, const Tracer& tracer, const Bsdf& bsdf,
-                                const SurfacePoint& sp, SampleStream& rng, RayCounters& counters) {
+                                const Vec3& hemisphere, const SurfacePoint& sp, SampleStream& rng,
+                                RayCounters& counters) {
   // One dimension per light, or two for the picked one (the pick and its light's sample),
   // whatever the geometry, so the stream's layout never depends on it.
   float u1 = 0.0f, u2 = 0.0f;
@@ -87,14 +89,13 @@ CANDELA_HDI Vec3 estimateDirect(const SceneView& scene, const Tracer& tracer, co
   }
   const float uLight = rng.next1D();
   float selectPmf;
-  const int index = selectLight(scene, sp.p, reflectingHemisphere(bsdf), uLight, &selectPmf);
+  const int index = selectLight(scene, sp.p, hemisphere, uLight, &selectPmf);
   if (index < 0) {
     rng.skip();
     return Vec3(0.0f);
   }
   drawLightNumbers(rng, scene.lights[index], &u1, &u2);
-  return sampleOneLight(scene, tracer, scene.lights[index], selectPmf, bsdf, sp, u1, u2,
-                        counters);
+  return sampleOneLight(scene, tracer, scene.lights[index], selectPmf, bsdf, sp, u1, u2, counters);
 }
 
 // Radiance arriving at the camera along `ray` (one sample). With kAovs, `first` (zeroed by the
@@ -153,9 +154,9 @@ CANDELA_HDI Vec3 traceRadiance(const SceneView& scene, const Tracer& tracer, Ray
         if (light >= 0) {
           const float selectPmf =
               lightSelectPmf(scene, uint32_t(light), bouncePoint, bounceHemisphere);
-          weight = powerHeuristic(
-              bsdfPdf, selectPmf * emitterPdf(scene, scene.lights[light], bouncePoint,
-                                              ray.direction, hit.t, sp.ng));
+          weight = powerHeuristic(bsdfPdf,
+                                  selectPmf * emitterPdf(scene, scene.lights[light], bouncePoint,
+                                                         ray.direction, hit.t, sp.ng));
         }
         radiance += throughput * surfaceRadiance(scene, m, hit, sp) * weight;
       }
@@ -171,8 +172,9 @@ CANDELA_HDI Vec3 traceRadiance(const SceneView& scene, const Tracer& tracer, Ray
     if constexpr (kAovs)
       if (albedoHere) first->albedo = aovAlbedo(m, color);
     const Bsdf bsdf = makeBsdf(m, color, wo, sp.ng, sp.ns);
+    const Vec3 hemisphere = reflectingHemisphere(bsdf);
     if (hasSmoothLobe(m)) {
-      radiance += throughput * estimateDirect(scene, tracer, bsdf, sp, rng, counters);
+      radiance += throughput * estimateDirect(scene, tracer, bsdf, hemisphere, sp, rng, counters);
       // "direct": the scattered ray below only gathers emission; nothing scatters after it.
       if (scene.settings.integrator == IntegratorType::Direct) maxDepth = depth;
     }
@@ -189,7 +191,7 @@ CANDELA_HDI Vec3 traceRadiance(const SceneView& scene, const Tracer& tracer, Ray
     specularBounce = bs.delta;
     bsdfPdf = bs.pdf;
     bouncePoint = sp.p;
-    bounceHemisphere = reflectingHemisphere(bsdf);
+    bounceHemisphere = hemisphere;
 
     if (depth >= kRouletteDepth) {
       const float survive = minf(0.95f, maxComponent(throughput) * etaScale);

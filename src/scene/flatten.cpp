@@ -153,6 +153,7 @@ double selectionPower(const SceneData& s, const Light& l) {
 // power there).
 LightBounds lightBounds(const SceneData& s, const Light& l) {
   LightBounds b;
+  if (l.type == LightType::Environment) return b;
   b.power = selectionPower(s, l);
   b.cosThetaO = -1.0;  // points and spheres emit in every direction
   switch (l.type) {
@@ -175,7 +176,6 @@ LightBounds lightBounds(const SceneData& s, const Light& l) {
       break;
     }
     case LightType::Environment:
-      b.power = 0.0;
       break;
   }
   return b;
@@ -272,7 +272,8 @@ void addTextureUses(SceneData& s) {
     for (uint32_t y = 0; y < t.height; ++y)
       for (uint32_t x = 0; x < t.width; ++x) {
         const Vec3 c = lookupTexture(pool, ref, (x + 0.5f) / float(t.width),
-                                     1.0f - (y + 0.5f) / float(t.height)).rgb;
+                                     1.0f - (y + 0.5f) / float(t.height))
+                           .rgb;
         for (int k = 0; k < 3; ++k) sum[k] += c[k];
       }
     const double n = double(t.width) * t.height;

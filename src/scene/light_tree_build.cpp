@@ -112,7 +112,7 @@ double splitCost(const Cluster& c, const Cluster& whole, int dim) {
 class Builder {
  public:
   Builder(const std::vector<LightBounds>& lights, std::vector<uint64_t>* trails)
-      : lights_(lights), trails_(*trails) {
+      : trails_(*trails) {
     for (uint32_t i = 0; i < lights.size(); ++i) {
       clusters_.push_back(candela::clusterOf(lights[i]));
       if (lights[i].power > 0.0) order_.push_back(i);
@@ -134,9 +134,8 @@ class Builder {
   }
 
   double centroid(uint32_t light, int dim) const {
-    const LightBounds& l = lights_[light];
-    const float lo[3] = {l.lo.x, l.lo.y, l.lo.z}, hi[3] = {l.hi.x, l.hi.y, l.hi.z};
-    return 0.5 * (double(lo[dim]) + double(hi[dim]));
+    const Cluster& c = clusters_[light];
+    return 0.5 * (c.lo[dim] + c.hi[dim]);
   }
 
   // Splits [begin, end) (at least 2 lights) in two and returns where the second part starts:
@@ -147,24 +146,19 @@ class Builder {
     const uint32_t levelsLeft = kMaxLightTreeDepth - depth;
     const bool balance =
         levelsLeft < 2 || count > (uint64_t(1) << (kLightTreeTrailBits * (levelsLeft - 2)));
-    Cluster whole;  // only its box counts
+    // The range's box (only that of `whole` counts) and its lights' centroids' box.
+    Cluster whole;
     whole.empty = false;
+    double cmin[3], cmax[3];
     for (int d = 0; d < 3; ++d) {
-      whole.lo[d] = std::numeric_limits<double>::infinity();
-      whole.hi[d] = -whole.lo[d];
+      whole.lo[d] = cmin[d] = std::numeric_limits<double>::infinity();
+      whole.hi[d] = cmax[d] = -whole.lo[d];
     }
     for (size_t i = begin; i < end; ++i) {
       const Cluster& c = clusters_[order_[i]];
       for (int d = 0; d < 3; ++d) {
         whole.lo[d] = std::min(whole.lo[d], c.lo[d]);
         whole.hi[d] = std::max(whole.hi[d], c.hi[d]);
-      }
-    }
-    double cmin[3], cmax[3];
-    for (int d = 0; d < 3; ++d) {
-      cmin[d] = std::numeric_limits<double>::infinity();
-      cmax[d] = -cmin[d];
-      for (size_t i = begin; i < end; ++i) {
         cmin[d] = std::min(cmin[d], centroid(order_[i], d));
         cmax[d] = std::max(cmax[d], centroid(order_[i], d));
       }
@@ -261,7 +255,6 @@ class Builder {
     return index;
   }
 
-  const std::vector<LightBounds>& lights_;
   std::vector<uint64_t>& trails_;
   std::vector<Cluster> clusters_;  // one per light
   std::vector<uint32_t> order_;
