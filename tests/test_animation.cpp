@@ -406,12 +406,17 @@ TEST(FrameScene, TexturePoolStaysUntilTheTexturesChange) {
   EXPECT_EQ(frames.change(), SceneChange::Values);
   SceneData fresh = flattenScene(scene);  // all else as a fresh flattening has it
   fresh.texels8[0] = 77;
-  expectSameScene(frames.prepare(scene), fresh);
+  const SceneData& kept = frames.prepare(scene);
+  expectSameScene(kept, fresh);
+  // Likewise a mark in the environment's distribution, which a refit frame keeps.
+  const_cast<float*>(kept.envConditionalCdf.data())[0] = -1.0f;
   scene.objects[0].rotation = Vec3(0, 10, 0);  // a refit moves the pool over too
   const SceneData& moved = frames.prepare(scene);
   EXPECT_EQ(frames.change(), SceneChange::Motion);
   EXPECT_EQ(moved.texels8[0], 77) << "the pool was copied again";
-  const SceneData movedFresh = flattenScene(scene);
+  EXPECT_EQ(moved.envConditionalCdf[0], -1.0f) << "the environment was built again";
+  SceneData movedFresh = flattenScene(scene);
+  movedFresh.envConditionalCdf[0] = -1.0f;
   EXPECT_EQ(std::memcmp(&moved.environment, &movedFresh.environment, sizeof(Environment)), 0);
   EXPECT_TRUE(sameBytes(moved.envTexels, movedFresh.envTexels));
   EXPECT_TRUE(sameBytes(moved.envConditionalCdf, movedFresh.envConditionalCdf));

@@ -80,7 +80,7 @@ TEST(CudaBackend, MatchesCpuWithinRounding) {
 }
 
 // Every kind of light the CPU samples: emissive faces and spheres (found by bisection and by the
-// sphere's index), an importance-sampled environment map and the alias table of more than eight
+// sphere's index), an importance-sampled environment map and the light tree of more than eight
 // lights, on the device against the CPU.
 TEST(CudaBackend, MatchesCpuWithAreaLightsAndAnEnvironmentMap) {
   REQUIRE_GPU();

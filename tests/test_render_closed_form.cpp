@@ -212,7 +212,7 @@ TEST(ClosedForm, SphereLightOverDiffusePlaneMatchesIrradiance) {
 // (f) Several lights: a plane under two point lights of different power and colour, a sphere
 // light, a light of no power and `extraLights` weak point lights must show the sum of their
 // direct contributions (the sphere light's through MIS with the BSDF). With few lights each is
-// sampled; with many one is picked in proportion to power.
+// sampled; with many one is picked through the light tree.
 void expectLightsSumToEveryContribution(int extraLights) {
   const std::string obj = writePlaneObj("plane_f.obj", 100);
   const double rho = 0.5;

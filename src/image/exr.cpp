@@ -73,8 +73,10 @@ std::string encodeExr(const ImageRGB& image, const std::vector<ImageLayer>& laye
   }
 }
 
+namespace {
+
 // The data window's size, refused beyond 2^20 a side (a corrupt header could ask for any size).
-static void checkedWindowSize(const Imath::Box2i& window, uint32_t* width, uint32_t* height) {
+void checkedWindowSize(const Imath::Box2i& window, uint32_t* width, uint32_t* height) {
   const long long w = (long long)window.max.x - window.min.x + 1;
   const long long h = (long long)window.max.y - window.min.y + 1;
   if (w <= 0 || h <= 0 || w > (1 << 20) || h > (1 << 20))
@@ -82,8 +84,6 @@ static void checkedWindowSize(const Imath::Box2i& window, uint32_t* width, uint3
   *width = uint32_t(w);
   *height = uint32_t(h);
 }
-
-namespace {
 
 // Opens the EXR in `bytes` and returns read(file, window, width, height), with OpenEXR's errors
 // (and a data window too large) as ImageWriteError.

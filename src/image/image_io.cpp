@@ -153,9 +153,8 @@ bool isCompleteImageFile(const std::string& path) {
 }
 
 ImageRGB readImage(const std::string& path) {
+  if (!isFloatImagePath(path)) unsupported(path, ".exr, .pfm or .hdr for reading");
   const ImageFormat format = formatOf(path);
-  if (format != ImageFormat::Exr && format != ImageFormat::Pfm && format != ImageFormat::Hdr)
-    unsupported(path, ".exr, .pfm or .hdr for reading");
   const std::string bytes = readFileBytes(path);
   try {
     switch (format) {

@@ -34,10 +34,6 @@ float readFloat(const unsigned char* p, bool littleEndian) {
   return f;
 }
 
-}  // namespace
-
-namespace {
-
 // A PFM of w x h pixels of n channels each (1, 2 or 3), rows from the top: grey "Pf" for one
 // channel, else "PF" with three, two channels (a flow field) padded with a zero third, as flow
 // datasets' PFMs are. PFM rows run from the bottom.

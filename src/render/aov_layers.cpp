@@ -80,9 +80,12 @@ void resolvePixel(Aov aov, const SceneData& scene, const AovPixel& p, float* out
       return;
     case Aov::Flow: {
       // Undefined (no sample's point in front of both cameras): NaN, not a made-up motion.
-      const float n = p.flowSamples > 0 ? float(p.flowSamples) : std::nanf("");
-      out[0] = p.flowSum.x / n;
-      out[1] = p.flowSum.y / n;
+      if (p.flowSamples == 0) {
+        out[0] = out[1] = std::nanf("");
+        return;
+      }
+      out[0] = p.flowSum.x / float(p.flowSamples);
+      out[1] = p.flowSum.y / float(p.flowSamples);
       return;
     }
   }
@@ -107,7 +110,7 @@ std::vector<Aov> aovsFromNames(const std::vector<std::string>& names) {
     if (it == aovTable().end())
       throw std::invalid_argument("unknown render pass \"" + name +
                                   "\"; the passes are: " + knownAovNames());
-    if (std::find(aovs.begin(), aovs.end(), it->aov) == aovs.end()) aovs.push_back(it->aov);
+    if (!hasAov(aovs, it->aov)) aovs.push_back(it->aov);
   }
   return aovs;
 }

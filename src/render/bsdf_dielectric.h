@@ -37,7 +37,7 @@ CANDELA_HDI Vec3 dielectricEvalPdf(const Material& m, const Vec3& color, float e
   if (alpha < kSmoothAlpha || !dielectricHalfVector(wo, wi, eta, &wm, &etap)) return Vec3(0.0f);
   const float F = fresnelDielectric(dot(wo, wm), eta);
   const float d = ggxD(wm, alpha), g1o = ggxG1(wo, wm, alpha);
-  const float visible = g1o * maxf(0.0f, dot(wo, wm)) * d / wo.z;  // ggxVisiblePdf
+  const float visible = ggxVisiblePdf(wo, wm, g1o, d);
   const float dg = d * (g1o * ggxG1(wi, wm, alpha));
   if (wi.z > 0.0f) {
     *pdf = visible / (4.0f * fabsf(dot(wo, wm))) * F;

@@ -45,13 +45,10 @@ CANDELA_HDI float ggxG1(const Vec3& w, const Vec3& m, float alpha) {
   return 2.0f / (1.0f + sqrtf(1.0f + alpha * alpha * tan2));
 }
 
-CANDELA_HDI float ggxG(const Vec3& wo, const Vec3& wi, const Vec3& m, float alpha) {
-  return ggxG1(wo, m, alpha) * ggxG1(wi, m, alpha);
-}
-
-// The density of visible normals from wo (wo.z > 0): D_wo(m) = G1(wo, m) max(0, wo.m) D(m) / wo.z.
-CANDELA_HDI float ggxVisiblePdf(const Vec3& wo, const Vec3& m, float alpha) {
-  return ggxG1(wo, m, alpha) * maxf(0.0f, dot(wo, m)) * ggxD(m, alpha) / wo.z;
+// The density of visible normals from wo (wo.z > 0): D_wo(m) = G1(wo, m) max(0, wo.m) D(m) / wo.z,
+// from g1o = ggxG1(wo, m, alpha) and d = ggxD(m, alpha), which the BSDFs have at hand.
+CANDELA_HDI float ggxVisiblePdf(const Vec3& wo, const Vec3& m, float g1o, float d) {
+  return g1o * maxf(0.0f, dot(wo, m)) * d / wo.z;
 }
 
 // A microfacet normal visible from wo (wo.z > 0), distributed by ggxVisiblePdf.

@@ -16,10 +16,8 @@ CANDELA_HDI Vec3 surfaceColor(const SceneView& scene, const Material& m, const H
   return m.color * lookupTexture(scene.texturePool(), m.colorTexture, uv.x, uv.y).rgb;
 }
 
-// The radiance an emissive material emits at texture coordinates uv: `radiance`, times its
-// emission texture where it has one.
-CANDELA_HDI Vec3 emittedRadiance(const SceneView& scene, const Material& m, const Vec2& uv) {
-  if (m.emissionTexture.index < 0) return m.radiance;
+// The radiance an emissive material with an emission texture emits at texture coordinates uv.
+CANDELA_HDI Vec3 texturedRadiance(const SceneView& scene, const Material& m, const Vec2& uv) {
   return m.radiance * lookupTexture(scene.texturePool(), m.emissionTexture, uv.x, uv.y).rgb;
 }
 
@@ -27,13 +25,13 @@ CANDELA_HDI Vec3 emittedRadiance(const SceneView& scene, const Material& m, cons
 CANDELA_HDI Vec3 triangleRadiance(const SceneView& scene, const Material& m, const Triangle& tri,
                                   float b1, float b2) {
   if (m.emissionTexture.index < 0) return m.radiance;
-  return emittedRadiance(scene, m, triangleUv(scene, tri, b1, b2));
+  return texturedRadiance(scene, m, triangleUv(scene, tri, b1, b2));
 }
 
 CANDELA_HDI Vec3 surfaceRadiance(const SceneView& scene, const Material& m, const Hit& hit,
                                  const SurfacePoint& sp) {
   if (m.emissionTexture.index < 0) return m.radiance;
-  return emittedRadiance(scene, m, surfaceUv(scene, hit, sp));
+  return texturedRadiance(scene, m, surfaceUv(scene, hit, sp));
 }
 
 }  // namespace candela

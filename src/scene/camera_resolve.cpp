@@ -139,13 +139,4 @@ Camera resolveCamera(const CameraDesc& desc, const std::string& fileLabel) {
   return cam;
 }
 
-bool projectToPixel(const Camera& camera, const Mat3& K, const Vec3& world, float* u, float* v) {
-  const Vec3 pc = camera.cameraToWorld.transposed() * (world - camera.position);
-  if (pc.z <= 0.0f) return false;
-  const Vec3 h = K * (pc / pc.z);
-  *u = h.x;
-  *v = h.y;
-  return true;
-}
-
 }  // namespace candela

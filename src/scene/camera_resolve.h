@@ -25,10 +25,6 @@ std::optional<CameraProblem> cameraProblem(const CameraDesc& desc);
 // The camera of `desc`; throws SceneError "file: path: message" for a cameraProblem.
 Camera resolveCamera(const CameraDesc& desc, const std::string& fileLabel);
 
-// Pixel coordinates (u right, v down, pixel centres at +0.5) of a world point seen by the
-// camera, for tests and tools. Returns false when the point is behind the camera.
-bool projectToPixel(const Camera& camera, const Mat3& K, const Vec3& world, float* u, float* v);
-
 // The intrinsic matrix K of a camera description (from fov or as given).
 Mat3 intrinsicMatrix(const CameraDesc& desc);
 

@@ -116,7 +116,7 @@ void addLight(SceneData& s, const LightDesc& d) {
   s.lights.push_back(light);
 }
 
-// The power that light selection weighs a light by: the sum of its RGB power. An emitting
+// The power that the light tree weighs a light by: the sum of its RGB power. An emitting
 // surface of radiance L and area A emits pi A L (from one side of a triangle, all of a sphere).
 double selectionPower(const SceneData& s, const Light& l) {
   switch (l.type) {
@@ -137,14 +137,8 @@ double selectionPower(const SceneData& s, const Light& l) {
           m.emissionTexture.index >= 0 ? s.textureMeans[m.emissionTexture.index] : Vec3(1.0f);
       return kPi * area * componentSum(m.radiance * tint);
     }
-    case LightType::Environment: {
-      // What crosses a disc the size of the scene (pbrt-v4's estimate): pi R^2 times the mean
-      // radiance, R the radius of the scene's bounding sphere.
-      Vec3 lo, hi;
-      s.bounds(&lo, &hi);
-      const double radius = lo.x <= hi.x ? 0.5 * double(length(hi - lo)) : 1.0;
-      return kPi * radius * radius * environmentMeanRadiance(s);
-    }
+    case LightType::Environment:  // picked apart from the tree (SceneView::environmentShare)
+      break;
   }
   return 0.0;
 }
@@ -226,7 +220,7 @@ void addEmitterLights(SceneData& s) {
   std::vector<uint64_t> trails;
   s.lightTree = buildLightTree(bounds, &trails);
   for (size_t i = 0; i < s.lights.size(); ++i) s.lights[i].trail = trails[i];
-  if (s.environment.light >= 0 && selectionPower(s, s.lights[s.environment.light]) > 0.0)
+  if (s.environment.light >= 0 && environmentMeanRadiance(s) > 0.0)
     s.environmentShare = s.lightTree.empty() ? 1.0f : 0.5f;
 }
 

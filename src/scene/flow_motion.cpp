@@ -11,13 +11,13 @@ namespace candela {
 
 namespace {
 
+bool same(const Vec3& u, const Vec3& v) { return u.x == v.x && u.y == v.y && u.z == v.z; }
+
 // p' = position' + (radius' / radius) (p - position).
 InstanceMotion sphereMotion(const Vec3& position, float radius, const Vec3& nextPosition,
                             float nextRadius) {
   InstanceMotion m;
-  if (position.x == nextPosition.x && position.y == nextPosition.y &&
-      position.z == nextPosition.z && radius == nextRadius)
-    return m;
+  if (same(position, nextPosition) && radius == nextRadius) return m;
   const float s = nextRadius / radius;
   m.linear = Mat3::diagonal(Vec3(s));
   m.offset = nextPosition - s * position;
@@ -25,7 +25,6 @@ InstanceMotion sphereMotion(const Vec3& position, float radius, const Vec3& next
 }
 
 bool samePlacement(const ObjectDesc& a, const ObjectDesc& b) {
-  const auto same = [](const Vec3& u, const Vec3& v) { return u.x == v.x && u.y == v.y && u.z == v.z; };
   return same(a.position, b.position) && same(a.rotation, b.rotation) && same(a.scale, b.scale);
 }
 

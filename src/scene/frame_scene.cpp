@@ -103,8 +103,8 @@ const SceneData& FrameScene::prepare(const SceneDesc& desc, const FlowMotion* fl
       moved.bvh = data_.bvh;
       refitBvh(moved.nodes, moved.primIndices, moved.spheres.data(),
                uint32_t(moved.spheres.size()), moved.positions.data(), moved.triangles.data());
-      addEmitterLights(moved);
       refitted = bvhSahCost(moved.nodes) <= kRefitCostLimit * builtCost_;
+      if (refitted) addEmitterLights(moved);  // else flattenScene below makes the lights
       data_ = std::move(moved);
     }
     if (!refitted) {

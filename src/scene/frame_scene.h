@@ -9,7 +9,9 @@
 // scaled or resized, with the same meshes), the vertices are transformed again and the BVH is
 // refitted in linear time, unless refitting has made the tree's SAH cost grow past
 // kRefitCostLimit times that of its last build: then, as for any other change, the frame is
-// flattened afresh with a new BVH.
+// flattened afresh with a new BVH. Textures enter the keys by their content hashes: a frame with
+// other texels is a new structure, while frames that change values or move primitives keep the
+// texture pool and the environment's arrays.
 #pragma once
 
 #include <string>
@@ -46,7 +48,7 @@ class FrameScene {
 };
 
 // The geometry of `desc` as bytes: equal keys mean flattenScene would make the same vertices,
-// triangles, spheres and BVH. Meshes enter as a hash of their contents.
+// triangles, spheres and BVH. Meshes and textures enter as hashes of their contents.
 std::string geometryKey(const SceneDesc& desc);
 
 // The geometry of `desc` less its transforms (positions, rotations, scales, radii): equal keys

@@ -18,13 +18,14 @@ void SphereBlocks::assign(const Sphere* spheres, uint32_t count) {
   float* radius = centerZ + lanes;
   float* radiusSquared = radius + lanes;
   for (size_t i = 0; i < lanes; ++i) {
-    // A padding lane has radius -1: every ray passes farther than that from its centre.
+    // A padding lane has radius -1: every ray passes farther than that from its centre. Its
+    // squared radius, far below zero, makes blockHits's first look call it wide of every ray.
     const Sphere s = i < count ? spheres[i] : Sphere{Vec3(0, 0, 0), -1.0f};
     centerX[i] = s.center.x;
     centerY[i] = s.center.y;
     centerZ[i] = s.center.z;
     radius[i] = s.radius;
-    radiusSquared[i] = s.radius * s.radius;
+    radiusSquared[i] = i < count ? s.radius * s.radius : -1e30f;
   }
 }
 

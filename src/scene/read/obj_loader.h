@@ -9,8 +9,8 @@
 // docs/scene-format.md (diffuse by Kd and map_Kd, plastic or conductor by Ks and Ns, emissive by
 // Ke and map_Ke), masked by d, Tr and map_d (textures through `textures`, relative to the MTL
 // file; see mtlMaterials in obj_loader.cpp); faces without one (no usemtl, no MTL file, or a name
-// the MTL does not define) use an extra diffuse 0.8 entry. A missing MTL file is not an error: its faces fall back to that
-// entry.
+// the MTL does not define) use an extra diffuse 0.8 entry. A missing MTL file is not an error:
+// its faces fall back to that entry.
 //
 // Errors throw SceneError, with `label` (how the caller shows the path) naming the file:
 //   cannot open "<label>" (<reason>)
