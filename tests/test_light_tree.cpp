@@ -3,13 +3,16 @@
 // few point lights that are each sampled.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <random>
 #include <string>
 #include <vector>
 
 #include "render/light_selection.h"
 #include "render_test_util.h"
+#include "scene/frame_scene.h"
 #include "scene/light_tree_build.h"
 #include "temp_dir.h"
 #include "test_random.h"
@@ -27,7 +30,7 @@ struct RandomInputs {
 
 // A scene of `triangles` random emissive triangles (random sizes, orientations and radiances),
 // two sphere lights and two point lights, in a box of half-size 10; its files go to `dir`.
-SceneData randomLights(const test::TempDir& dir, int triangles, uint32_t seed) {
+SceneDesc randomLightsDesc(const test::TempDir& dir, int triangles, uint32_t seed) {
   RandomInputs rng{std::mt19937(seed)};
   std::string obj, mtl;
   for (int i = 0; i < triangles; ++i) {
@@ -50,13 +53,18 @@ SceneData randomLights(const test::TempDir& dir, int triangles, uint32_t seed) {
   }
   dir.write("lights.mtl", mtl);
   const std::string path = dir.write("lights.obj", obj);
-  return test::loadTestScene(R"({"camera": {"width": 4, "height": 4},
+  return parseSceneText(R"({"camera": {"width": 4, "height": 4},
       "objects": [{"file": ")" +
-                             path + R"("}],
+                            path + R"("}],
       "lights": [{"type": "sphere", "position": [3, 4, -2], "radius": 0.5, "intensity": 200},
                  {"type": "sphere", "position": [-6, 1, 5], "radius": 2, "intensity": 50},
                  {"position": [1, -7, 2], "intensity": 30},
-                 {"position": [8, 8, 8], "intensity": 300, "color": [1, 0.5, 0.25]}]})");
+                 {"position": [8, 8, 8], "intensity": 300, "color": [1, 0.5, 0.25]}]})",
+                        "test.json", ".");
+}
+
+SceneData randomLights(const test::TempDir& dir, int triangles, uint32_t seed) {
+  return flattenScene(randomLightsDesc(dir, triangles, seed));
 }
 
 // Whether light l can send any light to p, where a surface reflects only into the hemisphere
@@ -132,15 +140,13 @@ TEST(LightTree, EnvironmentTakesHalfThePicksBesideOtherLights) {
 // on the point have pmf 0. A pick may end at a node whose clusters all turn out unable to reach
 // the point (their bounds are tighter than their parent's): it then finds no light, which only
 // the pmfs' sum below 1 accounts for.
-TEST(LightTree, PicksFollowTheirPmfWhichMissesNoLightThatReachesThePoint) {
-  test::TempDir dir;
-  const SceneData data = randomLights(dir, 300, 7);
-  const SceneView view = data.view();
-  ASSERT_EQ(view.lightCount, 304u);
-  ASSERT_FALSE(view.sampleEveryLight);
+// Checks, at `trials` random points, the properties that PicksFollowTheirPmf... below names;
+// adds to *behind the triangles seen that cannot reach the point, to *behindWithoutPmf those of
+// them with pmf 0.
+void expectPicksFollowTheirPmfs(const SceneView& view, int trials, int* behind,
+                                int* behindWithoutPmf) {
   RandomInputs rng{std::mt19937(99)};
-  int behind = 0, behindWithoutPmf = 0;
-  for (int trial = 0; trial < 40; ++trial) {
+  for (int trial = 0; trial < trials; ++trial) {
     const Vec3 p = rng.inBox(12.0f);
     const Vec3 n = trial % 4 == 3 ? Vec3(0.0f) : rng.direction();
     std::vector<double> pmfs(view.lightCount);
@@ -151,8 +157,8 @@ TEST(LightTree, PicksFollowTheirPmfWhichMissesNoLightThatReachesThePoint) {
       if (canReach(view, view.lights[i], p, n)) {
         EXPECT_GT(pmfs[i], 0.0) << "light " << i << ", trial " << trial;
       } else if (view.lights[i].type == LightType::Triangle) {
-        ++behind;
-        behindWithoutPmf += pmfs[i] == 0.0;
+        ++*behind;
+        *behindWithoutPmf += pmfs[i] == 0.0;
       }
     }
     EXPECT_LE(sum, 1.0 + 1e-5) << trial;
@@ -174,8 +180,126 @@ TEST(LightTree, PicksFollowTheirPmfWhichMissesNoLightThatReachesThePoint) {
     for (uint32_t i = 0; i < view.lightCount; ++i)
       EXPECT_NEAR(picked[i], pmfs[i] * draws, 8.0) << "light " << i << ", trial " << trial;
   }
+}
+
+// Among random lights at random points: the pick's pmf is the one MIS recomputes from the
+// light's trail, bit for bit; picks follow the pmfs; no light that can send light to the point
+// has pmf 0 (the tree's bound errs only towards more), and most triangles that turn their backs
+// on the point have pmf 0. A pick may end at a node whose clusters all turn out unable to reach
+// the point (their bounds are tighter than their parent's): it then finds no light, which only
+// the pmfs' sum below 1 accounts for.
+TEST(LightTree, PicksFollowTheirPmfWhichMissesNoLightThatReachesThePoint) {
+  test::TempDir dir;
+  const SceneData data = randomLights(dir, 300, 7);
+  const SceneView view = data.view();
+  ASSERT_EQ(view.lightCount, 304u);
+  ASSERT_FALSE(view.sampleEveryLight);
+  int behind = 0, behindWithoutPmf = 0;
+  expectPicksFollowTheirPmfs(view, 40, &behind, &behindWithoutPmf);
   EXPECT_GT(behind, 1000);  // the test saw many lights that cannot reach the point
   EXPECT_GT(behindWithoutPmf, 0.9 * behind);
+}
+
+// The angle between two directions, accurate also near 0.
+double angleBetween(const Vec3& a, const Vec3& b) {
+  const double ax = a.x, ay = a.y, az = a.z, bx = b.x, by = b.y, bz = b.z;
+  const double cx = ay * bz - az * by, cy = az * bx - ax * bz, cz = ax * by - ay * bx;
+  return std::atan2(std::sqrt(cx * cx + cy * cy + cz * cz), ax * bx + ay * by + az * bz);
+}
+
+// A cluster's bounds, as the pick reads them.
+struct ClusterBounds {
+  Vec3 centre, axis;
+  float reach;
+  double thetaO;
+};
+
+// Checks that cluster k of node `index` and its ancestors bound the lights below it: their
+// shapes lie in each sphere, their emitting normals in each cone, and a cluster's power is its
+// children's sum. Returns the cluster's power.
+double expectClusterHoldsItsLights(const SceneView& view, uint32_t index, int k,
+                                   std::vector<ClusterBounds> ancestors) {
+  const LightTreeNode& node = view.lightTree[index];
+  ancestors.push_back({Vec3(node.centerX[k], node.centerY[k], node.centerZ[k]),
+                       Vec3(node.axisX[k], node.axisY[k], node.axisZ[k]),
+                       node.radius[k] * (1.0f + 1e-5f) + 1e-5f,
+                       std::acos(std::clamp(double(node.cosThetaO[k]), -1.0, 1.0)) + 1e-5});
+  const uint32_t child = node.child[k];
+  if (!(child & kLightTreeLeaf)) {
+    double sum = 0;
+    for (int c = 0; c < kLightTreeWidth && view.lightTree[child].child[c] != 0; ++c)
+      sum += expectClusterHoldsItsLights(view, child, c, ancestors);
+    EXPECT_NEAR(node.power[k], sum, 1e-5 * sum) << "node " << index << ", cluster " << k;
+    return node.power[k];
+  }
+  const Light& l = view.lights[child & ~kLightTreeLeaf];
+  EXPECT_GT(node.power[k], 0.0f);
+  for (const ClusterBounds& b : ancestors) {
+    switch (l.type) {
+      case LightType::Point:
+        EXPECT_LE(length(l.position - b.centre), b.reach);
+        EXPECT_GE(b.thetaO, 3.14159);
+        break;
+      case LightType::Sphere: {
+        const Sphere& s = view.spheres[l.shape];
+        EXPECT_LE(length(s.center - b.centre), b.reach);
+        EXPECT_GE(b.thetaO, 3.14159);
+        break;
+      }
+      case LightType::Triangle: {
+        const Triangle& t = view.triangles[l.shape];
+        const Vec3 &p0 = view.positions[t.v[0]], &p1 = view.positions[t.v[1]],
+                   &p2 = view.positions[t.v[2]];
+        for (const Vec3& p : {p0, p1, p2}) EXPECT_LE(length(p - b.centre), b.reach);
+        EXPECT_LE(angleBetween(cross(p1 - p0, p2 - p0), b.axis), b.thetaO);
+        break;
+      }
+      case LightType::Environment:
+        ADD_FAILURE() << "the environment is not in the tree";
+    }
+  }
+  return node.power[k];
+}
+
+void expectTreeBoundsItsLights(const SceneView& view) {
+  ASSERT_GT(view.lightTreeNodeCount, 0u);
+  for (int k = 0; k < kLightTreeWidth && view.lightTree[0].child[k] != 0; ++k)
+    expectClusterHoldsItsLights(view, 0, k, {});
+}
+
+// A frame that only changes values (a dimming emitter, a moving point light) refits the last
+// frame's light tree instead of building one: the same shape and trails, clusters that bound
+// the lights where they are now with their new powers, and picks that follow their pmfs. A light
+// that loses its power leaves the tree, so that frame builds it afresh.
+TEST(LightTree, AFrameOfNewValuesRefitsTheTree) {
+  test::TempDir dir;
+  SceneDesc desc = randomLightsDesc(dir, 300, 7);
+  FrameScene frames;
+  const std::vector<LightTreeNode> built = frames.prepare(desc).lightTree;
+  expectTreeBoundsItsLights(flattenScene(desc).view());
+
+  desc.lights[3].position = Vec3(-9, 2, -9);            // a point light moves across the scene
+  desc.objects[0].mesh.materials[1].radiance *= 40.0f;  // a third of the triangles brighten
+  const SceneData& refitted = frames.prepare(desc);
+  ASSERT_EQ(frames.change(), SceneChange::Values);
+  ASSERT_EQ(refitted.lightTree.size(), built.size());
+  for (size_t i = 0; i < built.size(); ++i)
+    for (int k = 0; k < kLightTreeWidth; ++k)
+      ASSERT_EQ(refitted.lightTree[i].child[k], built[i].child[k]) << "the tree was rebuilt";
+  EXPECT_NE(refitted.lightTree[0].power[0] + refitted.lightTree[0].power[1],
+            built[0].power[0] + built[0].power[1]);
+  const SceneView view = refitted.view();
+  expectTreeBoundsItsLights(view);
+  int behind = 0, behindWithoutPmf = 0;
+  expectPicksFollowTheirPmfs(view, 12, &behind, &behindWithoutPmf);
+
+  desc.objects[0].mesh.materials[2].radiance = Vec3(0.0f);  // those triangles no longer emit
+  const SceneData& rebuilt = frames.prepare(desc);
+  const SceneData fresh = flattenScene(desc);
+  ASSERT_EQ(rebuilt.lightTree.size(), fresh.lightTree.size());
+  EXPECT_EQ(std::memcmp(rebuilt.lightTree.data(), fresh.lightTree.data(),
+                        fresh.lightTree.size() * sizeof(LightTreeNode)),
+            0);
 }
 
 // Lights without power are never picked; without any, nothing is.

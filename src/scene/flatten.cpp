@@ -177,9 +177,27 @@ LightBounds lightBounds(const SceneData& s, const Light& l) {
 
 bool emits(const Material& m) { return m.type == MaterialType::Emissive && !isBlack(m.radiance); }
 
+// The previous frame's light tree refitted to `bounds`, into s.lightTree, when its lights are the
+// same shapes with the same lights powered (a light that gains or loses its power changes the
+// tree's leaves); else false.
+bool refitLights(SceneData& s, const PreviousLights& previous,
+                 const std::vector<LightBounds>& bounds) {
+  if (previous.lights.size() != s.lights.size() || previous.tree.empty()) return false;
+  for (size_t i = 0; i < s.lights.size(); ++i) {
+    const Light &now = s.lights[i], &then = previous.lights[i];
+    if (now.type != then.type || now.shape != then.shape ||
+        (bounds[i].power > 0.0) != (then.trail != kNotInLightTree))
+      return false;
+  }
+  s.lightTree = previous.tree;
+  if (!refitLightTree(s.lightTree, bounds)) return false;
+  for (size_t i = 0; i < s.lights.size(); ++i) s.lights[i].trail = previous.lights[i].trail;
+  return true;
+}
+
 }  // namespace
 
-void addEmitterLights(SceneData& s) {
+void addEmitterLights(SceneData& s, const PreviousLights* previous) {
   for (uint32_t i = 0; i < s.spheres.size(); ++i) {
     Sphere& sphere = s.spheres[i];
     if (sphere.light >= 0 || !emits(s.materials[sphere.material])) continue;
@@ -217,9 +235,11 @@ void addEmitterLights(SceneData& s) {
   // scene's size, and a ground sphere of radius 1000 once made it a million times a lamp's.
   std::vector<LightBounds> bounds;
   for (const Light& l : s.lights) bounds.push_back(lightBounds(s, l));
-  std::vector<uint64_t> trails;
-  s.lightTree = buildLightTree(bounds, &trails);
-  for (size_t i = 0; i < s.lights.size(); ++i) s.lights[i].trail = trails[i];
+  if (!previous || !refitLights(s, *previous, bounds)) {
+    std::vector<uint64_t> trails;
+    s.lightTree = buildLightTree(bounds, &trails);
+    for (size_t i = 0; i < s.lights.size(); ++i) s.lights[i].trail = trails[i];
+  }
   if (s.environment.light >= 0 && environmentMeanRadiance(s) > 0.0)
     s.environmentShare = s.lightTree.empty() ? 1.0f : 0.5f;
 }
@@ -318,6 +338,9 @@ void addContents(SceneData& s, const SceneDesc& desc, bool geometry, bool textur
 }  // namespace
 
 void refreshSceneValues(SceneData& s, const SceneDesc& desc) {
+  PreviousLights previous;
+  previous.lights = std::move(s.lights);
+  previous.tree = std::move(s.lightTree);
   s.materials.clear();
   s.materialInstances.clear();
   s.spheres.clear();
@@ -325,7 +348,7 @@ void refreshSceneValues(SceneData& s, const SceneDesc& desc) {
   s.alphaMasks.clear();
   s.textureMeans.clear();
   addContents(s, desc, false, false);  // the frame's textures are the last frame's (equal keys)
-  addEmitterLights(s);
+  addEmitterLights(s, &previous);
 }
 
 SceneData flattenSceneContents(const SceneDesc& desc, SceneData* previous) {

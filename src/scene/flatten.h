@@ -5,6 +5,8 @@
 // emissive sphere and triangle becomes a light that its primitive names.
 #pragma once
 
+#include <vector>
+
 #include "render/scene_data.h"
 #include "scene/scene_desc.h"
 
@@ -25,11 +27,19 @@ SceneData flattenScene(SceneDesc&& desc);
 // are moved over rather than made again.
 SceneData flattenSceneContents(const SceneDesc& desc, SceneData* previous = nullptr);
 
+// A frame's lights and light tree, kept for the next frame of the same geometry.
+struct PreviousLights {
+  std::vector<Light> lights;
+  std::vector<LightTreeNode> tree;
+};
+
 // Appends a light for every emissive sphere that is not yet one, for the environment unless it
 // is black, and for every emissive triangle (last, in triangle order, as lightOfPrimitive
-// expects), and sets the light selection. Triangles must be in
-// their final order.
-void addEmitterLights(SceneData& scene);
+// expects), and sets the light selection. Triangles must be in their final order. With
+// `previous` (the last frame's, same geometry) the light tree is refitted rather than built when
+// the lights are the same shapes with the same ones powered: a dimming lamp or a moving point
+// light costs a linear pass, not a build.
+void addEmitterLights(SceneData& scene, const PreviousLights* previous = nullptr);
 
 // Replaces the camera, settings, environment, materials, lights and spheres of `scene` (which
 // flattenScene made from a description with the same geometry as `desc`) by those of `desc`,

@@ -109,6 +109,36 @@ double splitCost(const Cluster& c, const Cluster& whole, int dim) {
   return c.power * mOmega * kr * c.surfaceArea();
 }
 
+// Slot k of `node` holds cluster c.
+void writeSlot(const Cluster& c, int k, LightTreeNode* node) {
+  const double dx = c.diagonal(0), dy = c.diagonal(1), dz = c.diagonal(2);
+  node->centerX[k] = float(0.5 * (c.lo[0] + c.hi[0]));
+  node->centerY[k] = float(0.5 * (c.lo[1] + c.hi[1]));
+  node->centerZ[k] = float(0.5 * (c.lo[2] + c.hi[2]));
+  // Rounded up, so that the sphere still holds the box in float.
+  node->radius[k] = std::nextafter(float(0.5 * std::sqrt(dx * dx + dy * dy + dz * dz)),
+                                   std::numeric_limits<float>::infinity());
+  node->axisX[k] = float(c.axis.x);
+  node->axisY[k] = float(c.axis.y);
+  node->axisZ[k] = float(c.axis.z);
+  node->cosThetaO[k] = float(c.cosThetaO);
+  node->sinThetaO[k] = float(std::sqrt(std::max(0.0, 1.0 - c.cosThetaO * c.cosThetaO)));
+  node->power[k] = float(c.power);
+}
+
+// Sets node->byPower where its first `groups` slots share one sphere and one cone.
+void markByPower(int groups, LightTreeNode* node) {
+  const LightTreeNode& n = *node;
+  node->byPower = 1;
+  for (int k = 1; k < groups; ++k) {
+    const bool same = n.centerX[k] == n.centerX[0] && n.centerY[k] == n.centerY[0] &&
+                      n.centerZ[k] == n.centerZ[0] && n.radius[k] == n.radius[0] &&
+                      n.axisX[k] == n.axisX[0] && n.axisY[k] == n.axisY[0] &&
+                      n.axisZ[k] == n.axisZ[0] && n.cosThetaO[k] == n.cosThetaO[0];
+    if (!same) node->byPower = 0;
+  }
+}
+
 class Builder {
  public:
   Builder(const std::vector<LightBounds>& lights, std::vector<uint64_t>* trails)
@@ -220,20 +250,7 @@ class Builder {
     nodes_.emplace_back();
     LightTreeNode node{};
     for (int k = 0; k < groups; ++k) {
-      const Cluster c = clusterOf(bounds[k], bounds[k + 1]);
-      const double dx = c.diagonal(0), dy = c.diagonal(1), dz = c.diagonal(2);
-      node.centerX[k] = float(0.5 * (c.lo[0] + c.hi[0]));
-      node.centerY[k] = float(0.5 * (c.lo[1] + c.hi[1]));
-      node.centerZ[k] = float(0.5 * (c.lo[2] + c.hi[2]));
-      // Rounded up, so that the sphere still holds the box in float.
-      node.radius[k] = std::nextafter(float(0.5 * std::sqrt(dx * dx + dy * dy + dz * dz)),
-                                      std::numeric_limits<float>::infinity());
-      node.axisX[k] = float(c.axis.x);
-      node.axisY[k] = float(c.axis.y);
-      node.axisZ[k] = float(c.axis.z);
-      node.cosThetaO[k] = float(c.cosThetaO);
-      node.sinThetaO[k] = float(std::sqrt(std::max(0.0, 1.0 - c.cosThetaO * c.cosThetaO)));
-      node.power[k] = float(c.power);
+      writeSlot(clusterOf(bounds[k], bounds[k + 1]), k, &node);
       const uint64_t childTrail = trail | (uint64_t(k) << (kLightTreeTrailBits * depth));
       if (bounds[k + 1] - bounds[k] == 1) {
         const uint32_t light = order_[bounds[k]];
@@ -243,14 +260,7 @@ class Builder {
         node.child[k] = buildNode(bounds[k], bounds[k + 1], childTrail, depth + 1);
       }
     }
-    node.byPower = 1;
-    for (int k = 1; k < groups; ++k) {
-      const bool same = node.centerX[k] == node.centerX[0] && node.centerY[k] == node.centerY[0] &&
-                        node.centerZ[k] == node.centerZ[0] && node.radius[k] == node.radius[0] &&
-                        node.axisX[k] == node.axisX[0] && node.axisY[k] == node.axisY[0] &&
-                        node.axisZ[k] == node.axisZ[0] && node.cosThetaO[k] == node.cosThetaO[0];
-      if (!same) node.byPower = 0;
-    }
+    markByPower(groups, &node);
     nodes_[index] = node;
     return index;
   }
@@ -261,7 +271,37 @@ class Builder {
   std::vector<LightTreeNode> nodes_;
 };
 
+// The cluster of node `index` of a tree over `lights`, its slots rewritten bottom-up; false when
+// one of its lights has no power (a refit cannot drop it from the tree).
+bool refitNode(std::vector<LightTreeNode>& nodes, uint32_t index,
+               const std::vector<LightBounds>& lights, Cluster* cluster) {
+  LightTreeNode& node = nodes[index];
+  int groups = 0;  // slots fill from the first; an unused slot's child is 0, never a child node
+  while (groups < kLightTreeWidth && node.child[groups] != 0) ++groups;
+  Cluster whole;
+  for (int k = 0; k < groups; ++k) {
+    Cluster c;
+    const uint32_t child = node.child[k];
+    if (child & kLightTreeLeaf) {
+      c = clusterOf(lights[child & ~kLightTreeLeaf]);
+      if (!(c.power > 0.0)) return false;
+    } else if (!refitNode(nodes, child, lights, &c)) {
+      return false;
+    }
+    writeSlot(c, k, &node);
+    whole = unite(whole, c);
+  }
+  markByPower(groups, &node);
+  *cluster = whole;
+  return true;
+}
+
 }  // namespace
+
+bool refitLightTree(std::vector<LightTreeNode>& nodes, const std::vector<LightBounds>& lights) {
+  Cluster root;
+  return nodes.empty() || refitNode(nodes, 0, lights, &root);
+}
 
 std::vector<LightTreeNode> buildLightTree(const std::vector<LightBounds>& lights,
                                           std::vector<uint64_t>* trails) {
