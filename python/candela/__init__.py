@@ -134,27 +134,52 @@ class Scene:
         """
         if sample_range is not None:
             sample_range = (int(sample_range[0]), int(sample_range[1]))
-        if aovs is not None:
-            if isinstance(aovs, str):
-                raise TypeError("aovs must be a list of pass names, e.g. ['depth', 'normal']")
-            aovs = [str(a) for a in aovs]
+        aovs = _pass_names(aovs)
         if not denoise:
             return self._core.render(spp, seed, backend, sample_range, threads, aovs)
-        from . import denoise as oidn
-        oidn._oidn()  # fail before rendering where the denoiser is missing
-        passes = list(dict.fromkeys((aovs or []) + ["albedo", "normal"]))
-        result = self._core.render(spp, seed, backend, sample_range, threads, passes)
-        clean = oidn.denoise(result["image"], result["albedo"], result["normal"])
-        if aovs is None:
-            return clean
-        result["noisy"] = result["image"]
-        result["image"] = clean
-        return {k: v for k, v in result.items() if k in ("image", "noisy") or k in aovs}
+        result = self._core.render(spp, seed, backend, sample_range, threads,
+                                   _passes_to_render(aovs, denoise))
+        return _denoised(result, aovs)
 
     def __repr__(self) -> str:
         frame = "" if self.frame_index is None else f", frame {self.frame_index}"
         return (f"<candela.Scene {self._source.get('label')} {self.width}x{self.height}, "
                 f"{self.frames} frame(s){frame}>")
+
+
+def _pass_names(aovs: Optional[Sequence[str]]) -> Optional[list]:
+    """The pass names as a list (None for none); TypeError for a bare string, ValueError for an
+    unknown name."""
+    if aovs is None:
+        return None
+    if isinstance(aovs, str):
+        raise TypeError("aovs must be a list of pass names, e.g. ['depth', 'normal']")
+    names = [str(a) for a in aovs]
+    _candela.check_aovs(names)
+    return names
+
+
+def _passes_to_render(aovs: Optional[list], denoise: bool) -> Optional[list]:
+    """The passes a render needs: those asked for, and the denoiser's guides. With denoise, fails
+    before rendering where the denoiser is missing."""
+    if not denoise:
+        return aovs
+    from . import denoise as oidn
+    oidn._oidn()
+    return list(dict.fromkeys((aovs or []) + ["albedo", "normal"]))
+
+
+def _denoised(result: Dict[str, np.ndarray], aovs: Optional[list]):
+    """A render's result with its passes and guides, denoised as Scene.render(denoise=True)
+    returns it: the clean image alone without aovs, else the asked passes plus "image" (clean)
+    and "noisy"."""
+    from . import denoise as oidn
+    clean = oidn.denoise(result["image"], result["albedo"], result["normal"])
+    if aovs is None:
+        return clean
+    result["noisy"] = result["image"]
+    result["image"] = clean
+    return {k: v for k, v in result.items() if k in ("image", "noisy") or k in aovs}
 
 
 def write_image(path: str | os.PathLike, img: Any, gamma: float | str = 2.2,

@@ -12,11 +12,11 @@ from __future__ import annotations
 
 import os
 import time
-from typing import Iterable, List, Optional, Sequence, Union
+from typing import Dict, Iterable, List, Optional, Sequence, Union
 
 import numpy as np
 
-from . import Scene
+from . import Scene, _denoised, _pass_names, _passes_to_render
 
 
 def _ray():
@@ -66,10 +66,33 @@ def _render_frame(spec: dict, path: str, spp, backend: str, threads: int) -> dic
 
 
 def _render_slice(spec: dict, spp: int, seed, first: int, count: int, backend: str,
-                  threads: int) -> np.ndarray:
+                  threads: int, passes: Optional[list] = None):
+    """Task body: samples [first, first + count) of the image; with passes, {"image", "sums"}:
+    the mean image and the passes' per-pixel sums, which merge_pass_sums adds."""
     scene = Scene.from_spec(spec)
-    return scene.render(spp=spp, seed=seed, backend=backend, sample_range=(first, count),
-                        threads=threads)
+    if passes is None:
+        return scene.render(spp=spp, seed=seed, backend=backend, sample_range=(first, count),
+                            threads=threads)
+    return scene._core.render(spp, seed, backend, (first, count), threads, passes, True)
+
+
+# The per-pixel sums that add over sample ranges (render/aov.h's AovPixel).
+_ADDED_SUMS = ("position_sum", "normal_sum", "albedo_sum", "distance_sum", "flow_sum",
+               "flow_samples", "hits", "samples")
+
+
+def merge_pass_sums(parts: Sequence[dict]) -> dict:
+    """The pass sums of disjoint sample ranges, given in ascending order of their first sample,
+    as one render of their union would hold them: sums added; for the id passes, the sample
+    nearest the pixel centre, the earliest of equals (so the one a single render keeps)."""
+    merged = {k: np.array(v, copy=True) for k, v in parts[0].items()}
+    for part in parts[1:]:
+        for k in _ADDED_SUMS:
+            merged[k] += part[k]
+        nearer = part["nearest_distance2"] < merged["nearest_distance2"]
+        for k in ("nearest_distance2", "nearest_material"):
+            merged[k] = np.where(nearer, part[k], merged[k])
+    return merged
 
 
 def _as_scenes(scenes_or_animation) -> List[Scene]:
@@ -130,21 +153,37 @@ def split_samples(spp: int, chunks: int) -> List[tuple]:
 
 def render_image(scene: Union[Scene, str], spp: Optional[int] = None, chunks: int = 4,
                  address: Optional[str] = None, *, seed: Optional[int] = None,
-                 backend: str = "auto", max_retries: int = 3,
-                 cpus_per_task: int = 1) -> np.ndarray:
+                 backend: str = "auto", max_retries: int = 3, cpus_per_task: int = 1,
+                 aovs: Optional[Sequence[str]] = None, denoise: bool = False
+                 ) -> Union[np.ndarray, Dict[str, np.ndarray]]:
     """Renders one image as `chunks` Ray tasks, each a slice of the sample indices, and merges
-    them weighted by sample count: equal to scene.render(spp, seed) to float rounding."""
+    them weighted by sample count: equal to scene.render(spp, seed) to float rounding.
+
+    aovs and denoise as in Scene.render, with the same result: the tasks return their passes'
+    per-pixel sums (merge_pass_sums), which merge as one render's would, so the filtered passes
+    equal the single render's to float rounding and the id passes exactly; the denoiser runs
+    once, here, on the merged image."""
     if not isinstance(scene, Scene):
         scene = Scene.load(scene)
+    names = _pass_names(aovs)
+    passes = _passes_to_render(names, denoise)
     spp = scene.spp if spp is None else spp
     ray = _connect(address)
     options = _task_options(ray, cpus_per_task, max_retries, backend)
     threads = 0 if "num_gpus" in options else cpus_per_task
     task = ray.remote(_render_slice).options(**options)
     slices = split_samples(spp, chunks)
-    refs = [task.remote(scene.spec, spp, seed, first, count, backend, threads)
+    refs = [task.remote(scene.spec, spp, seed, first, count, backend, threads, passes)
             for first, count in slices]
+    parts = [ray.get(ref) for ref in refs]
+    images = parts if passes is None else [p["image"] for p in parts]
     total = np.zeros((scene.height, scene.width, 3), dtype=np.float64)
-    for (first, count), ref in zip(slices, refs):
-        total += ray.get(ref).astype(np.float64) * count
-    return (total / spp).astype(np.float32)
+    for (first, count), image in zip(slices, images):
+        total += image.astype(np.float64) * count
+    image = (total / spp).astype(np.float32)
+    if passes is None:
+        return image
+    result = {"image": image}
+    result.update(scene._core.passes_from_sums(merge_pass_sums([p["sums"] for p in parts]),
+                                               passes))
+    return _denoised(result, names) if denoise else result

@@ -3,6 +3,7 @@ import numpy as np
 import pytest
 
 import candela
+from conftest import animated_scene
 
 # A grey unit sphere 5 before the camera; the centre pixel of the 15x15 image is on its axis.
 SCENE = {
@@ -50,3 +51,33 @@ def test_flow_of_an_animated_frame_is_an_h_w_2_array_in_pixels():
     # A still scene does not move at all.
     still = candela.Scene.from_dict(SCENE).render(backend="cpu", aovs=["flow"])
     assert not still["flow"].any()
+
+
+ALL_PASSES = ["depth", "distance", "normal", "normal_camera", "albedo", "position", "instance",
+              "material", "flow"]
+
+
+def test_pass_sums_of_sample_ranges_merge_into_the_passes_of_one_render():
+    # What candela.distributed.render_image does with its chunks, without Ray: frame 1 of an
+    # animated scene (flow is defined), antialiased, so the edge pixels' ids depend on which
+    # sample lies nearest the pixel centre.
+    from candela.distributed import merge_pass_sums, split_samples
+
+    scene = candela.Scene.from_dict(animated_scene(frames=3, size=24)).frame(1)
+    whole = scene.render(spp=10, backend="cpu", aovs=ALL_PASSES)
+    parts = [scene._core.render(10, None, "cpu", (first, count), 0, ALL_PASSES, True)
+             for first, count in split_samples(10, 3)]
+    merged = scene._core.passes_from_sums(merge_pass_sums([p["sums"] for p in parts]),
+                                          ALL_PASSES)
+    assert set(merged) == set(ALL_PASSES)
+    for name in ("instance", "material"):
+        np.testing.assert_array_equal(merged[name], whole[name], err_msg=name)
+    assert len(np.unique(whole["instance"])) == 3  # ground, ball and background
+    for name in ALL_PASSES:
+        if name not in ("instance", "material"):
+            np.testing.assert_allclose(merged[name], whole[name], rtol=1e-5, atol=1e-5,
+                                       err_msg=name)
+    # Sums that lack a field are refused, naming it.
+    with pytest.raises(ValueError, match="nearest_material"):
+        del parts[0]["sums"]["nearest_material"]
+        scene._core.passes_from_sums(parts[0]["sums"], ["instance"])

@@ -59,6 +59,31 @@ def test_render_image_in_chunks_equals_local_render(local_ray):
     np.testing.assert_allclose(merged, local, rtol=1e-5, atol=1e-6)
 
 
+def test_render_image_merges_passes_as_one_render_holds_them(local_ray):
+    scene = candela.Scene.from_dict(animated_scene(frames=3, size=20)).frame(1)
+    names = ["depth", "normal", "albedo", "instance", "material", "flow"]
+    local = scene.render(spp=10, backend="cpu", aovs=names)
+    merged = distributed.render_image(scene, spp=10, chunks=3, aovs=names)
+    assert set(merged) == {"image"} | set(names)
+    for name in ("instance", "material"):
+        assert merged[name].dtype == np.uint32
+        np.testing.assert_array_equal(merged[name], local[name], err_msg=name)
+    for name in ("image", "depth", "normal", "albedo", "flow"):
+        np.testing.assert_allclose(merged[name], local[name], rtol=1e-5, atol=1e-5, err_msg=name)
+    with pytest.raises(ValueError, match="unknown render pass"):
+        distributed.render_image(scene, spp=2, aovs=["nromal"])
+
+
+def test_render_image_denoises_the_merged_image(local_ray):
+    pytest.importorskip("pyoidn", reason="the denoiser (PyPI pyoidn) is not installed")
+    scene = candela.Scene.from_dict(tiny_scene())
+    local = scene.render(spp=8, backend="cpu", aovs=["depth"], denoise=True)
+    merged = distributed.render_image(scene, spp=8, chunks=2, aovs=["depth"], denoise=True)
+    assert set(merged) == {"image", "noisy", "depth"}
+    np.testing.assert_allclose(merged["noisy"], local["noisy"], rtol=1e-5, atol=1e-6)
+    np.testing.assert_allclose(merged["image"], local["image"], rtol=1e-3, atol=1e-3)
+
+
 def _ray_worker_pids(title):
     pids = []
     for pid in filter(str.isdigit, os.listdir("/proc")):

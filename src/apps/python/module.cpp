@@ -28,6 +28,7 @@
 #include "image/image_io.h"
 #include "render/aov_layers.h"
 #include "scene/animation.h"
+#include "scene/flatten.h"
 #include "scene/frame_scene.h"
 #include "scene/scene_error.h"
 #include "scene/read/scene_loader.h"
@@ -91,9 +92,92 @@ nb::object layerToArray(ImageLayer&& layer) {
   return nb::cast(nb::ndarray<nb::numpy, float>(values->data(), {h, w, n}, owner));
 }
 
+// A pass's per-pixel sums (render/aov.h) as arrays, one per field of AovPixel, named as in
+// python/candela/distributed.py, which adds those of several sample ranges.
+template <typename T, int kChannels, typename Field>
+nb::object sumsArray(const std::vector<AovPixel>& pixels, size_t h, size_t w, Field field) {
+  auto* values = new std::vector<T>(pixels.size() * kChannels);
+  for (size_t i = 0; i < pixels.size(); ++i) field(pixels[i], values->data() + kChannels * i);
+  nb::capsule owner(values, [](void* p) noexcept { delete static_cast<std::vector<T>*>(p); });
+  if (kChannels == 1) return nb::cast(nb::ndarray<nb::numpy, T>(values->data(), {h, w}, owner));
+  return nb::cast(nb::ndarray<nb::numpy, T>(values->data(), {h, w, size_t(kChannels)}, owner));
+}
+
+nb::dict sumsToDict(const std::vector<AovPixel>& pixels, size_t h, size_t w) {
+  const auto vec3 = [](const Vec3 AovPixel::*member) {
+    return [member](const AovPixel& p, float* out) {
+      out[0] = (p.*member).x;
+      out[1] = (p.*member).y;
+      out[2] = (p.*member).z;
+    };
+  };
+  const auto scalar = [](auto member) {
+    return [member](const AovPixel& p, auto* out) { *out = p.*member; };
+  };
+  nb::dict d;
+  d["position_sum"] = sumsArray<float, 3>(pixels, h, w, vec3(&AovPixel::positionSum));
+  d["normal_sum"] = sumsArray<float, 3>(pixels, h, w, vec3(&AovPixel::normalSum));
+  d["albedo_sum"] = sumsArray<float, 3>(pixels, h, w, vec3(&AovPixel::albedoSum));
+  d["distance_sum"] = sumsArray<float, 1>(pixels, h, w, scalar(&AovPixel::distanceSum));
+  d["flow_sum"] = sumsArray<float, 2>(pixels, h, w, [](const AovPixel& p, float* out) {
+    out[0] = p.flowSum.x;
+    out[1] = p.flowSum.y;
+  });
+  d["flow_samples"] = sumsArray<uint32_t, 1>(pixels, h, w, scalar(&AovPixel::flowSamples));
+  d["hits"] = sumsArray<uint32_t, 1>(pixels, h, w, scalar(&AovPixel::hits));
+  d["samples"] = sumsArray<uint32_t, 1>(pixels, h, w, scalar(&AovPixel::samples));
+  d["nearest_distance2"] =
+      sumsArray<float, 1>(pixels, h, w, scalar(&AovPixel::nearestDistance2));
+  d["nearest_material"] =
+      sumsArray<int32_t, 1>(pixels, h, w, scalar(&AovPixel::nearestMaterial));
+  return d;
+}
+
+// The inverse of sumsToDict, checked against the image size.
+std::vector<AovPixel> sumsFromDict(const nb::dict& d, size_t h, size_t w) {
+  const auto field = [&](const char* name, auto type, size_t channels) {
+    using T = decltype(type);
+    if (!d.contains(name)) throw std::invalid_argument(std::string("pass sums lack ") + name);
+    const auto a = nb::cast<nb::ndarray<const T, nb::c_contig, nb::device::cpu>>(d[name]);
+    if (a.size() != h * w * channels)
+      throw std::invalid_argument(std::string("pass sums: ") + name + " has " +
+                                  std::to_string(a.size()) + " values, expected " +
+                                  std::to_string(h * w * channels));
+    return a.data();
+  };
+  const float* position = field("position_sum", float(), 3);
+  const float* normal = field("normal_sum", float(), 3);
+  const float* albedo = field("albedo_sum", float(), 3);
+  const float* distance = field("distance_sum", float(), 1);
+  const float* flow = field("flow_sum", float(), 2);
+  const uint32_t* flowSamples = field("flow_samples", uint32_t(), 1);
+  const uint32_t* hits = field("hits", uint32_t(), 1);
+  const uint32_t* samples = field("samples", uint32_t(), 1);
+  const float* nearest = field("nearest_distance2", float(), 1);
+  const int32_t* material = field("nearest_material", int32_t(), 1);
+  std::vector<AovPixel> pixels(h * w);
+  for (size_t i = 0; i < pixels.size(); ++i) {
+    AovPixel& p = pixels[i];
+    p.positionSum = Vec3(position[3 * i], position[3 * i + 1], position[3 * i + 2]);
+    p.normalSum = Vec3(normal[3 * i], normal[3 * i + 1], normal[3 * i + 2]);
+    p.albedoSum = Vec3(albedo[3 * i], albedo[3 * i + 1], albedo[3 * i + 2]);
+    p.distanceSum = distance[i];
+    p.flowSum = Vec2(flow[2 * i], flow[2 * i + 1]);
+    p.flowSamples = flowSamples[i];
+    p.hits = hits[i];
+    p.samples = samples[i];
+    p.nearestDistance2 = nearest[i];
+    p.nearestMaterial = material[i];
+  }
+  return pixels;
+}
+
+// passSums: the passes as their per-pixel sums ({"image", "sums"}), for a caller that adds those
+// of several sample ranges and then calls passesFromSums; else as layers.
 nb::object render(const Scene& scene, std::optional<uint32_t> spp, std::optional<uint64_t> seed,
                   const std::string& backend, std::optional<std::tuple<uint32_t, uint32_t>> range,
-                  int threads, std::optional<std::vector<std::string>> aovNames) {
+                  int threads, std::optional<std::vector<std::string>> aovNames, bool passSums) {
+  if (passSums && !aovNames) aovNames.emplace();
   const std::vector<Aov> aovs = aovNames ? aovsFromNames(*aovNames) : std::vector<Aov>();
   SceneDesc desc = scene.still();
   if (spp) {
@@ -134,11 +218,35 @@ nb::object render(const Scene& scene, std::optional<uint32_t> spp, std::optional
     options.cancel = &cancel;
     cache.renderer->setScene(data, change);
     result = cache.renderer->render(options);
-    if (!result.cancelled && aovNames) layers = makeAovLayers(data, aovs, result.aovs);
+    if (!result.cancelled && aovNames && !passSums)
+      layers = makeAovLayers(data, aovs, result.aovs);
   });
   if (!aovNames) return nb::cast(toArray(std::move(result.image)));
   nb::dict out;
+  const size_t h = result.image.height, w = result.image.width;
   out["image"] = toArray(std::move(result.image));
+  if (passSums) {
+    if (result.aovs.size() == h * w) out["sums"] = sumsToDict(result.aovs, h, w);
+    return out;
+  }
+  for (ImageLayer& layer : layers) {
+    const std::string name = layer.name;
+    out[name.c_str()] = layerToArray(std::move(layer));
+  }
+  return out;
+}
+
+// The layers of passes `aovNames` from per-pixel sums (sumsToDict's, possibly added over sample
+// ranges) of a render of this scene.
+nb::dict passesFromSums(const Scene& scene, const nb::dict& sums,
+                        const std::vector<std::string>& aovNames) {
+  const std::vector<Aov> aovs = aovsFromNames(aovNames);
+  SceneDesc desc = scene.still();
+  desc.ownBvh = OwnBvh::None;
+  const SceneData data = flattenSceneContents(desc);  // the camera and instances are all it needs
+  std::vector<ImageLayer> layers =
+      makeAovLayers(data, aovs, sumsFromDict(sums, desc.camera.height, desc.camera.width));
+  nb::dict out;
   for (ImageLayer& layer : layers) {
     const std::string name = layer.name;
     out[name.c_str()] = layerToArray(std::move(layer));
@@ -207,8 +315,12 @@ NB_MODULE(_candela, m) {
         return Scene{s.desc, i, s.cache};
       }, "index"_a)
       .def("render", &render, "spp"_a = nb::none(), "seed"_a = nb::none(), "backend"_a = "auto",
-           "sample_range"_a = nb::none(), "threads"_a = 0, "aovs"_a = nb::none());
+           "sample_range"_a = nb::none(), "threads"_a = 0, "aovs"_a = nb::none(),
+           "pass_sums"_a = false)
+      .def("passes_from_sums", &passesFromSums, "sums"_a, "aovs"_a);
 
+  m.def("check_aovs", [](const std::vector<std::string>& names) { aovsFromNames(names); },
+        "names"_a);
   m.def("write_image", &writeImageArray, "path"_a, "img"_a, "srgb"_a, "gamma"_a, "exposure"_a);
   m.def("cuda_available", [] {
     std::string reason;
