@@ -103,6 +103,12 @@ class Scene:
         srgb, gamma, exposure = self._core.output
         return {"gamma": "srgb" if srgb else gamma, "exposure": exposure}
 
+    @property
+    def instances(self) -> Dict[int, str]:
+        """What the numbers of the "instance" pass name: {number: the entity's JSON `id`, else its
+        place in the file, e.g. "spheres[2]"}; 0, the background, is not in it."""
+        return dict(self._core.instances)
+
     def render(self, spp: Optional[int] = None, seed: Optional[int] = None,
                backend: str = "auto", sample_range: Optional[Tuple[int, int]] = None,
                threads: int = 0, aovs: Optional[Sequence[str]] = None, denoise: bool = False

@@ -337,6 +337,17 @@ void addContents(SceneData& s, const SceneDesc& desc, bool geometry, bool textur
 
 }  // namespace
 
+std::vector<std::string> instanceNames(const SceneDesc& desc) {
+  std::vector<std::string> names;
+  const auto add = [&names](const std::string& id, const char* list, size_t i) {
+    names.push_back(!id.empty() ? id : std::string(list) + "[" + std::to_string(i) + "]");
+  };
+  for (size_t i = 0; i < desc.spheres.size(); ++i) add(desc.spheres[i].id, "spheres", i);
+  for (size_t i = 0; i < desc.objects.size(); ++i) add(desc.objects[i].id, "objects", i);
+  for (size_t i = 0; i < desc.lights.size(); ++i) add(desc.lights[i].id, "lights", i);
+  return names;
+}
+
 void refreshSceneValues(SceneData& s, const SceneDesc& desc) {
   PreviousLights previous;
   previous.lights = std::move(s.lights);

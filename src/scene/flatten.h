@@ -5,6 +5,7 @@
 // emissive sphere and triangle becomes a light that its primitive names.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "render/scene_data.h"
@@ -40,6 +41,11 @@ struct PreviousLights {
 // the lights are the same shapes with the same ones powered: a dimming lamp or a moving point
 // light costs a linear pass, not a build.
 void addEmitterLights(SceneData& scene, const PreviousLights* previous = nullptr);
+
+// The name of each instance number of the instance pass (addContents numbers them: spheres,
+// objects, then lights, from 1): element n - 1 names number n, by its JSON `id`, else by its
+// place in the file ("spheres[2]").
+std::vector<std::string> instanceNames(const SceneDesc& desc);
 
 // Replaces the camera, settings, environment, materials, lights and spheres of `scene` (which
 // flattenScene made from a description with the same geometry as `desc`) by those of `desc`,

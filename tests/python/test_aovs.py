@@ -3,7 +3,7 @@ import numpy as np
 import pytest
 
 import candela
-from conftest import animated_scene
+from conftest import animated_scene, tiny_scene
 
 # A grey unit sphere 5 before the camera; the centre pixel of the 15x15 image is on its axis.
 SCENE = {
@@ -81,3 +81,11 @@ def test_pass_sums_of_sample_ranges_merge_into_the_passes_of_one_render():
     with pytest.raises(ValueError, match="nearest_material"):
         del parts[0]["sums"]["nearest_material"]
         scene._core.passes_from_sums(parts[0]["sums"], ["instance"])
+
+
+def test_instances_name_the_numbers_of_the_instance_pass():
+    scene = candela.Scene.from_dict(tiny_scene())  # ground sphere, "ball", one point light
+    assert scene.instances == {1: "spheres[0]", 2: "ball", 3: "lights[0]"}
+    ids = scene.render(spp=2, backend="cpu", aovs=["instance"])["instance"]
+    assert set(np.unique(ids)) == {0, 1, 2}  # the background, the ground and the ball
+    assert ids[7, 8] == 2  # beside the image's centre, on the ball

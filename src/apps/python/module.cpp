@@ -301,6 +301,12 @@ NB_MODULE(_candela, m) {
         const OutputDesc& o = s.desc->output;
         return std::make_tuple(o.curve == GammaCurve::Srgb, o.gamma, o.exposure);
       })
+      .def_prop_ro("instances", [](const Scene& s) {
+        nb::dict names;
+        const std::vector<std::string> list = instanceNames(s.still());
+        for (size_t i = 0; i < list.size(); ++i) names[nb::int_(i + 1)] = list[i];
+        return names;
+      })
       .def_prop_ro("_last_change", [](const Scene& s) -> std::optional<std::string> {
         // What the last render of this scene (or of any of its frames) did with the flattened
         // scene: "values" (reused), "motion" (refitted) or "structure" (built); None before any.
