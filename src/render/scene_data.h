@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "image/image.h"
@@ -27,6 +28,9 @@ struct SceneData {
   bool sampleEveryLight = false;
   float environmentShare = 0.0f;
   Environment environment;
+  // The shapes and bounds of the lights the light tree was built over (host only): a frame with
+  // the same key keeps the tree (scene/flatten.cpp).
+  std::string lightTreeKey;
   // The map the env* arrays were made from: a frame that keeps it keeps them (host only).
   std::shared_ptr<const ImageRGB> environmentMap;
   // The mean linear colour of each emission texture (host only; 1 for the others): what a

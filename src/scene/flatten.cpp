@@ -177,27 +177,39 @@ LightBounds lightBounds(const SceneData& s, const Light& l) {
 
 bool emits(const Material& m) { return m.type == MaterialType::Emissive && !isBlack(m.radiance); }
 
-// The previous frame's light tree refitted to `bounds`, into s.lightTree, when its lights are the
-// same shapes with the same lights powered (a light that gains or loses its power changes the
-// tree's leaves); else false.
-bool refitLights(SceneData& s, const PreviousLights& previous,
-                 const std::vector<LightBounds>& bounds) {
-  if (previous.lights.size() != s.lights.size() || previous.tree.empty()) return false;
-  for (size_t i = 0; i < s.lights.size(); ++i) {
-    const Light &now = s.lights[i], &then = previous.lights[i];
-    if (now.type != then.type || now.shape != then.shape ||
-        (bounds[i].power > 0.0) != (then.trail != kNotInLightTree))
-      return false;
+// The lights' shapes and bounds as bytes: equal keys give equal trees, the build being a
+// function of them alone.
+std::string lightTreeKey(const std::vector<Light>& lights, const std::vector<LightBounds>& bounds) {
+  std::string key;
+  const auto add = [&key](const auto& value) {
+    key.append(reinterpret_cast<const char*>(&value), sizeof(value));
+  };
+  for (size_t i = 0; i < lights.size(); ++i) {
+    add(lights[i].type);
+    add(lights[i].shape);
+    add(bounds[i].lo);
+    add(bounds[i].hi);
+    add(bounds[i].axis);
+    add(bounds[i].cosThetaO);
+    add(bounds[i].power);
   }
-  s.lightTree = previous.tree;
-  if (!refitLightTree(s.lightTree, bounds)) return false;
-  for (size_t i = 0; i < s.lights.size(); ++i) s.lights[i].trail = previous.lights[i].trail;
-  return true;
+  return key;
 }
 
 }  // namespace
 
-void addEmitterLights(SceneData& s, const PreviousLights* previous) {
+PreviousLights takeLights(SceneData& s) {
+  PreviousLights previous;
+  previous.lights = std::move(s.lights);
+  previous.tree = std::move(s.lightTree);
+  previous.key = std::move(s.lightTreeKey);
+  s.lights.clear();
+  s.lightTree.clear();
+  s.lightTreeKey.clear();
+  return previous;
+}
+
+void addEmitterLights(SceneData& s, PreviousLights* previous) {
   for (uint32_t i = 0; i < s.spheres.size(); ++i) {
     Sphere& sphere = s.spheres[i];
     if (sphere.light >= 0 || !emits(s.materials[sphere.material])) continue;
@@ -228,6 +240,7 @@ void addEmitterLights(SceneData& s, const PreviousLights* previous) {
   }
   s.sampleEveryLight = sampleEveryLight(s.lights.data(), s.lights.size());
   s.lightTree.clear();
+  s.lightTreeKey.clear();
   s.environmentShare = 0.0f;
   if (s.sampleEveryLight) return;
   // The environment takes half the picks beside other lights (as pbrt-v4's BVHLightSampler
@@ -235,7 +248,11 @@ void addEmitterLights(SceneData& s, const PreviousLights* previous) {
   // scene's size, and a ground sphere of radius 1000 once made it a million times a lamp's.
   std::vector<LightBounds> bounds;
   for (const Light& l : s.lights) bounds.push_back(lightBounds(s, l));
-  if (!previous || !refitLights(s, *previous, bounds)) {
+  s.lightTreeKey = lightTreeKey(s.lights, bounds);
+  if (previous && previous->key == s.lightTreeKey) {
+    s.lightTree = std::move(previous->tree);
+    for (size_t i = 0; i < s.lights.size(); ++i) s.lights[i].trail = previous->lights[i].trail;
+  } else {
     std::vector<uint64_t> trails;
     s.lightTree = buildLightTree(bounds, &trails);
     for (size_t i = 0; i < s.lights.size(); ++i) s.lights[i].trail = trails[i];
@@ -349,9 +366,7 @@ std::vector<std::string> instanceNames(const SceneDesc& desc) {
 }
 
 void refreshSceneValues(SceneData& s, const SceneDesc& desc) {
-  PreviousLights previous;
-  previous.lights = std::move(s.lights);
-  previous.tree = std::move(s.lightTree);
+  PreviousLights previous = takeLights(s);
   s.materials.clear();
   s.materialInstances.clear();
   s.spheres.clear();

@@ -28,19 +28,23 @@ SceneData flattenScene(SceneDesc&& desc);
 // are moved over rather than made again.
 SceneData flattenSceneContents(const SceneDesc& desc, SceneData* previous = nullptr);
 
-// A frame's lights and light tree, kept for the next frame of the same geometry.
+// A frame's lights and light tree, kept for the next frame: when its lights have the same
+// shapes, bounds and powers, it takes the tree rather than building the same one again.
 struct PreviousLights {
   std::vector<Light> lights;
   std::vector<LightTreeNode> tree;
+  std::string key;  // SceneData::lightTreeKey
 };
+
+// Moves the lights and light tree out of `scene`.
+PreviousLights takeLights(SceneData& scene);
 
 // Appends a light for every emissive sphere that is not yet one, for the environment unless it
 // is black, and for every emissive triangle (last, in triangle order, as lightOfPrimitive
 // expects), and sets the light selection. Triangles must be in their final order. With
-// `previous` (the last frame's, same geometry) the light tree is refitted rather than built when
-// the lights are the same shapes with the same ones powered: a dimming lamp or a moving point
-// light costs a linear pass, not a build.
-void addEmitterLights(SceneData& scene, const PreviousLights* previous = nullptr);
+// `previous` (the last frame's) the light tree is taken from it when the lights are the same
+// (a moving camera), else built: a frame's tree never depends on the frames before it.
+void addEmitterLights(SceneData& scene, PreviousLights* previous = nullptr);
 
 // The name of each instance number of the instance pass (addContents numbers them: spheres,
 // objects, then lights, from 1): element n - 1 names number n, by its JSON `id`, else by its

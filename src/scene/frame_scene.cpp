@@ -92,10 +92,11 @@ const SceneData& FrameScene::prepare(const SceneDesc& desc, const FlowMotion* fl
     change_ = SceneChange::Values;
   } else {
     bool refitted = false;
+    PreviousLights previous = takeLights(data_);  // its tree serves if the lights did not move
     if (!structureKey_.empty() && structure == structureKey_ && desc.ownBvh == OwnBvh::None) {
       // No own BVH to refit (Embree refits its own): the same triangles, moved.
       data_ = flattenSceneContents(desc, &data_);
-      addEmitterLights(data_);
+      addEmitterLights(data_, &previous);
       refitted = true;
     } else if (!structureKey_.empty() && structure == structureKey_ && !data_.nodes.empty()) {
       SceneData moved = flattenSceneContents(desc, &data_);
@@ -107,7 +108,7 @@ const SceneData& FrameScene::prepare(const SceneDesc& desc, const FlowMotion* fl
       refitBvh(moved.nodes, moved.primIndices, moved.spheres.data(), uint32_t(moved.spheres.size()),
                moved.positions.data(), moved.triangles.data());
       refitted = bvhSahCost(moved.nodes) <= kRefitCostLimit * builtCost_;
-      if (refitted) addEmitterLights(moved);  // else flattenScene below makes the lights
+      if (refitted) addEmitterLights(moved, &previous);  // else flattenScene below makes them
       data_ = std::move(moved);
     }
     if (!refitted) {

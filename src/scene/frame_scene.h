@@ -4,9 +4,10 @@
 // frame's (every sphere's centre and radius, every sphere light's centre and radius, every
 // object's mesh, transform and smoothing, and the structure of the materials), the previous
 // SceneData is kept, with its world-space meshes and its BVH, and only the camera, settings,
-// environment, materials and lights are replaced (the light tree refitted, not built): a moving
-// camera or a dimming light costs a pass over the lights. When only transforms changed (objects, spheres or sphere lights moved, turned,
-// scaled or resized, with the same meshes), the vertices are transformed again and the BVH is
+// environment, materials and lights are replaced: a moving camera or a dimming light costs
+// little (the light tree is kept while the lights' bounds and powers are, else built). When only
+// transforms changed (objects, spheres or sphere lights moved, turned, scaled or resized, with
+// the same meshes), the vertices are transformed again and the BVH is
 // refitted in linear time, unless refitting has made the tree's SAH cost grow past
 // kRefitCostLimit times that of its last build: then, as for any other change, the frame is
 // flattened afresh with a new BVH. Textures enter the keys by their content hashes: a frame with

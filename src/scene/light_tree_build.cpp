@@ -271,37 +271,7 @@ class Builder {
   std::vector<LightTreeNode> nodes_;
 };
 
-// The cluster of node `index` of a tree over `lights`, its slots rewritten bottom-up; false when
-// one of its lights has no power (a refit cannot drop it from the tree).
-bool refitNode(std::vector<LightTreeNode>& nodes, uint32_t index,
-               const std::vector<LightBounds>& lights, Cluster* cluster) {
-  LightTreeNode& node = nodes[index];
-  int groups = 0;  // slots fill from the first; an unused slot's child is 0, never a child node
-  while (groups < kLightTreeWidth && node.child[groups] != 0) ++groups;
-  Cluster whole;
-  for (int k = 0; k < groups; ++k) {
-    Cluster c;
-    const uint32_t child = node.child[k];
-    if (child & kLightTreeLeaf) {
-      c = clusterOf(lights[child & ~kLightTreeLeaf]);
-      if (!(c.power > 0.0)) return false;
-    } else if (!refitNode(nodes, child, lights, &c)) {
-      return false;
-    }
-    writeSlot(c, k, &node);
-    whole = unite(whole, c);
-  }
-  markByPower(groups, &node);
-  *cluster = whole;
-  return true;
-}
-
 }  // namespace
-
-bool refitLightTree(std::vector<LightTreeNode>& nodes, const std::vector<LightBounds>& lights) {
-  Cluster root;
-  return nodes.empty() || refitNode(nodes, 0, lights, &root);
-}
 
 std::vector<LightTreeNode> buildLightTree(const std::vector<LightBounds>& lights,
                                           std::vector<uint64_t>* trails) {

@@ -25,11 +25,4 @@ struct LightBounds {
 std::vector<LightTreeNode> buildLightTree(const std::vector<LightBounds>& lights,
                                           std::vector<uint64_t>* trails);
 
-// Rewrites the boxes, cones and powers of `nodes`, a tree that buildLightTree made over lights
-// of the same shapes in the same order, for their bounds now, keeping its shape and so every
-// light's trail: linear time, where a build sorts and weighs splits. The tree stays exact (its
-// pmfs are those the pick uses), only its splits may fit the new bounds less well. False, with
-// `nodes` left partly rewritten, when a light of the tree now has no power (build instead).
-bool refitLightTree(std::vector<LightTreeNode>& nodes, const std::vector<LightBounds>& lights);
-
 }  // namespace candela
