@@ -375,9 +375,8 @@ TEST(FrameScene, ObjectTransformChangeRefitsAndMeshChangeRebuilds) {
   EXPECT_EQ(frames.change(), SceneChange::Structure);
 }
 
-// Frames that change only values or move primitives keep the texture pool and the environment's
-// arrays (the GPU backend then uploads them once: render/scene_change.h), and a frame with
-// another texture or map is a new structure.
+// Frames that change only values or move primitives keep the texture pool (the GPU backend then
+// uploads it once: render/scene_change.h), and a frame with another texture is a new structure.
 TEST(FrameScene, TexturePoolStaysUntilTheTexturesChange) {
   const auto texture = [](uint8_t value) {
     auto t = std::make_shared<TextureDesc>();
@@ -426,20 +425,6 @@ TEST(FrameScene, TexturePoolStaysUntilTheTexturesChange) {
   expectSameScene(frames.prepare(scene), flattenScene(scene));
   EXPECT_EQ(frames.change(), SceneChange::Structure);
   EXPECT_EQ(frames.prepare(scene).texels8[0], 200);
-  // The environment's arrays are Structure arrays (a GPU uploads them once): a new map, even
-  // of the same size, makes a new structure, as does dropping it; its strength does not.
-  scene.environment.strength = 2;
-  frames.prepare(scene);
-  EXPECT_EQ(frames.change(), SceneChange::Values);
-  auto other = std::make_shared<ImageRGB>(4, 2);
-  other->set(2, 1, Vec3(1, 2, 3));
-  scene.environment.image = other;
-  expectSameScene(frames.prepare(scene), flattenScene(scene));
-  EXPECT_EQ(frames.change(), SceneChange::Structure);
-  scene.environment.image.reset();
-  scene.environment.color = Vec3(0.5f);
-  expectSameScene(frames.prepare(scene), flattenScene(scene));
-  EXPECT_EQ(frames.change(), SceneChange::Structure);
 }
 
 // Two grids of triangles far apart, then moved into each other: refitting would leave boxes that

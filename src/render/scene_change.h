@@ -7,10 +7,9 @@
 namespace candela {
 
 enum class SceneChange : uint8_t {
-  Values = 0,     // camera, settings, materials, lights, the environment's strength, tint and
-                  // rotation; geometry and environment map identical
+  Values = 0,     // camera, settings, environment, materials, lights; geometry identical
   Motion = 1,     // also spheres, vertices, normals and BVH boxes: primitives moved (a refit)
-  Structure = 2,  // everything: triangles, the BVH's layout, textures and the environment map
+  Structure = 2,  // everything: triangles and the BVH's layout too (a rebuild, or a new scene)
 };
 
 // "values", "motion" or "structure".

@@ -24,18 +24,17 @@ namespace candela {
 // empty when every light is sampled or none but the environment has power). envTexels is the
 // environment map (width x height, rows from the top; empty for a constant
 // environment) and envConditionalCdf/envMarginalCdf with their guide tables its sampling
-// distribution (core/distribution2d.h): they change with the map alone, which is part of a
-// frame's structure (scene/frame_scene.h). materialMotions, parallel to materials, is the motion
-// of each material's instance to the next frame; only renders with the flow pass have it.
-#define CANDELA_SHADING_ARRAYS(X)                                       \
-  X(Material, materials, materialCount, Values)                         \
-  X(Light, lights, lightCount, Values)                                  \
-  X(LightTreeNode, lightTree, lightTreeNodeCount, Values)               \
-  X(Vec3, envTexels, envTexelCount, Structure)                          \
-  X(float, envConditionalCdf, envConditionalCdfCount, Structure)        \
-  X(float, envMarginalCdf, envMarginalCdfCount, Structure)              \
-  X(uint32_t, envConditionalGuide, envConditionalGuideCount, Structure) \
-  X(uint32_t, envMarginalGuide, envMarginalGuideCount, Structure)       \
+// distribution (core/distribution2d.h). materialMotions, parallel to materials, is the motion of
+// each material's instance to the next frame; only renders with the flow pass have it.
+#define CANDELA_SHADING_ARRAYS(X)                             \
+  X(Material, materials, materialCount, Values)               \
+  X(Light, lights, lightCount, Values)                        \
+  X(LightTreeNode, lightTree, lightTreeNodeCount, Values)     \
+  X(Vec3, envTexels, envTexelCount, Values)                   \
+  X(float, envConditionalCdf, envConditionalCdfCount, Values) \
+  X(float, envMarginalCdf, envMarginalCdfCount, Values)           \
+  X(uint32_t, envConditionalGuide, envConditionalGuideCount, Values) \
+  X(uint32_t, envMarginalGuide, envMarginalGuideCount, Values)    \
   X(InstanceMotion, materialMotions, materialMotionCount, Values)
 
 // Every array of the kernel's scene: SceneData, SceneData::view and the CUDA upload expand
@@ -73,9 +72,9 @@ CANDELA_HDI_ALWAYS Vec3 environmentRadiance(const SceneView& scene, const Vec3& 
 
 // The environment map's sampling distribution.
 CANDELA_HDI Distribution2D environmentDistribution(const SceneView& scene) {
-  return {scene.envConditionalCdf,         scene.envMarginalCdf,
-          scene.envConditionalGuide,       scene.envMarginalGuide,
-          scene.environment.sampleColumns, scene.environment.sampleRows};
+  return {scene.envConditionalCdf, scene.envMarginalCdf, scene.envConditionalGuide,
+          scene.envMarginalGuide, scene.environment.sampleColumns,
+          scene.environment.sampleRows};
 }
 
 }  // namespace candela

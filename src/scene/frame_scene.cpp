@@ -73,9 +73,6 @@ std::string sceneKey(const SceneDesc& desc, bool withTransforms) {
   }
   key.add(desc.textures.size());
   for (const std::shared_ptr<const TextureDesc>& t : desc.textures) key.add(t->contentHash);
-  // The environment map by identity, as flattenEnvironment reuses its arrays: frames share the
-  // loaded map, and the last frame's scene holds its map, so no other map can take its address.
-  key.add(reinterpret_cast<uintptr_t>(desc.environment.image.get()));
   return key.take();
 }
 
@@ -105,8 +102,8 @@ const SceneData& FrameScene::prepare(const SceneDesc& desc, const FlowMotion* fl
       // The same triangles (the structure is unchanged), in the leaf order of the kept tree.
       moved.triangles = std::move(data_.triangles);
       moved.bvh = data_.bvh;
-      refitBvh(moved.nodes, moved.primIndices, moved.spheres.data(), uint32_t(moved.spheres.size()),
-               moved.positions.data(), moved.triangles.data());
+      refitBvh(moved.nodes, moved.primIndices, moved.spheres.data(),
+               uint32_t(moved.spheres.size()), moved.positions.data(), moved.triangles.data());
       refitted = bvhSahCost(moved.nodes) <= kRefitCostLimit * builtCost_;
       if (refitted) addEmitterLights(moved, &previous);  // else flattenScene below makes them
       data_ = std::move(moved);
