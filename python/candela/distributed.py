@@ -175,15 +175,17 @@ def render_image(scene: Union[Scene, str], spp: Optional[int] = None, chunks: in
     slices = split_samples(spp, chunks)
     refs = [task.remote(scene.spec, spp, seed, first, count, backend, threads, passes)
             for first, count in slices]
-    parts = [ray.get(ref) for ref in refs]
-    images = parts if passes is None else [p["image"] for p in parts]
     total = np.zeros((scene.height, scene.width, 3), dtype=np.float64)
-    for (first, count), image in zip(slices, images):
+    sums = None
+    for (first, count), ref in zip(slices, refs):  # in range order, one part held at a time
+        part = ray.get(ref)
+        image = part if passes is None else part["image"]
         total += image.astype(np.float64) * count
+        if passes is not None:
+            sums = part["sums"] if sums is None else merge_pass_sums([sums, part["sums"]])
     image = (total / spp).astype(np.float32)
     if passes is None:
         return image
     result = {"image": image}
-    result.update(scene._core.passes_from_sums(merge_pass_sums([p["sums"] for p in parts]),
-                                               passes))
+    result.update(scene._core.passes_from_sums(sums, passes))
     return _denoised(result, names) if denoise else result

@@ -92,6 +92,14 @@ nb::object layerToArray(ImageLayer&& layer) {
   return nb::cast(nb::ndarray<nb::numpy, float>(values->data(), {h, w, n}, owner));
 }
 
+// Each layer into *out, under its pass's name.
+void addLayers(std::vector<ImageLayer>&& layers, nb::dict* out) {
+  for (ImageLayer& layer : layers) {
+    const std::string name = layer.name;
+    (*out)[name.c_str()] = layerToArray(std::move(layer));
+  }
+}
+
 // A pass's per-pixel sums (render/aov.h) as arrays, one per field of AovPixel, named as in
 // python/candela/distributed.py, which adds those of several sample ranges.
 template <typename T, int kChannels, typename Field>
@@ -138,7 +146,11 @@ std::vector<AovPixel> sumsFromDict(const nb::dict& d, size_t h, size_t w) {
   const auto field = [&](const char* name, auto type, size_t channels) {
     using T = decltype(type);
     if (!d.contains(name)) throw std::invalid_argument(std::string("pass sums lack ") + name);
-    const auto a = nb::cast<nb::ndarray<const T, nb::c_contig, nb::device::cpu>>(d[name]);
+    // Without conversion: a converted copy would die with `a`, before its data is read.
+    nb::ndarray<const T, nb::c_contig, nb::device::cpu> a;
+    if (!nb::try_cast(d[name], a, false))
+      throw std::invalid_argument(std::string("pass sums: ") + name +
+                                  " must be a C-contiguous array of the dtype render gave it");
     if (a.size() != h * w * channels)
       throw std::invalid_argument(std::string("pass sums: ") + name + " has " +
                                   std::to_string(a.size()) + " values, expected " +
@@ -226,13 +238,11 @@ nb::object render(const Scene& scene, std::optional<uint32_t> spp, std::optional
   const size_t h = result.image.height, w = result.image.width;
   out["image"] = toArray(std::move(result.image));
   if (passSums) {
-    if (result.aovs.size() == h * w) out["sums"] = sumsToDict(result.aovs, h, w);
+    if (result.aovs.size() != h * w) throw std::runtime_error("the render returned no pass sums");
+    out["sums"] = sumsToDict(result.aovs, h, w);
     return out;
   }
-  for (ImageLayer& layer : layers) {
-    const std::string name = layer.name;
-    out[name.c_str()] = layerToArray(std::move(layer));
-  }
+  addLayers(std::move(layers), &out);
   return out;
 }
 
@@ -241,16 +251,19 @@ nb::object render(const Scene& scene, std::optional<uint32_t> spp, std::optional
 nb::dict passesFromSums(const Scene& scene, const nb::dict& sums,
                         const std::vector<std::string>& aovNames) {
   const std::vector<Aov> aovs = aovsFromNames(aovNames);
+  // The layers need the camera and the materials' instances alone: no vertices, no map.
   SceneDesc desc = scene.still();
   desc.ownBvh = OwnBvh::None;
-  const SceneData data = flattenSceneContents(desc);  // the camera and instances are all it needs
-  std::vector<ImageLayer> layers =
-      makeAovLayers(data, aovs, sumsFromDict(sums, desc.camera.height, desc.camera.width));
-  nb::dict out;
-  for (ImageLayer& layer : layers) {
-    const std::string name = layer.name;
-    out[name.c_str()] = layerToArray(std::move(layer));
+  for (ObjectDesc& object : desc.objects) {
+    const std::vector<Material> materials = std::move(object.mesh.materials);
+    object.mesh = MeshDesc();
+    object.mesh.materials = materials;
   }
+  desc.environment.image.reset();
+  const SceneData data = flattenSceneContents(desc);
+  nb::dict out;
+  addLayers(makeAovLayers(data, aovs, sumsFromDict(sums, desc.camera.height, desc.camera.width)),
+            &out);
   return out;
 }
 
