@@ -134,12 +134,6 @@ TEST(LightTree, EnvironmentTakesHalfThePicksBesideOtherLights) {
   EXPECT_EQ(pmf, 1.0f);
 }
 
-// Among random lights at random points: the pick's pmf is the one MIS recomputes from the
-// light's trail, bit for bit; picks follow the pmfs; no light that can send light to the point
-// has pmf 0 (the tree's bound errs only towards more), and most triangles that turn their backs
-// on the point have pmf 0. A pick may end at a node whose clusters all turn out unable to reach
-// the point (their bounds are tighter than their parent's): it then finds no light, which only
-// the pmfs' sum below 1 accounts for.
 // Checks, at `trials` random points, the properties that PicksFollowTheirPmf... below names;
 // adds to *behind the triangles seen that cannot reach the point, to *behindWithoutPmf those of
 // them with pmf 0.

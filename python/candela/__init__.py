@@ -141,11 +141,9 @@ class Scene:
         if sample_range is not None:
             sample_range = (int(sample_range[0]), int(sample_range[1]))
         aovs = _pass_names(aovs)
-        if not denoise:
-            return self._core.render(spp, seed, backend, sample_range, threads, aovs)
         result = self._core.render(spp, seed, backend, sample_range, threads,
                                    _passes_to_render(aovs, denoise))
-        return _denoised(result, aovs)
+        return _denoised(result, aovs) if denoise else result
 
     def __repr__(self) -> str:
         frame = "" if self.frame_index is None else f", frame {self.frame_index}"

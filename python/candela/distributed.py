@@ -87,12 +87,17 @@ def merge_pass_sums(parts: Sequence[dict]) -> dict:
     nearest the pixel centre, the earliest of equals (so the one a single render keeps)."""
     merged = {k: np.array(v, copy=True) for k, v in parts[0].items()}
     for part in parts[1:]:
-        for k in _ADDED_SUMS:
-            merged[k] += part[k]
-        nearer = part["nearest_distance2"] < merged["nearest_distance2"]
-        for k in ("nearest_distance2", "nearest_material"):
-            merged[k] = np.where(nearer, part[k], merged[k])
+        _merge_into(merged, part)
     return merged
+
+
+def _merge_into(merged: dict, part: dict) -> None:
+    """merge_pass_sums of (merged, part), into `merged`'s arrays."""
+    for k in _ADDED_SUMS:
+        np.add(merged[k], part[k], out=merged[k])
+    nearer = part["nearest_distance2"] < merged["nearest_distance2"]
+    for k in ("nearest_distance2", "nearest_material"):
+        np.copyto(merged[k], part[k], where=nearer)
 
 
 def _as_scenes(scenes_or_animation) -> List[Scene]:
@@ -182,7 +187,10 @@ def render_image(scene: Union[Scene, str], spp: Optional[int] = None, chunks: in
         image = part if passes is None else part["image"]
         total += image.astype(np.float64) * count
         if passes is not None:
-            sums = part["sums"] if sums is None else merge_pass_sums([sums, part["sums"]])
+            if sums is None:
+                sums = merge_pass_sums([part["sums"]])  # a copy: Ray's arrays are read-only
+            else:
+                _merge_into(sums, part["sums"])
     image = (total / spp).astype(np.float32)
     if passes is None:
         return image

@@ -21,7 +21,7 @@ CANDELA_HDI int selectLight(const SceneView& scene, const Vec3& p, const Vec3& n
   if (scene.lightTreeNodeCount == 0) return -1;
   const float rest = 1.0f - environment;
   const int light =
-      pickTreeLight(scene.lightTree, p, n, minf((u - environment) / rest, 0.99999994f), pmf);
+      pickTreeLight(scene.lightTree, p, n, minf((u - environment) / rest, kOneMinusEpsilon), pmf);
   *pmf *= rest;
   return light;
 }

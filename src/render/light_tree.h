@@ -22,6 +22,7 @@
 #include <cstdint>
 
 #include "core/bits.h"
+#include "core/constants.h"
 #include "core/device.h"
 #include "core/vec3.h"
 
@@ -90,7 +91,7 @@ CANDELA_HDI_ALWAYS float lightClusterImportanceLane(const LightTreeNode& node, i
   const float cosI = -(n.x * vx + n.y * vy + n.z * vz);
   const float sinI = sqrtf(maxf(0.0f, d2 - cosI * cosI));
   const float cosPI = inside || cosI > cosB ? d2 : cosI * cosB + sinI * r;
-  const bool hemisphere = n.x != 0.0f || n.y != 0.0f || n.z != 0.0f;
+  const bool hemisphere = !isBlack(n);
   const float horizon = hemisphere ? maxf(cosPI * invD2, 0.0f) : 1.0f;
   return (node.power[k] * invReach) * (facing * horizon);
 }
@@ -137,7 +138,7 @@ CANDELA_HDI_ALWAYS __m128 lightClusterImportanceSse(const LightTreeNode& node, i
   const __m128 sinI = rootOfDifference(d2, mul(cosI, cosI));
   const __m128 cosPI =
       select(_mm_or_ps(inside, _mm_cmpgt_ps(cosI, cosB)), d2, add(mul(cosI, cosB), mul(sinI, r)));
-  const bool hemisphere = n.x != 0.0f || n.y != 0.0f || n.z != 0.0f;
+  const bool hemisphere = !isBlack(n);
   const __m128 horizon = hemisphere ? _mm_max_ps(mul(cosPI, invD2), zero) : one;
   return mul(mul(load(node.power), invReach), mul(facing, horizon));
 }
@@ -246,7 +247,7 @@ CANDELA_HDI int pickTreeLight(const LightTreeNode* nodes, const Vec3& p, const V
     }
     // u's place within the share, for the next level.
     const float start = k > 0 ? s.ends[k - 1] : 0.0f;
-    u = minf(maxf((target - start) / s.importance[k], 0.0f), 0.99999994f);
+    u = minf(maxf((target - start) / s.importance[k], 0.0f), kOneMinusEpsilon);
     node = child;
   }
 }

@@ -9,6 +9,7 @@
 #include "geometry/bvh_build.h"
 #include "scene/camera_resolve.h"
 #include "scene/flatten_environment.h"
+#include "scene/key_writer.h"
 #include "scene/light_tree_build.h"
 
 namespace candela {
@@ -180,31 +181,28 @@ bool emits(const Material& m) { return m.type == MaterialType::Emissive && !isBl
 // The lights' shapes and bounds as bytes: equal keys give equal trees, the build being a
 // function of them alone.
 std::string lightTreeKey(const std::vector<Light>& lights, const std::vector<LightBounds>& bounds) {
-  std::string key;
-  const auto add = [&key](const auto& value) {
-    key.append(reinterpret_cast<const char*>(&value), sizeof(value));
-  };
+  KeyWriter key;
   for (size_t i = 0; i < lights.size(); ++i) {
-    add(lights[i].type);
-    add(lights[i].shape);
-    add(bounds[i].lo);
-    add(bounds[i].hi);
-    add(bounds[i].axis);
-    add(bounds[i].cosThetaO);
-    add(bounds[i].power);
+    key.add(lights[i].type);
+    key.add(lights[i].shape);
+    key.add(bounds[i].lo);
+    key.add(bounds[i].hi);
+    key.add(bounds[i].axis);
+    key.add(bounds[i].cosThetaO);
+    key.add(bounds[i].power);
   }
-  return key;
+  return key.take();
 }
 
 }  // namespace
 
 PreviousLights takeLights(SceneData& s) {
   PreviousLights previous;
-  previous.lights = std::move(s.lights);
+  for (const Light& l : s.lights) previous.trails.push_back(l.trail);
   previous.tree = std::move(s.lightTree);
   previous.key = std::move(s.lightTreeKey);
   s.lights.clear();
-  s.lightTree.clear();
+  s.lightTree.clear();  // moved-from: left valid but unspecified by the standard
   s.lightTreeKey.clear();
   return previous;
 }
@@ -251,7 +249,7 @@ void addEmitterLights(SceneData& s, PreviousLights* previous) {
   s.lightTreeKey = lightTreeKey(s.lights, bounds);
   if (previous && previous->key == s.lightTreeKey) {
     s.lightTree = std::move(previous->tree);
-    for (size_t i = 0; i < s.lights.size(); ++i) s.lights[i].trail = previous->lights[i].trail;
+    for (size_t i = 0; i < s.lights.size(); ++i) s.lights[i].trail = previous->trails[i];
   } else {
     std::vector<uint64_t> trails;
     s.lightTree = buildLightTree(bounds, &trails);
@@ -370,7 +368,6 @@ void refreshSceneValues(SceneData& s, const SceneDesc& desc) {
   s.materials.clear();
   s.materialInstances.clear();
   s.spheres.clear();
-  s.lights.clear();
   s.alphaMasks.clear();
   s.textureMeans.clear();
   addContents(s, desc, false, false);  // the frame's textures are the last frame's (equal keys)

@@ -31,12 +31,12 @@ SceneData flattenSceneContents(const SceneDesc& desc, SceneData* previous = null
 // A frame's lights and light tree, kept for the next frame: when its lights have the same
 // shapes, bounds and powers, it takes the tree rather than building the same one again.
 struct PreviousLights {
-  std::vector<Light> lights;
+  std::vector<uint64_t> trails;  // of each light, in order
   std::vector<LightTreeNode> tree;
   std::string key;  // SceneData::lightTreeKey
 };
 
-// Moves the lights and light tree out of `scene`.
+// Moves the lights' trails and the light tree out of `scene`, leaving it without lights.
 PreviousLights takeLights(SceneData& scene);
 
 // Appends a light for every emissive sphere that is not yet one, for the environment unless it

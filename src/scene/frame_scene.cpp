@@ -4,28 +4,14 @@
 #include <chrono>
 #include <cstdint>
 #include <cstring>
-#include <type_traits>
 #include <vector>
 
 #include "geometry/bvh_refit.h"
 #include "scene/flatten.h"
+#include "scene/key_writer.h"
 
 namespace candela {
 namespace {
-
-class KeyWriter {
- public:
-  template <typename T>
-  void add(const T& value) {
-    static_assert(std::is_trivially_copyable<T>::value, "raw bytes only");
-    const char* bytes = reinterpret_cast<const char*>(&value);
-    key_.append(bytes, sizeof(T));
-  }
-  std::string take() { return std::move(key_); }
-
- private:
-  std::string key_;
-};
 
 // FNV-1a over a vector's bytes: equal meshes give equal hashes; a collision would need two
 // different meshes with the same counts in one animation.

@@ -61,11 +61,11 @@ def test_pass_sums_of_sample_ranges_merge_into_the_passes_of_one_render():
     # What candela.distributed.render_image does with its chunks, without Ray: frame 1 of an
     # animated scene (flow is defined), antialiased, so the edge pixels' ids depend on which
     # sample lies nearest the pixel centre.
-    from candela.distributed import merge_pass_sums, split_samples
+    from candela.distributed import _render_slice, merge_pass_sums, split_samples
 
     scene = candela.Scene.from_dict(animated_scene(frames=3, size=24)).frame(1)
     whole = scene.render(spp=10, backend="cpu", aovs=ALL_PASSES)
-    parts = [scene._core.render(10, None, "cpu", (first, count), 0, ALL_PASSES, True)
+    parts = [_render_slice(scene.spec, 10, None, first, count, "cpu", 0, ALL_PASSES)
              for first, count in split_samples(10, 3)]
     merged = scene._core.passes_from_sums(merge_pass_sums([p["sums"] for p in parts]),
                                           ALL_PASSES)

@@ -253,7 +253,6 @@ nb::dict passesFromSums(const Scene& scene, const nb::dict& sums,
   const std::vector<Aov> aovs = aovsFromNames(aovNames);
   // The layers need the camera and the materials' instances alone: no vertices, no map.
   SceneDesc desc = scene.still();
-  desc.ownBvh = OwnBvh::None;
   for (ObjectDesc& object : desc.objects) {
     const std::vector<Material> materials = std::move(object.mesh.materials);
     object.mesh = MeshDesc();
@@ -316,7 +315,7 @@ NB_MODULE(_candela, m) {
       })
       .def_prop_ro("instances", [](const Scene& s) {
         nb::dict names;
-        const std::vector<std::string> list = instanceNames(s.still());
+        const std::vector<std::string> list = instanceNames(*s.desc);  // the same in every frame
         for (size_t i = 0; i < list.size(); ++i) names[nb::int_(i + 1)] = list[i];
         return names;
       })
