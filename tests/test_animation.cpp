@@ -3,7 +3,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-
 #include <cstring>
 #include <functional>
 #include <memory>
@@ -12,10 +11,11 @@
 
 #include "geometry/bvh_traverse.h"
 #include "scene/animation.h"
+#include "scene/content_hash.h"
 #include "scene/flatten.h"
 #include "scene/frame_scene.h"
-#include "scene/scene_error.h"
 #include "scene/read/scene_loader.h"
+#include "scene/scene_error.h"
 
 namespace candela {
 namespace {
@@ -421,10 +421,56 @@ TEST(FrameScene, TexturePoolStaysUntilTheTexturesChange) {
   EXPECT_TRUE(sameBytes(moved.envTexels, movedFresh.envTexels));
   EXPECT_TRUE(sameBytes(moved.envConditionalCdf, movedFresh.envConditionalCdf));
   EXPECT_TRUE(sameBytes(moved.envMarginalGuide, movedFresh.envMarginalGuide));
+  // Other textures are a new structure: a new pool, but the same map keeps its arrays.
   scene.textures = {texture(200)};
-  expectSameScene(frames.prepare(scene), flattenScene(scene));
+  const SceneData& rebuilt = frames.prepare(scene);
   EXPECT_EQ(frames.change(), SceneChange::Structure);
-  EXPECT_EQ(frames.prepare(scene).texels8[0], 200);
+  SceneData rebuiltFresh = flattenScene(scene);
+  rebuiltFresh.envConditionalCdf[0] = -1.0f;
+  expectSameScene(rebuilt, rebuiltFresh);
+  EXPECT_EQ(rebuilt.texels8[0], 200);
+}
+
+// The frames of a sequence of scene files each read the map anew: equal texels keep the arrays,
+// other texels make them again.
+TEST(FrameScene, EnvironmentArraysStayWhileTheMapsTexelsDo) {
+  const auto map = [](float texel) {
+    auto image = std::make_shared<ImageRGB>(4, 2);
+    image->set(1, 0, Vec3(texel, 8, 7));
+    return image;
+  };
+  SceneDesc scene;
+  scene.environment.image = map(9);
+  scene.environment.mapHash = hashImage(*scene.environment.image);
+  FrameScene frames;
+  const_cast<float*>(frames.prepare(scene).envConditionalCdf.data())[0] = -1.0f;
+  scene.environment.image = map(9);  // another copy of the same map
+  scene.environment.mapHash = hashImage(*scene.environment.image);
+  scene.spheres.push_back(SphereDesc{});  // and a new structure
+  EXPECT_EQ(frames.prepare(scene).envConditionalCdf[0], -1.0f) << "the arrays were made again";
+  EXPECT_EQ(frames.change(), SceneChange::Structure);
+  scene.environment.image = map(5);
+  scene.environment.mapHash = 0;  // made in memory: flattening hashes it
+  expectSameScene(frames.prepare(scene), flattenScene(scene));
+  EXPECT_EQ(frames.change(), SceneChange::Values);
+}
+
+// What a resident scene (the GPU's) moves: the frame's change rewrites the arrays at or below it,
+// the keyed groups only their own keys do.
+TEST(SceneUpdate, KeyedGroupsAreRewrittenByTheirOwnChangesOnly) {
+  using R = RewrittenBy;
+  const SceneUpdate structure{SceneChange::Structure, false, false};
+  EXPECT_TRUE(mayRewrite(structure, R::Structure));
+  EXPECT_TRUE(mayRewrite(structure, R::Values));
+  EXPECT_FALSE(mayRewrite(structure, R::EnvironmentMap));
+  EXPECT_FALSE(mayRewrite(structure, R::LightTree));
+  const SceneUpdate values{SceneChange::Values, true, false};
+  EXPECT_TRUE(mayRewrite(values, R::Values));
+  EXPECT_FALSE(mayRewrite(values, R::Motion));
+  EXPECT_TRUE(mayRewrite(values, R::EnvironmentMap));
+  EXPECT_FALSE(mayRewrite(values, R::LightTree));
+  EXPECT_TRUE(mayRewrite(SceneUpdate{SceneChange::Motion, false, true}, R::LightTree));
+  EXPECT_TRUE(mayRewrite(SceneUpdate{}, R::EnvironmentMap));  // a first upload moves everything
 }
 
 // Two grids of triangles far apart, then moved into each other: refitting would leave boxes that
@@ -441,6 +487,9 @@ TEST(FrameScene, RefitUnlessTheTreeDegradesThenRebuild) {
     }
   grid.materials = {Material{}};
   SceneDesc scene;
+  auto map = std::make_shared<ImageRGB>(4, 2);
+  map->set(2, 1, Vec3(1, 2, 3));
+  scene.environment.image = map;
   for (float x : {-60.0f, 50.0f}) {
     ObjectDesc object;
     object.mesh = grid;
@@ -457,10 +506,14 @@ TEST(FrameScene, RefitUnlessTheTreeDegradesThenRebuild) {
   expectSameContents(nudged, flattenScene(scene));
   expectBvhFindsNearestHits(nudged);
 
+  // The refit is rejected and the scene flattened again, keeping the map's arrays (marked).
+  const_cast<float*>(nudged.envConditionalCdf.data())[0] = -1.0f;
   scene.objects[0].position = Vec3(0, 0, 0);
   scene.objects[1].position = Vec3(5, 0, -5);
   scene.objects[1].rotation = Vec3(0, 90, 0);
-  expectSameScene(frames.prepare(scene), flattenScene(scene));
+  SceneData fresh = flattenScene(scene);
+  fresh.envConditionalCdf[0] = -1.0f;
+  expectSameScene(frames.prepare(scene), fresh);
   EXPECT_EQ(frames.change(), SceneChange::Structure);
 }
 

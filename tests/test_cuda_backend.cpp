@@ -7,6 +7,8 @@
 #include <fstream>
 #include <memory>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "core/constants.h"
 #include "image/image_io.h"
@@ -82,29 +84,51 @@ TEST(CudaBackend, MatchesCpuWithinRounding) {
 // Every kind of light the CPU samples: emissive faces and spheres (found by bisection and by the
 // sphere's index), an importance-sampled environment map and the light tree of more than eight
 // lights, on the device against the CPU.
-TEST(CudaBackend, MatchesCpuWithAreaLightsAndAnEnvironmentMap) {
-  REQUIRE_GPU();
-  const std::string dir = ::testing::TempDir();
-  std::ofstream(dir + "cuda_lamp.obj") << "v -0.5 2 -1\nv 1 2 -1\nv 1 2 0.5\nv -0.5 2 0.5\nf 1 2 3 4\n";
-  ImageRGB sky(32, 16);
-  for (uint32_t y = 0; y < 16; ++y)
-    for (uint32_t x = 0; x < 32; ++x)
-      sky.set(x, y, x == 20 && y == 5 ? Vec3(200.0f) : Vec3(0.2f + 0.02f * x, 0.3f, 0.5f));
-  writeImage(dir + "cuda_sky.pfm", sky, OutputDesc{});
+// A scene with every kind of light the CPU samples: emissive faces and spheres (found by
+// bisection and by the sphere's index), an importance-sampled environment map (`map`, written by
+// writeSky) and the light tree of more than eight lights.
+std::string sceneWithAreaLights(const std::string& dir, const std::string& map,
+                                const std::string& cameraPosition,
+                                const std::string& lampRadiance) {
+  std::ofstream(dir + "cuda_lamp.obj")
+      << "v -0.5 2 -1\nv 1 2 -1\nv 1 2 0.5\nv -0.5 2 0.5\nf 1 2 3 4\n";
   std::string lights;
   for (int i = 0; i < 9; ++i)
     lights += std::string(i ? ", " : "") + R"({"position": [)" + std::to_string(i - 4) +
               R"(, 3, 2], "intensity": )" + std::to_string(50 + 10 * i) + "}";
-  const SceneData data = test::loadTestScene(R"({
-    "camera": {"width": 48, "height": 36, "fov": 50, "position": [0, 1.5, 6], "look_at": [0, 0.5, 0],
-               "spp": 16},
+  return R"({
+    "camera": {"width": 48, "height": 36, "fov": 50, "position": )" +
+         cameraPosition +
+         R"(, "look_at": [0, 0.5, 0], "spp": 16},
     "render": {"max_depth": 6, "seed": 3},
-    "environment": {"map": ")" + dir + R"(cuda_sky.pfm", "strength": 0.5, "rotation": [0, 30, 0]},
+    "environment": {"map": ")" +
+         dir + map + R"(", "strength": 0.5, "rotation": [0, 30, 0]},
     "spheres": [{"position": [0, -1000, 0], "radius": 1000, "color": 0.7},
                 {"position": [1.2, 0.5, 0], "radius": 0.5,
                  "material": {"type": "emissive", "radiance": [3, 2, 1]}}],
-    "objects": [{"file": ")" + dir + R"(cuda_lamp.obj", "material": {"type": "emissive", "radiance": 4}}],
-    "lights": [)" + lights + "]}");
+    "objects": [{"file": ")" +
+         dir + R"(cuda_lamp.obj",
+                 "material": {"type": "emissive", "radiance": )" +
+         lampRadiance + R"(}}],
+    "lights": [)" +
+         lights + "]}";
+}
+
+// A 32 x 16 sky with a sun of `sun` at texel (20, 5), as `file` in `dir`.
+void writeSky(const std::string& dir, const std::string& file, float sun) {
+  ImageRGB sky(32, 16);
+  for (uint32_t y = 0; y < 16; ++y)
+    for (uint32_t x = 0; x < 32; ++x)
+      sky.set(x, y, x == 20 && y == 5 ? Vec3(sun) : Vec3(0.2f + 0.02f * x, 0.3f, 0.5f));
+  writeImage(dir + file, sky, OutputDesc{});
+}
+
+TEST(CudaBackend, MatchesCpuWithAreaLightsAndAnEnvironmentMap) {
+  REQUIRE_GPU();
+  const std::string dir = ::testing::TempDir();
+  writeSky(dir, "cuda_sky.pfm", 200.0f);
+  const SceneData data =
+      test::loadTestScene(sceneWithAreaLights(dir, "cuda_sky.pfm", "[0, 1.5, 6]", "4"));
   ASSERT_GT(data.lights.size(), size_t(kSampleEveryLightUpTo));
   const RenderResult cpu = renderCpu(data.view(), RenderOptions{});
   const RenderResult gpu = renderCuda(data);
@@ -154,8 +178,25 @@ TEST(CudaBackend, SphereLightSeenDirectlyHasItsRadiance) {
   EXPECT_NEAR(r.image.at(8, 8).x, radiance, 1e-4 * radiance);
 }
 
-// A scene kept on the GPU across frames follows each kind of change FrameScene reports, moving
-// only what may differ, and renders exactly what a fresh upload of the same frame renders.
+// A scene kept on the GPU across `frames` follows each kind of change FrameScene reports (and
+// the keyed groups' own changes), moving only what may differ, and renders exactly what a fresh
+// upload of the same frame renders.
+void expectResidentSceneFollows(const std::vector<std::pair<std::string, SceneChange> >& frames) {
+  FrameScene frameScene;
+  CudaRenderer resident;
+  for (size_t f = 0; f < frames.size(); ++f) {
+    const SceneData& data = frameScene.prepare(parseSceneText(frames[f].first, "test.json", "."));
+    EXPECT_EQ(frameScene.change(), frames[f].second) << "frame " << f;
+    resident.setScene(data, frameScene.change());
+    const RenderResult kept = resident.render(RenderOptions{});
+    const RenderResult fresh = renderCuda(data);
+    for (uint32_t y = 0; y < fresh.image.height; ++y)
+      for (uint32_t x = 0; x < fresh.image.width; ++x)
+        for (int c = 0; c < 3; ++c)
+          ASSERT_EQ(kept.image.at(x, y)[c], fresh.image.at(x, y)[c]) << "frame " << f;
+  }
+}
+
 TEST(CudaBackend, ResidentSceneFollowsEveryKindOfFrameChange) {
   REQUIRE_GPU();
   const std::string base = sceneWithEverything(4);
@@ -164,26 +205,31 @@ TEST(CudaBackend, ResidentSceneFollowsEveryKindOfFrameChange) {
   sphereMoved.replace(sphereMoved.find("[-1.2, 0.5, 0]"), 14, "[-1.0, 0.7, 0.2]");
   sphereAdded.replace(sphereAdded.find(R"("spheres": [)"), 12,
                       R"("spheres": [{"position": [0, 2, 0], "radius": 0.3, "color": 0.5},)");
-  const struct {
-    const std::string* json;
-    SceneChange expected;
-  } frames[] = {{&base, SceneChange::Structure},
-                {&cameraMoved, SceneChange::Values},
-                {&sphereMoved, SceneChange::Motion},
-                {&sphereAdded, SceneChange::Structure},
-                {&base, SceneChange::Structure}};
-  FrameScene frameScene;
-  CudaRenderer resident;
-  for (const auto& frame : frames) {
-    const SceneData& data = frameScene.prepare(parseSceneText(*frame.json, "test.json", "."));
-    EXPECT_EQ(frameScene.change(), frame.expected);
-    resident.setScene(data, frameScene.change());
-    const RenderResult kept = resident.render(RenderOptions{});
-    const RenderResult fresh = renderCuda(data);
-    for (uint32_t y = 0; y < fresh.image.height; ++y)
-      for (uint32_t x = 0; x < fresh.image.width; ++x)
-        for (int c = 0; c < 3; ++c) ASSERT_EQ(kept.image.at(x, y)[c], fresh.image.at(x, y)[c]);
-  }
+  expectResidentSceneFollows({{base, SceneChange::Structure},
+                              {cameraMoved, SceneChange::Values},
+                              {sphereMoved, SceneChange::Motion},
+                              {sphereAdded, SceneChange::Structure},
+                              {base, SceneChange::Structure}});
+}
+
+// The environment map's arrays and the light tree stay on the device while their contents do,
+// whatever the frame's change, and are replaced when they change.
+TEST(CudaBackend, ResidentSceneKeepsTheMapAndTheLightTreeOnlyWhileTheyAreTheSame) {
+  REQUIRE_GPU();
+  const std::string dir = ::testing::TempDir();
+  writeSky(dir, "cuda_sky_a.pfm", 200.0f);
+  writeSky(dir, "cuda_sky_b.pfm", 200.0f);  // the same texels in another file
+  writeSky(dir, "cuda_sky_c.pfm", 50.0f);
+  const auto frame = [&](const char* map, const char* camera, const char* lamp) {
+    return sceneWithAreaLights(dir, map, camera, lamp);
+  };
+  expectResidentSceneFollows({
+      {frame("cuda_sky_a.pfm", "[0, 1.5, 6]", "4"), SceneChange::Structure},
+      {frame("cuda_sky_b.pfm", "[0.3, 1.4, 6]", "4"), SceneChange::Values},  // both kept
+      {frame("cuda_sky_c.pfm", "[0.3, 1.4, 6]", "4"), SceneChange::Values},  // a new map
+      {frame("cuda_sky_c.pfm", "[0.3, 1.4, 6]", "9"), SceneChange::Values},  // a new tree
+      {frame("cuda_sky_a.pfm", "[0, 1.5, 6]", "4"), SceneChange::Values},
+  });
 }
 
 #endif

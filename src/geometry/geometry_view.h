@@ -30,7 +30,7 @@ namespace candela {
 
 // Every geometry array, as X(Type, name, count, rewrittenBy): the one list that the views, the
 // owning SceneData and the CUDA upload expand, so an array is added in one place. rewrittenBy is
-// the least change of a frame that may rewrite the array (render/scene_change.h): Values for what
+// what may rewrite the array (RewrittenBy, render/scene_change.h): Values for what
 // any frame may change (the alpha masks follow the materials), Motion for what moving primitives
 // change (a refit), Structure for what only a rebuild changes. The texture pool is Structure: the
 // scene keys (scene/frame_scene.cpp) hold every texture's content hash, so a frame with other

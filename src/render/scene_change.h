@@ -18,9 +18,32 @@ constexpr const char* sceneChangeName(SceneChange change) {
                                        : (change == SceneChange::Motion ? "motion" : "structure");
 }
 
-// Whether an array that `rewrittenBy` changes may differ after `change`.
-constexpr bool mayRewrite(SceneChange change, SceneChange rewrittenBy) {
-  return uint8_t(change) >= uint8_t(rewrittenBy);
+// What rewrites an array of the kernel's scene (the last column of CANDELA_SCENE_ARRAYS). The
+// first three are the frame changes above, each of which rewrites what those below it do. The
+// other two are groups that change with their own content only, whatever the frame's change:
+// the environment map's arrays with the map (SceneData::environmentMapHash), the light tree
+// with the lights' shapes, bounds and powers (SceneData::lightTreeKey). A camera animation under
+// a large map, or among many emissive triangles, moves neither to the GPU again.
+enum class RewrittenBy : uint8_t { Values, Motion, Structure, EnvironmentMap, LightTree };
+
+// What a renderer holding the last scene must take of the next: the frame's change, and whether
+// each keyed group differs from the one it holds (true where it holds none).
+struct SceneUpdate {
+  SceneChange change = SceneChange::Structure;
+  bool environmentMap = true;
+  bool lightTree = true;
+};
+
+// Whether an array that `rewrittenBy` changes may differ after `update`.
+constexpr bool mayRewrite(const SceneUpdate& update, RewrittenBy rewrittenBy) {
+  switch (rewrittenBy) {
+    case RewrittenBy::EnvironmentMap:
+      return update.environmentMap;
+    case RewrittenBy::LightTree:
+      return update.lightTree;
+    default:
+      return uint8_t(update.change) >= uint8_t(rewrittenBy);
+  }
 }
 
 }  // namespace candela

@@ -4,11 +4,9 @@
 #pragma once
 
 #include <cstdint>
-#include <memory>
 #include <string>
 #include <vector>
 
-#include "image/image.h"
 #include "render/scene_view.h"
 
 namespace candela {
@@ -31,10 +29,15 @@ struct SceneData {
   // The shapes and bounds of the lights the light tree was built over (host only): a frame with
   // the same key keeps the tree (scene/flatten.cpp).
   std::string lightTreeKey;
-  // The map the env* arrays were made from: a frame that keeps it keeps them (host only).
-  std::shared_ptr<const ImageRGB> environmentMap;
-  // The mean linear colour of each emission texture (host only; 1 for the others): what a
-  // textured emitter's power weighs.
+  // The content hash of the map the env* arrays were made from (0: none): a frame with an equal
+  // map keeps them (host only). And the map's mean texel over directions (sin theta weighted).
+  uint64_t environmentMapHash = 0;
+  Vec3 environmentMapMean;
+  // Of the content hashes of the textures in the pool (host only): a frame with the same
+  // textures keeps the pool.
+  uint64_t texturePoolHash = 0;
+  // The mean linear colour of each emission texture (host only; -1 for the others): what a
+  // textured emitter's power weighs. Kept with the pool.
   std::vector<Vec3> textureMeans;
   Camera camera;
   RenderSettings settings;

@@ -19,22 +19,23 @@
 
 namespace candela {
 
-// The arrays that shade the geometry, in the form of CANDELA_GEOMETRY_ARRAYS.
+// The arrays that shade the geometry, in the form of CANDELA_GEOMETRY_ARRAYS; the light tree and
+// the environment map's arrays are rewritten with their own contents only.
 // lightTree is the light tree over the lights other than the environment (render/light_tree.h;
 // empty when every light is sampled or none but the environment has power). envTexels is the
 // environment map (width x height, rows from the top; empty for a constant
 // environment) and envConditionalCdf/envMarginalCdf with their guide tables its sampling
 // distribution (core/distribution2d.h). materialMotions, parallel to materials, is the motion of
 // each material's instance to the next frame; only renders with the flow pass have it.
-#define CANDELA_SHADING_ARRAYS(X)                             \
-  X(Material, materials, materialCount, Values)               \
-  X(Light, lights, lightCount, Values)                        \
-  X(LightTreeNode, lightTree, lightTreeNodeCount, Values)     \
-  X(Vec3, envTexels, envTexelCount, Values)                   \
-  X(float, envConditionalCdf, envConditionalCdfCount, Values) \
-  X(float, envMarginalCdf, envMarginalCdfCount, Values)           \
-  X(uint32_t, envConditionalGuide, envConditionalGuideCount, Values) \
-  X(uint32_t, envMarginalGuide, envMarginalGuideCount, Values)    \
+#define CANDELA_SHADING_ARRAYS(X)                                            \
+  X(Material, materials, materialCount, Values)                              \
+  X(Light, lights, lightCount, Values)                                       \
+  X(LightTreeNode, lightTree, lightTreeNodeCount, LightTree)                 \
+  X(Vec3, envTexels, envTexelCount, EnvironmentMap)                          \
+  X(float, envConditionalCdf, envConditionalCdfCount, EnvironmentMap)        \
+  X(float, envMarginalCdf, envMarginalCdfCount, EnvironmentMap)              \
+  X(uint32_t, envConditionalGuide, envConditionalGuideCount, EnvironmentMap) \
+  X(uint32_t, envMarginalGuide, envMarginalGuideCount, EnvironmentMap)       \
   X(InstanceMotion, materialMotions, materialMotionCount, Values)
 
 // Every array of the kernel's scene: SceneData, SceneData::view and the CUDA upload expand

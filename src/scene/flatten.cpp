@@ -7,7 +7,9 @@
 #include "core/constants.h"
 #include "core/rotation.h"
 #include "geometry/bvh_build.h"
+#include "render/scene_change.h"
 #include "scene/camera_resolve.h"
+#include "scene/content_hash.h"
 #include "scene/flatten_environment.h"
 #include "scene/key_writer.h"
 #include "scene/light_tree_build.h"
@@ -286,17 +288,16 @@ void addTexturePool(SceneData& s, const SceneDesc& desc) {
 // (only when some material has one).
 void addTextureUses(SceneData& s) {
   // Only emission textures weigh light selection: colour textures, the usual and the large ones,
-  // are not walked on every refresh. Each texel's centre looks that texel up exactly.
-  std::vector<bool> lights(s.textures.size(), false);
-  for (const Material& m : s.materials)
-    if (m.emissionTexture.index >= 0) lights[m.emissionTexture.index] = true;
+  // are never walked. A mean, once taken, stays with the pool. Each texel's centre looks that
+  // texel up exactly.
+  s.textureMeans.resize(s.textures.size(), Vec3(-1.0f));  // -1: not taken
   const TexturePool pool = s.view().texturePool();
-  s.textureMeans.assign(s.textures.size(), Vec3(1.0f));
-  for (uint32_t i = 0; i < s.textures.size(); ++i) {
-    if (!lights[i]) continue;
+  for (const Material& m : s.materials) {
+    const int32_t i = m.emissionTexture.index;
+    if (i < 0 || s.textureMeans[i].x >= 0.0f) continue;
     const Texture& t = s.textures[i];
     TextureRef ref;
-    ref.index = int32_t(i);
+    ref.index = i;
     double sum[3] = {0.0, 0.0, 0.0};
     for (uint32_t y = 0; y < t.height; ++y)
       for (uint32_t x = 0; x < t.width; ++x) {
@@ -369,28 +370,43 @@ void refreshSceneValues(SceneData& s, const SceneDesc& desc) {
   s.materialInstances.clear();
   s.spheres.clear();
   s.alphaMasks.clear();
-  s.textureMeans.clear();
   addContents(s, desc, false, false);  // the frame's textures are the last frame's (equal keys)
   addEmitterLights(s, &previous);
 }
 
+namespace {
+
+// Of the content hashes of the description's textures, in order.
+uint64_t texturePoolHash(const SceneDesc& desc) {
+  std::vector<uint64_t> hashes;
+  for (const std::shared_ptr<const TextureDesc>& t : desc.textures)
+    hashes.push_back(t->contentHash);
+  return hashVector(hashes);
+}
+
+}  // namespace
+
 SceneData flattenSceneContents(const SceneDesc& desc, SceneData* previous) {
   SceneData s;
-  if (previous) {
+  s.texturePoolHash = texturePoolHash(desc);
+  const bool keepPool = previous && previous->texturePoolHash == s.texturePoolHash;
+  if (keepPool) {
+    s.textureMeans = std::move(previous->textureMeans);
     s.textures = std::move(previous->textures);
     s.texels8 = std::move(previous->texels8);
     s.texelsF = std::move(previous->texelsF);
     s.srgbToLinear = std::move(previous->srgbToLinear);
-    // flattenEnvironment keeps these when the map is the same.
-    s.environment = previous->environment;
-    s.environmentMap = std::move(previous->environmentMap);
-    s.envTexels = std::move(previous->envTexels);
-    s.envConditionalCdf = std::move(previous->envConditionalCdf);
-    s.envMarginalCdf = std::move(previous->envMarginalCdf);
-    s.envConditionalGuide = std::move(previous->envConditionalGuide);
-    s.envMarginalGuide = std::move(previous->envMarginalGuide);
   }
-  addContents(s, desc, true, previous == nullptr);
+  if (previous) {  // flattenEnvironment keeps them when the map is the same
+    s.environment = previous->environment;
+    s.environmentMapHash = previous->environmentMapHash;
+    s.environmentMapMean = previous->environmentMapMean;
+#define CANDELA_MOVE_MAP_ARRAY(Type, name, count, rewrittenBy) \
+  if (RewrittenBy::rewrittenBy == RewrittenBy::EnvironmentMap) s.name = std::move(previous->name);
+    CANDELA_SCENE_ARRAYS(CANDELA_MOVE_MAP_ARRAY)
+#undef CANDELA_MOVE_MAP_ARRAY
+  }
+  addContents(s, desc, true, !keepPool);
   return s;
 }
 
@@ -428,10 +444,12 @@ void addBvh(SceneData& s, OwnBvh kind) {
 
 }  // namespace
 
-SceneData flattenScene(const SceneDesc& desc) {
-  SceneData s = flattenSceneContents(desc);
+SceneData flattenScene(const SceneDesc& desc) { return flattenScene(desc, nullptr, nullptr); }
+
+SceneData flattenScene(const SceneDesc& desc, SceneData* previous, PreviousLights* lights) {
+  SceneData s = flattenSceneContents(desc, previous);
   addBvh(s, desc.ownBvh);
-  addEmitterLights(s);
+  addEmitterLights(s, lights);
   return s;
 }
 

@@ -24,8 +24,9 @@ SceneData flattenScene(SceneDesc&& desc);
 // of the description and without the lights of emissive geometry (only the declared lights): for
 // refitting a tree built for a description of the same structure, after which the triangles take
 // the tree's order and addEmitterLights completes the lights. `previous`, where given, is the
-// scene of the last frame, of the same structure: its texture pool and environment map arrays
-// are moved over rather than made again.
+// scene of an earlier frame, of any structure: its texture pool is moved over when the textures
+// are the same (SceneData::texturePoolHash), and its environment map's arrays when the map is
+// (SceneData::environmentMapHash), rather than made again.
 SceneData flattenSceneContents(const SceneDesc& desc, SceneData* previous = nullptr);
 
 // A frame's lights and light tree, kept for the next frame: when its lights have the same
@@ -45,6 +46,11 @@ PreviousLights takeLights(SceneData& scene);
 // `previous` (the last frame's) the light tree is taken from it when the lights are the same
 // (a moving camera), else built: a frame's tree never depends on the frames before it.
 void addEmitterLights(SceneData& scene, PreviousLights* previous = nullptr);
+
+// flattenScene taking what it can of an earlier frame: `previous`'s texture pool and map arrays
+// (as flattenSceneContents) and the light tree of `lights` (as addEmitterLights), each only
+// where its own key is equal, so the scene is the one flattenScene(desc) makes.
+SceneData flattenScene(const SceneDesc& desc, SceneData* previous, PreviousLights* lights);
 
 // The name of each instance number of the instance pass (addContents numbers them: spheres,
 // objects, then lights, from 1): element n - 1 names number n, by its JSON `id`, else by its

@@ -10,6 +10,7 @@
 #include "core/distribution2d.h"
 #include "core/rotation.h"
 #include "render/environment.h"
+#include "scene/content_hash.h"
 
 namespace candela {
 namespace {
@@ -64,17 +65,38 @@ std::vector<double> environmentCellBrightness(const std::vector<Vec3>& texels, u
   return f;
 }
 
+namespace {
+
+// The map's texels weighted by the solid angle of their rows, averaged.
+Vec3 meanOverDirections(const std::vector<Vec3>& texels, uint32_t w, uint32_t h) {
+  double sum[3] = {0.0, 0.0, 0.0}, weights = 0.0;
+  for (uint32_t y = 0; y < h; ++y) {
+    const double sinTheta = rowSinTheta(y, h);
+    for (uint32_t x = 0; x < w; ++x)
+      for (int c = 0; c < 3; ++c) sum[c] += texels[size_t(y) * w + x][c] * sinTheta;
+    weights += sinTheta * w;
+  }
+  return Vec3(float(sum[0] / weights), float(sum[1] / weights), float(sum[2] / weights));
+}
+
+void clearEnvironmentArrays(SceneData& s) {
+  s.envTexels.clear();
+  s.envConditionalCdf.clear();
+  s.envMarginalCdf.clear();
+  s.envConditionalGuide.clear();
+  s.envMarginalGuide.clear();
+  s.environmentMapHash = 0;
+  s.environmentMapMean = Vec3(0.0f);
+}
+
+}  // namespace
+
 void flattenEnvironment(const EnvironmentDesc& desc, SceneData& s) {
   Environment e;
   if (!desc.image) {
     e.radiance = desc.color;
     s.environment = e;
-    s.envTexels.clear();
-    s.envConditionalCdf.clear();
-    s.envMarginalCdf.clear();
-    s.envConditionalGuide.clear();
-    s.envMarginalGuide.clear();
-    s.environmentMap.reset();
+    clearEnvironmentArrays(s);
     return;
   }
   const ImageRGB& image = *desc.image;
@@ -85,18 +107,21 @@ void flattenEnvironment(const EnvironmentDesc& desc, SceneData& s) {
   e.height = image.height;
   // The texels and their distribution depend on the map alone (not on strength, tint or
   // rotation): the frames of an animation build them once.
-  if (s.environmentMap == desc.image) {
+  // A map made in memory (tests, Python) has no hash of the reader's.
+  const uint64_t hash = desc.mapHash != 0 ? desc.mapHash : hashImage(image);
+  if (s.environmentMapHash == hash && !s.envTexels.empty()) {
     e.sampleColumns = s.environment.sampleColumns;
     e.sampleRows = s.environment.sampleRows;
     s.environment = e;
     return;
   }
   s.environment = e;
-  s.environmentMap = desc.image;
+  s.environmentMapHash = hash;
   const uint32_t w = image.width, h = image.height;
   s.envTexels.resize(size_t(w) * h);
   for (uint32_t y = 0; y < h; ++y)
     for (uint32_t x = 0; x < w; ++x) s.envTexels[size_t(y) * w + x] = image.at(x, y);
+  s.environmentMapMean = meanOverDirections(s.envTexels, w, h);
 
   const uint32_t k = environmentCellsPerTexel(w, h), cw = k * w, ch = k * h;
   std::vector<double> f = environmentCellBrightness(s.envTexels, w, h, k);
@@ -115,17 +140,7 @@ void flattenEnvironment(const EnvironmentDesc& desc, SceneData& s) {
 
 double environmentMeanRadiance(const SceneData& s) {
   const Environment& e = s.environment;
-  if (e.width == 0) return componentSum(e.radiance);
-  double weighted = 0.0, weights = 0.0;
-  for (uint32_t y = 0; y < e.height; ++y) {
-    const double sinTheta = rowSinTheta(y, e.height);
-    for (uint32_t x = 0; x < e.width; ++x) {
-      const Vec3 t = e.radiance * s.envTexels[size_t(y) * e.width + x];
-      weighted += componentSum(t) * sinTheta;
-      weights += sinTheta;
-    }
-  }
-  return weights > 0.0 ? weighted / weights : 0.0;
+  return componentSum(e.width == 0 ? e.radiance : e.radiance * s.environmentMapMean);
 }
 
 }  // namespace candela

@@ -11,8 +11,8 @@
 // refitted in linear time, unless refitting has made the tree's SAH cost grow past
 // kRefitCostLimit times that of its last build: then, as for any other change, the frame is
 // flattened afresh with a new BVH. Textures enter the keys by their content hashes: a frame with
-// other texels is a new structure, while frames that change values or move primitives keep the
-// texture pool and the environment's arrays.
+// other texels is a new structure. Whatever the change, a frame keeps the last frame's texture
+// pool, environment map arrays and light tree where its textures, map and lights are the same.
 #pragma once
 
 #include <string>
@@ -47,13 +47,5 @@ class FrameScene {
   SceneChange change_ = SceneChange::Structure;
   double seconds_ = 0;
 };
-
-// The geometry of `desc` as bytes: equal keys mean flattenScene would make the same vertices,
-// triangles, spheres and BVH. Meshes and textures enter as hashes of their contents.
-std::string geometryKey(const SceneDesc& desc);
-
-// The geometry of `desc` less its transforms (positions, rotations, scales, radii): equal keys
-// mean flattenScene would make the same triangles and vertex layout, only moved.
-std::string structureKey(const SceneDesc& desc);
 
 }  // namespace candela

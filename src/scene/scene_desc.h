@@ -93,6 +93,10 @@ struct EnvironmentDesc {
   Vec3 color{0.0f};  // the constant radiance; with a map its tint (default 1)
   std::string map;   // the map file as resolved against the scene's folder; empty: constant
   std::shared_ptr<const ImageRGB> image;  // the map, read and checked at load; shared by frames
+  // Of the map's size and texels, set by the reader: frames whose maps have equal hashes share
+  // the map's arrays, even when each frame's file read the map anew (scene/flatten_environment.h).
+  // 0 where the map was made otherwise: flattening hashes it then.
+  uint64_t mapHash = 0;
   float strength = 1;
   Vec3 rotation;     // degrees, map frame -> world, R = Rz * Ry * Rx
 };

@@ -85,6 +85,9 @@ struct CudaRenderer::Impl {
   CANDELA_SCENE_ARRAYS(CANDELA_DEVICE_ARRAY)
   SceneView view;
   bool complete = false;  // whether every array holds the scene given last
+  // The keys of the keyed groups on the device (render/scene_change.h, RewrittenBy).
+  uint64_t environmentMapHash = 0;
+  std::string lightTreeKey;
 };
 
 #undef CANDELA_DEVICE_ARRAY
@@ -98,14 +101,21 @@ CudaRenderer::~CudaRenderer() = default;
 
 void CudaRenderer::setScene(const SceneData& scene, SceneChange change) {
   Impl& d = *impl_;
-  if (!d.complete) change = SceneChange::Structure;
+  SceneUpdate update;  // everything, unless the device holds the last scene whole
+  if (d.complete) {
+    update.change = change;
+    update.environmentMap = scene.environmentMapHash != d.environmentMapHash;
+    update.lightTree = scene.lightTreeKey != d.lightTreeKey;
+  }
   d.complete = false;
   d.view = scene.view();  // counts, camera and settings; pointers replaced below
-#define CANDELA_UPLOAD(Type, name, count, rewrittenBy)                   \
-  if (mayRewrite(change, SceneChange::rewrittenBy)) d.name.upload(scene.name); \
+#define CANDELA_UPLOAD(Type, name, count, rewrittenBy)                              \
+  if (mayRewrite(update, RewrittenBy::rewrittenBy)) d.name.upload(scene.name); \
   d.view.name = d.name.get();
   CANDELA_SCENE_ARRAYS(CANDELA_UPLOAD)
 #undef CANDELA_UPLOAD
+  d.environmentMapHash = scene.environmentMapHash;
+  if (update.lightTree) d.lightTreeKey = scene.lightTreeKey;
   d.complete = true;
 }
 

@@ -1,34 +1,16 @@
 // Reading the environment; see environment_reader.h.
 #include "scene/read/environment_reader.h"
 
-#include <cmath>
 #include <exception>
 #include <filesystem>
 #include <memory>
 #include <optional>
 
 #include "image/image_io.h"
+#include "scene/content_hash.h"
+#include "scene/read/texel_check.h"
 
 namespace candela {
-namespace {
-
-// The first texel that is not a finite, non-negative radiance, as "texel (x, y) is ...", or "".
-std::string badTexel(const ImageRGB& image) {
-  for (uint32_t y = 0; y < image.height; ++y)
-    for (uint32_t x = 0; x < image.width; ++x) {
-      const Vec3 t = image.at(x, y);
-      for (int c = 0; c < 3; ++c) {
-        const float v = t[c];
-        const char* what =
-            std::isnan(v) ? "NaN" : (std::isinf(v) ? "infinite" : (v < 0 ? "negative" : nullptr));
-        if (what) return "texel (" + std::to_string(x) + ", " + std::to_string(y) + ") is " + what;
-      }
-    }
-  return "";
-}
-
-}  // namespace
-
 EnvironmentDesc readEnvironment(const JsonValue& value, const std::string& baseDir) {
   JsonObject fields(value, {"color", "map", "strength", "rotation"});
   EnvironmentDesc environment;
@@ -58,9 +40,10 @@ EnvironmentDesc readEnvironment(const JsonValue& value, const std::string& baseD
     map->fail(std::string("cannot read the environment map: ") + e.what());
   }
   if (image.width == 0 || image.height == 0) map->fail(written + ": the environment map is empty");
-  const std::string bad = badTexel(image);
+  const std::string bad = firstBadTexel(image);
   if (!bad.empty())
     map->fail(written + ": " + bad + "; expected finite, non-negative radiance in every texel");
+  environment.mapHash = hashImage(image);
   environment.image = std::make_shared<const ImageRGB>(std::move(image));
   return environment;
 }

@@ -1,13 +1,13 @@
 // Reading textures; see texture_reader.h.
 #include "scene/read/texture_reader.h"
 
-#include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <exception>
 #include <filesystem>
 
 #include "image/image_io.h"
+#include "scene/content_hash.h"
+#include "scene/read/texel_check.h"
 #include "scene/scene_error.h"
 
 namespace candela {
@@ -16,42 +16,10 @@ namespace {
 // Texture offsets are 32-bit element indices: a texture may hold at most 2^28 texels.
 constexpr uint64_t kMaxTexels = uint64_t(1) << 28;
 
-std::string texelProblem(const ImageRGB& image) {
-  for (uint32_t y = 0; y < image.height; ++y)
-    for (uint32_t x = 0; x < image.width; ++x)
-      for (int c = 0; c < 3; ++c) {
-        const float v = image.at(x, y)[c];
-        if (!(v >= 0.0f && std::isfinite(v)))
-          return "texel (" + std::to_string(x) + ", " + std::to_string(y) + ") is " +
-                 (std::isnan(v) ? "NaN" : (std::isinf(v) ? "infinite" : "negative")) +
-                 "; expected finite, non-negative values in every texel";
-      }
-  return "";
-}
-
-// A 64-bit hash of the texture's format, size and texel bytes, eight bytes a step (a multiply
-// and rotate mix, as xxHash's), so hashing costs little beside decoding.
+// The texture's format, size and texels: frames with equal hashes share one texture pool.
 uint64_t contentHash(const TextureDesc& t) {
-  constexpr uint64_t kPrime1 = 0x9e3779b185ebca87ull, kPrime2 = 0xc2b2ae3d27d4eb4full;
-  uint64_t h = kPrime1 ^ (uint64_t(t.format) << 56) ^ (uint64_t(t.width) << 28) ^ t.height;
-  const auto mix = [&h](uint64_t word) {
-    h ^= word * kPrime2;
-    h = ((h << 31) | (h >> 33)) * kPrime1;
-  };
-  const auto hashBytes = [&mix](const unsigned char* p, size_t n) {
-    size_t i = 0;
-    for (; i + 8 <= n; i += 8) {
-      uint64_t word;
-      std::memcpy(&word, p + i, 8);
-      mix(word);
-    }
-    uint64_t tail = n;
-    for (; i < n; ++i) tail = (tail << 8) | p[i];
-    mix(tail);
-  };
-  hashBytes(t.texels8.data(), t.texels8.size());
-  hashBytes(reinterpret_cast<const unsigned char*>(t.texelsF.data()), t.texelsF.size() * sizeof(float));
-  return h ^ (h >> 29);
+  const uint64_t shape = (uint64_t(t.format) << 56) ^ (uint64_t(t.width) << 28) ^ t.height;
+  return hashVector(t.texelsF, hashVector(t.texels8, shape));
 }
 
 TextureDesc decode(const std::string& path, TextureUse use, bool* hasAlpha) {
@@ -59,8 +27,9 @@ TextureDesc decode(const std::string& path, TextureUse use, bool* hasAlpha) {
   t.file = path;
   if (isFloatImagePath(path)) {
     const ImageRGB image = readImage(path);
-    const std::string problem = texelProblem(image);
-    if (!problem.empty()) throw SceneError(problem);
+    const std::string bad = firstBadTexel(image);
+    if (!bad.empty())
+      throw SceneError(bad + "; expected finite, non-negative values in every texel");
     t.format = TextureFormat::Float;
     t.width = image.width;
     t.height = image.height;
