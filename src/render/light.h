@@ -12,11 +12,13 @@
 #include <cstdint>
 
 #include "core/vec3.h"
-#include "render/light_tree.h"
 
 namespace candela {
 
 enum class LightType : uint32_t { Point = 0, Sphere = 1, Triangle = 2, Environment = 3 };
+
+// Lights outside the light tree (the environment, lights without power) have this trail.
+constexpr uint64_t kNotInLightTree = ~uint64_t(0);
 
 struct Light {
   LightType type = LightType::Point;

@@ -54,8 +54,6 @@ struct alignas(64) LightTreeNode {
   uint32_t byPower;
 };
 
-// Lights outside the tree (the environment, lights without power) have this trail.
-constexpr uint64_t kNotInLightTree = ~uint64_t(0);
 // A trail holds 3 bits a level (the slot taken): the tree is at most this deep.
 constexpr uint32_t kLightTreeTrailBits = 3;
 constexpr uint32_t kMaxLightTreeDepth = 21;

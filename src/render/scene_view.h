@@ -13,6 +13,7 @@
 #include "render/camera.h"
 #include "render/environment.h"
 #include "render/light.h"
+#include "render/light_tree.h"
 #include "render/material.h"
 #include "render/motion.h"
 #include "render/render_settings.h"

@@ -7,6 +7,7 @@
 #include "core/constants.h"
 #include "core/rotation.h"
 #include "geometry/bvh_build.h"
+#include "geometry/primitive_bounds.h"
 #include "render/scene_change.h"
 #include "scene/camera_resolve.h"
 #include "scene/content_hash.h"
@@ -119,57 +120,40 @@ void addLight(SceneData& s, const LightDesc& d) {
   s.lights.push_back(light);
 }
 
-// The power that the light tree weighs a light by: the sum of its RGB power. An emitting
-// surface of radiance L and area A emits pi A L (from one side of a triangle, all of a sphere).
-double selectionPower(const SceneData& s, const Light& l) {
-  switch (l.type) {
-    case LightType::Point:
-      return std::max(0.0, componentSum(l.power));
-    case LightType::Sphere: {
-      const Sphere& sphere = s.spheres[l.shape];
-      const double r = sphere.radius;
-      return 4.0 * kPi * kPi * r * r * componentSum(s.materials[sphere.material].radiance);
-    }
-    case LightType::Triangle: {
-      const Triangle& t = s.triangles[l.shape];
-      const Vec3& p0 = s.positions[t.v[0]];
-      const double area =
-          0.5 * double(length(cross(s.positions[t.v[1]] - p0, s.positions[t.v[2]] - p0)));
-      const Material& m = s.materials[t.material];
-      const Vec3 tint =
-          m.emissionTexture.index >= 0 ? s.textureMeans[m.emissionTexture.index] : Vec3(1.0f);
-      return kPi * area * componentSum(m.radiance * tint);
-    }
-    case LightType::Environment:  // picked apart from the tree (SceneView::environmentShare)
-      break;
-  }
-  return 0.0;
-}
-
-// What the light tree knows of light l (the environment, picked apart from the tree, has no
-// power there).
+// What the light tree knows of light l: its box, the cone of its emitting normals, and the power
+// it weighs the light by, the sum of its RGB power (a surface of radiance L and area A emits
+// pi A L, from one side of a triangle, from all of a sphere). The environment, picked apart from
+// the tree (SceneView::environmentShare), has no power there.
 LightBounds lightBounds(const SceneData& s, const Light& l) {
   LightBounds b;
-  if (l.type == LightType::Environment) return b;
-  b.power = selectionPower(s, l);
-  b.cosThetaO = -1.0;  // points and spheres emit in every direction
   switch (l.type) {
     case LightType::Point:
       b.lo = b.hi = l.position;
+      b.cosThetaO = -1.0;  // every direction
+      b.power = std::max(0.0, componentSum(l.power));
       break;
     case LightType::Sphere: {
       const Sphere& sphere = s.spheres[l.shape];
-      b.lo = sphere.center - Vec3(sphere.radius);
-      b.hi = sphere.center + Vec3(sphere.radius);
+      const Bounds3 box = sphereBounds(sphere);
+      b.lo = box.lo;
+      b.hi = box.hi;
+      b.cosThetaO = -1.0;
+      const double r = sphere.radius;
+      b.power = 4.0 * kPi * kPi * r * r * componentSum(s.materials[sphere.material].radiance);
       break;
     }
     case LightType::Triangle: {
       const Triangle& t = s.triangles[l.shape];
-      const Vec3 &p0 = s.positions[t.v[0]], &p1 = s.positions[t.v[1]], &p2 = s.positions[t.v[2]];
-      b.lo = min(p0, min(p1, p2));
-      b.hi = max(p0, max(p1, p2));
-      b.axis = cross(p1 - p0, p2 - p0);  // the outside, which alone emits
+      const Bounds3 box = triangleBounds(s.positions.data(), t);
+      b.lo = box.lo;
+      b.hi = box.hi;
+      const Vec3& p0 = s.positions[t.v[0]];
+      b.axis = cross(s.positions[t.v[1]] - p0, s.positions[t.v[2]] - p0);  // the emitting side
       b.cosThetaO = 1.0;
+      const Material& m = s.materials[t.material];
+      const Vec3 tint =
+          m.emissionTexture.index >= 0 ? s.textureMeans[m.emissionTexture.index] : Vec3(1.0f);
+      b.power = kPi * 0.5 * double(length(b.axis)) * componentSum(m.radiance * tint);
       break;
     }
     case LightType::Environment:

@@ -169,8 +169,9 @@ class Builder {
   }
 
   // Splits [begin, end) (at least 2 lights) in two and returns where the second part starts:
-  // the cheapest of the bucket boundaries along each axis by splitCost, or the middle where the
-  // centroids coincide or the tree must stay balanced to keep within kMaxLightTreeDepth.
+  // the cheapest of the bucket boundaries along each axis by splitCost, or, where the centroids
+  // coincide or the tree must stay balanced to keep within kMaxLightTreeDepth, the median along
+  // the centroids' widest axis.
   size_t split(size_t begin, size_t end, uint32_t depth) {
     const size_t count = end - begin, middle = begin + count / 2;
     const uint32_t levelsLeft = kMaxLightTreeDepth - depth;
@@ -222,8 +223,15 @@ class Builder {
         }
       }
     }
-    if (bestDim < 0) {
-      std::nth_element(order_.begin() + begin, order_.begin() + middle, order_.begin() + end);
+    if (bestDim < 0) {  // halves along the centroids' widest axis (any halves where they coincide)
+      int widest = 0;
+      for (int d = 1; d < 3; ++d)
+        if (cmax[d] - cmin[d] > cmax[widest] - cmin[widest]) widest = d;
+      std::nth_element(order_.begin() + begin, order_.begin() + middle, order_.begin() + end,
+                       [&](uint32_t a, uint32_t b) {
+                         const double ca = centroid(a, widest), cb = centroid(b, widest);
+                         return ca < cb || (ca == cb && a < b);
+                       });
       return middle;
     }
     const auto second =

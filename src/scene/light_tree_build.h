@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/vec3.h"
+#include "render/light.h"
 #include "render/light_tree.h"
 
 namespace candela {
