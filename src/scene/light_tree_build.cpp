@@ -28,7 +28,7 @@ struct Cluster {
   bool empty = true;
   double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
   Direction axis;
-  double cosThetaO = 1, thetaO = 0, power = 0;
+  double cosThetaO = 1, sinThetaO = 0, thetaO = 0, power = 0;
 
   double diagonal(int d) const { return hi[d] - lo[d]; }
   double surfaceArea() const {
@@ -49,6 +49,7 @@ Cluster clusterOf(const LightBounds& l) {
                              double(l.axis.z) * l.axis.z);
   if (n > 0.0) c.axis = {l.axis.x / n, l.axis.y / n, l.axis.z / n};
   c.cosThetaO = n > 0.0 ? l.cosThetaO : -1.0;
+  c.sinThetaO = std::sqrt(std::max(0.0, 1.0 - c.cosThetaO * c.cosThetaO));
   c.thetaO = safeAcos(c.cosThetaO);
   c.power = l.power;
   return c;
@@ -60,14 +61,20 @@ void uniteCones(const Cluster& a, const Cluster& b, Cluster* c) {
   const Cluster& narrower = a.thetaO >= b.thetaO ? b : a;
   c->axis = wider.axis;
   c->cosThetaO = wider.cosThetaO;
+  c->sinThetaO = wider.sinThetaO;
   c->thetaO = wider.thetaO;
   if (wider.thetaO >= kPiDouble) return;  // the whole sphere already
-  const double thetaD = safeAcos(dot(a.axis, b.axis));
-  if (std::min(thetaD + narrower.thetaO, kPiDouble) <= wider.thetaO) return;
+  // The wider holds the narrower where theta_d + theta_n <= theta_w, i.e. (all three in [0, pi])
+  // cos theta_d >= cos(theta_w - theta_n): a test without inverse trigonometry, which decides
+  // most unions of a mesh's neighbouring faces.
+  const double cosD = dot(a.axis, b.axis);
+  if (cosD >= wider.cosThetaO * narrower.cosThetaO + wider.sinThetaO * narrower.sinThetaO) return;
+  const double thetaD = safeAcos(cosD);
   const double thetaO = 0.5 * (a.thetaO + thetaD + b.thetaO);
   const Direction k = cross(a.axis, b.axis);
   const double kLength = std::sqrt(dot(k, k));
   c->cosThetaO = -1.0;
+  c->sinThetaO = 0.0;
   c->thetaO = kPiDouble;
   if (thetaO >= kPiDouble || !(kLength > 0.0)) return;
   // a's axis turned towards b's by theta_o - theta_a about their common normal.
@@ -76,6 +83,7 @@ void uniteCones(const Cluster& a, const Cluster& b, Cluster* c) {
   const double r = thetaO - a.thetaO, cr = std::cos(r), sr = std::sin(r);
   c->axis = {a.axis.x * cr + t.x * sr, a.axis.y * cr + t.y * sr, a.axis.z * cr + t.z * sr};
   c->cosThetaO = std::cos(thetaO);
+  c->sinThetaO = std::sin(thetaO);
   c->thetaO = thetaO;
 }
 
@@ -99,7 +107,7 @@ Cluster unite(const Cluster& a, const Cluster& b) {
 double splitCost(const Cluster& c, const Cluster& whole, int dim) {
   const double thetaO = c.thetaO, thetaE = 0.5 * kPiDouble;
   const double thetaW = std::min(thetaO + thetaE, kPiDouble);
-  const double sinThetaO = std::sqrt(std::max(0.0, 1.0 - c.cosThetaO * c.cosThetaO));
+  const double sinThetaO = c.sinThetaO;
   const double mOmega = 2.0 * kPiDouble * (1.0 - c.cosThetaO) +
                         kPiDouble / 2.0 *
                             (2.0 * thetaW * sinThetaO - std::cos(thetaO - 2.0 * thetaW) -
@@ -122,7 +130,7 @@ void writeSlot(const Cluster& c, int k, LightTreeNode* node) {
   node->axisY[k] = float(c.axis.y);
   node->axisZ[k] = float(c.axis.z);
   node->cosThetaO[k] = float(c.cosThetaO);
-  node->sinThetaO[k] = float(std::sqrt(std::max(0.0, 1.0 - c.cosThetaO * c.cosThetaO)));
+  node->sinThetaO[k] = float(c.sinThetaO);
   node->power[k] = float(c.power);
 }
 
