@@ -97,6 +97,36 @@ TEST_F(CliAovTest, PngGetsSiblingPfmFiles) {
   EXPECT_EQ(fs::file_size(path("img/out.depth.pfm")), std::string("Pf\n15 15\n-1.0\n").size() + 4 * 225);
 }
 
+std::string fileText(const fs::path& file) {
+  std::ifstream in(file);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// The instance pass comes with the names of its numbers (as scene.instances in Python): by JSON
+// id, else by place in the file; beside an .exr too, per frame of a sequence, and only with it.
+TEST_F(CliAovTest, InstanceNamesAreWrittenBesideTheInstancePass) {
+  dir_.write("named.json", R"({
+    "camera": {"width": 8, "height": 8, "fov": 30, "spp": 1, "position": [0, 0, 5]},
+    "spheres": [{"position": [-1, 0, 0], "radius": 0.5}, {"id": "ball", "position": [1, 0, 0], "radius": 0.5}],
+    "lights": [{"id": "lamp", "position": [0, 3, 3], "intensity": 100}]})");
+  const std::string expected =
+      "{\n  \"1\": \"spheres[0]\",\n  \"2\": \"ball\",\n  \"3\": \"lamp\"\n}\n";
+  ASSERT_EQ(run("render named.json -q -o a.png --aov instance"), 0);
+  EXPECT_EQ(fileText(path("a.instances.json")), expected);
+  ASSERT_EQ(run("render named.json -q -o b.exr --aov instance,depth"), 0);
+  EXPECT_EQ(fileText(path("b.instances.json")), expected);
+  ASSERT_EQ(run("render named.json named.json -q -o f/ --aov instance"), 0);
+  EXPECT_EQ(fileText(path("f/frame_0001.instances.json")), expected);
+  ASSERT_EQ(run("render named.json -q -o c.png --aov depth,material"), 0);
+  EXPECT_FALSE(fs::exists(path("c.instances.json")));
+  // A frame whose table is missing is rendered again.
+  fs::remove(path("f/frame_0000.instances.json"));
+  ASSERT_EQ(run("render named.json named.json -q -o f/ --aov instance"), 0);
+  EXPECT_EQ(fileText(path("f/frame_0000.instances.json")), expected);
+}
+
 TEST_F(CliAovTest, UnknownPassIsAUsageErrorListingTheKnownOnes) {
   std::string err;
   EXPECT_EQ(run("render s.json -o out.png --aov depth,nromal", &err), 2);

@@ -245,7 +245,7 @@ int renderStill(const RenderCommandOptions& options, SceneDesc desc, double load
   }
   createParentDirectories(output);
   std::list<StagedFile> images;  // the image and its pass files, all or none
-  for (const auto& [path, bytes] : encodeWithPasses(output, result, scene, aovs, desc.output))
+  for (const auto& [path, bytes] : encodeWithPasses(output, result, scene, aovs, desc))
     images.emplace_back(path, bytes);
   std::optional<StagedFile> stats;
   if (!options.stats.empty()) {

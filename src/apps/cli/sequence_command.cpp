@@ -264,7 +264,7 @@ int runSequence(const RenderCommandOptions& options, std::vector<SceneDesc> scen
     }
     const std::string path = framePath(dir, frame, digits, format);
     std::list<StagedFile> files;  // the frame and its pass files, all or none
-    for (const auto& [file, bytes] : encodeWithPasses(path, result, data, aovs, still.output))
+    for (const auto& [file, bytes] : encodeWithPasses(path, result, data, aovs, still))
       files.emplace_back(file, bytes);
     for (StagedFile& file : files) file.commit();
     if (!options.quiet) {
