@@ -16,7 +16,7 @@ from typing import Dict, Iterable, List, Optional, Sequence, Union
 
 import numpy as np
 
-from . import Scene, _denoised, _pass_names, _passes_to_render
+from . import Scene, _candela, _denoised, _pass_names, _passes_to_render
 
 
 def _ray():
@@ -76,9 +76,10 @@ def _render_slice(spec: dict, spp: int, seed, first: int, count: int, backend: s
     return scene._core.render(spp, seed, backend, (first, count), threads, passes, True)
 
 
-# The per-pixel sums that add over sample ranges (render/aov.h's AovPixel).
-_ADDED_SUMS = ("position_sum", "normal_sum", "albedo_sum", "distance_sum", "flow_sum",
-               "flow_samples", "hits", "samples")
+# How each per-pixel sum merges over sample ranges (render/aov.h's CANDELA_AOV_PIXEL_FIELDS):
+# "added", or "nearest", taken from the sample nearest the pixel centre.
+_SUMS_BY_MERGE = {merge: tuple(k for k, m in _candela.PASS_SUM_MERGES.items() if m == merge)
+                  for merge in ("added", "nearest")}
 
 
 def merge_pass_sums(parts: Sequence[dict]) -> dict:
@@ -93,10 +94,10 @@ def merge_pass_sums(parts: Sequence[dict]) -> dict:
 
 def _merge_into(merged: dict, part: dict) -> None:
     """merge_pass_sums of (merged, part), into `merged`'s arrays."""
-    for k in _ADDED_SUMS:
+    for k in _SUMS_BY_MERGE["added"]:
         np.add(merged[k], part[k], out=merged[k])
-    nearer = part["nearest_distance2"] < merged["nearest_distance2"]
-    for k in ("nearest_distance2", "nearest_material"):
+    nearer = part["nearest_distance2"] < merged["nearest_distance2"]  # strictly: the earliest
+    for k in _SUMS_BY_MERGE["nearest"]:
         np.copyto(merged[k], part[k], where=nearer)
 
 

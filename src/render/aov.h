@@ -53,6 +53,29 @@ struct AovPixel {
   int32_t nearestMaterial = -1;   // -1: that sample saw the background
 };
 
+// AovPixel's fields, as X(member, name, scalar type, channels, merge): the one list that the
+// Python module's conversions expand (`name` is the array's name there) and that says how the
+// sums of two sample ranges of a pixel merge: Added, or Nearest, the id passes' sample, taken
+// from the later range only where its nearestDistance2 is strictly smaller (as addAovSample
+// keeps the earliest of equals).
+#define CANDELA_AOV_PIXEL_FIELDS(X)                           \
+  X(positionSum, "position_sum", float, 3, Added)             \
+  X(normalSum, "normal_sum", float, 3, Added)                 \
+  X(albedoSum, "albedo_sum", float, 3, Added)                 \
+  X(distanceSum, "distance_sum", float, 1, Added)             \
+  X(flowSum, "flow_sum", float, 2, Added)                     \
+  X(flowSamples, "flow_samples", uint32_t, 1, Added)          \
+  X(hits, "hits", uint32_t, 1, Added)                         \
+  X(samples, "samples", uint32_t, 1, Added)                   \
+  X(nearestDistance2, "nearest_distance2", float, 1, Nearest) \
+  X(nearestMaterial, "nearest_material", int32_t, 1, Nearest)
+
+#define CANDELA_AOV_FIELD_BYTES(member, name, Scalar, channels, merge) \
+  +sizeof(Scalar) * (channels)
+static_assert(sizeof(AovPixel) == 0 CANDELA_AOV_PIXEL_FIELDS(CANDELA_AOV_FIELD_BYTES),
+              "CANDELA_AOV_PIXEL_FIELDS lists every field of AovPixel, without padding");
+#undef CANDELA_AOV_FIELD_BYTES
+
 // Adds sample `first` taken at jitter (jx, jy) in the pixel, by a camera centred at `eye`, and
 // its optical flow `flow` where `hasFlow`.
 CANDELA_HDI void addAovSample(AovPixel* pixel, const FirstHit& first, float jx, float jy,

@@ -100,44 +100,28 @@ void addLayers(std::vector<ImageLayer>&& layers, nb::dict* out) {
   }
 }
 
-// A pass's per-pixel sums (render/aov.h) as arrays, one per field of AovPixel, named as in
-// python/candela/distributed.py, which adds those of several sample ranges.
-template <typename T, int kChannels, typename Field>
-nb::object sumsArray(const std::vector<AovPixel>& pixels, size_t h, size_t w, Field field) {
-  auto* values = new std::vector<T>(pixels.size() * kChannels);
-  for (size_t i = 0; i < pixels.size(); ++i) field(pixels[i], values->data() + kChannels * i);
-  nb::capsule owner(values, [](void* p) noexcept { delete static_cast<std::vector<T>*>(p); });
-  if (kChannels == 1) return nb::cast(nb::ndarray<nb::numpy, T>(values->data(), {h, w}, owner));
-  return nb::cast(nb::ndarray<nb::numpy, T>(values->data(), {h, w, size_t(kChannels)}, owner));
+// One field of the per-pixel pass sums (render/aov.h) as an (h, w) or (h, w, kChannels) array.
+template <typename Scalar, int kChannels, typename Member>
+nb::object sumsArray(const std::vector<AovPixel>& pixels, size_t h, size_t w,
+                     Member AovPixel::*member) {
+  static_assert(sizeof(Member) == sizeof(Scalar) * kChannels, "one scalar per channel");
+  auto* values = new std::vector<Scalar>(pixels.size() * kChannels);
+  for (size_t i = 0; i < pixels.size(); ++i)
+    std::memcpy(values->data() + kChannels * i, &(pixels[i].*member), sizeof(Member));
+  nb::capsule owner(values, [](void* p) noexcept { delete static_cast<std::vector<Scalar>*>(p); });
+  if (kChannels == 1)
+    return nb::cast(nb::ndarray<nb::numpy, Scalar>(values->data(), {h, w}, owner));
+  return nb::cast(nb::ndarray<nb::numpy, Scalar>(values->data(), {h, w, size_t(kChannels)}, owner));
 }
 
+// The per-pixel pass sums as arrays, one per field, named by CANDELA_AOV_PIXEL_FIELDS, as
+// python/candela/distributed.py, which merges those of several sample ranges, knows them.
 nb::dict sumsToDict(const std::vector<AovPixel>& pixels, size_t h, size_t w) {
-  const auto vec3 = [](const Vec3 AovPixel::*member) {
-    return [member](const AovPixel& p, float* out) {
-      out[0] = (p.*member).x;
-      out[1] = (p.*member).y;
-      out[2] = (p.*member).z;
-    };
-  };
-  const auto scalar = [](auto member) {
-    return [member](const AovPixel& p, auto* out) { *out = p.*member; };
-  };
   nb::dict d;
-  d["position_sum"] = sumsArray<float, 3>(pixels, h, w, vec3(&AovPixel::positionSum));
-  d["normal_sum"] = sumsArray<float, 3>(pixels, h, w, vec3(&AovPixel::normalSum));
-  d["albedo_sum"] = sumsArray<float, 3>(pixels, h, w, vec3(&AovPixel::albedoSum));
-  d["distance_sum"] = sumsArray<float, 1>(pixels, h, w, scalar(&AovPixel::distanceSum));
-  d["flow_sum"] = sumsArray<float, 2>(pixels, h, w, [](const AovPixel& p, float* out) {
-    out[0] = p.flowSum.x;
-    out[1] = p.flowSum.y;
-  });
-  d["flow_samples"] = sumsArray<uint32_t, 1>(pixels, h, w, scalar(&AovPixel::flowSamples));
-  d["hits"] = sumsArray<uint32_t, 1>(pixels, h, w, scalar(&AovPixel::hits));
-  d["samples"] = sumsArray<uint32_t, 1>(pixels, h, w, scalar(&AovPixel::samples));
-  d["nearest_distance2"] =
-      sumsArray<float, 1>(pixels, h, w, scalar(&AovPixel::nearestDistance2));
-  d["nearest_material"] =
-      sumsArray<int32_t, 1>(pixels, h, w, scalar(&AovPixel::nearestMaterial));
+#define CANDELA_SUMS_TO_DICT(member, name, Scalar, channels, merge) \
+  d[name] = sumsArray<Scalar, channels>(pixels, h, w, &AovPixel::member);
+  CANDELA_AOV_PIXEL_FIELDS(CANDELA_SUMS_TO_DICT)
+#undef CANDELA_SUMS_TO_DICT
   return d;
 }
 
@@ -157,31 +141,27 @@ std::vector<AovPixel> sumsFromDict(const nb::dict& d, size_t h, size_t w) {
                                   std::to_string(h * w * channels));
     return a.data();
   };
-  const float* position = field("position_sum", float(), 3);
-  const float* normal = field("normal_sum", float(), 3);
-  const float* albedo = field("albedo_sum", float(), 3);
-  const float* distance = field("distance_sum", float(), 1);
-  const float* flow = field("flow_sum", float(), 2);
-  const uint32_t* flowSamples = field("flow_samples", uint32_t(), 1);
-  const uint32_t* hits = field("hits", uint32_t(), 1);
-  const uint32_t* samples = field("samples", uint32_t(), 1);
-  const float* nearest = field("nearest_distance2", float(), 1);
-  const int32_t* material = field("nearest_material", int32_t(), 1);
   std::vector<AovPixel> pixels(h * w);
-  for (size_t i = 0; i < pixels.size(); ++i) {
-    AovPixel& p = pixels[i];
-    p.positionSum = Vec3(position[3 * i], position[3 * i + 1], position[3 * i + 2]);
-    p.normalSum = Vec3(normal[3 * i], normal[3 * i + 1], normal[3 * i + 2]);
-    p.albedoSum = Vec3(albedo[3 * i], albedo[3 * i + 1], albedo[3 * i + 2]);
-    p.distanceSum = distance[i];
-    p.flowSum = Vec2(flow[2 * i], flow[2 * i + 1]);
-    p.flowSamples = flowSamples[i];
-    p.hits = hits[i];
-    p.samples = samples[i];
-    p.nearestDistance2 = nearest[i];
-    p.nearestMaterial = material[i];
+#define CANDELA_SUMS_FROM_DICT(member, name, Scalar, channels, merge)                  \
+  {                                                                                    \
+    const Scalar* values = field(name, Scalar(), channels);                            \
+    for (size_t i = 0; i < pixels.size(); ++i)                                         \
+      std::memcpy(&pixels[i].member, values + (channels)*i, sizeof(pixels[i].member)); \
   }
+  CANDELA_AOV_PIXEL_FIELDS(CANDELA_SUMS_FROM_DICT)
+#undef CANDELA_SUMS_FROM_DICT
   return pixels;
+}
+
+// How each field of the pass sums merges over sample ranges: {"position_sum": "added", ...,
+// "nearest_material": "nearest"}.
+nb::dict passSumMerges() {
+  nb::dict d;
+#define CANDELA_SUM_MERGE(member, name, Scalar, channels, merge) \
+  d[name] = std::string(#merge) == "Added" ? "added" : "nearest";
+  CANDELA_AOV_PIXEL_FIELDS(CANDELA_SUM_MERGE)
+#undef CANDELA_SUM_MERGE
+  return d;
 }
 
 // passSums: the passes as their per-pixel sums ({"image", "sums"}), for a caller that adds those
@@ -337,6 +317,7 @@ NB_MODULE(_candela, m) {
            "pass_sums"_a = false)
       .def("passes_from_sums", &passesFromSums, "sums"_a, "aovs"_a);
 
+  m.attr("PASS_SUM_MERGES") = passSumMerges();
   m.def("check_aovs", [](const std::vector<std::string>& names) { aovsFromNames(names); },
         "names"_a);
   m.def("write_image", &writeImageArray, "path"_a, "img"_a, "srgb"_a, "gamma"_a, "exposure"_a);
