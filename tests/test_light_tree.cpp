@@ -320,6 +320,28 @@ TEST(LightTree, LightsWithoutPowerAreNeverPicked) {
   EXPECT_EQ(trails, std::vector<uint64_t>(3, kNotInLightTree));
 }
 
+// Faces that face one way keep one narrow cone however many are united: the cone of two equal
+// cones is that cone (rounding once made it the whole sphere, losing orientation culling).
+TEST(LightTree, FacesOfOneOrientationKeepANarrowCone) {
+  RandomInputs rng{std::mt19937(8)};
+  std::vector<LightBounds> lights(64);
+  for (LightBounds& l : lights) {
+    l.lo = l.hi = rng.inBox(10.0f);
+    l.axis = Vec3(1, 3, 3);  // not of unit length: its normalised dot with itself rounds below 1
+    l.cosThetaO = 1.0;
+    l.power = 1.0;
+  }
+  std::vector<uint64_t> trails;
+  const std::vector<LightTreeNode> nodes = buildLightTree(lights, &trails);
+  ASSERT_GT(nodes.size(), size_t(1));
+  for (const LightTreeNode& node : nodes)
+    for (int k = 0; k < kLightTreeWidth; ++k) {
+      if (node.power[k] > 0.0f) {
+        EXPECT_GT(node.cosThetaO[k], 0.9999f);
+      }
+    }
+}
+
 // Every light of a large tree is reached by following its trail, within the depth a trail holds,
 // including lights that all sit at one point (no split separates them).
 TEST(LightTree, TrailsLeadToTheirLights) {

@@ -22,6 +22,17 @@ Direction cross(const Direction& a, const Direction& b) {
 
 double safeAcos(double c) { return std::acos(std::clamp(c, -1.0, 1.0)); }
 
+double length(const Direction& d) { return std::sqrt(dot(d, d)); }
+
+// The angle between unit vectors a and b, accurate near 0 and pi (pbrt-v4's AngleBetween).
+double angleBetween(const Direction& a, const Direction& b) {
+  const auto halfChordAngle = [](const Direction& d) {
+    return 2.0 * std::asin(std::min(1.0, 0.5 * length(d)));
+  };
+  if (dot(a, b) < 0.0) return kPiDouble - halfChordAngle({a.x + b.x, a.y + b.y, a.z + b.z});
+  return halfChordAngle({a.x - b.x, a.y - b.y, a.z - b.z});
+}
+
 // A group of lights as the tree's importance sees it: a box, a cone of emitting normals and
 // their power.
 struct Cluster {
@@ -69,10 +80,13 @@ void uniteCones(const Cluster& a, const Cluster& b, Cluster* c) {
   // most unions of a mesh's neighbouring faces.
   const double cosD = dot(a.axis, b.axis);
   if (cosD >= wider.cosThetaO * narrower.cosThetaO + wider.sinThetaO * narrower.sinThetaO) return;
-  const double thetaD = safeAcos(cosD);
+  // Else the exact test, on an angle that is 0 for equal axes (cos^2 + sin^2 may round above 1,
+  // and acos of a unit vector's dot with itself above 0: either made equal cones whole spheres).
+  const double thetaD = angleBetween(a.axis, b.axis);
+  if (thetaD + narrower.thetaO <= wider.thetaO) return;
   const double thetaO = 0.5 * (a.thetaO + thetaD + b.thetaO);
   const Direction k = cross(a.axis, b.axis);
-  const double kLength = std::sqrt(dot(k, k));
+  const double kLength = length(k);
   c->cosThetaO = -1.0;
   c->sinThetaO = 0.0;
   c->thetaO = kPiDouble;
