@@ -421,6 +421,10 @@ TEST(FrameScene, TexturePoolStaysUntilTheTexturesChange) {
   EXPECT_TRUE(sameBytes(moved.envTexels, movedFresh.envTexels));
   EXPECT_TRUE(sameBytes(moved.envConditionalCdf, movedFresh.envConditionalCdf));
   EXPECT_TRUE(sameBytes(moved.envMarginalGuide, movedFresh.envMarginalGuide));
+  // A new structure with the same textures keeps the pool.
+  scene.spheres.push_back(SphereDesc{});
+  EXPECT_EQ(frames.prepare(scene).texels8[0], 77) << "the pool was copied again";
+  EXPECT_EQ(frames.change(), SceneChange::Structure);
   // Other textures are a new structure: a new pool, but the same map keeps its arrays.
   scene.textures = {texture(200)};
   const SceneData& rebuilt = frames.prepare(scene);

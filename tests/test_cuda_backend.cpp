@@ -212,8 +212,8 @@ TEST(CudaBackend, ResidentSceneFollowsEveryKindOfFrameChange) {
                               {base, SceneChange::Structure}});
 }
 
-// The environment map's arrays and the light tree stay on the device while their contents do,
-// whatever the frame's change, and are replaced when they change.
+// The environment map's arrays and the light tree, kept on the device while their keys are equal
+// and replaced when not: every frame renders as a fresh upload of it does.
 TEST(CudaBackend, ResidentSceneKeepsTheMapAndTheLightTreeOnlyWhileTheyAreTheSame) {
   REQUIRE_GPU();
   const std::string dir = ::testing::TempDir();
@@ -225,7 +225,7 @@ TEST(CudaBackend, ResidentSceneKeepsTheMapAndTheLightTreeOnlyWhileTheyAreTheSame
   };
   expectResidentSceneFollows({
       {frame("cuda_sky_a.pfm", "[0, 1.5, 6]", "4"), SceneChange::Structure},
-      {frame("cuda_sky_b.pfm", "[0.3, 1.4, 6]", "4"), SceneChange::Values},  // both kept
+      {frame("cuda_sky_b.pfm", "[0.3, 1.4, 6]", "4"), SceneChange::Values},  // equal keys
       {frame("cuda_sky_c.pfm", "[0.3, 1.4, 6]", "4"), SceneChange::Values},  // a new map
       {frame("cuda_sky_c.pfm", "[0.3, 1.4, 6]", "9"), SceneChange::Values},  // a new tree
       {frame("cuda_sky_a.pfm", "[0, 1.5, 6]", "4"), SceneChange::Values},

@@ -25,6 +25,10 @@ constexpr const char* sceneChangeName(SceneChange change) {
 // with the lights' shapes, bounds and powers (SceneData::lightTreeKey). A camera animation under
 // a large map, or among many emissive triangles, moves neither to the GPU again.
 enum class RewrittenBy : uint8_t { Values, Motion, Structure, EnvironmentMap, LightTree };
+static_assert(uint8_t(RewrittenBy::Values) == uint8_t(SceneChange::Values) &&
+                  uint8_t(RewrittenBy::Motion) == uint8_t(SceneChange::Motion) &&
+                  uint8_t(RewrittenBy::Structure) == uint8_t(SceneChange::Structure),
+              "mayRewrite compares the frame changes by number");
 
 // What a renderer holding the last scene must take of the next: the frame's change, and whether
 // each keyed group differs from the one it holds (true where it holds none).

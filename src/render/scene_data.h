@@ -26,18 +26,20 @@ struct SceneData {
   bool sampleEveryLight = false;
   float environmentShare = 0.0f;
   Environment environment;
-  // The shapes and bounds of the lights the light tree was built over (host only): a frame with
-  // the same key keeps the tree (scene/flatten.cpp).
+  // The shapes, bounds and powers of the lights the light tree was built over: a frame with the
+  // same key keeps the tree (scene/flatten.cpp), and the GPU keeps its copy (RewrittenBy).
   std::string lightTreeKey;
   // The content hash of the map the env* arrays were made from (0: none): a frame with an equal
-  // map keeps them (host only). And the map's mean texel over directions (sin theta weighted).
+  // map keeps them, and so does the GPU (RewrittenBy). And the map's mean texel over directions
+  // (sin theta weighted), host only.
   uint64_t environmentMapHash = 0;
   Vec3 environmentMapMean;
   // Of the content hashes of the textures in the pool (host only): a frame with the same
   // textures keeps the pool.
   uint64_t texturePoolHash = 0;
-  // The mean linear colour of each emission texture (host only; -1 for the others): what a
-  // textured emitter's power weighs. Kept with the pool.
+  // The mean linear colour of each emission texture (host only; -1 where not taken yet): what a
+  // textured emitter's power weighs. Taken when a material first emits by the texture, and kept
+  // with the pool.
   std::vector<Vec3> textureMeans;
   Camera camera;
   RenderSettings settings;

@@ -6,9 +6,11 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <type_traits>
 #include <vector>
 
 #include "image/image.h"
+#include "scene/scene_desc.h"
 
 namespace candela {
 
@@ -38,7 +40,19 @@ inline uint64_t hashBytes(const void* data, size_t size, uint64_t seed = 0) {
 // The hash of a vector's elements (trivially copyable, without padding bytes).
 template <typename T>
 uint64_t hashVector(const std::vector<T>& items, uint64_t seed = 0) {
+  static_assert(std::is_trivially_copyable<T>::value, "raw bytes only");
   return hashBytes(items.data(), items.size() * sizeof(T), seed);
+}
+
+// The hash of a texture's format, size and texels (TextureDesc::contentHash).
+inline uint64_t hashTexture(const TextureDesc& t) {
+  const uint64_t shape = (uint64_t(t.format) << 56) ^ (uint64_t(t.width) << 28) ^ t.height;
+  return hashVector(t.texelsF, hashVector(t.texels8, shape));
+}
+
+// A texture's hash: the reader's, or for one made in memory (contentHash 0) its texels'.
+inline uint64_t textureHash(const TextureDesc& t) {
+  return t.contentHash != 0 ? t.contentHash : hashTexture(t);
 }
 
 // The hash of an image's size and pixels (EnvironmentDesc::mapHash).

@@ -364,7 +364,7 @@ namespace {
 uint64_t texturePoolHash(const SceneDesc& desc) {
   std::vector<uint64_t> hashes;
   for (const std::shared_ptr<const TextureDesc>& t : desc.textures)
-    hashes.push_back(t->contentHash);
+    hashes.push_back(textureHash(*t));
   return hashVector(hashes);
 }
 
@@ -375,6 +375,7 @@ SceneData flattenSceneContents(const SceneDesc& desc, SceneData* previous) {
   s.texturePoolHash = texturePoolHash(desc);
   const bool keepPool = previous && previous->texturePoolHash == s.texturePoolHash;
   if (keepPool) {
+    previous->texturePoolHash = 0;  // its pool is gone: nothing may take it again
     s.textureMeans = std::move(previous->textureMeans);
     s.textures = std::move(previous->textures);
     s.texels8 = std::move(previous->texels8);
@@ -385,6 +386,7 @@ SceneData flattenSceneContents(const SceneDesc& desc, SceneData* previous) {
     s.environment = previous->environment;
     s.environmentMapHash = previous->environmentMapHash;
     s.environmentMapMean = previous->environmentMapMean;
+    previous->environmentMapHash = 0;
 #define CANDELA_MOVE_MAP_ARRAY(Type, name, count, rewrittenBy) \
   if (RewrittenBy::rewrittenBy == RewrittenBy::EnvironmentMap) s.name = std::move(previous->name);
     CANDELA_SCENE_ARRAYS(CANDELA_MOVE_MAP_ARRAY)

@@ -10,6 +10,7 @@
 #include "core/distribution2d.h"
 #include "core/rotation.h"
 #include "render/environment.h"
+#include "render/scene_change.h"
 #include "scene/content_hash.h"
 
 namespace candela {
@@ -80,11 +81,10 @@ Vec3 meanOverDirections(const std::vector<Vec3>& texels, uint32_t w, uint32_t h)
 }
 
 void clearEnvironmentArrays(SceneData& s) {
-  s.envTexels.clear();
-  s.envConditionalCdf.clear();
-  s.envMarginalCdf.clear();
-  s.envConditionalGuide.clear();
-  s.envMarginalGuide.clear();
+#define CANDELA_CLEAR_MAP_ARRAY(Type, name, count, rewrittenBy) \
+  if (RewrittenBy::rewrittenBy == RewrittenBy::EnvironmentMap) s.name.clear();
+  CANDELA_SCENE_ARRAYS(CANDELA_CLEAR_MAP_ARRAY)
+#undef CANDELA_CLEAR_MAP_ARRAY
   s.environmentMapHash = 0;
   s.environmentMapMean = Vec3(0.0f);
 }

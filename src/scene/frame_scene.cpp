@@ -48,7 +48,7 @@ void writeKeys(const SceneDesc& desc, std::string* geometry, std::string* struct
         hashVector(m.triangles, hashVector(m.uvs, hashVector(m.normals, hashVector(m.positions)))));
   }
   both(desc.textures.size());
-  for (const std::shared_ptr<const TextureDesc>& t : desc.textures) both(t->contentHash);
+  for (const std::shared_ptr<const TextureDesc>& t : desc.textures) both(textureHash(*t));
   *geometry = full.take();
   *structure = shape.take();
 }
@@ -64,8 +64,11 @@ const SceneData& FrameScene::prepare(const SceneDesc& desc, const FlowMotion* fl
     change_ = SceneChange::Values;
   } else {
     bool refitted = false;
-    PreviousLights previous = takeLights(data_);  // its tree serves if the lights did not move
     const bool sameStructure = !structureKey_.empty() && structure == structureKey_;
+    // data_ is taken apart below: should anything throw, the next frame must not reuse it.
+    geometryKey_.clear();
+    structureKey_.clear();
+    PreviousLights previous = takeLights(data_);  // its tree serves if the lights did not move
     if (sameStructure && desc.ownBvh == OwnBvh::None) {
       // No own BVH to refit (Embree refits its own): the same triangles, moved.
       data_ = flattenSceneContents(desc, &data_);

@@ -8,7 +8,6 @@
 #include <vector>
 
 #include "image/image_layer.h"
-#include "image/output_desc.h"
 #include "render/aov_layers.h"
 #include "render/render_result.h"
 #include "scene/scene_desc.h"

@@ -239,6 +239,7 @@ nb::dict passesFromSums(const Scene& scene, const nb::dict& sums,
     object.mesh.materials = materials;
   }
   desc.environment.image.reset();
+  desc.environment.mapHash = 0;
   const SceneData data = flattenSceneContents(desc);
   nb::dict out;
   addLayers(makeAovLayers(data, aovs, sumsFromDict(sums, desc.camera.height, desc.camera.width)),

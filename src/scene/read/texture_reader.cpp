@@ -16,12 +16,6 @@ namespace {
 // Texture offsets are 32-bit element indices: a texture may hold at most 2^28 texels.
 constexpr uint64_t kMaxTexels = uint64_t(1) << 28;
 
-// The texture's format, size and texels: frames with equal hashes share one texture pool.
-uint64_t contentHash(const TextureDesc& t) {
-  const uint64_t shape = (uint64_t(t.format) << 56) ^ (uint64_t(t.width) << 28) ^ t.height;
-  return hashVector(t.texelsF, hashVector(t.texels8, shape));
-}
-
 TextureDesc decode(const std::string& path, TextureUse use, bool* hasAlpha) {
   TextureDesc t;
   t.file = path;
@@ -46,7 +40,7 @@ TextureDesc decode(const std::string& path, TextureUse use, bool* hasAlpha) {
     t.texels8 = std::move(image.pixels);
     *hasAlpha = image.channels == 2 || image.channels == 4;
   }
-  t.contentHash = contentHash(t);
+  t.contentHash = hashTexture(t);
   return t;
 }
 
