@@ -10,9 +10,9 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
 
+#include "image/atomic_file.h"
 #include "image/image_io.h"
 #include "moving_sphere_scene.h"
 #include "temp_dir.h"
@@ -40,12 +40,7 @@ class CliAovTest : public ::testing::Test {
     const std::string command = "cd '" + dir_.path() + "' && '" + CANDELA_BINARY + "' " + args +
                                 " > /dev/null 2> stderr.txt < /dev/null";
     const int status = std::system(command.c_str());
-    if (err) {
-      std::ifstream in(path("stderr.txt"));
-      std::ostringstream s;
-      s << in.rdbuf();
-      *err = s.str();
-    }
+    if (err) *err = candela::readFileBytes(path("stderr.txt").string());
     fs::remove(path("stderr.txt"));
     return status != -1 && WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   }
@@ -97,12 +92,7 @@ TEST_F(CliAovTest, PngGetsSiblingPfmFiles) {
   EXPECT_EQ(fs::file_size(path("img/out.depth.pfm")), std::string("Pf\n15 15\n-1.0\n").size() + 4 * 225);
 }
 
-std::string fileText(const fs::path& file) {
-  std::ifstream in(file);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+std::string fileText(const fs::path& file) { return candela::readFileBytes(file.string()); }
 
 // The instance pass comes with the names of its numbers (as scene.instances in Python): by JSON
 // id, else by place in the file; beside an .exr too, per frame of a sequence, and only with it.

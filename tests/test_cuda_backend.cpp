@@ -81,9 +81,6 @@ TEST(CudaBackend, MatchesCpuWithinRounding) {
   EXPECT_EQ(cpu.rays.camera, gpu.rays.camera);
 }
 
-// Every kind of light the CPU samples: emissive faces and spheres (found by bisection and by the
-// sphere's index), an importance-sampled environment map and the light tree of more than eight
-// lights, on the device against the CPU.
 // A scene with every kind of light the CPU samples: emissive faces and spheres (found by
 // bisection and by the sphere's index), an importance-sampled environment map (`map`, written by
 // writeSky) and the light tree of more than eight lights.
@@ -123,6 +120,7 @@ void writeSky(const std::string& dir, const std::string& file, float sun) {
   writeImage(dir + file, sky, OutputDesc{});
 }
 
+// Every kind of light the CPU samples, on the device against the CPU.
 TEST(CudaBackend, MatchesCpuWithAreaLightsAndAnEnvironmentMap) {
   REQUIRE_GPU();
   const std::string dir = ::testing::TempDir();

@@ -269,8 +269,9 @@ TEST(LightTree, AFrameKeepsTheTreeOnlyWhereItsLightsAreTheSame) {
   test::TempDir dir;
   SceneDesc desc = randomLightsDesc(dir, 300, 7);
   FrameScene frames;
-  const LightTreeNode* built = frames.prepare(desc).lightTree.data();
-  expectTreeBoundsItsLights(flattenScene(desc).view());
+  const SceneData& first = frames.prepare(desc);
+  const LightTreeNode* built = first.lightTree.data();
+  expectTreeBoundsItsLights(first.view());
 
   desc.camera.position = Vec3(1, 2, 3);
   EXPECT_EQ(frames.prepare(desc).lightTree.data(), built) << "the tree was built again";

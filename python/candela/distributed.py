@@ -86,19 +86,23 @@ def merge_pass_sums(parts: Sequence[dict]) -> dict:
     """The pass sums of disjoint sample ranges, given in ascending order of their first sample,
     as one render of their union would hold them: sums added; for the id passes, the sample
     nearest the pixel centre, the earliest of equals (so the one a single render keeps)."""
-    merged = {k: np.array(v, copy=True) for k, v in parts[0].items()}
-    for part in parts[1:]:
-        _merge_into(merged, part)
+    merged = None
+    for part in parts:
+        merged = _merge_into(merged, part)
     return merged
 
 
-def _merge_into(merged: dict, part: dict) -> None:
-    """merge_pass_sums of (merged, part), into `merged`'s arrays."""
+def _merge_into(merged: Optional[dict], part: dict) -> dict:
+    """merge_pass_sums of (merged, part), into `merged`'s arrays and returned; with no `merged`
+    yet, a copy of `part` (Ray's arrays are read-only)."""
+    if merged is None:
+        return {k: np.array(v, copy=True) for k, v in part.items()}
     for k in _SUMS_BY_MERGE["added"]:
         np.add(merged[k], part[k], out=merged[k])
     nearer = part["nearest_distance2"] < merged["nearest_distance2"]  # strictly: the earliest
     for k in _SUMS_BY_MERGE["nearest"]:
         np.copyto(merged[k], part[k], where=nearer)
+    return merged
 
 
 def _as_scenes(scenes_or_animation) -> List[Scene]:
@@ -188,10 +192,7 @@ def render_image(scene: Union[Scene, str], spp: Optional[int] = None, chunks: in
         image = part if passes is None else part["image"]
         total += image.astype(np.float64) * count
         if passes is not None:
-            if sums is None:
-                sums = merge_pass_sums([part["sums"]])  # a copy: Ray's arrays are read-only
-            else:
-                _merge_into(sums, part["sums"])
+            sums = _merge_into(sums, part["sums"])
     image = (total / spp).astype(np.float32)
     if passes is None:
         return image

@@ -19,18 +19,26 @@ namespace {
 // sin(theta) at the centre of row j of an h-row map.
 double rowSinTheta(uint32_t j, uint32_t h) { return std::sin(kPi * (j + 0.5) / h); }
 
+// The mean over directions of value(x, y) on a w x h map: each cell weighted by the solid angle
+// of its row.
+template <typename Value>
+double meanOverDirections(uint32_t w, uint32_t h, const Value& value) {
+  double sum = 0.0, weights = 0.0;
+  for (uint32_t y = 0; y < h; ++y)
+    for (uint32_t x = 0; x < w; ++x) {
+      sum += value(x, y) * rowSinTheta(y, h);
+      weights += rowSinTheta(y, h);
+    }
+  return sum / weights;
+}
+
 // MIS compensation (Karlik et al. 2019, as pbrt-v4's ImageInfiniteLight): the environment is
 // only ever sampled beside BSDF sampling, whose rays find the whole sphere, so light samples are
 // better spent where the map is brighter than its mean over directions: each brightness becomes
 // its excess over that mean. A map with no excess (a uniform one) keeps its brightness.
 void compensateForMis(std::vector<double>& brightness, uint32_t w, uint32_t h) {
-  double sum = 0.0, weights = 0.0;
-  for (uint32_t y = 0; y < h; ++y)
-    for (uint32_t x = 0; x < w; ++x) {
-      sum += brightness[size_t(y) * w + x] * rowSinTheta(y, h);
-      weights += rowSinTheta(y, h);
-    }
-  const double mean = sum / weights;
+  const double mean = meanOverDirections(
+      w, h, [&](uint32_t x, uint32_t y) { return brightness[size_t(y) * w + x]; });
   if (!std::any_of(brightness.begin(), brightness.end(), [&](double b) { return b > mean; }))
     return;
   for (double& b : brightness) b = std::max(0.0, b - mean);
@@ -68,16 +76,13 @@ std::vector<double> environmentCellBrightness(const std::vector<Vec3>& texels, u
 
 namespace {
 
-// The map's texels weighted by the solid angle of their rows, averaged.
-Vec3 meanOverDirections(const std::vector<Vec3>& texels, uint32_t w, uint32_t h) {
-  double sum[3] = {0.0, 0.0, 0.0}, weights = 0.0;
-  for (uint32_t y = 0; y < h; ++y) {
-    const double sinTheta = rowSinTheta(y, h);
-    for (uint32_t x = 0; x < w; ++x)
-      for (int c = 0; c < 3; ++c) sum[c] += texels[size_t(y) * w + x][c] * sinTheta;
-    weights += sinTheta * w;
-  }
-  return Vec3(float(sum[0] / weights), float(sum[1] / weights), float(sum[2] / weights));
+// The map's mean texel over directions.
+Vec3 meanTexel(const std::vector<Vec3>& texels, uint32_t w, uint32_t h) {
+  Vec3 mean;
+  for (int c = 0; c < 3; ++c)
+    mean[c] = float(meanOverDirections(
+        w, h, [&](uint32_t x, uint32_t y) { return double(texels[size_t(y) * w + x][c]); }));
+  return mean;
 }
 
 void clearEnvironmentArrays(SceneData& s) {
@@ -121,7 +126,7 @@ void flattenEnvironment(const EnvironmentDesc& desc, SceneData& s) {
   s.envTexels.resize(size_t(w) * h);
   for (uint32_t y = 0; y < h; ++y)
     for (uint32_t x = 0; x < w; ++x) s.envTexels[size_t(y) * w + x] = image.at(x, y);
-  s.environmentMapMean = meanOverDirections(s.envTexels, w, h);
+  s.environmentMapMean = meanTexel(s.envTexels, w, h);
 
   const uint32_t k = environmentCellsPerTexel(w, h), cw = k * w, ch = k * h;
   std::vector<double> f = environmentCellBrightness(s.envTexels, w, h, k);

@@ -1,7 +1,6 @@
 // Pass files beside an image; see pass_files.h.
 #include "apps/cli/pass_files.h"
 
-#include <algorithm>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
@@ -19,13 +18,18 @@ std::string siblingPath(const std::string& image, const char* pass, const char* 
   return (path.parent_path() / (path.stem().string() + "." + pass + extension)).string();
 }
 
+// The instance names' table beside `image` (encodeInstanceNames).
+std::string instanceNamesPath(const std::string& image) {
+  return siblingPath(image, "instances", ".json");
+}
+
 }  // namespace
 
 std::vector<std::string> passFilePaths(const std::string& image, const std::vector<Aov>& aovs) {
   std::vector<std::string> paths;
   if (!isExrPath(image))
     for (Aov aov : aovs) paths.push_back(siblingPath(image, aovName(aov), ".pfm"));
-  if (hasAov(aovs, Aov::Instance)) paths.push_back(siblingPath(image, "instances", ".json"));
+  if (hasAov(aovs, Aov::Instance)) paths.push_back(instanceNamesPath(image));
   return paths;
 }
 
@@ -43,16 +47,17 @@ std::vector<std::pair<std::string, std::string>> encodeWithPasses(const std::str
                                                                   const SceneDesc& desc) {
   if (aovs.empty()) return {{image, encodeImage(image, result.image, desc.output)}};
   const std::vector<ImageLayer> layers = makeAovLayers(scene, aovs, result.aovs);
-  const std::vector<std::string> paths = passFilePaths(image, aovs);
   std::vector<std::pair<std::string, std::string>> files;
   if (isExrPath(image)) {
     files.emplace_back(image, encodeLayeredExr(image, result.image, layers));
   } else {
     files.emplace_back(image, encodeImage(image, result.image, desc.output));
+    const std::vector<std::string> paths = passFilePaths(image, aovs);
     for (size_t i = 0; i < layers.size(); ++i)
       files.emplace_back(paths[i], encodeLayerPfm(paths[i], layers[i]));
   }
-  if (hasAov(aovs, Aov::Instance)) files.emplace_back(paths.back(), encodeInstanceNames(desc));
+  if (hasAov(aovs, Aov::Instance))
+    files.emplace_back(instanceNamesPath(image), encodeInstanceNames(desc));
   return files;
 }
 
