@@ -22,7 +22,7 @@ constexpr const char* sceneChangeName(SceneChange change) {
 // first three are the frame changes above, each of which rewrites what those below it do. The
 // other two are groups that change with their own content only, whatever the frame's change:
 // the environment map's arrays with the map (SceneData::environmentMapHash), the light tree
-// with the lights' shapes, bounds and powers (SceneData::lightTreeKey). A camera animation under
+// with the lights' bounds and powers (SceneData::lightTreeHash). A camera animation under
 // a large map, or among many emissive triangles, moves neither to the GPU again.
 enum class RewrittenBy : uint8_t { Values, Motion, Structure, EnvironmentMap, LightTree };
 static_assert(uint8_t(RewrittenBy::Values) == uint8_t(SceneChange::Values) &&

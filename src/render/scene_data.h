@@ -4,7 +4,6 @@
 #pragma once
 
 #include <cstdint>
-#include <string>
 #include <vector>
 
 #include "render/scene_view.h"
@@ -26,9 +25,10 @@ struct SceneData {
   bool sampleEveryLight = false;
   float environmentShare = 0.0f;
   Environment environment;
-  // The shapes, bounds and powers of the lights the light tree was built over: a frame with the
-  // same key keeps the tree (scene/flatten.cpp), and the GPU keeps its copy (RewrittenBy).
-  std::string lightTreeKey;
+  // A hash of the bounds and powers of the lights the light tree was built over (0: no tree): a
+  // frame with the same hash keeps the tree (scene/flatten.cpp), and the GPU its copy
+  // (RewrittenBy).
+  uint64_t lightTreeHash = 0;
   // The content hash of the map the env* arrays were made from (0: none): a frame with an equal
   // map keeps them, and so does the GPU (RewrittenBy). And the map's mean texel over directions
   // (sin theta weighted), host only.

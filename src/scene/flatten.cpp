@@ -164,20 +164,19 @@ LightBounds lightBounds(const SceneData& s, const Light& l) {
 
 bool emits(const Material& m) { return m.type == MaterialType::Emissive && !isBlack(m.radiance); }
 
-// The lights' shapes and bounds as bytes: equal keys give equal trees, the build being a
-// function of them alone.
-std::string lightTreeKey(const std::vector<Light>& lights, const std::vector<LightBounds>& bounds) {
+// A hash of the lights' bounds, field by field (LightBounds has padding): equal hashes give equal
+// trees, the build being a function of the bounds alone.
+uint64_t lightTreeHash(const std::vector<LightBounds>& bounds) {
   KeyWriter key;
-  for (size_t i = 0; i < lights.size(); ++i) {
-    key.add(lights[i].type);
-    key.add(lights[i].shape);
+  for (size_t i = 0; i < bounds.size(); ++i) {
     key.add(bounds[i].lo);
     key.add(bounds[i].hi);
     key.add(bounds[i].axis);
     key.add(bounds[i].cosThetaO);
     key.add(bounds[i].power);
   }
-  return key.take();
+  const std::string bytes = key.take();
+  return hashBytes(bytes.data(), bytes.size());
 }
 
 }  // namespace
@@ -186,10 +185,10 @@ PreviousLights takeLights(SceneData& s) {
   PreviousLights previous;
   for (const Light& l : s.lights) previous.trails.push_back(l.trail);
   previous.tree = std::move(s.lightTree);
-  previous.key = std::move(s.lightTreeKey);
+  previous.hash = s.lightTreeHash;
   s.lights.clear();
   s.lightTree.clear();  // moved-from: left valid but unspecified by the standard
-  s.lightTreeKey.clear();
+  s.lightTreeHash = 0;
   return previous;
 }
 
@@ -224,7 +223,7 @@ void addEmitterLights(SceneData& s, PreviousLights* previous) {
   }
   s.sampleEveryLight = sampleEveryLight(s.lights.data(), s.lights.size());
   s.lightTree.clear();
-  s.lightTreeKey.clear();
+  s.lightTreeHash = 0;
   s.environmentShare = 0.0f;
   if (s.sampleEveryLight) return;
   // The environment takes half the picks beside other lights (as pbrt-v4's BVHLightSampler
@@ -232,8 +231,8 @@ void addEmitterLights(SceneData& s, PreviousLights* previous) {
   // scene's size, and a ground sphere of radius 1000 once made it a million times a lamp's.
   std::vector<LightBounds> bounds;
   for (const Light& l : s.lights) bounds.push_back(lightBounds(s, l));
-  s.lightTreeKey = lightTreeKey(s.lights, bounds);
-  if (previous && previous->key == s.lightTreeKey) {
+  s.lightTreeHash = lightTreeHash(bounds);
+  if (previous && previous->hash == s.lightTreeHash) {
     s.lightTree = std::move(previous->tree);
     for (size_t i = 0; i < s.lights.size(); ++i) s.lights[i].trail = previous->trails[i];
   } else {

@@ -34,7 +34,7 @@ SceneData flattenSceneContents(const SceneDesc& desc, SceneData* previous = null
 struct PreviousLights {
   std::vector<uint64_t> trails;  // of each light, in order
   std::vector<LightTreeNode> tree;
-  std::string key;  // SceneData::lightTreeKey
+  uint64_t hash = 0;  // SceneData::lightTreeHash
 };
 
 // Moves the lights' trails and the light tree out of `scene`, leaving it without lights.

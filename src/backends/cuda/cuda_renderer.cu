@@ -87,7 +87,7 @@ struct CudaRenderer::Impl {
   bool complete = false;  // whether every array holds the scene given last
   // The keys of the keyed groups on the device (render/scene_change.h, RewrittenBy).
   uint64_t environmentMapHash = 0;
-  std::string lightTreeKey;
+  uint64_t lightTreeHash = 0;
 };
 
 #undef CANDELA_DEVICE_ARRAY
@@ -105,7 +105,7 @@ void CudaRenderer::setScene(const SceneData& scene, SceneChange change) {
   if (d.complete) {
     update.change = change;
     update.environmentMap = scene.environmentMapHash != d.environmentMapHash;
-    update.lightTree = scene.lightTreeKey != d.lightTreeKey;
+    update.lightTree = scene.lightTreeHash != d.lightTreeHash;
   }
   d.complete = false;
   d.view = scene.view();  // counts, camera and settings; pointers replaced below
@@ -115,7 +115,7 @@ void CudaRenderer::setScene(const SceneData& scene, SceneChange change) {
   CANDELA_SCENE_ARRAYS(CANDELA_UPLOAD)
 #undef CANDELA_UPLOAD
   d.environmentMapHash = scene.environmentMapHash;
-  if (update.lightTree) d.lightTreeKey = scene.lightTreeKey;
+  d.lightTreeHash = scene.lightTreeHash;
   d.complete = true;
 }
 
