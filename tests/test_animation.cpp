@@ -463,18 +463,22 @@ TEST(FrameScene, EnvironmentArraysStayWhileTheMapsTexelsDo) {
 // the keyed groups only their own keys do.
 TEST(SceneUpdate, KeyedGroupsAreRewrittenByTheirOwnChangesOnly) {
   using R = RewrittenBy;
-  const SceneUpdate structure{SceneChange::Structure, false, false};
+  const SceneUpdate structure{SceneChange::Structure, false, false, false};
   EXPECT_TRUE(mayRewrite(structure, R::Structure));
   EXPECT_TRUE(mayRewrite(structure, R::Values));
   EXPECT_FALSE(mayRewrite(structure, R::EnvironmentMap));
   EXPECT_FALSE(mayRewrite(structure, R::LightTree));
-  const SceneUpdate values{SceneChange::Values, true, false};
+  EXPECT_FALSE(mayRewrite(structure, R::TexturePool));
+  const SceneUpdate values{SceneChange::Values, true, false, false};
   EXPECT_TRUE(mayRewrite(values, R::Values));
   EXPECT_FALSE(mayRewrite(values, R::Motion));
   EXPECT_TRUE(mayRewrite(values, R::EnvironmentMap));
   EXPECT_FALSE(mayRewrite(values, R::LightTree));
-  EXPECT_TRUE(mayRewrite(SceneUpdate{SceneChange::Motion, false, true}, R::LightTree));
+  EXPECT_FALSE(mayRewrite(values, R::TexturePool));
+  EXPECT_TRUE(mayRewrite(SceneUpdate{SceneChange::Motion, false, true, false}, R::LightTree));
+  EXPECT_TRUE(mayRewrite(SceneUpdate{SceneChange::Values, false, false, true}, R::TexturePool));
   EXPECT_TRUE(mayRewrite(SceneUpdate{}, R::EnvironmentMap));  // a first upload moves everything
+  EXPECT_TRUE(mayRewrite(SceneUpdate{}, R::TexturePool));
 }
 
 // Two grids of triangles far apart, then moved into each other: refitting would leave boxes that

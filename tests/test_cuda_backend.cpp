@@ -13,6 +13,7 @@
 #include "core/constants.h"
 #include "image/image_io.h"
 #include "render_test_util.h"
+#include "texture_test_util.h"
 
 #if defined(CANDELA_HAS_CUDA)
 #include "backends/cuda/cuda_renderer.h"
@@ -227,6 +228,38 @@ TEST(CudaBackend, ResidentSceneKeepsTheMapAndTheLightTreeOnlyWhileTheyAreTheSame
       {frame("cuda_sky_c.pfm", "[0.3, 1.4, 6]", "4"), SceneChange::Values},  // a new map
       {frame("cuda_sky_c.pfm", "[0.3, 1.4, 6]", "9"), SceneChange::Values},  // a new tree
       {frame("cuda_sky_a.pfm", "[0, 1.5, 6]", "4"), SceneChange::Values},
+  });
+}
+
+// The texture pool, kept on the device while the textures are the same, across rebuilds too, and
+// replaced when they differ.
+TEST(CudaBackend, ResidentSceneKeepsTheTexturePoolWhileTheTexturesAreTheSame) {
+  REQUIRE_GPU();
+  const std::string dir = ::testing::TempDir();
+  ASSERT_TRUE(test::writeTestPng(dir + "cuda_checks.png", 2, 2, 3,
+                                 {230, 40, 20, 20, 200, 40, 30, 60, 220, 240, 240, 240}));
+  ASSERT_TRUE(test::writeTestPng(dir + "cuda_checks_b.png", 2, 2, 3,
+                                 {20, 40, 230, 200, 200, 40, 230, 60, 30, 40, 40, 40}));
+  const auto frame = [&](const char* texture, const char* extraSphere) {
+    return R"({
+    "camera": {"width": 48, "height": 36, "fov": 50, "position": [0, 1.5, 6],
+               "look_at": [0, 0.5, 0], "spp": 4},
+    "render": {"max_depth": 4, "seed": 5},
+    "environment": {"color": [0.4, 0.45, 0.5]},
+    "spheres": [)" +
+           std::string(extraSphere) +
+           R"({"position": [0, -1000, 0], "radius": 1000, "color": 0.7},
+      {"position": [0, 0.8, 0], "radius": 0.8,
+       "color": {"texture": ")" +
+           dir + texture + R"(", "scale": [4, 2]}}],
+    "lights": [{"position": [2, 4, 3], "intensity": 400}]})";
+  };
+  const char* added = R"({"position": [1.6, 0.4, 0.5], "radius": 0.4, "color": 0.5}, )";
+  expectResidentSceneFollows({
+      {frame("cuda_checks.png", ""), SceneChange::Structure},
+      {frame("cuda_checks.png", added), SceneChange::Structure},    // the pool stays
+      {frame("cuda_checks_b.png", added), SceneChange::Structure},  // a new pool
+      {frame("cuda_checks.png", ""), SceneChange::Structure},
   });
 }
 

@@ -30,24 +30,23 @@ namespace candela {
 
 // Every geometry array, as X(Type, name, count, rewrittenBy): the one list that the views, the
 // owning SceneData and the CUDA upload expand, so an array is added in one place. rewrittenBy is
-// what may rewrite the array (RewrittenBy, render/scene_change.h): Values for what
-// any frame may change (the alpha masks follow the materials), Motion for what moving primitives
-// change (a refit), Structure for what only a rebuild changes. The texture pool is Structure: the
-// scene keys (scene/frame_scene.cpp) hold every texture's content hash, so a frame with other
-// textures is a new structure, and frames that only move or retint keep it.
-#define CANDELA_GEOMETRY_ARRAYS(X)                 \
-  X(Sphere, spheres, sphereCount, Motion)          \
-  X(Vec3, positions, positionCount, Motion)        \
-  X(OctNormal, normals, normalCount, Motion)       \
-  X(Vec2, uvs, uvCount, Structure)                 \
-  X(Triangle, triangles, triangleCount, Structure) \
-  X(BvhNode, nodes, nodeCount, Motion)             \
+// what may rewrite the array (RewrittenBy, render/scene_change.h): Values for what any frame may
+// change (the alpha masks follow the materials), Motion for what moving primitives change (a
+// refit), Structure for what only a rebuild changes, TexturePool for the pool, which changes with
+// the textures' contents alone (frames that keep them keep it, across rebuilds too).
+#define CANDELA_GEOMETRY_ARRAYS(X)                    \
+  X(Sphere, spheres, sphereCount, Motion)             \
+  X(Vec3, positions, positionCount, Motion)           \
+  X(OctNormal, normals, normalCount, Motion)          \
+  X(Vec2, uvs, uvCount, Structure)                    \
+  X(Triangle, triangles, triangleCount, Structure)    \
+  X(BvhNode, nodes, nodeCount, Motion)                \
   X(uint32_t, primIndices, primIndexCount, Structure) \
-  X(AlphaMask, alphaMasks, alphaMaskCount, Values)      \
-  X(Texture, textures, textureCount, Structure)         \
-  X(uint8_t, texels8, texel8Count, Structure)           \
-  X(float, texelsF, texelFCount, Structure)             \
-  X(float, srgbToLinear, srgbToLinearCount, Structure)
+  X(AlphaMask, alphaMasks, alphaMaskCount, Values)    \
+  X(Texture, textures, textureCount, TexturePool)     \
+  X(uint8_t, texels8, texel8Count, TexturePool)       \
+  X(float, texelsF, texelFCount, TexturePool)         \
+  X(float, srgbToLinear, srgbToLinearCount, TexturePool)
 
 #define CANDELA_VIEW_ARRAY_FIELDS(Type, name, count, rewrittenBy) \
   const Type* name = nullptr;                                     \

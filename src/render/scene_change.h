@@ -20,11 +20,19 @@ constexpr const char* sceneChangeName(SceneChange change) {
 
 // What rewrites an array of the kernel's scene (the last column of CANDELA_SCENE_ARRAYS). The
 // first three are the frame changes above, each of which rewrites what those below it do. The
-// other two are groups that change with their own content only, whatever the frame's change:
-// the environment map's arrays with the map (SceneData::environmentMapHash), the light tree
-// with the lights' bounds and powers (SceneData::lightTreeHash). A camera animation under
-// a large map, or among many emissive triangles, moves neither to the GPU again.
-enum class RewrittenBy : uint8_t { Values, Motion, Structure, EnvironmentMap, LightTree };
+// others are groups that change with their own content only, whatever the frame's change: the
+// environment map's arrays with the map (SceneData::environmentMapHash), the light tree with the
+// lights' bounds and powers (SceneData::lightTreeHash), the texture pool with the textures
+// (SceneData::texturePoolHash). A camera animation under a large map, or among many emissive
+// triangles, moves neither to the GPU again, nor does a rebuild move textures that stayed.
+enum class RewrittenBy : uint8_t {
+  Values,
+  Motion,
+  Structure,
+  EnvironmentMap,
+  LightTree,
+  TexturePool
+};
 static_assert(uint8_t(RewrittenBy::Values) == uint8_t(SceneChange::Values) &&
                   uint8_t(RewrittenBy::Motion) == uint8_t(SceneChange::Motion) &&
                   uint8_t(RewrittenBy::Structure) == uint8_t(SceneChange::Structure),
@@ -36,6 +44,7 @@ struct SceneUpdate {
   SceneChange change = SceneChange::Structure;
   bool environmentMap = true;
   bool lightTree = true;
+  bool texturePool = true;
 };
 
 // Whether an array that `rewrittenBy` changes may differ after `update`.
@@ -45,6 +54,8 @@ constexpr bool mayRewrite(const SceneUpdate& update, RewrittenBy rewrittenBy) {
       return update.environmentMap;
     case RewrittenBy::LightTree:
       return update.lightTree;
+    case RewrittenBy::TexturePool:
+      return update.texturePool;
     default:
       return uint8_t(update.change) >= uint8_t(rewrittenBy);
   }

@@ -1,6 +1,9 @@
 #include "render/scene_data.h"
 
 #include <limits>
+#include <utility>
+
+#include "core/check.h"
 
 namespace candela {
 
@@ -21,6 +24,40 @@ SceneView SceneData::view() const {
   v.settings = settings;
   v.flow = flow;
   return v;
+}
+
+void SceneData::takeGroup(SceneData& from, RewrittenBy group) {
+  CANDELA_DCHECK(group == RewrittenBy::EnvironmentMap || group == RewrittenBy::TexturePool);
+#define CANDELA_TAKE_GROUP_ARRAY(Type, name, count, rewrittenBy) \
+  if (RewrittenBy::rewrittenBy == group) name = std::move(from.name);
+  CANDELA_SCENE_ARRAYS(CANDELA_TAKE_GROUP_ARRAY)
+#undef CANDELA_TAKE_GROUP_ARRAY
+  if (group == RewrittenBy::EnvironmentMap) {
+    environmentMapHash = from.environmentMapHash;
+    environmentMapMean = from.environmentMapMean;
+    environment.sampleColumns = from.environment.sampleColumns;
+    environment.sampleRows = from.environment.sampleRows;
+  } else {
+    texturePoolHash = from.texturePoolHash;
+    textureMeans = std::move(from.textureMeans);
+  }
+  from.clearGroup(group);  // moved-from vectors are valid but unspecified: empty them
+}
+
+void SceneData::clearGroup(RewrittenBy group) {
+  CANDELA_DCHECK(group == RewrittenBy::EnvironmentMap || group == RewrittenBy::TexturePool);
+#define CANDELA_CLEAR_GROUP_ARRAY(Type, name, count, rewrittenBy) \
+  if (RewrittenBy::rewrittenBy == group) name.clear();
+  CANDELA_SCENE_ARRAYS(CANDELA_CLEAR_GROUP_ARRAY)
+#undef CANDELA_CLEAR_GROUP_ARRAY
+  if (group == RewrittenBy::EnvironmentMap) {
+    environmentMapHash = 0;
+    environmentMapMean = Vec3(0.0f);
+    environment.sampleColumns = environment.sampleRows = 0;
+  } else {
+    texturePoolHash = 0;
+    textureMeans.clear();
+  }
 }
 
 void SceneData::bounds(Vec3* lo, Vec3* hi) const {

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "render/scene_change.h"
 #include "render/scene_view.h"
 
 namespace candela {
@@ -50,6 +51,13 @@ struct SceneData {
   std::vector<uint32_t> materialInstances;
 
   SceneView view() const;
+  // Moves the arrays of keyed group `group` (RewrittenBy::EnvironmentMap or TexturePool), its
+  // key and what the host keeps beside them (the map's mean and distribution size, the texture
+  // means) from `from` into this scene; `from` is left without them (key 0), so no later frame
+  // takes them again.
+  void takeGroup(SceneData& from, RewrittenBy group);
+  // Empties the arrays of keyed group `group` and zeroes its key and host extras.
+  void clearGroup(RewrittenBy group);
   // World-space bounds of all geometry (empty scene: min > max).
   void bounds(Vec3* lo, Vec3* hi) const;
 };

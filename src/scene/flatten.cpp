@@ -371,26 +371,12 @@ uint64_t texturePoolHash(const SceneDesc& desc) {
 
 SceneData flattenSceneContents(const SceneDesc& desc, SceneData* previous) {
   SceneData s;
-  s.texturePoolHash = texturePoolHash(desc);
-  const bool keepPool = previous && previous->texturePoolHash == s.texturePoolHash;
-  if (keepPool) {
-    previous->texturePoolHash = 0;  // its pool is gone: nothing may take it again
-    s.textureMeans = std::move(previous->textureMeans);
-    s.textures = std::move(previous->textures);
-    s.texels8 = std::move(previous->texels8);
-    s.texelsF = std::move(previous->texelsF);
-    s.srgbToLinear = std::move(previous->srgbToLinear);
-  }
-  if (previous) {  // flattenEnvironment keeps them when the map is the same
-    s.environment = previous->environment;
-    s.environmentMapHash = previous->environmentMapHash;
-    s.environmentMapMean = previous->environmentMapMean;
-    previous->environmentMapHash = 0;
-#define CANDELA_MOVE_MAP_ARRAY(Type, name, count, rewrittenBy) \
-  if (RewrittenBy::rewrittenBy == RewrittenBy::EnvironmentMap) s.name = std::move(previous->name);
-    CANDELA_SCENE_ARRAYS(CANDELA_MOVE_MAP_ARRAY)
-#undef CANDELA_MOVE_MAP_ARRAY
-  }
+  const uint64_t poolHash = texturePoolHash(desc);
+  const bool keepPool = previous && previous->texturePoolHash == poolHash;
+  if (keepPool) s.takeGroup(*previous, RewrittenBy::TexturePool);
+  s.texturePoolHash = poolHash;
+  // flattenEnvironment keeps them when the map is the same.
+  if (previous) s.takeGroup(*previous, RewrittenBy::EnvironmentMap);
   addContents(s, desc, true, !keepPool);
   return s;
 }
@@ -431,18 +417,21 @@ void addBvh(SceneData& s, OwnBvh kind) {
 
 SceneData flattenScene(const SceneDesc& desc) { return flattenScene(desc, nullptr, nullptr); }
 
+void addBvhAndLights(SceneData& s, OwnBvh kind, PreviousLights* lights) {
+  addBvh(s, kind);
+  addEmitterLights(s, lights);
+}
+
 SceneData flattenScene(const SceneDesc& desc, SceneData* previous, PreviousLights* lights) {
   SceneData s = flattenSceneContents(desc, previous);
-  addBvh(s, desc.ownBvh);
-  addEmitterLights(s, lights);
+  addBvhAndLights(s, desc.ownBvh, lights);
   return s;
 }
 
 SceneData flattenScene(SceneDesc&& desc) {
   SceneData s = flattenSceneContents(desc);
   for (ObjectDesc& object : desc.objects) object.mesh = MeshDesc();
-  addBvh(s, desc.ownBvh);
-  addEmitterLights(s);
+  addBvhAndLights(s, desc.ownBvh, nullptr);
   return s;
 }
 

@@ -47,6 +47,10 @@ PreviousLights takeLights(SceneData& scene);
 // (a moving camera), else built: a frame's tree never depends on the frames before it.
 void addEmitterLights(SceneData& scene, PreviousLights* previous = nullptr);
 
+// What flattenScene adds to flattenSceneContents's scene (triangles in the description's order):
+// the BVH `kind`, the triangles in its leaf order, then the lights (as addEmitterLights).
+void addBvhAndLights(SceneData& scene, OwnBvh kind, PreviousLights* lights);
+
 // flattenScene taking what it can of an earlier frame: `previous`'s texture pool and map arrays
 // (as flattenSceneContents) and the light tree of `lights` (as addEmitterLights), each only
 // where its own key is equal, so the scene is the one flattenScene(desc) makes.

@@ -2,6 +2,7 @@
 #include "scene/flatten_environment.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <utility>
 #include <vector>
@@ -19,17 +20,22 @@ namespace {
 // sin(theta) at the centre of row j of an h-row map.
 double rowSinTheta(uint32_t j, uint32_t h) { return std::sin(kPi * (j + 0.5) / h); }
 
-// The mean over directions of value(x, y) on a w x h map: each cell weighted by the solid angle
-// of its row.
-template <typename Value>
-double meanOverDirections(uint32_t w, uint32_t h, const Value& value) {
-  double sum = 0.0, weights = 0.0;
-  for (uint32_t y = 0; y < h; ++y)
+// The mean over directions of the N numbers value(x, y) gives (a std::array<double, N>) on a
+// w x h map: each cell weighted by the solid angle of its row.
+template <size_t N, typename Value>
+std::array<double, N> meanOverDirections(uint32_t w, uint32_t h, const Value& value) {
+  std::array<double, N> sum{};
+  double weights = 0.0;
+  for (uint32_t y = 0; y < h; ++y) {
+    const double weight = rowSinTheta(y, h);
     for (uint32_t x = 0; x < w; ++x) {
-      sum += value(x, y) * rowSinTheta(y, h);
-      weights += rowSinTheta(y, h);
+      const std::array<double, N> v = value(x, y);
+      for (size_t k = 0; k < N; ++k) sum[k] += v[k] * weight;
+      weights += weight;
     }
-  return sum / weights;
+  }
+  for (double& s : sum) s /= weights;
+  return sum;
 }
 
 // MIS compensation (Karlik et al. 2019, as pbrt-v4's ImageInfiniteLight): the environment is
@@ -37,8 +43,9 @@ double meanOverDirections(uint32_t w, uint32_t h, const Value& value) {
 // better spent where the map is brighter than its mean over directions: each brightness becomes
 // its excess over that mean. A map with no excess (a uniform one) keeps its brightness.
 void compensateForMis(std::vector<double>& brightness, uint32_t w, uint32_t h) {
-  const double mean = meanOverDirections(
-      w, h, [&](uint32_t x, uint32_t y) { return brightness[size_t(y) * w + x]; });
+  const double mean = meanOverDirections<1>(w, h, [&](uint32_t x, uint32_t y) {
+    return std::array<double, 1>{brightness[size_t(y) * w + x]};
+  })[0];
   if (!std::any_of(brightness.begin(), brightness.end(), [&](double b) { return b > mean; }))
     return;
   for (double& b : brightness) b = std::max(0.0, b - mean);
@@ -78,20 +85,11 @@ namespace {
 
 // The map's mean texel over directions.
 Vec3 meanTexel(const std::vector<Vec3>& texels, uint32_t w, uint32_t h) {
-  Vec3 mean;
-  for (int c = 0; c < 3; ++c)
-    mean[c] = float(meanOverDirections(
-        w, h, [&](uint32_t x, uint32_t y) { return double(texels[size_t(y) * w + x][c]); }));
-  return mean;
-}
-
-void clearEnvironmentArrays(SceneData& s) {
-#define CANDELA_CLEAR_MAP_ARRAY(Type, name, count, rewrittenBy) \
-  if (RewrittenBy::rewrittenBy == RewrittenBy::EnvironmentMap) s.name.clear();
-  CANDELA_SCENE_ARRAYS(CANDELA_CLEAR_MAP_ARRAY)
-#undef CANDELA_CLEAR_MAP_ARRAY
-  s.environmentMapHash = 0;
-  s.environmentMapMean = Vec3(0.0f);
+  const std::array<double, 3> mean = meanOverDirections<3>(w, h, [&](uint32_t x, uint32_t y) {
+    const Vec3& t = texels[size_t(y) * w + x];
+    return std::array<double, 3>{t.x, t.y, t.z};
+  });
+  return Vec3(float(mean[0]), float(mean[1]), float(mean[2]));
 }
 
 }  // namespace
@@ -101,7 +99,7 @@ void flattenEnvironment(const EnvironmentDesc& desc, SceneData& s) {
   if (!desc.image) {
     e.radiance = desc.color;
     s.environment = e;
-    clearEnvironmentArrays(s);
+    s.clearGroup(RewrittenBy::EnvironmentMap);
     return;
   }
   const ImageRGB& image = *desc.image;
@@ -114,7 +112,7 @@ void flattenEnvironment(const EnvironmentDesc& desc, SceneData& s) {
   // rotation): the frames of an animation build them once.
   // A map made in memory (tests, Python) has no hash of the reader's.
   const uint64_t hash = desc.mapHash != 0 ? desc.mapHash : hashImage(image);
-  if (s.environmentMapHash == hash && !s.envTexels.empty()) {
+  if (s.environmentMapHash == hash) {
     e.sampleColumns = s.environment.sampleColumns;
     e.sampleRows = s.environment.sampleRows;
     s.environment = e;

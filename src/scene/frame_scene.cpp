@@ -63,7 +63,7 @@ const SceneData& FrameScene::prepare(const SceneDesc& desc, const FlowMotion* fl
     refreshSceneValues(data_, desc);
     change_ = SceneChange::Values;
   } else {
-    bool refitted = false;
+    bool refitted = false, rebuilt = false;
     const bool sameStructure = !structureKey_.empty() && structure == structureKey_;
     // data_ is taken apart below: should anything throw, the next frame must not reuse it.
     geometryKey_.clear();
@@ -76,18 +76,27 @@ const SceneData& FrameScene::prepare(const SceneDesc& desc, const FlowMotion* fl
       refitted = true;
     } else if (sameStructure && !data_.nodes.empty()) {
       SceneData moved = flattenSceneContents(desc, &data_);
+      // The same triangles (the structure is unchanged), in the leaf order of the kept tree; the
+      // file order stays at hand for a rebuild.
+      std::vector<Triangle> fileOrder = std::move(moved.triangles);
+      moved.triangles = std::move(data_.triangles);
       moved.nodes = std::move(data_.nodes);
       moved.primIndices = std::move(data_.primIndices);
-      // The same triangles (the structure is unchanged), in the leaf order of the kept tree.
-      moved.triangles = std::move(data_.triangles);
       moved.bvh = data_.bvh;
       refitBvh(moved.nodes, moved.primIndices, moved.spheres.data(),
                uint32_t(moved.spheres.size()), moved.positions.data(), moved.triangles.data());
       refitted = bvhSahCost(moved.nodes) <= kRefitCostLimit * builtCost_;
-      if (refitted) addEmitterLights(moved, &previous);
-      data_ = std::move(moved);  // when rejected, still the holder of the pool and map arrays
+      if (refitted) {
+        addEmitterLights(moved, &previous);
+      } else {  // the refitted tree degraded: a new one over the same contents
+        moved.triangles = std::move(fileOrder);
+        addBvhAndLights(moved, desc.ownBvh, &previous);
+        builtCost_ = bvhSahCost(moved.nodes);
+      }
+      data_ = std::move(moved);
+      rebuilt = !refitted;
     }
-    if (!refitted) {
+    if (!refitted && !rebuilt) {
       data_ = flattenScene(desc, &data_, &previous);
       builtCost_ = bvhSahCost(data_.nodes);
     }

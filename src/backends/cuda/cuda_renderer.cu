@@ -88,6 +88,7 @@ struct CudaRenderer::Impl {
   // The keys of the keyed groups on the device (render/scene_change.h, RewrittenBy).
   uint64_t environmentMapHash = 0;
   uint64_t lightTreeHash = 0;
+  uint64_t texturePoolHash = 0;
 };
 
 #undef CANDELA_DEVICE_ARRAY
@@ -106,6 +107,7 @@ void CudaRenderer::setScene(const SceneData& scene, SceneChange change) {
     update.change = change;
     update.environmentMap = scene.environmentMapHash != d.environmentMapHash;
     update.lightTree = scene.lightTreeHash != d.lightTreeHash;
+    update.texturePool = scene.texturePoolHash != d.texturePoolHash;
   }
   d.complete = false;
   d.view = scene.view();  // counts, camera and settings; pointers replaced below
@@ -116,6 +118,7 @@ void CudaRenderer::setScene(const SceneData& scene, SceneChange change) {
 #undef CANDELA_UPLOAD
   d.environmentMapHash = scene.environmentMapHash;
   d.lightTreeHash = scene.lightTreeHash;
+  d.texturePoolHash = scene.texturePoolHash;
   d.complete = true;
 }
 
