@@ -306,22 +306,20 @@ void tagInstance(SceneData& s, uint32_t instance) {
 // only with `texturePool`. The order of materials depends only on the scene's structure, so
 // triangles keep valid material indices when a refresh re-appends the materials.
 void addContents(SceneData& s, const SceneDesc& desc, bool geometry, bool texturePool) {
-  // Instances are numbered from 1: spheres, then objects, then lights, in file order.
-  const uint32_t sphereCount = uint32_t(desc.spheres.size());
-  const uint32_t firstLight = sphereCount + uint32_t(desc.objects.size());
-  for (uint32_t i = 0; i < sphereCount; ++i) {
+  const InstanceNumbering number = instanceNumbering(desc);
+  for (uint32_t i = 0; i < desc.spheres.size(); ++i) {
     const SphereDesc& sd = desc.spheres[i];
     s.spheres.push_back(Sphere{sd.position, sd.radius, addMaterial(s, sd.material)});
-    tagInstance(s, i + 1);
+    tagInstance(s, number.firstSphere + i);
   }
   // Lights after plain spheres: sphere lights append their own emissive spheres.
   for (uint32_t i = 0; i < desc.lights.size(); ++i) {
     addLight(s, desc.lights[i]);
-    tagInstance(s, firstLight + i + 1);
+    tagInstance(s, number.firstLight + i);
   }
   for (uint32_t i = 0; i < desc.objects.size(); ++i) {
     addObject(s, desc.objects[i], geometry);
-    tagInstance(s, sphereCount + i + 1);
+    tagInstance(s, number.firstObject + i);
   }
   // Vertices after the last smooth (or textured) mesh have no normals (or uvs) either.
   if (geometry && !s.normals.empty()) s.normals.resize(s.positions.size(), OctNormal());
@@ -336,14 +334,26 @@ void addContents(SceneData& s, const SceneDesc& desc, bool geometry, bool textur
 
 }  // namespace
 
-std::vector<std::string> instanceNames(const SceneDesc& desc) {
-  std::vector<std::string> names;
-  const auto add = [&names](const std::string& id, const char* list, size_t i) {
-    names.push_back(!id.empty() ? id : std::string(list) + "[" + std::to_string(i) + "]");
+InstanceNumbering instanceNumbering(const SceneDesc& desc) {
+  InstanceNumbering n;
+  n.firstObject = n.firstSphere + uint32_t(desc.spheres.size());
+  n.firstLight = n.firstObject + uint32_t(desc.objects.size());
+  return n;
+}
+
+std::vector<std::pair<uint32_t, std::string>> instanceNames(const SceneDesc& desc) {
+  std::vector<std::pair<uint32_t, std::string>> names;
+  const auto add = [&names](uint32_t first, const char* list, size_t i, const std::string& id) {
+    names.emplace_back(first + uint32_t(i),
+                       !id.empty() ? id : std::string(list) + "[" + std::to_string(i) + "]");
   };
-  for (size_t i = 0; i < desc.spheres.size(); ++i) add(desc.spheres[i].id, "spheres", i);
-  for (size_t i = 0; i < desc.objects.size(); ++i) add(desc.objects[i].id, "objects", i);
-  for (size_t i = 0; i < desc.lights.size(); ++i) add(desc.lights[i].id, "lights", i);
+  const InstanceNumbering number = instanceNumbering(desc);
+  for (size_t i = 0; i < desc.spheres.size(); ++i)
+    add(number.firstSphere, "spheres", i, desc.spheres[i].id);
+  for (size_t i = 0; i < desc.objects.size(); ++i)
+    add(number.firstObject, "objects", i, desc.objects[i].id);
+  for (size_t i = 0; i < desc.lights.size(); ++i)
+    add(number.firstLight, "lights", i, desc.lights[i].id);
   return names;
 }
 

@@ -5,7 +5,9 @@
 // emissive sphere and triangle becomes a light that its primitive names.
 #pragma once
 
+#include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "render/scene_data.h"
@@ -56,10 +58,18 @@ void addBvhAndLights(SceneData& scene, OwnBvh kind, PreviousLights* lights);
 // where its own key is equal, so the scene is the one flattenScene(desc) makes.
 SceneData flattenScene(const SceneDesc& desc, SceneData* previous, PreviousLights* lights);
 
-// The name of each instance number of the instance pass (addContents numbers them: spheres,
-// objects, then lights, from 1): element n - 1 names number n, by its JSON `id`, else by its
-// place in the file ("spheres[2]").
-std::vector<std::string> instanceNames(const SceneDesc& desc);
+// The instance numbers of the instance pass (docs/aovs.md): spheres, then objects, then lights,
+// in file order, from 1 (0 is the background). Each list's first number; the list's entries
+// number on from it.
+struct InstanceNumbering {
+  uint32_t firstSphere = 1;
+  uint32_t firstObject = 0;
+  uint32_t firstLight = 0;
+};
+InstanceNumbering instanceNumbering(const SceneDesc& desc);
+
+// Each instance number with its name: the JSON `id`, else the place in the file ("spheres[2]").
+std::vector<std::pair<uint32_t, std::string>> instanceNames(const SceneDesc& desc);
 
 // Replaces the camera, settings, environment, materials, lights and spheres of `scene` (which
 // flattenScene made from a description with the same geometry as `desc`) by those of `desc`,

@@ -35,8 +35,7 @@ std::vector<std::string> passFilePaths(const std::string& image, const std::vect
 
 std::string encodeInstanceNames(const SceneDesc& desc) {
   nlohmann::ordered_json table = nlohmann::ordered_json::object();
-  const std::vector<std::string> names = instanceNames(desc);
-  for (size_t i = 0; i < names.size(); ++i) table[std::to_string(i + 1)] = names[i];
+  for (const auto& [number, name] : instanceNames(desc)) table[std::to_string(number)] = name;
   return table.dump(2) + "\n";
 }
 

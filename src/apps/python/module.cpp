@@ -296,8 +296,8 @@ NB_MODULE(_candela, m) {
       })
       .def_prop_ro("instances", [](const Scene& s) {
         nb::dict names;
-        const std::vector<std::string> list = instanceNames(*s.desc);  // the same in every frame
-        for (size_t i = 0; i < list.size(); ++i) names[nb::int_(i + 1)] = list[i];
+        // The same in every frame.
+        for (const auto& [number, name] : instanceNames(*s.desc)) names[nb::int_(number)] = name;
         return names;
       })
       .def_prop_ro("_last_change", [](const Scene& s) -> std::optional<std::string> {
