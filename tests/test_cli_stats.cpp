@@ -206,6 +206,16 @@ TEST_F(CliStatsTest, NoBvhIsReportedAndTracesTheSameRays) {
   EXPECT_EQ(a["rays"], b["rays"]);
 }
 
+// A scene path that is not UTF-8 (Linux allows any bytes) still gives valid JSON: the bad byte
+// becomes U+FFFD.
+TEST_F(CliStatsTest, ANonUtf8ScenePathStillGivesValidJson) {
+  fs::copy_file(dir_ / "scene.json", dir_ / "sc\xffne.json");
+  ASSERT_EQ(run("'sc\xffne.json' -o out.pfm -q --stats stats.json"), 0) << stderrText();
+  const json stats = readJson("stats.json");
+  EXPECT_EQ(stats["scene"], "sc\xef\xbf\xbdne.json");
+  EXPECT_EQ(stats["rays"]["camera"], 16 * 12 * 4);
+}
+
 TEST_F(CliStatsTest, NoBvhIsHiddenFromHelp) {
   ASSERT_EQ(run("--help"), 0);
   std::ifstream in(dir_ / "stdout.txt");

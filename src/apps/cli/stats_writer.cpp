@@ -3,41 +3,17 @@
 
 #include <sys/resource.h>
 
-#include <cinttypes>
 #include <cmath>
-#include <cstdio>
-#include <sstream>
+#include <cstdint>
+#include <nlohmann/json.hpp>
+#include <vector>
 
 namespace candela::cli {
 
 namespace {
 
-std::string jsonString(const std::string& text) {
-  std::string out = "\"";
-  for (const unsigned char c : text) {
-    if (c == '"' || c == '\\') {
-      out += '\\';
-      out += char(c);
-    } else if (c < 0x20) {
-      char buf[8];
-      std::snprintf(buf, sizeof buf, "\\u%04x", c);
-      out += buf;
-    } else {
-      out += char(c);
-    }
-  }
-  return out + "\"";
-}
-
 // JSON has no inf or nan; a rate over a zero time is written as 0.
-std::string jsonNumber(double v) {
-  if (!std::isfinite(v)) return "0";
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.9g", v);
-  return buf;
-}
-
-std::string jsonCount(uint64_t v) { return std::to_string(v); }
+double finite(double v) { return std::isfinite(v) ? v : 0.0; }
 
 template <class T>
 uint64_t bytesOf(const std::vector<T>& v) {
@@ -66,50 +42,44 @@ std::string renderStatsJson(const RenderStats& info, const SceneData& scene,
   const double buildSeconds = std::string(info.acceleration.engine) == "bvh"
                                   ? scene.bvh.buildSeconds
                                   : info.acceleration.buildSeconds;
-  const double samples = double(result.image.width) * double(result.image.height) * double(s.spp);
+  const uint64_t samples = uint64_t(result.image.width) * result.image.height * s.spp;
 
-  std::ostringstream o;
-  o << "{\n";
-  o << "  \"scene\": " << jsonString(info.scene) << ",\n";
-  o << "  \"backend\": " << jsonString(info.backend) << ",\n";
-  o << "  \"threads\": " << info.threads << ",\n";
-  o << "  \"width\": " << result.image.width << ",\n";
-  o << "  \"height\": " << result.image.height << ",\n";
-  o << "  \"spp\": " << s.spp << ",\n";
-  o << "  \"max_depth\": " << s.maxDepth << ",\n";
-  o << "  \"integrator\": " << (s.integrator == IntegratorType::Direct ? "\"direct\"" : "\"path\"")
-    << ",\n";
-  o << "  \"antialiasing\": " << (s.antialiasing ? "true" : "false") << ",\n";
-  o << "  \"use_bvh\": " << (info.useBvh ? "true" : "false") << ",\n";
-  o << "  \"load_seconds\": " << jsonNumber(info.loadSeconds) << ",\n";
-  o << "  \"flatten_seconds\": " << jsonNumber(info.flattenSeconds) << ",\n";
-  o << "  \"engine\": " << jsonString(info.acceleration.engine) << ",\n";
-  o << "  \"bvh_build_seconds\": " << jsonNumber(buildSeconds) << ",\n";
-  o << "  \"bvh_mtris_per_second\": " << jsonNumber(rate(double(triangles), buildSeconds) / 1e6)
-    << ",\n";
-  o << "  \"triangles\": " << jsonCount(triangles) << ",\n";
-  o << "  \"spheres\": " << jsonCount(scene.spheres.size()) << ",\n";
-  o << "  \"bvh_nodes\": " << scene.bvh.nodeCount << ",\n";
-  o << "  \"bvh_leaves\": " << scene.bvh.leafCount << ",\n";
-  o << "  \"bvh_max_depth\": " << scene.bvh.maxDepth << ",\n";
-  o << "  \"memory_bytes\": {\"nodes\": " << nodes << ", \"prim_indices\": " << prims
-    << ", \"positions\": " << positions << ", \"normals\": " << normals
-    << ", \"triangles\": " << tris << ", \"engine\": " << engine << ", \"total\": " << total
-    << "},\n";
-  o << "  \"bytes_per_triangle\": " << jsonNumber(triangles ? double(total) / double(triangles) : 0)
-    << ",\n";
-  o << "  \"render_seconds\": " << jsonNumber(result.seconds) << ",\n";
-  o << "  \"samples\": " << jsonNumber(samples) << ",\n";
-  o << "  \"samples_per_second\": " << jsonNumber(rate(samples, result.seconds)) << ",\n";
-  o << "  \"rays\": {\"camera\": " << jsonCount(result.rays.camera)
-    << ", \"bounce\": " << jsonCount(result.rays.bounce)
-    << ", \"shadow\": " << jsonCount(result.rays.shadow)
-    << ", \"total\": " << jsonCount(result.rays.total()) << "},\n";
-  o << "  \"rays_per_second\": " << jsonNumber(rate(double(result.rays.total()), result.seconds))
-    << ",\n";
-  o << "  \"peak_rss_bytes\": " << peakRssBytes() << "\n";
-  o << "}\n";
-  return o.str();
+  nlohmann::ordered_json o;
+  o["scene"] = info.scene;
+  o["backend"] = info.backend;
+  o["threads"] = info.threads;
+  o["width"] = result.image.width;
+  o["height"] = result.image.height;
+  o["spp"] = s.spp;
+  o["max_depth"] = s.maxDepth;
+  o["integrator"] = s.integrator == IntegratorType::Direct ? "direct" : "path";
+  o["antialiasing"] = s.antialiasing;
+  o["use_bvh"] = info.useBvh;
+  o["load_seconds"] = finite(info.loadSeconds);
+  o["flatten_seconds"] = finite(info.flattenSeconds);
+  o["engine"] = info.acceleration.engine;
+  o["bvh_build_seconds"] = finite(buildSeconds);
+  o["bvh_mtris_per_second"] = finite(rate(double(triangles), buildSeconds) / 1e6);
+  o["triangles"] = triangles;
+  o["spheres"] = uint64_t(scene.spheres.size());
+  o["bvh_nodes"] = scene.bvh.nodeCount;
+  o["bvh_leaves"] = scene.bvh.leafCount;
+  o["bvh_max_depth"] = scene.bvh.maxDepth;
+  o["memory_bytes"] = {{"nodes", nodes},     {"prim_indices", prims}, {"positions", positions},
+                       {"normals", normals}, {"triangles", tris},     {"engine", engine},
+                       {"total", total}};
+  o["bytes_per_triangle"] = finite(triangles ? double(total) / double(triangles) : 0);
+  o["render_seconds"] = finite(result.seconds);
+  o["samples"] = samples;
+  o["samples_per_second"] = finite(rate(double(samples), result.seconds));
+  o["rays"] = {{"camera", result.rays.camera},
+               {"bounce", result.rays.bounce},
+               {"shadow", result.rays.shadow},
+               {"total", result.rays.total()}};
+  o["rays_per_second"] = finite(rate(double(result.rays.total()), result.seconds));
+  o["peak_rss_bytes"] = peakRssBytes();
+  // A scene path need not be UTF-8: its bad bytes become U+FFFD rather than an exception.
+  return o.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";
 }
 
 }  // namespace candela::cli
