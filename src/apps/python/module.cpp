@@ -72,24 +72,35 @@ Backend backendNamed(const std::string& name) {
   return chooseBackend(backend, nullptr);
 }
 
+// `values` moved to the heap, with the capsule that frees them once no array views them.
+template <typename Scalar>
+std::pair<Scalar*, nb::capsule> heapOwned(std::vector<Scalar>&& values) {
+  auto* owned = new std::vector<Scalar>(std::move(values));
+  return {owned->data(), nb::capsule(owned, [](void* p) noexcept {
+            delete static_cast<std::vector<Scalar>*>(p);
+          })};
+}
+
+// An array owning `values`: (h, w) for one channel, (h, w, channels) for more.
+template <typename Scalar>
+nb::object ownedArray(std::vector<Scalar>&& values, size_t h, size_t w, size_t channels) {
+  auto [data, owner] = heapOwned(std::move(values));
+  if (channels == 1) return nb::cast(nb::ndarray<nb::numpy, Scalar>(data, {h, w}, owner));
+  return nb::cast(nb::ndarray<nb::numpy, Scalar>(data, {h, w, channels}, owner));
+}
+
 ImageArray toArray(ImageRGB&& image) {
-  auto* pixels = new std::vector<float>(std::move(image.pixels));
-  nb::capsule owner(pixels, [](void* p) noexcept { delete static_cast<std::vector<float>*>(p); });
-  return ImageArray(pixels->data(), {size_t(image.height), size_t(image.width), size_t(3)}, owner);
+  const size_t h = image.height, w = image.width;
+  auto [data, owner] = heapOwned(std::move(image.pixels));
+  return ImageArray(data, {h, w, size_t(3)}, owner);
 }
 
 // A pass as an array: (H, W) for one channel, (H, W, 3) for three; ids as uint32.
 nb::object layerToArray(ImageLayer&& layer) {
   const size_t h = layer.height, w = layer.width, n = layer.channels.size();
-  if (layer.integer) {
-    auto* ids = new std::vector<uint32_t>(layer.pixels.begin(), layer.pixels.end());
-    nb::capsule owner(ids, [](void* p) noexcept { delete static_cast<std::vector<uint32_t>*>(p); });
-    return nb::cast(nb::ndarray<nb::numpy, uint32_t>(ids->data(), {h, w}, owner));
-  }
-  auto* values = new std::vector<float>(std::move(layer.pixels));
-  nb::capsule owner(values, [](void* p) noexcept { delete static_cast<std::vector<float>*>(p); });
-  if (n == 1) return nb::cast(nb::ndarray<nb::numpy, float>(values->data(), {h, w}, owner));
-  return nb::cast(nb::ndarray<nb::numpy, float>(values->data(), {h, w, n}, owner));
+  if (layer.integer)
+    return ownedArray(std::vector<uint32_t>(layer.pixels.begin(), layer.pixels.end()), h, w, 1);
+  return ownedArray(std::move(layer.pixels), h, w, n);
 }
 
 // Each layer into *out, under its pass's name.
@@ -105,13 +116,10 @@ template <typename Scalar, int kChannels, typename Member>
 nb::object sumsArray(const std::vector<AovPixel>& pixels, size_t h, size_t w,
                      Member AovPixel::*member) {
   static_assert(sizeof(Member) == sizeof(Scalar) * kChannels, "one scalar per channel");
-  auto* values = new std::vector<Scalar>(pixels.size() * kChannels);
+  std::vector<Scalar> values(pixels.size() * kChannels);
   for (size_t i = 0; i < pixels.size(); ++i)
-    std::memcpy(values->data() + kChannels * i, &(pixels[i].*member), sizeof(Member));
-  nb::capsule owner(values, [](void* p) noexcept { delete static_cast<std::vector<Scalar>*>(p); });
-  if (kChannels == 1)
-    return nb::cast(nb::ndarray<nb::numpy, Scalar>(values->data(), {h, w}, owner));
-  return nb::cast(nb::ndarray<nb::numpy, Scalar>(values->data(), {h, w, size_t(kChannels)}, owner));
+    std::memcpy(values.data() + kChannels * i, &(pixels[i].*member), sizeof(Member));
+  return ownedArray(std::move(values), h, w, size_t(kChannels));
 }
 
 // The per-pixel pass sums as arrays, one per field, named by CANDELA_AOV_PIXEL_FIELDS, as
