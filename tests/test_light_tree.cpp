@@ -91,17 +91,29 @@ bool canReach(const SceneView& v, const Light& l, const Vec3& p, const Vec3& n) 
   return true;
 }
 
-TEST(LightTree, FewPointLightsAreEachSampled) {
+TEST(LightTree, ALonePointLightIsSampledWithoutAPick) {
+  const SceneData lone = test::loadTestScene(R"({
+    "camera": {"width": 4, "height": 4, "fov": 40},
+    "lights": [{"position": [0, 1, 0], "intensity": 2}]})");
+  EXPECT_TRUE(lone.view().sampleEveryLight);
+  EXPECT_TRUE(lone.lightTree.empty());
+  EXPECT_EQ(lightSelectPmf(lone.view(), 0, Vec3(0.0f), Vec3(0, 1, 0)), 1.0f);
+}
+
+// Two point lights or more are picked through the tree, by their importance at the point.
+TEST(LightTree, SeveralPointLightsArePickedByTheTree) {
   const SceneData data = test::loadTestScene(R"({
     "camera": {"width": 4, "height": 4, "fov": 40},
-    "lights": [{"position": [0, 1, 0], "intensity": 0},
-               {"position": [0, 1, 0], "intensity": 2},
+    "lights": [{"position": [0, 1, 0], "intensity": 2},
                {"position": [0, 5, 0], "intensity": 3}]})");
-  ASSERT_EQ(data.lights.size(), 3u);
-  EXPECT_TRUE(data.view().sampleEveryLight);
-  EXPECT_TRUE(data.lightTree.empty());
-  for (uint32_t i = 0; i < 3; ++i)
-    EXPECT_EQ(lightSelectPmf(data.view(), i, Vec3(0.0f), Vec3(0, 1, 0)), 1.0f);
+  ASSERT_EQ(data.lights.size(), 2u);
+  EXPECT_FALSE(data.view().sampleEveryLight);
+  EXPECT_FALSE(data.lightTree.empty());
+  // The nearer light is picked more often at a point below both, and the picks sum to one.
+  const float near = lightSelectPmf(data.view(), 0, Vec3(0.0f), Vec3(0, 1, 0));
+  const float far = lightSelectPmf(data.view(), 1, Vec3(0.0f), Vec3(0, 1, 0));
+  EXPECT_GT(near, far);
+  EXPECT_NEAR(near + far, 1.0f, 1e-6f);
 }
 
 // The environment takes half the picks beside other lights, however large the scene's bounds

@@ -30,15 +30,14 @@ struct Light {
   uint64_t trail = kNotInLightTree;
 };
 
-// Up to this many point lights, and no other light, every shading point samples each of them:
-// a point light's shadow ray has no sampling noise of its own, so the noise of picking one
-// outweighs the rays it saves (docs/performance.md). An area light or the environment is sampled
-// with noise anyway, and there picking one light costs less per unit of error (the
-// Cornell box's quad: 0.83x the time to equal error of sampling both its triangles). Beyond
-// kSampleEveryLightUpTo the cost per shading point would grow with the light count. Otherwise
-// one light is picked: the environment in a fixed share of the picks, the rest from the light
-// tree (render/light_selection.h).
-constexpr uint32_t kSampleEveryLightUpTo = 8;
+// A scene whose only light is a point light samples it at every shading point: there is nothing
+// to pick, and a pick would cost a tree walk and a random number. Every other scene picks one
+// light per shading point: the environment in a fixed share of the picks, the rest from the light
+// tree (render/light_selection.h). Sampling each of a few point lights, each with its own shadow
+// ray, won while the pick went by power alone; the tree also weighs distance and orientation, and
+// now picking wins or ties (Sponza's three lamps: 0.8x the render time for 3% more error; the
+// dragon's two: even; docs/performance.md).
+constexpr uint32_t kSampleEveryLightUpTo = 1;
 
 // Whether next-event estimation samples each of `count` lights (else one is picked).
 inline bool sampleEveryLight(const Light* lights, size_t count) {
