@@ -70,7 +70,7 @@ CANDELA_HDI void drawLightNumbers(SampleStream& rng, const Light& light, float* 
 
 // Direct light at a point with a smooth BSDF lobe, whose reflecting hemisphere is around
 // `hemisphere` (reflectingHemisphere: zero where the surface also transmits): from each light
-// when the scene says so (a few point lights: render/light.h, sampleEveryLight), else from one
+// when the scene says so (a lone point light: render/light.h, sampleEveryLight), else from one
 // picked by its importance here (render/light_selection.h).
 template <class Tracer>
 CANDELA_HDI Vec3 estimateDirect(const SceneView& scene, const Tracer& tracer, const Bsdf& bsdf,

@@ -1,7 +1,7 @@
 // Which light next-event estimation samples at a shading point, and with what probability: the
 // environment in its fixed share of the picks (SceneView::environmentShare), every other light
-// through the light tree by its importance at the point (render/light_tree.h). Scenes of a few
-// point lights sample each of them instead (render/light.h, sampleEveryLight).
+// through the light tree by its importance at the point (render/light_tree.h). A scene whose only
+// light is a point light samples it without a pick instead (render/light.h, sampleEveryLight).
 #pragma once
 
 #include "render/scene_view.h"
