@@ -514,7 +514,7 @@ TEST(FrameScene, RefitUnlessTheTreeDegradesThenRebuild) {
   expectSameContents(nudged, flattenScene(scene));
   expectBvhFindsNearestHits(nudged);
 
-  // The refit is rejected and the scene flattened again, keeping the map's arrays (marked).
+  // The refit is rejected and a new tree built, keeping the map's arrays (marked).
   const_cast<float*>(nudged.envConditionalCdf.data())[0] = -1.0f;
   scene.objects[0].position = Vec3(0, 0, 0);
   scene.objects[1].position = Vec3(5, 0, -5);

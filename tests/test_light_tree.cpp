@@ -1,6 +1,6 @@
 // Light selection for next-event estimation: the light tree (render/light_tree.h) that picks a
 // light by its importance at the shading point, the environment's share of the picks, and the
-// few point lights that are each sampled.
+// lone point light that needs no pick.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -95,7 +95,7 @@ TEST(LightTree, ALonePointLightIsSampledWithoutAPick) {
   const SceneData lone = test::loadTestScene(R"({
     "camera": {"width": 4, "height": 4, "fov": 40},
     "lights": [{"position": [0, 1, 0], "intensity": 2}]})");
-  EXPECT_TRUE(lone.view().sampleEveryLight);
+  EXPECT_TRUE(lone.view().lonePointLight);
   EXPECT_TRUE(lone.lightTree.empty());
   EXPECT_EQ(lightSelectPmf(lone.view(), 0, Vec3(0.0f), Vec3(0, 1, 0)), 1.0f);
 }
@@ -107,7 +107,7 @@ TEST(LightTree, SeveralPointLightsArePickedByTheTree) {
     "lights": [{"position": [0, 1, 0], "intensity": 2},
                {"position": [0, 5, 0], "intensity": 3}]})");
   ASSERT_EQ(data.lights.size(), 2u);
-  EXPECT_FALSE(data.view().sampleEveryLight);
+  EXPECT_FALSE(data.view().lonePointLight);
   EXPECT_FALSE(data.lightTree.empty());
   // The nearer light is picked more often at a point below both, and the picks sum to one.
   const float near = lightSelectPmf(data.view(), 0, Vec3(0.0f), Vec3(0, 1, 0));
@@ -199,7 +199,7 @@ TEST(LightTree, PicksFollowTheirPmfWhichMissesNoLightThatReachesThePoint) {
   const SceneData data = randomLights(dir, 300, 7);
   const SceneView view = data.view();
   ASSERT_EQ(view.lightCount, 304u);
-  ASSERT_FALSE(view.sampleEveryLight);
+  ASSERT_FALSE(view.lonePointLight);
   int behind = 0, behindWithoutPmf = 0;
   expectPicksFollowTheirPmfs(view, 40, &behind, &behindWithoutPmf);
   EXPECT_GT(behind, 1000);  // the test saw many lights that cannot reach the point

@@ -69,23 +69,19 @@ CANDELA_HDI void drawLightNumbers(SampleStream& rng, const Light& light, float* 
 }
 
 // Direct light at a point with a smooth BSDF lobe, whose reflecting hemisphere is around
-// `hemisphere` (reflectingHemisphere: zero where the surface also transmits): from each light
-// when the scene says so (a lone point light: render/light.h, sampleEveryLight), else from one
-// picked by its importance here (render/light_selection.h).
+// `hemisphere` (reflectingHemisphere: zero where the surface also transmits): from the scene's
+// lone point light (render/light.h, isLonePointLight), else from one light picked by its
+// importance here (render/light_selection.h).
 template <class Tracer>
 CANDELA_HDI Vec3 estimateDirect(const SceneView& scene, const Tracer& tracer, const Bsdf& bsdf,
                                 const Vec3& hemisphere, const SurfacePoint& sp, SampleStream& rng,
                                 RayCounters& counters) {
-  // One dimension per light, or two for the picked one (the pick and its light's sample),
-  // whatever the geometry, so the stream's layout never depends on it.
+  // One dimension for the lone point light, or two for a picked one (the pick and its light's
+  // sample), whatever the geometry, so the stream's layout never depends on it.
   float u1 = 0.0f, u2 = 0.0f;
-  if (scene.sampleEveryLight) {
-    Vec3 sum(0.0f);
-    for (uint32_t i = 0; i < scene.lightCount; ++i) {
-      drawLightNumbers(rng, scene.lights[i], &u1, &u2);
-      sum += sampleOneLight(scene, tracer, scene.lights[i], 1.0f, bsdf, sp, u1, u2, counters);
-    }
-    return sum;
+  if (scene.lonePointLight) {
+    drawLightNumbers(rng, scene.lights[0], &u1, &u2);
+    return sampleOneLight(scene, tracer, scene.lights[0], 1.0f, bsdf, sp, u1, u2, counters);
   }
   const float uLight = rng.next1D();
   float selectPmf;

@@ -30,21 +30,15 @@ struct Light {
   uint64_t trail = kNotInLightTree;
 };
 
-// A scene whose only light is a point light samples it at every shading point: there is nothing
-// to pick, and a pick would cost a tree walk and a random number. Every other scene picks one
-// light per shading point: the environment in a fixed share of the picks, the rest from the light
-// tree (render/light_selection.h). Sampling each of a few point lights, each with its own shadow
-// ray, won while the pick went by power alone; the tree also weighs distance and orientation, and
-// now picking wins or ties (Sponza's three lamps: 0.8x the render time for 3% more error; the
-// dragon's two: even; docs/performance.md).
-constexpr uint32_t kSampleEveryLightUpTo = 1;
-
-// Whether next-event estimation samples each of `count` lights (else one is picked).
-inline bool sampleEveryLight(const Light* lights, size_t count) {
-  if (count > kSampleEveryLightUpTo) return false;
-  for (size_t i = 0; i < count; ++i)
-    if (lights[i].type != LightType::Point) return false;
-  return true;
+// Whether the `count` lights are one point light, which next-event estimation then samples at
+// every shading point: there is nothing to pick, and a pick would cost a tree walk and a random
+// number. Every other scene picks one light per shading point: the environment in a fixed share
+// of the picks, the rest from the light tree (render/light_selection.h). Sampling each of up to 8
+// point lights, each with its own shadow ray, won while the pick went by power alone; the tree
+// also weighs distance and orientation, and picking now wins or ties (Sponza's three lamps: 0.8x
+// the render time for 3% more error; the dragon's two: even; docs/performance.md).
+inline bool isLonePointLight(const Light* lights, size_t count) {
+  return count == 1 && lights[0].type == LightType::Point;
 }
 
 }  // namespace candela

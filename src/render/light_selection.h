@@ -1,7 +1,7 @@
 // Which light next-event estimation samples at a shading point, and with what probability: the
 // environment in its fixed share of the picks (SceneView::environmentShare), every other light
 // through the light tree by its importance at the point (render/light_tree.h). A scene whose only
-// light is a point light samples it without a pick instead (render/light.h, sampleEveryLight).
+// light is a point light samples it without a pick instead (render/light.h, isLonePointLight).
 #pragma once
 
 #include "render/scene_view.h"
@@ -29,7 +29,7 @@ CANDELA_HDI int selectLight(const SceneView& scene, const Vec3& p, const Vec3& n
 // The probability with which selectLight picks light `index` at p with hemisphere normal n.
 CANDELA_HDI float lightSelectPmf(const SceneView& scene, uint32_t index, const Vec3& p,
                                  const Vec3& n) {
-  if (scene.sampleEveryLight) return 1.0f;
+  if (scene.lonePointLight) return 1.0f;
   const Light& l = scene.lights[index];
   if (l.type == LightType::Environment) return scene.environmentShare;
   if (l.trail == kNotInLightTree) return 0.0f;

@@ -15,7 +15,7 @@ SceneView SceneData::view() const {
   CANDELA_SCENE_ARRAYS(CANDELA_VIEW_OF)
 #undef CANDELA_VIEW_OF
   v.firstTriangleLight = firstTriangleLight;
-  v.sampleEveryLight = sampleEveryLight;
+  v.lonePointLight = lonePointLight;
   v.environmentShare = environmentShare;
   v.environment = environment;
   v.emissionReachable = !isBlack(environment.radiance);
@@ -27,36 +27,44 @@ SceneView SceneData::view() const {
 }
 
 void SceneData::takeGroup(SceneData& from, RewrittenBy group) {
-  CANDELA_DCHECK(group == RewrittenBy::EnvironmentMap || group == RewrittenBy::TexturePool);
 #define CANDELA_TAKE_GROUP_ARRAY(Type, name, count, rewrittenBy) \
   if (RewrittenBy::rewrittenBy == group) name = std::move(from.name);
   CANDELA_SCENE_ARRAYS(CANDELA_TAKE_GROUP_ARRAY)
 #undef CANDELA_TAKE_GROUP_ARRAY
-  if (group == RewrittenBy::EnvironmentMap) {
-    environmentMapHash = from.environmentMapHash;
-    environmentMapMean = from.environmentMapMean;
-    environment.sampleColumns = from.environment.sampleColumns;
-    environment.sampleRows = from.environment.sampleRows;
-  } else {
-    texturePoolHash = from.texturePoolHash;
-    textureMeans = std::move(from.textureMeans);
+  switch (group) {
+    case RewrittenBy::EnvironmentMap:
+      environmentMapHash = from.environmentMapHash;
+      environmentMapMean = from.environmentMapMean;
+      environment.sampleColumns = from.environment.sampleColumns;
+      environment.sampleRows = from.environment.sampleRows;
+      break;
+    case RewrittenBy::TexturePool:
+      texturePoolHash = from.texturePoolHash;
+      textureMeans = std::move(from.textureMeans);
+      break;
+    default:
+      CANDELA_DCHECK(!"takeGroup: not a group kept by content");
   }
   from.clearGroup(group);  // moved-from vectors are valid but unspecified: empty them
 }
 
 void SceneData::clearGroup(RewrittenBy group) {
-  CANDELA_DCHECK(group == RewrittenBy::EnvironmentMap || group == RewrittenBy::TexturePool);
 #define CANDELA_CLEAR_GROUP_ARRAY(Type, name, count, rewrittenBy) \
   if (RewrittenBy::rewrittenBy == group) name.clear();
   CANDELA_SCENE_ARRAYS(CANDELA_CLEAR_GROUP_ARRAY)
 #undef CANDELA_CLEAR_GROUP_ARRAY
-  if (group == RewrittenBy::EnvironmentMap) {
-    environmentMapHash = 0;
-    environmentMapMean = Vec3(0.0f);
-    environment.sampleColumns = environment.sampleRows = 0;
-  } else {
-    texturePoolHash = 0;
-    textureMeans.clear();
+  switch (group) {
+    case RewrittenBy::EnvironmentMap:
+      environmentMapHash = 0;
+      environmentMapMean = Vec3(0.0f);
+      environment.sampleColumns = environment.sampleRows = 0;
+      break;
+    case RewrittenBy::TexturePool:
+      texturePoolHash = 0;
+      textureMeans.clear();
+      break;
+    default:
+      CANDELA_DCHECK(!"clearGroup: not a group kept by content");
   }
 }
 

@@ -23,7 +23,7 @@ struct BvhStats {
 struct SceneData {
   CANDELA_SCENE_ARRAYS(CANDELA_OWNED_ARRAY)
   uint32_t firstTriangleLight = 0;
-  bool sampleEveryLight = false;
+  bool lonePointLight = false;
   float environmentShare = 0.0f;
   Environment environment;
   // A hash of the bounds and powers of the lights the light tree was built over (0: no tree): a
@@ -35,8 +35,8 @@ struct SceneData {
   // (sin theta weighted), host only.
   uint64_t environmentMapHash = 0;
   Vec3 environmentMapMean;
-  // Of the content hashes of the textures in the pool (host only): a frame with the same
-  // textures keeps the pool.
+  // Of the content hashes of the textures in the pool: a frame with the same textures keeps the
+  // pool, and so does the GPU (RewrittenBy).
   uint64_t texturePoolHash = 0;
   // The mean linear colour of each emission texture (host only; -1 where not taken yet): what a
   // textured emitter's power weighs. Taken when a material first emits by the texture, and kept

@@ -47,9 +47,9 @@ struct SceneView : GeometryView {
   CANDELA_SHADING_ARRAYS(CANDELA_VIEW_ARRAY_FIELDS)
 
   uint32_t firstTriangleLight = 0;  // lights from here on are triangles (see lightOfPrimitive)
-  // Whether next-event estimation samples every light at each shading point rather than one
-  // picked (render/light.h, sampleEveryLight).
-  bool sampleEveryLight = false;
+  // Whether the scene's one light is a point light, which next-event estimation samples without
+  // a pick (render/light.h, isLonePointLight).
+  bool lonePointLight = false;
   // The share of picks that go to the environment light; the light tree has the rest.
   float environmentShare = 0.0f;
   Environment environment;

@@ -221,11 +221,11 @@ void addEmitterLights(SceneData& s, PreviousLights* previous) {
       s.lights.push_back(light);
     }
   }
-  s.sampleEveryLight = sampleEveryLight(s.lights.data(), s.lights.size());
+  s.lonePointLight = isLonePointLight(s.lights.data(), s.lights.size());
   s.lightTree.clear();
   s.lightTreeHash = 0;
   s.environmentShare = 0.0f;
-  if (s.sampleEveryLight) return;
+  if (s.lonePointLight) return;
   // The environment takes half the picks beside other lights (as pbrt-v4's BVHLightSampler
   // does): a power estimated through the scene's bounding sphere grows with the square of the
   // scene's size, and a ground sphere of radius 1000 once made it a million times a lamp's.

@@ -9,10 +9,11 @@
 // transforms changed (objects, spheres or sphere lights moved, turned, scaled or resized, with
 // the same meshes), the vertices are transformed again and the BVH is
 // refitted in linear time, unless refitting has made the tree's SAH cost grow past
-// kRefitCostLimit times that of its last build: then, as for any other change, the frame is
-// flattened afresh with a new BVH. Textures enter the keys by their content hashes: a frame with
-// other texels is a new structure. Whatever the change, a frame keeps the last frame's texture
-// pool, environment map arrays and light tree where its textures, map and lights are the same.
+// kRefitCostLimit times that of its last build: then a new BVH is built over the contents the
+// frame has just flattened, as for any other change. Textures enter the keys by their content
+// hashes: a frame with other texels is a new structure. Whatever the change, a frame keeps the last
+// frame's texture pool, environment map arrays and light tree where its textures, map and lights
+// are the same.
 #pragma once
 
 #include <string>

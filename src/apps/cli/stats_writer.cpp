@@ -13,7 +13,7 @@ namespace candela::cli {
 namespace {
 
 // JSON has no inf or nan; a rate over a zero time is written as 0.
-double finite(double v) { return std::isfinite(v) ? v : 0.0; }
+double finiteOrZero(double v) { return std::isfinite(v) ? v : 0.0; }
 
 template <class T>
 uint64_t bytesOf(const std::vector<T>& v) {
@@ -55,11 +55,11 @@ std::string renderStatsJson(const RenderStats& info, const SceneData& scene,
   o["integrator"] = s.integrator == IntegratorType::Direct ? "direct" : "path";
   o["antialiasing"] = s.antialiasing;
   o["use_bvh"] = info.useBvh;
-  o["load_seconds"] = finite(info.loadSeconds);
-  o["flatten_seconds"] = finite(info.flattenSeconds);
+  o["load_seconds"] = finiteOrZero(info.loadSeconds);
+  o["flatten_seconds"] = finiteOrZero(info.flattenSeconds);
   o["engine"] = info.acceleration.engine;
-  o["bvh_build_seconds"] = finite(buildSeconds);
-  o["bvh_mtris_per_second"] = finite(rate(double(triangles), buildSeconds) / 1e6);
+  o["bvh_build_seconds"] = finiteOrZero(buildSeconds);
+  o["bvh_mtris_per_second"] = finiteOrZero(rate(double(triangles), buildSeconds) / 1e6);
   o["triangles"] = triangles;
   o["spheres"] = uint64_t(scene.spheres.size());
   o["bvh_nodes"] = scene.bvh.nodeCount;
@@ -68,15 +68,15 @@ std::string renderStatsJson(const RenderStats& info, const SceneData& scene,
   o["memory_bytes"] = {{"nodes", nodes},     {"prim_indices", prims}, {"positions", positions},
                        {"normals", normals}, {"triangles", tris},     {"engine", engine},
                        {"total", total}};
-  o["bytes_per_triangle"] = finite(triangles ? double(total) / double(triangles) : 0);
-  o["render_seconds"] = finite(result.seconds);
+  o["bytes_per_triangle"] = finiteOrZero(triangles ? double(total) / double(triangles) : 0);
+  o["render_seconds"] = finiteOrZero(result.seconds);
   o["samples"] = samples;
-  o["samples_per_second"] = finite(rate(double(samples), result.seconds));
+  o["samples_per_second"] = finiteOrZero(rate(double(samples), result.seconds));
   o["rays"] = {{"camera", result.rays.camera},
                {"bounce", result.rays.bounce},
                {"shadow", result.rays.shadow},
                {"total", result.rays.total()}};
-  o["rays_per_second"] = finite(rate(double(result.rays.total()), result.seconds));
+  o["rays_per_second"] = finiteOrZero(rate(double(result.rays.total()), result.seconds));
   o["peak_rss_bytes"] = peakRssBytes();
   // A scene path need not be UTF-8: its bad bytes become U+FFFD rather than an exception.
   return o.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";
