@@ -9,16 +9,18 @@ glass, emissive); this adds the fields of issue 20 and then hands over to tools/
 
 Mapping (docs/scene-format.md, Materials), every opaque material wrapped in `twosided` as the
 harness does for diffuse, since candela's reflect on both sides:
-  conductor, roughness 0      -> conductor, material "none" + specular_reflectance = color,
-                                 or material = metal
-  conductor, roughness r > 0  -> roughconductor, distribution ggx, alpha = r^2, the same
-  glass, roughness r > 0      -> roughdielectric, ggx, alpha = r^2, int_ior = ior, ext_ior 1,
-                                 specular_transmittance = color
-  plastic, roughness 0        -> plastic, int_ior = ior, ext_ior 1, diffuse_reflectance = color,
-                                 nonlinear false
-  plastic, roughness r > 0    -> roughplastic, ggx, alpha = r^2, the same
-  {"texture": T, "scale": [su, sv]} as a colour (spheres only: the harness builds meshes without
-  texture coordinates) -> a bilinear, repeating `bitmap` of T mirrored left to right, with to_uv
+  conductor, roughness 0     -> conductor, material "none" + specular_reflectance = color,
+                                or material = metal
+  conductor, roughness r     -> roughconductor, distribution ggx, alpha = r^2, the same
+  glass, roughness r         -> roughdielectric, ggx, alpha = r^2, int_ior = ior, ext_ior 1,
+                                specular_transmittance = color
+  plastic, roughness 0       -> plastic, int_ior = ior, ext_ior 1, diffuse_reflectance = color,
+                                nonlinear false
+  plastic, roughness r       -> roughplastic, ggx, alpha = r^2, the same
+  (a roughness r > 0 whose alpha = r^2 is below 0.001 is smooth in candela, docs/scene-format.md's
+  Roughness, so it maps as roughness 0)
+  {"texture": T, "scale": [su, sv]} as a colour on a sphere (tools/mitsuba_mtl.py maps it on
+  meshes, whose uvs the harness does not read) -> a bilinear, repeating `bitmap` of T mirrored left to right, with to_uv
   scaling by (su, sv), on a sphere turned so that Mitsuba's parametrisation (u = atan2(y, x) /
   2 pi, v = acos(z) / pi about local +z, v = 0 on the image's top row) becomes candela's (u =
   0.5 + atan2(d.x, -d.z) / 2 pi, v = 1 - acos(d.y) / pi, v = 0 on the bottom row). Integer scales
@@ -93,22 +95,23 @@ def make_mat(ctx, t, fields, path):
 def bsdf_dict(mat):
     t, r = mat['type'], mat.get('roughness', 0.0)
     alpha = r * r
+    rough = alpha >= 0.001  # candela's smooth cutoff (render/microfacet.h)
     if t == 'conductor':
         if mat['metal']:
             d = {'material': mat['metal']}
         else:
             d = {'material': 'none', 'specular_reflectance': spectrum(mat['color'])}
         d['type'] = 'conductor'
-        if r > 0:
+        if rough:
             d.update(type='roughconductor', distribution='ggx', alpha=alpha)
         return {'type': 'twosided', 'bsdf': d}
     if t == 'plastic':
         d = {'type': 'plastic', 'int_ior': float(mat['ior']), 'ext_ior': 1.0,
              'diffuse_reflectance': spectrum(mat['color']), 'nonlinear': False}
-        if r > 0:
+        if rough:
             d.update(type='roughplastic', distribution='ggx', alpha=alpha)
         return {'type': 'twosided', 'bsdf': d}
-    if t == 'glass' and r > 0:
+    if t == 'glass' and rough:
         return {'type': 'roughdielectric', 'distribution': 'ggx', 'alpha': alpha,
                 'int_ior': float(mat['ior']), 'ext_ior': 1.0,
                 'specular_transmittance': mr.rgb(mat['color'])}

@@ -204,7 +204,7 @@ def load_mtl(path, ctx, jpath):
             tok = line.split()
             kw, rest = tok[0], line[len(tok[0]):].strip()
             if kw == 'newmtl':
-                cur = line[7:]
+                cur = rest
                 raw[cur] = {}
             elif cur is not None:
                 raw[cur][kw] = (rest, f'{os.path.basename(path)}:{ln}', tok)
@@ -311,12 +311,15 @@ def load_obj(path, ctx, jpath):
     mtl = {}
     cur = None
     with open(path, errors='replace') as fh:
-        for ln, line in enumerate(fh, 1):
-            line = line.split('#', 1)[0].strip()
+        for ln, raw_line in enumerate(fh, 1):
+            line = raw_line.split('#', 1)[0].strip()
             if not line:
                 continue
             tok = line.split()
             kw = tok[0]
+            if kw == 'usemtl':  # a material's name may hold a '#'
+                cur = raw_line.strip()[len(kw):].strip() or None
+                continue
             try:
                 if kw == 'v':
                     if len(tok) < 4:
@@ -353,8 +356,6 @@ def load_obj(path, ctx, jpath):
                 elif kw == 'mtllib':
                     for name in tok[1:]:
                         mtl.update(load_mtl(os.path.join(os.path.dirname(path), name), ctx, jpath))
-                elif kw == 'usemtl':
-                    cur = line.split(None, 1)[1].strip() if len(tok) > 1 else None
             except (ValueError, IndexError) as e:
                 ctx.err(jpath, f'{path}:{ln}: malformed OBJ line {line!r} ({e})')
     return (np.array(V, float).reshape(-1, 3), np.array(VN, float).reshape(-1, 3),
