@@ -317,8 +317,9 @@ def load_obj(path, ctx, jpath):
                 continue
             tok = line.split()
             kw = tok[0]
-            if kw == 'usemtl':  # a material's name may hold a '#'
-                cur = raw_line.strip()[len(kw):].strip() or None
+            if kw == 'usemtl':  # as tinyobjloader: the next word, '#' and all
+                words = raw_line.split()
+                cur = words[1] if len(words) > 1 else None
                 continue
             try:
                 if kw == 'v':
