@@ -26,7 +26,9 @@ harness does for diffuse, since candela's reflect on both sides:
   0.5 + atan2(d.x, -d.z) / 2 pi, v = 1 - acos(d.y) / pi, v = 0 on the bottom row). Integer scales
   only: the mirroring and the turn agree with candela's lookup up to whole repeats.
 """
+import atexit
 import os
+import shutil
 import sys
 import tempfile
 
@@ -43,7 +45,9 @@ harness_bsdf_dict = mr.bsdf_dict
 
 
 WORK = tempfile.mkdtemp(prefix='candela_mitsuba_textures_')
+atexit.register(shutil.rmtree, WORK, True)
 mirrored = {}
+SMOOTH_ALPHA = 0.001  # candela: alpha below this (roughness < 0.032) is smooth (render/microfacet.h)
 
 
 def colour(ctx, fields, default, path):
@@ -95,7 +99,7 @@ def make_mat(ctx, t, fields, path):
 def bsdf_dict(mat):
     t, r = mat['type'], mat.get('roughness', 0.0)
     alpha = r * r
-    rough = alpha >= 0.001  # candela's smooth cutoff (render/microfacet.h)
+    rough = alpha >= SMOOTH_ALPHA
     if t == 'conductor':
         if mat['metal']:
             d = {'material': mat['metal']}

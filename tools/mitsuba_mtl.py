@@ -69,9 +69,7 @@ np, mi = mr.np, mr.mi
 
 WORK = tempfile.mkdtemp(prefix='candela_mitsuba_mtl_')
 atexit.register(shutil.rmtree, WORK, True)
-atexit.register(shutil.rmtree, mitsuba_materials.WORK, True)   # which it leaves behind itself
 _copies = {}
-SMOOTH_ALPHA = 0.001      # candela: alpha below this (roughness < 0.032) is a smooth surface
 
 
 # ----------------------------------------------------------------------------------------------
@@ -261,7 +259,7 @@ def load_mtl(path, ctx, jpath):
             if not (math.isfinite(ns) and ns >= 0):
                 ctx.err(jpath, f'{st["Ns"][1]}: expected a finite, non-negative Ns')
             alpha = min(1.0, math.sqrt(2.0 / (ns + 2.0)))
-            r = 0.0 if alpha < SMOOTH_ALPHA else math.sqrt(alpha)
+            r = 0.0 if alpha < mitsuba_materials.SMOOTH_ALPHA else math.sqrt(alpha)
             if has_diffuse:
                 ni = real('Ni', 1.0)
                 mat = dict(type='plastic', roughness=r, color=color,

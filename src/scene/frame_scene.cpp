@@ -63,7 +63,7 @@ const SceneData& FrameScene::prepare(const SceneDesc& desc, const FlowMotion* fl
     refreshSceneValues(data_, desc);
     change_ = SceneChange::Values;
   } else {
-    bool refitted = false, rebuilt = false;
+    bool refitted = false;
     const bool sameStructure = !structureKey_.empty() && structure == structureKey_;
     // data_ is taken apart below: should anything throw, the next frame must not reuse it.
     geometryKey_.clear();
@@ -91,15 +91,12 @@ const SceneData& FrameScene::prepare(const SceneDesc& desc, const FlowMotion* fl
       } else {  // the refitted tree degraded: a new one over the same contents
         moved.triangles = std::move(fileOrder);
         addBvhAndLights(moved, desc.ownBvh, &previous);
-        builtCost_ = bvhSahCost(moved.nodes);
       }
       data_ = std::move(moved);
-      rebuilt = !refitted;
-    }
-    if (!refitted && !rebuilt) {
+    } else {
       data_ = flattenScene(desc, &data_, &previous);
-      builtCost_ = bvhSahCost(data_.nodes);
     }
+    if (!refitted) builtCost_ = bvhSahCost(data_.nodes);
     change_ = refitted ? SceneChange::Motion : SceneChange::Structure;
     geometryKey_ = std::move(geometry);
     structureKey_ = std::move(structure);
