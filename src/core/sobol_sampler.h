@@ -125,6 +125,7 @@ CANDELA_HDI float bitsToUnitFloat(uint32_t bits) {
 // The random numbers of one (seed, pixel, sample) among spp samples of that pixel.
 class SampleStream {
  public:
+  SampleStream() = default;
   CANDELA_HDI SampleStream(uint64_t seed, uint64_t pixelIndex, uint32_t sampleIndex, uint32_t spp)
       : pixelKey_(mix64(mix64(seed ^ 0x6a09e667f3bcc909ull) ^ pixelIndex)),
         sampleIndex_(sampleIndex),

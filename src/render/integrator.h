@@ -97,10 +97,12 @@ CANDELA_HDI Vec3 estimateDirect(const SceneView& scene, const Tracer& tracer, co
 // Radiance arriving at the camera along `ray` (one sample). With kAovs, `first` (zeroed by the
 // caller) also receives the sample's first hit and albedo (render/aov.h); that work is compiled
 // only into the kAovs instance, and it draws no random numbers, so the radiance is the same.
+// `cameraHit`, where given, is what tracer.closest answers for `ray` (invalid for a miss),
+// found already by a packet of camera rays (render/render_pixel.h).
 template <bool kAovs = false, class Tracer>
 CANDELA_HDI Vec3 traceRadiance(const SceneView& scene, const Tracer& tracer, Ray ray,
-                               SampleStream& rng, RayCounters& counters,
-                               FirstHit* first = nullptr) {
+                               SampleStream& rng, RayCounters& counters, FirstHit* first = nullptr,
+                               const Hit* cameraHit = nullptr) {
   Vec3 radiance(0.0f), throughput(1.0f);
   uint32_t maxDepth = scene.settings.maxDepth;
   bool specularBounce = true;  // the camera counts as specular: emitters seen directly count fully
@@ -112,7 +114,14 @@ CANDELA_HDI Vec3 traceRadiance(const SceneView& scene, const Tracer& tracer, Ray
 
   for (uint32_t depth = 1;; ++depth) {
     Hit hit;
-    if (!tracer.closest(ray, &hit)) {
+    bool found;
+    if (depth == 1 && cameraHit) {
+      hit = *cameraHit;
+      found = hit.valid();
+    } else {
+      found = tracer.closest(ray, &hit);
+    }
+    if (!found) {
       const int32_t light = specularBounce ? -1 : scene.environment.light;
       const float weight =
           light < 0 ? 1.0f
