@@ -118,10 +118,11 @@ TEST(Embree, HitsMatchBruteForceRayByRay) {
   }
 }
 
-// A packet of camera rays (closestPacket) finds what the rays find one at a time: bundles of 1 to
-// 16 nearly parallel rays from one point, as a pixel's samples are, and bundles of unrelated
-// rays, some cut short by tMax, one not finite, over spheres in blocks and in their BVH.
-TEST(Embree, PacketHitsMatchRayByRay) {
+// Packets of rays (closestPacket, occludedPacket) find what the rays find one at a time: bundles
+// of 1 to 16 nearly parallel rays from one point, as a pixel's camera rays are, and bundles of
+// unrelated rays, some cut short by tMax, one not finite, over spheres in blocks and in their
+// BVH; shadow rays skip nothing, the primitive they hit first, or a random one.
+TEST(Embree, PacketQueriesMatchRayByRay) {
   for (uint32_t seed : {5u, 6u}) {
     const SceneData scene = randomScene(seed, seed == 6 ? 10 : 40);
     EmbreeScene embree;
@@ -129,13 +130,13 @@ TEST(Embree, PacketHitsMatchRayByRay) {
     const EmbreeTracer tracer = embree.tracer();
     std::mt19937 gen(seed + 200);
     std::uniform_real_distribution<float> u(-5.0f, 5.0f), jitter(-0.02f, 0.02f);
-    int hits = 0;
+    int hits = 0, blocks = 0;
     for (int bundle = 0; bundle < 300; ++bundle) {
-      const uint32_t n = 1 + uint32_t(bundle) % EmbreeTracer::kCameraPacket;
+      const uint32_t n = 1 + uint32_t(bundle) % EmbreeTracer::kPacketWidth;
       const bool coherent = bundle % 2 == 0;
       const Vec3 origin(u(gen), u(gen), u(gen));
       const Vec3 axis = test::randomUnitVector(gen);
-      Ray rays[EmbreeTracer::kCameraPacket];
+      Ray rays[EmbreeTracer::kPacketWidth];
       for (uint32_t i = 0; i < n; ++i) {
         rays[i].origin = coherent ? origin : Vec3(u(gen), u(gen), u(gen));
         rays[i].direction = coherent ? axis + Vec3(jitter(gen), jitter(gen), jitter(gen))
@@ -143,7 +144,7 @@ TEST(Embree, PacketHitsMatchRayByRay) {
         if (i % 5 == 3) rays[i].tMax = 2.0f;
       }
       if (bundle % 7 == 0) rays[n - 1].direction = Vec3(std::nanf(""), 0.0f, 1.0f);
-      Hit packet[EmbreeTracer::kCameraPacket];
+      Hit packet[EmbreeTracer::kPacketWidth];
       tracer.closestPacket(rays, n, packet);
       for (uint32_t i = 0; i < n; ++i) {
         Hit single;
@@ -157,8 +158,22 @@ TEST(Embree, PacketHitsMatchRayByRay) {
           EXPECT_NEAR(packet[i].b2, single.b2, 1e-5f);
         }
       }
+      uint32_t skip[EmbreeTracer::kPacketWidth];
+      for (uint32_t i = 0; i < n; ++i) {
+        skip[i] = kNone;
+        if (i % 3 == 1 && packet[i].valid()) skip[i] = packet[i].prim;
+        if (i % 3 == 2) skip[i] = uint32_t(gen() % scene.view().primitiveCount());
+      }
+      bool blocked[EmbreeTracer::kPacketWidth];
+      tracer.occludedPacket(rays, skip, n, blocked);
+      for (uint32_t i = 0; i < n; ++i) {
+        const bool single = tracer.occluded(rays[i], skip[i]);
+        blocks += single;
+        EXPECT_EQ(blocked[i], single) << "bundle " << bundle << " ray " << i;
+      }
     }
     EXPECT_GT(hits, 500) << "seed " << seed;
+    EXPECT_GT(blocks, 300) << "seed " << seed;
   }
 }
 
@@ -207,7 +222,8 @@ RenderResult renderWith(CpuEngine engine, const SceneDesc& scene) {
 
 // Both engines trace the same sample streams; paths part only where a hit point differs by
 // rounding, so the images differ by far less than the noise of one seed against another. At 20
-// spp a pixel's camera rays go to Embree as a packet of 16 and one of 4.
+// spp a pixel's camera rays go to Embree as a packet of 16 and one of 4, and so do the shadow
+// rays from their first hits (the scene's four lights are few enough: render/render_pixel.h).
 TEST(Embree, RendersTheSameImageAsTheOwnBvhUpToRounding) {
   const std::string dir = std::string(CANDELA_SOURCE_DIR) + "/scenes/meshes/cornell/";
   const std::string json = R"({"camera": {"width": 48, "height": 40, "fov": 40, "spp": 20,
@@ -224,8 +240,7 @@ TEST(Embree, RendersTheSameImageAsTheOwnBvhUpToRounding) {
                            dir + R"(red.obj", "color": [0.6, 0.1, 0.1]},
                 {"file": ")" +
                            dir + R"(lamp.obj", "material": {"type": "emissive",
-                 "radiance": [17, 12, 4]}}],
-    "lights": [{"position": [2.78, 5.0, 2.7], "intensity": 3}]})";
+                 "radiance": [17, 12, 4]}}]})";
   SceneDesc scene = parseSceneText(json, "test.json", ".");
   const ImageRGB own = renderWith(CpuEngine::Bvh, scene).image;
   const ImageRGB embree = renderWith(CpuEngine::Embree, scene).image;

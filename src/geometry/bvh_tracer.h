@@ -6,8 +6,10 @@
 //   occluded(ray, skip)  whether anything but primitive `skip` blocks the ray, as intersectAny.
 // Any engine with that pair (the CPU's Embree tracer, backends/cpu/embree_tracer.h) renders the
 // same image up to rounding, with the primitive numbering of geometry/geometry_view.h. An engine
-// whose kCameraPacket exceeds 1 also answers closestPacket(rays, n, hits), closest for up to
-// that many rays at once, which a pixel's camera rays go through (render/render_pixel.h).
+// whose kPacketWidth exceeds 1 also answers closestPacket(rays, n, hits) and
+// occludedPacket(rays, skipPrims, n, blocked), the same queries for up to that many rays at
+// once, which a pixel's camera rays and their first shadow rays go through
+// (render/render_pixel.h).
 #pragma once
 
 #include "geometry/bvh_traverse.h"
@@ -15,7 +17,7 @@
 namespace candela {
 
 struct BvhTracer {
-  static constexpr uint32_t kCameraPacket = 1;  // every ray alone
+  static constexpr uint32_t kPacketWidth = 1;  // every ray alone
   const GeometryView* geometry;
 
   CANDELA_HDI bool closest(const Ray& ray, Hit* hit) const {

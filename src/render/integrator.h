@@ -36,29 +36,38 @@ CANDELA_HDI_ALWAYS Ray spawnRay(const SurfacePoint& sp, const Vec3& wi) {
   return r;
 }
 
-// Direct light at a point with a smooth BSDF lobe from one light, by one shadow ray, weighted by
-// the probability selectPmf of sampling that light. `tracer` answers the ray queries
-// (geometry/bvh_tracer.h).
-template <class Tracer>
-CANDELA_HDI Vec3 sampleOneLight(const SceneView& scene, const Tracer& tracer, const Light& light,
-                                float selectPmf, const Bsdf& bsdf, const SurfacePoint& sp, float u1,
-                                float u2, RayCounters& counters) {
+// The shadow ray that next-event estimation asks for at an interaction, and the radiance it adds
+// to the path when nothing but primitive skipPrim blocks it. The integrator leaves tracing it to
+// its caller, so that a caller holding several paths can trace theirs together.
+struct ShadowQuery {
+  Ray ray;
+  uint32_t skipPrim = 0xffffffffu;
+  Vec3 contribution;  // the path's throughput times the light's weighted share
+  bool active = false;
+};
+
+// Direct light at a point with a smooth BSDF lobe from one light, as the shadow ray `*shadow`
+// whose contribution is throughput times the light's share, weighted by the probability
+// selectPmf of sampling that light; no query where the light shows the point nothing.
+CANDELA_HDI void sampleOneLight(const SceneView& scene, const Light& light, float selectPmf,
+                                const Bsdf& bsdf, const SurfacePoint& sp, float u1, float u2,
+                                const Vec3& throughput, ShadowQuery* shadow) {
   LightSample ls;
-  if (!sampleLight(scene, light, sp.p, u1, u2, &ls)) return Vec3(0.0f);
+  if (!sampleLight(scene, light, sp.p, u1, u2, &ls)) return;
   float bsdfPdf;
   const Vec3 f = evalBsdf(bsdf, ls.wi, &bsdfPdf);
-  if (isBlack(f)) return Vec3(0.0f);
-  Ray shadow = spawnRay(sp, ls.wi);
+  if (isBlack(f)) return;
+  shadow->ray = spawnRay(sp, ls.wi);
   // The environment lies beyond everything: nothing short of infinity may block it.
   if (ls.distance < kInfinity) {
     const Vec3 target = sp.p + ls.wi * ls.distance;
-    shadow.tMax = length(target - shadow.origin) * (1.0f - kShadowEpsilon);
+    shadow->ray.tMax = length(target - shadow->ray.origin) * (1.0f - kShadowEpsilon);
   }
-  ++counters.shadow;
-  if (tracer.occluded(shadow, lightPrimitive(scene, light))) return Vec3(0.0f);
+  shadow->skipPrim = lightPrimitive(scene, light);
   const float lightPdf = selectPmf * ls.pdf;
   const float weight = ls.isDelta ? 1.0f : powerHeuristic(lightPdf, bsdfPdf);
-  return f * ls.radiance * (weight / lightPdf);
+  shadow->contribution = throughput * (f * ls.radiance * (weight / lightPdf));
+  shadow->active = true;
 }
 
 // The two numbers a light sample of `light` uses, from the stream's next dimension. A point
@@ -69,144 +78,176 @@ CANDELA_HDI void drawLightNumbers(SampleStream& rng, const Light& light, float* 
 }
 
 // Direct light at a point with a smooth BSDF lobe, whose reflecting hemisphere is around
-// `hemisphere` (reflectingHemisphere: zero where the surface also transmits): from the scene's
-// lone point light (render/light.h, isLonePointLight), else from one light picked by its
-// importance here (render/light_selection.h).
-template <class Tracer>
-CANDELA_HDI Vec3 estimateDirect(const SceneView& scene, const Tracer& tracer, const Bsdf& bsdf,
-                                const Vec3& hemisphere, const SurfacePoint& sp, SampleStream& rng,
-                                RayCounters& counters) {
+// `hemisphere` (reflectingHemisphere: zero where the surface also transmits), as a shadow query
+// (sampleOneLight): from the scene's lone point light (render/light.h, isLonePointLight), else
+// from one light picked by its importance here (render/light_selection.h).
+CANDELA_HDI void estimateDirect(const SceneView& scene, const Bsdf& bsdf, const Vec3& hemisphere,
+                                const SurfacePoint& sp, const Vec3& throughput, SampleStream& rng,
+                                ShadowQuery* shadow) {
   // One dimension for the lone point light, or two for a picked one (the pick and its light's
   // sample), whatever the geometry, so the stream's layout never depends on it.
   float u1 = 0.0f, u2 = 0.0f;
   if (scene.lonePointLight) {
     drawLightNumbers(rng, scene.lights[0], &u1, &u2);
-    return sampleOneLight(scene, tracer, scene.lights[0], 1.0f, bsdf, sp, u1, u2, counters);
+    sampleOneLight(scene, scene.lights[0], 1.0f, bsdf, sp, u1, u2, throughput, shadow);
+    return;
   }
   const float uLight = rng.next1D();
   float selectPmf;
   const int index = selectLight(scene, sp.p, hemisphere, uLight, &selectPmf);
   if (index < 0) {
     rng.skip();
-    return Vec3(0.0f);
+    return;
   }
   drawLightNumbers(rng, scene.lights[index], &u1, &u2);
-  return sampleOneLight(scene, tracer, scene.lights[index], selectPmf, bsdf, sp, u1, u2, counters);
+  sampleOneLight(scene, scene.lights[index], selectPmf, bsdf, sp, u1, u2, throughput, shadow);
 }
 
-// Radiance arriving at the camera along `ray` (one sample). With kAovs, `first` (zeroed by the
-// caller) also receives the sample's first hit and albedo (render/aov.h); that work is compiled
-// only into the kAovs instance, and it draws no random numbers, so the radiance is the same.
-// `cameraHit`, where given, is what tracer.closest answers for `ray` (invalid for a miss),
-// found already by a packet of camera rays (render/render_pixel.h).
-template <bool kAovs = false, class Tracer>
-CANDELA_HDI Vec3 traceRadiance(const SceneView& scene, const Tracer& tracer, Ray ray,
-                               SampleStream& rng, RayCounters& counters, FirstHit* first = nullptr,
-                               const Hit* cameraHit = nullptr) {
-  Vec3 radiance(0.0f), throughput(1.0f);
-  uint32_t maxDepth = scene.settings.maxDepth;
+// A path between its interactions: what it has gathered and what it carries to the next.
+struct PathState {
+  Vec3 radiance = Vec3(0.0f), throughput = Vec3(1.0f);
+  Ray ray;             // towards the next interaction
+  uint32_t depth = 1;  // of the next interaction
+  uint32_t maxDepth = 0;
   bool specularBounce = true;  // the camera counts as specular: emitters seen directly count fully
   float bsdfPdf = 0.0f;        // pdf of the last non-delta bounce, for MIS on area lights
   // The product of eta^2 over the transmissions so far: Russian roulette judges the throughput
   // without the 1 / eta^2 radiance scaling, which says nothing about the path's worth.
   float etaScale = 1.0f;
-  Vec3 bouncePoint(0.0f), bounceHemisphere(0.0f);  // the last bounce's, for the light's pmf
+  Vec3 bouncePoint = Vec3(0.0f), bounceHemisphere = Vec3(0.0f);  // the last bounce's
 
-  for (uint32_t depth = 1;; ++depth) {
-    Hit hit;
-    bool found;
-    if (depth == 1 && cameraHit) {
-      hit = *cameraHit;
-      found = hit.valid();
-    } else {
-      found = tracer.closest(ray, &hit);
-    }
-    if (!found) {
-      const int32_t light = specularBounce ? -1 : scene.environment.light;
-      const float weight =
-          light < 0 ? 1.0f
-                    : powerHeuristic(bsdfPdf, lightSelectPmf(scene, uint32_t(light), bouncePoint,
-                                                             bounceHemisphere) *
-                                                  environmentPdf(scene, ray.direction));
-      radiance += throughput * environmentRadiance(scene, ray.direction) * weight;
-      break;
-    }
-    const SurfacePoint sp = surfaceAt(scene, ray, hit);
-    CANDELA_DCHECK(sp.material < scene.materialCount);
-    const Material& m = scene.materials[sp.material];
-    const Vec3 wo = -ray.direction;
-    [[maybe_unused]] bool albedoHere = false;  // the albedo pass takes this surface's colour
-    if constexpr (kAovs) {
-      if (depth == 1) {
-        first->hit = true;
-        first->position = sp.p;
-        first->normal = facingNormal(wo, sp.ng, sp.ns);
-        first->material = sp.material;
-      }
-      if (!first->albedoDone && (isEmissive(m) || hasSmoothLobe(m))) {
-        first->albedoDone = true;
-        if (isEmissive(m))
-          first->albedo = dot(wo, sp.ng) > 0.0f ? clampUnit(m.radiance) : Vec3(0.0f);
-        else
-          albedoHere = true;  // from the surface colour below, looked up once
-      }
-    }
+  PathState() = default;
+  CANDELA_HDI PathState(const SceneView& scene, const Ray& cameraRay)
+      : ray(cameraRay), maxDepth(scene.settings.maxDepth) {}
+};
 
-    if (isEmissive(m)) {
-      if (dot(wo, sp.ng) > 0.0f) {  // emitters emit from their outside only
-        float weight = 1.0f;
-        const int32_t light = specularBounce ? -1 : lightOfPrimitive(scene, hit.prim);
-        if (light >= 0) {
-          const float selectPmf =
-              lightSelectPmf(scene, uint32_t(light), bouncePoint, bounceHemisphere);
-          weight = powerHeuristic(bsdfPdf,
-                                  selectPmf * emitterPdf(scene, scene.lights[light], bouncePoint,
-                                                         ray.direction, hit.t, sp.ng));
-        }
-        radiance += throughput * surfaceRadiance(scene, m, hit, sp) * weight;
-      }
-      break;
-    }
-    if (depth > maxDepth) {
-      if constexpr (kAovs)
-        if (albedoHere) first->albedo = aovAlbedo(m, surfaceColor(scene, m, hit, sp));
-      break;
-    }
-
-    const Vec3 color = surfaceColor(scene, m, hit, sp);
-    if constexpr (kAovs)
-      if (albedoHere) first->albedo = aovAlbedo(m, color);
-    const Bsdf bsdf = makeBsdf(m, color, wo, sp.ng, sp.ns);
-    const Vec3 hemisphere = reflectingHemisphere(bsdf);
-    if (hasSmoothLobe(m)) {
-      radiance += throughput * estimateDirect(scene, tracer, bsdf, hemisphere, sp, rng, counters);
-      // "direct": the scattered ray below only gathers emission; nothing scatters after it.
-      if (scene.settings.integrator == IntegratorType::Direct) maxDepth = depth;
-    }
-
-    if (depth == maxDepth && !scene.emissionReachable) break;
-
-    const float uc = usesLobeChoice(m) ? rng.next1D() : 0.0f;
-    float u1, u2;
-    rng.next2D(&u1, &u2);
-    BsdfSample bs;
-    if (!sampleBsdf(bsdf, uc, u1, u2, &bs)) break;
-    throughput *= bs.weight;
-    etaScale *= bs.eta * bs.eta;
-    specularBounce = bs.delta;
-    bsdfPdf = bs.pdf;
-    bouncePoint = sp.p;
-    bounceHemisphere = hemisphere;
-
-    if (depth >= kRouletteDepth) {
-      const float survive = minf(0.95f, maxComponent(throughput) * etaScale);
-      if (rng.next1D() >= survive) break;
-      throughput /= survive;
-    }
-    ray = spawnRay(sp, bs.wi);
-    ++counters.bounce;
+// Interaction path->depth, where path->ray found `hit` (`found` false: it left the scene): adds
+// what it sees there to path->radiance, leaves next-event estimation's shadow ray in *shadow
+// (inactive when there is none) for the caller to trace, and scatters path->ray onwards. False
+// when the path ends here (its shadow query still counts). With kAovs, `first` (zeroed by the
+// caller) also receives the sample's first hit and albedo (render/aov.h); that work is compiled
+// only into the kAovs instance, and it draws no random numbers, so the radiance is the same.
+template <bool kAovs>
+CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool found,
+                                 const Hit& hit, SampleStream& rng, RayCounters& counters,
+                                 FirstHit* first, ShadowQuery* shadow) {
+  PathState& st = *path;
+  const uint32_t depth = st.depth++;
+  if (!found) {
+    const int32_t light = st.specularBounce ? -1 : scene.environment.light;
+    const float weight =
+        light < 0 ? 1.0f
+                  : powerHeuristic(st.bsdfPdf, lightSelectPmf(scene, uint32_t(light),
+                                                              st.bouncePoint, st.bounceHemisphere) *
+                                                   environmentPdf(scene, st.ray.direction));
+    st.radiance += st.throughput * environmentRadiance(scene, st.ray.direction) * weight;
+    return false;
   }
-  return radiance;
+  const SurfacePoint sp = surfaceAt(scene, st.ray, hit);
+  CANDELA_DCHECK(sp.material < scene.materialCount);
+  const Material& m = scene.materials[sp.material];
+  const Vec3 wo = -st.ray.direction;
+  [[maybe_unused]] bool albedoHere = false;  // the albedo pass takes this surface's colour
+  if constexpr (kAovs) {
+    if (depth == 1) {
+      first->hit = true;
+      first->position = sp.p;
+      first->normal = facingNormal(wo, sp.ng, sp.ns);
+      first->material = sp.material;
+    }
+    if (!first->albedoDone && (isEmissive(m) || hasSmoothLobe(m))) {
+      first->albedoDone = true;
+      if (isEmissive(m))
+        first->albedo = dot(wo, sp.ng) > 0.0f ? clampUnit(m.radiance) : Vec3(0.0f);
+      else
+        albedoHere = true;  // from the surface colour below, looked up once
+    }
+  }
+
+  if (isEmissive(m)) {
+    if (dot(wo, sp.ng) > 0.0f) {  // emitters emit from their outside only
+      float weight = 1.0f;
+      const int32_t light = st.specularBounce ? -1 : lightOfPrimitive(scene, hit.prim);
+      if (light >= 0) {
+        const float selectPmf =
+            lightSelectPmf(scene, uint32_t(light), st.bouncePoint, st.bounceHemisphere);
+        weight = powerHeuristic(st.bsdfPdf,
+                                selectPmf * emitterPdf(scene, scene.lights[light], st.bouncePoint,
+                                                       st.ray.direction, hit.t, sp.ng));
+      }
+      st.radiance += st.throughput * surfaceRadiance(scene, m, hit, sp) * weight;
+    }
+    return false;
+  }
+  if (depth > st.maxDepth) {
+    if constexpr (kAovs)
+      if (albedoHere) first->albedo = aovAlbedo(m, surfaceColor(scene, m, hit, sp));
+    return false;
+  }
+
+  const Vec3 color = surfaceColor(scene, m, hit, sp);
+  if constexpr (kAovs)
+    if (albedoHere) first->albedo = aovAlbedo(m, color);
+  const Bsdf bsdf = makeBsdf(m, color, wo, sp.ng, sp.ns);
+  const Vec3 hemisphere = reflectingHemisphere(bsdf);
+  if (hasSmoothLobe(m)) {
+    estimateDirect(scene, bsdf, hemisphere, sp, st.throughput, rng, shadow);
+    if (shadow->active) ++counters.shadow;
+    // "direct": the scattered ray below only gathers emission; nothing scatters after it.
+    if (scene.settings.integrator == IntegratorType::Direct) st.maxDepth = depth;
+  }
+
+  if (depth == st.maxDepth && !scene.emissionReachable) return false;
+
+  const float uc = usesLobeChoice(m) ? rng.next1D() : 0.0f;
+  float u1, u2;
+  rng.next2D(&u1, &u2);
+  BsdfSample bs;
+  if (!sampleBsdf(bsdf, uc, u1, u2, &bs)) return false;
+  st.throughput *= bs.weight;
+  st.etaScale *= bs.eta * bs.eta;
+  st.specularBounce = bs.delta;
+  st.bsdfPdf = bs.pdf;
+  st.bouncePoint = sp.p;
+  st.bounceHemisphere = hemisphere;
+
+  if (depth >= kRouletteDepth) {
+    const float survive = minf(0.95f, maxComponent(st.throughput) * st.etaScale);
+    if (rng.next1D() >= survive) return false;
+    st.throughput /= survive;
+  }
+  st.ray = spawnRay(sp, bs.wi);
+  ++counters.bounce;
+  return true;
+}
+
+// Adds a shadow query's contribution to the path unless its ray is blocked (`blocked`).
+CANDELA_HDI_ALWAYS void resolveShadow(const ShadowQuery& shadow, bool blocked, PathState* path) {
+  if (shadow.active && !blocked) path->radiance += shadow.contribution;
+}
+
+// Runs a path from its next interaction to its end, one ray at a time; returns its radiance.
+template <bool kAovs, class Tracer>
+CANDELA_HDI Vec3 finishPath(const SceneView& scene, const Tracer& tracer, PathState* path,
+                            SampleStream& rng, RayCounters& counters, FirstHit* first) {
+  for (;;) {
+    Hit hit;
+    const bool found = tracer.closest(path->ray, &hit);
+    ShadowQuery shadow;
+    const bool goesOn = interact<kAovs>(scene, path, found, hit, rng, counters, first, &shadow);
+    if (shadow.active) resolveShadow(shadow, tracer.occluded(shadow.ray, shadow.skipPrim), path);
+    if (!goesOn) return path->radiance;
+  }
+}
+
+// Radiance arriving at the camera along `ray` (one sample), one ray at a time. With kAovs,
+// `first` (zeroed by the caller) also receives the sample's first hit and albedo (interact).
+template <bool kAovs = false, class Tracer>
+CANDELA_HDI Vec3 traceRadiance(const SceneView& scene, const Tracer& tracer, const Ray& ray,
+                               SampleStream& rng, RayCounters& counters,
+                               FirstHit* first = nullptr) {
+  PathState path(scene, ray);
+  return finishPath<kAovs>(scene, tracer, &path, rng, counters, first);
 }
 
 }  // namespace candela

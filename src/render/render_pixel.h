@@ -26,16 +26,11 @@ CANDELA_HDI Ray cameraSample(const SceneView& scene, uint32_t x, uint32_t y, Sam
   return generateCameraRay(scene.camera, float(x) + *jx, float(y) + *jy, lensU, lensV);
 }
 
-// One sample's radiance along its camera ray `ray` (whose first hit is *cameraHit where the
-// tracer found it already), added to `sum` unless it is not finite.
-template <bool kAovs, class Tracer>
-CANDELA_HDI void addSample(const SceneView& scene, const Tracer& tracer, const Ray& ray, float jx,
-                           float jy, SampleStream& rng, RayCounters& counters, const Hit* cameraHit,
-                           Vec3* sum, AovPixel* aov) {
-  ++counters.camera;
-  FirstHit first;
-  const Vec3 L =
-      traceRadiance<kAovs>(scene, tracer, ray, rng, counters, kAovs ? &first : nullptr, cameraHit);
+// Adds one sample's radiance L, whose camera ray is `ray` through (jx, jy) in the pixel, to
+// `sum` unless it is not finite; with kAovs its first hit `first` to `aov`.
+template <bool kAovs>
+CANDELA_HDI void addSample(const SceneView& scene, const Vec3& L, const Ray& ray, float jx,
+                           float jy, const FirstHit& first, Vec3* sum, AovPixel* aov) {
   // A non-finite sample (a degenerate mesh, say) would poison the pixel; it counts as black.
   if (isFinite(L)) *sum += L;
   if constexpr (kAovs) {
@@ -45,13 +40,72 @@ CANDELA_HDI void addSample(const SceneView& scene, const Tracer& tracer, const R
   }
 }
 
+// A pixel's shadow rays towards a few lights are nearly parallel, like its camera rays; towards
+// many (a mesh lamp's triangles, picked one by one) they part, and packets of them were slower
+// than rays alone (docs/performance.md).
+constexpr uint32_t kShadowPacketsUpToLights = 4;
+
+// Samples [s, s + n) of a pixel, n <= Tracer::kPacketWidth, their paths in step up to their
+// first interaction: the camera rays traced as one packet, then the shadow rays of that
+// interaction (as a packet where the scene has few lights); each path then goes on alone. The same
+// arithmetic as traceRadiance path by path, so the same radiance but where a packet's hit differs
+// from a lone ray's by rounding.
+template <bool kAovs, class Tracer>
+CANDELA_HDI void renderPacket(const SceneView& scene, const Tracer& tracer, uint32_t x, uint32_t y,
+                              uint64_t pixelIndex, uint32_t s, uint32_t n, RayCounters& counters,
+                              Vec3* sum, AovPixel* aov) {
+  constexpr uint32_t kWidth = Tracer::kPacketWidth;
+  SampleStream rng[kWidth];
+  Ray rays[kWidth];
+  float jx[kWidth], jy[kWidth];
+  for (uint32_t i = 0; i < n; ++i) {
+    rng[i] = SampleStream(scene.settings.seed, pixelIndex, s + i, scene.settings.spp);
+    rays[i] = cameraSample(scene, x, y, rng[i], &jx[i], &jy[i]);
+  }
+  Hit hits[kWidth];
+  tracer.closestPacket(rays, n, hits);
+  counters.camera += n;
+
+  PathState paths[kWidth];
+  FirstHit first[kAovs ? kWidth : 1];  // only the passes read them
+  bool goesOn[kWidth];
+  Ray shadowRays[kWidth];
+  uint32_t skipPrims[kWidth], shadowLane[kWidth], shadowCount = 0;
+  ShadowQuery shadows[kWidth];
+  for (uint32_t i = 0; i < n; ++i) {
+    paths[i] = PathState(scene, rays[i]);
+    goesOn[i] = interact<kAovs>(scene, &paths[i], hits[i].valid(), hits[i], rng[i], counters,
+                                &first[kAovs ? i : 0], &shadows[i]);
+    if (!shadows[i].active) continue;
+    shadowRays[shadowCount] = shadows[i].ray;
+    skipPrims[shadowCount] = shadows[i].skipPrim;
+    shadowLane[shadowCount++] = i;
+  }
+  bool blocked[kWidth];
+  if (scene.lightCount <= kShadowPacketsUpToLights) {
+    if (shadowCount) tracer.occludedPacket(shadowRays, skipPrims, shadowCount, blocked);
+  } else {
+    for (uint32_t k = 0; k < shadowCount; ++k)
+      blocked[k] = tracer.occluded(shadowRays[k], skipPrims[k]);
+  }
+  for (uint32_t k = 0; k < shadowCount; ++k)
+    resolveShadow(shadows[shadowLane[k]], blocked[k], &paths[shadowLane[k]]);
+
+  for (uint32_t i = 0; i < n; ++i) {
+    FirstHit& f = first[kAovs ? i : 0];
+    const Vec3 L = goesOn[i] ? finishPath<kAovs>(scene, tracer, &paths[i], rng[i], counters, &f)
+                             : paths[i].radiance;
+    addSample<kAovs>(scene, L, rays[i], jx[i], jy[i], f, sum, aov);
+  }
+}
+
 // `sum` plus the radiance of samples [sampleBegin, sampleBegin + sampleCount) of pixel (x, y),
 // added one by one in index order (so a pixel rendered in several calls, each continuing the
 // last one's sum, is bit-identical to one call). Each sample's random numbers depend only on
 // (seed, pixel, sample index, dimension) and spp. `tracer` answers the ray queries
-// (geometry/bvh_tracer.h); one whose kCameraPacket exceeds 1 traces up to that many of the
-// pixel's camera rays at once (closestPacket), which are nearly parallel. With kAovs the
-// samples' first hits are added to `aov` too (render/aov.h); the radiance is the same either way.
+// (geometry/bvh_tracer.h); one whose kPacketWidth exceeds 1 takes the pixel's samples that many
+// at a time (renderPacket). With kAovs the samples' first hits are added to `aov` too
+// (render/aov.h); the radiance is the same either way.
 template <bool kAovs = false, class Tracer>
 CANDELA_HDI Vec3 renderPixelSamples(const SceneView& scene, const Tracer& tracer, uint32_t x,
                                     uint32_t y, uint32_t sampleBegin, uint32_t sampleCount,
@@ -59,32 +113,24 @@ CANDELA_HDI Vec3 renderPixelSamples(const SceneView& scene, const Tracer& tracer
                                     AovPixel* aov = nullptr) {
   const uint64_t pixelIndex = uint64_t(y) * scene.camera.width + x;
   const uint32_t sampleEnd = sampleBegin + sampleCount;
-  constexpr uint32_t kPacket = Tracer::kCameraPacket;
-  if constexpr (kPacket > 1) {
+  constexpr uint32_t kWidth = Tracer::kPacketWidth;
+  if constexpr (kWidth > 1) {
     for (uint32_t s = sampleBegin, n = 0; s < sampleEnd; s += n) {
-      // Packets start at multiples of kPacket, so a pixel rendered in sample ranges that split
+      // Packets start at multiples of kWidth, so a pixel rendered in sample ranges that split
       // there groups its rays as one call would.
-      const uint32_t toBoundary = kPacket - s % kPacket;
+      const uint32_t toBoundary = kWidth - s % kWidth;
       n = sampleEnd - s < toBoundary ? sampleEnd - s : toBoundary;
-      SampleStream rng[kPacket];
-      Ray rays[kPacket];
-      Hit hits[kPacket];
-      float jx[kPacket], jy[kPacket];
-      for (uint32_t i = 0; i < n; ++i) {
-        rng[i] = SampleStream(scene.settings.seed, pixelIndex, s + i, scene.settings.spp);
-        rays[i] = cameraSample(scene, x, y, rng[i], &jx[i], &jy[i]);
-      }
-      tracer.closestPacket(rays, n, hits);
-      for (uint32_t i = 0; i < n; ++i)
-        addSample<kAovs>(scene, tracer, rays[i], jx[i], jy[i], rng[i], counters, &hits[i], &sum,
-                         aov);
+      renderPacket<kAovs>(scene, tracer, x, y, pixelIndex, s, n, counters, &sum, aov);
     }
   } else {
     for (uint32_t s = sampleBegin; s < sampleEnd; ++s) {
       SampleStream rng(scene.settings.seed, pixelIndex, s, scene.settings.spp);
       float jx, jy;
       const Ray ray = cameraSample(scene, x, y, rng, &jx, &jy);
-      addSample<kAovs>(scene, tracer, ray, jx, jy, rng, counters, nullptr, &sum, aov);
+      ++counters.camera;
+      FirstHit first;
+      const Vec3 L = traceRadiance<kAovs>(scene, tracer, ray, rng, counters, &first);
+      addSample<kAovs>(scene, L, ray, jx, jy, first, &sum, aov);
     }
   }
   return sum;

@@ -46,8 +46,12 @@ void rejectMaskedHit(const RTCFilterFunctionNArguments* args) {
 
 void rejectSkippedTriangle(const RTCFilterFunctionNArguments* args) {
   const auto* context = reinterpret_cast<const EmbreeSkipContext*>(args->context);
-  const RTCHit* hit = reinterpret_cast<const RTCHit*>(args->hit);
-  if (context->sphereCount + hit->primID == context->skipPrim) args->valid[0] = 0;
+  const unsigned n = args->N;
+  for (unsigned i = 0; i < n; ++i) {
+    if (args->valid[i] != -1) continue;
+    const uint32_t skip = context->skipPrims[RTCRayN_id(args->ray, n, i)];
+    if (context->sphereCount + RTCHitN_primID(args->hit, n, i) == skip) args->valid[i] = 0;
+  }
 }
 
 EmbreeScene::EmbreeScene() {

@@ -19,23 +19,25 @@
 
 namespace candela {
 
-// An intersection context that names the primitive a shadow ray must not hit.
+// An intersection context that names the primitive each shadow ray must not hit: ray id k
+// (RTCRay::id) skips skipPrims[k].
 struct EmbreeSkipContext {
   RTCIntersectContext base;  // first, so Embree's pointer to it is a pointer to this
-  uint32_t skipPrim;
+  const uint32_t* skipPrims;
   uint32_t sphereCount;
 };
 
-// Context filter: rejects hits on the skipped triangle.
+// Context filter: rejects hits on the triangles the rays skip.
 void rejectSkippedTriangle(const RTCFilterFunctionNArguments* args);
 // Geometry filter (intersection and occlusion) of scenes with alpha masks: rejects the hits that
 // alphaKeepsHit (geometry/alpha_test.h) rejects; its user data is the scene's GeometryView.
 void rejectMaskedHit(const RTCFilterFunctionNArguments* args);
 
 struct EmbreeTracer {
-  // A pixel's camera rays, nearly parallel, go to Embree 16 at a time (rtcIntersect16, which
-  // Embree splits where the CPU has narrower vectors): docs/performance.md has the gain.
-  static constexpr uint32_t kCameraPacket = 16;
+  // A pixel's camera rays, and the shadow rays of their first interactions, go to Embree 16 at
+  // a time (rtcIntersect16 and rtcOccluded16, which Embree splits where the CPU has narrower
+  // vectors): docs/performance.md has the gain.
+  static constexpr uint32_t kPacketWidth = 16;
   RTCScene triangles;    // null when the scene has none
   GeometryView spheres;  // the spheres and, when they are not in blocks, their BVH (no triangles)
   SphereBlocksView sphereBlocks;  // the spheres in blocks of four, when they are few; else empty
@@ -59,8 +61,8 @@ struct EmbreeTracer {
     return true;
   }
 
-  // closest for rays[0, n), n <= 16, as one Embree packet: hits[i] is invalid where ray i
-  // hits nothing.
+  // closest for rays[0, n), n <= kPacketWidth, as one Embree packet: hits[i] is invalid where
+  // ray i hits nothing.
   void closestPacket(const Ray* rays, uint32_t n, Hit* hits) const {
     alignas(64) int valid[16];
     alignas(64) RTCRayHit16 packet;
@@ -75,18 +77,7 @@ struct EmbreeTracer {
       if (!triangles) continue;
       valid[i] = -1;
       any = true;
-      packet.ray.org_x[i] = rays[i].origin.x;
-      packet.ray.org_y[i] = rays[i].origin.y;
-      packet.ray.org_z[i] = rays[i].origin.z;
-      packet.ray.tnear[i] = 0.0f;
-      packet.ray.dir_x[i] = rays[i].direction.x;
-      packet.ray.dir_y[i] = rays[i].direction.y;
-      packet.ray.dir_z[i] = rays[i].direction.z;
-      packet.ray.time[i] = 0.0f;
-      packet.ray.tfar[i] = sphereFound ? hits[i].t : rays[i].tMax;
-      packet.ray.mask[i] = 0xffffffffu;
-      packet.ray.id[i] = 0;
-      packet.ray.flags[i] = 0;
+      setLane(rays[i], sphereFound ? hits[i].t : rays[i].tMax, i, &packet.ray);
       packet.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
     }
     if (!any) return;
@@ -111,14 +102,47 @@ struct EmbreeTracer {
     if (!triangles) return false;
     EmbreeSkipContext context;
     rtcInitIntersectContext(&context.base);
-    context.skipPrim = skipPrim;
+    context.skipPrims = &skipPrim;
     context.sphereCount = sphereCount;
-    if (skipPrim >= sphereCount && skipPrim != 0xffffffffu)
-      context.base.filter = rejectSkippedTriangle;
+    if (skipsTriangle(skipPrim)) context.base.filter = rejectSkippedTriangle;
     RTCRay r;
     setRay(ray, ray.tMax, &r);
     rtcOccluded1(triangles, &context.base, &r);
     return r.tfar < 0.0f;  // Embree marks an occluded ray with tfar = -inf
+  }
+
+  // occluded for rays[0, n), n <= kPacketWidth, ray k skipping skipPrims[k], as one Embree
+  // packet: blocked[k] is the answer for ray k.
+  void occludedPacket(const Ray* rays, const uint32_t* skipPrims, uint32_t n, bool* blocked) const {
+    alignas(64) int valid[16];
+    alignas(64) RTCRay16 packet;
+    bool any = false, skips = false;
+    for (uint32_t k = 0; k < 16; ++k) {
+      valid[k] = 0;
+      if (k >= n) continue;
+      blocked[k] = false;
+      if (!isFiniteRay(rays[k])) continue;
+      if (sphereBlocks.blockCount != 0 ? anySphere(sphereBlocks, rays[k], skipPrims[k])
+                                       : intersectAny(spheres, rays[k], skipPrims[k])) {
+        blocked[k] = true;
+        continue;
+      }
+      if (!triangles) continue;
+      valid[k] = -1;
+      any = true;
+      skips = skips || skipsTriangle(skipPrims[k]);
+      setLane(rays[k], rays[k].tMax, k, &packet);
+    }
+    if (!any) return;
+    EmbreeSkipContext context;
+    rtcInitIntersectContext(&context.base);
+    context.base.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+    context.skipPrims = skipPrims;
+    context.sphereCount = sphereCount;
+    if (skips) context.base.filter = rejectSkippedTriangle;
+    rtcOccluded16(valid, triangles, &context.base, &packet);
+    for (uint32_t k = 0; k < n; ++k)
+      if (valid[k] && packet.tfar[k] < 0.0f) blocked[k] = true;
   }
 
  private:
@@ -127,6 +151,26 @@ struct EmbreeTracer {
     if (!closestSphere(sphereBlocks, ray, ray.tMax, &hit->t, &hit->prim)) return false;
     hit->b1 = hit->b2 = 0.0f;
     return true;
+  }
+
+  bool skipsTriangle(uint32_t skipPrim) const {
+    return skipPrim >= sphereCount && skipPrim != 0xffffffffu;
+  }
+
+  // Lane k of a packet: `ray` up to tMax, with id k.
+  static void setLane(const Ray& ray, float tMax, uint32_t k, RTCRay16* r) {
+    r->org_x[k] = ray.origin.x;
+    r->org_y[k] = ray.origin.y;
+    r->org_z[k] = ray.origin.z;
+    r->tnear[k] = 0.0f;
+    r->dir_x[k] = ray.direction.x;
+    r->dir_y[k] = ray.direction.y;
+    r->dir_z[k] = ray.direction.z;
+    r->time[k] = 0.0f;
+    r->tfar[k] = tMax;
+    r->mask[k] = 0xffffffffu;
+    r->id[k] = k;
+    r->flags[k] = 0;
   }
 
   static void setRay(const Ray& ray, float tMax, RTCRay* r) {
