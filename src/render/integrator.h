@@ -1,4 +1,7 @@
-// The path integrator: one iterative loop per camera sample, shared by every backend.
+// The path integrator, shared by every backend: a path is a loop over its interactions
+// (`interact`), each of which leaves its shadow ray to the caller, so that a caller can trace
+// the shadow rays of several paths together (render/render_pixel.h); traceRadiance runs one
+// path alone.
 //
 // Depth follows the contract: interaction k is the k-th surface hit (the first hit is 1).
 // Light reaching interaction k <= max_depth counts, by a shadow ray (next-event estimation) or
