@@ -7,6 +7,8 @@ its world-space normal (docs/aovs.md), which keep edges and textures that the no
 """
 from __future__ import annotations
 
+import threading
+
 import numpy as np
 
 
@@ -23,13 +25,50 @@ def _oidn():
     return pyoidn
 
 
+_lock = threading.Lock()
+_device = None
+
+
+def _cpu_device(pyoidn):
+    """One OIDN CPU device for the process (numpy arrays live in host memory)."""
+    global _device
+    if _device is None:
+        _device = pyoidn.Device(pyoidn.OIDN_DEVICE_TYPE_CPU)
+        _device.commit()
+    return _device
+
+
+def _run(pyoidn, inputs: dict, hdr: bool = False, clean_aux: bool = False) -> np.ndarray:
+    """One "RT" filter over `inputs` (OIDN image name -> (H, W, 3) float32 array)."""
+    output = np.empty_like(next(iter(inputs.values())))
+    filt = pyoidn.Filter(_cpu_device(pyoidn), pyoidn.OIDN_FILTER_TYPE_RT)
+    try:
+        for name, pixels in inputs.items():
+            filt.set_image(name, pixels, pyoidn.OIDN_FORMAT_FLOAT3)
+        filt.set_image(pyoidn.OIDN_IMAGE_OUTPUT, output, pyoidn.OIDN_FORMAT_FLOAT3)
+        if hdr:
+            filt.set_bool("hdr", True)
+        if clean_aux:
+            filt.set_bool("cleanAux", True)
+        filt.commit()
+        filt.execute()
+    finally:
+        filt.release()
+    return output
+
+
 def denoise(image: np.ndarray, albedo: np.ndarray, normal: np.ndarray) -> np.ndarray:
     """The denoised (H, W, 3) float32 radiance of `image`, guided by `albedo` and `normal`.
 
-    The guides come from the same samples as the image, so they carry some noise of their own
-    (antialiasing, depth of field, glossy paths): OIDN prefilters them (clean_aux false)."""
+    The guides come from the same samples as the image and carry a little noise of their own
+    (antialiased edges, depth of field, what glass and mirrors show): each is denoised first and
+    the image then filtered with clean guides, as OIDN's documentation recommends and as
+    `candela render --denoise` does (docs/performance.md, Denoising, has what it gains)."""
     pyoidn = _oidn()
-    colour = np.ascontiguousarray(image, dtype=np.float32)
-    albedo = np.ascontiguousarray(np.clip(albedo, 0.0, 1.0), dtype=np.float32)
-    normal = np.ascontiguousarray(np.clip(normal, -1.0, 1.0), dtype=np.float32)
-    return np.asarray(pyoidn.denoise(colour, albedo, normal, hdr=True), dtype=np.float32)
+    contiguous = lambda a: np.ascontiguousarray(a, dtype=np.float32)  # noqa: E731
+    colour = contiguous(image)
+    with _lock:
+        albedo = _run(pyoidn, {pyoidn.OIDN_IMAGE_ALBEDO: contiguous(np.clip(albedo, 0.0, 1.0))})
+        normal = _run(pyoidn, {pyoidn.OIDN_IMAGE_NORMAL: contiguous(np.clip(normal, -1.0, 1.0))})
+        return _run(pyoidn, {pyoidn.OIDN_IMAGE_COLOR: colour, pyoidn.OIDN_IMAGE_ALBEDO: albedo,
+                             pyoidn.OIDN_IMAGE_NORMAL: normal}, hdr=True, clean_aux=True)
