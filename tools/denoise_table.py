@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Issue 22's denoising measurement: on each bench scene, relMSE against candela's converged image
 of candela at 16 spp denoised (Open Image Denoise, albedo and normal guides) and of candela at 256
-spp raw, each over several seeds.
+spp raw, each over several seeds. relMSE is bench/run's: compare.py's, on images divided by the
+reference's mean.
 
 A denoiser is judged against the image its renderer converges to: the reference is candela's own
 render at --ref-spp (default 1024), made once and kept in the work folder as
@@ -32,7 +33,9 @@ import compare  # noqa: E402  (the shared harness's PFM reader and relMSE)
 
 
 def relmse(image, reference):
-    return compare.metrics(image, reference)['relmse']
+    """compare.py's relMSE on both images divided by the reference's mean, as bench/run's."""
+    scale = 1.0 / reference.mean()
+    return compare.metrics(image * scale, reference * scale)['relmse']
 
 
 def reference_image(scene, path, spp):
