@@ -37,7 +37,7 @@ struct EmbreeTracer {
   // A pixel's camera rays, and the shadow rays of their first interactions, go to Embree 16 at
   // a time (rtcIntersect16 and rtcOccluded16, which Embree splits where the CPU has narrower
   // vectors): docs/performance.md has the gain.
-  static constexpr uint32_t kPacketWidth = 16;
+  static constexpr uint32_t kPacketWidth = 16;  // RTCRayHit16's lanes
   RTCScene triangles;    // null when the scene has none
   GeometryView spheres;  // the spheres and, when they are not in blocks, their BVH (no triangles)
   SphereBlocksView sphereBlocks;  // the spheres in blocks of four, when they are few; else empty
@@ -64,16 +64,17 @@ struct EmbreeTracer {
   // closest for rays[0, n), n <= kPacketWidth, as one Embree packet: hits[i] is invalid where
   // ray i hits nothing.
   void closestPacket(const Ray* rays, uint32_t n, Hit* hits) const {
-    alignas(64) int valid[16];
+    alignas(64) int valid[kPacketWidth];
     alignas(64) RTCRayHit16 packet;
     bool any = false;
-    for (uint32_t i = 0; i < 16; ++i) {
+    for (uint32_t i = 0; i < kPacketWidth; ++i) {
       valid[i] = 0;
       if (i >= n) continue;
       hits[i] = Hit();
       if (!isFiniteRay(rays[i])) continue;
-      const bool sphereFound = closestSphereOf(rays[i], &hits[i]);
-      if (!sphereFound) hits[i] = Hit();
+      Hit sphere;
+      const bool sphereFound = closestSphereOf(rays[i], &sphere);
+      if (sphereFound) hits[i] = sphere;
       if (!triangles) continue;
       valid[i] = -1;
       any = true;
@@ -114,10 +115,10 @@ struct EmbreeTracer {
   // occluded for rays[0, n), n <= kPacketWidth, ray k skipping skipPrims[k], as one Embree
   // packet: blocked[k] is the answer for ray k.
   void occludedPacket(const Ray* rays, const uint32_t* skipPrims, uint32_t n, bool* blocked) const {
-    alignas(64) int valid[16];
+    alignas(64) int valid[kPacketWidth];
     alignas(64) RTCRay16 packet;
     bool any = false, skips = false;
-    for (uint32_t k = 0; k < 16; ++k) {
+    for (uint32_t k = 0; k < kPacketWidth; ++k) {
       valid[k] = 0;
       if (k >= n) continue;
       blocked[k] = false;
