@@ -224,9 +224,10 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
   return true;
 }
 
-// Adds a shadow query's contribution to the path unless its ray is blocked (`blocked`).
+// Adds an active shadow query's contribution to the path unless its ray is blocked.
 CANDELA_HDI_ALWAYS void resolveShadow(const ShadowQuery& shadow, bool blocked, PathState* path) {
-  if (shadow.active && !blocked) path->radiance += shadow.contribution;
+  CANDELA_DCHECK(shadow.active);
+  if (!blocked) path->radiance += shadow.contribution;
 }
 
 // Runs a path from its next interaction to its end, one ray at a time; returns its radiance.
