@@ -492,6 +492,22 @@ TEST_F(CliTest, FramesRangeEndIsExclusive) {
   EXPECT_FALSE(fs::exists(path("g")));
 }
 
+// A sequence option makes a still scene a sequence of one frame; with -o naming an image the
+// error says which option did it, not only that sequences go to folders.
+TEST_F(CliTest, SequenceOptionOnAStillImageIsNamed) {
+  writeFile("still.json", kTinyScene);
+  const RunResult r = run("render still.json -o s.pfm --overwrite");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_EQ(r.err,
+            "candela: error: --overwrite is an option of sequences (an animated scene or several "
+            "scene files), and still.json is one still image (-o s.pfm): leave it out\n");
+  const RunResult format = run("render still.json -o s.pfm --format exr");
+  EXPECT_EQ(format.exitCode, 2);
+  EXPECT_NE(format.err.find("--format is an option of sequences"), std::string::npos) << format.err;
+  EXPECT_FALSE(fs::exists(path("s.pfm")));
+  EXPECT_EQ(run("render still.json -o s.pfm").exitCode, 0);
+}
+
 TEST_F(CliTest, BadSceneInASequenceIsReportedBeforeAnythingRenders) {
   writeFile("a.json", kTinyScene);
   writeFile("b.json", R"({"camera": {}, "spheres": [{"position": [0, 0, 0], "radius": -1}]})");

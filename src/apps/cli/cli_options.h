@@ -33,8 +33,15 @@ struct RenderCommandOptions {
   bool overwrite = false;           // re-render frames that already exist
   std::string video;                // encode the frames to this file with ffmpeg
   std::optional<double> fps;        // video frame rate; default: the animation's, else 24
-  bool sequenceOptionGiven() const {
-    return !format.empty() || !frames.empty() || overwrite || !video.empty() || fps.has_value();
+  bool sequenceOptionGiven() const { return sequenceOptionName() != nullptr; }
+  // The first sequence option given, as spelled on the command line; null if none was.
+  const char* sequenceOptionName() const {
+    if (!format.empty()) return "--format";
+    if (!frames.empty()) return "--frames";
+    if (overwrite) return "--overwrite";
+    if (!video.empty()) return "--video";
+    if (fps.has_value()) return "--fps";
+    return nullptr;
   }
 };
 

@@ -180,6 +180,13 @@ int runSequence(const RenderCommandOptions& options, std::vector<SceneDesc> scen
   const std::string dir = options.output.empty()
                               ? (fs::path("out") / fs::path(options.scenes[0]).stem()).string()
                               : options.output;
+  // One still scene with -o to an image is a sequence only because a sequence option was given.
+  if (isSupportedImagePath(dir) && !animated && scenes.size() == 1)
+    throw CliError(kExitUsage, std::string(options.sequenceOptionName()) +
+                                   " is an option of sequences (an animated scene or several "
+                                   "scene files), and " +
+                                   options.scenes[0] + " is one still image (-o " + dir +
+                                   "): leave it out");
   if (isSupportedImagePath(dir))
     throw CliError(kExitUsage, "-o " + dir +
                                    ": a sequence is written to a folder (e.g. -o frames/), not "
