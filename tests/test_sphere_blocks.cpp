@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstring>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "backends/cpu/sphere_blocks.h"
@@ -71,14 +72,27 @@ Ray randomRay(std::mt19937& gen, const std::vector<Sphere>& spheres, int i) {
   return ray;
 }
 
-TEST(SphereBlocks, MatchOneSphereAtATimeBitForBit) {
+class SphereBlocksOfWidth : public ::testing::TestWithParam<uint32_t> {
+ protected:
+  void SetUp() override {
+    if (GetParam() > widestSphereBlock())
+      GTEST_SKIP() << "this CPU has no " << GetParam() << "-wide sphere blocks (AVX2)";
+  }
+};
+
+TEST_P(SphereBlocksOfWidth, MatchOneSphereAtATimeBitForBit) {
+  const uint32_t width = GetParam();
   std::mt19937 gen(5);
   for (int extra : {0, 1, 3, 7, 23}) {
     const std::vector<Sphere> spheres = roomSpheres(gen, extra);
     SphereBlocks blocks;
-    blocks.assign(spheres.data(), uint32_t(spheres.size()));
+    blocks.assign(spheres.data(), uint32_t(spheres.size()), width);
     const SphereBlocksView view = blocks.view();
-    EXPECT_EQ(view.blockCount, (spheres.size() + 3) / 4);
+    // The narrowest block that holds them all, within `width`.
+    uint32_t expectedWidth = 4;
+    while (expectedWidth < width && expectedWidth < spheres.size()) expectedWidth *= 2;
+    EXPECT_EQ(view.width, expectedWidth);
+    EXPECT_EQ(view.blockCount, (spheres.size() + expectedWidth - 1) / expectedWidth);
     int hits = 0, occluded = 0, grazing = 0;
     for (int i = 0; i < 20000; ++i) {
       const Ray ray = randomRay(gen, spheres, i);
@@ -113,19 +127,33 @@ Ray rayDownMinusZ() {
   return ray;
 }
 
-TEST(SphereBlocks, ATieGoesToTheLowerIndex) {
-  // Five copies of one sphere: whichever block and lane they sit in, the first is reported.
+TEST_P(SphereBlocksOfWidth, ATieGoesToTheLowerIndexANearerHitToAnyIndex) {
+  // Copies of one sphere in several blocks and lanes at every width, the rest out of the way:
+  // the first copy is reported; a nearer sphere wins wherever it sits.
   const Sphere s{Vec3(0, 0, -5), 1};
-  const std::vector<Sphere> spheres = {{Vec3(9, 9, 9), 0.5f}, s, s, s, s, s};
+  std::vector<Sphere> spheres;
+  for (uint32_t i = 0; i < 20; ++i) spheres.push_back(Sphere{Vec3(9.0f + float(i), 9, 9), 0.5f});
+  for (uint32_t i : {1, 2, 3, 4, 5, 9, 13, 18}) spheres[i] = s;
   SphereBlocks blocks;
-  blocks.assign(spheres.data(), uint32_t(spheres.size()));
+  blocks.assign(spheres.data(), uint32_t(spheres.size()), GetParam());
   const Ray ray = rayDownMinusZ();
   float t;
   uint32_t prim;
   ASSERT_TRUE(closestSphere(blocks.view(), ray, ray.tMax, &t, &prim));
   EXPECT_EQ(prim, 1u);
   EXPECT_FLOAT_EQ(t, 4.0f);
+
+  spheres[17] = Sphere{Vec3(0, 0, -3), 0.5f};
+  blocks.assign(spheres.data(), uint32_t(spheres.size()), GetParam());
+  ASSERT_TRUE(closestSphere(blocks.view(), ray, ray.tMax, &t, &prim));
+  EXPECT_EQ(prim, 17u);
+  EXPECT_FLOAT_EQ(t, 2.5f);
 }
+
+INSTANTIATE_TEST_SUITE_P(SphereBlocks, SphereBlocksOfWidth, ::testing::Values(4u, 8u),
+                         [](const ::testing::TestParamInfo<uint32_t>& param) {
+                           return "Width" + std::to_string(param.param);
+                         });
 
 TEST(SphereBlocks, NoSpheresAndDegenerateRaysHitNothing) {
   SphereBlocks none;

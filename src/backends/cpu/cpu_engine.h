@@ -22,7 +22,7 @@ bool embreeAvailable();
 
 // Auto picks Embree for scenes of at least kEmbreeFromTriangles triangles, and for smaller scenes
 // of at most kSphereBlocksUpTo spheres (backends/cpu/sphere_blocks.h), which the Embree engine
-// tests four at a time: there, on one core, the default room (nine spheres, a 4,320-triangle
+// tests in blocks (of 4 then): there, on one core, the default room (nine spheres, a 4,320-triangle
 // knot) took 0.86x the own BVH's CPU time, the same room without the knot 0.67x, 32 spheres 0.81x,
 // the Cornell box (32 triangles) 0.95x and scenes of 12k to 8.5M triangles 0.5-0.83x. With more
 // spheres the Embree engine puts them in a BVH of their own, traced before Embree's, and the own

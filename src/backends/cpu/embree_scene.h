@@ -3,7 +3,7 @@
 //
 // Embree builds its own BVH over the triangles (binned SAH at RTC_BUILD_QUALITY_MEDIUM:
 // docs/performance.md), from a copy of the vertices and the scene's own triangle array, shared.
-// The spheres stay candela's: in blocks of four when they are few, else in a BVH of their own. A
+// The spheres stay candela's: in blocks of 4 or 8 when they are few, else in a BVH of their own. A
 // frame whose primitives moved (SceneChange::Motion) rewrites the vertices and refits Embree's
 // BVH, and places the spheres anew (their blocks, or their BVH beyond 32 spheres); a new
 // structure rebuilds both. Alpha-masked materials (geometry/alpha_mask.h) get intersection and

@@ -4,7 +4,7 @@
 // Embree holds the triangles, as one triangle geometry; the spheres stay candela's own, traced
 // inline first, so a ray pays no callback per sphere (Embree's user geometry cost the
 // sphere-walled default room a fifth of its speed) and a sphere hit shortens the ray Embree then
-// traces. A few spheres are tested four at a time (backends/cpu/sphere_blocks.h), more through a
+// traces. A few spheres are tested in blocks of 4 or 8 (backends/cpu/sphere_blocks.h), more through a
 // BVH over the spheres alone. Hits carry the primitive numbering of geometry/geometry_view.h, so
 // the integrator cannot tell the engines apart. A shadow ray's skipped triangle is rejected by a
 // context filter that reads it from the intersection context.
@@ -40,7 +40,7 @@ struct EmbreeTracer {
   static constexpr uint32_t kPacketWidth = 16;  // RTCRayHit16's lanes
   RTCScene triangles;    // null when the scene has none
   GeometryView spheres;  // the spheres and, when they are not in blocks, their BVH (no triangles)
-  SphereBlocksView sphereBlocks;  // the spheres in blocks of four, when they are few; else empty
+  SphereBlocksView sphereBlocks;  // the spheres in blocks, when they are few; else empty
   uint32_t sphereCount;
 
   bool closest(const Ray& ray, Hit* hit) const {
