@@ -54,8 +54,8 @@ void rejectSkippedTriangle(const RTCFilterFunctionNArguments* args) {
   }
 }
 
-EmbreeScene::EmbreeScene() {
-  device_ = rtcNewDevice(nullptr);
+EmbreeScene::EmbreeScene(const char* deviceConfig) {
+  device_ = rtcNewDevice(deviceConfig);
   if (!device_)
     throw BackendError("Embree could not start: " + std::to_string(rtcGetDeviceError(nullptr)));
   rtcSetDeviceErrorFunction(device_, keepError, nullptr);

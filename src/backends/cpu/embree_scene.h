@@ -25,7 +25,9 @@ namespace candela {
 
 class EmbreeScene {
  public:
-  EmbreeScene();
+  // `deviceConfig`: Embree's device configuration (rtcNewDevice), e.g. "isa=avx2" to test an
+  // instruction set below the CPU's; null: Embree's defaults.
+  explicit EmbreeScene(const char* deviceConfig = nullptr);
   ~EmbreeScene();
   EmbreeScene(const EmbreeScene&) = delete;
   EmbreeScene& operator=(const EmbreeScene&) = delete;

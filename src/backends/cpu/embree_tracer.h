@@ -15,6 +15,7 @@
 #include <cstdint>
 
 #include "backends/cpu/sphere_blocks.h"
+#include "core/constants.h"
 #include "geometry/bvh_traverse.h"
 
 namespace candela {
@@ -69,6 +70,8 @@ struct EmbreeTracer {
     bool any = false;
     for (uint32_t i = 0; i < kPacketWidth; ++i) {
       valid[i] = 0;
+      setInactiveLane(i, &packet.ray);
+      packet.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
       if (i >= n) continue;
       hits[i] = Hit();
       if (!isFiniteRay(rays[i])) continue;
@@ -79,7 +82,6 @@ struct EmbreeTracer {
       valid[i] = -1;
       any = true;
       setLane(rays[i], sphereFound ? hits[i].t : rays[i].tMax, i, &packet.ray);
-      packet.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
     }
     if (!any) return;
     RTCIntersectContext context;
@@ -120,6 +122,7 @@ struct EmbreeTracer {
     bool any = false, skips = false;
     for (uint32_t k = 0; k < kPacketWidth; ++k) {
       valid[k] = 0;
+      setInactiveLane(k, &packet);
       if (k >= n) continue;
       blocked[k] = false;
       if (!isFiniteRay(rays[k])) continue;
@@ -170,6 +173,21 @@ struct EmbreeTracer {
     r->time[k] = 0.0f;
     r->tfar[k] = tMax;
     r->mask[k] = 0xffffffffu;
+    r->id[k] = k;
+    r->flags[k] = 0;
+  }
+
+  // Lane k of a packet, left out. Where the CPU has no 16-wide packets (below AVX-512) Embree
+  // traces a packet of 16 through its ray-stream path, which ignores the valid mask and leaves
+  // out the lanes whose tnear exceeds tfar instead: every lane must say whether it is one.
+  static void setInactiveLane(uint32_t k, RTCRay16* r) {
+    r->org_x[k] = r->org_y[k] = r->org_z[k] = 0.0f;
+    r->dir_x[k] = r->dir_y[k] = 0.0f;
+    r->dir_z[k] = 1.0f;
+    r->tnear[k] = kInfinity;
+    r->tfar[k] = -kInfinity;
+    r->time[k] = 0.0f;
+    r->mask[k] = 0;
     r->id[k] = k;
     r->flags[k] = 0;
   }
