@@ -12,7 +12,6 @@
 #include "scene/camera_resolve.h"
 #include "scene/content_hash.h"
 #include "scene/flatten_environment.h"
-#include "scene/key_writer.h"
 #include "scene/light_tree_build.h"
 
 namespace candela {
@@ -167,16 +166,16 @@ bool emits(const Material& m) { return m.type == MaterialType::Emissive && !isBl
 // A hash of the lights' bounds, field by field (LightBounds has padding): equal hashes give equal
 // trees, the build being a function of the bounds alone.
 uint64_t lightTreeHash(const std::vector<LightBounds>& bounds) {
-  KeyWriter key;
-  for (size_t i = 0; i < bounds.size(); ++i) {
-    key.add(bounds[i].lo);
-    key.add(bounds[i].hi);
-    key.add(bounds[i].axis);
-    key.add(bounds[i].cosThetaO);
-    key.add(bounds[i].power);
+  static_assert(sizeof(Vec3) == 3 * sizeof(float), "Vec3 without padding");
+  uint64_t h = bounds.size();
+  for (const LightBounds& b : bounds) {
+    h = hashBytes(&b.lo, sizeof b.lo, h);
+    h = hashBytes(&b.hi, sizeof b.hi, h);
+    h = hashBytes(&b.axis, sizeof b.axis, h);
+    h = hashBytes(&b.cosThetaO, sizeof b.cosThetaO, h);
+    h = hashBytes(&b.power, sizeof b.power, h);
   }
-  const std::string bytes = key.take();
-  return hashBytes(bytes.data(), bytes.size());
+  return h;
 }
 
 }  // namespace
@@ -302,10 +301,10 @@ void tagInstance(SceneData& s, uint32_t instance) {
   s.materialInstances.resize(s.materials.size(), instance);
 }
 
-// Everything but the BVH; mesh vertices and triangles only with `geometry`, the texture pool
-// only with `texturePool`. The order of materials depends only on the scene's structure, so
-// triangles keep valid material indices when a refresh re-appends the materials.
-void addContents(SceneData& s, const SceneDesc& desc, bool geometry, bool texturePool) {
+// The primitives and their materials, each material tagged with its instance; mesh vertices and
+// triangles only with `geometry`. The order of materials depends only on the scene's structure,
+// so triangles keep valid material indices when a refresh re-appends the materials.
+void addInstances(SceneData& s, const SceneDesc& desc, bool geometry) {
   const InstanceNumbering number = instanceNumbering(desc);
   for (uint32_t i = 0; i < desc.spheres.size(); ++i) {
     const SphereDesc& sd = desc.spheres[i];
@@ -324,6 +323,12 @@ void addContents(SceneData& s, const SceneDesc& desc, bool geometry, bool textur
   // Vertices after the last smooth (or textured) mesh have no normals (or uvs) either.
   if (geometry && !s.normals.empty()) s.normals.resize(s.positions.size(), OctNormal());
   if (geometry && !s.uvs.empty()) s.uvs.resize(s.positions.size(), Vec2());
+}
+
+// Everything but the BVH; mesh vertices and triangles only with `geometry`, the texture pool
+// only with `texturePool`.
+void addContents(SceneData& s, const SceneDesc& desc, bool geometry, bool texturePool) {
+  addInstances(s, desc, geometry);
   if (texturePool) addTexturePool(s, desc);
   addTextureUses(s);
 
@@ -355,6 +360,14 @@ std::vector<std::pair<uint32_t, std::string>> instanceNames(const SceneDesc& des
   for (size_t i = 0; i < desc.lights.size(); ++i)
     add(number.firstLight, "lights", i, desc.lights[i].id);
   return names;
+}
+
+SceneData flattenPassContext(const SceneDesc& desc) {
+  SceneData s;
+  addInstances(s, desc, false);
+  s.camera = resolveCamera(desc.camera, desc.file);
+  s.settings = desc.render;
+  return s;
 }
 
 void refreshSceneValues(SceneData& s, const SceneDesc& desc) {

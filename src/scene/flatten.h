@@ -71,6 +71,10 @@ InstanceNumbering instanceNumbering(const SceneDesc& desc);
 // Each instance number with its name: the JSON `id`, else the place in the file ("spheres[2]").
 std::vector<std::pair<uint32_t, std::string>> instanceNames(const SceneDesc& desc);
 
+// What the passes' layers read of a scene (render/aov_layers.h, makeAovLayers): its camera and the
+// instance each material belongs to. No vertices, textures or maps are copied.
+SceneData flattenPassContext(const SceneDesc& desc);
+
 // Replaces the camera, settings, environment, materials, lights and spheres of `scene` (which
 // flattenScene made from a description with the same geometry as `desc`) by those of `desc`,
 // keeping mesh vertices, triangles, the BVH and the texture pool. scene/frame_scene.h decides

@@ -57,13 +57,15 @@ ALL_PASSES = ["depth", "distance", "normal", "normal_camera", "albedo", "positio
               "material", "flow"]
 
 
-def test_pass_sums_of_sample_ranges_merge_into_the_passes_of_one_render():
+@pytest.mark.parametrize("animated", [True, False], ids=["animation frame", "still scene"])
+def test_pass_sums_of_sample_ranges_merge_into_the_passes_of_one_render(animated):
     # What candela.distributed.render_image does with its chunks, without Ray: frame 1 of an
-    # animated scene (flow is defined), antialiased, so the edge pixels' ids depend on which
-    # sample lies nearest the pixel centre.
+    # animated scene (flow is defined) or a still scene, antialiased, so the edge pixels' ids
+    # depend on which sample lies nearest the pixel centre.
     from candela.distributed import _render_slice, merge_pass_sums, split_samples
 
-    scene = candela.Scene.from_dict(animated_scene(frames=3, size=24)).frame(1)
+    scene = (candela.Scene.from_dict(animated_scene(frames=3, size=24)).frame(1) if animated
+             else candela.Scene.from_dict(tiny_scene()))
     whole = scene.render(spp=10, backend="cpu", aovs=ALL_PASSES)
     parts = [_render_slice(scene.spec, 10, None, first, count, "cpu", 0, ALL_PASSES)
              for first, count in split_samples(10, 3)]

@@ -239,18 +239,12 @@ nb::object render(const Scene& scene, std::optional<uint32_t> spp, std::optional
 nb::dict passesFromSums(const Scene& scene, const nb::dict& sums,
                         const std::vector<std::string>& aovNames) {
   const std::vector<Aov> aovs = aovsFromNames(aovNames);
-  // The layers need the camera and the materials' instances alone: no vertices, no map.
-  SceneDesc desc = scene.still();
-  for (ObjectDesc& object : desc.objects) {
-    const std::vector<Material> materials = std::move(object.mesh.materials);
-    object.mesh = MeshDesc();
-    object.mesh.materials = materials;
-  }
-  desc.environment.image.reset();
-  desc.environment.mapHash = 0;
-  const SceneData data = flattenSceneContents(desc);
+  // A still scene's description as loaded; only an animation's frame is made (and copied).
+  std::optional<SceneDesc> frame;
+  if (scene.desc->animation) frame = scene.still();
+  const SceneData data = flattenPassContext(frame ? *frame : *scene.desc);
   nb::dict out;
-  addLayers(makeAovLayers(data, aovs, sumsFromDict(sums, desc.camera.height, desc.camera.width)),
+  addLayers(makeAovLayers(data, aovs, sumsFromDict(sums, data.camera.height, data.camera.width)),
             &out);
   return out;
 }
