@@ -99,9 +99,7 @@ struct EmbreeTracer {
 
   bool occluded(const Ray& ray, uint32_t skipPrim) const {
     if (!isFiniteRay(ray)) return false;
-    if (sphereBlocks.blockCount != 0 ? anySphere(sphereBlocks, ray, skipPrim)
-                                     : intersectAny(spheres, ray, skipPrim))
-      return true;
+    if (anySphereOf(ray, skipPrim)) return true;
     if (!triangles) return false;
     EmbreeSkipContext context;
     rtcInitIntersectContext(&context.base);
@@ -126,8 +124,7 @@ struct EmbreeTracer {
       if (k >= n) continue;
       blocked[k] = false;
       if (!isFiniteRay(rays[k])) continue;
-      if (sphereBlocks.blockCount != 0 ? anySphere(sphereBlocks, rays[k], skipPrims[k])
-                                       : intersectAny(spheres, rays[k], skipPrims[k])) {
+      if (anySphereOf(rays[k], skipPrims[k])) {
         blocked[k] = true;
         continue;
       }
@@ -155,6 +152,11 @@ struct EmbreeTracer {
     if (!closestSphere(sphereBlocks, ray, ray.tMax, &hit->t, &hit->prim)) return false;
     hit->b1 = hit->b2 = 0.0f;
     return true;
+  }
+
+  bool anySphereOf(const Ray& ray, uint32_t skipPrim) const {
+    return sphereBlocks.blockCount != 0 ? anySphere(sphereBlocks, ray, skipPrim)
+                                        : intersectAny(spheres, ray, skipPrim);
   }
 
   bool skipsTriangle(uint32_t skipPrim) const {
