@@ -40,21 +40,27 @@ inline uint32_t laneBits(typename Lanes<W>::I mask) {
   if constexpr (W == 8) return uint32_t(_mm256_movemask_ps(__m256(mask)));
 }
 
+// x in every lane, -0 included (adding x to a zero vector would turn -0 into +0).
+template <int W>
+inline typename Lanes<W>::F splat(float x) {
+  typename Lanes<W>::F v;
+  for (int i = 0; i < W; ++i) v[i] = x;
+  return v;
+}
+
 template <int W>
 struct RayLanes {
   typename Lanes<W>::F ox, oy, oz, dx, dy, dz, a;
-  explicit RayLanes(const Ray& r) {
-    ox = oy = oz = dx = dy = dz = a = typename Lanes<W>::F{};
-    ox += r.origin.x;
-    oy += r.origin.y;
-    oz += r.origin.z;
-    dx += r.direction.x;
-    dy += r.direction.y;
-    dz += r.direction.z;
-    // lengthSquared(direction), in its order.
-    a += r.direction.x * r.direction.x + r.direction.y * r.direction.y +
-         r.direction.z * r.direction.z;
-  }
+  explicit RayLanes(const Ray& r)
+      : ox(splat<W>(r.origin.x)),
+        oy(splat<W>(r.origin.y)),
+        oz(splat<W>(r.origin.z)),
+        dx(splat<W>(r.direction.x)),
+        dy(splat<W>(r.direction.y)),
+        dz(splat<W>(r.direction.z)),
+        // lengthSquared(direction), in its order.
+        a(splat<W>(r.direction.x * r.direction.x + r.direction.y * r.direction.y +
+                   r.direction.z * r.direction.z)) {}
 };
 
 // intersectSphere (geometry/sphere_intersect.h) on the W spheres of block `block`, lane by lane,
@@ -115,7 +121,7 @@ bool closestSphereInLanes(const SphereBlocksView& blocks, const Ray& ray, float 
   // each lane keeps its nearest hit (the earliest block's on a tie), and the lanes are compared
   // at the end. A smaller tMax would only have turned hits beyond the nearest into misses.
   const RayLanes<W> lanes(ray);
-  F nearest = F{} + tMax;
+  F nearest = splat<W>(tMax);
   I nearestBlock = I{};
   for (uint32_t block = 0; block < blocks.blockCount; ++block) {
     F distances;
