@@ -4,10 +4,10 @@
 // Embree holds the triangles, as one triangle geometry; the spheres stay candela's own, traced
 // inline first, so a ray pays no callback per sphere (Embree's user geometry cost the
 // sphere-walled default room a fifth of its speed) and a sphere hit shortens the ray Embree then
-// traces. A few spheres are tested in blocks of 4 or 8 (backends/cpu/sphere_blocks.h), more through a
-// BVH over the spheres alone. Hits carry the primitive numbering of geometry/geometry_view.h, so
-// the integrator cannot tell the engines apart. A shadow ray's skipped triangle is rejected by a
-// context filter that reads it from the intersection context.
+// traces. A few spheres are tested in blocks of 4 or 8 (backends/cpu/sphere_blocks.h), more
+// through a BVH over the spheres alone. Hits carry the primitive numbering of
+// geometry/geometry_view.h, so the integrator cannot tell the engines apart. A shadow ray's
+// skipped triangle is rejected by a context filter that reads it from the intersection context.
 #pragma once
 
 #include <embree3/rtcore.h>

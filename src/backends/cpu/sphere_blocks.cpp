@@ -58,7 +58,8 @@ bool closestSphere(const SphereBlocksView& blocks, const Ray& ray, float tMax, f
 }
 
 bool anySphere(const SphereBlocksView& blocks, const Ray& ray, uint32_t skipPrim) {
-  return blocks.width == 8 ? anySphereW8(blocks, ray, skipPrim) : anySphereW4(blocks, ray, skipPrim);
+  return blocks.width == 8 ? anySphereW8(blocks, ray, skipPrim)
+                           : anySphereW4(blocks, ray, skipPrim);
 }
 
 #else  // not x86-64: the same tests one sphere at a time
