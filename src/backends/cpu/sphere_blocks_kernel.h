@@ -160,3 +160,15 @@ bool anySphereInLanes(const SphereBlocksView& blocks, const Ray& ray, uint32_t s
 
 }  // namespace
 }  // namespace candela
+
+// Defines closestSphereW<W> and anySphereW<W> (backends/cpu/sphere_blocks.h) over the kernel above.
+#define CANDELA_SPHERE_BLOCK_TESTS(W)                                                          \
+  namespace candela {                                                                          \
+  bool closestSphereW##W(const SphereBlocksView& blocks, const Ray& ray, float tMax, float* t, \
+                         uint32_t* prim) {                                                     \
+    return closestSphereInLanes<W>(blocks, ray, tMax, t, prim);                                \
+  }                                                                                            \
+  bool anySphereW##W(const SphereBlocksView& blocks, const Ray& ray, uint32_t skipPrim) {      \
+    return anySphereInLanes<W>(blocks, ray, skipPrim);                                         \
+  }                                                                                            \
+  }

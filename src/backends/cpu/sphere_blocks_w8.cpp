@@ -3,17 +3,5 @@
 #if defined(__x86_64__)
 #include "backends/cpu/sphere_blocks_kernel.h"
 
-namespace candela {
-
-bool closestSphereW8(const SphereBlocksView& blocks, const Ray& ray, float tMax, float* t,
-                     uint32_t* prim) {
-  return closestSphereInLanes<8>(blocks, ray, tMax, t, prim);
-}
-
-bool anySphereW8(const SphereBlocksView& blocks, const Ray& ray, uint32_t skipPrim) {
-  return anySphereInLanes<8>(blocks, ray, skipPrim);
-}
-
-}  // namespace candela
-
+CANDELA_SPHERE_BLOCK_TESTS(8)
 #endif
