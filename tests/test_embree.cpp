@@ -2,6 +2,7 @@
 // rounding, and frames of an animation (refits) as a fresh build of each frame renders them.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 #include <string>
 #include <vector>
@@ -11,10 +12,12 @@
 #include "render_test_util.h"
 #include "scene/animation.h"
 #include "scene/frame_scene.h"
+#include "temp_dir.h"
 #include "test_random.h"
 
 #if defined(CANDELA_HAS_EMBREE)
 #include "backends/cpu/embree_scene.h"
+#include "core/rotation.h"
 #include "geometry/bvh_traverse.h"
 #endif
 
@@ -74,15 +77,65 @@ SceneData randomScene(uint32_t seed, int sphereCount = 40) {
   return s;
 }
 
+// randomScene's spheres, and objects that repeat one mesh of 100 random triangles (3 instances
+// of it, then an object of its own, then 2 more instances), placed by random rotations, scales
+// (one mirroring) and translations, every other triangle half transparent: a scene the Embree
+// engine traces through instances.
+SceneData instancedScene(uint32_t seed) {
+  std::mt19937 gen(seed);
+  std::uniform_real_distribution<float> u(-1.0f, 1.0f), angle(0.0f, 360.0f);
+  SceneData s = randomScene(seed, 10);
+  s.positions.clear();
+  s.triangles.clear();
+  MeshPrototype prototype;
+  for (uint32_t i = 0; i < 100; ++i) {
+    const Vec3 a(u(gen), u(gen), u(gen));
+    for (const Vec3& p :
+         {a, a + test::randomUnitVector(gen) * 0.8f, a + test::randomUnitVector(gen) * 0.8f})
+      prototype.positions.push_back(p);
+  }
+  const auto place = [&](const std::vector<Vec3>& positions, int32_t repeats, float scaleX) {
+    MeshInstance object;
+    object.firstTriangle = uint32_t(s.triangles.size());
+    object.triangleCount = uint32_t(positions.size() / 3);
+    object.firstVertex = uint32_t(s.positions.size());
+    object.vertexCount = uint32_t(positions.size());
+    const Mat3 r = eulerRotation(Vec3(angle(gen), angle(gen), angle(gen)));
+    const Vec3 scale(scaleX, 1.5f, 1.5f);
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) object.linear.m[i][j] = r.m[i][j] * scale[j];
+    object.translation = Vec3(u(gen), u(gen), u(gen)) * 3.0f;
+    object.prototype = repeats;
+    for (const Vec3& p : positions) s.positions.push_back(object.translation + object.linear * p);
+    for (uint32_t t = 0; t < object.triangleCount; ++t)
+      s.triangles.push_back(Triangle{{object.firstVertex + 3 * t, object.firstVertex + 3 * t + 1,
+                                      object.firstVertex + 3 * t + 2},
+                                     t % 2});
+    s.meshInstances.objects.push_back(object);
+  };
+  for (float scaleX : {1.5f, 2.0f, -1.5f}) place(prototype.positions, 0, scaleX);
+  std::vector<Vec3> own(prototype.positions.begin(), prototype.positions.begin() + 60);
+  place(own, -1, 1.0f);
+  for (float scaleX : {1.0f, 0.7f}) place(prototype.positions, 0, scaleX);
+  prototype.firstInstance = 0;
+  prototype.instanceCount = 5;
+  // Every other triangle is half transparent: a stochastic alpha test, of the world's ray.
+  s.alphaMasks = {AlphaMask(), AlphaMask{0.5f}};
+  s.meshInstances.prototypes.push_back(prototype);
+  return s;
+}
+
 // Closest hits and shadow queries agree with testing every primitive (candela's own tests),
 // to the rounding of the two triangle tests: where the nearest primitive differs, the two hits
 // lie at the same distance (two primitives crossing there).
 TEST(Embree, HitsMatchBruteForceRayByRay) {
-  for (uint32_t seed : {1u, 2u, 3u, 4u}) {
-    const SceneData scene = randomScene(seed, seed == 4 ? 10 : 40);
+  for (uint32_t seed : {1u, 2u, 3u, 4u, 8u}) {
+    const SceneData scene =
+        seed == 8 ? instancedScene(seed) : randomScene(seed, seed == 4 ? 10 : 40);
     const SceneView view = scene.view();
     EmbreeScene embree;
     embree.update(scene, SceneChange::Structure);
+    EXPECT_EQ(embree.instanceCount(), seed == 8 ? 5u : 0u);
     const EmbreeTracer tracer = embree.tracer();
     std::mt19937 gen(seed + 100);
     std::uniform_real_distribution<float> u(-5.0f, 5.0f);
@@ -97,12 +150,16 @@ TEST(Embree, HitsMatchBruteForceRayByRay) {
       ASSERT_EQ(tracer.closest(ray, &got), found) << "seed " << seed << " ray " << i;
       if (found) {
         ++hits;
-        EXPECT_NEAR(got.t, expected.t, 1e-4f * expected.t) << "ray " << i;
+        // Relative, and absolute at the scene's scale: within an instance Embree tests the
+        // triangle in its object space, so a hit next to the origin is off by that space's
+        // rounding.
+        const float tolerance = 1e-4f * expected.t + 1e-6f;
+        EXPECT_NEAR(got.t, expected.t, tolerance) << "ray " << i;
         if (got.prim == expected.prim && expected.prim >= scene.spheres.size()) {
           EXPECT_NEAR(got.b1, expected.b1, 1e-4f);
           EXPECT_NEAR(got.b2, expected.b2, 1e-4f);
         } else if (got.prim != expected.prim) {
-          EXPECT_NEAR(got.t, expected.t, 1e-5f * expected.t) << "ray " << i;
+          EXPECT_NEAR(got.t, expected.t, 0.1f * tolerance) << "ray " << i;
         }
       }
       // A shadow query skipping nothing, the nearest primitive, or a random one.
@@ -125,12 +182,14 @@ TEST(Embree, HitsMatchBruteForceRayByRay) {
 // Packets against single rays with the instruction set Embree picks for this CPU, and with AVX2
 // and SSE4.2 forced: below AVX-512 Embree has no 16-wide packets and traces them through its
 // ray-stream path, which ignores the valid mask (it read the unused lanes, and its checks
-// aborted on them).
+// aborted on them). Also through instances, where Embree's coherent 16-wide occlusion packets
+// never returned.
 class EmbreePackets : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(EmbreePackets, QueriesMatchRayByRay) {
-  for (uint32_t seed : {5u, 6u}) {
-    const SceneData scene = randomScene(seed, seed == 6 ? 10 : 40);
+  for (uint32_t seed : {5u, 6u, 9u}) {
+    const SceneData scene =
+        seed == 9 ? instancedScene(seed) : randomScene(seed, seed == 6 ? 10 : 40);
     EmbreeScene embree(*GetParam() ? GetParam() : nullptr);
     embree.update(scene, SceneChange::Structure);
     const EmbreeTracer tracer = embree.tracer();
@@ -265,6 +324,71 @@ TEST(Embree, RendersTheSameImageAsTheOwnBvhUpToRounding) {
   EXPECT_LT(relMse(embree, own), 0.05 * noise) << "noise between seeds " << noise;
 }
 
+// A ball of 8 x 6 quads (96 triangles, enough to be traced as instances) whose lower half is
+// half transparent (MTL d 0.5: a stochastic alpha test, which hashes the world's ray).
+std::string ballObj() {
+  std::string obj = "mtllib ball.mtl\n";
+  for (int j = 0; j <= 6; ++j)
+    for (int i = 0; i < 8; ++i) {
+      const float theta = 3.14159265f * float(j) / 6.0f, phi = 6.2831853f * float(i) / 8.0f;
+      obj += "v " + std::to_string(std::sin(theta) * std::cos(phi)) + " " +
+             std::to_string(std::cos(theta)) + " " +
+             std::to_string(std::sin(theta) * std::sin(phi)) + "\n";
+    }
+  for (int j = 0; j < 6; ++j) {
+    obj += j < 3 ? "usemtl solid\n" : "usemtl veil\n";
+    for (int i = 0; i < 8; ++i) {
+      const int a = j * 8 + i + 1, b = j * 8 + (i + 1) % 8 + 1;
+      obj += "f " + std::to_string(a) + " " + std::to_string(b) + " " + std::to_string(b + 8) +
+             " " + std::to_string(a + 8) + "\n";
+    }
+  }
+  return obj;
+}
+
+// Objects that repeat a mesh go to Embree as instances (two prototypes here: the ball, and the
+// ball mirrored, whose winding is reversed), between runs of objects of their own; one instance
+// is an area light (its shadow rays skip the light's triangle), and the balls' half-transparent
+// faces are alpha-tested through the instances. The image is the own BVH's up to rounding.
+TEST(Embree, RepeatedMeshesTracedAsInstancesRenderAsTheOwnBvhDoes) {
+  const test::TempDir dir;
+  const std::string ball = dir.write("ball.obj", ballObj());
+  dir.write("ball.mtl", "newmtl solid\nKd 0.7 0.7 0.7\nnewmtl veil\nKd 0.2 0.5 0.8\nd 0.5\n");
+  const std::string cornell = std::string(CANDELA_SOURCE_DIR) + "/scenes/meshes/cornell/";
+  const std::string json = R"({"camera": {"width": 48, "height": 40, "fov": 40, "spp": 20,
+        "position": [2.78, 2.73, -8.0], "look_at": [2.78, 2.73, 0]},
+    "render": {"max_depth": 5},
+    "environment": {"color": [0.2, 0.3, 0.4]},
+    "lights": [{"type": "point", "position": [2.78, 5.0, 1.0], "intensity": 300}],
+    "objects": [
+      {"file": ")" + ball + R"(", "position": [1.5, 1.0, 2.0], "scale": 0.9},
+      {"file": ")" + ball + R"(", "position": [2.8, 4.2, 2.5], "scale": 0.4,
+       "material": {"type": "emissive", "radiance": [8, 6, 3]}},
+      {"file": ")" + cornell +
+                           R"(red.obj", "color": [0.6, 0.1, 0.1]},
+      {"file": ")" + ball + R"(", "position": [3.8, 1.0, 3.0], "scale": [-0.9, 0.9, 0.9],
+       "rotation": [0, 40, 0]},
+      {"file": ")" + ball + R"(", "position": [2.6, 2.6, 3.5], "scale": [-0.6, 1.2, 0.6],
+       "rotation": [30, 0, 20]},
+      {"file": ")" + cornell +
+                           R"(white.obj", "color": [0.7, 0.7, 0.7]}]})";
+  SceneDesc scene = parseSceneText(json, "test.json", ".");
+
+  SceneDesc forEmbree = scene;
+  forEmbree.ownBvh = OwnBvh::None;
+  EmbreeScene embree;
+  embree.update(flattenScene(forEmbree), SceneChange::Structure);
+  EXPECT_EQ(embree.instanceCount(), 4u);
+
+  const ImageRGB own = renderWith(CpuEngine::Bvh, scene).image;
+  const ImageRGB instanced = renderWith(CpuEngine::Embree, scene).image;
+  scene.render.seed = 99;
+  const ImageRGB otherSeed = renderWith(CpuEngine::Bvh, scene).image;
+  const double noise = relMse(otherSeed, own);
+  EXPECT_GT(noise, 0.0);
+  EXPECT_LT(relMse(instanced, own), 0.05 * noise) << "noise between seeds " << noise;
+}
+
 // The orbit example's frames (the camera moves: values; the knot turns: a refit of Embree's
 // BVH) through one resident renderer, each as a renderer built for that frame alone renders it.
 TEST(Embree, AnimationFramesRenderAsFreshBuilds) {
@@ -285,6 +409,72 @@ TEST(Embree, AnimationFramesRenderAsFreshBuilds) {
     EXPECT_LT(relMse(image, fresh), 1e-6) << "frame " << f;
   }
   EXPECT_TRUE(sawMotion);
+}
+
+// A refit (SceneChange::Motion) of a scene whose objects repeat meshes otherwise than the scene
+// built last builds Embree's scene anew: the same triangles, first as instances, then as objects
+// of their own, then as instances again, each time traced as testing every triangle traces them.
+TEST(Embree, RefitToOtherRepeatsBuildsAnew) {
+  const SceneData instanced = instancedScene(10);
+  SceneData own = instanced;
+  own.meshInstances.prototypes.clear();
+  for (MeshInstance& object : own.meshInstances.objects) object.prototype = -1;
+  EmbreeScene embree;
+  std::mt19937 gen(11);
+  std::uniform_real_distribution<float> u(-5.0f, 5.0f);
+  int step = 0;
+  for (const SceneData* scene : std::vector<const SceneData*>{&instanced, &own, &instanced}) {
+    embree.update(*scene, step == 0 ? SceneChange::Structure : SceneChange::Motion);
+    EXPECT_EQ(embree.instanceCount(), scene == &own ? 0u : 5u) << "step " << step;
+    int agree = 0;
+    for (int i = 0; i < 500; ++i) {
+      Ray ray;
+      ray.origin = Vec3(u(gen), u(gen), u(gen));
+      ray.direction = test::randomUnitVector(gen);
+      Hit expected, got;
+      const bool found = intersectClosestBruteForce(scene->view(), ray, &expected);
+      agree += embree.tracer().closest(ray, &got) == found && (!found || got.prim == expected.prim);
+    }
+    EXPECT_GE(agree, 498) << "step " << step;
+    ++step;
+  }
+}
+
+// Two knots of one mesh, instances of it, through the frames of an animation: one turns and the
+// other shrinks, refits that move their instances. Each frame renders as a renderer built for
+// that frame alone renders it.
+TEST(Embree, AnimatedInstancesRenderAsFreshBuilds) {
+  const std::string knot = std::string(CANDELA_SOURCE_DIR) + "/scenes/meshes/trefoil.obj";
+  const std::string red = std::string(CANDELA_SOURCE_DIR) + "/scenes/meshes/cornell/red.obj";
+  const std::string json = R"({"camera": {"width": 40, "height": 30, "fov": 60, "spp": 2,
+        "position": [0, 0, 30], "look_at": [0, 0, 0]},
+    "environment": {"color": [0.5, 0.6, 0.7]},
+    "lights": [{"type": "point", "position": [0, 20, 20], "intensity": 20000}],
+    "objects": [
+      {"id": "spin", "file": ")" +
+                           knot + R"(", "position": [-6, 0, 0], "scale": 1.5},
+      {"file": ")" + red + R"(", "position": [-3, -8, -10], "scale": 3},
+      {"id": "shrink", "file": ")" +
+                           knot + R"(", "position": [6, 0, 0], "scale": 1.5}],
+    "animation": {"frames": 4, "tracks": [
+      {"target": "spin", "property": "rotation", "keys": [[0, [0, 0, 0]], [3, [30, 90, 0]]]},
+      {"target": "shrink", "property": "scale", "keys": [[0, 1.5], [3, 0.5]]}]}})";
+  SceneDesc animated = parseSceneText(json, "test.json", ".");
+  animated.ownBvh = OwnBvh::None;
+  FrameScene frames;
+  CpuRenderer resident(CpuEngine::Embree);
+  int motions = 0;
+  for (uint32_t f = 0; f < 4; ++f) {
+    const SceneDesc still = sceneAtFrame(animated, f);
+    const SceneData& data = frames.prepare(still);
+    EXPECT_EQ(data.meshInstances.prototypes.size(), 1u) << "frame " << f;
+    resident.setScene(data, frames.change());
+    motions += frames.change() == SceneChange::Motion;
+    const ImageRGB image = resident.render(RenderOptions{}).image;
+    const ImageRGB fresh = renderWith(CpuEngine::Embree, still).image;
+    EXPECT_LT(relMse(image, fresh), 1e-6) << "frame " << f;
+  }
+  EXPECT_EQ(motions, 3);
 }
 
 #endif

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "render/mesh_instances.h"
 #include "render/scene_change.h"
 #include "render/scene_view.h"
 
@@ -49,6 +50,8 @@ struct SceneData {
   // Host only: the instance number (docs/aovs.md) of the entity each material belongs to; every
   // sphere, object and sphere light appends materials of its own, so a material names one.
   std::vector<uint32_t> materialInstances;
+  // Host only: the objects that repeat a mesh, for an engine that traces them as instances.
+  MeshInstances meshInstances;
 
   SceneView view() const;
   // Moves the arrays of keyed group `group` (RewrittenBy::EnvironmentMap or TexturePool), its

@@ -13,6 +13,7 @@
 #include "scene/content_hash.h"
 #include "scene/flatten_environment.h"
 #include "scene/light_tree_build.h"
+#include "scene/mesh_repeats.h"
 
 namespace candela {
 
@@ -31,8 +32,10 @@ uint32_t addMaterial(SceneData& s, const Material& m) {
 // position that the file pairs with several normals (a crease) or several uvs (a texture seam) is
 // split into one vertex per combination; a vertex of a face without normals gets the encoding
 // "none" (OctNormal()), meaning "use the face normal", and one without uvs the uv (0, 0).
-// With `geometry` false only the object's materials are appended (see refreshSceneValues).
-void addObject(SceneData& s, const ObjectDesc& obj, bool geometry) {
+// With `geometry` false only the object's materials are appended (see refreshSceneValues); with
+// it, the object's place (s.meshInstances) too, and in *flattened the mesh vertex each split
+// vertex copies.
+void addObject(SceneData& s, const ObjectDesc& obj, bool geometry, FlattenedObject* flattened) {
   const MeshDesc& mesh = obj.mesh;
   uint32_t materialBase = 0;
   if (obj.material) {
@@ -46,6 +49,14 @@ void addObject(SceneData& s, const ObjectDesc& obj, bool geometry) {
   const Mat3 r = eulerRotation(obj.rotation);
   const uint32_t base = uint32_t(s.positions.size());
   for (const Vec3& p : mesh.positions) s.positions.push_back(obj.position + r * (obj.scale * p));
+  MeshInstance placed;
+  placed.firstTriangle = uint32_t(s.triangles.size());
+  placed.triangleCount = uint32_t(mesh.triangles.size());
+  placed.firstVertex = base;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) placed.linear.m[i][j] = r.m[i][j] * obj.scale[j];
+  placed.translation = obj.position;
+  flattened->mesh = &mesh;
 
   const bool withNormals = obj.smooth && !mesh.normals.empty();
   const bool withUvs = !mesh.uvs.empty();
@@ -73,6 +84,7 @@ void addObject(SceneData& s, const ObjectDesc& obj, bool geometry) {
     if (inserted) {
       s.positions.push_back(s.positions[base + v]);
       attributesOf.push_back(a);
+      flattened->splitSources.push_back(v);
     }
     return it->second;
   };
@@ -85,6 +97,8 @@ void addObject(SceneData& s, const ObjectDesc& obj, bool geometry) {
     w.material = obj.material ? materialBase : materialBase + t.material;
     s.triangles.push_back(w);
   }
+  placed.vertexCount = uint32_t(s.positions.size()) - base;
+  s.meshInstances.objects.push_back(placed);
 
   if (withNormals) {
     s.normals.resize(base, OctNormal());  // earlier vertices without normals
@@ -316,10 +330,14 @@ void addInstances(SceneData& s, const SceneDesc& desc, bool geometry) {
     addLight(s, desc.lights[i]);
     tagInstance(s, number.firstLight + i);
   }
+  std::vector<FlattenedObject> flattened(desc.objects.size());
   for (uint32_t i = 0; i < desc.objects.size(); ++i) {
-    addObject(s, desc.objects[i], geometry);
+    addObject(s, desc.objects[i], geometry, &flattened[i]);
     tagInstance(s, number.firstObject + i);
   }
+  // Only where no own BVH will reorder the triangles: an engine of its own traces the scene.
+  if (geometry && desc.ownBvh == OwnBvh::None) findRepeatedMeshes(s, flattened);
+  if (geometry && desc.ownBvh != OwnBvh::None) s.meshInstances = MeshInstances();
   // Vertices after the last smooth (or textured) mesh have no normals (or uvs) either.
   if (geometry && !s.normals.empty()) s.normals.resize(s.positions.size(), OctNormal());
   if (geometry && !s.uvs.empty()) s.uvs.resize(s.positions.size(), Vec2());

@@ -29,28 +29,31 @@ void keepError(void*, RTCError, const char* message) { lastError = message ? mes
 
 void rejectMaskedHit(const RTCFilterFunctionNArguments* args) {
   const auto* geometry = static_cast<const GeometryView*>(args->geometryUserPtr);
+  const auto* context = reinterpret_cast<const EmbreeQueryContext*>(args->context);
   const unsigned n = args->N;
   for (unsigned i = 0; i < n; ++i) {
     if (args->valid[i] != -1) continue;
-    Ray ray;
-    ray.origin = Vec3(RTCRayN_org_x(args->ray, n, i), RTCRayN_org_y(args->ray, n, i),
-                      RTCRayN_org_z(args->ray, n, i));
-    ray.direction = Vec3(RTCRayN_dir_x(args->ray, n, i), RTCRayN_dir_y(args->ray, n, i),
-                         RTCRayN_dir_z(args->ray, n, i));
-    const Triangle& tri = geometry->triangles[RTCHitN_primID(args->hit, n, i)];
-    if (!alphaKeepsHit(*geometry, tri, RTCHitN_u(args->hit, n, i), RTCHitN_v(args->hit, n, i),
-                       ray))
+    const uint32_t triangle =
+        triangleOfHit(context->firstTriangleOf, RTCHitN_geomID(args->hit, n, i),
+                      RTCHitN_instID(args->hit, n, i, 0), RTCHitN_primID(args->hit, n, i));
+    // The world's ray, as candela's own traversal tests it (a stochastic alpha hashes it).
+    const Ray& ray = context->rays[RTCRayN_id(args->ray, n, i)];
+    if (!alphaKeepsHit(*geometry, geometry->triangles[triangle], RTCHitN_u(args->hit, n, i),
+                       RTCHitN_v(args->hit, n, i), ray))
       args->valid[i] = 0;
   }
 }
 
 void rejectSkippedTriangle(const RTCFilterFunctionNArguments* args) {
-  const auto* context = reinterpret_cast<const EmbreeSkipContext*>(args->context);
+  const auto* context = reinterpret_cast<const EmbreeQueryContext*>(args->context);
   const unsigned n = args->N;
   for (unsigned i = 0; i < n; ++i) {
     if (args->valid[i] != -1) continue;
     const uint32_t skip = context->skipPrims[RTCRayN_id(args->ray, n, i)];
-    if (context->sphereCount + RTCHitN_primID(args->hit, n, i) == skip) args->valid[i] = 0;
+    const uint32_t triangle =
+        triangleOfHit(context->firstTriangleOf, RTCHitN_geomID(args->hit, n, i),
+                      RTCHitN_instID(args->hit, n, i, 0), RTCHitN_primID(args->hit, n, i));
+    if (context->sphereCount + triangle == skip) args->valid[i] = 0;
   }
 }
 
@@ -63,14 +66,32 @@ EmbreeScene::EmbreeScene(const char* deviceConfig) {
 }
 
 EmbreeScene::~EmbreeScene() {
-  if (scene_) rtcReleaseScene(scene_);
-  if (triangles_) rtcReleaseGeometry(triangles_);
+  release();
   rtcReleaseDevice(device_);
+}
+
+void EmbreeScene::release() {
+  if (scene_) rtcReleaseScene(scene_);
+  for (Part& part : parts_)
+    if (part.geometry) rtcReleaseGeometry(part.geometry);
+  for (Prototype& prototype : prototypes_) {
+    if (prototype.scene) rtcReleaseScene(prototype.scene);
+    if (prototype.geometry) rtcReleaseGeometry(prototype.geometry);
+  }
+  scene_ = nullptr;
+  parts_.clear();
+  prototypes_.clear();
+  firstTriangleOf_.clear();
 }
 
 size_t EmbreeScene::bytes() const {
   return size_t(std::max(0LL, embreeBytes.load())) + sphereNodes_.size() * sizeof(BvhNode) +
          spherePrims_.size() * sizeof(uint32_t) + sphereBlocks_.bytes();
+}
+
+uint32_t EmbreeScene::instanceCount() const {
+  return uint32_t(std::count_if(parts_.begin(), parts_.end(),
+                                [](const Part& part) { return part.object >= 0; }));
 }
 
 void EmbreeScene::update(const SceneData& scene, SceneChange change) {
@@ -84,17 +105,29 @@ void EmbreeScene::update(const SceneData& scene, SceneChange change) {
   updateMasks(scene);
 }
 
+void EmbreeScene::setMaskFilters(bool masked) {
+  const auto set = [masked](RTCGeometry geometry) {
+    rtcSetGeometryIntersectFilterFunction(geometry, masked ? rejectMaskedHit : nullptr);
+    rtcSetGeometryOccludedFilterFunction(geometry, masked ? rejectMaskedHit : nullptr);
+    rtcCommitGeometry(geometry);
+  };
+  for (const Prototype& prototype : prototypes_) {
+    set(prototype.geometry);
+    commit(prototype.scene);
+  }
+  for (const Part& part : parts_)
+    if (part.object < 0) set(part.geometry);
+  filtered_ = masked;
+}
+
 void EmbreeScene::updateMasks(const SceneData& scene) {
   const SceneView view = scene.view();
   maskView_ = view;  // the geometry part: triangles, uvs, masks and textures
   const bool masked = view.alphaMaskCount != 0;
-  if (!triangles_ || masked == filtered_) return;
+  if (!scene_ || masked == filtered_) return;
   // Scenes without masks pay nothing: the filters are installed only when a material is masked.
-  rtcSetGeometryIntersectFilterFunction(triangles_, masked ? rejectMaskedHit : nullptr);
-  rtcSetGeometryOccludedFilterFunction(triangles_, masked ? rejectMaskedHit : nullptr);
-  rtcCommitGeometry(triangles_);
-  commit();
-  filtered_ = masked;
+  setMaskFilters(masked);
+  commit(scene_);
 }
 
 void EmbreeScene::placeSpheres(const SceneData& scene) {
@@ -118,39 +151,143 @@ void EmbreeScene::placeSpheres(const SceneData& scene) {
   sphereView_.primIndexCount = uint32_t(spherePrims_.size());
 }
 
+EmbreeScene::Plan EmbreeScene::planParts(const SceneData& scene) {
+  Plan plan;
+  const MeshInstances& instances = scene.meshInstances;
+  std::vector<bool> traced(instances.prototypes.size(), false);
+  for (uint32_t p = 0; p < instances.prototypes.size(); ++p) {
+    const MeshInstance& first = instances.objects[instances.prototypes[p].firstInstance];
+    traced[p] = first.triangleCount >= kInstanceFromTriangles;
+    if (traced[p]) plan.prototypes.push_back(Prototype{int32_t(p)});
+  }
+  // Without instances one run takes every triangle, as flattening left them (also where no
+  // object's place is known: after an own BVH reordered them).
+  Part run;  // the run being gathered, from the first triangle and vertex not in a part yet
+  const auto endRun = [&](uint32_t triangleEnd, uint32_t vertexEnd) {
+    run.triangleCount = triangleEnd - run.firstTriangle;
+    run.vertexCount = vertexEnd - run.firstVertex;
+    if (run.triangleCount != 0) plan.parts.push_back(run);
+  };
+  for (uint32_t i = 0; i < instances.objects.size(); ++i) {
+    const MeshInstance& object = instances.objects[i];
+    if (object.prototype < 0 || !traced[uint32_t(object.prototype)]) continue;
+    endRun(object.firstTriangle, object.firstVertex);
+    Part part;
+    part.firstTriangle = object.firstTriangle;
+    part.triangleCount = object.triangleCount;
+    part.firstVertex = object.firstVertex;
+    part.vertexCount = object.vertexCount;
+    part.object = int32_t(i);
+    plan.parts.push_back(part);
+    run = Part();
+    run.firstTriangle = object.firstTriangle + object.triangleCount;
+    run.firstVertex = object.firstVertex + object.vertexCount;
+  }
+  endRun(uint32_t(scene.triangles.size()), uint32_t(scene.positions.size()));
+  return plan;
+}
+
+bool EmbreeScene::sameParts(const Plan& plan) const {
+  const auto samePart = [](const Part& a, const Part& b) {
+    return a.firstTriangle == b.firstTriangle && a.triangleCount == b.triangleCount &&
+           a.firstVertex == b.firstVertex && a.vertexCount == b.vertexCount && a.object == b.object;
+  };
+  if (plan.parts.size() != parts_.size() || plan.prototypes.size() != prototypes_.size())
+    return false;
+  for (size_t i = 0; i < parts_.size(); ++i)
+    if (!samePart(plan.parts[i], parts_[i])) return false;
+  for (size_t i = 0; i < prototypes_.size(); ++i)
+    if (plan.prototypes[i].index != prototypes_[i].index) return false;
+  return true;
+}
+
+RTCGeometry EmbreeScene::newTriangles(const Vec3* positions, uint32_t vertexCount,
+                                      const Triangle* triangles, uint32_t triangleCount,
+                                      uint32_t firstVertex, bool shareIndices) {
+  RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
+  rtcSetGeometryUserData(geometry, &maskView_);
+  if (filtered_) {
+    rtcSetGeometryIntersectFilterFunction(geometry, rejectMaskedHit);
+    rtcSetGeometryOccludedFilterFunction(geometry, rejectMaskedHit);
+  }
+  // Embree reads vertices with 16-byte loads, so it gets its own padded copy; the triangles'
+  // fourth word (the material) is passed over by the stride.
+  void* vertices = rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                           sizeof(Vec3), vertexCount);
+  if (vertices) std::memcpy(vertices, positions, vertexCount * sizeof(Vec3));
+  if (shareIndices && firstVertex == 0) {
+    rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, triangles, 0,
+                               sizeof(Triangle), triangleCount);
+  } else if (auto* indices = static_cast<uint32_t*>(
+                 rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                         3 * sizeof(uint32_t), triangleCount))) {
+    for (uint32_t t = 0; t < triangleCount; ++t)
+      for (int k = 0; k < 3; ++k) indices[3 * t + k] = triangles[t].v[k] - firstVertex;
+  }
+  rtcCommitGeometry(geometry);
+  return geometry;
+}
+
+void EmbreeScene::placeInstance(const SceneData& scene, const Part& part) {
+  const MeshInstance& object = scene.meshInstances.objects[uint32_t(part.object)];
+  float rows[12];
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) rows[4 * i + j] = object.linear.m[i][j];
+    rows[4 * i + 3] = object.translation[i];
+  }
+  rtcSetGeometryTransform(part.geometry, 0, RTC_FORMAT_FLOAT3X4_ROW_MAJOR, rows);
+  rtcCommitGeometry(part.geometry);
+}
+
 void EmbreeScene::build(const SceneData& scene) {
   built_ = true;
-  if (scene_) rtcReleaseScene(scene_);
-  if (triangles_) rtcReleaseGeometry(triangles_);
-  scene_ = nullptr;
-  triangles_ = nullptr;
+  release();
   lastError.clear();
   const auto start = std::chrono::steady_clock::now();
   placeSpheres(scene);
   buildSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (scene.triangles.empty()) return;
 
+  Plan plan = planParts(scene);
+  parts_ = std::move(plan.parts);
+  prototypes_ = std::move(plan.prototypes);
+  for (const Part& part : parts_) firstTriangleOf_.push_back(part.firstTriangle);
+  filtered_ = !scene.alphaMasks.empty();
+  for (Prototype& prototype : prototypes_) {
+    const MeshPrototype& mesh = scene.meshInstances.prototypes[uint32_t(prototype.index)];
+    const MeshInstance& first = scene.meshInstances.objects[mesh.firstInstance];
+    prototype.scene = rtcNewScene(device_);
+    rtcSetSceneFlags(prototype.scene, RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION);
+    rtcSetSceneBuildQuality(prototype.scene, RTC_BUILD_QUALITY_MEDIUM);
+    // Its own indices: the instance whose triangles they are may be gone when a later frame
+    // refits, and the prototype's vertices start at that instance's first.
+    prototype.geometry = newTriangles(mesh.positions.data(), uint32_t(mesh.positions.size()),
+                                      scene.triangles.data() + first.firstTriangle,
+                                      first.triangleCount, first.firstVertex, false);
+    rtcAttachGeometryByID(prototype.scene, prototype.geometry, 0);
+  }
   scene_ = rtcNewScene(device_);
   rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION);
   rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_MEDIUM);
-  triangles_ = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
-  rtcSetGeometryUserData(triangles_, &maskView_);
-  filtered_ = !scene.alphaMasks.empty();
-  if (filtered_) {
-    rtcSetGeometryIntersectFilterFunction(triangles_, rejectMaskedHit);
-    rtcSetGeometryOccludedFilterFunction(triangles_, rejectMaskedHit);
+  for (uint32_t id = 0; id < parts_.size(); ++id) {
+    Part& part = parts_[id];
+    if (part.object < 0) {
+      // Indices stay the scene's where the run's vertices start at its first.
+      part.geometry = newTriangles(scene.positions.data() + part.firstVertex, part.vertexCount,
+                                   scene.triangles.data() + part.firstTriangle, part.triangleCount,
+                                   part.firstVertex, true);
+    } else {
+      const int32_t p = scene.meshInstances.objects[uint32_t(part.object)].prototype;
+      const auto traced = std::find_if(prototypes_.begin(), prototypes_.end(),
+                                       [p](const Prototype& t) { return t.index == p; });
+      part.geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_INSTANCE);
+      rtcSetGeometryInstancedScene(part.geometry, traced->scene);
+      placeInstance(scene, part);
+    }
+    rtcAttachGeometryByID(scene_, part.geometry, id);
   }
-  // Embree reads vertices with 16-byte loads, so it gets its own padded copy; the triangles'
-  // fourth word (the material) is passed over by the stride.
-  void* vertices = rtcSetNewGeometryBuffer(triangles_, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
-                                           sizeof(Vec3), scene.positions.size());
-  if (vertices)
-    std::memcpy(vertices, scene.positions.data(), scene.positions.size() * sizeof(Vec3));
-  rtcSetSharedGeometryBuffer(triangles_, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                             scene.triangles.data(), 0, sizeof(Triangle), scene.triangles.size());
-  rtcCommitGeometry(triangles_);
-  rtcAttachGeometry(scene_, triangles_);
-  commit();
+  for (const Prototype& prototype : prototypes_) commit(prototype.scene);
+  commit(scene_);
 }
 
 void EmbreeScene::refit(const SceneData& scene) {
@@ -158,21 +295,43 @@ void EmbreeScene::refit(const SceneData& scene) {
   const auto start = std::chrono::steady_clock::now();
   placeSpheres(scene);
   buildSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (!triangles_) return;
-  void* vertices = rtcGetGeometryBufferData(triangles_, RTC_BUFFER_TYPE_VERTEX, 0);
-  std::memcpy(vertices, scene.positions.data(), scene.positions.size() * sizeof(Vec3));
-  // The same triangles: only the array may have moved in memory.
-  rtcSetSharedGeometryBuffer(triangles_, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                             scene.triangles.data(), 0, sizeof(Triangle), scene.triangles.size());
-  rtcUpdateGeometryBuffer(triangles_, RTC_BUFFER_TYPE_VERTEX, 0);
-  rtcSetGeometryBuildQuality(triangles_, RTC_BUILD_QUALITY_REFIT);
-  rtcCommitGeometry(triangles_);
-  commit();
+  if (!scene_) return;
+  // An instance whose place in the plan changed (a mesh mirrored since) needs a new build.
+  if (!sameParts(planParts(scene))) {
+    build(scene);
+    return;
+  }
+  const auto rewrite = [](RTCGeometry geometry, const Vec3* positions, uint32_t count) {
+    void* vertices = rtcGetGeometryBufferData(geometry, RTC_BUFFER_TYPE_VERTEX, 0);
+    std::memcpy(vertices, positions, count * sizeof(Vec3));
+    rtcUpdateGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0);
+    rtcSetGeometryBuildQuality(geometry, RTC_BUILD_QUALITY_REFIT);
+  };
+  for (const Prototype& prototype : prototypes_) {
+    const MeshPrototype& mesh = scene.meshInstances.prototypes[uint32_t(prototype.index)];
+    rewrite(prototype.geometry, mesh.positions.data(), uint32_t(mesh.positions.size()));
+    rtcCommitGeometry(prototype.geometry);
+    commit(prototype.scene);
+  }
+  for (const Part& part : parts_) {
+    if (part.object >= 0) {
+      placeInstance(scene, part);
+      continue;
+    }
+    rewrite(part.geometry, scene.positions.data() + part.firstVertex, part.vertexCount);
+    // The same triangles: only the array may have moved in memory.
+    if (part.firstVertex == 0)
+      rtcSetSharedGeometryBuffer(part.geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                 scene.triangles.data() + part.firstTriangle, 0, sizeof(Triangle),
+                                 part.triangleCount);
+    rtcCommitGeometry(part.geometry);
+  }
+  commit(scene_);
 }
 
-void EmbreeScene::commit() {
+void EmbreeScene::commit(RTCScene scene) {
   const auto start = std::chrono::steady_clock::now();
-  rtcCommitScene(scene_);
+  rtcCommitScene(scene);
   buildSeconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (rtcGetDeviceError(device_) != RTC_ERROR_NONE || !lastError.empty())
     throw BackendError("Embree could not build the scene's BVH: " +

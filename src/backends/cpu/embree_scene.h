@@ -3,13 +3,16 @@
 //
 // Embree builds its own BVH over the triangles (binned SAH at RTC_BUILD_QUALITY_MEDIUM:
 // docs/performance.md), from a copy of the vertices and the scene's own triangle array, shared.
-// The spheres stay candela's: in blocks of 4 or 8 when they are few, else in a BVH of their own. A
-// frame whose primitives moved (SceneChange::Motion) rewrites the vertices and refits Embree's
-// BVH, and places the spheres anew (their blocks, or their BVH beyond 32 spheres); a new
-// structure rebuilds both. Alpha-masked materials (geometry/alpha_mask.h) get intersection and
-// occlusion filters on the triangles that apply the same test as candela's own traversal.
-// Embree picks the widest SIMD the CPU has at run time (SSE2 up to
-// AVX-512).
+// Objects that repeat a mesh of at least kInstanceFromTriangles triangles (render/mesh_instances.h)
+// are instances of one BVH built over the mesh in object space, each with its object's transform;
+// the other objects' triangles are geometries over the runs of the triangle array between them
+// (with no repeats, one over all). The spheres stay candela's: in blocks of 4 or 8 when they are
+// few, else in a BVH of their own. A frame whose primitives moved (SceneChange::Motion) rewrites
+// the vertices and refits Embree's BVHs, moves the instances, and places the spheres anew (their
+// blocks, or their BVH beyond 32 spheres); a new structure rebuilds both. Alpha-masked materials
+// (geometry/alpha_mask.h) get intersection and occlusion filters on the triangles that apply the
+// same test as candela's own traversal. Embree picks the widest SIMD the CPU has at run time (SSE2
+// up to AVX-512).
 #pragma once
 
 #include <embree3/rtcore.h>
@@ -22,6 +25,9 @@
 #include "render/scene_data.h"
 
 namespace candela {
+
+// Repeated meshes of fewer triangles stay in the runs: docs/performance.md, "Instances".
+constexpr uint32_t kInstanceFromTriangles = 64;
 
 class EmbreeScene {
  public:
@@ -38,8 +44,11 @@ class EmbreeScene {
   void update(const SceneData& scene, SceneChange change);
 
   EmbreeTracer tracer() const {
-    return EmbreeTracer{scene_, sphereView_, sphereBlocks_.view(), sphereCount_};
+    return EmbreeTracer{scene_,      firstTriangleOf_.data(), prototypes_.empty(),
+                        sphereView_, sphereBlocks_.view(),    sphereCount_};
   }
+  // How many objects Embree traces as instances of a repeated mesh.
+  uint32_t instanceCount() const;
   // Seconds the last update spent building or refitting Embree's BVH.
   double buildSeconds() const { return buildSeconds_; }
   // Bytes the engine holds: what Embree has now for this process (its BVH, its vertex copy; from
@@ -47,15 +56,49 @@ class EmbreeScene {
   size_t bytes() const;
 
  private:
+  // A run of the scene's triangles (and the vertices they use) that Embree holds as one
+  // geometry, or one object that is an instance of a prototype.
+  struct Part {
+    uint32_t firstTriangle = 0, triangleCount = 0, firstVertex = 0, vertexCount = 0;
+    int32_t object = -1;  // the instance's object; -1 for a run
+    RTCGeometry geometry = nullptr;
+  };
+  // A prototype traced as instances: its own Embree scene of one triangle geometry.
+  struct Prototype {
+    int32_t index = -1;  // into SceneData::meshInstances.prototypes
+    RTCScene scene = nullptr;
+    RTCGeometry geometry = nullptr;
+  };
+
+  struct Plan {
+    std::vector<Part> parts;
+    std::vector<Prototype> prototypes;
+  };
+
   void build(const SceneData& scene);
   void refit(const SceneData& scene);
+  void release();
+  // The parts and prototypes of `scene`, before Embree has any of them.
+  static Plan planParts(const SceneData& scene);
+  // Whether `plan` has the parts and prototypes of the scene built last: what a refit needs.
+  bool sameParts(const Plan& plan) const;
+  // A triangle geometry of its own copy of the vertices, whose triangles index them from
+  // firstVertex on; the triangles are shared where `shareIndices` and firstVertex is 0 (they
+  // must then stay until the next update), else copied.
+  RTCGeometry newTriangles(const Vec3* positions, uint32_t vertexCount, const Triangle* triangles,
+                           uint32_t triangleCount, uint32_t firstVertex, bool shareIndices);
+  void placeInstance(const SceneData& scene, const Part& part);
   void placeSpheres(const SceneData& scene);
-  void commit();
+  // Commits `scene` (scene_, or a prototype's), adding the seconds to buildSeconds_.
+  void commit(RTCScene scene);
   void updateMasks(const SceneData& scene);
+  void setMaskFilters(bool masked);
 
   RTCDevice device_ = nullptr;
   RTCScene scene_ = nullptr;  // the triangles; null when there are none
-  RTCGeometry triangles_ = nullptr;
+  std::vector<Part> parts_;   // in the order of the triangles, whose geometry IDs they have
+  std::vector<Prototype> prototypes_;
+  std::vector<uint32_t> firstTriangleOf_;  // of each part, by geometry ID
   std::vector<BvhNode> sphereNodes_;
   std::vector<uint32_t> spherePrims_;
   SphereBlocks sphereBlocks_;

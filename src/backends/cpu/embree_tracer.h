@@ -1,7 +1,8 @@
 // EmbreeTracer: the CPU's ray engine on Intel Embree 3 (a tracer in the sense of
 // geometry/bvh_tracer.h), over an EmbreeScene (backends/cpu/embree_scene.h).
 //
-// Embree holds the triangles, as one triangle geometry; the spheres stay candela's own, traced
+// Embree holds the triangles (backends/cpu/embree_scene.h: in runs of objects, and the objects
+// that repeat a mesh as instances of one); the spheres stay candela's own, traced
 // inline first, so a ray pays no callback per sphere (Embree's user geometry cost the
 // sphere-walled default room a fifth of its speed) and a sphere hit shortens the ray Embree then
 // traces. A few spheres are tested in blocks of 4 or 8 (backends/cpu/sphere_blocks.h), more
@@ -20,13 +21,23 @@
 
 namespace candela {
 
-// An intersection context that names the primitive each shadow ray must not hit: ray id k
-// (RTCRay::id) skips skipPrims[k].
-struct EmbreeSkipContext {
+// The intersection context of every query: what the filters need beyond Embree's hit. Ray id k
+// (RTCRay::id) is rays[k] in world space (within an instance Embree hands a filter the ray in
+// the instance's space), and skips primitive skipPrims[k] (none where skipPrims is null).
+struct EmbreeQueryContext {
   RTCIntersectContext base;  // first, so Embree's pointer to it is a pointer to this
+  const Ray* rays;
   const uint32_t* skipPrims;
+  const uint32_t* firstTriangleOf;  // EmbreeTracer::firstTriangleOf
   uint32_t sphereCount;
 };
+
+// The scene's triangle that an Embree hit names: its primitive in the geometry it hit, shifted
+// by where that geometry's triangles start (the instance's, when the geometry is one's).
+inline uint32_t triangleOfHit(const uint32_t* firstTriangleOf, unsigned geomID, unsigned instID,
+                              unsigned primID) {
+  return firstTriangleOf[instID != RTC_INVALID_GEOMETRY_ID ? instID : geomID] + primID;
+}
 
 // Context filter: rejects hits on the triangles the rays skip.
 void rejectSkippedTriangle(const RTCFilterFunctionNArguments* args);
@@ -40,6 +51,12 @@ struct EmbreeTracer {
   // vectors): docs/performance.md has the gain.
   static constexpr uint32_t kPacketWidth = 16;  // RTCRayHit16's lanes
   RTCScene triangles;    // null when the scene has none
+  // Where the triangles of each geometry of `triangles` start among the scene's, by geometry ID:
+  // Embree numbers a hit's triangle within the geometry (or the instance) it hit.
+  const uint32_t* firstTriangleOf;
+  // Whether packets may be traced as coherent: not through instances, where Debian's Embree
+  // 3.13.5 never returns from a coherent rtcOccluded16 with 16-wide (AVX-512) kernels.
+  bool coherentPackets;
   GeometryView spheres;  // the spheres and, when they are not in blocks, their BVH (no triangles)
   SphereBlocksView sphereBlocks;  // the spheres in blocks, when they are few; else empty
   uint32_t sphereCount;
@@ -48,15 +65,16 @@ struct EmbreeTracer {
     if (!isFiniteRay(ray)) return false;  // Embree's behaviour on NaN rays is undefined
     const bool sphereFound = closestSphereOf(ray, hit);
     if (!triangles) return sphereFound;
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
+    EmbreeQueryContext context = queryContext(&ray, nullptr);
     RTCRayHit rayHit;
     setRay(ray, sphereFound ? hit->t : ray.tMax, &rayHit.ray);
     rayHit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-    rtcIntersect1(triangles, &context, &rayHit);
+    rayHit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect1(triangles, &context.base, &rayHit);
     if (rayHit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return sphereFound;
     hit->t = rayHit.ray.tfar;
-    hit->prim = sphereCount + rayHit.hit.primID;
+    hit->prim = sphereCount + triangleOfHit(firstTriangleOf, rayHit.hit.geomID,
+                                            rayHit.hit.instID[0], rayHit.hit.primID);
     hit->b1 = rayHit.hit.u;
     hit->b2 = rayHit.hit.v;
     return true;
@@ -72,6 +90,7 @@ struct EmbreeTracer {
       valid[i] = 0;
       setInactiveLane(i, &packet.ray);
       packet.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
+      packet.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID;
       if (i >= n) continue;
       hits[i] = Hit();
       if (!isFiniteRay(rays[i])) continue;
@@ -84,14 +103,14 @@ struct EmbreeTracer {
       setLane(rays[i], sphereFound ? hits[i].t : rays[i].tMax, i, &packet.ray);
     }
     if (!any) return;
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
-    context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
-    rtcIntersect16(valid, triangles, &context, &packet);
+    EmbreeQueryContext context = queryContext(rays, nullptr);
+    context.base.flags = packetFlags();
+    rtcIntersect16(valid, triangles, &context.base, &packet);
     for (uint32_t i = 0; i < n; ++i) {
       if (!valid[i] || packet.hit.geomID[i] == RTC_INVALID_GEOMETRY_ID) continue;
       hits[i].t = packet.ray.tfar[i];
-      hits[i].prim = sphereCount + packet.hit.primID[i];
+      hits[i].prim = sphereCount + triangleOfHit(firstTriangleOf, packet.hit.geomID[i],
+                                                 packet.hit.instID[0][i], packet.hit.primID[i]);
       hits[i].b1 = packet.hit.u[i];
       hits[i].b2 = packet.hit.v[i];
     }
@@ -101,10 +120,7 @@ struct EmbreeTracer {
     if (!isFiniteRay(ray)) return false;
     if (anySphereOf(ray, skipPrim)) return true;
     if (!triangles) return false;
-    EmbreeSkipContext context;
-    rtcInitIntersectContext(&context.base);
-    context.skipPrims = &skipPrim;
-    context.sphereCount = sphereCount;
+    EmbreeQueryContext context = queryContext(&ray, &skipPrim);
     if (skipsTriangle(skipPrim)) context.base.filter = rejectSkippedTriangle;
     RTCRay r;
     setRay(ray, ray.tMax, &r);
@@ -135,11 +151,8 @@ struct EmbreeTracer {
       setLane(rays[k], rays[k].tMax, k, &packet);
     }
     if (!any) return;
-    EmbreeSkipContext context;
-    rtcInitIntersectContext(&context.base);
-    context.base.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
-    context.skipPrims = skipPrims;
-    context.sphereCount = sphereCount;
+    EmbreeQueryContext context = queryContext(rays, skipPrims);
+    context.base.flags = packetFlags();
     if (skips) context.base.filter = rejectSkippedTriangle;
     rtcOccluded16(valid, triangles, &context.base, &packet);
     for (uint32_t k = 0; k < n; ++k)
@@ -147,6 +160,21 @@ struct EmbreeTracer {
   }
 
  private:
+  EmbreeQueryContext queryContext(const Ray* rays, const uint32_t* skipPrims) const {
+    EmbreeQueryContext context;
+    rtcInitIntersectContext(&context.base);
+    context.rays = rays;
+    context.skipPrims = skipPrims;
+    context.firstTriangleOf = firstTriangleOf;
+    context.sphereCount = sphereCount;
+    return context;
+  }
+
+  RTCIntersectContextFlags packetFlags() const {
+    return coherentPackets ? RTC_INTERSECT_CONTEXT_FLAG_COHERENT
+                           : RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
+  }
+
   bool closestSphereOf(const Ray& ray, Hit* hit) const {
     if (sphereBlocks.blockCount == 0) return intersectClosest(spheres, ray, hit);
     if (!closestSphere(sphereBlocks, ray, ray.tMax, &hit->t, &hit->prim)) return false;
