@@ -358,9 +358,11 @@ TEST(FrameScene, CameraAndLightChangesReuseTheBvhAndARadiusChangeRefitsIt) {
 TEST(FrameScene, ObjectTransformChangeRefitsAndMeshChangeRebuilds) {
   SceneDesc scene;
   ObjectDesc object;
-  object.mesh.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)};
-  object.mesh.triangles = {MeshTriangle{{0, 1, 2}, {-1, -1, -1}, 0}};
-  object.mesh.materials = {Material{}};
+  auto mesh = std::make_shared<MeshDesc>();
+  mesh->positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)};
+  mesh->triangles = {MeshTriangle{{0, 1, 2}, {-1, -1, -1}, 0}};
+  mesh->materials = {Material{}};
+  object.mesh = mesh;
   scene.objects.push_back(object);
   FrameScene frames;
   frames.prepare(scene);
@@ -370,7 +372,9 @@ TEST(FrameScene, ObjectTransformChangeRefitsAndMeshChangeRebuilds) {
   scene.objects[0].rotation = Vec3(0, 10, 0);
   expectSameContents(frames.prepare(scene), flattenScene(scene));
   EXPECT_EQ(frames.change(), SceneChange::Motion);
-  scene.objects[0].mesh.positions[2] = Vec3(0, 2, 0);  // same transform, other mesh
+  auto other = std::make_shared<MeshDesc>(*mesh);
+  other->positions[2] = Vec3(0, 2, 0);  // same transform, other mesh
+  scene.objects[0].mesh = other;
   expectSameScene(frames.prepare(scene), flattenScene(scene));
   EXPECT_EQ(frames.change(), SceneChange::Structure);
 }
@@ -388,11 +392,13 @@ TEST(FrameScene, TexturePoolStaysUntilTheTexturesChange) {
   };
   SceneDesc scene;
   ObjectDesc object;
-  object.mesh.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)};
-  object.mesh.triangles = {MeshTriangle{{0, 1, 2}, {-1, -1, -1}, 0}};
+  auto mesh = std::make_shared<MeshDesc>();
+  mesh->positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)};
+  mesh->triangles = {MeshTriangle{{0, 1, 2}, {-1, -1, -1}, 0}};
   Material textured;
   textured.colorTexture.index = 0;
-  object.mesh.materials = {textured};
+  mesh->materials = {textured};
+  object.mesh = mesh;
   scene.objects.push_back(object);
   scene.textures = {texture(100)};
   auto map = std::make_shared<ImageRGB>(4, 2);
@@ -484,16 +490,16 @@ TEST(SceneUpdate, KeyedGroupsAreRewrittenByTheirOwnChangesOnly) {
 // Two grids of triangles far apart, then moved into each other: refitting would leave boxes that
 // overlap almost entirely, so the SAH cost says rebuild; a small move is refitted.
 TEST(FrameScene, RefitUnlessTheTreeDegradesThenRebuild) {
-  MeshDesc grid;
+  auto grid = std::make_shared<MeshDesc>();
   for (int i = 0; i <= 10; ++i)
-    for (int j = 0; j <= 10; ++j) grid.positions.push_back(Vec3(float(i), float(j), 0.0f));
+    for (int j = 0; j <= 10; ++j) grid->positions.push_back(Vec3(float(i), float(j), 0.0f));
   for (uint32_t i = 0; i < 10; ++i)
     for (uint32_t j = 0; j < 10; ++j) {
       const uint32_t a = i * 11 + j, b = a + 11;
-      grid.triangles.push_back(MeshTriangle{{a, b, a + 1}, {-1, -1, -1}, 0});
-      grid.triangles.push_back(MeshTriangle{{b, b + 1, a + 1}, {-1, -1, -1}, 0});
+      grid->triangles.push_back(MeshTriangle{{a, b, a + 1}, {-1, -1, -1}, 0});
+      grid->triangles.push_back(MeshTriangle{{b, b + 1, a + 1}, {-1, -1, -1}, 0});
     }
-  grid.materials = {Material{}};
+  grid->materials = {Material{}};
   SceneDesc scene;
   auto map = std::make_shared<ImageRGB>(4, 2);
   map->set(2, 1, Vec3(1, 2, 3));

@@ -141,8 +141,8 @@ TEST(Flatten, AConsumedDescriptionGivesTheSameSceneAndReleasesOnlyItsMeshes) {
   EXPECT_TRUE(sameBytes(kept.primIndices, consumed.primIndices));
   ASSERT_EQ(desc.objects.size(), 2u);  // NOLINT(bugprone-use-after-move): documented state
   for (const ObjectDesc& o : desc.objects) {
-    EXPECT_TRUE(o.mesh.positions.empty());
-    EXPECT_TRUE(o.mesh.triangles.empty());
+    EXPECT_TRUE(o.mesh->positions.empty());
+    EXPECT_TRUE(o.mesh->triangles.empty());
   }
   EXPECT_EQ(desc.objects[0].position.z, 3.0f);
   EXPECT_EQ(desc.output.exposure, -3.0f);

@@ -301,7 +301,9 @@ TEST(LightTree, AFrameKeepsTheTreeOnlyWhereItsLightsAreTheSame) {
     for (size_t i = 0; i < fresh.lights.size(); ++i)
       ASSERT_EQ(data.lights[i].trail, fresh.lights[i].trail) << what << ", light " << i;
   };
-  desc.objects[0].mesh.materials[1].radiance *= 40.0f;
+  auto mesh = std::make_shared<MeshDesc>(*desc.objects[0].mesh);
+  mesh->materials[1].radiance *= 40.0f;
+  desc.objects[0].mesh = mesh;
   expectFreshTree("a third of the triangles brighten");
   desc.lights[3].position = Vec3(-9, 2, -9);
   expectFreshTree("a point light moves");

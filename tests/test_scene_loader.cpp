@@ -682,7 +682,7 @@ TEST_F(SceneLoader, ObjectsResolveFilesAndKeepTheirOwnMaterials) {
   expectVec3(a.scale, 2, -1, 3);
   EXPECT_FALSE(a.smooth);
   EXPECT_FALSE(a.material);  // the mesh's own (here the default) materials apply
-  EXPECT_EQ(a.mesh.triangles.size(), 1u);
+  EXPECT_EQ(a.mesh->triangles.size(), 1u);
 
   expectVec3(scene.objects[1].scale, 0.5f, 0.5f, 0.5f);
   EXPECT_TRUE(scene.objects[1].smooth);
@@ -703,7 +703,7 @@ TEST_F(SceneLoader, LoadSceneFileResolvesObjFilesNextToTheScene) {
   EXPECT_EQ(scene.file, path);
   EXPECT_EQ(scene.camera.width, 32u);
   ASSERT_EQ(scene.objects.size(), 1u);
-  EXPECT_EQ(scene.objects[0].mesh.positions.size(), 3u);
+  EXPECT_EQ(scene.objects[0].mesh->positions.size(), 3u);
 
   const std::string bad = dir.write("scenes/bad.json", R"({"camera": {"width": -3}})");
   EXPECT_EQ(errorOf([&] { loadSceneFile(bad); }),

@@ -170,8 +170,8 @@ TEST(ObjUv, VtIsReadAndSeamsSplitVertices) {
                                     "f 1/1/1 2/2/1 3/3/1\nf 1/5/1 3/3/1 4/4/1\nf 1/1/2 3/3/1 4/4/1\n");
   ObjectDesc object;
   object.file = obj;
-  object.mesh = loadObjFile(obj, "q.obj", loader);
-  const MeshDesc& mesh = object.mesh;
+  object.mesh = std::make_shared<const MeshDesc>(loadObjFile(obj, "q.obj", loader));
+  const MeshDesc& mesh = *object.mesh;
   ASSERT_EQ(mesh.uvs.size(), 5u);
   EXPECT_EQ(mesh.uvs[4].x, 0.5f);
   EXPECT_EQ(mesh.uvs[4].y, 0.25f);  // the third component is ignored

@@ -36,7 +36,7 @@ uint32_t addMaterial(SceneData& s, const Material& m) {
 // it, the object's place (s.meshInstances) too, and in *flattened the mesh vertex each split
 // vertex copies.
 void addObject(SceneData& s, const ObjectDesc& obj, bool geometry, FlattenedObject* flattened) {
-  const MeshDesc& mesh = obj.mesh;
+  const MeshDesc& mesh = *obj.mesh;
   uint32_t materialBase = 0;
   if (obj.material) {
     materialBase = addMaterial(s, *obj.material);
@@ -471,7 +471,7 @@ SceneData flattenScene(const SceneDesc& desc, SceneData* previous, PreviousLight
 
 SceneData flattenScene(SceneDesc&& desc) {
   SceneData s = flattenSceneContents(desc);
-  for (ObjectDesc& object : desc.objects) object.mesh = MeshDesc();
+  for (ObjectDesc& object : desc.objects) object.mesh = std::make_shared<const MeshDesc>();
   addBvhAndLights(s, desc.ownBvh, nullptr);
   return s;
 }

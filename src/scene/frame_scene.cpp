@@ -42,8 +42,8 @@ void writeKeys(const SceneDesc& desc, std::string* geometry, std::string* struct
     full.add(o.scale);
     both(o.smooth);
     both(o.material.has_value());  // decides how many materials the object appends
-    both(o.mesh.materials.size());
-    const MeshDesc& m = o.mesh;
+    both(o.mesh->materials.size());
+    const MeshDesc& m = *o.mesh;
     both(
         hashVector(m.triangles, hashVector(m.uvs, hashVector(m.normals, hashVector(m.positions)))));
   }

@@ -36,7 +36,8 @@ void findRepeatedMeshes(SceneData& s, const std::vector<FlattenedObject>& object
       const uint32_t f = firsts[g];
       if (sameTriangles(s, placed[f], placed[i]) &&
           objects[f].splitSources == objects[i].splitSources &&
-          samePositions(objects[f].mesh->positions, objects[i].mesh->positions)) {
+          (objects[f].mesh == objects[i].mesh ||  // one file's mesh, shared
+           samePositions(objects[f].mesh->positions, objects[i].mesh->positions))) {
         group[i] = int32_t(g);
         break;
       }

@@ -58,7 +58,8 @@ struct ObjectDesc {
   Vec3 scale{1.0f};
   bool smooth = true;
   std::optional<Material> material;  // overrides the mesh's own materials when present
-  MeshDesc mesh;
+  // Read once per file: the objects that name one file share it (and so do frames).
+  std::shared_ptr<const MeshDesc> mesh = std::make_shared<const MeshDesc>();
 };
 
 struct LightDesc {
@@ -165,7 +166,7 @@ struct SceneDesc {
 // The triangles of all the scene's meshes.
 inline uint64_t meshTriangleCount(const SceneDesc& desc) {
   uint64_t count = 0;
-  for (const ObjectDesc& object : desc.objects) count += object.mesh.triangles.size();
+  for (const ObjectDesc& object : desc.objects) count += object.mesh->triangles.size();
   return count;
 }
 

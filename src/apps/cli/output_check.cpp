@@ -19,7 +19,7 @@ std::vector<InputFile> inputFiles(const std::vector<SceneDesc>& scenes) {
     files.push_back({scene.file, "the scene file"});
     for (const ObjectDesc& object : scene.objects) {
       files.push_back({object.file, "the mesh"});
-      for (const std::string& mtl : object.mesh.materialFiles)
+      for (const std::string& mtl : object.mesh->materialFiles)
         files.push_back({mtl, "the material library"});
     }
     if (!scene.environment.map.empty())

@@ -48,20 +48,21 @@ void forEachElement(JsonObject& top, const std::string& key, Read read) {
 // failure is reported at the object's "file" key, with the file as the scene wrote it.
 void loadMeshes(SceneDesc& scene, const std::vector<std::string>& writtenNames,
                 TextureLoader& textures) {
-  std::map<std::string, const MeshDesc*> loaded;  // resolved path -> first object's mesh
+  std::map<std::string, std::shared_ptr<const MeshDesc>> loaded;  // resolved path -> its mesh
   for (size_t i = 0; i < scene.objects.size(); ++i) {
     ObjectDesc& object = scene.objects[i];
     const auto previous = loaded.find(object.file);
     if (previous != loaded.end()) {
-      object.mesh = *previous->second;
+      object.mesh = previous->second;
       continue;
     }
     try {
-      object.mesh = loadObjFile(object.file, writtenNames[i], textures);
+      object.mesh =
+          std::make_shared<const MeshDesc>(loadObjFile(object.file, writtenNames[i], textures));
     } catch (const SceneError& error) {
       failAt(scene.file, memberPath(object.where, "file"), error.what());
     }
-    loaded.emplace(object.file, &object.mesh);
+    loaded.emplace(object.file, object.mesh);
   }
 }
 
