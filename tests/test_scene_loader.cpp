@@ -683,6 +683,9 @@ TEST_F(SceneLoader, ObjectsResolveFilesAndKeepTheirOwnMaterials) {
   EXPECT_FALSE(a.smooth);
   EXPECT_FALSE(a.material);  // the mesh's own (here the default) materials apply
   EXPECT_EQ(a.mesh->triangles.size(), 1u);
+  // One file, read once: its objects share the mesh.
+  EXPECT_EQ(scene.objects[1].mesh, a.mesh);
+  EXPECT_EQ(scene.objects[2].mesh, a.mesh);
 
   expectVec3(scene.objects[1].scale, 0.5f, 0.5f, 0.5f);
   EXPECT_TRUE(scene.objects[1].smooth);
