@@ -293,6 +293,18 @@ RenderResult renderWith(CpuEngine engine, const SceneDesc& scene) {
   return renderer.render(RenderOptions{});
 }
 
+// The Embree engine's image of `scene` is the own BVH's up to rounding: their difference is far
+// below the noise between two seeds.
+void expectEnginesAgree(SceneDesc scene) {
+  const ImageRGB own = renderWith(CpuEngine::Bvh, scene).image;
+  const ImageRGB embree = renderWith(CpuEngine::Embree, scene).image;
+  scene.render.seed = 99;
+  const ImageRGB otherSeed = renderWith(CpuEngine::Bvh, scene).image;
+  const double noise = relMse(otherSeed, own);
+  EXPECT_GT(noise, 0.0);
+  EXPECT_LT(relMse(embree, own), 0.05 * noise) << "noise between seeds " << noise;
+}
+
 // Both engines trace the same sample streams; paths part only where a hit point differs by
 // rounding, so the images differ by far less than the noise of one seed against another. At 20
 // spp a pixel's camera rays go to Embree as a packet of 16 and one of 4, and so do the shadow
@@ -314,14 +326,7 @@ TEST(Embree, RendersTheSameImageAsTheOwnBvhUpToRounding) {
                 {"file": ")" +
                            dir + R"(lamp.obj", "material": {"type": "emissive",
                  "radiance": [17, 12, 4]}}]})";
-  SceneDesc scene = parseSceneText(json, "test.json", ".");
-  const ImageRGB own = renderWith(CpuEngine::Bvh, scene).image;
-  const ImageRGB embree = renderWith(CpuEngine::Embree, scene).image;
-  scene.render.seed = 99;
-  const ImageRGB otherSeed = renderWith(CpuEngine::Bvh, scene).image;
-  const double noise = relMse(otherSeed, own);
-  EXPECT_GT(noise, 0.0);
-  EXPECT_LT(relMse(embree, own), 0.05 * noise) << "noise between seeds " << noise;
+  expectEnginesAgree(parseSceneText(json, "test.json", "."));
 }
 
 // A ball of 8 x 6 quads (96 triangles, enough to be traced as instances) whose lower half is
@@ -372,7 +377,7 @@ TEST(Embree, RepeatedMeshesTracedAsInstancesRenderAsTheOwnBvhDoes) {
        "rotation": [30, 0, 20]},
       {"file": ")" + cornell +
                            R"(white.obj", "color": [0.7, 0.7, 0.7]}]})";
-  SceneDesc scene = parseSceneText(json, "test.json", ".");
+  const SceneDesc scene = parseSceneText(json, "test.json", ".");
 
   SceneDesc forEmbree = scene;
   forEmbree.ownBvh = OwnBvh::None;
@@ -380,13 +385,7 @@ TEST(Embree, RepeatedMeshesTracedAsInstancesRenderAsTheOwnBvhDoes) {
   embree.update(flattenScene(forEmbree), SceneChange::Structure);
   EXPECT_EQ(embree.instanceCount(), 4u);
 
-  const ImageRGB own = renderWith(CpuEngine::Bvh, scene).image;
-  const ImageRGB instanced = renderWith(CpuEngine::Embree, scene).image;
-  scene.render.seed = 99;
-  const ImageRGB otherSeed = renderWith(CpuEngine::Bvh, scene).image;
-  const double noise = relMse(otherSeed, own);
-  EXPECT_GT(noise, 0.0);
-  EXPECT_LT(relMse(instanced, own), 0.05 * noise) << "noise between seeds " << noise;
+  expectEnginesAgree(scene);
 }
 
 // The orbit example's frames (the camera moves: values; the knot turns: a refit of Embree's
