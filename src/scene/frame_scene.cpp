@@ -3,6 +3,7 @@
 
 #include <chrono>
 #include <cstdint>
+#include <unordered_map>
 #include <vector>
 
 #include "geometry/bvh_refit.h"
@@ -36,6 +37,7 @@ void writeKeys(const SceneDesc& desc, std::string* geometry, std::string* struct
     }
   }
   both(desc.objects.size());
+  std::unordered_map<const MeshDesc*, uint64_t> meshHashes;
   for (const ObjectDesc& o : desc.objects) {
     full.add(o.position);
     full.add(o.rotation);
@@ -43,9 +45,14 @@ void writeKeys(const SceneDesc& desc, std::string* geometry, std::string* struct
     both(o.smooth);
     both(o.material.has_value());  // decides how many materials the object appends
     both(o.mesh->materials.size());
-    const MeshDesc& m = *o.mesh;
-    both(
-        hashVector(m.triangles, hashVector(m.uvs, hashVector(m.normals, hashVector(m.positions)))));
+    // Objects that name one file share its mesh: it is hashed once.
+    const auto [hash, fresh] = meshHashes.try_emplace(o.mesh.get(), 0);
+    if (fresh) {
+      const MeshDesc& m = *o.mesh;
+      hash->second =
+          hashVector(m.triangles, hashVector(m.uvs, hashVector(m.normals, hashVector(m.positions))));
+    }
+    both(hash->second);
   }
   both(desc.textures.size());
   for (const std::shared_ptr<const TextureDesc>& t : desc.textures) both(textureHash(*t));
