@@ -216,7 +216,10 @@ def test_refit_reproduces_committed_figures(br, path):
             for key in ('c', 'seconds'):
                 assert tte[who][key] == pytest.approx(stored[who][key], rel=1e-12)
         fitted += 1
-    assert fitted > 0
+    # A run may skip every scene's fit (the scale scene's 8.5 M triangles), but then says why.
+    reasons = [e['time_to_error']['error'] for e in res['scenes'].values()
+               if 'error' in e.get('time_to_error', {})]
+    assert fitted > 0 or len(reasons) == len(res['scenes'])
 
 
 # ---------------------------------------------------------------- the results schema
