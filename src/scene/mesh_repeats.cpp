@@ -34,10 +34,11 @@ void findRepeatedMeshes(SceneData& s, const std::vector<FlattenedObject>& object
     if (placed[i].triangleCount == 0) continue;
     for (uint32_t g = 0; g < firsts.size(); ++g) {
       const uint32_t f = firsts[g];
-      if (sameTriangles(s, placed[f], placed[i]) &&
+      // Cheapest first; the triangles differ between repeats of one mesh that mirror it or not.
+      if ((objects[f].mesh == objects[i].mesh ||  // one file's mesh, shared
+           samePositions(objects[f].mesh->positions, objects[i].mesh->positions)) &&
           objects[f].splitSources == objects[i].splitSources &&
-          (objects[f].mesh == objects[i].mesh ||  // one file's mesh, shared
-           samePositions(objects[f].mesh->positions, objects[i].mesh->positions))) {
+          sameTriangles(s, placed[f], placed[i])) {
         group[i] = int32_t(g);
         break;
       }

@@ -154,11 +154,13 @@ void EmbreeScene::placeSpheres(const SceneData& scene) {
 EmbreeScene::Plan EmbreeScene::planParts(const SceneData& scene) {
   Plan plan;
   const MeshInstances& instances = scene.meshInstances;
-  std::vector<bool> traced(instances.prototypes.size(), false);
+  // Of each of the scene's prototypes, its place in plan.prototypes (-1: not traced as one).
+  std::vector<int32_t> traced(instances.prototypes.size(), -1);
   for (uint32_t p = 0; p < instances.prototypes.size(); ++p) {
     const MeshInstance& first = instances.objects[instances.prototypes[p].firstInstance];
-    traced[p] = first.triangleCount >= kInstanceFromTriangles;
-    if (traced[p]) plan.prototypes.push_back(Prototype{int32_t(p)});
+    if (first.triangleCount < kInstanceFromTriangles) continue;
+    traced[p] = int32_t(plan.prototypes.size());
+    plan.prototypes.push_back(Prototype{int32_t(p)});
   }
   // Without instances one run takes every triangle, as flattening left them (also where no
   // object's place is known: after an own BVH reordered them).
@@ -170,7 +172,7 @@ EmbreeScene::Plan EmbreeScene::planParts(const SceneData& scene) {
   };
   for (uint32_t i = 0; i < instances.objects.size(); ++i) {
     const MeshInstance& object = instances.objects[i];
-    if (object.prototype < 0 || !traced[uint32_t(object.prototype)]) continue;
+    if (object.prototype < 0 || traced[uint32_t(object.prototype)] < 0) continue;
     endRun(object.firstTriangle, object.firstVertex);
     Part part;
     part.firstTriangle = object.firstTriangle;
@@ -178,6 +180,7 @@ EmbreeScene::Plan EmbreeScene::planParts(const SceneData& scene) {
     part.firstVertex = object.firstVertex;
     part.vertexCount = object.vertexCount;
     part.object = int32_t(i);
+    part.prototype = traced[uint32_t(object.prototype)];
     plan.parts.push_back(part);
     run = Part();
     run.firstTriangle = object.firstTriangle + object.triangleCount;
@@ -190,7 +193,8 @@ EmbreeScene::Plan EmbreeScene::planParts(const SceneData& scene) {
 bool EmbreeScene::sameParts(const Plan& plan) const {
   const auto samePart = [](const Part& a, const Part& b) {
     return a.firstTriangle == b.firstTriangle && a.triangleCount == b.triangleCount &&
-           a.firstVertex == b.firstVertex && a.vertexCount == b.vertexCount && a.object == b.object;
+           a.firstVertex == b.firstVertex && a.vertexCount == b.vertexCount &&
+           a.object == b.object && a.prototype == b.prototype;
   };
   if (plan.parts.size() != parts_.size() || plan.prototypes.size() != prototypes_.size())
     return false;
@@ -277,11 +281,8 @@ void EmbreeScene::build(const SceneData& scene) {
                                    scene.triangles.data() + part.firstTriangle, part.triangleCount,
                                    part.firstVertex, true);
     } else {
-      const int32_t p = scene.meshInstances.objects[uint32_t(part.object)].prototype;
-      const auto traced = std::find_if(prototypes_.begin(), prototypes_.end(),
-                                       [p](const Prototype& t) { return t.index == p; });
       part.geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_INSTANCE);
-      rtcSetGeometryInstancedScene(part.geometry, traced->scene);
+      rtcSetGeometryInstancedScene(part.geometry, prototypes_[uint32_t(part.prototype)].scene);
       placeInstance(scene, part);
     }
     rtcAttachGeometryByID(scene_, part.geometry, id);
@@ -296,29 +297,24 @@ void EmbreeScene::refit(const SceneData& scene) {
   placeSpheres(scene);
   buildSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!scene_) return;
-  // An instance whose place in the plan changed (a mesh mirrored since) needs a new build.
+  // A motion keeps the meshes (FrameScene's structure key covers them) and so the repeats; a
+  // caller's Motion that repeats them otherwise gets a new build.
   if (!sameParts(planParts(scene))) {
     build(scene);
     return;
   }
-  const auto rewrite = [](RTCGeometry geometry, const Vec3* positions, uint32_t count) {
-    void* vertices = rtcGetGeometryBufferData(geometry, RTC_BUFFER_TYPE_VERTEX, 0);
-    std::memcpy(vertices, positions, count * sizeof(Vec3));
-    rtcUpdateGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0);
-    rtcSetGeometryBuildQuality(geometry, RTC_BUILD_QUALITY_REFIT);
-  };
-  for (const Prototype& prototype : prototypes_) {
-    const MeshPrototype& mesh = scene.meshInstances.prototypes[uint32_t(prototype.index)];
-    rewrite(prototype.geometry, mesh.positions.data(), uint32_t(mesh.positions.size()));
-    rtcCommitGeometry(prototype.geometry);
-    commit(prototype.scene);
-  }
+  // The prototypes, in object space, stay: the objects move, the runs' vertices and the
+  // instances' transforms.
   for (const Part& part : parts_) {
     if (part.object >= 0) {
       placeInstance(scene, part);
       continue;
     }
-    rewrite(part.geometry, scene.positions.data() + part.firstVertex, part.vertexCount);
+    void* vertices = rtcGetGeometryBufferData(part.geometry, RTC_BUFFER_TYPE_VERTEX, 0);
+    std::memcpy(vertices, scene.positions.data() + part.firstVertex,
+                part.vertexCount * sizeof(Vec3));
+    rtcUpdateGeometryBuffer(part.geometry, RTC_BUFFER_TYPE_VERTEX, 0);
+    rtcSetGeometryBuildQuality(part.geometry, RTC_BUILD_QUALITY_REFIT);
     // The same triangles: only the array may have moved in memory.
     if (part.firstVertex == 0)
       rtcSetSharedGeometryBuffer(part.geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,

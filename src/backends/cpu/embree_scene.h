@@ -60,7 +60,8 @@ class EmbreeScene {
   // geometry, or one object that is an instance of a prototype.
   struct Part {
     uint32_t firstTriangle = 0, triangleCount = 0, firstVertex = 0, vertexCount = 0;
-    int32_t object = -1;  // the instance's object; -1 for a run
+    int32_t object = -1;     // the instance's object; -1 for a run
+    int32_t prototype = -1;  // the instance's, into prototypes_
     RTCGeometry geometry = nullptr;
   };
   // A prototype traced as instances: its own Embree scene of one triangle geometry.
