@@ -9,6 +9,7 @@
 #include <memory>
 #include <mutex>
 
+#include "backends/cpu/flush_denormals.h"
 #include "geometry/bvh_tracer.h"
 #include "render/render_pixel.h"
 
@@ -80,6 +81,7 @@ RenderResult renderTilesWith(const SceneView& scene, const Tracer& tracer,
   // One tile per task: tiles are independent, so the result never depends on the schedule.
   tbb::parallel_for(tbb::blocked_range<uint32_t>(0, tilesX * tilesY, 1),
                     [&](const tbb::blocked_range<uint32_t>& range) {
+                      const FlushDenormals flush;
                       RayCounters& local = counters.local();
                       for (uint32_t tile = range.begin(); tile != range.end(); ++tile) {
                         if (!renderTile(tile, local)) {

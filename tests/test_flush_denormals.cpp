@@ -1,0 +1,78 @@
+// The CPU render threads flush denormals (backends/cpu/flush_denormals.h), and give the caller's
+// thread back its own floating-point mode.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "backends/cpu/flush_denormals.h"
+#include "render_test_util.h"
+
+namespace candela {
+namespace {
+
+#if CANDELA_FLUSH_DENORMALS
+// MXCSR's control bits: its low six are sticky exception flags that any arithmetic may raise.
+unsigned floatingPointMode() { return _mm_getcsr() & ~0x3fu; }
+#endif
+
+// A product whose exact value is denormal (1e-40), computed at run time.
+float denormalProduct() {
+  volatile float a = 1e-30f, b = 1e-10f;
+  return a * b;
+}
+
+TEST(FlushDenormals, FlushesWhileAliveAndRestoresTheModeAfter) {
+#if !CANDELA_FLUSH_DENORMALS
+  GTEST_SKIP() << "no SSE on this CPU: denormals are left as they are";
+#else
+  ASSERT_GT(denormalProduct(), 0.0f) << "the test thread must start without flushing";
+  const unsigned before = floatingPointMode();
+  {
+    const FlushDenormals flush;
+    EXPECT_EQ(denormalProduct(), 0.0f);
+  }
+  EXPECT_EQ(floatingPointMode(), before);
+  EXPECT_GT(denormalProduct(), 0.0f);
+#endif
+}
+
+TEST(FlushDenormals, RenderGivesTheCallersThreadItsModeBack) {
+#if !CANDELA_FLUSH_DENORMALS
+  GTEST_SKIP() << "no SSE on this CPU: denormals are left as they are";
+#else
+  const unsigned before = floatingPointMode();
+  // One thread: the tiles are rendered on this one.
+  const RenderResult result = test::renderTestScene(R"({
+    "camera": {"width": 8, "height": 8, "fov": 40, "position": [0, 0, 5], "look_at": [0, 0, 0],
+               "spp": 2},
+    "spheres": [{"position": [0, 0, 0], "radius": 1, "color": 0.5}],
+    "lights": [{"position": [3, 3, 3], "intensity": 100}]})",
+                                                    1);
+  EXPECT_GT(result.image.pixels[4 * 8 * 3 + 4 * 3], 0.0f) << "the sphere is lit";
+  EXPECT_EQ(floatingPointMode(), before);
+  EXPECT_GT(denormalProduct(), 0.0f);
+#endif
+}
+
+// What a light too faint for float's normal range (below 1.2e-38) gives is flushed to zero on
+// the render threads: the light's own intensity reads as zero there.
+TEST(FlushDenormals, RenderThreadsFlushDenormals) {
+#if !CANDELA_FLUSH_DENORMALS
+  GTEST_SKIP() << "no SSE on this CPU: denormals are left as they are";
+#else
+  const auto render = [](const char* intensity) {
+    return test::renderTestScene(std::string(R"({
+      "camera": {"width": 8, "height": 8, "fov": 40, "position": [0, 0, 5],
+                 "look_at": [0, 0, 0], "spp": 2},
+      "spheres": [{"position": [0, 0, 0], "radius": 1, "color": 0.5}],
+      "lights": [{"position": [3, 3, 3], "intensity": )") +
+                                 intensity + "}]}");
+  };
+  const size_t centre = 4 * 8 * 3 + 4 * 3;
+  EXPECT_GT(render("1e-30").image.pixels[centre], 0.0f) << "faint but in the normal range";
+  for (float v : render("1e-39").image.pixels) EXPECT_EQ(v, 0.0f);
+#endif
+}
+
+}  // namespace
+}  // namespace candela
