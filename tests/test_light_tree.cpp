@@ -114,6 +114,14 @@ TEST(LightTree, SeveralPointLightsArePickedByTheTree) {
   const float far = lightSelectPmf(data.view(), 1, Vec3(0.0f), Vec3(0, 1, 0));
   EXPECT_GT(near, far);
   EXPECT_NEAR(near + far, 1.0f, 1e-6f);
+  // A point's cluster has radius 0: nothing in the tree is denormal.
+  const LightTreeNode& root = data.lightTree[0];
+  for (int k = 0; k < 2; ++k) EXPECT_EQ(root.radius[k], 0.0f) << "cluster " << k;
+  for (int k = 0; k < kLightTreeWidth; ++k)
+    for (float v :
+         {root.centerX[k], root.centerY[k], root.centerZ[k], root.radius[k], root.axisX[k],
+          root.axisY[k], root.axisZ[k], root.cosThetaO[k], root.sinThetaO[k], root.power[k]})
+      EXPECT_NE(std::fpclassify(v), FP_SUBNORMAL) << "cluster " << k;
 }
 
 // The environment takes half the picks beside other lights, however large the scene's bounds

@@ -137,9 +137,12 @@ void writeSlot(const Cluster& c, int k, LightTreeNode* node) {
   node->centerX[k] = float(0.5 * (c.lo[0] + c.hi[0]));
   node->centerY[k] = float(0.5 * (c.lo[1] + c.hi[1]));
   node->centerZ[k] = float(0.5 * (c.lo[2] + c.hi[2]));
-  // Rounded up, so that the sphere still holds the box in float.
-  node->radius[k] = std::nextafter(float(0.5 * std::sqrt(dx * dx + dy * dy + dz * dz)),
-                                   std::numeric_limits<float>::infinity());
+  // Rounded up, so that the sphere still holds the box in float; a point's stays 0, not the
+  // least denormal, which every importance at the point would then meet (a microcode assist per
+  // operation on the CPU: docs/performance.md, "Denormals").
+  const float radius = float(0.5 * std::sqrt(dx * dx + dy * dy + dz * dz));
+  node->radius[k] =
+      radius > 0.0f ? std::nextafter(radius, std::numeric_limits<float>::infinity()) : 0.0f;
   node->axisX[k] = float(c.axis.x);
   node->axisY[k] = float(c.axis.y);
   node->axisZ[k] = float(c.axis.z);
