@@ -139,7 +139,7 @@ void writeSlot(const Cluster& c, int k, LightTreeNode* node) {
   node->centerZ[k] = float(0.5 * (c.lo[2] + c.hi[2]));
   // Rounded up, so that the sphere still holds the box in float; a point's stays 0, not the
   // least denormal, which every importance at the point would then meet (a microcode assist per
-  // operation on the CPU: docs/performance.md, "Denormals").
+  // operation on the CPU: docs/performance.md, optimisation log).
   const float radius = float(0.5 * std::sqrt(dx * dx + dy * dy + dz * dz));
   node->radius[k] =
       radius > 0.0f ? std::nextafter(radius, std::numeric_limits<float>::infinity()) : 0.0f;

@@ -6,7 +6,7 @@
 // Denormals cost the CPU a microcode assist on every operation that meets one. The light tree
 // once held one in every point light's cluster (now 0 at its source), which made the first
 // denormal-flushing renders of the dragon 1.15x faster; with the tree mended, flushing still
-// gains a few percent (docs/performance.md, "Denormals"). Images stay byte-identical on the
+// gains a few percent (docs/performance.md, optimisation log). Images stay byte-identical on the
 // bench scenes. The GPU handles denormals at full speed and keeps IEEE behaviour.
 #pragma once
 
