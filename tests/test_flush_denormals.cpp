@@ -36,19 +36,25 @@ TEST(FlushDenormals, FlushesWhileAliveAndRestoresTheModeAfter) {
 #endif
 }
 
+// A sphere lit by a point light of `intensity`, 8x8 pixels: the centre pixel sees it.
+RenderResult renderLitSphere(const std::string& intensity, int threads = 0) {
+  return test::renderTestScene(R"({
+    "camera": {"width": 8, "height": 8, "fov": 40, "position": [0, 0, 5], "look_at": [0, 0, 0],
+               "spp": 2},
+    "spheres": [{"position": [0, 0, 0], "radius": 1, "color": 0.5}],
+    "lights": [{"position": [3, 3, 3], "intensity": )" +
+                                   intensity + "}]}",
+                               threads);
+}
+constexpr size_t kCentre = (4 * 8 + 4) * 3;
+
 TEST(FlushDenormals, RenderGivesTheCallersThreadItsModeBack) {
 #if !CANDELA_FLUSH_DENORMALS
   GTEST_SKIP() << "no SSE on this CPU: denormals are left as they are";
 #else
   const unsigned before = floatingPointMode();
   // One thread: the tiles are rendered on this one.
-  const RenderResult result = test::renderTestScene(R"({
-    "camera": {"width": 8, "height": 8, "fov": 40, "position": [0, 0, 5], "look_at": [0, 0, 0],
-               "spp": 2},
-    "spheres": [{"position": [0, 0, 0], "radius": 1, "color": 0.5}],
-    "lights": [{"position": [3, 3, 3], "intensity": 100}]})",
-                                                    1);
-  EXPECT_GT(result.image.pixels[4 * 8 * 3 + 4 * 3], 0.0f) << "the sphere is lit";
+  EXPECT_GT(renderLitSphere("100", 1).image.pixels[kCentre], 0.0f) << "the sphere is lit";
   EXPECT_EQ(floatingPointMode(), before);
   EXPECT_GT(denormalProduct(), 0.0f);
 #endif
@@ -60,17 +66,8 @@ TEST(FlushDenormals, RenderThreadsFlushDenormals) {
 #if !CANDELA_FLUSH_DENORMALS
   GTEST_SKIP() << "no SSE on this CPU: denormals are left as they are";
 #else
-  const auto render = [](const char* intensity) {
-    return test::renderTestScene(std::string(R"({
-      "camera": {"width": 8, "height": 8, "fov": 40, "position": [0, 0, 5],
-                 "look_at": [0, 0, 0], "spp": 2},
-      "spheres": [{"position": [0, 0, 0], "radius": 1, "color": 0.5}],
-      "lights": [{"position": [3, 3, 3], "intensity": )") +
-                                 intensity + "}]}");
-  };
-  const size_t centre = 4 * 8 * 3 + 4 * 3;
-  EXPECT_GT(render("1e-30").image.pixels[centre], 0.0f) << "faint but in the normal range";
-  for (float v : render("1e-39").image.pixels) EXPECT_EQ(v, 0.0f);
+  EXPECT_GT(renderLitSphere("1e-30").image.pixels[kCentre], 0.0f) << "faint, in the normal range";
+  for (float v : renderLitSphere("1e-39").image.pixels) EXPECT_EQ(v, 0.0f);
 #endif
 }
 
