@@ -423,5 +423,6 @@ def test_engines_are_rows_of_their_own_and_the_own_bvh_time_ratio_follows_sample
     assert '| cornell | cpu, embree |' in text and '| cornell | cpu, bvh |' in text
     assert 'time ratio, own BVH |' in text
     ratio = sc['time_to_error']['ratio']
-    row = next(line for line in text.splitlines() if line.startswith('| cornell | 16 |'))
+    row = next(line for line in text.splitlines()
+               if line.startswith(f"| cornell | {sc['cpu']['spp']} |"))
     assert row.rstrip(' |').endswith(br.fmt(ratio * 2))
