@@ -335,9 +335,14 @@ void addInstances(SceneData& s, const SceneDesc& desc, bool geometry) {
     addObject(s, desc.objects[i], geometry, &flattened[i]);
     tagInstance(s, number.firstObject + i);
   }
-  // Only where no own BVH will reorder the triangles: an engine of its own traces the scene.
-  if (geometry && desc.ownBvh == OwnBvh::None) findRepeatedMeshes(s, flattened);
-  if (geometry && desc.ownBvh != OwnBvh::None) s.meshInstances = MeshInstances();
+  // Only where no own BVH will reorder the triangles (which voids the objects' places): an
+  // engine of its own traces the scene.
+  if (geometry) {
+    if (desc.ownBvh == OwnBvh::None)
+      findRepeatedMeshes(s, flattened);
+    else
+      s.meshInstances = MeshInstances();
+  }
   // Vertices after the last smooth (or textured) mesh have no normals (or uvs) either.
   if (geometry && !s.normals.empty()) s.normals.resize(s.positions.size(), OctNormal());
   if (geometry && !s.uvs.empty()) s.uvs.resize(s.positions.size(), Vec2());

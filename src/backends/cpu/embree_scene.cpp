@@ -219,7 +219,7 @@ RTCGeometry EmbreeScene::newTriangles(const Vec3* positions, uint32_t vertexCoun
   void* vertices = rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
                                            sizeof(Vec3), vertexCount);
   if (vertices) std::memcpy(vertices, positions, vertexCount * sizeof(Vec3));
-  if (shareIndices && firstVertex == 0) {
+  if (shareIndices) {
     rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, triangles, 0,
                                sizeof(Triangle), triangleCount);
   } else if (auto* indices = static_cast<uint32_t*>(
@@ -276,10 +276,9 @@ void EmbreeScene::build(const SceneData& scene) {
   for (uint32_t id = 0; id < parts_.size(); ++id) {
     Part& part = parts_[id];
     if (part.object < 0) {
-      // Indices stay the scene's where the run's vertices start at its first.
       part.geometry = newTriangles(scene.positions.data() + part.firstVertex, part.vertexCount,
                                    scene.triangles.data() + part.firstTriangle, part.triangleCount,
-                                   part.firstVertex, true);
+                                   part.firstVertex, part.sharesIndices());
     } else {
       part.geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_INSTANCE);
       rtcSetGeometryInstancedScene(part.geometry, prototypes_[uint32_t(part.prototype)].scene);
@@ -316,7 +315,7 @@ void EmbreeScene::refit(const SceneData& scene) {
     rtcUpdateGeometryBuffer(part.geometry, RTC_BUFFER_TYPE_VERTEX, 0);
     rtcSetGeometryBuildQuality(part.geometry, RTC_BUILD_QUALITY_REFIT);
     // The same triangles: only the array may have moved in memory.
-    if (part.firstVertex == 0)
+    if (part.sharesIndices())
       rtcSetSharedGeometryBuffer(part.geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
                                  scene.triangles.data() + part.firstTriangle, 0, sizeof(Triangle),
                                  part.triangleCount);

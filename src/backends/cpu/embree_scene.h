@@ -63,6 +63,10 @@ class EmbreeScene {
     int32_t object = -1;     // the instance's object; -1 for a run
     int32_t prototype = -1;  // the instance's, into prototypes_
     RTCGeometry geometry = nullptr;
+
+    // Whether Embree reads the scene's own triangle array: a run whose vertices start at the
+    // scene's first, so the indices need no shift (else Embree holds shifted copies).
+    bool sharesIndices() const { return object < 0 && firstVertex == 0; }
   };
   // A prototype traced as instances: its own Embree scene of one triangle geometry.
   struct Prototype {
@@ -84,8 +88,8 @@ class EmbreeScene {
   // Whether `plan` has the parts and prototypes of the scene built last: what a refit needs.
   bool sameParts(const Plan& plan) const;
   // A triangle geometry of its own copy of the vertices, whose triangles index them from
-  // firstVertex on; the triangles are shared where `shareIndices` and firstVertex is 0 (they
-  // must then stay until the next update), else copied.
+  // firstVertex on; the triangles are shared where `shareIndices` (firstVertex must then be 0,
+  // and they must stay until the next update), else copied less firstVertex.
   RTCGeometry newTriangles(const Vec3* positions, uint32_t vertexCount, const Triangle* triangles,
                            uint32_t triangleCount, uint32_t firstVertex, bool shareIndices);
   void placeInstance(const SceneData& scene, const Part& part);
