@@ -365,6 +365,54 @@ TEST(LightTree, FacesOfOneOrientationKeepANarrowCone) {
     }
 }
 
+// The tree does not depend on the order in which the lights come (the engines number a scene's
+// emissive triangles differently): each light gets the same trail, the tree the same nodes. Among
+// the lights are the halves of rectangles (equal boxes, cones and powers) and lights on one
+// point, which no split tells apart.
+TEST(LightTree, IsTheSameWhateverTheLightsOrder) {
+  RandomInputs rng{std::mt19937(12)};
+  std::vector<LightBounds> lights;
+  for (int i = 0; i < 300; ++i) {
+    LightBounds l;
+    l.lo = rng.inBox(10.0f);
+    l.hi = l.lo + Vec3(rng.next(), rng.next(), 0.0f);
+    l.axis = Vec3(0, 0, 1);
+    l.power = 1.0 + (i % 3);
+    l.anchor = l.lo + (i % 2 ? Vec3(0.1f, 0.2f, 0) : Vec3(0.2f, 0.1f, 0));  // two halves alike
+    lights.push_back(l);
+    if (i % 2 == 0) lights.push_back(lights.back());
+    lights.back().anchor = l.lo + Vec3(0.3f, 0.1f, 0);
+  }
+  for (int i = 0; i < 40; ++i) {
+    LightBounds l;
+    l.lo = l.hi = Vec3(1, 2, 3);
+    l.cosThetaO = -1.0;
+    l.power = 2.0;
+    l.anchor = Vec3(float(i), 0, 0);
+    lights.push_back(l);
+  }
+  std::vector<uint32_t> shuffled(lights.size());
+  for (uint32_t i = 0; i < shuffled.size(); ++i) shuffled[i] = i;
+  std::shuffle(shuffled.begin(), shuffled.end(), rng.gen);
+  std::vector<LightBounds> reordered;
+  for (uint32_t i : shuffled) reordered.push_back(lights[i]);
+
+  std::vector<uint64_t> trails, reorderedTrails;
+  const std::vector<LightTreeNode> nodes = buildLightTree(lights, &trails);
+  const std::vector<LightTreeNode> reorderedNodes = buildLightTree(reordered, &reorderedTrails);
+  ASSERT_EQ(nodes.size(), reorderedNodes.size());
+  for (uint32_t i = 0; i < shuffled.size(); ++i)
+    ASSERT_EQ(reorderedTrails[i], trails[shuffled[i]]) << "light " << shuffled[i];
+  for (size_t n = 0; n < nodes.size(); ++n)
+    for (int k = 0; k < kLightTreeWidth; ++k) {
+      EXPECT_EQ(reorderedNodes[n].power[k], nodes[n].power[k]);
+      const uint32_t child = reorderedNodes[n].child[k];
+      const bool leaf = (child & kLightTreeLeaf) && reorderedNodes[n].power[k] > 0.0f;
+      EXPECT_EQ(leaf ? shuffled[child & ~kLightTreeLeaf] | kLightTreeLeaf : child,
+                nodes[n].child[k]);
+    }
+}
+
 // Every light of a large tree is reached by following its trail, within the depth a trail holds,
 // including lights that all sit at one point (no split separates them).
 TEST(LightTree, TrailsLeadToTheirLights) {

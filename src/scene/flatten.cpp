@@ -141,7 +141,7 @@ LightBounds lightBounds(const SceneData& s, const Light& l) {
   LightBounds b;
   switch (l.type) {
     case LightType::Point:
-      b.lo = b.hi = l.position;
+      b.lo = b.hi = b.anchor = l.position;
       b.cosThetaO = -1.0;  // every direction
       b.power = std::max(0.0, componentSum(l.power));
       break;
@@ -150,6 +150,7 @@ LightBounds lightBounds(const SceneData& s, const Light& l) {
       const Bounds3 box = sphereBounds(sphere);
       b.lo = box.lo;
       b.hi = box.hi;
+      b.anchor = sphere.center;
       b.cosThetaO = -1.0;
       const double r = sphere.radius;
       b.power = 4.0 * kPi * kPi * r * r * componentSum(s.materials[sphere.material].radiance);
@@ -162,6 +163,7 @@ LightBounds lightBounds(const SceneData& s, const Light& l) {
       b.hi = box.hi;
       const Vec3& p0 = s.positions[t.v[0]];
       b.axis = cross(s.positions[t.v[1]] - p0, s.positions[t.v[2]] - p0);  // the emitting side
+      b.anchor = (p0 + s.positions[t.v[1]] + s.positions[t.v[2]]) / 3.0f;
       b.cosThetaO = 1.0;
       const Material& m = s.materials[t.material];
       const Vec3 tint =
@@ -188,6 +190,7 @@ uint64_t lightTreeHash(const std::vector<LightBounds>& bounds) {
     h = hashBytes(&b.axis, sizeof b.axis, h);
     h = hashBytes(&b.cosThetaO, sizeof b.cosThetaO, h);
     h = hashBytes(&b.power, sizeof b.power, h);
+    h = hashBytes(&b.anchor, sizeof b.anchor, h);
   }
   return h;
 }

@@ -2,6 +2,7 @@
 #include "scene/light_tree_build.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -164,6 +165,12 @@ void markByPower(int groups, LightTreeNode* node) {
   }
 }
 
+// The fields of a light's bounds in a fixed order, to sort lights by.
+std::array<double, 14> boundsKey(const LightBounds& l) {
+  return {l.lo.x,   l.lo.y,   l.lo.z,      l.hi.x,  l.hi.y,     l.hi.z,     l.axis.x,
+          l.axis.y, l.axis.z, l.cosThetaO, l.power, l.anchor.x, l.anchor.y, l.anchor.z};
+}
+
 class Builder {
  public:
   Builder(const std::vector<LightBounds>& lights, std::vector<uint64_t>* trails)
@@ -172,6 +179,12 @@ class Builder {
       clusters_.push_back(candela::clusterOf(lights[i]));
       if (lights[i].power > 0.0) order_.push_back(i);
     }
+    // The lights in an order of their own (see buildLightTree), ties in the order given.
+    std::stable_sort(order_.begin(), order_.end(), [&lights](uint32_t a, uint32_t b) {
+      return boundsKey(lights[a]) < boundsKey(lights[b]);
+    });
+    rank_.resize(lights.size());
+    for (uint32_t i = 0; i < order_.size(); ++i) rank_[order_[i]] = i;
   }
 
   std::vector<LightTreeNode> build() {
@@ -255,7 +268,7 @@ class Builder {
       std::nth_element(order_.begin() + begin, order_.begin() + middle, order_.begin() + end,
                        [&](uint32_t a, uint32_t b) {
                          const double ca = centroid(a, widest), cb = centroid(b, widest);
-                         return ca < cb || (ca == cb && a < b);
+                         return ca < cb || (ca == cb && rank_[a] < rank_[b]);
                        });
       return middle;
     }
@@ -301,6 +314,7 @@ class Builder {
   std::vector<uint64_t>& trails_;
   std::vector<Cluster> clusters_;  // one per light
   std::vector<uint32_t> order_;
+  std::vector<uint32_t> rank_;  // of each light in the order of its own
   std::vector<LightTreeNode> nodes_;
 };
 
