@@ -2,22 +2,22 @@
 #include "scene/read/scene_loader.h"
 
 #include <algorithm>
-
 #include <filesystem>
 #include <map>
 #include <vector>
 
 #include "scene/camera_resolve.h"
-#include "scene/read/json_parse.h"
-#include "scene/read/obj_loader.h"
+#include "scene/mesh_order.h"
 #include "scene/read/animation_reader.h"
 #include "scene/read/camera_reader.h"
 #include "scene/read/entity_reader.h"
 #include "scene/read/environment_reader.h"
-#include "scene/scene_error.h"
+#include "scene/read/json_parse.h"
 #include "scene/read/material_reader.h"
+#include "scene/read/obj_loader.h"
 #include "scene/read/render_reader.h"
 #include "scene/read/text_file.h"
+#include "scene/scene_error.h"
 
 namespace candela {
 namespace {
@@ -44,8 +44,9 @@ void forEachElement(JsonObject& top, const std::string& key, Read read) {
     for (const JsonValue& element : array->elements()) read(element);
 }
 
-// The OBJ files named by the scene's objects, each read once however many objects use it. A
-// failure is reported at the object's "file" key, with the file as the scene wrote it.
+// The OBJ files named by the scene's objects, each read once however many objects use it and
+// its triangles put in spatial order (scene/mesh_order.h). A failure is reported at the object's
+// "file" key, with the file as the scene wrote it.
 void loadMeshes(SceneDesc& scene, const std::vector<std::string>& writtenNames,
                 TextureLoader& textures) {
   std::map<std::string, std::shared_ptr<const MeshDesc>> loaded;  // resolved path -> its mesh
@@ -57,8 +58,9 @@ void loadMeshes(SceneDesc& scene, const std::vector<std::string>& writtenNames,
       continue;
     }
     try {
-      object.mesh =
-          std::make_shared<const MeshDesc>(loadObjFile(object.file, writtenNames[i], textures));
+      MeshDesc mesh = loadObjFile(object.file, writtenNames[i], textures);
+      orderTrianglesSpatially(&mesh);
+      object.mesh = std::make_shared<const MeshDesc>(std::move(mesh));
     } catch (const SceneError& error) {
       failAt(scene.file, memberPath(object.where, "file"), error.what());
     }
