@@ -1,6 +1,9 @@
 #include "scene/mesh_repeats.h"
 
 #include <cstring>
+#include <unordered_map>
+
+#include "scene/content_hash.h"
 
 namespace candela {
 
@@ -27,12 +30,21 @@ bool sameTriangles(const SceneData& s, const MeshInstance& a, const MeshInstance
 
 void findRepeatedMeshes(SceneData& s, const std::vector<FlattenedObject>& objects) {
   std::vector<MeshInstance>& placed = s.meshInstances.objects;
-  // Candidate groups, each named by its first object; only groups of two or more stay.
+  // Candidate groups, each named by its first object; only groups of two or more stay. An object
+  // is compared only with the groups that share its key (what a repeat must share: the hash of
+  // its mesh's positions, taken once per mesh, and its counts), not with every group.
   std::vector<uint32_t> firsts;
   std::vector<int32_t> group(objects.size(), -1);
+  std::unordered_map<const MeshDesc*, uint64_t> positionHashes;
+  std::unordered_map<uint64_t, std::vector<uint32_t>> groupsByKey;
   for (uint32_t i = 0; i < objects.size(); ++i) {
     if (placed[i].triangleCount == 0) continue;
-    for (uint32_t g = 0; g < firsts.size(); ++g) {
+    const auto [positionHash, fresh] = positionHashes.try_emplace(objects[i].mesh, 0);
+    if (fresh) positionHash->second = hashVector(objects[i].mesh->positions);
+    const uint64_t counts = uint64_t(placed[i].triangleCount) << 32 | placed[i].vertexCount;
+    std::vector<uint32_t>& candidates =
+        groupsByKey[hashBytes(&counts, sizeof counts, positionHash->second)];
+    for (uint32_t g : candidates) {
       const uint32_t f = firsts[g];
       // Cheapest first; the triangles differ between repeats of one mesh that mirror it or not.
       if ((objects[f].mesh == objects[i].mesh ||  // one file's mesh, shared
@@ -45,6 +57,7 @@ void findRepeatedMeshes(SceneData& s, const std::vector<FlattenedObject>& object
     }
     if (group[i] < 0) {
       group[i] = int32_t(firsts.size());
+      candidates.push_back(uint32_t(firsts.size()));
       firsts.push_back(i);
     }
   }

@@ -180,17 +180,18 @@ int runSequence(const RenderCommandOptions& options, std::vector<SceneDesc> scen
   const std::string dir = options.output.empty()
                               ? (fs::path("out") / fs::path(options.scenes[0]).stem()).string()
                               : options.output;
-  // One still scene with -o to an image is a sequence only because a sequence option was given.
-  if (isSupportedImagePath(dir) && !animated && scenes.size() == 1)
-    throw CliError(kExitUsage, std::string(options.sequenceOptionName()) +
-                                   " is an option of sequences (an animated scene or several "
-                                   "scene files), and " +
-                                   options.scenes[0] + " is one still image (-o " + dir +
-                                   "): leave it out");
-  if (isSupportedImagePath(dir))
+  if (isSupportedImagePath(dir)) {
+    // One still scene with -o to an image is a sequence only because a sequence option was given.
+    if (!animated && scenes.size() == 1)
+      throw CliError(kExitUsage, std::string(options.sequenceOptionName()) +
+                                     " is an option of sequences (an animated scene or several "
+                                     "scene files), and " +
+                                     options.scenes[0] + " is one still image (-o " + dir +
+                                     "): leave it out");
     throw CliError(kExitUsage, "-o " + dir +
                                    ": a sequence is written to a folder (e.g. -o frames/), not "
                                    "to one image");
+  }
   const FrameRange range = parseFrames(options.frames, count);
   const std::vector<Aov> aovs = chooseAovs(options);
   const bool wantsFlow = hasAov(aovs, Aov::Flow);

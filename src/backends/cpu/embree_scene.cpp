@@ -44,6 +44,16 @@ void rejectMaskedHit(const RTCFilterFunctionNArguments* args) {
   }
 }
 
+namespace {
+
+// Installs rejectMaskedHit on a triangle geometry for both queries, or removes it.
+void setMaskFilter(RTCGeometry geometry, bool masked) {
+  rtcSetGeometryIntersectFilterFunction(geometry, masked ? rejectMaskedHit : nullptr);
+  rtcSetGeometryOccludedFilterFunction(geometry, masked ? rejectMaskedHit : nullptr);
+}
+
+}  // namespace
+
 void rejectSkippedTriangle(const RTCFilterFunctionNArguments* args) {
   const auto* context = reinterpret_cast<const EmbreeQueryContext*>(args->context);
   const unsigned n = args->N;
@@ -107,8 +117,7 @@ void EmbreeScene::update(const SceneData& scene, SceneChange change) {
 
 void EmbreeScene::setMaskFilters(bool masked) {
   const auto set = [masked](RTCGeometry geometry) {
-    rtcSetGeometryIntersectFilterFunction(geometry, masked ? rejectMaskedHit : nullptr);
-    rtcSetGeometryOccludedFilterFunction(geometry, masked ? rejectMaskedHit : nullptr);
+    setMaskFilter(geometry, masked);
     rtcCommitGeometry(geometry);
   };
   for (const Prototype& prototype : prototypes_) {
@@ -210,10 +219,7 @@ RTCGeometry EmbreeScene::newTriangles(const Vec3* positions, uint32_t vertexCoun
                                       uint32_t firstVertex, bool shareIndices) {
   RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
   rtcSetGeometryUserData(geometry, &maskView_);
-  if (filtered_) {
-    rtcSetGeometryIntersectFilterFunction(geometry, rejectMaskedHit);
-    rtcSetGeometryOccludedFilterFunction(geometry, rejectMaskedHit);
-  }
+  setMaskFilter(geometry, filtered_);
   // Embree reads vertices with 16-byte loads, so it gets its own padded copy; the triangles'
   // fourth word (the material) is passed over by the stride.
   void* vertices = rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
