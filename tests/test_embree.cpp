@@ -94,7 +94,7 @@ SceneData instancedScene(uint32_t seed) {
          {a, a + test::randomUnitVector(gen) * 0.8f, a + test::randomUnitVector(gen) * 0.8f})
       prototype.positions.push_back(p);
   }
-  const auto place = [&](const std::vector<Vec3>& positions, int32_t repeats, float scaleX) {
+  const auto place = [&](const PaddedVector<Vec3>& positions, int32_t repeats, float scaleX) {
     MeshInstance object;
     object.firstTriangle = uint32_t(s.triangles.size());
     object.triangleCount = uint32_t(positions.size() / 3);
@@ -114,7 +114,7 @@ SceneData instancedScene(uint32_t seed) {
     s.meshInstances.objects.push_back(object);
   };
   for (float scaleX : {1.5f, 2.0f, -1.5f}) place(prototype.positions, 0, scaleX);
-  std::vector<Vec3> own(prototype.positions.begin(), prototype.positions.begin() + 60);
+  PaddedVector<Vec3> own(prototype.positions.begin(), prototype.positions.begin() + 60);
   place(own, -1, 1.0f);
   for (float scaleX : {1.0f, 0.7f}) place(prototype.positions, 0, scaleX);
   prototype.firstInstance = 0;
@@ -125,53 +125,59 @@ SceneData instancedScene(uint32_t seed) {
   return s;
 }
 
+// The leaves Embree is given (embree_scene.h): copies of the vertices below
+// kIndexedLeavesFromTriangles, indices into the shared vertices from 0 triangles on.
+constexpr uint32_t kLeafKinds[] = {kIndexedLeavesFromTriangles, 0};
+
 // Closest hits and shadow queries agree with testing every primitive (candela's own tests),
 // to the rounding of the two triangle tests: where the nearest primitive differs, the two hits
-// lie at the same distance (two primitives crossing there).
+// lie at the same distance (two primitives crossing there). With either kind of leaves.
 TEST(Embree, HitsMatchBruteForceRayByRay) {
-  for (uint32_t seed : {1u, 2u, 3u, 4u, 8u}) {
-    const SceneData scene =
-        seed == 8 ? instancedScene(seed) : randomScene(seed, seed == 4 ? 10 : 40);
-    const SceneView view = scene.view();
-    EmbreeScene embree;
-    embree.update(scene, SceneChange::Structure);
-    EXPECT_EQ(embree.instanceCount(), seed == 8 ? 5u : 0u);
-    const EmbreeTracer tracer = embree.tracer();
-    std::mt19937 gen(seed + 100);
-    std::uniform_real_distribution<float> u(-5.0f, 5.0f);
-    int hits = 0, occludedAgree = 0, shadowRays = 0;
-    for (int i = 0; i < 4000; ++i) {
-      Ray ray;
-      ray.origin = Vec3(u(gen), u(gen), u(gen));
-      ray.direction = test::randomUnitVector(gen) * (0.5f + float(i % 3));  // not unit length
-      if (i % 4 == 0) ray.tMax = 3.0f;
-      Hit expected, got;
-      const bool found = intersectClosestBruteForce(view, ray, &expected);
-      ASSERT_EQ(tracer.closest(ray, &got), found) << "seed " << seed << " ray " << i;
-      if (found) {
-        ++hits;
-        // Relative, and absolute at the scene's scale: within an instance Embree tests the
-        // triangle in its object space, so a hit next to the origin is off by that space's
-        // rounding.
-        const float tolerance = 1e-4f * expected.t + 1e-6f;
-        EXPECT_NEAR(got.t, expected.t, tolerance) << "ray " << i;
-        if (got.prim == expected.prim && expected.prim >= scene.spheres.size()) {
-          EXPECT_NEAR(got.b1, expected.b1, 1e-4f);
-          EXPECT_NEAR(got.b2, expected.b2, 1e-4f);
-        } else if (got.prim != expected.prim) {
-          EXPECT_NEAR(got.t, expected.t, 0.1f * tolerance) << "ray " << i;
+  for (uint32_t indexedFrom : kLeafKinds) {
+    for (uint32_t seed : {1u, 2u, 3u, 4u, 8u}) {
+      const SceneData scene =
+          seed == 8 ? instancedScene(seed) : randomScene(seed, seed == 4 ? 10 : 40);
+      const SceneView view = scene.view();
+      EmbreeScene embree(nullptr, indexedFrom);
+      embree.update(scene, SceneChange::Structure);
+      EXPECT_EQ(embree.instanceCount(), seed == 8 ? 5u : 0u);
+      const EmbreeTracer tracer = embree.tracer();
+      std::mt19937 gen(seed + 100);
+      std::uniform_real_distribution<float> u(-5.0f, 5.0f);
+      int hits = 0, occludedAgree = 0, shadowRays = 0;
+      for (int i = 0; i < 4000; ++i) {
+        Ray ray;
+        ray.origin = Vec3(u(gen), u(gen), u(gen));
+        ray.direction = test::randomUnitVector(gen) * (0.5f + float(i % 3));  // not unit length
+        if (i % 4 == 0) ray.tMax = 3.0f;
+        Hit expected, got;
+        const bool found = intersectClosestBruteForce(view, ray, &expected);
+        ASSERT_EQ(tracer.closest(ray, &got), found) << "seed " << seed << " ray " << i;
+        if (found) {
+          ++hits;
+          // Relative, and absolute at the scene's scale: within an instance Embree tests the
+          // triangle in its object space, so a hit next to the origin is off by that space's
+          // rounding.
+          const float tolerance = 1e-4f * expected.t + 1e-6f;
+          EXPECT_NEAR(got.t, expected.t, tolerance) << "ray " << i;
+          if (got.prim == expected.prim && expected.prim >= scene.spheres.size()) {
+            EXPECT_NEAR(got.b1, expected.b1, 1e-4f);
+            EXPECT_NEAR(got.b2, expected.b2, 1e-4f);
+          } else if (got.prim != expected.prim) {
+            EXPECT_NEAR(got.t, expected.t, 0.1f * tolerance) << "ray " << i;
+          }
         }
+        // A shadow query skipping nothing, the nearest primitive, or a random one.
+        uint32_t skip = kNone;
+        if (i % 3 == 1 && found) skip = expected.prim;
+        if (i % 3 == 2) skip = uint32_t(gen() % view.primitiveCount());
+        ++shadowRays;
+        occludedAgree += tracer.occluded(ray, skip) == intersectAnyBruteForce(view, ray, skip);
       }
-      // A shadow query skipping nothing, the nearest primitive, or a random one.
-      uint32_t skip = kNone;
-      if (i % 3 == 1 && found) skip = expected.prim;
-      if (i % 3 == 2) skip = uint32_t(gen() % view.primitiveCount());
-      ++shadowRays;
-      occludedAgree += tracer.occluded(ray, skip) == intersectAnyBruteForce(view, ray, skip);
+      EXPECT_GT(hits, 1000);
+      // Only a ray grazing an edge within rounding may be answered differently.
+      EXPECT_GE(occludedAgree, shadowRays - 2) << "seed " << seed;
     }
-    EXPECT_GT(hits, 1000);
-    // Only a ray grazing an edge within rounding may be answered differently.
-    EXPECT_GE(occludedAgree, shadowRays - 2) << "seed " << seed;
   }
 }
 
@@ -183,62 +189,64 @@ TEST(Embree, HitsMatchBruteForceRayByRay) {
 // and SSE4.2 forced: below AVX-512 Embree has no 16-wide packets and traces them through its
 // ray-stream path, which ignores the valid mask (it read the unused lanes, and its checks
 // aborted on them). Also through instances, where Embree's coherent 16-wide occlusion packets
-// never returned.
+// never returned. With either kind of leaves.
 class EmbreePackets : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(EmbreePackets, QueriesMatchRayByRay) {
-  for (uint32_t seed : {5u, 6u, 9u}) {
-    const SceneData scene =
-        seed == 9 ? instancedScene(seed) : randomScene(seed, seed == 6 ? 10 : 40);
-    EmbreeScene embree(*GetParam() ? GetParam() : nullptr);
-    embree.update(scene, SceneChange::Structure);
-    const EmbreeTracer tracer = embree.tracer();
-    std::mt19937 gen(seed + 200);
-    std::uniform_real_distribution<float> u(-5.0f, 5.0f), jitter(-0.02f, 0.02f);
-    int hits = 0, blocks = 0;
-    for (int bundle = 0; bundle < 300; ++bundle) {
-      const uint32_t n = 1 + uint32_t(bundle) % EmbreeTracer::kPacketWidth;
-      const bool coherent = bundle % 2 == 0;
-      const Vec3 origin(u(gen), u(gen), u(gen));
-      const Vec3 axis = test::randomUnitVector(gen);
-      Ray rays[EmbreeTracer::kPacketWidth];
-      for (uint32_t i = 0; i < n; ++i) {
-        rays[i].origin = coherent ? origin : Vec3(u(gen), u(gen), u(gen));
-        rays[i].direction = coherent ? axis + Vec3(jitter(gen), jitter(gen), jitter(gen))
-                                     : test::randomUnitVector(gen);
-        if (i % 5 == 3) rays[i].tMax = 2.0f;
-      }
-      if (bundle % 7 == 0) rays[n - 1].direction = Vec3(std::nanf(""), 0.0f, 1.0f);
-      Hit packet[EmbreeTracer::kPacketWidth];
-      tracer.closestPacket(rays, n, packet);
-      for (uint32_t i = 0; i < n; ++i) {
-        Hit single;
-        const bool found = tracer.closest(rays[i], &single);
-        ASSERT_EQ(packet[i].valid(), found) << "bundle " << bundle << " ray " << i;
-        if (!found) continue;
-        ++hits;
-        EXPECT_NEAR(packet[i].t, single.t, 1e-5f * single.t) << "bundle " << bundle;
-        if (packet[i].prim == single.prim) {
-          EXPECT_NEAR(packet[i].b1, single.b1, 1e-5f);
-          EXPECT_NEAR(packet[i].b2, single.b2, 1e-5f);
+  for (uint32_t indexedFrom : kLeafKinds) {
+    for (uint32_t seed : {5u, 6u, 9u}) {
+      const SceneData scene =
+          seed == 9 ? instancedScene(seed) : randomScene(seed, seed == 6 ? 10 : 40);
+      EmbreeScene embree(*GetParam() ? GetParam() : nullptr, indexedFrom);
+      embree.update(scene, SceneChange::Structure);
+      const EmbreeTracer tracer = embree.tracer();
+      std::mt19937 gen(seed + 200);
+      std::uniform_real_distribution<float> u(-5.0f, 5.0f), jitter(-0.02f, 0.02f);
+      int hits = 0, blocks = 0;
+      for (int bundle = 0; bundle < 300; ++bundle) {
+        const uint32_t n = 1 + uint32_t(bundle) % EmbreeTracer::kPacketWidth;
+        const bool coherent = bundle % 2 == 0;
+        const Vec3 origin(u(gen), u(gen), u(gen));
+        const Vec3 axis = test::randomUnitVector(gen);
+        Ray rays[EmbreeTracer::kPacketWidth];
+        for (uint32_t i = 0; i < n; ++i) {
+          rays[i].origin = coherent ? origin : Vec3(u(gen), u(gen), u(gen));
+          rays[i].direction = coherent ? axis + Vec3(jitter(gen), jitter(gen), jitter(gen))
+                                       : test::randomUnitVector(gen);
+          if (i % 5 == 3) rays[i].tMax = 2.0f;
+        }
+        if (bundle % 7 == 0) rays[n - 1].direction = Vec3(std::nanf(""), 0.0f, 1.0f);
+        Hit packet[EmbreeTracer::kPacketWidth];
+        tracer.closestPacket(rays, n, packet);
+        for (uint32_t i = 0; i < n; ++i) {
+          Hit single;
+          const bool found = tracer.closest(rays[i], &single);
+          ASSERT_EQ(packet[i].valid(), found) << "bundle " << bundle << " ray " << i;
+          if (!found) continue;
+          ++hits;
+          EXPECT_NEAR(packet[i].t, single.t, 1e-5f * single.t) << "bundle " << bundle;
+          if (packet[i].prim == single.prim) {
+            EXPECT_NEAR(packet[i].b1, single.b1, 1e-5f);
+            EXPECT_NEAR(packet[i].b2, single.b2, 1e-5f);
+          }
+        }
+        uint32_t skip[EmbreeTracer::kPacketWidth];
+        for (uint32_t i = 0; i < n; ++i) {
+          skip[i] = kNone;
+          if (i % 3 == 1 && packet[i].valid()) skip[i] = packet[i].prim;
+          if (i % 3 == 2) skip[i] = uint32_t(gen() % scene.view().primitiveCount());
+        }
+        bool blocked[EmbreeTracer::kPacketWidth];
+        tracer.occludedPacket(rays, skip, n, blocked);
+        for (uint32_t i = 0; i < n; ++i) {
+          const bool single = tracer.occluded(rays[i], skip[i]);
+          blocks += single;
+          EXPECT_EQ(blocked[i], single) << "bundle " << bundle << " ray " << i;
         }
       }
-      uint32_t skip[EmbreeTracer::kPacketWidth];
-      for (uint32_t i = 0; i < n; ++i) {
-        skip[i] = kNone;
-        if (i % 3 == 1 && packet[i].valid()) skip[i] = packet[i].prim;
-        if (i % 3 == 2) skip[i] = uint32_t(gen() % scene.view().primitiveCount());
-      }
-      bool blocked[EmbreeTracer::kPacketWidth];
-      tracer.occludedPacket(rays, skip, n, blocked);
-      for (uint32_t i = 0; i < n; ++i) {
-        const bool single = tracer.occluded(rays[i], skip[i]);
-        blocks += single;
-        EXPECT_EQ(blocked[i], single) << "bundle " << bundle << " ray " << i;
-      }
+      EXPECT_GT(hits, 500) << "seed " << seed;
+      EXPECT_GT(blocks, 300) << "seed " << seed;
     }
-    EXPECT_GT(hits, 500) << "seed " << seed;
-    EXPECT_GT(blocks, 300) << "seed " << seed;
   }
 }
 
@@ -410,6 +418,22 @@ TEST(Embree, AnimationFramesRenderAsFreshBuilds) {
   EXPECT_TRUE(sawMotion);
 }
 
+// Of 500 random rays, how many find the primitive through `embree` that testing every
+// primitive of `scene` finds (or nothing where that finds nothing).
+int agreeingHits(const EmbreeScene& embree, const SceneData& scene, std::mt19937& gen) {
+  std::uniform_real_distribution<float> u(-5.0f, 5.0f);
+  int agree = 0;
+  for (int i = 0; i < 500; ++i) {
+    Ray ray;
+    ray.origin = Vec3(u(gen), u(gen), u(gen));
+    ray.direction = test::randomUnitVector(gen);
+    Hit expected, got;
+    const bool found = intersectClosestBruteForce(scene.view(), ray, &expected);
+    agree += embree.tracer().closest(ray, &got) == found && (!found || got.prim == expected.prim);
+  }
+  return agree;
+}
+
 // A refit (SceneChange::Motion) of a scene whose objects repeat meshes otherwise than the scene
 // built last builds Embree's scene anew: the same triangles, first as instances, then as objects
 // of their own, then as instances again, each time traced as testing every triangle traces them.
@@ -418,25 +442,73 @@ TEST(Embree, RefitToOtherRepeatsBuildsAnew) {
   SceneData own = instanced;
   own.meshInstances.prototypes.clear();
   for (MeshInstance& object : own.meshInstances.objects) object.prototype = -1;
-  EmbreeScene embree;
-  std::mt19937 gen(11);
-  std::uniform_real_distribution<float> u(-5.0f, 5.0f);
-  int step = 0;
-  for (const SceneData* scene : std::vector<const SceneData*>{&instanced, &own, &instanced}) {
-    embree.update(*scene, step == 0 ? SceneChange::Structure : SceneChange::Motion);
-    EXPECT_EQ(embree.instanceCount(), scene == &own ? 0u : 5u) << "step " << step;
-    int agree = 0;
-    for (int i = 0; i < 500; ++i) {
-      Ray ray;
-      ray.origin = Vec3(u(gen), u(gen), u(gen));
-      ray.direction = test::randomUnitVector(gen);
-      Hit expected, got;
-      const bool found = intersectClosestBruteForce(scene->view(), ray, &expected);
-      agree += embree.tracer().closest(ray, &got) == found && (!found || got.prim == expected.prim);
+  for (uint32_t indexedFrom : kLeafKinds) {
+    EmbreeScene embree(nullptr, indexedFrom);
+    std::mt19937 gen(11);
+    std::uniform_real_distribution<float> u(-5.0f, 5.0f);
+    int step = 0;
+    for (const SceneData* scene : std::vector<const SceneData*>{&instanced, &own, &instanced}) {
+      embree.update(*scene, step == 0 ? SceneChange::Structure : SceneChange::Motion);
+      EXPECT_EQ(embree.instanceCount(), scene == &own ? 0u : 5u) << "step " << step;
+      EXPECT_GE(agreeingHits(embree, *scene, gen), 498) << "step " << step;
+      ++step;
     }
-    EXPECT_GE(agree, 498) << "step " << step;
-    ++step;
   }
+}
+
+// Embree traces the vertices of the scene given last, wherever its arrays lie: a copy of the
+// scene given as new values (SceneChange::Values: the same geometry, its arrays elsewhere), then
+// a copy whose every vertex moved (a refit), each traced as testing every triangle traces it
+// after the arrays given before were overwritten. With either kind of leaves; indexed ones read
+// the vertices as they trace.
+TEST(Embree, TracesTheVerticesOfTheSceneGivenLast) {
+  for (uint32_t indexedFrom : kLeafKinds) {
+    for (const bool instances : {false, true}) {
+      SceneData first = instances ? instancedScene(21) : randomScene(21, 10);
+      EmbreeScene embree(nullptr, indexedFrom);
+      embree.update(first, SceneChange::Structure);
+      SceneData copy = first;
+      embree.update(copy, SceneChange::Values);
+      std::fill(first.positions.begin(), first.positions.end(), Vec3(0.0f));
+      for (MeshPrototype& prototype : first.meshInstances.prototypes)
+        std::fill(prototype.positions.begin(), prototype.positions.end(), Vec3(0.0f));
+      std::mt19937 gen(22);
+      EXPECT_GE(agreeingHits(embree, copy, gen), 498) << "values, instances " << instances;
+
+      SceneData moved = copy;
+      for (Vec3& p : moved.positions) p += Vec3(0.5f, -0.25f, 0.0f);
+      for (MeshInstance& object : moved.meshInstances.objects)
+        object.translation += Vec3(0.5f, -0.25f, 0.0f);
+      embree.update(moved, SceneChange::Motion);
+      std::fill(copy.positions.begin(), copy.positions.end(), Vec3(0.0f));
+      for (MeshPrototype& prototype : copy.meshInstances.prototypes)
+        std::fill(prototype.positions.begin(), prototype.positions.end(), Vec3(0.0f));
+      EXPECT_GE(agreeingHits(embree, moved, gen), 498) << "motion, instances " << instances;
+    }
+  }
+}
+
+// Indexed leaves from kIndexedLeavesFromTriangles triangles on, and with them far fewer bytes:
+// Embree's leaves then hold no copy of the vertices.
+TEST(Embree, IndexedLeavesFromTheirTriangleCount) {
+  SceneData scene;
+  std::mt19937 gen(23);
+  std::uniform_real_distribution<float> u(-4.0f, 4.0f);
+  for (uint32_t i = 0; i < kIndexedLeavesFromTriangles; ++i) {
+    const Vec3 a(u(gen), u(gen), u(gen));
+    const uint32_t first = uint32_t(scene.positions.size());
+    scene.positions.insert(scene.positions.end(), {a, a + test::randomUnitVector(gen) * 0.1f,
+                                                   a + test::randomUnitVector(gen) * 0.1f});
+    scene.triangles.push_back(Triangle{{first, first + 1, first + 2}, 0});
+  }
+  const auto bytesPerTriangle = [&](uint32_t indexedFrom) {
+    EmbreeScene embree(nullptr, indexedFrom);
+    embree.update(scene, SceneChange::Structure);
+    return double(embree.bytes()) / double(scene.triangles.size());
+  };
+  const double indexed = bytesPerTriangle(kIndexedLeavesFromTriangles);
+  const double copies = bytesPerTriangle(kIndexedLeavesFromTriangles + 1);
+  EXPECT_LT(indexed, 0.7 * copies) << indexed << " against " << copies << " bytes per triangle";
 }
 
 // Two knots of one mesh, instances of it, through the frames of an animation: one turns and the

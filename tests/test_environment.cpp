@@ -146,7 +146,7 @@ TEST(Environment, SamplingCellsHoldTheMeanOfTheLookupOverThem) {
   std::vector<Vec3> texels(w * h);
   for (Vec3& t : texels) t = Vec3(u(gen), u(gen), u(gen));
   for (const uint32_t k : {1u, 2u, 4u}) {
-    const std::vector<double> cells = environmentCellBrightness(texels, w, h, k);
+    const std::vector<double> cells = environmentCellBrightness(texels.data(), w, h, k);
     ASSERT_EQ(cells.size(), size_t(k * w) * (k * h));
     constexpr uint32_t kSteps = 16;  // even: no step straddles a texel centre
     for (uint32_t cy = 0; cy < k * h; ++cy)

@@ -117,8 +117,8 @@ TEST(Flatten, TrianglesAreNumberedInLeafOrder) {
   }
 }
 
-template <typename T>
-bool sameBytes(const std::vector<T>& a, const std::vector<T>& b) {
+template <typename T, class Allocator>
+bool sameBytes(const std::vector<T, Allocator>& a, const std::vector<T, Allocator>& b) {
   return a.size() == b.size() &&
          (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
 }

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/mat3.h"
+#include "core/padded_allocator.h"
 #include "core/vec3.h"
 
 namespace candela {
@@ -30,7 +31,7 @@ struct MeshInstance {
 struct MeshPrototype {
   // Object space, in the order of each instance's vertices (firstVertex on): an instance's
   // vertex k is linear * positions[k] + translation.
-  std::vector<Vec3> positions;
+  PaddedVector<Vec3> positions;  // padded: Embree shares them
   uint32_t firstInstance = 0;  // the first object that repeats it: its triangles are the pattern
   uint32_t instanceCount = 0;
 };

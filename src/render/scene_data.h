@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/padded_allocator.h"
 #include "render/mesh_instances.h"
 #include "render/scene_change.h"
 #include "render/scene_view.h"
@@ -19,7 +20,18 @@ struct BvhStats {
   double buildSeconds = 0;
 };
 
-#define CANDELA_OWNED_ARRAY(Type, name, count, rewrittenBy) std::vector<Type> name;
+// The vector that holds an array of type T. Arrays of Vec3 are padded (core/padded_allocator.h):
+// the Embree engine shares the positions, which it reads 16 bytes at a time.
+template <class T>
+struct OwnedArray {
+  using type = std::vector<T>;
+};
+template <>
+struct OwnedArray<Vec3> {
+  using type = PaddedVector<Vec3>;
+};
+
+#define CANDELA_OWNED_ARRAY(Type, name, count, rewrittenBy) OwnedArray<Type>::type name;
 
 struct SceneData {
   CANDELA_SCENE_ARRAYS(CANDELA_OWNED_ARRAY)

@@ -63,12 +63,12 @@ uint32_t environmentCellsPerTexel(uint32_t w, uint32_t h) {
 // Where k is even a cell lies within one bilinear patch (texel centres are the patches'
 // corners), over which the mean of the lookup is its value at the cell's centre; a whole texel's
 // mean (k = 1) is the mean of its quarters'.
-std::vector<double> environmentCellBrightness(const std::vector<Vec3>& texels, uint32_t w,
-                                              uint32_t h, uint32_t k) {
+std::vector<double> environmentCellBrightness(const Vec3* texels, uint32_t w, uint32_t h,
+                                              uint32_t k) {
   const uint32_t split = k < 2 ? 2 : k, sw = split * w, sh = split * h;
   const auto lookup = [&](uint32_t x, uint32_t y) {
-    return componentSum(lookupMap(texels.data(), w, h, (float(x) + 0.5f) / float(sw),
-                                  (float(y) + 0.5f) / float(sh)));
+    return componentSum(
+        lookupMap(texels, w, h, (float(x) + 0.5f) / float(sw), (float(y) + 0.5f) / float(sh)));
   };
   const uint32_t cw = k * w, ch = k * h;
   std::vector<double> f(size_t(cw) * ch);
@@ -84,7 +84,7 @@ std::vector<double> environmentCellBrightness(const std::vector<Vec3>& texels, u
 namespace {
 
 // The map's mean texel over directions.
-Vec3 meanTexel(const std::vector<Vec3>& texels, uint32_t w, uint32_t h) {
+Vec3 meanTexel(const Vec3* texels, uint32_t w, uint32_t h) {
   const std::array<double, 3> mean = meanOverDirections<3>(w, h, [&](uint32_t x, uint32_t y) {
     const Vec3& t = texels[size_t(y) * w + x];
     return std::array<double, 3>{t.x, t.y, t.z};
@@ -124,10 +124,10 @@ void flattenEnvironment(const EnvironmentDesc& desc, SceneData& s) {
   s.envTexels.resize(size_t(w) * h);
   for (uint32_t y = 0; y < h; ++y)
     for (uint32_t x = 0; x < w; ++x) s.envTexels[size_t(y) * w + x] = image.at(x, y);
-  s.environmentMapMean = meanTexel(s.envTexels, w, h);
+  s.environmentMapMean = meanTexel(s.envTexels.data(), w, h);
 
   const uint32_t k = environmentCellsPerTexel(w, h), cw = k * w, ch = k * h;
-  std::vector<double> f = environmentCellBrightness(s.envTexels, w, h, k);
+  std::vector<double> f = environmentCellBrightness(s.envTexels.data(), w, h, k);
   compensateForMis(f, cw, ch);
   for (uint32_t y = 0; y < ch; ++y)
     for (uint32_t x = 0; x < cw; ++x) f[size_t(y) * cw + x] *= rowSinTheta(y, ch);

@@ -23,8 +23,8 @@ uint32_t environmentCellsPerTexel(uint32_t w, uint32_t h);
 
 // The brightness (RGB sum) of each of the (k w) x (k h) cells, row-major: the exact mean over it
 // of the map's bilinear lookup (render/environment.h), so positive wherever a lookup in it is.
-std::vector<double> environmentCellBrightness(const std::vector<Vec3>& texels, uint32_t w,
-                                              uint32_t h, uint32_t k);
+std::vector<double> environmentCellBrightness(const Vec3* texels, uint32_t w, uint32_t h,
+                                              uint32_t k);
 
 // The sum of the RGB radiance of the environment, averaged over directions.
 double environmentMeanRadiance(const SceneData& scene);

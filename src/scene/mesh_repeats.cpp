@@ -71,7 +71,8 @@ void findRepeatedMeshes(SceneData& s, const std::vector<FlattenedObject>& object
     MeshPrototype prototype;
     prototype.firstInstance = firsts[g];
     prototype.instanceCount = sizes[g];
-    prototype.positions = first.mesh->positions;
+    prototype.positions.reserve(first.mesh->positions.size() + first.splitSources.size());
+    prototype.positions.assign(first.mesh->positions.begin(), first.mesh->positions.end());
     for (uint32_t source : first.splitSources)
       prototype.positions.push_back(first.mesh->positions[source]);
     prototypeOf[g] = int32_t(s.meshInstances.prototypes.size());

@@ -15,8 +15,8 @@ namespace {
 // JSON has no inf or nan; a rate over a zero time is written as 0.
 double finiteOrZero(double v) { return std::isfinite(v) ? v : 0.0; }
 
-template <class T>
-uint64_t bytesOf(const std::vector<T>& v) {
+template <class T, class Allocator>
+uint64_t bytesOf(const std::vector<T, Allocator>& v) {
   return uint64_t(v.size()) * sizeof(T);
 }
 

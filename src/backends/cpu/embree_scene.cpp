@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
-#include <cstring>
 #include <string>
 
 #include "backends/backend_error.h"
@@ -67,17 +66,36 @@ void rejectSkippedTriangle(const RTCFilterFunctionNArguments* args) {
   }
 }
 
-EmbreeScene::EmbreeScene(const char* deviceConfig) {
-  device_ = rtcNewDevice(deviceConfig);
-  if (!device_)
-    throw BackendError("Embree could not start: " + std::to_string(rtcGetDeviceError(nullptr)));
-  rtcSetDeviceErrorFunction(device_, keepError, nullptr);
-  rtcSetDeviceMemoryMonitorFunction(device_, countMemory, nullptr);
+EmbreeScene::EmbreeScene(const char* deviceConfig, uint32_t indexedLeavesFrom)
+    : deviceConfig_(deviceConfig ? deviceConfig : ""), indexedLeavesFrom_(indexedLeavesFrom) {
+  openDevice(false);
 }
 
 EmbreeScene::~EmbreeScene() {
   release();
   rtcReleaseDevice(device_);
+}
+
+void EmbreeScene::openDevice(bool indexedLeaves) {
+  if (device_ && indexedLeaves == indexedLeaves_) return;
+  const auto open = [](const std::string& config) {
+    RTCDevice device = rtcNewDevice(config.c_str());
+    if (!device)
+      throw BackendError("Embree could not start: " + std::to_string(rtcGetDeviceError(nullptr)));
+    rtcSetDeviceErrorFunction(device, keepError, nullptr);
+    rtcSetDeviceMemoryMonitorFunction(device, countMemory, nullptr);
+    return device;
+  };
+  if (device_) rtcReleaseDevice(device_);
+  device_ = open(deviceConfig_);
+  indexedLeaves_ = indexedLeaves;
+  if (!indexedLeaves) return;
+  // Eight-wide nodes where the instruction set Embree runs has them (AVX and up), as its default.
+  const bool wide = rtcGetDeviceProperty(device_, RTC_DEVICE_PROPERTY_NATIVE_RAY8_SUPPORTED) != 0;
+  rtcReleaseDevice(device_);
+  device_ = nullptr;
+  device_ = open(deviceConfig_ + (deviceConfig_.empty() ? "" : ",") +
+                 (wide ? "tri_accel=bvh8.triangle4i" : "tri_accel=bvh4.triangle4i"));
 }
 
 void EmbreeScene::release() {
@@ -107,7 +125,8 @@ uint32_t EmbreeScene::instanceCount() const {
 void EmbreeScene::update(const SceneData& scene, SceneChange change) {
   if (change == SceneChange::Structure || !built_) {
     build(scene);
-  } else if (change == SceneChange::Motion) {
+  } else if (change == SceneChange::Motion || verticesMoved(scene)) {
+    // New values keep the geometry, but where its arrays moved Embree must read them anew.
     refit(scene);
   }
   // A frame of new values keeps the geometry, but its arrays may lie elsewhere.
@@ -199,6 +218,17 @@ EmbreeScene::Plan EmbreeScene::planParts(const SceneData& scene) {
   return plan;
 }
 
+bool EmbreeScene::verticesMoved(const SceneData& scene) const {
+  const std::vector<MeshPrototype>& meshes = scene.meshInstances.prototypes;
+  for (const Prototype& prototype : prototypes_)
+    if (uint32_t(prototype.index) >= meshes.size() ||
+        meshes[uint32_t(prototype.index)].positions.data() != prototype.vertices)
+      return true;
+  for (const Part& part : parts_)
+    if (part.object < 0 && scene.positions.data() + part.firstVertex != part.vertices) return true;
+  return false;
+}
+
 bool EmbreeScene::sameParts(const Plan& plan) const {
   const auto samePart = [](const Part& a, const Part& b) {
     return a.firstTriangle == b.firstTriangle && a.triangleCount == b.triangleCount &&
@@ -220,11 +250,9 @@ RTCGeometry EmbreeScene::newTriangles(const Vec3* positions, uint32_t vertexCoun
   RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
   rtcSetGeometryUserData(geometry, &maskView_);
   setMaskFilter(geometry, filtered_);
-  // Embree reads vertices with 16-byte loads, so it gets its own padded copy; the triangles'
-  // fourth word (the material) is passed over by the stride.
-  void* vertices = rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
-                                           sizeof(Vec3), vertexCount);
-  if (vertices) std::memcpy(vertices, positions, vertexCount * sizeof(Vec3));
+  // The triangles' fourth word (the material) is passed over by the stride.
+  rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, positions, 0,
+                             sizeof(Vec3), vertexCount);
   if (shareIndices) {
     rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, triangles, 0,
                                sizeof(Triangle), triangleCount);
@@ -252,6 +280,7 @@ void EmbreeScene::placeInstance(const SceneData& scene, const Part& part) {
 void EmbreeScene::build(const SceneData& scene) {
   built_ = true;
   release();
+  openDevice(scene.triangles.size() >= indexedLeavesFrom_);
   lastError.clear();
   const auto start = std::chrono::steady_clock::now();
   placeSpheres(scene);
@@ -271,7 +300,8 @@ void EmbreeScene::build(const SceneData& scene) {
     rtcSetSceneBuildQuality(prototype.scene, RTC_BUILD_QUALITY_MEDIUM);
     // Its own indices: the instance whose triangles they are may be gone when a later frame
     // refits, and the prototype's vertices start at that instance's first.
-    prototype.geometry = newTriangles(mesh.positions.data(), uint32_t(mesh.positions.size()),
+    prototype.vertices = mesh.positions.data();
+    prototype.geometry = newTriangles(prototype.vertices, uint32_t(mesh.positions.size()),
                                       scene.triangles.data() + first.firstTriangle,
                                       first.triangleCount, first.firstVertex, false);
     rtcAttachGeometryByID(prototype.scene, prototype.geometry, 0);
@@ -282,9 +312,10 @@ void EmbreeScene::build(const SceneData& scene) {
   for (uint32_t id = 0; id < parts_.size(); ++id) {
     Part& part = parts_[id];
     if (part.object < 0) {
-      part.geometry = newTriangles(scene.positions.data() + part.firstVertex, part.vertexCount,
-                                   scene.triangles.data() + part.firstTriangle, part.triangleCount,
-                                   part.firstVertex, part.sharesIndices());
+      part.vertices = scene.positions.data() + part.firstVertex;
+      part.geometry =
+          newTriangles(part.vertices, part.vertexCount, scene.triangles.data() + part.firstTriangle,
+                       part.triangleCount, part.firstVertex, part.sharesIndices());
     } else {
       part.geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_INSTANCE);
       rtcSetGeometryInstancedScene(part.geometry, prototypes_[uint32_t(part.prototype)].scene);
@@ -308,17 +339,27 @@ void EmbreeScene::refit(const SceneData& scene) {
     build(scene);
     return;
   }
-  // The prototypes, in object space, stay: the objects move, the runs' vertices and the
-  // instances' transforms.
-  for (const Part& part : parts_) {
+  // The prototypes, in object space, stay (they are shared anew where their arrays moved): the
+  // objects move, the runs' vertices and the instances' transforms.
+  for (Prototype& prototype : prototypes_) {
+    const PaddedVector<Vec3>& positions =
+        scene.meshInstances.prototypes[uint32_t(prototype.index)].positions;
+    if (positions.data() == prototype.vertices) continue;
+    prototype.vertices = positions.data();
+    rtcSetSharedGeometryBuffer(prototype.geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                               prototype.vertices, 0, sizeof(Vec3), positions.size());
+    rtcSetGeometryBuildQuality(prototype.geometry, RTC_BUILD_QUALITY_REFIT);
+    rtcCommitGeometry(prototype.geometry);
+    commit(prototype.scene);
+  }
+  for (Part& part : parts_) {
     if (part.object >= 0) {
       placeInstance(scene, part);
       continue;
     }
-    void* vertices = rtcGetGeometryBufferData(part.geometry, RTC_BUFFER_TYPE_VERTEX, 0);
-    std::memcpy(vertices, scene.positions.data() + part.firstVertex,
-                part.vertexCount * sizeof(Vec3));
-    rtcUpdateGeometryBuffer(part.geometry, RTC_BUFFER_TYPE_VERTEX, 0);
+    part.vertices = scene.positions.data() + part.firstVertex;
+    rtcSetSharedGeometryBuffer(part.geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                               part.vertices, 0, sizeof(Vec3), part.vertexCount);
     rtcSetGeometryBuildQuality(part.geometry, RTC_BUILD_QUALITY_REFIT);
     // The same triangles: only the array may have moved in memory.
     if (part.sharesIndices())

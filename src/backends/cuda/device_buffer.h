@@ -41,7 +41,8 @@ class DeviceBuffer {
     count_ = count;
   }
 
-  void upload(const std::vector<T>& host) {
+  template <class Allocator>
+  void upload(const std::vector<T, Allocator>& host) {
     if (host.size() != count_) allocate(host.size());
     if (count_) CANDELA_CUDA_CHECK(cudaMemcpy(ptr_, host.data(), count_ * sizeof(T), cudaMemcpyHostToDevice));
   }
