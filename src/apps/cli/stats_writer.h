@@ -10,7 +10,7 @@
 //   bvh_mtris_per_second  triangles / bvh_build_seconds / 1e6
 //   triangles, spheres, bvh_nodes, bvh_leaves, bvh_max_depth (the own BVH's; 0 with Embree)
 //   memory_bytes {nodes, prim_indices, positions, normals, triangles, engine, total}; engine:
-//                      what Embree holds (its BVH and vertex copy)
+//                      what Embree holds (its BVH; it shares the scene's vertices)
 //   bytes_per_triangle  memory_bytes.total / triangles (0 without triangles)
 //   render_seconds, samples, samples_per_second
 //   rays {camera, bounce, shadow, total}, rays_per_second

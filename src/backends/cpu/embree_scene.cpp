@@ -24,6 +24,15 @@ thread_local std::string lastError;
 
 void keepError(void*, RTCError, const char* message) { lastError = message ? message : "unknown"; }
 
+RTCDevice newDevice(const std::string& config) {
+  RTCDevice device = rtcNewDevice(config.c_str());
+  if (!device)
+    throw BackendError("Embree could not start: " + std::to_string(rtcGetDeviceError(nullptr)));
+  rtcSetDeviceErrorFunction(device, keepError, nullptr);
+  rtcSetDeviceMemoryMonitorFunction(device, countMemory, nullptr);
+  return device;
+}
+
 }  // namespace
 
 void rejectMaskedHit(const RTCFilterFunctionNArguments* args) {
@@ -67,35 +76,28 @@ void rejectSkippedTriangle(const RTCFilterFunctionNArguments* args) {
 }
 
 EmbreeScene::EmbreeScene(const char* deviceConfig, uint32_t indexedLeavesFrom)
-    : deviceConfig_(deviceConfig ? deviceConfig : ""), indexedLeavesFrom_(indexedLeavesFrom) {
-  openDevice(false);
+    : deviceConfig_(deviceConfig ? deviceConfig : ""),
+      indexedLeavesFrom_(indexedLeavesFrom),
+      device_(newDevice(deviceConfig_)) {
+  // Eight-wide nodes where the instruction set Embree runs has them (AVX and up), as its default.
+  indexedLeavesConfig_ =
+      (deviceConfig_.empty() ? "" : deviceConfig_ + ",") +
+      (rtcGetDeviceProperty(device_, RTC_DEVICE_PROPERTY_NATIVE_RAY8_SUPPORTED) != 0
+           ? "tri_accel=bvh8.triangle4i"
+           : "tri_accel=bvh4.triangle4i");
 }
 
 EmbreeScene::~EmbreeScene() {
   release();
-  rtcReleaseDevice(device_);
+  if (device_) rtcReleaseDevice(device_);
 }
 
-void EmbreeScene::openDevice(bool indexedLeaves) {
-  if (device_ && indexedLeaves == indexedLeaves_) return;
-  const auto open = [](const std::string& config) {
-    RTCDevice device = rtcNewDevice(config.c_str());
-    if (!device)
-      throw BackendError("Embree could not start: " + std::to_string(rtcGetDeviceError(nullptr)));
-    rtcSetDeviceErrorFunction(device, keepError, nullptr);
-    rtcSetDeviceMemoryMonitorFunction(device, countMemory, nullptr);
-    return device;
-  };
-  if (device_) rtcReleaseDevice(device_);
-  device_ = open(deviceConfig_);
-  indexedLeaves_ = indexedLeaves;
-  if (!indexedLeaves) return;
-  // Eight-wide nodes where the instruction set Embree runs has them (AVX and up), as its default.
-  const bool wide = rtcGetDeviceProperty(device_, RTC_DEVICE_PROPERTY_NATIVE_RAY8_SUPPORTED) != 0;
+void EmbreeScene::useIndexedLeaves(bool indexed) {
+  if (indexed == indexedLeaves_) return;
   rtcReleaseDevice(device_);
   device_ = nullptr;
-  device_ = open(deviceConfig_ + (deviceConfig_.empty() ? "" : ",") +
-                 (wide ? "tri_accel=bvh8.triangle4i" : "tri_accel=bvh4.triangle4i"));
+  device_ = newDevice(indexed ? indexedLeavesConfig_ : deviceConfig_);
+  indexedLeaves_ = indexed;
 }
 
 void EmbreeScene::release() {
@@ -280,7 +282,7 @@ void EmbreeScene::placeInstance(const SceneData& scene, const Part& part) {
 void EmbreeScene::build(const SceneData& scene) {
   built_ = true;
   release();
-  openDevice(scene.triangles.size() >= indexedLeavesFrom_);
+  useIndexedLeaves(scene.triangles.size() >= indexedLeavesFrom_);
   lastError.clear();
   const auto start = std::chrono::steady_clock::now();
   placeSpheres(scene);

@@ -2,10 +2,10 @@
 // an animation; tracer() is what the integrator traces with (backends/cpu/embree_tracer.h).
 //
 // Embree builds its own BVH over the triangles (binned SAH at RTC_BUILD_QUALITY_MEDIUM:
-// docs/performance.md) from the scene's own vertices and triangles, shared, not copied. Its
-// leaves hold copies of their triangles' vertices, or in scenes of at least
-// kIndexedLeavesFromTriangles triangles only their indices (Embree's Triangle4i leaves, read
-// through the shared vertices).
+// docs/performance.md) over the scene's own vertices, shared, not copied, and its triangles
+// (shared too where their indices need no shift). Its leaves hold copies of their triangles'
+// vertices, or in scenes of at least kIndexedLeavesFromTriangles triangles only their indices
+// (Embree's Triangle4i leaves, which read the shared vertices as they trace).
 // Objects that repeat a mesh of at least kInstanceFromTriangles triangles (render/mesh_instances.h)
 // are instances of one BVH built over the mesh in object space, each with its object's transform;
 // the other objects' triangles are geometries over the runs of the triangle array between them
@@ -102,7 +102,7 @@ class EmbreeScene {
   void release();
   // Makes device_ one whose triangle leaves are indexed or not (a new device where that changes;
   // release() first).
-  void openDevice(bool indexedLeaves);
+  void useIndexedLeaves(bool indexed);
   // The parts and prototypes of `scene`, before Embree has any of them.
   static Plan planParts(const SceneData& scene);
   // Whether `plan` has the parts and prototypes of the scene built last: what a refit needs.
@@ -119,7 +119,7 @@ class EmbreeScene {
   void updateMasks(const SceneData& scene);
   void setMaskFilters(bool masked);
 
-  std::string deviceConfig_;
+  std::string deviceConfig_, indexedLeavesConfig_;  // the latter with Embree's indexed leaves
   uint32_t indexedLeavesFrom_;
   RTCDevice device_ = nullptr;
   bool indexedLeaves_ = false;  // device_'s
