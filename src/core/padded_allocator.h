@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <new>
 #include <vector>
 
@@ -22,6 +23,7 @@ struct PaddedAllocator {
   PaddedAllocator(const PaddedAllocator<U>&) {}
 
   T* allocate(size_t n) {
+    if (n > (SIZE_MAX - kAllocationPadding) / sizeof(T)) throw std::bad_array_new_length();
     return static_cast<T*>(::operator new(n * sizeof(T) + kAllocationPadding));
   }
   void deallocate(T* p, size_t) { ::operator delete(p); }
