@@ -445,7 +445,6 @@ TEST(Embree, RefitToOtherRepeatsBuildsAnew) {
   for (uint32_t indexedFrom : kLeafKinds) {
     EmbreeScene embree(nullptr, indexedFrom);
     std::mt19937 gen(11);
-    std::uniform_real_distribution<float> u(-5.0f, 5.0f);
     int step = 0;
     for (const SceneData* scene : std::vector<const SceneData*>{&instanced, &own, &instanced}) {
       embree.update(*scene, step == 0 ? SceneChange::Structure : SceneChange::Motion);
