@@ -54,6 +54,20 @@ void rejectMaskedHit(const RTCFilterFunctionNArguments* args) {
 
 namespace {
 
+// Points a triangle geometry at `count` of the scene's vertices from `vertices` on (the array
+// padded: render/scene_data.h), which Embree reads in place.
+void shareVertices(RTCGeometry geometry, const Vec3* vertices, size_t count) {
+  rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, vertices, 0,
+                             sizeof(Vec3), count);
+}
+
+// Points a triangle geometry at `count` of the scene's triangles; the fourth word of each (the
+// material) is passed over by the stride.
+void shareTriangles(RTCGeometry geometry, const Triangle* triangles, size_t count) {
+  rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, triangles, 0,
+                             sizeof(Triangle), count);
+}
+
 // Installs rejectMaskedHit on a triangle geometry for both queries, or removes it.
 void setMaskFilter(RTCGeometry geometry, bool masked) {
   rtcSetGeometryIntersectFilterFunction(geometry, masked ? rejectMaskedHit : nullptr);
@@ -252,12 +266,9 @@ RTCGeometry EmbreeScene::newTriangles(const Vec3* positions, uint32_t vertexCoun
   RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
   rtcSetGeometryUserData(geometry, &maskView_);
   setMaskFilter(geometry, filtered_);
-  // The triangles' fourth word (the material) is passed over by the stride.
-  rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, positions, 0,
-                             sizeof(Vec3), vertexCount);
+  shareVertices(geometry, positions, vertexCount);
   if (shareIndices) {
-    rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, triangles, 0,
-                               sizeof(Triangle), triangleCount);
+    shareTriangles(geometry, triangles, triangleCount);
   } else if (auto* indices = static_cast<uint32_t*>(
                  rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
                                          3 * sizeof(uint32_t), triangleCount))) {
@@ -348,8 +359,7 @@ void EmbreeScene::refit(const SceneData& scene) {
         scene.meshInstances.prototypes[uint32_t(prototype.index)].positions;
     if (positions.data() == prototype.vertices) continue;
     prototype.vertices = positions.data();
-    rtcSetSharedGeometryBuffer(prototype.geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
-                               prototype.vertices, 0, sizeof(Vec3), positions.size());
+    shareVertices(prototype.geometry, prototype.vertices, positions.size());
     rtcSetGeometryBuildQuality(prototype.geometry, RTC_BUILD_QUALITY_REFIT);
     rtcCommitGeometry(prototype.geometry);
     commit(prototype.scene);
@@ -360,14 +370,12 @@ void EmbreeScene::refit(const SceneData& scene) {
       continue;
     }
     part.vertices = scene.positions.data() + part.firstVertex;
-    rtcSetSharedGeometryBuffer(part.geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
-                               part.vertices, 0, sizeof(Vec3), part.vertexCount);
+    shareVertices(part.geometry, part.vertices, part.vertexCount);
     rtcSetGeometryBuildQuality(part.geometry, RTC_BUILD_QUALITY_REFIT);
     // The same triangles: only the array may have moved in memory.
     if (part.sharesIndices())
-      rtcSetSharedGeometryBuffer(part.geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                                 scene.triangles.data() + part.firstTriangle, 0, sizeof(Triangle),
-                                 part.triangleCount);
+      shareTriangles(part.geometry, scene.triangles.data() + part.firstTriangle,
+                     part.triangleCount);
     rtcCommitGeometry(part.geometry);
   }
   commit(scene_);
