@@ -208,6 +208,23 @@ TEST(Aovs, AlbedoThroughAMirrorIsTheMirroredSurfacesColour) {
   EXPECT_TRUE(same(ea, Vec3(1.0f, 0.25f, 0.0f)));
 }
 
+// The environment is an emitter too: a sample that leaves the scene before any other surface
+// records its radiance clamped to [0, 1], seen straight or through a mirror, while depth and
+// normal still say background.
+TEST(Aovs, AlbedoOfTheEnvironmentIsItsClampedRadiance) {
+  const AovRender r = renderAovs(R"({
+    "camera": {"width": 9, "height": 9, "fov": 20, "spp": 4, "position": [0, 0, 5]},
+    "render": {"antialiasing": false},
+    "environment": {"color": [3, 0.25, 0]},
+    "spheres": [{"position": [0, 0, 0], "radius": 1, "material": "mirror"}]
+  })");
+  EXPECT_TRUE(same(r.at3("albedo", 0, 0), Vec3(1.0f, 0.25f, 0.0f)));
+  EXPECT_TRUE(same(r.at3("albedo", 4, 4), Vec3(1.0f, 0.25f, 0.0f)));
+  EXPECT_EQ(r.at("depth", 0, 0), kInf);
+  EXPECT_TRUE(same(r.at3("normal", 0, 0), Vec3(0.0f)));
+  EXPECT_EQ(r.at("instance", 4, 4), 1.0f);
+}
+
 // At an edge, filtered passes are means over the samples (albedo over all of them, depth over
 // those that hit) while the id passes take the sample nearest the pixel centre.
 TEST(Aovs, EdgePixelsAverageFilteredPassesAndTakeIdsFromTheNearestSample) {

@@ -42,7 +42,7 @@ CANDELA_HDI Vec3 clampUnit(const Vec3& v) { return min(Vec3(1.0f), max(Vec3(0.0f
 struct AovPixel {
   Vec3 positionSum{0.0f};  // over samples that hit
   Vec3 normalSum{0.0f};    // over samples that hit
-  Vec3 albedoSum{0.0f};    // over all samples (the background adds 0)
+  Vec3 albedoSum{0.0f};    // over all samples (the background adds the environment's share)
   float distanceSum = 0.0f;  // |position - camera centre|, over samples that hit
   Vec2 flowSum;              // over samples whose flow is defined (render/flow.h)
   uint32_t flowSamples = 0;

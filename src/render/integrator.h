@@ -143,7 +143,14 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
                   : powerHeuristic(st.bsdfPdf, lightSelectPmf(scene, uint32_t(light),
                                                               st.bouncePoint, st.bounceHemisphere) *
                                                    environmentPdf(scene, st.ray.direction));
-    st.radiance += st.throughput * environmentRadiance(scene, st.ray.direction) * weight;
+    const Vec3 background = environmentRadiance(scene, st.ray.direction);
+    if constexpr (kAovs) {
+      if (!first->albedoDone) {
+        first->albedoDone = true;
+        first->albedo = clampUnit(background);
+      }
+    }
+    st.radiance += st.throughput * background * weight;
     return false;
   }
   const SurfacePoint sp = surfaceAt(scene, st.ray, hit);
