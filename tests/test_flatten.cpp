@@ -55,6 +55,31 @@ TEST(Flatten, CreaseVerticesAreSplitSoEachFaceKeepsItsNormals) {
   EXPECT_EQ(s.positions[s.triangles[0].v[1]].x, s.positions[s.triangles[1].v[0]].x);
 }
 
+// Objects that place one mesh share how its vertices are laid out (scene/mesh_layout.h), but each
+// gets its own vertices, split ones included, at its own place.
+TEST(Flatten, ObjectsPlacingOneMeshEachGetItsSplitVerticesInPlace) {
+  const std::string obj = writeObj("crease3.obj", kCrease);
+  // The contents alone: their triangles in the description's order, not in a BVH's.
+  const SceneData s = flattenSceneContents(
+      parseSceneText(R"({"camera": {"width": 8, "height": 8}, "objects": [{"file": ")" + obj +
+                         R"("}, {"file": ")" + obj + R"(", "position": [5, 0, 0]}]})",
+                     "flatten.json", "."));
+  ASSERT_EQ(s.triangles.size(), 4u);
+  ASSERT_EQ(s.positions.size(), 12u);
+  ASSERT_EQ(s.normals.size(), 12u);
+  for (int k = 0; k < 2; ++k) {
+    for (int c = 0; c < 3; ++c) {
+      const uint32_t a = s.triangles[k].v[c], b = s.triangles[2 + k].v[c];
+      EXPECT_EQ(b, a + 6);
+      EXPECT_EQ(s.positions[b].x, s.positions[a].x + 5.0f);
+      EXPECT_EQ(s.positions[b].y, s.positions[a].y);
+      EXPECT_EQ(s.normals[b].bits, s.normals[a].bits);
+    }
+  }
+  // The second object's split vertices copy its own positions, not the first object's.
+  for (uint32_t v = 10; v < 12; ++v) EXPECT_GE(s.positions[v].x, 5.0f);
+}
+
 TEST(Flatten, FlatMeshesAndUnsmoothedObjectsCarryNoNormals) {
   const std::string crease = writeObj("crease2.obj", kCrease);
   const std::string flat = writeObj("flat.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");

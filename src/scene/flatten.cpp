@@ -2,7 +2,8 @@
 #include "scene/flatten.h"
 
 #include <algorithm>
-#include <unordered_map>
+#include <map>
+#include <tuple>
 
 #include "core/constants.h"
 #include "core/rotation.h"
@@ -13,6 +14,7 @@
 #include "scene/content_hash.h"
 #include "scene/flatten_environment.h"
 #include "scene/light_tree_build.h"
+#include "scene/mesh_layout.h"
 #include "scene/mesh_repeats.h"
 
 namespace candela {
@@ -24,18 +26,63 @@ uint32_t addMaterial(SceneData& s, const Material& m) {
   return uint32_t(s.materials.size() - 1);
 }
 
+// The layouts of the meshes that a scene's objects place (scene/mesh_layout.h), one per mesh and
+// use of its normals and uvs, made once however many objects place the mesh.
+class MeshLayouts {
+ public:
+  const MeshLayout& of(const ObjectDesc& obj) {
+    const MeshDesc& mesh = *obj.mesh;
+    const Key key{&mesh, usesNormals(obj), !mesh.uvs.empty()};
+    auto it = layouts_.find(key);
+    if (it == layouts_.end())
+      it = layouts_.emplace(key, layOutMesh(mesh, key.normals, key.uvs)).first;
+    return it->second;
+  }
+  static bool usesNormals(const ObjectDesc& obj) {
+    return obj.smooth && !obj.mesh->normals.empty();
+  }
+
+ private:
+  struct Key {
+    const MeshDesc* mesh;
+    bool normals, uvs;
+    bool operator<(const Key& o) const {
+      return std::tie(mesh, normals, uvs) < std::tie(o.mesh, o.normals, o.uvs);
+    }
+  };
+  std::map<Key, MeshLayout> layouts_;
+};
+
+// Room in s's vertex and triangle arrays for the objects' meshes, so that each array is written
+// once: grown object by object, the scale scene's 8.5 M triangles spent most of their flattening
+// copying and paging in the arrays' earlier sizes (docs/performance.md).
+void reserveMeshes(SceneData& s, const std::vector<ObjectDesc>& objects, MeshLayouts& layouts) {
+  size_t vertices = s.positions.size(), triangles = s.triangles.size();
+  bool normals = false, uvs = false;
+  for (const ObjectDesc& obj : objects) {
+    const MeshLayout& layout = layouts.of(obj);
+    vertices += layout.vertexCount(*obj.mesh);
+    triangles += layout.triangles.size();
+    normals = normals || MeshLayouts::usesNormals(obj);
+    uvs = uvs || !obj.mesh->uvs.empty();
+  }
+  s.positions.reserve(vertices);
+  s.triangles.reserve(triangles);
+  if (normals) s.normals.reserve(vertices);
+  if (uvs) s.uvs.reserve(vertices);
+}
+
 // Appends an object's mesh in world space: p' = position + R (scale * p). Normals transform by
 // the inverse transpose, R * (n / scale). A mirroring scale reverses the winding, so the vertex
 // order is swapped to keep each face's outside where it was.
 //
-// The renderer keeps one normal and one uv per vertex (both run parallel to positions), so a
-// position that the file pairs with several normals (a crease) or several uvs (a texture seam) is
-// split into one vertex per combination; a vertex of a face without normals gets the encoding
-// "none" (OctNormal()), meaning "use the face normal", and one without uvs the uv (0, 0).
-// With `geometry` false only the object's materials are appended (see refreshSceneValues); with
-// it, the object's place (s.meshInstances) too, and in *flattened the mesh vertex each split
-// vertex copies.
-void addObject(SceneData& s, const ObjectDesc& obj, bool geometry, FlattenedObject* flattened) {
+// The vertices are the mesh's, then its splits (scene/mesh_layout.h); a vertex of a face without
+// normals gets the encoding "none" (OctNormal()), meaning "use the face normal", and one without
+// uvs the uv (0, 0). With `geometry` false only the object's materials are appended (see
+// refreshSceneValues); with it, the object's place (s.meshInstances) too, and in *flattened the
+// mesh vertex each split vertex copies.
+void addObject(SceneData& s, const ObjectDesc& obj, bool geometry, MeshLayouts& layouts,
+               FlattenedObject* flattened) {
   const MeshDesc& mesh = *obj.mesh;
   uint32_t materialBase = 0;
   if (obj.material) {
@@ -46,70 +93,42 @@ void addObject(SceneData& s, const ObjectDesc& obj, bool geometry, FlattenedObje
   }
   if (!geometry) return;
 
+  const MeshLayout& layout = layouts.of(obj);
   const Mat3 r = eulerRotation(obj.rotation);
   const uint32_t base = uint32_t(s.positions.size());
   for (const Vec3& p : mesh.positions) s.positions.push_back(obj.position + r * (obj.scale * p));
+  for (uint32_t v : layout.splitSources) s.positions.push_back(s.positions[base + v]);
   MeshInstance placed;
   placed.firstTriangle = uint32_t(s.triangles.size());
   placed.triangleCount = uint32_t(mesh.triangles.size());
   placed.firstVertex = base;
+  placed.vertexCount = layout.vertexCount(mesh);
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) placed.linear.m[i][j] = r.m[i][j] * obj.scale[j];
   placed.translation = obj.position;
+  s.meshInstances.objects.push_back(placed);
   flattened->mesh = &mesh;
-
-  const bool withNormals = obj.smooth && !mesh.normals.empty();
-  const bool withUvs = !mesh.uvs.empty();
-  // The file's (normal, uv) indices of each emitted vertex (-1: none), from `base` on.
-  struct Attributes {
-    int32_t n, t;
-    bool operator==(const Attributes& o) const { return n == o.n && t == o.t; }
-  };
-  constexpr Attributes kUnset{-2, -2};
-  std::vector<Attributes> attributesOf(withNormals || withUvs ? mesh.positions.size() : 0, kUnset);
-  struct SplitHash {
-    size_t operator()(const std::pair<uint32_t, uint64_t>& k) const {
-      return std::hash<uint64_t>()(k.second * 0x9e3779b97f4a7c15ull ^ k.first);
-    }
-  };
-  std::unordered_map<std::pair<uint32_t, uint64_t>, uint32_t, SplitHash> splits;
-  const auto vertexFor = [&](uint32_t v, int32_t n, int32_t t) -> uint32_t {
-    if (!withNormals && !withUvs) return base + v;
-    const Attributes a{withNormals ? n : -1, withUvs ? t : -1};
-    Attributes& slot = attributesOf[v];
-    if (slot == kUnset) slot = a;
-    if (slot == a) return base + v;
-    const auto key = std::make_pair(v, (uint64_t(uint32_t(a.n)) << 32) | uint32_t(a.t));
-    const auto [it, inserted] = splits.try_emplace(key, uint32_t(s.positions.size()));
-    if (inserted) {
-      s.positions.push_back(s.positions[base + v]);
-      attributesOf.push_back(a);
-      flattened->splitSources.push_back(v);
-    }
-    return it->second;
-  };
+  flattened->splitSources = layout.splitSources;
 
   const bool mirrored = obj.scale.x * obj.scale.y * obj.scale.z < 0.0f;
-  for (const MeshTriangle& t : mesh.triangles) {
+  for (const Triangle& t : layout.triangles) {
     Triangle w;
-    for (int k = 0; k < 3; ++k) w.v[k] = vertexFor(t.v[k], t.n[k], t.t[k]);
+    for (int k = 0; k < 3; ++k) w.v[k] = base + t.v[k];
     if (mirrored) std::swap(w.v[1], w.v[2]);
     w.material = obj.material ? materialBase : materialBase + t.material;
     s.triangles.push_back(w);
   }
-  placed.vertexCount = uint32_t(s.positions.size()) - base;
-  s.meshInstances.objects.push_back(placed);
 
-  if (withNormals) {
+  if (MeshLayouts::usesNormals(obj)) {
     s.normals.resize(base, OctNormal());  // earlier vertices without normals
-    for (const Attributes& a : attributesOf)
-      s.normals.push_back(a.n >= 0 ? encodeOctNormal(r * (mesh.normals[uint32_t(a.n)] / obj.scale))
+    for (const MeshLayout::Corner& c : layout.corners)
+      s.normals.push_back(c.n >= 0 ? encodeOctNormal(r * (mesh.normals[uint32_t(c.n)] / obj.scale))
                                    : OctNormal());
   }
-  if (withUvs) {
+  if (!mesh.uvs.empty()) {
     s.uvs.resize(base, Vec2());  // earlier vertices without uvs
-    for (const Attributes& a : attributesOf)
-      s.uvs.push_back(a.t >= 0 ? mesh.uvs[uint32_t(a.t)] : Vec2());
+    for (const MeshLayout::Corner& c : layout.corners)
+      s.uvs.push_back(c.t >= 0 ? mesh.uvs[uint32_t(c.t)] : Vec2());
   }
 }
 
@@ -334,8 +353,10 @@ void addInstances(SceneData& s, const SceneDesc& desc, bool geometry) {
     tagInstance(s, number.firstLight + i);
   }
   std::vector<FlattenedObject> flattened(desc.objects.size());
+  MeshLayouts layouts;
+  if (geometry) reserveMeshes(s, desc.objects, layouts);
   for (uint32_t i = 0; i < desc.objects.size(); ++i) {
-    addObject(s, desc.objects[i], geometry, &flattened[i]);
+    addObject(s, desc.objects[i], geometry, layouts, &flattened[i]);
     tagInstance(s, number.firstObject + i);
   }
   // Only where no own BVH will reorder the triangles (which voids the objects' places): an

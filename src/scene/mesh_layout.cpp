@@ -1,0 +1,43 @@
+#include "scene/mesh_layout.h"
+
+#include <unordered_map>
+#include <utility>
+
+namespace candela {
+
+MeshLayout layOutMesh(const MeshDesc& mesh, bool withNormals, bool withUvs) {
+  using Corner = MeshLayout::Corner;
+  MeshLayout layout;
+  layout.triangles.resize(mesh.triangles.size());
+  const uint32_t own = uint32_t(mesh.positions.size());
+  if (withNormals || withUvs) layout.corners.assign(own, Corner{-2, -2});
+  struct SplitHash {
+    size_t operator()(const std::pair<uint32_t, uint64_t>& k) const {
+      return std::hash<uint64_t>()(k.second * 0x9e3779b97f4a7c15ull ^ k.first);
+    }
+  };
+  std::unordered_map<std::pair<uint32_t, uint64_t>, uint32_t, SplitHash> splits;
+  const auto vertexFor = [&](uint32_t v, int32_t n, int32_t t) -> uint32_t {
+    if (!withNormals && !withUvs) return v;
+    const Corner c{withNormals ? n : -1, withUvs ? t : -1};
+    Corner& slot = layout.corners[v];
+    if (slot == Corner{-2, -2}) slot = c;
+    if (slot == c) return v;
+    const auto key = std::make_pair(v, (uint64_t(uint32_t(c.n)) << 32) | uint32_t(c.t));
+    const auto [it, inserted] = splits.try_emplace(key, own + uint32_t(layout.splitSources.size()));
+    if (inserted) {
+      layout.splitSources.push_back(v);
+      layout.corners.push_back(c);
+    }
+    return it->second;
+  };
+  for (size_t i = 0; i < mesh.triangles.size(); ++i) {
+    const MeshTriangle& t = mesh.triangles[i];
+    Triangle& w = layout.triangles[i];
+    for (int k = 0; k < 3; ++k) w.v[k] = vertexFor(t.v[k], t.n[k], t.t[k]);
+    w.material = t.material;
+  }
+  return layout;
+}
+
+}  // namespace candela
