@@ -79,8 +79,8 @@ void reserveMeshes(SceneData& s, const std::vector<ObjectDesc>& objects, MeshLay
 // The vertices are the mesh's, then its splits (scene/mesh_layout.h); a vertex of a face without
 // normals gets the encoding "none" (OctNormal()), meaning "use the face normal", and one without
 // uvs the uv (0, 0). With `geometry` false only the object's materials are appended (see
-// refreshSceneValues); with it, the object's place (s.meshInstances) too, and in *flattened the
-// mesh vertex each split vertex copies.
+// refreshSceneValues); with it, the object's place (s.meshInstances) too, and in *flattened its
+// mesh and layout (which `layouts` keeps).
 void addObject(SceneData& s, const ObjectDesc& obj, bool geometry, MeshLayouts& layouts,
                FlattenedObject* flattened) {
   const MeshDesc& mesh = *obj.mesh;
@@ -108,7 +108,7 @@ void addObject(SceneData& s, const ObjectDesc& obj, bool geometry, MeshLayouts& 
   placed.translation = obj.position;
   s.meshInstances.objects.push_back(placed);
   flattened->mesh = &mesh;
-  flattened->splitSources = layout.splitSources;
+  flattened->layout = &layout;
 
   const bool mirrored = obj.scale.x * obj.scale.y * obj.scale.z < 0.0f;
   for (const Triangle& t : layout.triangles) {
@@ -353,7 +353,7 @@ void addInstances(SceneData& s, const SceneDesc& desc, bool geometry) {
     tagInstance(s, number.firstLight + i);
   }
   std::vector<FlattenedObject> flattened(desc.objects.size());
-  MeshLayouts layouts;
+  MeshLayouts layouts;  // kept until the repeats are found: `flattened` points into it
   if (geometry) reserveMeshes(s, desc.objects, layouts);
   for (uint32_t i = 0; i < desc.objects.size(); ++i) {
     addObject(s, desc.objects[i], geometry, layouts, &flattened[i]);

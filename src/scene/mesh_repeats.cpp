@@ -49,7 +49,8 @@ void findRepeatedMeshes(SceneData& s, const std::vector<FlattenedObject>& object
       // Cheapest first; the triangles differ between repeats of one mesh that mirror it or not.
       if ((objects[f].mesh == objects[i].mesh ||  // one file's mesh, shared
            samePositions(objects[f].mesh->positions, objects[i].mesh->positions)) &&
-          objects[f].splitSources == objects[i].splitSources &&
+          (objects[f].layout == objects[i].layout ||
+           objects[f].layout->splitSources == objects[i].layout->splitSources) &&
           sameTriangles(s, placed[f], placed[i])) {
         group[i] = int32_t(g);
         break;
@@ -71,9 +72,9 @@ void findRepeatedMeshes(SceneData& s, const std::vector<FlattenedObject>& object
     MeshPrototype prototype;
     prototype.firstInstance = firsts[g];
     prototype.instanceCount = sizes[g];
-    prototype.positions.reserve(first.mesh->positions.size() + first.splitSources.size());
+    prototype.positions.reserve(first.layout->vertexCount(*first.mesh));
     prototype.positions.assign(first.mesh->positions.begin(), first.mesh->positions.end());
-    for (uint32_t source : first.splitSources)
+    for (uint32_t source : first.layout->splitSources)
       prototype.positions.push_back(first.mesh->positions[source]);
     prototypeOf[g] = int32_t(s.meshInstances.prototypes.size());
     s.meshInstances.prototypes.push_back(std::move(prototype));

@@ -5,15 +5,17 @@
 #include <vector>
 
 #include "render/scene_data.h"
+#include "scene/mesh_layout.h"
 #include "scene/scene_desc.h"
 
 namespace candela {
 
-// What flattening appended for one object: its mesh, and the mesh vertex that each of its split
-// vertices (those beyond the mesh's own, scene/flatten.cpp's addObject) copies.
+// What flattening appended for one object: its mesh, and how it laid the mesh out
+// (scene/mesh_layout.h: among others the mesh vertex that each split vertex copies), shared by
+// the objects that place the mesh alike.
 struct FlattenedObject {
   const MeshDesc* mesh = nullptr;
-  std::vector<uint32_t> splitSources;
+  const MeshLayout* layout = nullptr;
 };
 
 // Fills s.meshInstances.prototypes and each object's `prototype` (s.meshInstances.objects, one
