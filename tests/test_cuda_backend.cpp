@@ -17,6 +17,9 @@
 
 #if defined(CANDELA_HAS_CUDA)
 #include "backends/cuda/cuda_renderer.h"
+#include "render/aov.h"
+#include "scene/animation.h"
+#include "scene/flow_motion.h"
 #include "scene/frame_scene.h"
 #include "scene/read/scene_loader.h"
 #endif
@@ -36,11 +39,12 @@ TEST(CudaBackend, NotBuilt) { GTEST_SKIP() << "this build has no CUDA backend (n
     if (!cudaBackendAvailable(&reason)) GTEST_SKIP() << "no GPU: " << reason; \
   } while (0)
 
-RenderResult renderCuda(const SceneData& data) {
+RenderResult renderCuda(const SceneData& data, bool aovs = false) {
   CudaRenderer renderer;
   renderer.setScene(data, SceneChange::Structure);
   RenderOptions options;
   options.sceneLabel = "test.json";
+  options.aovs = aovs;
   return renderer.render(options);
 }
 
@@ -261,6 +265,51 @@ TEST(CudaBackend, ResidentSceneKeepsTheTexturePoolWhileTheTexturesAreTheSame) {
       {frame("cuda_checks_b.png", added), SceneChange::Structure},  // a new pool
       {frame("cuda_checks.png", ""), SceneChange::Structure},
   });
+}
+
+// The passes' sums (render/aov.h) on the device against the CPU's, on the scene with everything
+// and an animation that gives the flow pass camera and object motion: the same samples find the
+// same first hits, so the sums agree up to rounding, and the id passes' nearest samples agree
+// exactly but where rounding flips a rare hit.
+TEST(CudaBackend, PassesMatchCpuWithinRounding) {
+  REQUIRE_GPU();
+  std::string json = sceneWithEverything(4);
+  json.replace(json.find(R"({"position": [-1.2)"), 1, R"({"id": "ball", )");
+  json.insert(json.rfind('}'), R"(, "animation": {"frames": 2, "tracks": [
+      {"target": "camera", "property": "position", "keys": [[0, [0, 1.5, 6]], [1, [0.2, 1.4, 6]]]},
+      {"target": "ball", "property": "position", "keys": [[0, [-1.2, 0.5, 0]], [1, [-1, 0.7, 0.1]]]}]})");
+  const SceneDesc desc = parseSceneText(json, "test.json", ".");
+  const SceneDesc now = sceneAtFrame(desc, 0);
+  SceneData data = flattenScene(now);
+  applyFlowMotion(data, flowMotion(now, sceneAtFrame(desc, 1)));
+  RenderOptions options;
+  options.aovs = true;
+  const RenderResult cpu = renderCpu(data.view(), options);
+  const RenderResult gpu = renderCuda(data, true);
+  ASSERT_EQ(cpu.aovs.size(), size_t(48 * 36));
+  ASSERT_EQ(gpu.aovs.size(), cpu.aovs.size());
+  const auto close = [](float a, float b) {
+    return std::fabs(a - b) <= 1e-3f * (std::fabs(a) + 1);
+  };
+  const auto close3 = [&](const Vec3& a, const Vec3& b) {
+    return close(a.x, b.x) && close(a.y, b.y) && close(a.z, b.z);
+  };
+  size_t differing = 0, flowing = 0;
+  for (size_t i = 0; i < cpu.aovs.size(); ++i) {
+    const AovPixel &c = cpu.aovs[i], &g = gpu.aovs[i];
+    ASSERT_EQ(c.samples, 4u);
+    ASSERT_EQ(g.samples, 4u);
+    flowing += c.flowSamples > 0 && (c.flowSum.x != 0 || c.flowSum.y != 0);
+    const bool same = c.hits == g.hits && c.flowSamples == g.flowSamples &&
+                      c.nearestMaterial == g.nearestMaterial &&
+                      c.nearestDistance2 == g.nearestDistance2 &&
+                      close3(c.positionSum, g.positionSum) && close3(c.normalSum, g.normalSum) &&
+                      close3(c.albedoSum, g.albedoSum) && close(c.distanceSum, g.distanceSum) &&
+                      close(c.flowSum.x, g.flowSum.x) && close(c.flowSum.y, g.flowSum.y);
+    differing += !same;
+  }
+  EXPECT_GT(flowing, cpu.aovs.size() / 2);  // the flow pass has motion to agree on
+  EXPECT_LT(differing, cpu.aovs.size() / 100);
 }
 
 #endif
