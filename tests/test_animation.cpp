@@ -379,6 +379,37 @@ TEST(FrameScene, ObjectTransformChangeRefitsAndMeshChangeRebuilds) {
   EXPECT_EQ(frames.change(), SceneChange::Structure);
 }
 
+// A frame whose object's material begins to read the mesh's uvs lays the mesh out anew (its seams
+// now split vertices: scene/mesh_layout.h), so it is a new structure, not new values.
+TEST(FrameScene, AMaterialThatBeginsToReadUvsIsANewStructure) {
+  SceneDesc scene;
+  auto mesh = std::make_shared<MeshDesc>();
+  mesh->positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(1, 1, 0)};
+  mesh->uvs = {Vec2(0, 0), Vec2(1, 0), Vec2(0, 1), Vec2(0.5f, 0.5f)};
+  mesh->triangles = {MeshTriangle{{0, 1, 2}, {-1, -1, -1}, 0},
+                     MeshTriangle{{1, 3, 2}, {-1, -1, -1}, 0}};
+  mesh->triangles[0].t[0] = 0, mesh->triangles[0].t[1] = 1, mesh->triangles[0].t[2] = 2;
+  mesh->triangles[1].t[0] = 3, mesh->triangles[1].t[1] = 0, mesh->triangles[1].t[2] = 2;  // a seam
+  mesh->materials = {Material{}};
+  ObjectDesc object;
+  object.mesh = mesh;
+  object.material = Material{};
+  scene.objects.push_back(object);
+  auto texture = std::make_shared<TextureDesc>();
+  texture->width = 2;
+  texture->height = 1;
+  texture->texels8.assign(8, 100);
+  scene.textures = {texture};
+  FrameScene frames;
+  EXPECT_EQ(frames.prepare(scene).positions.size(), 4u);
+  scene.objects[0].material->colorTexture.index = 0;
+  const SceneData& textured = frames.prepare(scene);
+  EXPECT_EQ(frames.change(), SceneChange::Structure);
+  expectSameScene(textured, flattenScene(scene));
+  EXPECT_EQ(textured.positions.size(), 5u);  // vertex 1 with uv 1 and with uv 3
+  EXPECT_EQ(textured.uvs.size(), 5u);
+}
+
 // Frames that change only values or move primitives keep the texture pool (the GPU backend then
 // uploads it once: render/scene_change.h), and a frame with another texture is a new structure.
 TEST(FrameScene, TexturePoolStaysUntilTheTexturesChange) {

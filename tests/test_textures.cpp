@@ -158,19 +158,29 @@ TEST(TextureHash, FollowsTheContentNotTheFile) {
   EXPECT_NE(hash("a.png", TextureUse::Mask), a);  // the same bytes read as linear values
 }
 
+// A quad of four positions with a seam (vertex 1's second uv) and a crease (its second normal),
+// under the material of `mtl` (an MTL file's text, or "" for the default).
+ObjectDesc seamedQuad(const test::TempDir& dir, TextureLoader& loader, const std::string& mtl) {
+  if (!mtl.empty()) dir.write("q.mtl", mtl);
+  const std::string obj =
+      dir.write("q.obj", std::string(mtl.empty() ? "" : "mtllib q.mtl\nusemtl m\n") +
+                             "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
+                             "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nvt 0.5 0.25 0.7\n"
+                             "vn 0 0 1\nvn 0 1 0\n"
+                             "f 1/1/1 2/2/1 3/3/1\nf 1/5/1 3/3/1 4/4/1\nf 1/1/2 3/3/1 4/4/1\n");
+  ObjectDesc object;
+  object.file = obj;
+  object.mesh = std::make_shared<const MeshDesc>(loadObjFile(obj, "q.obj", loader));
+  return object;
+}
+
 // Corners that pair a position with another uv (a seam) or normal become separate vertices.
 TEST(ObjUv, VtIsReadAndSeamsSplitVertices) {
   test::TempDir dir;
   SceneDesc desc;
   TextureLoader loader(desc.textures, dir.path());
-  const std::string obj = dir.write("q.obj",
-                                    "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
-                                    "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nvt 0.5 0.25 0.7\n"
-                                    "vn 0 0 1\nvn 0 1 0\n"
-                                    "f 1/1/1 2/2/1 3/3/1\nf 1/5/1 3/3/1 4/4/1\nf 1/1/2 3/3/1 4/4/1\n");
-  ObjectDesc object;
-  object.file = obj;
-  object.mesh = std::make_shared<const MeshDesc>(loadObjFile(obj, "q.obj", loader));
+  ASSERT_TRUE(test::writeTestPng(dir.file("two.png"), 2, 1, 3, {40, 160, 230, 250, 120, 20}));
+  const ObjectDesc object = seamedQuad(dir, loader, "newmtl m\nmap_Kd two.png\n");
   const MeshDesc& mesh = *object.mesh;
   ASSERT_EQ(mesh.uvs.size(), 5u);
   EXPECT_EQ(mesh.uvs[4].x, 0.5f);
@@ -199,6 +209,28 @@ TEST(ObjUv, VtIsReadAndSeamsSplitVertices) {
   const Vec2 mid = triangleUv(g, s.triangles[0], 0.5f, 0.25f);  // b0 = 0.25
   EXPECT_FLOAT_EQ(mid.x, 0.75f);  // 0.25 * 0 + 0.5 * 1 + 0.25 * 1
   EXPECT_FLOAT_EQ(mid.y, 0.25f);  // 0.25 * 0 + 0.5 * 0 + 0.25 * 1
+}
+
+// Uvs that no material of the object reads (no texture, no alpha mask) are left out, and split no
+// vertices at seams: only the crease splits one. A textured material set on the object in the
+// scene takes them again.
+TEST(ObjUv, UvsThatNoMaterialReadsSplitNoVertices) {
+  test::TempDir dir;
+  SceneDesc desc;
+  TextureLoader loader(desc.textures, dir.path());
+  desc.objects.push_back(seamedQuad(dir, loader, ""));
+  const SceneData plain = flattenSceneContents(desc);
+  EXPECT_TRUE(plain.uvs.empty());
+  EXPECT_EQ(plain.positions.size(), 5u);  // vertex 1 with vn 1 and with vn 2
+
+  ASSERT_TRUE(test::writeTestPng(dir.file("two.png"), 2, 1, 3, {40, 160, 230, 250, 120, 20}));
+  Material textured;
+  textured.colorTexture.index = loader.load(dir.file("two.png"), TextureUse::Color).index;
+  ASSERT_GE(textured.colorTexture.index, 0);
+  desc.objects[0].material = textured;
+  const SceneData seamed = flattenSceneContents(desc);
+  EXPECT_EQ(seamed.positions.size(), 6u);
+  EXPECT_EQ(seamed.uvs.size(), 6u);
 }
 
 // two.png, a 2x1 texture, and quad.obj, a quad of uvs [0,1]^2 facing +z that spans x in [-1, 1]

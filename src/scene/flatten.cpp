@@ -32,14 +32,11 @@ class MeshLayouts {
  public:
   const MeshLayout& of(const ObjectDesc& obj) {
     const MeshDesc& mesh = *obj.mesh;
-    const Key key{&mesh, usesNormals(obj), !mesh.uvs.empty()};
+    const Key key{&mesh, usesNormals(obj), usesUvs(obj)};
     auto it = layouts_.find(key);
     if (it == layouts_.end())
       it = layouts_.emplace(key, layOutMesh(mesh, key.normals, key.uvs)).first;
     return it->second;
-  }
-  static bool usesNormals(const ObjectDesc& obj) {
-    return obj.smooth && !obj.mesh->normals.empty();
   }
 
  private:
@@ -63,8 +60,8 @@ void reserveMeshes(SceneData& s, const std::vector<ObjectDesc>& objects, MeshLay
     const MeshLayout& layout = layouts.of(obj);
     vertices += layout.vertexCount(*obj.mesh);
     triangles += layout.triangles.size();
-    normals = normals || MeshLayouts::usesNormals(obj);
-    uvs = uvs || !obj.mesh->uvs.empty();
+    normals = normals || usesNormals(obj);
+    uvs = uvs || usesUvs(obj);
   }
   s.positions.reserve(vertices);
   s.triangles.reserve(triangles);
@@ -119,13 +116,13 @@ void addObject(SceneData& s, const ObjectDesc& obj, bool geometry, MeshLayouts& 
     s.triangles.push_back(w);
   }
 
-  if (MeshLayouts::usesNormals(obj)) {
+  if (usesNormals(obj)) {
     s.normals.resize(base, OctNormal());  // earlier vertices without normals
     for (const MeshLayout::Corner& c : layout.corners)
       s.normals.push_back(c.n >= 0 ? encodeOctNormal(r * (mesh.normals[uint32_t(c.n)] / obj.scale))
                                    : OctNormal());
   }
-  if (!mesh.uvs.empty()) {
+  if (usesUvs(obj)) {
     s.uvs.resize(base, Vec2());  // earlier vertices without uvs
     for (const MeshLayout::Corner& c : layout.corners)
       s.uvs.push_back(c.t >= 0 ? mesh.uvs[uint32_t(c.t)] : Vec2());

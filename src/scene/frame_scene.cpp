@@ -10,6 +10,7 @@
 #include "scene/content_hash.h"
 #include "scene/flatten.h"
 #include "scene/key_writer.h"
+#include "scene/mesh_layout.h"
 
 namespace candela {
 namespace {
@@ -43,6 +44,7 @@ void writeKeys(const SceneDesc& desc, std::string* geometry, std::string* struct
     full.add(o.rotation);
     full.add(o.scale);
     both(o.smooth);
+    both(usesUvs(o));  // with the mesh, decides the object's vertices (scene/mesh_layout.h)
     both(o.material.has_value());  // decides how many materials the object appends
     both(o.mesh->materials.size());
     // Objects that name one file share its mesh: it is hashed once.

@@ -1,9 +1,26 @@
 #include "scene/mesh_layout.h"
 
+#include <algorithm>
 #include <unordered_map>
 #include <utility>
 
 namespace candela {
+
+namespace {
+
+bool readsUvs(const Material& m) {
+  return m.colorTexture.index >= 0 || m.emissionTexture.index >= 0 || m.alpha.texture.index >= 0;
+}
+
+}  // namespace
+
+bool usesNormals(const ObjectDesc& obj) { return obj.smooth && !obj.mesh->normals.empty(); }
+
+bool usesUvs(const ObjectDesc& obj) {
+  if (obj.mesh->uvs.empty()) return false;
+  if (obj.material) return readsUvs(*obj.material);
+  return std::any_of(obj.mesh->materials.begin(), obj.mesh->materials.end(), readsUvs);
+}
 
 MeshLayout layOutMesh(const MeshDesc& mesh, bool withNormals, bool withUvs) {
   using Corner = MeshLayout::Corner;

@@ -1,8 +1,8 @@
 // How flattening lays out a mesh's vertices: the renderer keeps one normal and one uv per vertex
 // (both run parallel to positions), so a position that the file pairs with several normals (a
 // crease) or several uvs (a texture seam) is split into one vertex per combination. The layout
-// depends only on the mesh and on whether its normals and uvs are used, so the objects that place
-// one mesh share it (scene/flatten.cpp), and a scene of many placed meshes knows its arrays'
+// depends only on the mesh and on whether an object uses its normals and uvs, so the objects that
+// place one mesh share it (scene/flatten.cpp), and a scene of many placed meshes knows its arrays'
 // sizes before it writes them.
 #pragma once
 
@@ -34,5 +34,12 @@ struct MeshLayout {
 };
 
 MeshLayout layOutMesh(const MeshDesc& mesh, bool withNormals, bool withUvs);
+
+// Whether an object uses its mesh's normals: it is smooth and the file has them.
+bool usesNormals(const ObjectDesc& obj);
+// Whether an object uses its mesh's uvs: the file has them and one of the object's materials reads
+// them (a texture or an alpha mask's). Uvs that nothing reads would split vertices at every seam
+// for nothing (Sponza's file: 69,013 vertices for 39,999 positions).
+bool usesUvs(const ObjectDesc& obj);
 
 }  // namespace candela
