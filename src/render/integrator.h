@@ -18,16 +18,15 @@
 #include "geometry/surface.h"
 #include "render/aov.h"
 #include "render/bsdf.h"
+#include "render/light_path.h"
 #include "render/light_sample.h"
 #include "render/light_selection.h"
 #include "render/ray_counters.h"
+#include "render/shadow_query.h"
 #include "render/surface_color.h"
 
 namespace candela {
 
-// Shadow rays stop this fraction short of their target (pbrt's ShadowEpsilon): relative, so it
-// holds at any scene scale.
-constexpr float kShadowEpsilon = 1e-4f;
 // Russian roulette starts after this many interactions (Mitsuba's default; docs/performance.md
 // has what earlier starts cost).
 constexpr uint32_t kRouletteDepth = 5;
@@ -39,22 +38,16 @@ CANDELA_HDI_ALWAYS Ray spawnRay(const SurfacePoint& sp, const Vec3& wi) {
   return r;
 }
 
-// The shadow ray that next-event estimation asks for at an interaction, and the radiance it adds
-// to the path when nothing but primitive skipPrim blocks it. The integrator leaves tracing it to
-// its caller, so that a caller holding several paths can trace theirs together.
-struct ShadowQuery {
-  Ray ray;
-  uint32_t skipPrim = 0xffffffffu;
-  Vec3 contribution;  // the path's throughput times the light's weighted share
-  bool active = false;
-};
-
-// Direct light at a point with a smooth BSDF lobe from one light, as the shadow ray `*shadow`
-// whose contribution is throughput times the light's share, weighted by the probability
+// Direct light at a point with a smooth BSDF lobe from light `index`, as the shadow ray
+// `*shadow` whose contribution is throughput times the light's share, weighted by the probability
 // selectPmf of sampling that light; no query where the light shows the point nothing.
-CANDELA_HDI void sampleOneLight(const SceneView& scene, const Light& light, float selectPmf,
+// `arrivalPdf` is the density in area measure with which the path's last BSDF sample found this
+// point where a light vertex could have been connected to instead (0 where not): a point light's
+// share is then weighted against that connection (render/light_path.h).
+CANDELA_HDI void sampleOneLight(const SceneView& scene, uint32_t index, float selectPmf,
                                 const Bsdf& bsdf, const SurfacePoint& sp, float u1, float u2,
-                                const Vec3& throughput, ShadowQuery* shadow) {
+                                const Vec3& throughput, float arrivalPdf, ShadowQuery* shadow) {
+  const Light& light = scene.lights[index];
   LightSample ls;
   if (!sampleLight(scene, light, sp.p, u1, u2, &ls)) return;
   float bsdfPdf;
@@ -68,7 +61,11 @@ CANDELA_HDI void sampleOneLight(const SceneView& scene, const Light& light, floa
   }
   shadow->skipPrim = lightPrimitive(scene, light);
   const float lightPdf = selectPmf * ls.pdf;
-  const float weight = ls.isDelta ? 1.0f : powerHeuristic(lightPdf, bsdfPdf);
+  const float weight =
+      !ls.isDelta ? powerHeuristic(lightPdf, bsdfPdf)
+      : arrivalPdf > 0.0f
+          ? powerHeuristic(arrivalPdf * selectPmf, lightVertexPdf(scene, index, sp.p, sp.ng))
+          : 1.0f;
   shadow->contribution = throughput * (f * ls.radiance * (weight / lightPdf));
   shadow->active = true;
 }
@@ -82,17 +79,18 @@ CANDELA_HDI void drawLightNumbers(SampleStream& rng, const Light& light, float* 
 
 // Direct light at a point with a smooth BSDF lobe, whose reflecting hemisphere is around
 // `hemisphere` (reflectingHemisphere: zero where the surface also transmits), as a shadow query
-// (sampleOneLight): from the scene's lone point light (render/light.h, isLonePointLight), else
-// from one light picked by its importance here (render/light_selection.h).
+// (sampleOneLight, which `arrivalPdf` is passed to): from the scene's lone point light
+// (render/light.h, isLonePointLight), else from one light picked by its importance here
+// (render/light_selection.h).
 CANDELA_HDI void estimateDirect(const SceneView& scene, const Bsdf& bsdf, const Vec3& hemisphere,
-                                const SurfacePoint& sp, const Vec3& throughput, SampleStream& rng,
-                                ShadowQuery* shadow) {
+                                const SurfacePoint& sp, const Vec3& throughput, float arrivalPdf,
+                                SampleStream& rng, ShadowQuery* shadow) {
   // One dimension for the lone point light, or two for a picked one (the pick and its light's
   // sample), whatever the geometry, so the stream's layout never depends on it.
   float u1 = 0.0f, u2 = 0.0f;
   if (scene.lonePointLight) {
     drawLightNumbers(rng, scene.lights[0], &u1, &u2);
-    sampleOneLight(scene, scene.lights[0], 1.0f, bsdf, sp, u1, u2, throughput, shadow);
+    sampleOneLight(scene, 0, 1.0f, bsdf, sp, u1, u2, throughput, arrivalPdf, shadow);
     return;
   }
   const float uLight = rng.next1D();
@@ -103,7 +101,8 @@ CANDELA_HDI void estimateDirect(const SceneView& scene, const Bsdf& bsdf, const 
     return;
   }
   drawLightNumbers(rng, scene.lights[index], &u1, &u2);
-  sampleOneLight(scene, scene.lights[index], selectPmf, bsdf, sp, u1, u2, throughput, shadow);
+  sampleOneLight(scene, uint32_t(index), selectPmf, bsdf, sp, u1, u2, throughput, arrivalPdf,
+                 shadow);
 }
 
 // A path between its interactions: what it has gathered and what it carries to the next.
@@ -118,6 +117,10 @@ struct PathState {
   // without the 1 / eta^2 radiance scaling, which says nothing about the path's worth.
   float etaScale = 1.0f;
   Vec3 bouncePoint = Vec3(0.0f), bounceHemisphere = Vec3(0.0f);  // the last bounce's
+  // The sample's light vertex (render/light_path.h), and whether the last interaction may be
+  // connected to one, so that the next weighs its next-event estimation against that.
+  LightVertex lightVertex;
+  bool connectable = false;
 
   PathState() = default;
   CANDELA_HDI PathState(const SceneView& scene, const Ray& cameraRay)
@@ -125,15 +128,16 @@ struct PathState {
 };
 
 // Interaction path->depth, where path->ray found `hit` (`found` false: it left the scene): adds
-// what it sees there to path->radiance, leaves next-event estimation's shadow ray in *shadow
-// (inactive when there is none) for the caller to trace, and scatters path->ray onwards. False
-// when the path ends here (its shadow query still counts). With kAovs, `first` (zeroed by the
+// what it sees there to path->radiance, leaves next-event estimation's shadow ray in *shadow and
+// the connection to the sample's light vertex in *connect (each inactive when there is none) for
+// the caller to trace, and scatters path->ray onwards. False when the path ends here (its shadow
+// queries still count). With kAovs, `first` (zeroed by the
 // caller) also receives the sample's first hit and albedo (render/aov.h); that work is compiled
 // only into the kAovs instance, and it draws no random numbers, so the radiance is the same.
 template <bool kAovs>
 CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool found,
                                  const Hit& hit, SampleStream& rng, RayCounters& counters,
-                                 FirstHit* first, ShadowQuery* shadow) {
+                                 FirstHit* first, ShadowQuery* shadow, ShadowQuery* connect) {
   PathState& st = *path;
   const uint32_t depth = st.depth++;
   if (!found) {
@@ -200,11 +204,24 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
     if (albedoHere) first->albedo = aovAlbedo(m, color);
   const Bsdf bsdf = makeBsdf(m, color, wo, sp.ng, sp.ns);
   const Vec3 hemisphere = reflectingHemisphere(bsdf);
-  if (hasSmoothLobe(m)) {
-    estimateDirect(scene, bsdf, hemisphere, sp, st.throughput, rng, shadow);
+  const bool smooth = hasSmoothLobe(m);
+  if (smooth) {
+    float arrivalPdf = 0.0f;
+    if (st.connectable && !st.specularBounce) {
+      const Vec3 back = st.bouncePoint - sp.p;
+      const float dist2 = dot(back, back);
+      arrivalPdf = st.bsdfPdf * fabsf(dot(sp.ng, back)) / (dist2 * sqrtf(dist2));
+    }
+    estimateDirect(scene, bsdf, hemisphere, sp, st.throughput, arrivalPdf, rng, shadow);
     if (shadow->active) ++counters.shadow;
     // "direct": the scattered ray below only gathers emission; nothing scatters after it.
     if (scene.settings.integrator == IntegratorType::Direct) st.maxDepth = depth;
+  }
+  // A light vertex connected to here is the path's interaction depth + 1.
+  st.connectable = smooth && scene.lightPathLights > 0 && depth < st.maxDepth;
+  if (st.connectable && st.lightVertex.valid) {
+    connectLightVertex(scene, st.lightVertex, bsdf, sp, st.throughput, connect);
+    if (connect->active) ++counters.shadow;
   }
 
   if (depth == st.maxDepth && !scene.emissionReachable) return false;
@@ -244,9 +261,12 @@ CANDELA_HDI Vec3 finishPath(const SceneView& scene, const Tracer& tracer, PathSt
   for (;;) {
     Hit hit;
     const bool found = tracer.closest(path->ray, &hit);
-    ShadowQuery shadow;
-    const bool goesOn = interact<kAovs>(scene, path, found, hit, rng, counters, first, &shadow);
+    ShadowQuery shadow, connect;
+    const bool goesOn =
+        interact<kAovs>(scene, path, found, hit, rng, counters, first, &shadow, &connect);
     if (shadow.active) resolveShadow(shadow, tracer.occluded(shadow.ray, shadow.skipPrim), path);
+    if (connect.active)
+      resolveShadow(connect, tracer.occluded(connect.ray, connect.skipPrim), path);
     if (!goesOn) return path->radiance;
   }
 }
@@ -258,6 +278,7 @@ CANDELA_HDI Vec3 traceRadiance(const SceneView& scene, const Tracer& tracer, con
                                SampleStream& rng, RayCounters& counters,
                                FirstHit* first = nullptr) {
   PathState path(scene, ray);
+  if (scene.lightPathLights > 0) traceLightVertex(scene, tracer, rng, counters, &path.lightVertex);
   return finishPath<kAovs>(scene, tracer, &path, rng, counters, first);
 }
 

@@ -74,8 +74,13 @@ CANDELA_HDI void renderPacket(const SceneView& scene, const Tracer& tracer, uint
   ShadowQuery shadows[kWidth];
   for (uint32_t i = 0; i < n; ++i) {
     paths[i] = PathState(scene, rays[i]);
+    if (scene.lightPathLights > 0)
+      traceLightVertex(scene, tracer, rng[i], counters, &paths[i].lightVertex);
+    ShadowQuery connect;
     goesOn[i] = interact<kAovs>(scene, &paths[i], hits[i].valid(), hits[i], rng[i], counters,
-                                &first[kAovs ? i : 0], &shadows[i]);
+                                &first[kAovs ? i : 0], &shadows[i], &connect);
+    if (connect.active)
+      resolveShadow(connect, tracer.occluded(connect.ray, connect.skipPrim), &paths[i]);
     if (!shadows[i].active) continue;
     shadowRays[shadowCount] = shadows[i].ray;
     skipPrims[shadowCount] = shadows[i].skipPrim;

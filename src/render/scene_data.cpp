@@ -16,6 +16,9 @@ SceneView SceneData::view() const {
 #undef CANDELA_VIEW_OF
   v.firstTriangleLight = firstTriangleLight;
   v.lonePointLight = lonePointLight;
+  v.lightPathLights = settings.integrator == IntegratorType::Path && settings.maxDepth >= 2
+                          ? pointLightsWithPower
+                          : 0;
   v.environmentShare = environmentShare;
   v.environment = environment;
   v.emissionReachable = !isBlack(environment.radiance);

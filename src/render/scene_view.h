@@ -50,6 +50,9 @@ struct SceneView : GeometryView {
   // Whether the scene's one light is a point light, which next-event estimation samples without
   // a pick (render/light.h, isLonePointLight).
   bool lonePointLight = false;
+  // How many point lights start light subpaths (render/light_path.h): those with power, where
+  // the integrator is "path" and a path may have two interactions; 0 for none.
+  uint32_t lightPathLights = 0;
   // The share of picks that go to the environment light; the light tree has the rest.
   float environmentShare = 0.0f;
   Environment environment;

@@ -224,6 +224,31 @@ PreviousLights takeLights(SceneData& s) {
   return previous;
 }
 
+// The chances that a sample's light subpath starts from each point light, by the sum of its RGB
+// power (as the light tree weighs lights), and their running sums (render/light.h).
+static void setLightPathPicks(SceneData& s) {
+  double total = 0;
+  for (const Light& l : s.lights)
+    if (l.type == LightType::Point) total += std::max(0.0, componentSum(l.power));
+  s.pointLightsWithPower = 0;
+  double sum = 0;
+  uint32_t last = 0;
+  for (uint32_t i = 0; i < s.lights.size(); ++i) {
+    Light& l = s.lights[i];
+    const double power = l.type == LightType::Point ? std::max(0.0, componentSum(l.power)) : 0.0;
+    l.pathPmf = total > 0 ? float(power / total) : 0.0f;
+    sum += power;
+    l.pathCdf = total > 0 ? float(sum / total) : 0.0f;
+    if (l.pathPmf > 0.0f) {
+      ++s.pointLightsWithPower;
+      last = i;
+    }
+  }
+  // The last pick must hold every u < 1, whatever the rounding of the sums.
+  for (uint32_t i = last; i < s.lights.size() && s.pointLightsWithPower > 0; ++i)
+    s.lights[i].pathCdf = 1.0f;
+}
+
 void addEmitterLights(SceneData& s, PreviousLights* previous) {
   for (uint32_t i = 0; i < s.spheres.size(); ++i) {
     Sphere& sphere = s.spheres[i];
@@ -254,6 +279,7 @@ void addEmitterLights(SceneData& s, PreviousLights* previous) {
     }
   }
   s.lonePointLight = isLonePointLight(s.lights.data(), s.lights.size());
+  setLightPathPicks(s);
   s.lightTree.clear();
   s.lightTreeHash = 0;
   s.environmentShare = 0.0f;
