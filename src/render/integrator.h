@@ -7,7 +7,8 @@
 // Light reaching interaction k <= max_depth counts, by a shadow ray (next-event estimation) or
 // by the ray scattered from k hitting an emitter or the environment; nothing beyond max_depth
 // scatters. Emitting spheres and triangles are reached both ways and combined with the power
-// heuristic, and so is the environment; point lights are reached only by shadow rays.
+// heuristic, and so is the environment; point lights are reached by shadow rays and by
+// connections to the sample's light vertex (render/light_path.h), combined likewise.
 #pragma once
 
 #include <cmath>
@@ -131,9 +132,9 @@ struct PathState {
 // what it sees there to path->radiance, leaves next-event estimation's shadow ray in *shadow and
 // the connection to the sample's light vertex in *connect (each inactive when there is none) for
 // the caller to trace, and scatters path->ray onwards. False when the path ends here (its shadow
-// queries still count). With kAovs, `first` (zeroed by the
-// caller) also receives the sample's first hit and albedo (render/aov.h); that work is compiled
-// only into the kAovs instance, and it draws no random numbers, so the radiance is the same.
+// queries still count). With kAovs, `first` (zeroed by the caller) also receives the sample's
+// first hit and albedo (render/aov.h); that work is compiled only into the kAovs instance, and it
+// draws no random numbers, so the radiance is the same.
 template <bool kAovs>
 CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool found,
                                  const Hit& hit, SampleStream& rng, RayCounters& counters,

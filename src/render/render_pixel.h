@@ -47,7 +47,8 @@ constexpr uint32_t kShadowPacketsUpToLights = 4;
 
 // Samples [s, s + n) of a pixel, n <= Tracer::kPacketWidth, their paths in step up to their
 // first interaction: the camera rays traced as one packet, then the shadow rays of that
-// interaction (as a packet where the scene has few lights); each path then goes on alone. The same
+// interaction (as a packet where the scene has few lights; the light vertices' rays and
+// connections one by one, as they part); each path then goes on alone. The same
 // arithmetic as traceRadiance path by path, so the same radiance but where a packet's hit differs
 // from a lone ray's by rounding.
 template <bool kAovs, class Tracer>
