@@ -9,8 +9,8 @@ namespace candela {
 
 struct RayCounters {
   uint64_t camera = 0;  // primary rays from the camera
-  uint64_t bounce = 0;  // rays scattered at surfaces
-  uint64_t shadow = 0;  // visibility rays towards lights
+  uint64_t bounce = 0;  // rays scattered at surfaces, and those leaving point lights
+  uint64_t shadow = 0;  // visibility rays towards lights and light vertices (render/light_path.h)
 
   CANDELA_HDI uint64_t total() const { return camera + bounce + shadow; }
   CANDELA_HDI RayCounters& operator+=(const RayCounters& o) {

@@ -211,6 +211,36 @@ uint64_t lightTreeHash(const std::vector<LightBounds>& bounds) {
   return h;
 }
 
+// The chances that a sample's light subpath starts from each point light, by the sum of its RGB
+// power (as the light tree weighs lights), and their running sums (render/light.h).
+void setLightPathPicks(SceneData& s) {
+  const auto pathPower = [](const Light& l) {
+    return l.type == LightType::Point ? std::max(0.0, componentSum(l.power)) : 0.0;
+  };
+  double total = 0;
+  for (const Light& l : s.lights) total += pathPower(l);
+  s.pointLightsWithPower = 0;
+  if (!(total > 0)) {
+    for (Light& l : s.lights) l.pathPmf = l.pathCdf = 0.0f;
+    return;
+  }
+  double sum = 0;
+  uint32_t last = 0;
+  for (uint32_t i = 0; i < s.lights.size(); ++i) {
+    Light& l = s.lights[i];
+    const double power = pathPower(l);
+    sum += power;
+    l.pathPmf = float(power / total);
+    l.pathCdf = float(sum / total);
+    if (l.pathPmf > 0.0f) {
+      ++s.pointLightsWithPower;
+      last = i;
+    }
+  }
+  // The last pick must hold every u < 1, whatever the rounding of the sums.
+  for (uint32_t i = last; i < s.lights.size(); ++i) s.lights[i].pathCdf = 1.0f;
+}
+
 }  // namespace
 
 PreviousLights takeLights(SceneData& s) {
@@ -222,31 +252,6 @@ PreviousLights takeLights(SceneData& s) {
   s.lightTree.clear();  // moved-from: left valid but unspecified by the standard
   s.lightTreeHash = 0;
   return previous;
-}
-
-// The chances that a sample's light subpath starts from each point light, by the sum of its RGB
-// power (as the light tree weighs lights), and their running sums (render/light.h).
-static void setLightPathPicks(SceneData& s) {
-  double total = 0;
-  for (const Light& l : s.lights)
-    if (l.type == LightType::Point) total += std::max(0.0, componentSum(l.power));
-  s.pointLightsWithPower = 0;
-  double sum = 0;
-  uint32_t last = 0;
-  for (uint32_t i = 0; i < s.lights.size(); ++i) {
-    Light& l = s.lights[i];
-    const double power = l.type == LightType::Point ? std::max(0.0, componentSum(l.power)) : 0.0;
-    l.pathPmf = total > 0 ? float(power / total) : 0.0f;
-    sum += power;
-    l.pathCdf = total > 0 ? float(sum / total) : 0.0f;
-    if (l.pathPmf > 0.0f) {
-      ++s.pointLightsWithPower;
-      last = i;
-    }
-  }
-  // The last pick must hold every u < 1, whatever the rounding of the sums.
-  for (uint32_t i = last; i < s.lights.size() && s.pointLightsWithPower > 0; ++i)
-    s.lights[i].pathCdf = 1.0f;
 }
 
 void addEmitterLights(SceneData& s, PreviousLights* previous) {
