@@ -188,6 +188,75 @@ def test_noise_bound_is_attained(br):
     assert relative_error(fit, c * (1 + delta)) < 1e-12
 
 
+def own_reference_tte(c_mi, c_ca, bias, ref_spp, levels, sps_mi, sps_ca):
+    """A run in which candela has its own reference: its points against that reference
+    c (1/spp + 1/ref_spp), against Mitsuba's reference a + bias + c/spp, and the two references
+    `bias` apart beyond their noise."""
+    a = c_mi / ref_spp
+    tte = make_tte([(s, c_mi * (1 / s + 1 / ref_spp)) for s in levels],
+                   [(s, c_ca * (1 / s + 1 / ref_spp)) for s in levels], sps_mi, sps_ca)
+    for p in tte['candela']['points']:
+        p['relmse_against_mitsuba'] = a + bias + c_ca / p['spp']
+    for who in ('candela', 'mitsuba'):
+        for p in tte[who]['points']:  # the schema's other keys, which the fit does not read
+            p.update(relmse_blocks=p['relmse'] / 64, mean_ratio=[1.0, 1.0, 1.0], render_seconds=None)
+    tte['candela_reference'] = {'spp': ref_spp, 'seconds': 1.0}
+    tte['converged_difference'] = {'relmse': bias + (c_ca + c_mi) / ref_spp}
+    return tte
+
+
+@pytest.mark.parametrize('bias', [0.0, 4e-4, 2e-3])
+def test_own_reference_separates_noise_from_a_converged_difference(br, bias):
+    """Against its own reference candela's c is its noise alone, whatever the converged images'
+    difference; that difference is reported as the excess, and judged against Mitsuba's image
+    the ratio grows with it (and equals the own-reference ratio where there is none)."""
+    c_mi, c_ca, ref_spp, levels, sps_mi, sps_ca = 0.62, 0.06, 512, [4, 16, 64], 0.044, 0.17
+    tte = own_reference_tte(c_mi, c_ca, bias, ref_spp, levels, sps_mi, sps_ca)
+    br.finish_time_to_error(tte, ref_spp)
+    assert relative_error(tte['candela']['c'], c_ca) < 1e-9
+    assert relative_error(tte['ratio'], (c_ca * sps_ca) / (c_mi * sps_mi)) < 1e-9
+    diff = tte['converged_difference']
+    assert abs(diff['excess'] - bias) < 1e-12
+    assert relative_error(diff['noise'], (c_ca + c_mi) / ref_spp) < 1e-9
+    foreign = tte['ratio_against_mitsuba_reference']
+    if bias == 0.0:
+        assert relative_error(foreign, tte['ratio']) < 1e-9
+    else:
+        # The difference does not fall with spp, so the fit takes it for a larger c.
+        inflated = br.fit_through_origin([1 / s for s in levels], [c_ca / s + bias for s in levels])
+        assert relative_error(foreign, tte['ratio'] * inflated / c_ca) < 1e-9
+        assert foreign > tte['ratio']
+
+
+def test_own_reference_run_validates_and_shows_both_ratios(br, committed):
+    res = copy.deepcopy(committed)
+    sc = res['scenes']['cat']
+    old = sc['time_to_error']
+    tte = own_reference_tte(0.62, 0.06, 2e-3, res['ref_spp'], res['levels'],
+                            old['mitsuba']['seconds_per_spp'], old['candela']['seconds_per_spp'])
+    tte['reference'] = old['reference']
+    br.finish_time_to_error(tte, res['ref_spp'])
+    sc['time_to_error'] = tte
+    br.validate_results(res)
+    lines = br.markdown(res).splitlines()
+    header = next(line for line in lines if line.startswith('| scene | spp | candela Msamples/s'))
+    def row(scene):
+        spp = res['scenes'][scene]['mitsuba']['spp']
+        return [c.strip() for c in next(line for line in lines
+                                        if line.startswith(f'| {scene} | {spp} |')).split('|')]
+    cells = row('cat')
+    names = [c.strip() for c in header.split('|')]
+    assert cells[names.index('time ratio')] == f"**{br.fmt(tte['ratio'])}**"
+    assert (cells[names.index("time ratio, against Mitsuba's image")]
+            == br.fmt(tte['ratio_against_mitsuba_reference']))
+    assert cells[names.index('converged difference (relMSE)')] == br.fmt(2e-3)
+    # An older run measured against Mitsuba's image only: that column repeats its one ratio.
+    old_row = row('default')
+    assert old_row[names.index("time ratio, against Mitsuba's image")] == br.fmt(
+        res['scenes']['default']['time_to_error']['ratio'])
+    assert old_row[names.index('converged difference (relMSE)')] == '–'
+
+
 def test_error_not_falling_with_spp_fails_the_fit(br):
     """candela's relMSE below the reference's floor (no 1/spp decay left): c <= 0, an error."""
     c_mi, ref_spp, levels = 0.7, 128, [4, 16]
@@ -423,6 +492,8 @@ def test_engines_are_rows_of_their_own_and_the_own_bvh_time_ratio_follows_sample
     assert '| cornell | cpu, embree |' in text and '| cornell | cpu, bvh |' in text
     assert 'time ratio, own BVH |' in text
     ratio = sc['time_to_error']['ratio']
-    row = next(line for line in text.splitlines()
-               if line.startswith(f"| cornell | {sc['cpu']['spp']} |"))
-    assert row.rstrip(' |').endswith(br.fmt(ratio * 2))
+    lines = text.splitlines()
+    header = next(line for line in lines if 'time ratio, own BVH |' in line)
+    row = next(line for line in lines if line.startswith(f"| cornell | {sc['cpu']['spp']} |"))
+    column = [c.strip() for c in header.split('|')].index('time ratio, own BVH')
+    assert [c.strip() for c in row.split('|')][column] == br.fmt(ratio * 2)
