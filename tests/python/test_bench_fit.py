@@ -278,8 +278,17 @@ def test_refit_reproduces_committed_figures(br, path):
             continue
         tte = {who: {'points': copy.deepcopy(stored[who]['points']),
                      'seconds_per_spp': stored[who]['seconds_per_spp']} for who in ('candela', 'mitsuba')}
+        if 'candela_reference' in stored:  # the measured inputs of a run with candela's reference
+            tte['candela_reference'] = stored['candela_reference']
+            tte['converged_difference'] = {'relmse': stored['converged_difference']['relmse']}
         br.finish_time_to_error(tte, res['ref_spp'])
-        for key in ('floor_a', 'target_relmse', 'ratio'):
+        keys = ['floor_a', 'target_relmse', 'ratio']
+        if 'candela_reference' in stored:
+            keys.append('ratio_against_mitsuba_reference')
+            for key in ('noise', 'excess'):
+                assert tte['converged_difference'][key] == pytest.approx(
+                    stored['converged_difference'][key], rel=1e-12)
+        for key in keys:
             assert tte[key] == pytest.approx(stored[key], rel=1e-12)
         for who in ('candela', 'mitsuba'):
             for key in ('c', 'seconds'):
