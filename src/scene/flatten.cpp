@@ -60,8 +60,8 @@ void reserveMeshes(SceneData& s, const std::vector<ObjectDesc>& objects, MeshLay
     const MeshLayout& layout = layouts.of(obj);
     vertices += layout.vertexCount(*obj.mesh);
     triangles += layout.triangles.size();
-    normals = normals || usesNormals(obj);
-    uvs = uvs || usesUvs(obj);
+    normals = normals || layout.withNormals;
+    uvs = uvs || layout.withUvs;
   }
   s.positions.reserve(vertices);
   s.triangles.reserve(triangles);
@@ -116,13 +116,13 @@ void addObject(SceneData& s, const ObjectDesc& obj, bool geometry, MeshLayouts& 
     s.triangles.push_back(w);
   }
 
-  if (usesNormals(obj)) {
+  if (layout.withNormals) {
     s.normals.resize(base, OctNormal());  // earlier vertices without normals
     for (const MeshLayout::Corner& c : layout.corners)
       s.normals.push_back(c.n >= 0 ? encodeOctNormal(r * (mesh.normals[uint32_t(c.n)] / obj.scale))
                                    : OctNormal());
   }
-  if (usesUvs(obj)) {
+  if (layout.withUvs) {
     s.uvs.resize(base, Vec2());  // earlier vertices without uvs
     for (const MeshLayout::Corner& c : layout.corners)
       s.uvs.push_back(c.t >= 0 ? mesh.uvs[uint32_t(c.t)] : Vec2());

@@ -25,6 +25,8 @@ bool usesUvs(const ObjectDesc& obj) {
 MeshLayout layOutMesh(const MeshDesc& mesh, bool withNormals, bool withUvs) {
   using Corner = MeshLayout::Corner;
   MeshLayout layout;
+  layout.withNormals = withNormals;
+  layout.withUvs = withUvs;
   layout.triangles.resize(mesh.triangles.size());
   const uint32_t own = uint32_t(mesh.positions.size());
   if (withNormals || withUvs) layout.corners.assign(own, Corner{-2, -2});

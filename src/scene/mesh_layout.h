@@ -27,6 +27,8 @@ struct MeshLayout {
   std::vector<Corner> corners;
   // The mesh's triangles over the emitted vertices, numbered from 0, each with its mesh material.
   std::vector<Triangle> triangles;
+  // Whether the vertices carry the file's normals and uvs (layOutMesh's choices).
+  bool withNormals = false, withUvs = false;
 
   uint32_t vertexCount(const MeshDesc& mesh) const {
     return uint32_t(mesh.positions.size() + splitSources.size());
