@@ -117,6 +117,7 @@ TEST_P(CliStatsEngineTest, WritesEveryKeyWithSaneNumbers) {
                           "max_depth",
                           "integrator",
                           "antialiasing",
+                          "light_paths",
                           "use_bvh",
                           "engine",
                           "load_seconds",
@@ -148,6 +149,11 @@ TEST_P(CliStatsEngineTest, WritesEveryKeyWithSaneNumbers) {
   EXPECT_EQ(s["integrator"], "path");
   EXPECT_EQ(s["antialiasing"], true);
   EXPECT_EQ(s["use_bvh"], true);
+  // Too small a render for the light-path pilot (backends/light_path_pilot.h): they stay on.
+  EXPECT_EQ(s["light_paths"]["setting"], "auto");
+  EXPECT_EQ(s["light_paths"]["on"], true);
+  EXPECT_EQ(s["light_paths"]["piloted"], false);
+  EXPECT_EQ(s["light_paths"]["pilot_rays"], 0);
   EXPECT_EQ(s["triangles"], 2);
   EXPECT_EQ(s["spheres"], 1);
   EXPECT_EQ(s["engine"], engine);
@@ -204,6 +210,29 @@ TEST_F(CliStatsTest, NoBvhIsReportedAndTracesTheSameRays) {
   EXPECT_EQ(b["use_bvh"], false);
   // Same closest hits either way, so the same paths and the same ray counts.
   EXPECT_EQ(a["rays"], b["rays"]);
+}
+
+// Large enough a render for the light-path pilot, of a scene where it turns them off (a lamp high
+// above an open floor: tests/test_light_path_pilot.cpp).
+TEST_F(CliStatsTest, APilotedRenderReportsItsChoiceAndCountsItsTime) {
+  std::ofstream(dir_ / "open.json") << R"({
+    "camera": {"width": 256, "height": 256, "fov": 50, "position": [0, 3, 8],
+               "look_at": [0, 0.8, 0], "spp": 16},
+    "render": {"max_depth": 4, "seed": 1},
+    "spheres": [{"position": [0, -1000, 0], "radius": 1000, "color": 0.6},
+                {"position": [0, 1, 0], "radius": 1, "color": [0.7, 0.5, 0.3]}],
+    "lights": [{"position": [0, 50, 0], "intensity": 4000}]})";
+  ASSERT_EQ(run("open.json -o out.pfm -q --stats stats.json"), 0) << stderrText();
+  const json s = readJson("stats.json");
+  const json& lp = s["light_paths"];
+  EXPECT_EQ(lp["setting"], "auto");
+  EXPECT_EQ(lp["piloted"], true);
+  EXPECT_EQ(lp["on"], false);
+  EXPECT_GT(lp["pilot_with"].get<double>(), lp["pilot_without"].get<double>());
+  EXPECT_GT(lp["pilot_rays"].get<uint64_t>(), 4u * 16384);  // four images' camera rays, and more
+  EXPECT_GT(lp["pilot_seconds"].get<double>(), 0);
+  EXPECT_GE(s["render_seconds"].get<double>(), lp["pilot_seconds"].get<double>());
+  EXPECT_EQ(s["rays"]["camera"], 256 * 256 * 16);  // the image's rays alone
 }
 
 // A scene path that is not UTF-8 (Linux allows any bytes) still gives valid JSON: the bad byte

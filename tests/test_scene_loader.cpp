@@ -388,6 +388,9 @@ TEST_F(SceneLoader, InvalidRenderSettings) {
   EXPECT_EQ(errorWith(R"("render": {"integrator": "pth"})"),
             "s.json: render.integrator: expected \"path\" or \"direct\", got a string \"pth\", did "
             "you mean \"path\"?");
+  EXPECT_EQ(errorWith(R"("render": {"light_paths": "sometimes"})"),
+            "s.json: render.light_paths: expected one of \"auto\", \"on\", \"off\", got a "
+            "string \"sometimes\"");
   EXPECT_EQ(errorWith(R"("render": {"seed": -1})"),
             "s.json: render.seed: expected a non-negative integer, got -1");
   EXPECT_EQ(errorWith(R"("render": {"gamma": "sRGB"})"),
@@ -449,6 +452,7 @@ TEST_F(SceneLoader, DefaultsFollowTheContract) {
   EXPECT_EQ(scene.render.maxDepth, 8u);
   EXPECT_EQ(scene.render.integrator, IntegratorType::Path);
   EXPECT_TRUE(scene.render.antialiasing);
+  EXPECT_EQ(scene.render.lightPaths, LightPaths::Auto);
   EXPECT_EQ(scene.render.seed, 0u);
   EXPECT_EQ(scene.output.curve, GammaCurve::Power);
   EXPECT_FLOAT_EQ(scene.output.gamma, 2.2f);
@@ -480,6 +484,10 @@ TEST_F(SceneLoader, RenderSettings) {
   EXPECT_EQ(scene.output.curve, GammaCurve::Srgb);
   EXPECT_FLOAT_EQ(scene.output.exposure, -17.59f);
   EXPECT_FLOAT_EQ(parse(R"({"camera": {}, "render": {"gamma": 1.8}})").output.gamma, 1.8f);
+  EXPECT_EQ(parse(R"({"camera": {}, "render": {"light_paths": "on"}})").render.lightPaths,
+            LightPaths::On);
+  EXPECT_EQ(parse(R"({"camera": {}, "render": {"light_paths": "off"}})").render.lightPaths,
+            LightPaths::Off);
 }
 
 // Cameras whose rays would not be finite are refused at load, naming the key that causes it

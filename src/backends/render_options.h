@@ -1,4 +1,5 @@
-// What every backend takes besides the scene: threads, progress, cancellation and which samples.
+// What every backend takes besides the scene: threads, progress, cancellation, which samples, and
+// what the render changes of the scene's view.
 #pragma once
 
 #include <atomic>
@@ -6,6 +7,7 @@
 #include <string>
 
 #include "render/sample_range.h"
+#include "render/view_adjustment.h"
 
 namespace candela {
 
@@ -22,6 +24,8 @@ struct RenderOptions {
   // Also record the samples' first hits for render passes (RenderResult::aovs). Off, the
   // integrator runs without any pass code.
   bool aovs = false;
+  // What this render changes of the scene's view (the light-path pilot's, and its choice).
+  ViewAdjustment adjust;
   std::string sceneLabel;  // the scene file, named in error messages
 };
 

@@ -17,6 +17,10 @@ struct Camera {
   Vec3 position;       // camera centre in world space
   float apertureRadius = 0;
   float focusDistance = 1;  // along camera +z
+  // Pixel (x, y) of the render is pixel (stride x + stride / 2, stride y + stride / 2) of this
+  // camera's image: a sparse sample of its pixels (the light-path pilot's,
+  // backends/light_path_pilot.h); 1 for every render of the image itself.
+  uint32_t pixelStride = 1;
 };
 
 }  // namespace candela

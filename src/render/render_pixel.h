@@ -23,7 +23,9 @@ CANDELA_HDI Ray cameraSample(const SceneView& scene, uint32_t x, uint32_t y, Sam
   if (scene.settings.antialiasing) rng.next2D(jx, jy);
   // A pinhole camera passes over the lens dimension, as a point light does over its own.
   rng.next2DIfUsed(scene.camera.apertureRadius > 0.0f, &lensU, &lensV);
-  return generateCameraRay(scene.camera, float(x) + *jx, float(y) + *jy, lensU, lensV);
+  const uint32_t stride = scene.camera.pixelStride, offset = stride / 2;
+  return generateCameraRay(scene.camera, float(x * stride + offset) + *jx,
+                           float(y * stride + offset) + *jy, lensU, lensV);
 }
 
 // Adds one sample's radiance L, whose camera ray is `ray` through (jx, jy) in the pixel, to

@@ -16,7 +16,8 @@ SceneView SceneData::view() const {
 #undef CANDELA_VIEW_OF
   v.firstTriangleLight = firstTriangleLight;
   v.lonePointLight = lonePointLight;
-  v.lightPathLights = settings.integrator == IntegratorType::Path && settings.maxDepth >= 2
+  v.lightPathLights = settings.integrator == IntegratorType::Path && settings.maxDepth >= 2 &&
+                              settings.lightPaths != LightPaths::Off
                           ? pointLightsWithPower
                           : 0;
   v.environmentShare = environmentShare;

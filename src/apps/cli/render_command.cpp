@@ -28,6 +28,7 @@
 #include "apps/cli/sequence_command.h"
 #include "apps/cli/stats_writer.h"
 #include "apps/cli/summary.h"
+#include "backends/light_path_pilot.h"
 #include "image/atomic_file.h"
 #include "image/image_io.h"
 #include "scene/flatten.h"
@@ -235,7 +236,8 @@ int renderStill(const RenderCommandOptions& options, SceneDesc desc, double load
   if (bar) render.progress = [&bar](double fraction) { bar->update(fraction); };
   const std::unique_ptr<Renderer> renderer = makeRenderer(backend, engine);
   renderer->setScene(scene, SceneChange::Structure);
-  RenderResult result = renderer->render(render);
+  LightPathChoice lightPaths;
+  RenderResult result = renderChoosingLightPaths(*renderer, scene, render, &lightPaths);
   if (bar) bar->clear();
   if (denoiser && !result.cancelled) denoiser->denoise(result, scene);
 
@@ -257,6 +259,7 @@ int renderStill(const RenderCommandOptions& options, SceneDesc desc, double load
     info.loadSeconds = loadSeconds;
     info.flattenSeconds = flattenSeconds;
     info.acceleration = renderer->acceleration();
+    info.lightPaths = lightPaths;
     createParentDirectories(options.stats);
     stats.emplace(options.stats, renderStatsJson(info, scene, result));
   }

@@ -18,6 +18,7 @@
 #include "apps/cli/render_command.h"
 #include "apps/cli/summary.h"
 #include "apps/cli/video.h"
+#include "backends/light_path_pilot.h"
 #include "image/atomic_file.h"
 #include "image/image_io.h"
 #include "scene/animation.h"
@@ -260,7 +261,7 @@ int runSequence(const RenderCommandOptions& options, std::vector<SceneDesc> scen
     render.aovs = !aovs.empty() || denoiser;
     if (bar) render.progress = [&bar](double fraction) { bar->update(fraction); };
     renderer->setScene(data, frameScene.change());
-    RenderResult result = renderer->render(render);
+    RenderResult result = renderChoosingLightPaths(*renderer, data, render);
     if (bar) bar->clear();
     if (denoiser && !result.cancelled) denoiser->denoise(result, data);
     if (result.cancelled) {

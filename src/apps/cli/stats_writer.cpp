@@ -69,6 +69,14 @@ std::string renderStatsJson(const RenderStats& info, const SceneData& scene,
                        {"normals", normals}, {"triangles", tris},     {"engine", engine},
                        {"total", total}};
   o["bytes_per_triangle"] = finiteOrZero(triangles ? double(total) / double(triangles) : 0);
+  const LightPathChoice& lp = info.lightPaths;
+  o["light_paths"] = {{"setting", lightPathsName(s.lightPaths)},
+                      {"on", lp.lightPaths},
+                      {"piloted", lp.piloted},
+                      {"pilot_seconds", finiteOrZero(lp.seconds)},
+                      {"pilot_rays", lp.rays.total()},
+                      {"pilot_with", finiteOrZero(lp.withLightPaths)},
+                      {"pilot_without", finiteOrZero(lp.withoutLightPaths)}};
   o["render_seconds"] = finiteOrZero(result.seconds);
   o["samples"] = samples;
   o["samples_per_second"] = finiteOrZero(rate(double(samples), result.seconds));

@@ -12,13 +12,18 @@
 //   memory_bytes {nodes, prim_indices, positions, normals, triangles, engine, total}; engine:
 //                      what Embree holds (its BVH; it shares the scene's vertices)
 //   bytes_per_triangle  memory_bytes.total / triangles (0 without triangles)
-//   render_seconds, samples, samples_per_second
+//   light_paths {setting, on, piloted, pilot_seconds, pilot_rays, pilot_with, pilot_without}:
+//                      whether samples started light subpaths (backends/light_path_pilot.h);
+//                      pilot_with and pilot_without are the pilot's variance x cost of either
+//   render_seconds, samples, samples_per_second (render_seconds includes pilot_seconds; rays
+//                      and rays_per_second count the image's rays alone)
 //   rays {camera, bounce, shadow, total}, rays_per_second
 //   peak_rss_bytes     getrusage(RUSAGE_SELF).ru_maxrss, in bytes
 #pragma once
 
 #include <string>
 
+#include "backends/light_path_pilot.h"
 #include "backends/renderer.h"
 #include "render/render_result.h"
 #include "render/scene_data.h"
@@ -33,6 +38,7 @@ struct RenderStats {
   double loadSeconds = 0;
   double flattenSeconds = 0;
   AccelerationStats acceleration;  // the renderer's ray engine
+  LightPathChoice lightPaths;      // and whether its samples started light subpaths
 };
 
 // The JSON text (one object, trailing newline).

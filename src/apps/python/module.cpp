@@ -24,14 +24,15 @@
 #include <utility>
 
 #include "apps/python/interruptible.h"
+#include "backends/light_path_pilot.h"
 #include "backends/renderer.h"
 #include "image/image_io.h"
 #include "render/aov_layers.h"
 #include "scene/animation.h"
 #include "scene/flatten.h"
 #include "scene/frame_scene.h"
-#include "scene/scene_error.h"
 #include "scene/read/scene_loader.h"
+#include "scene/scene_error.h"
 
 namespace nb = nanobind;
 using namespace nb::literals;
@@ -217,7 +218,7 @@ nb::object render(const Scene& scene, std::optional<uint32_t> spp, std::optional
     }
     options.cancel = &cancel;
     cache.renderer->setScene(data, change);
-    result = cache.renderer->render(options);
+    result = renderChoosingLightPaths(*cache.renderer, data, options);
     if (!result.cancelled && aovNames && !passSums)
       layers = makeAovLayers(data, aovs, result.aovs);
   });

@@ -27,9 +27,10 @@ constexpr uint32_t kTileSize = 16;
 constexpr uint32_t kSamplesPerCancelCheck = 64;
 
 template <bool kAovs, class Tracer>
-RenderResult renderTilesWith(const SceneView& scene, const Tracer& tracer,
-                         const RenderOptions& options) {
+RenderResult renderTilesWith(const SceneView& given, const Tracer& tracer,
+                             const RenderOptions& options) {
   const auto start = std::chrono::steady_clock::now();
+  const SceneView scene = adjustedView(given, options.adjust);
   const uint32_t width = scene.camera.width, height = scene.camera.height;
   const SampleRange samples = resolveSampleRange(options.samples, scene.settings.spp);
   const uint32_t tilesX = (width + kTileSize - 1) / kTileSize;

@@ -124,7 +124,7 @@ void CudaRenderer::setScene(const SceneData& scene, SceneChange change) {
 
 RenderResult CudaRenderer::render(const RenderOptions& options) {
   const auto start = std::chrono::steady_clock::now();
-  const SceneView& view = impl_->view;
+  const SceneView view = adjustedView(impl_->view, options.adjust);
   const uint32_t width = view.camera.width, height = view.camera.height;
   const SampleRange samples = resolveSampleRange(options.samples, view.settings.spp);
   const uint32_t first = samples.begin, end = samples.begin + samples.count;

@@ -8,13 +8,15 @@
 namespace candela {
 
 void readRender(const JsonValue& value, RenderSettings& render, OutputDesc& output) {
-  JsonObject fields(value,
-                    {"max_depth", "integrator", "antialiasing", "seed", "gamma", "exposure"});
+  JsonObject fields(value, {"max_depth", "integrator", "light_paths", "antialiasing", "seed",
+                            "gamma", "exposure"});
   if (std::optional<JsonValue> depth = fields.get("max_depth"))
     render.maxDepth = static_cast<uint32_t>(depth->integer(1, UINT32_MAX, "a positive integer"));
   if (std::optional<JsonValue> integrator = fields.get("integrator"))
     render.integrator =
         integrator->choice({"path", "direct"}) == 0 ? IntegratorType::Path : IntegratorType::Direct;
+  if (std::optional<JsonValue> lightPaths = fields.get("light_paths"))
+    render.lightPaths = LightPaths(lightPaths->choice({"auto", "on", "off"}));
   if (std::optional<JsonValue> antialiasing = fields.get("antialiasing"))
     render.antialiasing = antialiasing->boolean();
   if (std::optional<JsonValue> seed = fields.get("seed"))

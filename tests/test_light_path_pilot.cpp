@@ -1,0 +1,181 @@
+// The light-path pilot (backends/light_path_pilot.h): the sparse pixels it renders, the choice it
+// makes where connections clearly pay and where they clearly do not, that the choice is the same
+// on any thread count, and when it is skipped.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "backends/light_path_pilot.h"
+#include "render/render_pixel.h"
+#include "render_test_util.h"
+
+namespace candela {
+namespace {
+
+// A small room of sphere walls lit by a point light half a unit below its ceiling: the bright
+// patch there lights the rest, which BSDF samples find poorly and connections well (the pilot
+// measured about 0.16 of the variance x cost without them).
+std::string lampUnderTheCeiling(int width, int spp, const std::string& render = "") {
+  return R"({
+    "camera": {"width": )" +
+         std::to_string(width) + R"(, "height": )" + std::to_string(width) +
+         R"(, "fov": 70, "position": [0, 2, 9], "look_at": [0, 2, 0], "spp": )" +
+         std::to_string(spp) + R"(},
+    "render": {"max_depth": 4, "seed": 3)" +
+         render + R"(},
+    "spheres": [{"position": [-1005, 0, 0], "radius": 1000, "color": [0.7, 0.3, 0.2]},
+                {"position": [1005, 0, 0], "radius": 1000, "color": [0.3, 0.4, 0.7]},
+                {"position": [0, 0, -1005], "radius": 1000, "color": 0.7},
+                {"position": [0, 0, 1010], "radius": 1000, "color": 0.7},
+                {"position": [0, -1000, 0], "radius": 1000, "color": 0.6},
+                {"position": [0, 1006, 0], "radius": 1000, "color": 0.8},
+                {"position": [1, 1, -1], "radius": 1, "color": 0.5}],
+    "lights": [{"position": [-3, 5.5, -3], "intensity": 400}]})";
+}
+
+// Two balls on an open floor under a lamp 50 units up: half the light's rays leave the scene,
+// the rest land on the floor, lit evenly, where BSDF samples find as much; connections only cost
+// (the pilot measured about 1.5 times the variance x cost with them).
+std::string lampHighAboveAnOpenFloor(const std::string& render = "") {
+  return R"({
+    "camera": {"width": 256, "height": 256, "fov": 50, "position": [0, 3, 8],
+               "look_at": [0, 0.8, 0], "spp": 16},
+    "render": {"max_depth": 4, "seed": 1)" +
+         render + R"(},
+    "spheres": [{"position": [0, -1000, 0], "radius": 1000, "color": 0.6},
+                {"position": [0, 1, 0], "radius": 1, "color": [0.7, 0.5, 0.3]},
+                {"position": [-1.8, 0.6, 0.5], "radius": 0.6, "color": 0.8}],
+    "lights": [{"position": [0, 50, 0], "intensity": 4000}]})";
+}
+
+LightPathChoice choose(const SceneData& scene, int threads = 0) {
+  CpuRenderer renderer(CpuEngine::Bvh);
+  renderer.setScene(scene, SceneChange::Structure);
+  RenderOptions options;
+  options.threads = threads;
+  return chooseLightPaths(renderer, scene, options);
+}
+
+TEST(ViewAdjustment, AStrideRendersTheMiddlePixelOfEachBlock) {
+  // Direct light from a lone point light through pixel centres draws no random number, so each
+  // pixel is one exact value: the strided render's pixel (x, y) is the full render's
+  // (4x + 2, 4y + 2).
+  const SceneData scene = test::loadTestScene(R"({
+    "camera": {"width": 18, "height": 13, "fov": 60, "position": [0, 1, 6], "look_at": [0, 1, 0],
+               "spp": 1},
+    "render": {"max_depth": 1, "antialiasing": false},
+    "spheres": [{"position": [0, -1000, 0], "radius": 1000, "color": 0.6},
+                {"position": [0.5, 1, 0], "radius": 1, "color": [0.7, 0.5, 0.3]}],
+    "lights": [{"position": [2, 5, 3], "intensity": 100}]})");
+  RenderOptions full, strided;
+  strided.adjust.pixelStride = 4;
+  const SceneView view = scene.view();
+  const RenderResult a = renderCpu(view, full), b = renderCpu(view, strided);
+  ASSERT_EQ(b.image.width, 4u);  // 18 / 4: the last, partial block is left out
+  ASSERT_EQ(b.image.height, 3u);
+  double sum = 0;
+  for (uint32_t y = 0; y < 3; ++y)
+    for (uint32_t x = 0; x < 4; ++x) {
+      for (int c = 0; c < 3; ++c)
+        EXPECT_EQ(b.image.at(x, y)[c], a.image.at(4 * x + 2, 4 * y + 2)[c]) << x << ", " << y;
+      sum += b.image.at(x, y).x;
+    }
+  EXPECT_GT(sum, 0.0);  // the comparison saw lit pixels
+  EXPECT_EQ(adjustedView(view, strided.adjust).camera.pixelStride, 4u);
+  EXPECT_EQ(view.camera.pixelStride, 1u);
+}
+
+TEST(ViewAdjustment, ReseedsAndTurnsLightPathsOffForOneRender) {
+  const SceneData scene = test::loadTestScene(lampUnderTheCeiling(16, 4));
+  ViewAdjustment adjust;
+  adjust.lightPaths = false;
+  adjust.reseed = true;
+  adjust.seed = 77;
+  const SceneView view = adjustedView(scene.view(), adjust);
+  EXPECT_EQ(view.lightPathLights, 0u);
+  EXPECT_EQ(view.settings.seed, 77u);
+  EXPECT_EQ(scene.view().lightPathLights, 1u);
+  EXPECT_EQ(scene.view().settings.seed, 3u);
+}
+
+TEST(LightPathPilot, KeepsLightPathsWhereALampLightsTheCeilingOfASmallRoom) {
+  const LightPathChoice c = choose(test::loadTestScene(lampUnderTheCeiling(256, 16)));
+  EXPECT_TRUE(c.piloted);
+  EXPECT_TRUE(c.lightPaths);
+  EXPECT_LT(c.withLightPaths, 0.5 * c.withoutLightPaths);
+  EXPECT_GT(c.rays.camera, 0u);
+}
+
+TEST(LightPathPilot, TurnsThemOffUnderALampHighAboveAnOpenFloor) {
+  const LightPathChoice c = choose(test::loadTestScene(lampHighAboveAnOpenFloor()));
+  EXPECT_TRUE(c.piloted);
+  EXPECT_FALSE(c.lightPaths);
+  EXPECT_GT(c.withLightPaths, 1.2 * c.withoutLightPaths);
+}
+
+TEST(LightPathPilot, ChoosesAlikeOnAnyThreadCount) {
+  const SceneData scene = test::loadTestScene(lampHighAboveAnOpenFloor());
+  const LightPathChoice one = choose(scene, 1), two = choose(scene, 2), three = choose(scene, 3);
+  EXPECT_EQ(one.withLightPaths, two.withLightPaths);
+  EXPECT_EQ(one.withoutLightPaths, two.withoutLightPaths);
+  EXPECT_EQ(one.withLightPaths, three.withLightPaths);
+  EXPECT_EQ(one.withoutLightPaths, three.withoutLightPaths);
+}
+
+TEST(LightPathPilot, TheSceneSettingDecidesWithoutAPilot) {
+  for (const char* setting : {"on", "off"}) {
+    const LightPathChoice c = choose(test::loadTestScene(
+        lampHighAboveAnOpenFloor(std::string(R"(, "light_paths": ")") + setting + "\"")));
+    EXPECT_FALSE(c.piloted) << setting;
+    EXPECT_EQ(c.lightPaths, std::string(setting) == "on");
+    EXPECT_EQ(c.rays.total(), 0u);
+  }
+  // "off" renders what the pilot's choice of none renders, and not what "on" does.
+  const SceneData off =
+      test::loadTestScene(lampUnderTheCeiling(16, 4, R"(, "light_paths": "off")"));
+  const SceneData on = test::loadTestScene(lampUnderTheCeiling(16, 4, R"(, "light_paths": "on")"));
+  EXPECT_EQ(off.view().lightPathLights, 0u);
+  RenderOptions none;
+  none.adjust.lightPaths = false;
+  EXPECT_EQ(renderCpu(off.view(), {}).image.pixels, renderCpu(on.view(), none).image.pixels);
+  EXPECT_NE(renderCpu(off.view(), {}).image.pixels, renderCpu(on.view(), {}).image.pixels);
+}
+
+TEST(LightPathPilot, IsSkippedWhereItWouldCostMoreThanASixteenthOfTheRender) {
+  // 128 x 128 at 16 spp is 262,144 samples, of which the pilot's 4 x 16,384 would be a quarter.
+  const LightPathChoice small = choose(test::loadTestScene(lampUnderTheCeiling(128, 16)));
+  EXPECT_FALSE(small.piloted);
+  EXPECT_TRUE(small.lightPaths);
+  EXPECT_EQ(small.rays.total(), 0u);
+  // At 64 spp the same image has enough samples: a sixteenth of 1,048,576.
+  EXPECT_TRUE(choose(test::loadTestScene(lampUnderTheCeiling(128, 64))).piloted);
+}
+
+TEST(LightPathPilot, IsSkippedWhereNoLightStartsASubpath) {
+  const LightPathChoice c = choose(test::loadTestScene(R"({
+    "camera": {"width": 256, "height": 256, "spp": 64},
+    "spheres": [{"position": [0, -1000, 0], "radius": 999, "color": 0.5}],
+    "lights": [{"type": "sphere", "position": [0, 3, 0], "radius": 0.5, "intensity": 100}]})"));
+  EXPECT_FALSE(c.piloted);
+  EXPECT_EQ(c.rays.total(), 0u);
+}
+
+TEST(LightPathPilot, TheRenderFollowsTheChoiceAndCountsThePilot) {
+  const SceneData scene = test::loadTestScene(lampHighAboveAnOpenFloor());
+  CpuRenderer renderer(CpuEngine::Bvh);
+  renderer.setScene(scene, SceneChange::Structure);
+  LightPathChoice choice;
+  const RenderResult chosen = renderChoosingLightPaths(renderer, scene, {}, &choice);
+  ASSERT_TRUE(choice.piloted);
+  ASSERT_FALSE(choice.lightPaths);
+  RenderOptions without;
+  without.adjust.lightPaths = false;
+  const RenderResult plain = renderer.render(without);
+  EXPECT_EQ(chosen.image.pixels, plain.image.pixels);
+  EXPECT_EQ(chosen.rays.total(), plain.rays.total());
+  EXPECT_GT(choice.rays.total(), 0u);
+  EXPECT_GE(chosen.seconds, choice.seconds);
+}
+
+}  // namespace
+}  // namespace candela
