@@ -47,4 +47,23 @@ inline RegionStats regionStats(const ImageRGB& img, uint32_t x0, uint32_t y0, ui
   return s;
 }
 
+// A small room of sphere walls lit by a point light half a unit below its ceiling, whose bright
+// patch there lights the rest (the case light-vertex connections are for), with a ball on its
+// floor; `camera` and `render` are the JSON objects' inner fields.
+inline std::string lampUnderTheCeiling(const std::string& camera, const std::string& render) {
+  return R"({
+    "camera": {"fov": 70, "position": [0, 2, 9], "look_at": [0, 2, 0], )" +
+         camera + R"(},
+    "render": {)" +
+         render + R"(},
+    "spheres": [{"position": [-1005, 0, 0], "radius": 1000, "color": [0.7, 0.3, 0.2]},
+                {"position": [1005, 0, 0], "radius": 1000, "color": [0.3, 0.4, 0.7]},
+                {"position": [0, 0, -1005], "radius": 1000, "color": 0.7},
+                {"position": [0, 0, 1010], "radius": 1000, "color": 0.7},
+                {"position": [0, -1000, 0], "radius": 1000, "color": 0.6},
+                {"position": [0, 1006, 0], "radius": 1000, "color": 0.8},
+                {"position": [1, 1, -1], "radius": 1, "color": 0.5}],
+    "lights": [{"position": [-3, 5.5, -3], "intensity": 400}]})";
+}
+
 }  // namespace candela::test

@@ -60,19 +60,8 @@ TEST(LightPaths, OnlyPathsOfTwoOrMoreInteractionsStartThem) {
 // 1.5 times less noisy (measured: about 3 times).
 TEST(LightPaths, ARoomRendersTheSameImageWithLessNoise) {
   const auto room = [](int seed) {
-    return R"({
-    "camera": {"width": 48, "height": 32, "fov": 70, "position": [0, 2, 9], "look_at": [0, 2, 0],
-               "spp": 16},
-    "render": {"max_depth": 4, "seed": )" +
-           std::to_string(seed) + R"(},
-    "spheres": [{"position": [-1005, 0, 0], "radius": 1000, "color": [0.7, 0.3, 0.2]},
-                {"position": [1005, 0, 0], "radius": 1000, "color": [0.3, 0.4, 0.7]},
-                {"position": [0, 0, -1005], "radius": 1000, "color": 0.7},
-                {"position": [0, 0, 1010], "radius": 1000, "color": 0.7},
-                {"position": [0, -1000, 0], "radius": 1000, "color": 0.6},
-                {"position": [0, 1006, 0], "radius": 1000, "color": 0.8},
-                {"position": [1, 1, -1], "radius": 1, "color": 0.5}],
-    "lights": [{"position": [-3, 5.5, -3], "intensity": 400}]})";
+    return test::lampUnderTheCeiling(R"("width": 48, "height": 32, "spp": 16)",
+                                     R"("max_depth": 4, "seed": )" + std::to_string(seed));
   };
   struct Pair {
     RenderResult a, b;
