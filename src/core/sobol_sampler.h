@@ -163,6 +163,16 @@ class SampleStream {
         reverseBits32(laineKarrasHash(sobolDimension1Reversed(index), uint32_t(scramble >> 32))));
   }
 
+  // The stream of a branch split off the sample's path here (render/path_branch.h): the same
+  // sample's numbers from kBranchDimensions dimensions further on, where no path reaches from
+  // the dimension it left.
+  static constexpr uint32_t kBranchDimensions = 1u << 16;
+  CANDELA_HDI SampleStream branch() const {
+    SampleStream s = *this;
+    s.dimension_ += kBranchDimensions;
+    return s;
+  }
+
  private:
   CANDELA_HDI uint64_t dimensionHash() {
     return mix64(pixelKey_ + 0x9e3779b97f4a7c15ull * ++dimension_);

@@ -114,6 +114,25 @@ CANDELA_HDI Vec3 evalBsdf(const Bsdf& b, const Vec3& wi, float* pdf) {
   return evalNonDiffuse(b, local, pdf);
 }
 
+// Whether a path may follow both lobes of the material at once (sampleBothDeltaLobes): smooth
+// glass, whose random choice between reflection and refraction is otherwise most of the noise
+// of what it shows.
+CANDELA_HDI bool hasTwoDeltaLobes(const Material& m) {
+  return m.type == MaterialType::Glass && isSmooth(m);
+}
+
+// Both lobes of a material with two delta lobes, as two samples whose weights sum to what
+// sampleBsdf's choice between them gives on average: *first the transmission, *second the
+// reflection. False where they are not two (total internal reflection) or either leaves through
+// the wrong side of the geometry: sampleBsdf then chooses as always.
+CANDELA_HDI bool sampleBothDeltaLobes(const Bsdf& b, BsdfSample* first, BsdfSample* second) {
+  if (!smoothDielectricBothLobes(b.color, b.eta, b.wo, first, second)) return false;
+  const float firstZ = first->wi.z, secondZ = second->wi.z;
+  first->wi = b.frame.toWorld(first->wi);
+  second->wi = b.frame.toWorld(second->wi);
+  return leavesOnItsSide(b, first->wi, firstZ) && leavesOnItsSide(b, second->wi, secondZ);
+}
+
 // sampleBsdf for every material but diffuse, in the local frame.
 CANDELA_HD_NOINLINE inline bool sampleNonDiffuse(const Bsdf& b, float uc, float u1, float u2,
                                                  BsdfSample* s) {

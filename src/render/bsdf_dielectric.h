@@ -53,6 +53,26 @@ CANDELA_HDI Vec3 dielectricEvalPdf(const Material& m, const Vec3& color, float e
   return color * ft;
 }
 
+// Both lobes of smooth glass, for a path that follows each (render/path_branch.h): the refraction
+// in *refraction, weight (1 - F) color / eta^2, and the mirror reflection in *reflection, weight
+// F; what dielectricSample picks between. False where refraction is impossible (total internal
+// reflection, F = 1) or wo lies below.
+CANDELA_HDI bool smoothDielectricBothLobes(const Vec3& color, float eta, const Vec3& wo,
+                                           BsdfSample* refraction, BsdfSample* reflection) {
+  if (wo.z <= 0.0f || !refract(wo, Vec3(0.0f, 0.0f, 1.0f), eta, &refraction->wi)) return false;
+  const float reflectance = fresnelDielectric(wo.z, eta);
+  refraction->weight = color * ((1.0f - reflectance) / (eta * eta));
+  refraction->pdf = 0.0f;
+  refraction->delta = true;
+  refraction->eta = eta;
+  reflection->wi = Vec3(-wo.x, -wo.y, wo.z);
+  reflection->weight = Vec3(reflectance);
+  reflection->pdf = 0.0f;
+  reflection->delta = true;
+  reflection->eta = 1.0f;
+  return true;
+}
+
 // uc picks reflection or refraction of a rough surface; a smooth one picks with u1.
 CANDELA_HDI bool dielectricSample(const Material& m, const Vec3& color, float eta, const Vec3& wo,
                                   float uc, float u1, float u2, BsdfSample* s) {

@@ -22,6 +22,7 @@
 #include "render/light_path.h"
 #include "render/light_sample.h"
 #include "render/light_selection.h"
+#include "render/path_branch.h"
 #include "render/ray_counters.h"
 #include "render/shadow_query.h"
 #include "render/surface_color.h"
@@ -122,6 +123,7 @@ struct PathState {
   // connected to one, so that the next weighs its next-event estimation against that.
   LightVertex lightVertex;
   bool connectable = false;
+  PathBranches branches;  // split off at smooth glass, to run when this path ends (path_branch.h)
 
   PathState() = default;
   CANDELA_HDI PathState(const SceneView& scene, const Ray& cameraRay)
@@ -131,8 +133,10 @@ struct PathState {
 // Interaction path->depth, where path->ray found `hit` (`found` false: it left the scene): adds
 // what it sees there to path->radiance, leaves next-event estimation's shadow ray in *shadow and
 // the connection to the sample's light vertex in *connect (each inactive when there is none) for
-// the caller to trace, and scatters path->ray onwards. False when the path ends here (its shadow
-// queries still count). With kAovs, `first` (zeroed by the caller) also receives the sample's
+// the caller to trace, and scatters path->ray onwards (at smooth glass within
+// scene.glassSplitDepth, leaving the reflection as a waiting branch: render/path_branch.h). False
+// when the path ends here (its shadow queries still count; a waiting branch is the caller's to
+// resume). With kAovs, `first` (zeroed by the caller) also receives the sample's
 // first hit and albedo (render/aov.h); that work is compiled only into the kAovs instance, and it
 // draws no random numbers, so the radiance is the same.
 template <bool kAovs>
@@ -230,8 +234,20 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
   const float uc = usesLobeChoice(m) ? rng.next1D() : 0.0f;
   float u1, u2;
   rng.next2D(&u1, &u2);
-  BsdfSample bs;
-  if (!sampleBsdf(bsdf, uc, u1, u2, &bs)) return false;
+  BsdfSample bs, reflected;
+  if (depth <= scene.glassSplitDepth && st.branches.waiting < kMaxWaitingBranches &&
+      hasTwoDeltaLobes(m) && sampleBothDeltaLobes(bsdf, &bs, &reflected)) {
+    PathBranch& b = st.branches.branch[st.branches.waiting++];
+    b.ray = spawnRay(sp, reflected.wi);
+    b.throughput = st.throughput * reflected.weight;
+    b.depth = st.depth;
+    b.maxDepth = st.maxDepth;
+    b.etaScale = st.etaScale * reflected.eta * reflected.eta;
+    b.rng = rng.branch();
+    ++counters.bounce;
+  } else if (!sampleBsdf(bsdf, uc, u1, u2, &bs)) {
+    return false;
+  }
   st.throughput *= bs.weight;
   st.etaScale *= bs.eta * bs.eta;
   st.specularBounce = bs.delta;
@@ -249,13 +265,31 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
   return true;
 }
 
+// Starts the path's waiting branch (path_branch.h) where it ended, with the branch's random
+// numbers in *rng; false when none waits.
+CANDELA_HDI bool resumeBranch(PathState* path, SampleStream* rng) {
+  if (path->branches.waiting == 0) return false;
+  const PathBranch& b = path->branches.branch[--path->branches.waiting];
+  path->ray = b.ray;
+  path->throughput = b.throughput;
+  path->depth = b.depth;
+  path->maxDepth = b.maxDepth;
+  path->etaScale = b.etaScale;
+  path->specularBounce = true;  // a delta lobe: what it finds counts fully
+  path->bsdfPdf = 0.0f;
+  path->connectable = false;
+  *rng = b.rng;
+  return true;
+}
+
 // Adds an active shadow query's contribution to the path unless its ray is blocked.
 CANDELA_HDI_ALWAYS void resolveShadow(const ShadowQuery& shadow, bool blocked, PathState* path) {
   CANDELA_DCHECK(shadow.active);
   if (!blocked) path->radiance += shadow.contribution;
 }
 
-// Runs a path from its next interaction to its end, one ray at a time; returns its radiance.
+// Runs a path from its next interaction to its end, and then its branch, if one waits, one ray at
+// a time; returns the radiance of both.
 template <bool kAovs, class Tracer>
 CANDELA_HDI Vec3 finishPath(const SceneView& scene, const Tracer& tracer, PathState* path,
                             SampleStream& rng, RayCounters& counters, FirstHit* first) {
@@ -268,7 +302,7 @@ CANDELA_HDI Vec3 finishPath(const SceneView& scene, const Tracer& tracer, PathSt
     if (shadow.active) resolveShadow(shadow, tracer.occluded(shadow.ray, shadow.skipPrim), path);
     if (connect.active)
       resolveShadow(connect, tracer.occluded(connect.ray, connect.skipPrim), path);
-    if (!goesOn) return path->radiance;
+    if (!goesOn && !resumeBranch(path, &rng)) return path->radiance;
   }
 }
 

@@ -81,7 +81,8 @@ CANDELA_HDI void renderPacket(const SceneView& scene, const Tracer& tracer, uint
       traceLightVertex(scene, tracer, rng[i], counters, &paths[i].lightVertex);
     ShadowQuery connect;
     goesOn[i] = interact<kAovs>(scene, &paths[i], hits[i].valid(), hits[i], rng[i], counters,
-                                &first[kAovs ? i : 0], &shadows[i], &connect);
+                                &first[kAovs ? i : 0], &shadows[i], &connect) ||
+                resumeBranch(&paths[i], &rng[i]);
     if (connect.active)
       resolveShadow(connect, tracer.occluded(connect.ray, connect.skipPrim), &paths[i]);
     if (!shadows[i].active) continue;

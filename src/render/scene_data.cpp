@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "core/check.h"
+#include "render/path_branch.h"
 
 namespace candela {
 
@@ -20,6 +21,7 @@ SceneView SceneData::view() const {
                               settings.lightPaths != LightPaths::Off
                           ? pointLightsWithPower
                           : 0;
+  v.glassSplitDepth = kGlassSplitDepth;
   v.environmentShare = environmentShare;
   v.environment = environment;
   v.emissionReachable = !isBlack(environment.radiance);

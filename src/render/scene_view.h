@@ -53,6 +53,9 @@ struct SceneView : GeometryView {
   // How many point lights start light subpaths (render/light_path.h): those with power, where
   // the integrator is "path" and a path may have two interactions; 0 for none.
   uint32_t lightPathLights = 0;
+  // Paths follow both lobes of smooth glass at interactions up to this depth (0: at none), the
+  // reflection as a branch (render/path_branch.h).
+  uint32_t glassSplitDepth = 0;
   // The share of picks that go to the environment light; the light tree has the rest.
   float environmentShare = 0.0f;
   Environment environment;
