@@ -1,8 +1,11 @@
 // Helpers for image tests: render a JSON scene given as text, and noise-aware statistics.
 #pragma once
 
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "backends/cpu/cpu_renderer.h"
@@ -47,23 +50,73 @@ inline RegionStats regionStats(const ImageRGB& img, uint32_t x0, uint32_t y0, ui
   return s;
 }
 
-// A small room of sphere walls lit by a point light half a unit below its ceiling, whose bright
-// patch there lights the rest (the case light-vertex connections are for), with a ball on its
-// floor; `camera` and `render` are the JSON objects' inner fields.
+// The walls of a small room as JSON array elements: six diffuse spheres of radius 1000 whose near
+// sides bound x in [-5, 5], z in [-5, 10] and y in [0, 6].
+constexpr const char* kSmallRoomWalls =
+    R"({"position": [-1005, 0, 0], "radius": 1000, "color": [0.7, 0.3, 0.2]},
+       {"position": [1005, 0, 0], "radius": 1000, "color": [0.3, 0.4, 0.7]},
+       {"position": [0, 0, -1005], "radius": 1000, "color": 0.7},
+       {"position": [0, 0, 1010], "radius": 1000, "color": 0.7},
+       {"position": [0, -1000, 0], "radius": 1000, "color": 0.6},
+       {"position": [0, 1006, 0], "radius": 1000, "color": 0.8})";
+
+// The small room lit by a point light half a unit below its ceiling, whose bright patch there
+// lights the rest (the case light-vertex connections are for), with a ball on its floor; `camera`
+// and `render` are the JSON objects' inner fields.
 inline std::string lampUnderTheCeiling(const std::string& camera, const std::string& render) {
   return R"({
     "camera": {"fov": 70, "position": [0, 2, 9], "look_at": [0, 2, 0], )" +
          camera + R"(},
     "render": {)" +
          render + R"(},
-    "spheres": [{"position": [-1005, 0, 0], "radius": 1000, "color": [0.7, 0.3, 0.2]},
-                {"position": [1005, 0, 0], "radius": 1000, "color": [0.3, 0.4, 0.7]},
-                {"position": [0, 0, -1005], "radius": 1000, "color": 0.7},
-                {"position": [0, 0, 1010], "radius": 1000, "color": 0.7},
-                {"position": [0, -1000, 0], "radius": 1000, "color": 0.6},
-                {"position": [0, 1006, 0], "radius": 1000, "color": 0.8},
+    "spheres": [)" +
+         kSmallRoomWalls + R"(,
                 {"position": [1, 1, -1], "radius": 1, "color": 0.5}],
     "lights": [{"position": [-3, 5.5, -3], "intensity": 400}]})";
+}
+
+// One estimator's renders of an image with two seeds.
+struct SeedPair {
+  RenderResult a, b;
+};
+
+// Expects two estimators of one image (its sides multiples of `block`) to agree: each
+// block x block block's mean within 5 standard errors of their difference, each pixel's variance
+// estimated from its two seeds. Returns each estimator's noise: the summed variance, over pixels
+// and channels, of a pixel's two-seed mean, (a - b)^2 / 4.
+inline std::pair<double, double> expectSameImage(const SeedPair& first, const SeedPair& second,
+                                                 uint32_t block = 8) {
+  const auto meanAndVariance = [](const SeedPair& p, uint32_t x, uint32_t y, double* mean,
+                                  double* variance) {
+    *mean = *variance = 0;
+    for (int c = 0; c < 3; ++c) {
+      const double a = p.a.image.at(x, y)[c], b = p.b.image.at(x, y)[c];
+      *mean += (a + b) / 2;
+      *variance += (a - b) * (a - b) / 4;
+    }
+  };
+  double noiseFirst = 0, noiseSecond = 0;
+  const uint32_t width = first.a.image.width, height = first.a.image.height;
+  for (uint32_t by = 0; by < height / block; ++by)
+    for (uint32_t bx = 0; bx < width / block; ++bx) {
+      double meanFirst = 0, meanSecond = 0, varianceOfMeans = 0;
+      for (uint32_t y = by * block; y < (by + 1) * block; ++y)
+        for (uint32_t x = bx * block; x < (bx + 1) * block; ++x) {
+          double m, v;
+          meanAndVariance(first, x, y, &m, &v);
+          meanFirst += m;
+          varianceOfMeans += v;
+          noiseFirst += v;
+          meanAndVariance(second, x, y, &m, &v);
+          meanSecond += m;
+          varianceOfMeans += v;
+          noiseSecond += v;
+        }
+      const double n = double(block) * block;
+      EXPECT_NEAR(meanFirst / n, meanSecond / n, 5 * std::sqrt(varianceOfMeans) / n)
+          << "block " << bx << ", " << by;
+    }
+  return {noiseFirst, noiseSecond};
 }
 
 }  // namespace candela::test

@@ -63,11 +63,8 @@ TEST(LightPaths, ARoomRendersTheSameImageWithLessNoise) {
     return test::lampUnderTheCeiling(R"("width": 48, "height": 32, "spp": 16)",
                                      R"("max_depth": 4, "seed": )" + std::to_string(seed));
   };
-  struct Pair {
-    RenderResult a, b;
-  };
   const auto renderPair = [&](bool connections) {
-    Pair p;
+    test::SeedPair p;
     for (int seed : {1, 2}) {
       SceneData data = test::loadTestScene(room(seed));
       if (!connections) data.pointLightsWithPower = 0;
@@ -76,38 +73,7 @@ TEST(LightPaths, ARoomRendersTheSameImageWithLessNoise) {
     }
     return p;
   };
-  const Pair with = renderPair(true), without = renderPair(false);
-  // Per pixel: the mean of the two seeds, and the variance of that mean, (a - b)^2 / 4.
-  const auto meanAndVariance = [](const Pair& p, uint32_t x, uint32_t y, double* mean,
-                                  double* variance) {
-    *mean = *variance = 0;
-    for (int c = 0; c < 3; ++c) {
-      const double a = p.a.image.at(x, y)[c], b = p.b.image.at(x, y)[c];
-      *mean += (a + b) / 2;
-      *variance += (a - b) * (a - b) / 4;
-    }
-  };
-  double noiseWith = 0, noiseWithout = 0;
-  constexpr uint32_t kBlock = 8;
-  for (uint32_t by = 0; by < 32 / kBlock; ++by)
-    for (uint32_t bx = 0; bx < 48 / kBlock; ++bx) {
-      double meanWith = 0, meanWithout = 0, varianceOfMeans = 0;
-      for (uint32_t y = by * kBlock; y < (by + 1) * kBlock; ++y)
-        for (uint32_t x = bx * kBlock; x < (bx + 1) * kBlock; ++x) {
-          double m, v;
-          meanAndVariance(with, x, y, &m, &v);
-          meanWith += m;
-          varianceOfMeans += v;
-          noiseWith += v;
-          meanAndVariance(without, x, y, &m, &v);
-          meanWithout += m;
-          varianceOfMeans += v;
-          noiseWithout += v;
-        }
-      const double n = kBlock * kBlock;
-      EXPECT_NEAR(meanWith / n, meanWithout / n, 5 * std::sqrt(varianceOfMeans) / n)
-          << "block " << bx << ", " << by;
-    }
+  const auto [noiseWith, noiseWithout] = test::expectSameImage(renderPair(true), renderPair(false));
   EXPECT_LT(noiseWith * 1.5, noiseWithout);
 }
 
