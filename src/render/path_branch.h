@@ -25,13 +25,14 @@ constexpr uint32_t kGlassSplitDepth = 2;
 // a view that asks for deeper splits chooses where this many already wait.
 constexpr uint32_t kMaxWaitingBranches = kGlassSplitDepth;
 
-// A waiting branch: the path's state after the split, for the reflection.
+// A waiting branch: the path's state after the split, for the reflection. Written by the split
+// before anything reads it, so a new path's slots are left as they are (every sample starts one).
 struct PathBranch {
   Ray ray;
-  Vec3 throughput = Vec3(0.0f);
-  uint32_t depth = 0;  // of its next interaction
-  uint32_t maxDepth = 0;
-  float etaScale = 1.0f;
+  Vec3 throughput;
+  uint32_t depth;  // of its next interaction
+  uint32_t maxDepth;
+  float etaScale;
   SampleStream rng;
 };
 
