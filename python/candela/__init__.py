@@ -131,7 +131,8 @@ class Scene:
         passed its tests on a GPU), "cpu" or "cuda" (untested; RuntimeError where it cannot
         run). sample_range=(first, count) renders only samples [first, first + count) of the
         spp and returns their mean; the count-weighted mean of disjoint slices equals the full
-        render to rounding. threads: CPU threads, 0 for all cores.
+        render to rounding. threads: CPU threads, 0 for all cores; it holds all of the call's
+        work, the BVH build and the denoiser included, not only the tiles.
 
         Renders of one loaded scene and its frames share the flattened scene and its BVH: a
         later render whose geometry is unchanged (another spp, seed or sample range, or a frame
@@ -143,7 +144,7 @@ class Scene:
         aovs = _pass_names(aovs)
         result = self._core.render(spp, seed, backend, sample_range, threads,
                                    _passes_to_render(aovs, denoise))
-        return _denoised(result, aovs) if denoise else result
+        return _denoised(result, aovs, threads) if denoise else result
 
     def __repr__(self) -> str:
         frame = "" if self.frame_index is None else f", frame {self.frame_index}"
@@ -173,12 +174,12 @@ def _passes_to_render(aovs: Optional[list], denoise: bool) -> Optional[list]:
     return list(dict.fromkeys((aovs or []) + ["albedo", "normal"]))
 
 
-def _denoised(result: Dict[str, np.ndarray], aovs: Optional[list]):
+def _denoised(result: Dict[str, np.ndarray], aovs: Optional[list], threads: int = 0):
     """A render's result with its passes and guides, denoised as Scene.render(denoise=True)
     returns it: the clean image alone without aovs, else the asked passes plus "image" (clean)
     and "noisy"."""
     from . import denoise as oidn
-    clean = oidn.denoise(result["image"], result["albedo"], result["normal"])
+    clean = oidn.denoise(result["image"], result["albedo"], result["normal"], threads=threads)
     if aovs is None:
         return clean
     result["noisy"] = result["image"]

@@ -26,22 +26,26 @@ def _oidn():
 
 
 _lock = threading.Lock()
-_device = None
+_devices = {}
 
 
-def _cpu_device(pyoidn):
-    """One OIDN CPU device for the process (numpy arrays live in host memory)."""
-    global _device
-    if _device is None:
-        _device = pyoidn.Device(pyoidn.OIDN_DEVICE_TYPE_CPU)
-        _device.commit()
-    return _device
+def _cpu_device(pyoidn, threads: int = 0):
+    """The process's OIDN CPU device (numpy arrays live in host memory) of at most `threads`
+    threads, 0 for all cores: one per thread count, since a device takes it once."""
+    if threads not in _devices:
+        device = pyoidn.Device(pyoidn.OIDN_DEVICE_TYPE_CPU)
+        if threads > 0:
+            device.set_int("numThreads", threads)
+        device.commit()
+        _devices[threads] = device
+    return _devices[threads]
 
 
-def _run(pyoidn, inputs: dict, hdr: bool = False, clean_aux: bool = False) -> np.ndarray:
+def _run(pyoidn, inputs: dict, hdr: bool = False, clean_aux: bool = False,
+         threads: int = 0) -> np.ndarray:
     """One "RT" filter over `inputs` (OIDN image name -> (H, W, 3) float32 array)."""
     output = np.empty_like(next(iter(inputs.values())))
-    filt = pyoidn.Filter(_cpu_device(pyoidn), pyoidn.OIDN_FILTER_TYPE_RT)
+    filt = pyoidn.Filter(_cpu_device(pyoidn, threads), pyoidn.OIDN_FILTER_TYPE_RT)
     try:
         for name, pixels in inputs.items():
             filt.set_image(name, pixels, pyoidn.OIDN_FORMAT_FLOAT3)
@@ -57,8 +61,10 @@ def _run(pyoidn, inputs: dict, hdr: bool = False, clean_aux: bool = False) -> np
     return output
 
 
-def denoise(image: np.ndarray, albedo: np.ndarray, normal: np.ndarray) -> np.ndarray:
-    """The denoised (H, W, 3) float32 radiance of `image`, guided by `albedo` and `normal`.
+def denoise(image: np.ndarray, albedo: np.ndarray, normal: np.ndarray,
+            threads: int = 0) -> np.ndarray:
+    """The denoised (H, W, 3) float32 radiance of `image`, guided by `albedo` and `normal`, on at
+    most `threads` CPU threads (0: all cores).
 
     The guides come from the same samples as the image and carry a little noise of their own
     (antialiased edges, depth of field, what glass and mirrors show): each is denoised first and
@@ -68,7 +74,10 @@ def denoise(image: np.ndarray, albedo: np.ndarray, normal: np.ndarray) -> np.nda
     contiguous = lambda a: np.ascontiguousarray(a, dtype=np.float32)  # noqa: E731
     colour = contiguous(image)
     with _lock:
-        albedo = _run(pyoidn, {pyoidn.OIDN_IMAGE_ALBEDO: contiguous(np.clip(albedo, 0.0, 1.0))})
-        normal = _run(pyoidn, {pyoidn.OIDN_IMAGE_NORMAL: contiguous(np.clip(normal, -1.0, 1.0))})
+        albedo = _run(pyoidn, {pyoidn.OIDN_IMAGE_ALBEDO: contiguous(np.clip(albedo, 0.0, 1.0))},
+                      threads=threads)
+        normal = _run(pyoidn, {pyoidn.OIDN_IMAGE_NORMAL: contiguous(np.clip(normal, -1.0, 1.0))},
+                      threads=threads)
         return _run(pyoidn, {pyoidn.OIDN_IMAGE_COLOR: colour, pyoidn.OIDN_IMAGE_ALBEDO: albedo,
-                             pyoidn.OIDN_IMAGE_NORMAL: normal}, hdr=True, clean_aux=True)
+                             pyoidn.OIDN_IMAGE_NORMAL: normal}, hdr=True, clean_aux=True,
+                    threads=threads)

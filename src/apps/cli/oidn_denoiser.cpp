@@ -21,7 +21,10 @@ struct OidnDenoiser::Api {
   using Filter = void*;
   static constexpr int kDeviceTypeDefault = 0;  // OIDN_DEVICE_TYPE_DEFAULT
   static constexpr int kFormatFloat3 = 3;       // OIDN_FORMAT_FLOAT3
+  static constexpr int kDeviceTypeCpu = 1;      // OIDN_DEVICE_TYPE_CPU
   Device (*newDevice)(int type);
+  int (*getDeviceInt)(Device, const char* name);
+  void (*setDeviceInt)(Device, const char* name, int value);
   void (*commitDevice)(Device);
   int (*getDeviceError)(Device, const char** message);
   void (*releaseDevice)(Device);
@@ -77,6 +80,8 @@ std::unique_ptr<OidnDenoiser> OidnDenoiser::load(std::string* whyNot) {
     Api& a = *d->api_;
     const bool complete =
         bind(handle, "oidnNewDevice", &a.newDevice) &&
+        bind(handle, "oidnGetDeviceInt", &a.getDeviceInt) &&
+        bind(handle, "oidnSetDeviceInt", &a.setDeviceInt) &&
         bind(handle, "oidnCommitDevice", &a.commitDevice) &&
         bind(handle, "oidnGetDeviceError", &a.getDeviceError) &&
         bind(handle, "oidnReleaseDevice", &a.releaseDevice) &&
@@ -112,7 +117,7 @@ OidnDenoiser::~OidnDenoiser() {
 }
 
 void OidnDenoiser::denoise(ImageRGB& image, const std::vector<float>& albedo,
-                           const std::vector<float>& normal) const {
+                           const std::vector<float>& normal, int threads) const {
   const Api& a = *api_;
   const size_t w = image.width, h = image.height, n = 3 * w * h;
   if (albedo.size() != n || normal.size() != n)
@@ -126,6 +131,8 @@ void OidnDenoiser::denoise(ImageRGB& image, const std::vector<float>& albedo,
                  [](float v) { return std::min(1.0f, std::max(-1.0f, v)); });
   void* device = a.newDevice(Api::kDeviceTypeDefault);
   if (!device) throw std::runtime_error("Open Image Denoise could not create a device");
+  if (threads > 0 && a.getDeviceInt(device, "type") == Api::kDeviceTypeCpu)
+    a.setDeviceInt(device, "numThreads", threads);
   a.commitDevice(device);
   const size_t pixel = 3 * sizeof(float);
   // One "RT" filter over `inputs` (name, pixels) into `output`.
@@ -161,10 +168,10 @@ void OidnDenoiser::denoise(ImageRGB& image, const std::vector<float>& albedo,
   image.pixels = std::move(out);
 }
 
-void OidnDenoiser::denoise(RenderResult& result, const SceneData& scene) const {
+void OidnDenoiser::denoise(RenderResult& result, const SceneData& scene, int threads) const {
   const std::vector<ImageLayer> guides =
       makeAovLayers(scene, {Aov::Albedo, Aov::Normal}, result.aovs);
-  denoise(result.image, guides[0].pixels, guides[1].pixels);
+  denoise(result.image, guides[0].pixels, guides[1].pixels, threads);
 }
 
 }  // namespace candela::cli

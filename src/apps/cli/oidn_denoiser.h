@@ -25,13 +25,14 @@ class OidnDenoiser {
   ~OidnDenoiser();
 
   // Replaces `image` (HDR radiance) by its denoised version. `albedo` and `normal` hold 3 floats
-  // per pixel of the same size. Throws std::runtime_error with OIDN's message when it fails.
-  void denoise(ImageRGB& image, const std::vector<float>& albedo,
-               const std::vector<float>& normal) const;
+  // per pixel of the same size. On OIDN's CPU device, `threads` > 0 caps its threads (0: all
+  // cores). Throws std::runtime_error with OIDN's message when it fails.
+  void denoise(ImageRGB& image, const std::vector<float>& albedo, const std::vector<float>& normal,
+               int threads = 0) const;
 
   // Denoises the image of `result`, a render of `scene` with passes (RenderOptions::aovs), guided
   // by its albedo and normal passes.
-  void denoise(RenderResult& result, const SceneData& scene) const;
+  void denoise(RenderResult& result, const SceneData& scene, int threads = 0) const;
 
   // The library file that was loaded.
   const std::string& path() const { return path_; }

@@ -29,6 +29,7 @@
 #include "apps/cli/stats_writer.h"
 #include "apps/cli/summary.h"
 #include "backends/light_path_pilot.h"
+#include "backends/thread_limit.h"
 #include "image/atomic_file.h"
 #include "image/image_io.h"
 #include "scene/flatten.h"
@@ -133,7 +134,9 @@ CLI::App* addRenderCommand(CLI::App& app, RenderCommandOptions* options) {
          "--max-depth", [options](const uint32_t& v) { options->maxDepth = v; },
          "Most surface interactions along a path")
       ->transform(decimalInteger(true, UINT32_MAX));
-  cmd->add_option("--threads", options->threads, "CPU worker threads (default: all cores)")
+  cmd->add_option("--threads", options->threads,
+                  "CPU threads for the whole run: loading, BVH build, render and denoiser "
+                  "(default: all cores)")
       ->transform(decimalInteger(true, INT32_MAX));
   cmd->add_option_function<std::string>(
          "--backend",
@@ -177,6 +180,7 @@ CLI::App* addRenderCommand(CLI::App& app, RenderCommandOptions* options) {
 }
 
 int runRender(const RenderCommandOptions& options) {
+  const ThreadLimit threadLimit(options.threads);  // from the loading on, not only the tiles
   // oneTBB starts its worker threads on first use; an empty task started now lets that happen
   // while the scenes load instead of inside the first parallel step, the BVH build
   // (docs/performance.md).
@@ -239,7 +243,7 @@ int renderStill(const RenderCommandOptions& options, SceneDesc desc, double load
   LightPathChoice lightPaths;
   RenderResult result = renderChoosingLightPaths(*renderer, scene, render, &lightPaths);
   if (bar) bar->clear();
-  if (denoiser && !result.cancelled) denoiser->denoise(result, scene);
+  if (denoiser && !result.cancelled) denoiser->denoise(result, scene, options.threads);
 
   if (result.cancelled) {
     std::fputs("candela: interrupted, no image written\n", stderr);

@@ -25,6 +25,7 @@
 
 #include "apps/python/interruptible.h"
 #include "backends/light_path_pilot.h"
+#include "backends/thread_limit.h"
 #include "backends/renderer.h"
 #include "image/image_io.h"
 #include "render/aov_layers.h"
@@ -178,6 +179,7 @@ nb::dict passSumMerges() {
 nb::object render(const Scene& scene, std::optional<uint32_t> spp, std::optional<uint64_t> seed,
                   const std::string& backend, std::optional<std::tuple<uint32_t, uint32_t>> range,
                   int threads, std::optional<std::vector<std::string>> aovNames, bool passSums) {
+  const ThreadLimit threadLimit(threads);  // the build and pilot too, not only the tiles
   if (passSums && !aovNames) aovNames.emplace();
   const std::vector<Aov> aovs = aovNames ? aovsFromNames(*aovNames) : std::vector<Aov>();
   SceneDesc desc = scene.still();

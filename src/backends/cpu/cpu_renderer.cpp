@@ -2,7 +2,6 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
-#include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 
 #include <chrono>
@@ -10,6 +9,7 @@
 #include <mutex>
 
 #include "backends/cpu/flush_denormals.h"
+#include "backends/thread_limit.h"
 #include "geometry/bvh_tracer.h"
 #include "render/render_pixel.h"
 
@@ -40,10 +40,7 @@ RenderResult renderTilesWith(const SceneView& given, const Tracer& tracer,
   result.image = ImageRGB(width, height);
   if (kAovs) result.aovs.resize(size_t(width) * height);
 
-  std::unique_ptr<tbb::global_control> threadLimit;
-  if (options.threads > 0)
-    threadLimit = std::make_unique<tbb::global_control>(
-        tbb::global_control::max_allowed_parallelism, size_t(options.threads));
+  const ThreadLimit threadLimit(options.threads);
 
   tbb::enumerable_thread_specific<RayCounters> counters;
   std::mutex progressMutex;
