@@ -141,9 +141,9 @@ TEST(LightPathPilot, IsSkippedWhereItWouldCostMoreThanASixteenthOfTheRender) {
 TEST(LightPathPilot, IsSkippedWhereNoLightStartsASubpath) {
   const LightPathChoice c = choose(test::loadTestScene(R"({
     "camera": {"width": 256, "height": 256, "spp": 64},
-    "spheres": [{"position": [0, -1000, 0], "radius": 999, "color": 0.5}],
-    "lights": [{"type": "sphere", "position": [0, 3, 0], "radius": 0.5, "intensity": 100}]})"));
-  EXPECT_FALSE(c.piloted);
+    "environment": {"color": 0.5},
+    "spheres": [{"position": [0, -1000, 0], "radius": 999, "color": 0.5}]})"));
+  EXPECT_FALSE(c.piloted);  // the environment, its only light, starts none
   EXPECT_EQ(c.rays.total(), 0u);
 }
 

@@ -2,12 +2,15 @@
 // render itself: a region's mean must lie within a few standard errors of the exact value.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <string>
 #include <vector>
 
 #include "core/constants.h"
+#include "render/aov_layers.h"
 #include "render_test_util.h"
 
 namespace candela {
@@ -64,6 +67,78 @@ TEST(ClosedForm, FurnaceInsideDiffuseSphereIsOne) {
       for (uint32_t x = 0; x < 32; ++x)
         ASSERT_NEAR(r.image.at(x, y)[c], 1.0, 2 * kZ * s.stddev + 1e-4) << x << "," << y;
   }
+}
+
+// (a') The same furnace lit instead by a large sphere light of radius r = 5 and the same power at
+// its centre (which light subpaths start from too, render/light_path.h; large, so that next-event
+// estimation, BSDF samples and connections all find it). From outside, a sphere light lights like
+// a point light of its power, so the direct radiance is again rho P / (4 pi^2 R^2) = 0.5; the
+// light covers f = (r / R)^2 of every wall point's cosine-weighted view and reflects nothing, so
+// each bounce returns rho (1 - f) of the last, alike everywhere: L = 0.5 / (1 - rho (1 - f)) =
+// 0.8. The camera, between the light and the wall, looks at the wall.
+TEST(ClosedForm, FurnaceAroundASphereLightMatchesItsSeries) {
+  const double radius = 10, power = 4 * kPi * kPi * radius * radius;
+  const double expected = 0.5 / (1 - 0.5 * (1 - 0.25));
+  const std::string scene = R"({
+    "camera": {"width": 32, "height": 32, "fov": 90, "position": [0, 0, 7],
+               "look_at": [0, 0, 10], "spp": 64},
+    "render": {"max_depth": 200},
+    "spheres": [{"position": [0, 0, 0], "radius": )" + num(radius) + R"(, "color": 0.5}],
+    "lights": [{"type": "sphere", "position": [0, 0, 0], "radius": 5, "intensity": )" +
+                            num(power) + R"(}]})";
+  EXPECT_GT(test::loadTestScene(scene).view().lightPathLights, 0u);  // the connections run
+  const RenderResult r = renderTestScene(scene);
+  for (int c = 0; c < 3; ++c) {
+    const auto s = regionStats(r.image, 0, 0, 32, 32, c);
+    EXPECT_NEAR(s.mean, expected, kZ * s.standardError() + 1e-4) << "channel " << c;
+  }
+}
+
+// (a'') The furnace lit by a small emissive triangle at its centre (side 0.2, radiance Le, facing
+// +z; light subpaths start from it too). Inside a sphere every wall patch sends a diffuse wall
+// point the same share of its light, dA / (4 pi R^2), so all light after one bounce arrives
+// alike everywhere: E_ind = rho Phi / (4 pi R^2) / (1 - rho), Phi = pi Le A. The direct part at
+// wall point p is Le A cos(theta_p) / R^2, theta_p between the triangle's normal and p (a small
+// triangle: within (0.2 / R)^2 of the exact integral, as is its shadow over the walls' exchange).
+// So each pixel, whose samples all pass through its centre, shows
+// rho / pi (Le A max(0, cos theta_p) / R^2 + E_ind) at the wall point the position pass gives.
+TEST(ClosedForm, FurnaceAroundATriangleLightMatchesItsSeries) {
+  const double radius = 10, rho = 0.5, side = 0.2, area = side * side * std::sqrt(3.0) / 4;
+  const double le = 4000;
+  const std::string obj = ::testing::TempDir() + "furnace_triangle.obj";
+  std::ofstream(obj) << "v " << -side / 2 << " " << -side * std::sqrt(3.0) / 6 << " 0\nv "
+                     << side / 2 << " " << -side * std::sqrt(3.0) / 6 << " 0\nv 0 "
+                     << side * std::sqrt(3.0) / 3 << " 0\nf 1 2 3\n";
+  const std::string scene = R"({
+    "camera": {"width": 32, "height": 32, "fov": 100, "position": [0, 4, 0],
+               "look_at": [0, 4, 10], "spp": 256},
+    "render": {"max_depth": 200, "antialiasing": false},
+    "spheres": [{"position": [0, 0, 0], "radius": )" + num(radius) + R"(, "color": )" +
+                            num(rho) + R"(}],
+    "objects": [{"file": ")" + obj + R"(", "material": {"type": "emissive", "radiance": )" +
+                            num(le) + R"(}}]})";
+  const SceneData data = test::loadTestScene(scene);
+  EXPECT_GT(data.view().lightPathLights, 0u);  // the connections run
+  RenderOptions options;
+  options.aovs = true;
+  const RenderResult r = renderCpu(data.view(), options);
+  const ImageLayer position = makeAovLayers(data, {Aov::Position}, r.aovs)[0];
+  const double indirect = rho * kPi * le * area / (4 * kPi * radius * radius) / (1 - rho);
+  double sumDifference = 0, sumSquares = 0;
+  const int n = 32 * 32;
+  for (int i = 0; i < n; ++i) {
+    const double px = position.pixels[3 * i], py = position.pixels[3 * i + 1],
+                 pz = position.pixels[3 * i + 2];
+    const double cosTheta = pz / std::sqrt(px * px + py * py + pz * pz);
+    const double expected =
+        rho / kPi * (le * area * std::max(0.0, cosTheta) / (radius * radius) + indirect);
+    const double d = r.image.pixels[3 * i] / expected - 1;  // the channels are alike
+    sumDifference += d;
+    sumSquares += d * d;
+  }
+  const double mean = sumDifference / n;
+  const double standardError = std::sqrt((sumSquares / n - mean * mean) / n);
+  EXPECT_NEAR(mean, 0.0, kZ * standardError + 2e-3);
 }
 
 // Writes a large square in the plane y = 0 (two triangles facing +y) into `dir`.

@@ -44,8 +44,8 @@ CANDELA_HDI_ALWAYS Ray spawnRay(const SurfacePoint& sp, const Vec3& wi) {
 // `*shadow` whose contribution is throughput times the light's share, weighted by the probability
 // selectPmf of sampling that light; no query where the light shows the point nothing.
 // `arrivalPdf` is the density in area measure with which the path's last BSDF sample found this
-// point where a light vertex could have been connected to instead (0 where not): a point light's
-// share is then weighted against that connection (render/light_path.h).
+// point where a light vertex could have been connected to instead (0 where not): the light's
+// share is then weighted against that connection too (render/light_path.h).
 CANDELA_HDI void sampleOneLight(const SceneView& scene, uint32_t index, float selectPmf,
                                 const Bsdf& bsdf, const SurfacePoint& sp, float u1, float u2,
                                 const Vec3& throughput, float arrivalPdf, ShadowQuery* shadow) {
@@ -63,8 +63,13 @@ CANDELA_HDI void sampleOneLight(const SceneView& scene, uint32_t index, float se
   }
   shadow->skipPrim = lightPrimitive(scene, light);
   const float lightPdf = selectPmf * ls.pdf;
+  const float subpathPdf =
+      !ls.isDelta && arrivalPdf > 0.0f && light.type != LightType::Environment
+          ? lightSubpathSolidAnglePdf(scene, index, sp.ng, ls.wi, arrivalPdf)
+          : 0.0f;
   const float weight =
-      !ls.isDelta ? powerHeuristic(lightPdf, bsdfPdf)
+      !ls.isDelta ? (subpathPdf > 0.0f ? powerHeuristic3(lightPdf, bsdfPdf, subpathPdf)
+                                       : powerHeuristic(lightPdf, bsdfPdf))
       : arrivalPdf > 0.0f
           ? powerHeuristic(arrivalPdf * selectPmf, lightVertexPdf(scene, index, sp.p, sp.ng))
           : 1.0f;
@@ -119,6 +124,11 @@ struct PathState {
   // without the 1 / eta^2 radiance scaling, which says nothing about the path's worth.
   float etaScale = 1.0f;
   Vec3 bouncePoint = Vec3(0.0f), bounceHemisphere = Vec3(0.0f);  // the last bounce's
+  // The last bounce's geometric normal, and the density by area with which the bounce before
+  // found its point where a light vertex could have been connected to instead (0 where not):
+  // an emitter the last bounce finds is then weighted against that connection.
+  Vec3 bounceNormal = Vec3(0.0f);
+  float bounceArrivalPdf = 0.0f;
   // The sample's light vertex (render/light_path.h), and whether the last interaction may be
   // connected to one, so that the next weighs its next-event estimation against that.
   LightVertex lightVertex;
@@ -190,9 +200,13 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
       if (light >= 0) {
         const float selectPmf =
             lightSelectPmf(scene, uint32_t(light), st.bouncePoint, st.bounceHemisphere);
-        weight = powerHeuristic(st.bsdfPdf,
-                                selectPmf * emitterPdf(scene, scene.lights[light], st.bouncePoint,
-                                                       st.ray.direction, hit.t, sp.ng));
+        const float neePdf = selectPmf * emitterPdf(scene, scene.lights[light], st.bouncePoint,
+                                                    st.ray.direction, hit.t, sp.ng);
+        const float subpathPdf =
+            lightSubpathSolidAnglePdf(scene, uint32_t(light), st.bounceNormal, st.ray.direction,
+                                      st.bounceArrivalPdf);
+        weight = subpathPdf > 0.0f ? powerHeuristic3(st.bsdfPdf, neePdf, subpathPdf)
+                                   : powerHeuristic(st.bsdfPdf, neePdf);
       }
       st.radiance += st.throughput * surfaceRadiance(scene, m, hit, sp) * weight;
     }
@@ -210,8 +224,8 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
   const Bsdf bsdf = makeBsdf(m, color, wo, sp.ng, sp.ns);
   const Vec3 hemisphere = reflectingHemisphere(bsdf);
   const bool smooth = hasSmoothLobe(m);
+  float arrivalPdf = 0.0f;
   if (smooth) {
-    float arrivalPdf = 0.0f;
     if (st.connectable && !st.specularBounce) {
       const Vec3 back = st.bouncePoint - sp.p;
       const float dist2 = dot(back, back);
@@ -254,6 +268,8 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
   st.bsdfPdf = bs.pdf;
   st.bouncePoint = sp.p;
   st.bounceHemisphere = hemisphere;
+  st.bounceNormal = sp.ng;
+  st.bounceArrivalPdf = arrivalPdf;
 
   if (depth >= kRouletteDepth) {
     const float survive = minf(0.95f, maxComponent(st.throughput) * st.etaScale);
@@ -277,6 +293,7 @@ CANDELA_HDI bool resumeBranch(PathState* path, SampleStream* rng) {
   path->etaScale = b.etaScale;
   path->specularBounce = true;  // a delta lobe: what it finds counts fully
   path->bsdfPdf = 0.0f;
+  path->bounceArrivalPdf = 0.0f;
   path->connectable = false;
   *rng = b.rng;
   return true;

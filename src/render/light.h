@@ -28,9 +28,9 @@ struct Light {
   // The light's path in the light tree (render/light_tree.h): its slot at each level, 3 bits
   // a level from the lowest, the root's first.
   uint64_t trail = kNotInLightTree;
-  // Point lights: the chance that a sample's light subpath starts here (render/light_path.h), by
-  // power, and the sum of those chances up to this light (1 from the last point light on); 0 for
-  // lights with a surface, which start none.
+  // The chance that a sample's light subpath starts here (render/light_path.h), by power (0 for
+  // the environment, which starts none), and the sum of those chances up to this light in
+  // SceneView::lightPathOrder (1 from the last light with a chance on).
   float pathPmf = 0.0f, pathCdf = 0.0f;
 };
 

@@ -1,25 +1,34 @@
-// Light-vertex connections: the second strategy by which paths reach point lights.
+// Light-vertex connections: a further strategy by which paths reach the lights.
 //
-// Next-event estimation reaches a point light from the last surface y of a path whose earlier
-// vertex x scattered towards y: y is found by x's BSDF sample, so where a light brightens a small
-// patch of the scene (a wall beside a lamp) few of those samples find it, and indirect light
-// is noisy. Each sample therefore also starts one light subpath: a point light picked by power
-// emits a ray uniformly over the sphere, and its first hit y, found by the light, is connected by
-// a shadow ray to every interaction x of the camera path that may scatter (as bidirectional path
-// tracing's strategy s = 2 does). The two strategies are combined with the power heuristic over
-// the density of y in area measure: the BSDF's at x, p(x -> y) = pdf(wi) |cos_y| / |x - y|^2,
-// times the pick of the light at y; and the light's, pick(l) |cos_y'| / (4 pi r^2). Lights with
-// a surface are reached by their own two strategies (render/integrator.h) and start no subpath.
+// Next-event estimation reaches a light from the last surface y of a path whose earlier vertex x
+// scattered towards y: y is found by x's BSDF sample, so where a light brightens a small patch of
+// the scene (a wall beside a lamp) few of those samples find it, and indirect light is noisy.
+// Each sample therefore also starts one light subpath: a light picked by power emits a ray (a
+// point light uniformly over the sphere; a light with a surface from a point uniform over its
+// area, cosine-distributed about its normal), and its first hit y, found by the light, is
+// connected by a shadow ray to every interaction x of the camera path that may scatter (as
+// bidirectional path tracing's strategy s = 2 does).
+//
+// The strategies are combined by the power heuristic over the density of the whole of (y, light
+// point) in area measure. For a point light there are two: x's BSDF sample finds y, whose
+// next-event estimation picks the light, p(x -> y) pick(l at y), with p(x -> y) = pdf(wi)
+// |cos_y| / |x - y|^2; and the light's, pathPick(l) |cos_y| / (4 pi r^2). A light with a surface
+// is also reached by y's BSDF sample, so it has three: those two, each times the density of the
+// light's point L from y (next-event estimation's, or the BSDF's, by area at L), and the light's,
+// pathPick(l) / area(l) |cos_L| / pi |cos_y| / |y - L|^2.
 #pragma once
 
 #include <cmath>
 
 #include "core/constants.h"
 #include "core/float_error.h"
+#include "core/frame.h"
 #include "core/sampling.h"
 #include "core/sobol_sampler.h"
 #include "geometry/surface.h"
 #include "render/bsdf.h"
+#include "render/light_emission.h"
+#include "render/light_sample.h"
 #include "render/light_selection.h"
 #include "render/ray_counters.h"
 #include "render/shadow_query.h"
@@ -32,22 +41,30 @@ namespace candela {
 struct LightVertex {
   SurfacePoint sp;
   Vec3 color;    // the surface's colour there (textures included)
-  Vec3 toLight;  // unit direction from sp.p to the light
-  Vec3 power;    // the light's power over its pick probability
+  Vec3 toLight;  // unit direction from sp.p to the light (its point L where it has a surface)
+  // What the light sends to the vertex over the density of the subpath up to it, less the
+  // geometry term between the two: a point light's power over its pick; a surface's radiance at
+  // L times pi over the pick and the density of L by area.
+  Vec3 power;
   uint32_t light = 0;
-  float pdfArea = 0.0f;  // lightVertexPdf of the vertex
+  float pdfArea = 0.0f;  // the subpath's density of the vertex (with L's, for a surface)
+  // A light with a surface: the cosine at L towards the vertex over their squared distance, and
+  // that distance, for the densities with which the camera path's strategies reach L.
+  float cosOverDist2 = 0.0f, distance = 0.0f;
+  Vec3 lightNormal = Vec3(0.0f);
+  bool area = false;
   bool valid = false;
 };
 
-// The chance that a light subpath starts from light `index`: by power, point lights alone
-// (scene/flatten.cpp, setLightPathPicks).
+// The chance that a light subpath starts from light `index`: by power
+// (scene/flatten.cpp, setLightPathPicks); the environment starts none.
 CANDELA_HDI float lightPathPmf(const SceneView& scene, uint32_t index) {
   return scene.lights[index].pathPmf;
 }
 
-// The density, in area measure, with which a light subpath from light `index` reaches the point p
-// of geometric normal ng as its first vertex: its pick, times its uniform emission 1 / (4 pi)
-// carried to p's surface.
+// The density, in area measure, with which a light subpath from point light `index` reaches the
+// point p of geometric normal ng as its first vertex: its pick, times its uniform emission
+// 1 / (4 pi) carried to p's surface.
 CANDELA_HDI float lightVertexPdf(const SceneView& scene, uint32_t index, const Vec3& p,
                                  const Vec3& ng) {
   const float pmf = lightPathPmf(scene, index);
@@ -57,23 +74,43 @@ CANDELA_HDI float lightVertexPdf(const SceneView& scene, uint32_t index, const V
   return pmf * (0.25f * kInvPi) * fabsf(dot(ng, d)) / (r2 * sqrtf(r2));
 }
 
-// The point light a subpath starts from, for u in [0, 1): the first whose cumulative pick
-// exceeds u (lights without a pick have none to exceed it with).
+// Where next-event estimation at p (geometric normal ng, found by a BSDF sample of density
+// `arrivalPdf` by area) reaches a point of area light `index` in direction wi, the density with
+// which a light subpath would have made that path instead, in the measure of next-event
+// estimation's own density (solid angle at p, the densities of p cancelled):
+// pathPick / area |cos_p| / (pi arrivalPdf). 0 for a light that starts no subpath.
+CANDELA_HDI float lightSubpathSolidAnglePdf(const SceneView& scene, uint32_t index,
+                                            const Vec3& ng, const Vec3& wi, float arrivalPdf) {
+  const Light& light = scene.lights[index];
+  const float pmf = lightPathPmf(scene, index);
+  if (pmf == 0.0f || !(arrivalPdf > 0.0f)) return 0.0f;
+  return pmf * emissionAreaPdf(scene, light) * fabsf(dot(ng, wi)) * kInvPi / arrivalPdf;
+}
+
+// The power heuristic weight of the strategy of density `a` among three.
+CANDELA_HDI float powerHeuristic3(float a, float b, float c) {
+  const float a2 = a * a;
+  return a2 / (a2 + b * b + c * c);
+}
+
+// The light a subpath starts from, for u in [0, 1): in lightPathOrder, the first whose
+// cumulative pick exceeds u (lights without a pick have none to exceed it with).
 CANDELA_HDI uint32_t pickLightPathLight(const SceneView& scene, float u) {
-  uint32_t lo = 0, hi = scene.lightCount - 1;
+  uint32_t lo = 0, hi = scene.lightPathOrderCount - 1;
   while (lo < hi) {
     const uint32_t mid = (lo + hi) / 2;
-    if (scene.lights[mid].pathCdf > u)
+    if (scene.lights[scene.lightPathOrder[mid]].pathCdf > u)
       hi = mid;
     else
       lo = mid + 1;
   }
-  return lo;
+  return scene.lightPathOrder[lo];
 }
 
 // Starts the sample's light subpath, from the stream's next dimensions (one for the pick where
-// more than one light may start it, two for the direction), and records its first vertex in *lv
-// (valid only where that surface may be connected to).
+// more than one light may start it, two for the direction, and where lights with a surface start
+// subpaths two for the point, which a point light passes over), and records its first vertex in
+// *lv (valid only where that surface may be connected to).
 template <class Tracer>
 CANDELA_HDI void traceLightVertex(const SceneView& scene, const Tracer& tracer, SampleStream& rng,
                                   RayCounters& counters, LightVertex* lv) {
@@ -82,9 +119,23 @@ CANDELA_HDI void traceLightVertex(const SceneView& scene, const Tracer& tracer, 
   rng.next2D(&u1, &u2);
   const uint32_t index = pickLightPathLight(scene, uPick);
   const Light& light = scene.lights[index];
+  const bool area = light.type != LightType::Point;
+  float v1 = 0.0f, v2 = 0.0f;
+  if (scene.areaLightPaths) rng.next2DIfUsed(area, &v1, &v2);
   Ray ray;
-  ray.origin = light.position;
-  ray.direction = sampleUniformCone(u1, u2, 2.0f);  // the whole sphere
+  EmissionPoint e;
+  float emitCos = 0.0f;
+  if (area) {
+    e = sampleEmissionPoint(scene, light, v1, v2);
+    const Vec3 local = sampleCosineHemisphere(u1, u2);
+    emitCos = local.z;
+    if (!(emitCos > 0.0f) || isBlack(e.radiance)) return;
+    ray.direction = normalize(Frame(e.n).toWorld(local));
+    ray.origin = offsetRayOrigin(e.p, e.error, e.n, ray.direction);
+  } else {
+    ray.origin = light.position;
+    ray.direction = sampleUniformCone(u1, u2, 2.0f);  // the whole sphere
+  }
   Hit hit;
   ++counters.bounce;
   if (!tracer.closest(ray, &hit)) return;
@@ -95,8 +146,23 @@ CANDELA_HDI void traceLightVertex(const SceneView& scene, const Tracer& tracer, 
   lv->color = surfaceColor(scene, m, hit, sp);
   lv->toLight = -ray.direction;
   lv->light = index;
-  lv->power = light.power / lightPathPmf(scene, index);
-  lv->pdfArea = lightVertexPdf(scene, index, sp.p, sp.ng);
+  lv->area = area;
+  if (!area) {
+    lv->power = light.power / lightPathPmf(scene, index);
+    lv->pdfArea = lightVertexPdf(scene, index, sp.p, sp.ng);
+  } else {
+    // The subpath's density: pick / area at L, cos_L / pi towards the vertex, carried to its
+    // surface by |cos_y| / d^2. What the light sends over it, less the geometry term, is then
+    // radiance pi / (pick / area).
+    const float startPdf = lightPathPmf(scene, index) * emissionAreaPdf(scene, light);
+    const Vec3 span = e.p - sp.p;
+    const float dist2 = dot(span, span);
+    lv->distance = sqrtf(dist2);
+    lv->cosOverDist2 = emitCos / dist2;
+    lv->lightNormal = e.n;
+    lv->power = e.radiance * (kPi / startPdf);
+    lv->pdfArea = startPdf * emitCos * kInvPi * fabsf(dot(sp.ng, ray.direction)) / dist2;
+  }
   lv->valid = lv->pdfArea > 0.0f;
 }
 
@@ -122,10 +188,20 @@ CANDELA_HDI void connectLightVertex(const SceneView& scene, const LightVertex& l
   const float cosIn = fabsf(dot(lv.sp.ng, lv.toLight)), cosOut = fabsf(dot(lv.sp.ng, wi));
   if (isBlack(fThere) || !(cosIn > 0.0f)) return;
   // Next-event estimation at lv would have reached this path with the density of x's BSDF
-  // sample towards lv times lv's pick of the light.
-  const float pdfBsdf = pdfHere * cosOut / dist2 *
-                        lightSelectPmf(scene, lv.light, lv.sp.p, reflectingHemisphere(there));
-  const float weight = powerHeuristic(lv.pdfArea, pdfBsdf);
+  // sample towards lv times lv's pick of the light (and, for a light with a surface, the density
+  // of its point L from lv; lv's BSDF sample too, by its density towards L).
+  const float pick = lightSelectPmf(scene, lv.light, lv.sp.p, reflectingHemisphere(there));
+  float weight;
+  if (!lv.area) {
+    const float pdfBsdf = pdfHere * cosOut / dist2 * pick;
+    weight = powerHeuristic(lv.pdfArea, pdfBsdf);
+  } else {
+    const float toVertex = pdfHere * cosOut / dist2;
+    const float neePdf = pick * emitterPdf(scene, scene.lights[lv.light], lv.sp.p, lv.toLight,
+                                           lv.distance, lv.lightNormal);
+    weight = powerHeuristic3(lv.pdfArea, toVertex * neePdf * lv.cosOverDist2,
+                             toVertex * pdfThere * lv.cosOverDist2);
+  }
   // The light's 1 / (4 pi r^2) irradiance over its density of lv leaves power / (cos_in pick).
   query->contribution =
       throughput * fHere * fThere * lv.power * (weight * cosOut / (dist2 * cosIn));

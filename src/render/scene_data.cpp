@@ -19,8 +19,9 @@ SceneView SceneData::view() const {
   v.lonePointLight = lonePointLight;
   v.lightPathLights = settings.integrator == IntegratorType::Path && settings.maxDepth >= 2 &&
                               settings.lightPaths != LightPaths::Off
-                          ? pointLightsWithPower
+                          ? lightsStartingPaths
                           : 0;
+  v.areaLightPaths = v.lightPathLights > 0 && areaLightsStartPaths;
   v.glassSplitDepth = kGlassSplitDepth;
   v.environmentShare = environmentShare;
   v.environment = environment;

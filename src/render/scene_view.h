@@ -28,6 +28,8 @@ namespace candela {
 // environment) and envConditionalCdf/envMarginalCdf with their guide tables its sampling
 // distribution (core/distribution2d.h). materialMotions, parallel to materials, is the motion of
 // each material's instance to the next frame; only renders with the flow pass have it.
+// lightPathOrder lists the lights in the order their light-subpath picks are laid out over
+// [0, 1) (render/light_path.h, pickLightPathLight).
 #define CANDELA_SHADING_ARRAYS(X)                                            \
   X(Material, materials, materialCount, Values)                              \
   X(Light, lights, lightCount, Values)                                       \
@@ -37,7 +39,8 @@ namespace candela {
   X(float, envMarginalCdf, envMarginalCdfCount, EnvironmentMap)              \
   X(uint32_t, envConditionalGuide, envConditionalGuideCount, EnvironmentMap) \
   X(uint32_t, envMarginalGuide, envMarginalGuideCount, EnvironmentMap)       \
-  X(InstanceMotion, materialMotions, materialMotionCount, Values)
+  X(InstanceMotion, materialMotions, materialMotionCount, Values)              \
+  X(uint32_t, lightPathOrder, lightPathOrderCount, Values)
 
 // Every array of the kernel's scene: SceneData, SceneData::view and the CUDA upload expand
 // this.
@@ -50,9 +53,11 @@ struct SceneView : GeometryView {
   // Whether the scene's one light is a point light, which next-event estimation samples without
   // a pick (render/light.h, isLonePointLight).
   bool lonePointLight = false;
-  // How many point lights start light subpaths (render/light_path.h): those with power, where
-  // the integrator is "path" and a path may have two interactions; 0 for none.
+  // How many lights start light subpaths (render/light_path.h): those with power but the
+  // environment, where the integrator is "path" and a path may have two interactions; 0 for
+  // none. Where some of them have a surface, each subpath draws two numbers for its point.
   uint32_t lightPathLights = 0;
+  bool areaLightPaths = false;
   // Paths follow both lobes of smooth glass at interactions up to this depth (0: at none), the
   // reflection as a branch (render/path_branch.h).
   uint32_t glassSplitDepth = 0;

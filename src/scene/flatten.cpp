@@ -211,34 +211,66 @@ uint64_t lightTreeHash(const std::vector<LightBounds>& bounds) {
   return h;
 }
 
-// The chances that a sample's light subpath starts from each point light, by the sum of its RGB
-// power (as the light tree weighs lights), and their running sums (render/light.h).
+// Whether triangle a comes before b in the order of their vertices' places and then materials.
+bool triangleBefore(const SceneData& s, const Triangle& a, const Triangle& b) {
+  for (int k = 0; k < 3; ++k) {
+    const Vec3 &p = s.positions[a.v[k]], &q = s.positions[b.v[k]];
+    if (p.x != q.x) return p.x < q.x;
+    if (p.y != q.y) return p.y < q.y;
+    if (p.z != q.z) return p.z < q.z;
+  }
+  return a.material < b.material;
+}
+
+// The order in which the lights' subpath picks are laid out over [0, 1): the lights as listed,
+// but the triangles' (the last lights, in triangle order) by their vertices' places, which do not
+// depend on the order of the triangle array: an own BVH renumbers it in its leaf order, Embree's
+// engine does not, and both must map a number to the same light.
+std::vector<uint32_t> lightPathOrder(const SceneData& s) {
+  std::vector<uint32_t> order(s.lights.size());
+  for (uint32_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin() + std::min<size_t>(s.firstTriangleLight, order.size()),
+                   order.end(), [&s](uint32_t a, uint32_t b) {
+                     return triangleBefore(s, s.triangles[s.lights[a].shape],
+                                           s.triangles[s.lights[b].shape]);
+                   });
+  return order;
+}
+
+// The chances that a sample's light subpath starts from each light but the environment, by the
+// sum of its RGB power (as the light tree weighs lights), and their running sums in
+// lightPathOrder (render/light.h).
 void setLightPathPicks(SceneData& s) {
-  const auto pathPower = [](const Light& l) {
-    return l.type == LightType::Point ? std::max(0.0, componentSum(l.power)) : 0.0;
-  };
+  std::vector<double> powers;
+  for (const Light& l : s.lights)
+    powers.push_back(l.type == LightType::Environment ? 0.0 : lightBounds(s, l).power);
   double total = 0;
-  for (const Light& l : s.lights) total += pathPower(l);
-  s.pointLightsWithPower = 0;
+  for (const double power : powers) total += power;
+  s.lightsStartingPaths = 0;
+  s.areaLightsStartPaths = false;
+  s.lightPathOrder.clear();
   if (!(total > 0)) {
     for (Light& l : s.lights) l.pathPmf = l.pathCdf = 0.0f;
     return;
   }
+  const std::vector<uint32_t> order = lightPathOrder(s);
   double sum = 0;
   uint32_t last = 0;
-  for (uint32_t i = 0; i < s.lights.size(); ++i) {
+  for (uint32_t k = 0; k < order.size(); ++k) {
+    const uint32_t i = order[k];
     Light& l = s.lights[i];
-    const double power = pathPower(l);
-    sum += power;
-    l.pathPmf = float(power / total);
+    sum += powers[i];
+    l.pathPmf = float(powers[i] / total);
     l.pathCdf = float(sum / total);
     if (l.pathPmf > 0.0f) {
-      ++s.pointLightsWithPower;
-      last = i;
+      ++s.lightsStartingPaths;
+      s.areaLightsStartPaths |= l.type != LightType::Point;
+      last = k;
     }
   }
   // The last pick must hold every u < 1, whatever the rounding of the sums.
-  for (uint32_t i = last; i < s.lights.size(); ++i) s.lights[i].pathCdf = 1.0f;
+  for (uint32_t k = last; k < order.size(); ++k) s.lights[order[k]].pathCdf = 1.0f;
+  s.lightPathOrder.assign(order.begin(), order.end());
 }
 
 }  // namespace

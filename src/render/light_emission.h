@@ -1,0 +1,64 @@
+// Where a light subpath leaves a light with a surface (render/light_path.h): a point uniform over
+// the light's area, with the radiance that leaves it. Next-event estimation samples the same
+// lights from a shading point instead (render/light_sample.h).
+#pragma once
+
+#include <cmath>
+
+#include "core/constants.h"
+#include "core/float_error.h"
+#include "core/sampling.h"
+#include "render/light.h"
+#include "render/scene_view.h"
+#include "render/surface_color.h"
+
+namespace candela {
+
+// A point on a light's surface: its place (within `error` per axis), the unit normal of the
+// side that emits, and the radiance that leaves it there.
+struct EmissionPoint {
+  Vec3 p, error, n, radiance;
+};
+
+// The density by area with which sampleEmissionPoint picks a point of area light `l`: one over
+// its area (a sphere's whole surface, a triangle's one side).
+CANDELA_HDI float emissionAreaPdf(const SceneView& scene, const Light& l) {
+  if (l.type == LightType::Sphere) {
+    const float r = scene.spheres[l.shape].radius;
+    return 1.0f / (4.0f * kPi * r * r);
+  }
+  const Triangle& tri = scene.triangles[l.shape];
+  const Vec3& p0 = scene.positions[tri.v[0]];
+  const float twiceArea = length(cross(scene.positions[tri.v[1]] - p0, scene.positions[tri.v[2]] - p0));
+  return twiceArea > 0.0f ? 2.0f / twiceArea : 0.0f;
+}
+
+// A point uniform over the surface of area light `l` (a sphere or a triangle) for (u1, u2) in
+// [0, 1)^2.
+CANDELA_HDI EmissionPoint sampleEmissionPoint(const SceneView& scene, const Light& l, float u1,
+                                              float u2) {
+  EmissionPoint e;
+  if (l.type == LightType::Sphere) {
+    const Sphere& s = scene.spheres[l.shape];
+    e.n = sampleUniformCone(u1, u2, 2.0f);  // the whole sphere of directions
+    const Vec3 local = e.n * s.radius;
+    e.p = s.center + local;
+    e.error = gammaBound(5) * abs(local) + gammaBound(1) * abs(e.p);  // as sphereSurfaceAt's
+    e.radiance = scene.materials[s.material].radiance;
+    return e;
+  }
+  const Triangle& tri = scene.triangles[l.shape];
+  const Vec3& p0 = scene.positions[tri.v[0]];
+  const Vec3& p1 = scene.positions[tri.v[1]];
+  const Vec3& p2 = scene.positions[tri.v[2]];
+  const float su = sqrtf(u1);
+  const float b1 = 1.0f - su, b2 = u2 * su, b0 = 1.0f - b1 - b2;
+  e.p = b0 * p0 + b1 * p1 + b2 * p2;
+  // pbrt-v4's bound on a point interpolated from three vertices.
+  e.error = gammaBound(7) * (abs(b0 * p0) + abs(b1 * p1) + abs(b2 * p2));
+  e.n = normalize(cross(p1 - p0, p2 - p0));  // the outside, which alone emits
+  e.radiance = triangleRadiance(scene, scene.materials[tri.material], tri, b1, b2);
+  return e;
+}
+
+}  // namespace candela
