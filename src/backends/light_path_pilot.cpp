@@ -1,6 +1,10 @@
 // The light-path pilot; see light_path_pilot.h.
 #include "backends/light_path_pilot.h"
 
+#include <algorithm>
+#include <cstddef>
+#include <vector>
+
 #include "core/rng.h"
 
 namespace candela {
@@ -18,19 +22,29 @@ struct PilotImages {
   RenderResult a, b;  // two seeds
 };
 
-// Variance of a pixel's value (over the two seeds' difference) relative to the squared mean.
+// Variance of a pixel's value (over the two seeds' difference) relative to the squared mean,
+// each pixel's share capped at the kPilotTrimmedShare quantile of the pixels' shares.
 double relativeVariance(const PilotImages& p) {
   const std::vector<float>& a = p.a.image.pixels;
   const std::vector<float>& b = p.b.image.pixels;
-  double sum = 0, squares = 0;
+  const size_t pixels = a.size() / 3;
+  double sum = 0;
+  std::vector<double> squares(pixels, 0.0);
   for (size_t i = 0; i < a.size(); ++i) {
     sum += double(a[i]) + double(b[i]);
     const double d = double(a[i]) - double(b[i]);
-    squares += d * d;
+    squares[i / 3] += d * d;
   }
+  if (pixels == 0) return 0;
+  std::vector<double> sorted = squares;
+  const size_t at = std::min(pixels - 1, size_t(double(pixels) * (1.0 - kPilotTrimmedShare)));
+  std::nth_element(sorted.begin(), sorted.begin() + ptrdiff_t(at), sorted.end());
+  const double cap = sorted[at];
+  double capped = 0;
+  for (const double s : squares) capped += std::min(s, cap);
   const double n = double(a.size());
   const double mean = sum / (2 * n);
-  return squares / (2 * n) / (mean * mean);
+  return capped / (2 * n) / (mean * mean);
 }
 
 double raysPerPixel(const PilotImages& p) {

@@ -7,7 +7,7 @@
 // (the default) a pilot renders a sparse sample of the image's pixels (every stride-th
 // in x and y, about 16k) with and without light subpaths, twice each with seeds of its
 // own, and keeps the estimator of lower variance (from the two seeds' difference, relative to
-// the image's mean) times cost (rays traced; those a light subpath adds weigh
+// the image's mean, the noisiest half percent of the pixels capped) times cost (rays traced; those a light subpath adds weigh
 // kLightPathRayCost, for the shading each connection also does). The pilot is a function of the
 // scene and its seed, so the image is the same on every run and thread count, on either backend
 // (up to rounding where the two estimators tie) and in every sample range of a distributed
@@ -29,6 +29,10 @@ constexpr double kPilotShare = 1.0 / 16.0;
 // The cost of a ray a light subpath adds, relative to the others: its connection's two BSDF
 // evaluations and weight come with it.
 constexpr double kLightPathRayCost = 1.25;
+// The pilot's variance caps each pixel's share at what all but this share of the pixels stay
+// under: a few pixels whose noise is the same either way (the rim of a lamp seen directly, of
+// radiance far above the rest) would otherwise outweigh the light the connections are for.
+constexpr double kPilotTrimmedShare = 0.005;
 
 struct LightPathChoice {
   bool lightPaths = true;  // what the render should do (RenderOptions::adjust.lightPaths)
