@@ -55,7 +55,8 @@ TEST(LightPaths, EveryLightButTheEnvironmentStartsSubpathsByPower) {
 TEST(LightPaths, PointLightsAloneDrawNoNumbersForAPoint) {
   const SceneData data = test::loadTestScene(R"({
     "camera": {"width": 4, "height": 4, "spp": 1},
-    "lights": [{"position": [0, 1, 0], "intensity": 10}, {"position": [1, 1, 0], "intensity": 5}]})");
+    "lights": [{"position": [0, 1, 0], "intensity": 10},
+               {"position": [1, 1, 0], "intensity": 5}]})");
   EXPECT_EQ(data.view().lightPathLights, 2u);
   EXPECT_FALSE(data.view().areaLightPaths);
 }

@@ -36,10 +36,10 @@ double relativeVariance(const PilotImages& p) {
     squares[i / 3] += d * d;
   }
   if (pixels == 0) return 0;
-  std::vector<double> sorted = squares;
+  // The capped sum does not depend on the order, so the quantile is found in place.
   const size_t at = std::min(pixels - 1, size_t(double(pixels) * (1.0 - kPilotTrimmedShare)));
-  std::nth_element(sorted.begin(), sorted.begin() + ptrdiff_t(at), sorted.end());
-  const double cap = sorted[at];
+  std::nth_element(squares.begin(), squares.begin() + ptrdiff_t(at), squares.end());
+  const double cap = squares[at];
   double capped = 0;
   for (const double s : squares) capped += std::min(s, cap);
   const double n = double(a.size());

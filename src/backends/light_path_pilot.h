@@ -1,18 +1,18 @@
-// Whether a render's samples start light subpaths from point lights, decided by a pilot render.
+// Whether a render's samples start light subpaths, decided by a pilot render.
 //
-// Light-vertex connections (render/light_path.h) cut the noise of indirect light where a point
-// light brightens small patches (a lamp beside a wall) and cost a sample about half again as many
+// Light-vertex connections (render/light_path.h) cut the noise of indirect light where a light
+// brightens small patches (a lamp beside a wall) and cost a sample about half again as many
 // rays. Where the lights hang far from every surface, BSDF samples find what they light and the
 // connections cost more than they save. Which holds is the scene's, so for `light_paths: "auto"`
-// (the default) a pilot renders a sparse sample of the image's pixels (every stride-th
-// in x and y, about 16k) with and without light subpaths, twice each with seeds of its
-// own, and keeps the estimator of lower variance (from the two seeds' difference, relative to
-// the image's mean, the noisiest half percent of the pixels capped) times cost (rays traced; those a light subpath adds weigh
-// kLightPathRayCost, for the shading each connection also does). The pilot is a function of the
-// scene and its seed, so the image is the same on every run and thread count, on either backend
-// (up to rounding where the two estimators tie) and in every sample range of a distributed
-// render. Where the pilot's samples would exceed a sixteenth of the render's it is skipped and
-// light subpaths stay on. docs/performance.md has the measurements.
+// (the default) a pilot renders a sparse sample of the image's pixels (every stride-th in x and
+// y, about 16k) with and without light subpaths, twice each with seeds of its own, and keeps the
+// estimator of lower variance (from the two seeds' difference, relative to the image's mean, the
+// noisiest half percent of the pixels capped) times cost (rays traced; those a light subpath
+// adds weigh kLightPathRayCost, for the shading each connection also does). The pilot is a
+// function of the scene and its seed, so the image is the same on every run and thread count,
+// on either backend (up to rounding where the two estimators tie) and in every sample range of a
+// distributed render. Where the pilot's samples would exceed a sixteenth of the render's it is
+// skipped and light subpaths stay on. docs/performance.md has the measurements.
 #pragma once
 
 #include "backends/render_options.h"

@@ -40,6 +40,14 @@ CANDELA_HDI Vec3 sampleCosineHemisphere(float u1, float u2) {
 }
 CANDELA_HDI float cosineHemispherePdf(float cosTheta) { return cosTheta > 0.0f ? cosTheta * kInvPi : 0.0f; }
 
+// Barycentrics (b[0], b[1], b[2]) of a point uniform over a triangle's area.
+CANDELA_HDI void sampleUniformTriangle(float u1, float u2, float b[3]) {
+  const float su = sqrtf(u1);
+  b[1] = 1.0f - su;
+  b[2] = u2 * su;
+  b[0] = 1.0f - b[1] - b[2];
+}
+
 // Uniform direction within the cone around +z of half-angle theta_max, given 1 - cos(theta_max)
 // (which callers compute without cancellation for narrow cones); pdf = 1 / (2 pi (1 - cos)).
 CANDELA_HDI Vec3 sampleUniformCone(float u1, float u2, float oneMinusCosThetaMax) {

@@ -63,13 +63,11 @@ CANDELA_HDI void sampleOneLight(const SceneView& scene, uint32_t index, float se
   }
   shadow->skipPrim = lightPrimitive(scene, light);
   const float lightPdf = selectPmf * ls.pdf;
-  const float subpathPdf =
-      !ls.isDelta && arrivalPdf > 0.0f && light.type != LightType::Environment
-          ? lightSubpathSolidAnglePdf(scene, index, sp.ng, ls.wi, arrivalPdf)
-          : 0.0f;
+  // A light with a surface is also reached by the light subpath's connection (none: density 0).
   const float weight =
-      !ls.isDelta ? (subpathPdf > 0.0f ? powerHeuristic3(lightPdf, bsdfPdf, subpathPdf)
-                                       : powerHeuristic(lightPdf, bsdfPdf))
+      !ls.isDelta
+          ? powerHeuristic3(lightPdf, bsdfPdf,
+                            lightSubpathSolidAnglePdf(scene, index, sp.ng, ls.wi, arrivalPdf))
       : arrivalPdf > 0.0f
           ? powerHeuristic(arrivalPdf * selectPmf, lightVertexPdf(scene, index, sp.p, sp.ng))
           : 1.0f;
@@ -205,8 +203,7 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
         const float subpathPdf =
             lightSubpathSolidAnglePdf(scene, uint32_t(light), st.bounceNormal, st.ray.direction,
                                       st.bounceArrivalPdf);
-        weight = subpathPdf > 0.0f ? powerHeuristic3(st.bsdfPdf, neePdf, subpathPdf)
-                                   : powerHeuristic(st.bsdfPdf, neePdf);
+        weight = powerHeuristic3(st.bsdfPdf, neePdf, subpathPdf);
       }
       st.radiance += st.throughput * surfaceRadiance(scene, m, hit, sp) * weight;
     }

@@ -32,6 +32,9 @@ struct Light {
   // the environment, which starts none), and the sum of those chances up to this light in
   // SceneView::lightPathOrder (1 from the last light with a chance on).
   float pathPmf = 0.0f, pathCdf = 0.0f;
+  // A light with a surface: pathPmf times the density by area of a subpath's point on it
+  // (render/light_emission.h, emissionAreaPdf); 0 for the others.
+  float pathAreaPdf = 0.0f;
 };
 
 // Whether the `count` lights are one point light, which next-event estimation then samples at

@@ -29,7 +29,8 @@ CANDELA_HDI float emissionAreaPdf(const SceneView& scene, const Light& l) {
   }
   const Triangle& tri = scene.triangles[l.shape];
   const Vec3& p0 = scene.positions[tri.v[0]];
-  const float twiceArea = length(cross(scene.positions[tri.v[1]] - p0, scene.positions[tri.v[2]] - p0));
+  const float twiceArea =
+      length(cross(scene.positions[tri.v[1]] - p0, scene.positions[tri.v[2]] - p0));
   return twiceArea > 0.0f ? 2.0f / twiceArea : 0.0f;
 }
 
@@ -51,13 +52,13 @@ CANDELA_HDI EmissionPoint sampleEmissionPoint(const SceneView& scene, const Ligh
   const Vec3& p0 = scene.positions[tri.v[0]];
   const Vec3& p1 = scene.positions[tri.v[1]];
   const Vec3& p2 = scene.positions[tri.v[2]];
-  const float su = sqrtf(u1);
-  const float b1 = 1.0f - su, b2 = u2 * su, b0 = 1.0f - b1 - b2;
-  e.p = b0 * p0 + b1 * p1 + b2 * p2;
+  float b[3];
+  sampleUniformTriangle(u1, u2, b);
+  e.p = b[0] * p0 + b[1] * p1 + b[2] * p2;
   // pbrt-v4's bound on a point interpolated from three vertices.
-  e.error = gammaBound(7) * (abs(b0 * p0) + abs(b1 * p1) + abs(b2 * p2));
+  e.error = gammaBound(7) * (abs(b[0] * p0) + abs(b[1] * p1) + abs(b[2] * p2));
   e.n = normalize(cross(p1 - p0, p2 - p0));  // the outside, which alone emits
-  e.radiance = triangleRadiance(scene, scene.materials[tri.material], tri, b1, b2);
+  e.radiance = triangleRadiance(scene, scene.materials[tri.material], tri, b[1], b[2]);
   return e;
 }
 

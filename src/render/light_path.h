@@ -81,13 +81,13 @@ CANDELA_HDI float lightVertexPdf(const SceneView& scene, uint32_t index, const V
 // pathPick / area |cos_p| / (pi arrivalPdf). 0 for a light that starts no subpath.
 CANDELA_HDI float lightSubpathSolidAnglePdf(const SceneView& scene, uint32_t index,
                                             const Vec3& ng, const Vec3& wi, float arrivalPdf) {
-  const Light& light = scene.lights[index];
-  const float pmf = lightPathPmf(scene, index);
-  if (pmf == 0.0f || !(arrivalPdf > 0.0f)) return 0.0f;
-  return pmf * emissionAreaPdf(scene, light) * fabsf(dot(ng, wi)) * kInvPi / arrivalPdf;
+  const float start = scene.lights[index].pathAreaPdf;
+  if (start == 0.0f || !(arrivalPdf > 0.0f)) return 0.0f;
+  return start * fabsf(dot(ng, wi)) * kInvPi / arrivalPdf;
 }
 
-// The power heuristic weight of the strategy of density `a` among three.
+// The power heuristic weight of the strategy of density `a` among three (c = 0: between two,
+// to the bit, as powerHeuristic).
 CANDELA_HDI float powerHeuristic3(float a, float b, float c) {
   const float a2 = a * a;
   return a2 / (a2 + b * b + c * c);
@@ -154,7 +154,7 @@ CANDELA_HDI void traceLightVertex(const SceneView& scene, const Tracer& tracer, 
     // The subpath's density: pick / area at L, cos_L / pi towards the vertex, carried to its
     // surface by |cos_y| / d^2. What the light sends over it, less the geometry term, is then
     // radiance pi / (pick / area).
-    const float startPdf = lightPathPmf(scene, index) * emissionAreaPdf(scene, light);
+    const float startPdf = light.pathAreaPdf;
     const Vec3 span = e.p - sp.p;
     const float dist2 = dot(span, span);
     lv->distance = sqrtf(dist2);

@@ -147,10 +147,7 @@ CANDELA_HDI bool sampleTriangleLight(const SceneView& scene, const Light& l, con
     float unused;
     if (!sampleSphericalTriangle(p0, p1, p2, p, u1, u2, b, &unused)) return false;
   } else {
-    const float su = sqrtf(u1);
-    b[1] = 1.0f - su;
-    b[2] = u2 * su;
-    b[0] = 1.0f - b[1] - b[2];
+    sampleUniformTriangle(u1, u2, b);
   }
   const Vec3 toLight = (b[0] * p0 + b[1] * p1 + b[2] * p2) - p;
   const float dist2 = lengthSquared(toLight);

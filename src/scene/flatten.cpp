@@ -9,6 +9,7 @@
 #include "core/rotation.h"
 #include "geometry/bvh_build.h"
 #include "geometry/primitive_bounds.h"
+#include "render/light_emission.h"
 #include "render/scene_change.h"
 #include "scene/camera_resolve.h"
 #include "scene/content_hash.h"
@@ -240,20 +241,22 @@ std::vector<uint32_t> lightPathOrder(const SceneData& s) {
 // The chances that a sample's light subpath starts from each light but the environment, by the
 // sum of its RGB power (as the light tree weighs lights), and their running sums in
 // lightPathOrder (render/light.h).
-void setLightPathPicks(SceneData& s) {
+void setLightPathPicks(SceneData& s, const std::vector<LightBounds>& bounds) {
   std::vector<double> powers;
-  for (const Light& l : s.lights)
-    powers.push_back(l.type == LightType::Environment ? 0.0 : lightBounds(s, l).power);
+  for (uint32_t i = 0; i < s.lights.size(); ++i)
+    powers.push_back(s.lights[i].type == LightType::Environment ? 0.0 : bounds[i].power);
   double total = 0;
   for (const double power : powers) total += power;
   s.lightsStartingPaths = 0;
   s.areaLightsStartPaths = false;
   s.lightPathOrder.clear();
   if (!(total > 0)) {
-    for (Light& l : s.lights) l.pathPmf = l.pathCdf = 0.0f;
+    for (Light& l : s.lights) l.pathPmf = l.pathCdf = l.pathAreaPdf = 0.0f;
     return;
   }
-  const std::vector<uint32_t> order = lightPathOrder(s);
+  s.lightPathOrder = lightPathOrder(s);
+  const std::vector<uint32_t>& order = s.lightPathOrder;
+  const SceneView view = s.view();
   double sum = 0;
   uint32_t last = 0;
   for (uint32_t k = 0; k < order.size(); ++k) {
@@ -262,15 +265,16 @@ void setLightPathPicks(SceneData& s) {
     sum += powers[i];
     l.pathPmf = float(powers[i] / total);
     l.pathCdf = float(sum / total);
+    const bool area = l.type == LightType::Sphere || l.type == LightType::Triangle;
+    l.pathAreaPdf = area ? l.pathPmf * emissionAreaPdf(view, l) : 0.0f;
     if (l.pathPmf > 0.0f) {
       ++s.lightsStartingPaths;
-      s.areaLightsStartPaths |= l.type != LightType::Point;
+      s.areaLightsStartPaths |= area;
       last = k;
     }
   }
   // The last pick must hold every u < 1, whatever the rounding of the sums.
   for (uint32_t k = last; k < order.size(); ++k) s.lights[order[k]].pathCdf = 1.0f;
-  s.lightPathOrder.assign(order.begin(), order.end());
 }
 
 }  // namespace
@@ -316,7 +320,9 @@ void addEmitterLights(SceneData& s, PreviousLights* previous) {
     }
   }
   s.lonePointLight = isLonePointLight(s.lights.data(), s.lights.size());
-  setLightPathPicks(s);
+  std::vector<LightBounds> bounds;
+  for (const Light& l : s.lights) bounds.push_back(lightBounds(s, l));
+  setLightPathPicks(s, bounds);
   s.lightTree.clear();
   s.lightTreeHash = 0;
   s.environmentShare = 0.0f;
@@ -324,8 +330,6 @@ void addEmitterLights(SceneData& s, PreviousLights* previous) {
   // The environment takes half the picks beside other lights (as pbrt-v4's BVHLightSampler
   // does): a power estimated through the scene's bounding sphere grows with the square of the
   // scene's size, and a ground sphere of radius 1000 once made it a million times a lamp's.
-  std::vector<LightBounds> bounds;
-  for (const Light& l : s.lights) bounds.push_back(lightBounds(s, l));
   s.lightTreeHash = lightTreeHash(bounds);
   if (previous && previous->hash == s.lightTreeHash) {
     s.lightTree = std::move(previous->tree);
