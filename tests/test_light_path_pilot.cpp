@@ -22,7 +22,7 @@ std::string lampUnderTheCeiling(int width, int spp, const std::string& render = 
 
 // Two balls on an open floor under a lamp 50 units up: half the light's rays leave the scene,
 // the rest land on the floor, lit evenly, where BSDF samples find as much; connections only cost
-// (the pilot measured about 1.5 times the variance x cost with them).
+// (the pilot measured about 1.8 times the variance x cost with them).
 std::string lampHighAboveAnOpenFloor(const std::string& render = "") {
   return R"({
     "camera": {"width": 256, "height": 256, "fov": 50, "position": [0, 3, 8],
@@ -85,6 +85,43 @@ TEST(ViewAdjustment, ReseedsAndTurnsLightPathsOffForOneRender) {
   EXPECT_EQ(scene.view().settings.seed, 3u);
 }
 
+// Each pixel's noise counts relative to its value, as the bench's relMSE counts it: the same
+// difference between two seeds' renders weighs (bright^2 + 0.01 m^2) / (dark^2 + 0.01 m^2) times
+// more in a dark half than in a bright one, and a weight is 1 / (v^2 + 0.01 m^2) exactly.
+TEST(LightPathPilot, WeighsEachPixelsNoiseRelativeToItsValue) {
+  const uint32_t w = 8, h = 8;
+  ImageRGB image(w, h);  // the left half dark (0.1), the right bright (1.9): the mean is 1
+  for (uint32_t y = 0; y < h; ++y)
+    for (uint32_t x = 0; x < w; ++x) image.set(x, y, Vec3(x < w / 2 ? 0.1f : 1.9f));
+  const std::vector<double> weights = relativeErrorWeights({&image, &image});
+  ASSERT_EQ(weights.size(), size_t(3) * w * h);
+  EXPECT_NEAR(weights[0], 1.0 / (0.01 + 0.01), 1e-4);        // (0, 0): dark all around
+  EXPECT_NEAR(weights[3 * 7], 1.0 / (3.61 + 0.01), 1e-6);    // (7, 0): bright all around
+
+  ImageRGB darkNoise = image, brightNoise = image;
+  for (uint32_t y = 0; y < h; ++y) {
+    darkNoise.set(0, y, image.at(0, y) + Vec3(0.05f));
+    brightNoise.set(7, y, image.at(7, y) + Vec3(0.05f));
+  }
+  const double dark = relativeVariance(darkNoise, image, weights);
+  const double bright = relativeVariance(brightNoise, image, weights);
+  EXPECT_NEAR(dark, 3.0 * h * 0.0025 * weights[0] / (2 * 3 * w * h), 1e-6 * dark);
+  EXPECT_NEAR(dark / bright, 3.62 / 0.02, 0.01 * 3.62 / 0.02);
+}
+
+// A pixel's weight comes from its neighbourhood, not its own value alone: one pixel that came out
+// dark amid bright ones (a render's noise) does not weigh as a dark region would.
+TEST(LightPathPilot, TakesAPixelsWeightFromItsNeighbourhood) {
+  ImageRGB image(5, 5);
+  for (uint32_t y = 0; y < 5; ++y)
+    for (uint32_t x = 0; x < 5; ++x) image.set(x, y, Vec3(1.0f));
+  image.set(2, 2, Vec3(0.0f));
+  const std::vector<double> weights = relativeErrorWeights({&image});
+  const double m = 24.0 / 25, v = 8.0 / 9;  // the mean; the centre's 3x3 mean
+  EXPECT_NEAR(weights[3 * 12], 1.0 / (v * v + 0.01 * m * m), 1e-6);
+  EXPECT_LT(weights[3 * 12], 2 * weights[0]);
+}
+
 TEST(LightPathPilot, KeepsLightPathsWhereALampLightsTheCeilingOfASmallRoom) {
   const LightPathChoice c = choose(test::loadTestScene(lampUnderTheCeiling(256, 16)));
   EXPECT_TRUE(c.piloted);
@@ -94,9 +131,10 @@ TEST(LightPathPilot, KeepsLightPathsWhereALampLightsTheCeilingOfASmallRoom) {
 }
 
 // The Cornell box, lit by its ceiling quad, which the camera sees: the connections pay there
-// (full renders: 0.73 of the relMSE x time without them), but the quad's rim, noisy alike either
-// way and far brighter than the rest, outweighed that in the pilot's variance until its
-// noisiest pixels were capped (measured 1.5 times worse then on every seed; 0.83-0.92 now).
+// (full renders: 0.72 of the relMSE x time without them), but the quad's rim, noisy alike either
+// way and far brighter than the rest, outweighed that while the pilot weighed each pixel's
+// noise absolutely (1.5 times worse on every seed); weighed relative to each pixel's value, as
+// relMSE weighs it, 0.92.
 TEST(LightPathPilot, KeepsThemForTheCornellBoxWhoseLampIsSeen) {
   const std::string cornell = std::string(CANDELA_SOURCE_DIR) + "/scenes/meshes/cornell/";
   const LightPathChoice c = choose(test::loadTestScene(R"({

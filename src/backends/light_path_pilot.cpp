@@ -2,7 +2,6 @@
 #include "backends/light_path_pilot.h"
 
 #include <algorithm>
-#include <cstddef>
 #include <vector>
 
 #include "core/rng.h"
@@ -22,37 +21,45 @@ struct PilotImages {
   RenderResult a, b;  // two seeds
 };
 
-// Variance of a pixel's value (over the two seeds' difference) relative to the squared mean,
-// each pixel's share capped at the kPilotTrimmedShare quantile of the pixels' shares.
-double relativeVariance(const PilotImages& p) {
-  const std::vector<float>& a = p.a.image.pixels;
-  const std::vector<float>& b = p.b.image.pixels;
-  const size_t pixels = a.size() / 3;
-  double sum = 0;
-  std::vector<double> squares(pixels, 0.0);
-  for (size_t i = 0; i < a.size(); ++i) {
-    sum += double(a[i]) + double(b[i]);
-    const double d = double(a[i]) - double(b[i]);
-    squares[i / 3] += d * d;
-  }
-  if (pixels == 0) return 0;
-  // The capped sum does not depend on the order, so the quantile is found in place.
-  const size_t at = std::min(pixels - 1, size_t(double(pixels) * (1.0 - kPilotTrimmedShare)));
-  std::nth_element(squares.begin(), squares.begin() + ptrdiff_t(at), squares.end());
-  const double cap = squares[at];
-  double capped = 0;
-  for (const double s : squares) capped += std::min(s, cap);
-  const double n = double(a.size());
-  const double mean = sum / (2 * n);
-  return capped / (2 * n) / (mean * mean);
-}
-
 double raysPerPixel(const PilotImages& p) {
   const double pixels = double(p.a.image.width) * p.a.image.height;
   return double(p.a.rays.total() + p.b.rays.total()) / (2 * pixels);
 }
 
 }  // namespace
+
+std::vector<double> relativeErrorWeights(std::initializer_list<const ImageRGB*> images) {
+  const uint32_t w = (*images.begin())->width, h = (*images.begin())->height;
+  std::vector<double> mean(size_t(3) * w * h, 0.0);
+  for (const ImageRGB* image : images)
+    for (size_t i = 0; i < mean.size(); ++i)
+      mean[i] += double(image->pixels[i]) / double(images.size());
+  double total = 0;
+  for (const double v : mean) total += v;
+  const double m = total / double(mean.size());
+  std::vector<double> weights(mean.size());
+  for (uint32_t y = 0; y < h; ++y)
+    for (uint32_t x = 0; x < w; ++x)
+      for (uint32_t c = 0; c < 3; ++c) {
+        double sum = 0;
+        int count = 0;
+        for (uint32_t j = y > 0 ? y - 1 : 0; j <= std::min(y + 1, h - 1); ++j)
+          for (uint32_t i = x > 0 ? x - 1 : 0; i <= std::min(x + 1, w - 1); ++i, ++count)
+            sum += mean[3 * (size_t(j) * w + i) + c];
+        const double v = sum / count;
+        weights[3 * (size_t(y) * w + x) + c] = 1.0 / (v * v + 0.01 * m * m);
+      }
+  return weights;
+}
+
+double relativeVariance(const ImageRGB& a, const ImageRGB& b, const std::vector<double>& weights) {
+  double sum = 0;
+  for (size_t i = 0; i < a.pixels.size(); ++i) {
+    const double d = double(a.pixels[i]) - double(b.pixels[i]);
+    sum += d * d * weights[i];
+  }
+  return sum / (2 * double(a.pixels.size()));
+}
 
 LightPathChoice chooseLightPaths(Renderer& renderer, const SceneData& scene,
                                  const RenderOptions& options) {
@@ -94,10 +101,13 @@ LightPathChoice chooseLightPaths(Renderer& renderer, const SceneData& scene,
   const double raysWith = raysPerPixel(with), raysWithout = raysPerPixel(without);
   const double costWith = raysWith + (kLightPathRayCost - 1) * (raysWith - raysWithout);
   choice.piloted = true;
-  choice.withLightPaths = relativeVariance(with) * costWith;
-  choice.withoutLightPaths = relativeVariance(without) * raysWithout;
+  const std::vector<double> weights =
+      relativeErrorWeights({&with.a.image, &with.b.image, &without.a.image, &without.b.image});
+  choice.withLightPaths = relativeVariance(with.a.image, with.b.image, weights) * costWith;
+  choice.withoutLightPaths =
+      relativeVariance(without.a.image, without.b.image, weights) * raysWithout;
   // Off only where clearly cheaper: a NaN (an image without light) keeps them on.
-  choice.lightPaths = !(choice.withoutLightPaths < choice.withLightPaths);
+  choice.lightPaths = !(choice.withoutLightPaths < kPilotOffMargin * choice.withLightPaths);
   return choice;
 }
 

@@ -6,17 +6,22 @@
 // connections cost more than they save. Which holds is the scene's, so for `light_paths: "auto"`
 // (the default) a pilot renders a sparse sample of the image's pixels (every stride-th in x and
 // y, about 16k) with and without light subpaths, twice each with seeds of its own, and keeps the
-// estimator of lower variance (from the two seeds' difference, relative to the image's mean, the
-// noisiest half percent of the pixels capped) times cost (rays traced; those a light subpath
-// adds weigh kLightPathRayCost, for the shading each connection also does). The pilot is a
+// estimator of lower variance times cost: variance from the two seeds' difference, each pixel's
+// relative to its value as the bench's relMSE weighs it, and cost the rays traced (those a light
+// subpath adds weigh kLightPathRayCost, for the shading each connection also does), with a
+// margin (kPilotOffMargin) for the connections. The pilot is a
 // function of the scene and its seed, so the image is the same on every run and thread count,
 // on either backend (up to rounding where the two estimators tie) and in every sample range of a
 // distributed render. Where the pilot's samples would exceed a sixteenth of the render's it is
 // skipped and light subpaths stay on. docs/performance.md has the measurements.
 #pragma once
 
+#include <initializer_list>
+#include <vector>
+
 #include "backends/render_options.h"
 #include "backends/renderer.h"
+#include "image/image.h"
 #include "render/scene_data.h"
 
 namespace candela {
@@ -29,19 +34,32 @@ constexpr double kPilotShare = 1.0 / 16.0;
 // The cost of a ray a light subpath adds, relative to the others: its connection's two BSDF
 // evaluations and weight come with it.
 constexpr double kLightPathRayCost = 1.25;
-// The pilot's variance caps each pixel's share at what all but this share of the pixels stay
-// under: a few pixels whose noise is the same either way (the rim of a lamp seen directly, of
-// radiance far above the rest) would otherwise outweigh the light the connections are for.
-constexpr double kPilotTrimmedShare = 0.005;
+// Connections go off only where the pilot finds the render without them cheaper than this
+// share of the render with them: at one sample a pixel it understates their gain (0.59-0.91 of
+// the variance ratio that full renders of 16 spp show on five of six bench scenes; docs/
+// performance.md), since the stratification that helps a pixel's many samples is not there.
+constexpr double kPilotOffMargin = 0.9;
 
 struct LightPathChoice {
   bool lightPaths = true;  // what the render should do (RenderOptions::adjust.lightPaths)
   bool piloted = false;    // whether a pilot decided it
   double seconds = 0;      // the pilot's render time
   RayCounters rays;        // and the rays it traced
-  // With a pilot: each estimator's relative variance per pixel times its rays per pixel.
+  // With a pilot: each estimator's relative variance per sample times its cost per sample.
   double withLightPaths = 0, withoutLightPaths = 0;
 };
+
+// Each pixel channel's weight in the relative MSE that the bench judges images by (images over
+// their mean, mean((a - b)^2 / (b^2 + 0.01))): 1 / (v^2 + 0.01 m^2), with m the mean of `images`
+// (renders of one view, alike in size) and v the channel's value in their mean over the 3x3 pixels
+// around it. The pilot gives all four of its images, so both estimators share weights that no
+// one render's noise picks: from a pixel's own samples, one whose samples came out dark would
+// weigh most, and the spikier estimator look better than it is.
+std::vector<double> relativeErrorWeights(std::initializer_list<const ImageRGB*> images);
+
+// One sample's variance, weighted per pixel channel, from two renders of a view with different
+// seeds (the variance of their difference is twice each one's).
+double relativeVariance(const ImageRGB& a, const ImageRGB& b, const std::vector<double>& weights);
 
 // Decides for the scene last given to `renderer` (it must be `scene`), whose render will take
 // `options` (threads and cancellation are the pilot's too). No pilot unless the scene's
