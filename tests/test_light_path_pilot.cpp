@@ -95,8 +95,8 @@ TEST(LightPathPilot, WeighsEachPixelsNoiseRelativeToItsValue) {
     for (uint32_t x = 0; x < w; ++x) image.set(x, y, Vec3(x < w / 2 ? 0.1f : 1.9f));
   const std::vector<double> weights = relativeErrorWeights({&image, &image});
   ASSERT_EQ(weights.size(), size_t(3) * w * h);
-  EXPECT_NEAR(weights[0], 1.0 / (0.01 + 0.01), 1e-4);        // (0, 0): dark all around
-  EXPECT_NEAR(weights[3 * 7], 1.0 / (3.61 + 0.01), 1e-6);    // (7, 0): bright all around
+  EXPECT_NEAR(weights[0], 1.0 / (0.01 + 0.01), 1e-4);      // (0, 0): dark all around
+  EXPECT_NEAR(weights[3 * 7], 1.0 / (3.61 + 0.01), 1e-6);  // (7, 0): bright all around
 
   ImageRGB darkNoise = image, brightNoise = image;
   for (uint32_t y = 0; y < h; ++y) {

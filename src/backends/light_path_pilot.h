@@ -63,7 +63,7 @@ double relativeVariance(const ImageRGB& a, const ImageRGB& b, const std::vector<
 
 // Decides for the scene last given to `renderer` (it must be `scene`), whose render will take
 // `options` (threads and cancellation are the pilot's too). No pilot unless the scene's
-// light_paths is "auto" and it has point lights that start subpaths.
+// light_paths is "auto" and it has lights that start subpaths.
 LightPathChoice chooseLightPaths(Renderer& renderer, const SceneData& scene,
                                  const RenderOptions& options);
 
