@@ -35,7 +35,7 @@ constexpr double kPilotShare = 1.0 / 16.0;
 // evaluations and weight come with it.
 constexpr double kLightPathRayCost = 1.25;
 // Connections go off only where the pilot finds the render without them cheaper than this
-// share of the render with them: at one sample a pixel it understates their gain (0.59-0.91 of
+// share of the render with them: at one sample a pixel it understates their gain (0.58-0.93 of
 // the variance ratio that full renders of 16 spp show on five of six bench scenes; docs/
 // performance.md), since the stratification that helps a pixel's many samples is not there.
 constexpr double kPilotOffMargin = 0.9;
