@@ -3,6 +3,7 @@
 // on any thread count, and when it is skipped.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 
 #include "backends/light_path_pilot.h"
@@ -120,6 +121,17 @@ TEST(LightPathPilot, TakesAPixelsWeightFromItsNeighbourhood) {
   const double m = 24.0 / 25, v = 8.0 / 9;  // the mean; the centre's 3x3 mean
   EXPECT_NEAR(weights[3 * 12], 1.0 / (v * v + 0.01 * m * m), 1e-6);
   EXPECT_LT(weights[3 * 12], 2 * weights[0]);
+}
+
+// The connections go off only where going without them is at least 10% cheaper: the one-sample
+// pilot understates their gain, so a near tie keeps them.
+TEST(LightPathPilot, TurnsThemOffOnlyWhereClearlyCheaperWithout) {
+  EXPECT_TRUE(pilotKeepsLightPaths(1.0, 0.95));  // 5% cheaper without: a near tie
+  EXPECT_TRUE(pilotKeepsLightPaths(1.0, 0.905));
+  EXPECT_FALSE(pilotKeepsLightPaths(1.0, 0.895));
+  EXPECT_FALSE(pilotKeepsLightPaths(1.8, 1.0));
+  EXPECT_TRUE(pilotKeepsLightPaths(1.0, 1.2));
+  EXPECT_TRUE(pilotKeepsLightPaths(std::nan(""), std::nan("")));  // an image without light
 }
 
 TEST(LightPathPilot, KeepsLightPathsWhereALampLightsTheCeilingOfASmallRoom) {

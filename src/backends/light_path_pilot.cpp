@@ -61,6 +61,10 @@ double relativeVariance(const ImageRGB& a, const ImageRGB& b, const std::vector<
   return sum / (2 * double(a.pixels.size()));
 }
 
+bool pilotKeepsLightPaths(double withLightPaths, double withoutLightPaths) {
+  return !(withoutLightPaths < kPilotOffMargin * withLightPaths);
+}
+
 LightPathChoice chooseLightPaths(Renderer& renderer, const SceneData& scene,
                                  const RenderOptions& options) {
   LightPathChoice choice;
@@ -106,8 +110,7 @@ LightPathChoice chooseLightPaths(Renderer& renderer, const SceneData& scene,
   choice.withLightPaths = relativeVariance(with.a.image, with.b.image, weights) * costWith;
   choice.withoutLightPaths =
       relativeVariance(without.a.image, without.b.image, weights) * raysWithout;
-  // Off only where clearly cheaper: a NaN (an image without light) keeps them on.
-  choice.lightPaths = !(choice.withoutLightPaths < kPilotOffMargin * choice.withLightPaths);
+  choice.lightPaths = pilotKeepsLightPaths(choice.withLightPaths, choice.withoutLightPaths);
   return choice;
 }
 

@@ -61,6 +61,11 @@ std::vector<double> relativeErrorWeights(std::initializer_list<const ImageRGB*> 
 // seeds (the variance of their difference is twice each one's).
 double relativeVariance(const ImageRGB& a, const ImageRGB& b, const std::vector<double>& weights);
 
+// The pilot's verdict from its two estimators' variance x cost: the connections stay unless
+// going without them costs less than kPilotOffMargin of going with them (a NaN, an image
+// without light, keeps them).
+bool pilotKeepsLightPaths(double withLightPaths, double withoutLightPaths);
+
 // Decides for the scene last given to `renderer` (it must be `scene`), whose render will take
 // `options` (threads and cancellation are the pilot's too). No pilot unless the scene's
 // light_paths is "auto" and it has lights that start subpaths.
