@@ -1,10 +1,8 @@
 // End-to-end tests of the `candela` executable (CANDELA_BINARY): exit codes, messages on
 // stderr, the summary on stdout, output files, and Ctrl-C. Each test runs the real binary in its
 // own temporary directory.
-#include <fcntl.h>
 #include <gtest/gtest.h>
 #include <signal.h>
-#include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -22,8 +20,7 @@
 
 #include "backends/renderer.h"
 #include "image/image_io.h"
-
-extern char** environ;  // for posix_spawn
+#include "spawn_candela.h"
 
 namespace fs = std::filesystem;
 
@@ -295,21 +292,11 @@ TEST_F(CliTest, InterruptStopsWithoutWritingAnImage) {
       "spheres": [{"position": [0, 0, 0], "radius": 1, "color": 0.5}],
       "lights": [{"position": [0, 3, 3], "intensity": 100}]
     })");
-      posix_spawn_file_actions_t actions;
-      posix_spawn_file_actions_init(&actions);
-      posix_spawn_file_actions_addopen(&actions, 1, path("stdout.txt").c_str(),
-                                       O_WRONLY | O_CREAT | O_TRUNC, 0644);
-      posix_spawn_file_actions_addopen(&actions, 2, path("stderr.txt").c_str(),
-                                       O_WRONLY | O_CREAT | O_TRUNC, 0644);
-      const std::string binary = CANDELA_BINARY, scene = path("long.json").string(),
-                        output = path("long.png").string();
-      char* argv[] = {const_cast<char*>(binary.c_str()), const_cast<char*>("render"),
-                      const_cast<char*>(scene.c_str()),  const_cast<char*>("-o"),
-                      const_cast<char*>(output.c_str()), const_cast<char*>("--backend"),
-                      const_cast<char*>("cpu"),          nullptr};
-      pid_t pid = 0;
-      ASSERT_EQ(posix_spawn(&pid, binary.c_str(), &actions, nullptr, argv, environ), 0);
-      posix_spawn_file_actions_destroy(&actions);
+      const pid_t pid =
+          candela::test::spawnCandela({"render", path("long.json").string(), "-o",
+                                       path("long.png").string(), "--backend", "cpu"},
+                                      path("stdout.txt").string(), path("stderr.txt").string());
+      ASSERT_GT(pid, 0);
 
       std::this_thread::sleep_for(std::chrono::seconds(1));
       kill(pid, signal);

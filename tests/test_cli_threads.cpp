@@ -5,10 +5,8 @@
 // is large: a 500k-triangle mesh seen by 8x8 pixels at 1 spp, and a 256x256 image to denoise.
 // Counted are the threads besides the main one that took a share: with one thread, no oneTBB
 // worker may work, and the denoiser only on one of Open Image Denoise's.
-#include <fcntl.h>
 #include <gtest/gtest.h>
 #include <signal.h>
-#include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -22,7 +20,7 @@
 #include <thread>
 #include <vector>
 
-extern char** environ;  // for posix_spawn
+#include "spawn_candela.h"
 
 namespace fs = std::filesystem;
 
@@ -40,8 +38,8 @@ void writeGridObj(const fs::path& file, int cells) {
   for (int i = 0; i < cells; ++i)
     for (int j = 0; j < cells; ++j) {
       const int c = i * n + j + 1;  // OBJ indices from 1
-      text += "f " + std::to_string(c) + " " + std::to_string(c + n) + " " +
-              std::to_string(c + 1) + "\n";
+      text += "f " + std::to_string(c) + " " + std::to_string(c + n) + " " + std::to_string(c + 1) +
+              "\n";
       text += "f " + std::to_string(c + 1) + " " + std::to_string(c + n) + " " +
               std::to_string(c + n + 1) + "\n";
     }
@@ -100,24 +98,15 @@ class CliThreads : public ::testing::Test {
   // CPU or more; what only waited takes a few at most) in a render of scene.json with
   // `extraArgs`; -1 when the render failed, its message in *error.
   int busyThreads(std::vector<std::string> extraArgs, std::string* error = nullptr) const {
-    const std::string binary = CANDELA_BINARY, scene = (dir_ / "scene.json").string(),
-                      output = (dir_ / "out.pfm").string(), errors = (dir_ / "stderr.txt").string();
-    std::vector<std::string> args = {binary, "render", scene, "-o", output, "-q", "--backend",
+    const std::string errors = (dir_ / "stderr.txt").string();
+    std::vector<std::string> args = {"render", (dir_ / "scene.json").string(),
+                                     "-o",     (dir_ / "out.pfm").string(),
+                                     "-q",     "--backend",
                                      "cpu"};
     args.insert(args.end(), extraArgs.begin(), extraArgs.end());
-    std::vector<char*> argv;
-    for (std::string& a : args) argv.push_back(a.data());
-    argv.push_back(nullptr);
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
-    posix_spawn_file_actions_addopen(&actions, 2, errors.c_str(), O_WRONLY | O_CREAT | O_TRUNC,
-                                     0644);
-    pid_t pid = 0;
-    const int spawned = posix_spawn(&pid, binary.c_str(), &actions, nullptr, argv.data(), environ);
-    posix_spawn_file_actions_destroy(&actions);
-    EXPECT_EQ(spawned, 0);
-    if (spawned != 0) return -1;
+    const pid_t pid = candela::test::spawnCandela(args, "", errors);
+    EXPECT_GT(pid, 0);
+    if (pid <= 0) return -1;
 
     std::map<std::string, long long> most;
     int status = 0;
