@@ -29,17 +29,34 @@ struct SurfacePoint {
   uint32_t material;
 };
 
+// The point of sphere s at `local` from its centre (|local| the radius, up to rounding), within
+// *error per axis: the point lies within gamma(5) |local| of the surface (pbrt-v4), and adding the
+// centre rounds once more, by at most gamma(1) |p|, the term that dominates for small spheres far
+// from the world origin.
+CANDELA_HDI Vec3 spherePoint(const Sphere& s, const Vec3& local, Vec3* error) {
+  const Vec3 p = s.center + local;
+  *error = gammaBound(5) * abs(local) + gammaBound(1) * abs(p);
+  return p;
+}
+
+// The point at barycentrics (1 - b1 - b2, b1, b2) of the triangle (p0, p1, p2), within *error per
+// axis. Weights summing to 1 (up to rounding) keep the point on the triangle's plane however
+// inaccurate the barycentrics are, so the error is that of the interpolation alone. Its bound
+// gamma(7) (pbrt-v4) also covers the rounding of b0 = 1 - b1 - b2.
+CANDELA_HDI Vec3 trianglePoint(const Vec3& p0, const Vec3& p1, const Vec3& p2, float b1, float b2,
+                               Vec3* error) {
+  const Vec3 w0 = (1.0f - b1 - b2) * p0, w1 = b1 * p1, w2 = b2 * p2;
+  *error = gammaBound(7) * (abs(w0) + abs(w1) + abs(w2));
+  return w0 + w1 + w2;
+}
+
 CANDELA_HDI SurfacePoint sphereSurfaceAt(const Sphere& s, const Ray& ray, float t) {
   SurfacePoint sp;
-  // Reproject the hit onto the sphere: the computed point then lies within gamma(5) |local| of the
-  // surface (pbrt-v4), however inaccurate t was.
+  // Reproject the hit onto the sphere, so that its error bound holds however inaccurate t was.
   Vec3 local = (ray.origin + t * ray.direction) - s.center;
   const float len = length(local);
   local = len > 0.0f ? local * (s.radius / len) : Vec3(0.0f, s.radius, 0.0f);
-  sp.p = s.center + local;
-  // Adding the centre rounds once more, by at most gamma(1) |p|: that term dominates for small
-  // spheres far from the world origin.
-  sp.error = gammaBound(5) * abs(local) + gammaBound(1) * abs(sp.p);
+  sp.p = spherePoint(s, local, &sp.error);
   sp.ng = normalize(local);
   sp.ns = sp.ng;
   sp.material = s.material;
@@ -53,12 +70,7 @@ CANDELA_HDI SurfacePoint triangleSurfaceAt(const GeometryView& scene, const Tria
   const Vec3& p1 = scene.positions[tri.v[1]];
   const Vec3& p2 = scene.positions[tri.v[2]];
   const float b0 = 1.0f - b1 - b2;
-  // Weights summing to 1 (up to rounding) keep the point on the triangle's plane however
-  // inaccurate the barycentrics are, so the error is that of the interpolation alone. Its bound
-  // gamma(7) (pbrt-v4) also covers the rounding of b0 = 1 - b1 - b2.
-  const Vec3 w0 = b0 * p0, w1 = b1 * p1, w2 = b2 * p2;
-  sp.p = w0 + w1 + w2;
-  sp.error = gammaBound(7) * (abs(w0) + abs(w1) + abs(w2));
+  sp.p = trianglePoint(p0, p1, p2, b1, b2, &sp.error);
   sp.ng = normalize(cross(p1 - p0, p2 - p0));
   sp.ns = sp.ng;
   if (scene.normalCount != 0) {

@@ -6,8 +6,8 @@
 #include <cmath>
 
 #include "core/constants.h"
-#include "core/float_error.h"
 #include "core/sampling.h"
+#include "geometry/surface.h"
 #include "render/light.h"
 #include "render/scene_view.h"
 #include "render/surface_color.h"
@@ -42,9 +42,7 @@ CANDELA_HDI EmissionPoint sampleEmissionPoint(const SceneView& scene, const Ligh
   if (l.type == LightType::Sphere) {
     const Sphere& s = scene.spheres[l.shape];
     e.n = sampleUniformCone(u1, u2, 2.0f);  // the whole sphere of directions
-    const Vec3 local = e.n * s.radius;
-    e.p = s.center + local;
-    e.error = gammaBound(5) * abs(local) + gammaBound(1) * abs(e.p);  // as sphereSurfaceAt's
+    e.p = spherePoint(s, e.n * s.radius, &e.error);
     e.radiance = scene.materials[s.material].radiance;
     return e;
   }
@@ -54,9 +52,7 @@ CANDELA_HDI EmissionPoint sampleEmissionPoint(const SceneView& scene, const Ligh
   const Vec3& p2 = scene.positions[tri.v[2]];
   float b[3];
   sampleUniformTriangle(u1, u2, b);
-  e.p = b[0] * p0 + b[1] * p1 + b[2] * p2;
-  // pbrt-v4's bound on a point interpolated from three vertices.
-  e.error = gammaBound(7) * (abs(b[0] * p0) + abs(b[1] * p1) + abs(b[2] * p2));
+  e.p = trianglePoint(p0, p1, p2, b[1], b[2], &e.error);
   e.n = normalize(cross(p1 - p0, p2 - p0));  // the outside, which alone emits
   e.radiance = triangleRadiance(scene, scene.materials[tri.material], tri, b[1], b[2]);
   return e;
