@@ -21,6 +21,11 @@
 
 namespace candela {
 
+// +1 where wo lies on ng's side (outside), else -1.
+CANDELA_HDI float sideOf(const Vec3& wo, const Vec3& ng) {
+  return dot(wo, ng) >= 0.0f ? 1.0f : -1.0f;
+}
+
 // The shading normal turned to wo's side of the surface (decided by the geometric normal).
 CANDELA_HDI Vec3 facingNormal(const Vec3& wo, const Vec3& ng, const Vec3& ns) {
   return dot(wo, ng) >= 0.0f ? ns : -ns;
@@ -38,7 +43,7 @@ struct Bsdf {
 
 CANDELA_HDI Bsdf makeBsdf(const Material& m, const Vec3& color, const Vec3& wo, const Vec3& ng,
                           const Vec3& ns) {
-  const float side = dot(wo, ng) >= 0.0f ? 1.0f : -1.0f;
+  const float side = sideOf(wo, ng);
   const Frame frame(facingNormal(wo, ng, ns));
   // A diffuse surface, the most common, never reads wo.
   const Vec3 woLocal = m.type == MaterialType::Diffuse ? Vec3(0.0f) : frame.toLocal(wo);
@@ -75,6 +80,11 @@ CANDELA_HDI bool isEmissive(const Material& m) { return m.type == MaterialType::
 // transmits.
 CANDELA_HDI Vec3 reflectingHemisphere(const Bsdf& b) {
   return b.material->type == MaterialType::Glass ? Vec3(0.0f) : b.ng * b.side;
+}
+
+// reflectingHemisphere of the BSDF that makeBsdf would build for material m with wo and ng.
+CANDELA_HDI Vec3 reflectingHemisphere(const Material& m, const Vec3& wo, const Vec3& ng) {
+  return m.type == MaterialType::Glass ? Vec3(0.0f) : ng * sideOf(wo, ng);
 }
 
 // Whether wi, local z of sign wiLocalZ, leaves on the side of the geometry the lobe implies.

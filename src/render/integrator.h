@@ -236,7 +236,7 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
   // A light vertex connected to here is the path's interaction depth + 1.
   st.connectable = smooth && scene.lightPathLights > 0 && depth < st.maxDepth;
   if (st.connectable && st.lightVertex.valid) {
-    connectLightVertex(scene, st.lightVertex, bsdf, sp, st.throughput, connect);
+    connectLightVertex(scene, &st.lightVertex, bsdf, sp, st.throughput, connect);
     if (connect->active) ++counters.shadow;
   }
 

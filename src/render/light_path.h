@@ -52,9 +52,27 @@ struct LightVertex {
   // that distance, for the densities with which the camera path's strategies reach L.
   float cosOverDist2 = 0.0f, distance = 0.0f;
   Vec3 lightNormal = Vec3(0.0f);
+  // The density with which next-event estimation at the vertex reaches the light: its pick there
+  // (times, for a light with a surface, the density of L). The same for every connection of the
+  // sample, so the first that needs it computes it (-1 until then).
+  float neePdf = -1.0f;
   bool area = false;
   bool valid = false;
 };
+
+// lv's neePdf, computed on first use. Every connection that reaches here has a camera vertex
+// on the side of lv's surface that the light shines on (else lv's BSDF carried nothing), so the
+// pick's hemisphere is that side's, as next-event estimation at lv would take it.
+CANDELA_HDI float lightVertexNeePdf(const SceneView& scene, LightVertex* lv) {
+  if (lv->neePdf >= 0.0f) return lv->neePdf;
+  const Material& m = scene.materials[lv->sp.material];
+  const float pick =
+      lightSelectPmf(scene, lv->light, lv->sp.p, reflectingHemisphere(m, lv->toLight, lv->sp.ng));
+  lv->neePdf = !lv->area ? pick
+                         : pick * emitterPdf(scene, scene.lights[lv->light], lv->sp.p, lv->toLight,
+                                             lv->distance, lv->lightNormal);
+  return lv->neePdf;
+}
 
 // The chance that a light subpath starts from light `index`: by power
 // (scene/flatten.cpp, setLightPathPicks); the environment starts none.
@@ -170,10 +188,12 @@ CANDELA_HDI void traceLightVertex(const SceneView& scene, const Tracer& tracer, 
 // light vertex `lv`, as a shadow query whose contribution is weighted against next-event
 // estimation from lv (the power heuristic over the two densities of lv's point); no query where
 // the connection carries nothing. The ray runs between the two points each offset off its
-// surface, stopped short of the far one as shadow rays to area lights are.
-CANDELA_HDI void connectLightVertex(const SceneView& scene, const LightVertex& lv, const Bsdf& bsdf,
+// surface, stopped short of the far one as shadow rays to area lights are. lv keeps what every
+// connection to it shares (lightVertexNeePdf).
+CANDELA_HDI void connectLightVertex(const SceneView& scene, LightVertex* vertex, const Bsdf& bsdf,
                                     const SurfacePoint& sp, const Vec3& throughput,
                                     ShadowQuery* query) {
+  const LightVertex& lv = *vertex;
   const Vec3 d = lv.sp.p - sp.p;
   const float dist2 = dot(d, d);
   if (!(dist2 > 0.0f)) return;
@@ -190,15 +210,13 @@ CANDELA_HDI void connectLightVertex(const SceneView& scene, const LightVertex& l
   // Next-event estimation at lv would have reached this path with the density of x's BSDF
   // sample towards lv times lv's pick of the light (and, for a light with a surface, the density
   // of its point L from lv; lv's BSDF sample too, by its density towards L).
-  const float pick = lightSelectPmf(scene, lv.light, lv.sp.p, reflectingHemisphere(there));
+  const float neePdf = lightVertexNeePdf(scene, vertex);
   float weight;
   if (!lv.area) {
-    const float pdfBsdf = pdfHere * cosOut / dist2 * pick;
+    const float pdfBsdf = pdfHere * cosOut / dist2 * neePdf;
     weight = powerHeuristic(lv.pdfArea, pdfBsdf);
   } else {
     const float toVertex = pdfHere * cosOut / dist2;
-    const float neePdf = pick * emitterPdf(scene, scene.lights[lv.light], lv.sp.p, lv.toLight,
-                                           lv.distance, lv.lightNormal);
     weight = powerHeuristic3(lv.pdfArea, toVertex * neePdf * lv.cosOverDist2,
                              toVertex * pdfThere * lv.cosOverDist2);
   }
