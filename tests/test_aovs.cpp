@@ -38,8 +38,7 @@ struct AovRender {
   }
 };
 
-const char* kAll =
-    "depth,distance,normal,normal_camera,albedo,position,instance,material";
+const char* kAll = "depth,distance,normal,normal_camera,albedo,position,instance,material,direct";
 
 AovRender renderAovs(const std::string& json, const std::string& baseDir = ".", int threads = 0,
                      const char* passes = kAll) {
@@ -75,7 +74,7 @@ TEST(Aovs, UnknownPassNamesAreRefusedWithTheKnownOnes) {
   } catch (const std::invalid_argument& e) {
     EXPECT_EQ(std::string(e.what()),
               "unknown render pass \"normals\"; the passes are: depth, distance, normal, "
-              "normal_camera, albedo, position, instance, material, flow");
+              "normal_camera, albedo, position, instance, material, flow, direct");
   }
   const std::vector<Aov> aovs = parseAovList(" normal , depth,normal");
   ASSERT_EQ(aovs.size(), 2u);
@@ -246,6 +245,65 @@ TEST(Aovs, EdgePixelsAverageFilteredPassesAndTakeIdsFromTheNearestSample) {
   EXPECT_EQ(r.at("instance", 9, 1), 0.0f);
   EXPECT_EQ(r.at("depth", 9, 1), kInf);
   fs::remove_all(dir);
+}
+
+// Renders `json` with "MAX_DEPTH" replaced by `maxDepth`: its image, and with passes its direct
+// light pass.
+struct DirectAndImage {
+  std::vector<float> image, direct;
+};
+DirectAndImage renderDirect(std::string json, uint32_t maxDepth) {
+  json.replace(json.find("MAX_DEPTH"), 9, std::to_string(maxDepth));
+  const AovRender r = renderAovs(json, ".", 2, "direct");
+  return {r.result.image.pixels, r.layer("direct").pixels};
+}
+
+// The direct light pass is what the image would be at max_depth 1, from the same samples:
+// emitters (a sphere light, an emissive face) and the environment seen at the first hit, through
+// a mirror or glass or by the first hit's scattered ray, and next-event estimation there. Light
+// subpaths are off: a render at max_depth 1 starts none, and would draw other numbers. Every
+// sample's direct light is part of its radiance, so the image is nowhere below the pass.
+TEST(Aovs, DirectLightIsTheImageAtMaxDepthOne) {
+  const std::string json = R"({
+    "camera": {"width": 24, "height": 16, "spp": 8, "position": [0, 0, 30], "fov": 50},
+    "render": {"max_depth": MAX_DEPTH, "light_paths": "off"},
+    "environment": {"color": [0.1, 0.1, 0.2]},
+    "spheres": [{"position": [0, -1000, 0], "radius": 990, "color": 0.75},
+                {"position": [-6, 0, 0], "radius": 4, "material": "mirror"},
+                {"position": [6, 0, 0], "radius": 4, "material": {"type": "glass", "ior": 1.5}},
+                {"position": [0, 0, -5], "radius": 3,
+                 "material": {"type": "plastic", "color": [0.7, 0.1, 0.1], "roughness": 0.3}},
+                {"position": [0, 12, -8], "radius": 1,
+                 "material": {"type": "emissive", "radiance": 20}}],
+    "lights": [{"type": "sphere", "position": [0, 15, 10], "radius": 2, "intensity": 5e4}]
+  })";
+  const DirectAndImage deep = renderDirect(json, 6), shallow = renderDirect(json, 1);
+  ASSERT_EQ(deep.direct.size(), shallow.image.size());
+  EXPECT_EQ(std::memcmp(deep.direct.data(), shallow.image.data(), deep.direct.size() * 4), 0);
+  // The direct pass at max_depth 1 is the image itself.
+  EXPECT_EQ(std::memcmp(shallow.direct.data(), shallow.image.data(), deep.direct.size() * 4), 0);
+  double indirect = 0.0;
+  for (size_t i = 0; i < deep.image.size(); ++i) {
+    EXPECT_GE(deep.image[i], deep.direct[i]) << i;
+    indirect += deep.image[i] - deep.direct[i];
+  }
+  EXPECT_GT(indirect, 0.0);
+}
+
+// Light-vertex connections carry light that has scattered twice: none of it is direct. With a
+// lone point light, next-event estimation at the first hit draws no numbers, so a render at
+// max_depth 1 (which starts no light subpaths) shows the same direct light to the bit.
+TEST(Aovs, DirectLightLeavesOutTheLightVertexConnections) {
+  const std::string json = R"({
+    "camera": {"width": 24, "height": 16, "spp": 8, "position": [0, 0, 30], "fov": 50},
+    "render": {"max_depth": MAX_DEPTH, "light_paths": "on"},
+    "spheres": [{"position": [0, -1000, 0], "radius": 990, "color": 0.75},
+                {"position": [0, 0, -5], "radius": 3, "color": [0.7, 0.3, 0.1]}],
+    "lights": [{"position": [0, 4, 0], "intensity": 2000}]
+  })";
+  const DirectAndImage deep = renderDirect(json, 6), shallow = renderDirect(json, 1);
+  EXPECT_EQ(std::memcmp(deep.direct.data(), shallow.image.data(), deep.direct.size() * 4), 0);
+  EXPECT_NE(std::memcmp(deep.image.data(), shallow.image.data(), deep.image.size() * 4), 0);
 }
 
 // Passes draw no random numbers: the beauty image is bit-identical with and without them, and the

@@ -122,7 +122,8 @@ TEST_F(CliAovTest, UnknownPassIsAUsageErrorListingTheKnownOnes) {
   EXPECT_EQ(run("render s.json -o out.png --aov depth,nromal", &err), 2);
   EXPECT_EQ(err,
             "candela: error: --aov: unknown render pass \"nromal\"; the passes are: depth, "
-            "distance, normal, normal_camera, albedo, position, instance, material, flow\n");
+            "distance, normal, normal_camera, albedo, position, instance, material, flow, "
+            "direct\n");
   EXPECT_FALSE(fs::exists(path("out.png")));
 }
 

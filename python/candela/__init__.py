@@ -115,16 +115,16 @@ class Scene:
                ) -> np.ndarray | Dict[str, np.ndarray]:
         """Renders to a float32 array (height, width, 3) of linear radiance.
 
-        denoise: run Intel Open Image Denoise (PyPI `pyoidn`) on the result, guided by the
-        albedo and normal passes (candela.denoise); candela.denoise.DenoiserUnavailable where it
-        is not installed. With aovs as well, "image" is the denoised radiance and "noisy" the
-        render as it came.
+        denoise: run Intel Open Image Denoise (PyPI `pyoidn`) on the result's direct and
+        indirect light, guided by the albedo and normal passes (candela.denoise);
+        candela.denoise.DenoiserUnavailable where it is not installed. With aovs as well, "image"
+        is the denoised radiance and "noisy" the render as it came.
 
         aovs: render passes to return as well (docs/aovs.md): "depth", "distance", "normal",
-        "normal_camera", "albedo", "position", "instance", "material", "flow". With aovs the
-        result is a dict: "image" the radiance, and one array per pass, (height, width) float32
-        for depth and distance, (height, width, 2) float32 for flow, (height, width, 3) float32
-        for the others, (height, width) uint32 for the ids. An unknown pass name raises
+        "normal_camera", "albedo", "position", "instance", "material", "flow", "direct". With
+        aovs the result is a dict: "image" the radiance, and one array per pass, (height, width)
+        float32 for depth and distance, (height, width, 2) float32 for flow, (height, width, 3)
+        float32 for the others, (height, width) uint32 for the ids. An unknown pass name raises
         ValueError.
 
         spp and seed override the scene's. backend: "auto" (the CPU until the CUDA backend has
@@ -171,7 +171,7 @@ def _passes_to_render(aovs: Optional[list], denoise: bool) -> Optional[list]:
         return aovs
     from . import denoise as oidn
     oidn._oidn()
-    return list(dict.fromkeys((aovs or []) + ["albedo", "normal"]))
+    return list(dict.fromkeys((aovs or []) + ["albedo", "normal", "direct"]))
 
 
 def _denoised(result: Dict[str, np.ndarray], aovs: Optional[list], threads: int = 0):
@@ -179,7 +179,8 @@ def _denoised(result: Dict[str, np.ndarray], aovs: Optional[list], threads: int 
     returns it: the clean image alone without aovs, else the asked passes plus "image" (clean)
     and "noisy"."""
     from . import denoise as oidn
-    clean = oidn.denoise(result["image"], result["albedo"], result["normal"], threads=threads)
+    clean = oidn.denoise(result["image"], result["albedo"], result["normal"], result["direct"],
+                         threads=threads)
     if aovs is None:
         return clean
     result["noisy"] = result["image"]

@@ -3,11 +3,13 @@
     img = scene.render(spp=16, denoise=True)
 
 OIDN's "RT" filter takes the noisy HDR radiance with the first non-specular surface's albedo and
-its world-space normal (docs/aovs.md), which keep edges and textures that the noise would blur.
+its world-space normal (docs/aovs.md), which keep edges and textures that the noise would blur;
+the direct light (the "direct" pass) and the rest are filtered apart.
 """
 from __future__ import annotations
 
 import threading
+from typing import Optional
 
 import numpy as np
 
@@ -62,22 +64,26 @@ def _run(pyoidn, inputs: dict, hdr: bool = False, clean_aux: bool = False,
 
 
 def denoise(image: np.ndarray, albedo: np.ndarray, normal: np.ndarray,
-            threads: int = 0) -> np.ndarray:
+            direct: Optional[np.ndarray] = None, threads: int = 0) -> np.ndarray:
     """The denoised (H, W, 3) float32 radiance of `image`, guided by `albedo` and `normal`, on at
-    most `threads` CPU threads (0: all cores).
+    most `threads` CPU threads (0: all cores). With `direct`, the image's direct light pass, the
+    direct light and the rest (image - direct) are filtered apart and added, as
+    `scene.render(denoise=True)` and `candela render --denoise` do: the direct light is far less
+    noisy, and filtered alone it keeps its detail (docs/performance.md, Denoising).
 
     The guides come from the same samples as the image and carry a little noise of their own
     (antialiased edges, depth of field, what glass and mirrors show): each is denoised first and
-    the image then filtered with clean guides, as OIDN's documentation recommends and as
-    `candela render --denoise` does (docs/performance.md, Denoising, has what it gains)."""
+    the image then filtered with clean guides, as OIDN's documentation recommends."""
     pyoidn = _oidn()
     contiguous = lambda a: np.ascontiguousarray(a, dtype=np.float32)  # noqa: E731
     colour = contiguous(image)
+    parts = [colour] if direct is None else [contiguous(direct), colour - contiguous(direct)]
     with _lock:
         albedo = _run(pyoidn, {pyoidn.OIDN_IMAGE_ALBEDO: contiguous(np.clip(albedo, 0.0, 1.0))},
                       threads=threads)
         normal = _run(pyoidn, {pyoidn.OIDN_IMAGE_NORMAL: contiguous(np.clip(normal, -1.0, 1.0))},
                       threads=threads)
-        return _run(pyoidn, {pyoidn.OIDN_IMAGE_COLOR: colour, pyoidn.OIDN_IMAGE_ALBEDO: albedo,
-                             pyoidn.OIDN_IMAGE_NORMAL: normal}, hdr=True, clean_aux=True,
-                    threads=threads)
+        filtered = [_run(pyoidn, {pyoidn.OIDN_IMAGE_COLOR: part, pyoidn.OIDN_IMAGE_ALBEDO: albedo,
+                                  pyoidn.OIDN_IMAGE_NORMAL: normal}, hdr=True, clean_aux=True,
+                         threads=threads) for part in parts]
+        return filtered[0] if direct is None else filtered[0] + filtered[1]

@@ -28,6 +28,7 @@ const std::vector<AovInfo>& aovTable() {
       {Aov::Instance, "instance", {"id"}, true},
       {Aov::Material, "material", {"id"}, true},
       {Aov::Flow, "flow", {"X", "Y"}, false},
+      {Aov::Direct, "direct", {"R", "G", "B"}, false},
   };
   return table;
 }
@@ -88,6 +89,8 @@ void resolvePixel(Aov aov, const SceneData& scene, const AovPixel& p, float* out
       out[1] = p.flowSum.y / float(p.flowSamples);
       return;
     }
+    case Aov::Direct:
+      return put(p.samples > 0 ? p.directSum / float(p.samples) : Vec3(0.0f));
   }
 }
 

@@ -12,7 +12,18 @@
 
 namespace candela {
 
-enum class Aov { Depth, Distance, Normal, NormalCamera, Albedo, Position, Instance, Material, Flow };
+enum class Aov {
+  Depth,
+  Distance,
+  Normal,
+  NormalCamera,
+  Albedo,
+  Position,
+  Instance,
+  Material,
+  Flow,
+  Direct
+};
 
 // "depth", "normal_camera", ...
 const char* aovName(Aov aov);

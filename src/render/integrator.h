@@ -161,13 +161,15 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
                                                               st.bouncePoint, st.bounceHemisphere) *
                                                    environmentPdf(scene, st.ray.direction));
     const Vec3 background = environmentRadiance(scene, st.ray.direction);
+    const Vec3 seen = st.throughput * background * weight;
     if constexpr (kAovs) {
       if (!first->albedoDone) {
         first->albedoDone = true;
         first->albedo = clampUnit(background);
       }
+      if (depth <= 2) first->direct += seen;
     }
-    st.radiance += st.throughput * background * weight;
+    st.radiance += seen;
     return false;
   }
   const SurfacePoint sp = surfaceAt(scene, st.ray, hit);
@@ -205,7 +207,10 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
                                       st.bounceArrivalPdf);
         weight = powerHeuristic3(st.bsdfPdf, neePdf, subpathPdf);
       }
-      st.radiance += st.throughput * surfaceRadiance(scene, m, hit, sp) * weight;
+      const Vec3 seen = st.throughput * surfaceRadiance(scene, m, hit, sp) * weight;
+      if constexpr (kAovs)
+        if (depth <= 2) first->direct += seen;
+      st.radiance += seen;
     }
     return false;
   }
@@ -230,6 +235,7 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
     }
     estimateDirect(scene, bsdf, hemisphere, sp, st.throughput, arrivalPdf, rng, shadow);
     if (shadow->active) ++counters.shadow;
+    if constexpr (kAovs) shadow->direct = depth == 1;
     // "direct": the scattered ray below only gathers emission; nothing scatters after it.
     if (scene.settings.integrator == IntegratorType::Direct) st.maxDepth = depth;
   }
@@ -296,10 +302,16 @@ CANDELA_HDI bool resumeBranch(PathState* path, SampleStream* rng) {
   return true;
 }
 
-// Adds an active shadow query's contribution to the path unless its ray is blocked.
-CANDELA_HDI_ALWAYS void resolveShadow(const ShadowQuery& shadow, bool blocked, PathState* path) {
+// Adds an active shadow query's contribution to the path unless its ray is blocked (with kAovs,
+// next-event estimation's at the first hit also to first->direct).
+template <bool kAovs>
+CANDELA_HDI_ALWAYS void resolveShadow(const ShadowQuery& shadow, bool blocked, PathState* path,
+                                      FirstHit* first) {
   CANDELA_DCHECK(shadow.active);
-  if (!blocked) path->radiance += shadow.contribution;
+  if (blocked) return;
+  path->radiance += shadow.contribution;
+  if constexpr (kAovs)
+    if (shadow.direct) first->direct += shadow.contribution;
 }
 
 // Runs a path from its next interaction to its end, and then its branch, if one waits, one ray at
@@ -313,9 +325,10 @@ CANDELA_HDI Vec3 finishPath(const SceneView& scene, const Tracer& tracer, PathSt
     ShadowQuery shadow, connect;
     const bool goesOn =
         interact<kAovs>(scene, path, found, hit, rng, counters, first, &shadow, &connect);
-    if (shadow.active) resolveShadow(shadow, tracer.occluded(shadow.ray, shadow.skipPrim), path);
+    if (shadow.active)
+      resolveShadow<kAovs>(shadow, tracer.occluded(shadow.ray, shadow.skipPrim), path, first);
     if (connect.active)
-      resolveShadow(connect, tracer.occluded(connect.ray, connect.skipPrim), path);
+      resolveShadow<kAovs>(connect, tracer.occluded(connect.ray, connect.skipPrim), path, first);
     if (!goesOn && !resumeBranch(path, &rng)) return path->radiance;
   }
 }

@@ -34,11 +34,12 @@ template <bool kAovs>
 CANDELA_HDI void addSample(const SceneView& scene, const Vec3& L, const Ray& ray, float jx,
                            float jy, const FirstHit& first, Vec3* sum, AovPixel* aov) {
   // A non-finite sample (a degenerate mesh, say) would poison the pixel; it counts as black.
-  if (isFinite(L)) *sum += L;
+  const bool finite = isFinite(L);
+  if (finite) *sum += L;
   if constexpr (kAovs) {
     Vec2 flow;
     const bool hasFlow = scene.flow.enabled && sampleFlow(scene, first, ray.direction, &flow);
-    addAovSample(aov, first, jx, jy, scene.camera.position, hasFlow, flow);
+    addAovSample(aov, first, jx, jy, scene.camera.position, hasFlow, flow, finite);
   }
 }
 
@@ -84,7 +85,8 @@ CANDELA_HDI void renderPacket(const SceneView& scene, const Tracer& tracer, uint
                                 &first[kAovs ? i : 0], &shadows[i], &connect) ||
                 resumeBranch(&paths[i], &rng[i]);
     if (connect.active)
-      resolveShadow(connect, tracer.occluded(connect.ray, connect.skipPrim), &paths[i]);
+      resolveShadow<kAovs>(connect, tracer.occluded(connect.ray, connect.skipPrim), &paths[i],
+                           &first[kAovs ? i : 0]);
     if (!shadows[i].active) continue;
     shadowRays[shadowCount] = shadows[i].ray;
     skipPrims[shadowCount] = shadows[i].skipPrim;
@@ -98,7 +100,8 @@ CANDELA_HDI void renderPacket(const SceneView& scene, const Tracer& tracer, uint
       blocked[k] = tracer.occluded(shadowRays[k], skipPrims[k]);
   }
   for (uint32_t k = 0; k < shadowCount; ++k)
-    resolveShadow(shadows[shadowLane[k]], blocked[k], &paths[shadowLane[k]]);
+    resolveShadow<kAovs>(shadows[shadowLane[k]], blocked[k], &paths[shadowLane[k]],
+                         &first[kAovs ? shadowLane[k] : 0]);
 
   for (uint32_t i = 0; i < n; ++i) {
     FirstHit& f = first[kAovs ? i : 0];

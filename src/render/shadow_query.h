@@ -19,6 +19,7 @@ struct ShadowQuery {
   uint32_t skipPrim = 0xffffffffu;
   Vec3 contribution;  // the path's throughput times the light's weighted share
   bool active = false;
+  bool direct = false;  // next-event estimation at the first hit, set only for the passes
 };
 
 }  // namespace candela

@@ -1,4 +1,5 @@
-"""scene.render(denoise=True): Open Image Denoise guided by the albedo and normal passes."""
+"""scene.render(denoise=True): Open Image Denoise on the direct and the indirect light apart, guided
+by the albedo and normal passes."""
 import sys
 
 import numpy as np
@@ -30,6 +31,17 @@ def test_with_aovs_the_noisy_image_and_the_asked_passes_come_back():
     assert set(result) == {"image", "noisy", "depth"}
     np.testing.assert_array_equal(result["noisy"], scene.render(spp=4, seed=3))
     assert not np.array_equal(result["image"], result["noisy"])
+
+
+def test_direct_and_indirect_light_are_denoised_apart():
+    from candela import denoise as oidn
+    scene = candela.Scene.from_dict(tiny_scene(size=32))
+    result = scene.render(spp=4, seed=3, aovs=["albedo", "normal", "direct"], denoise=True)
+    guides = (result["noisy"], result["albedo"], result["normal"])
+    np.testing.assert_allclose(result["image"], oidn.denoise(*guides, result["direct"]),
+                               rtol=1e-5, atol=1e-6)
+    together = oidn.denoise(*guides)
+    assert np.abs(result["image"] - together).max() > 1e-2 * together.max()
 
 
 def test_a_missing_denoiser_is_named_before_rendering(monkeypatch):

@@ -117,11 +117,12 @@ OidnDenoiser::~OidnDenoiser() {
 }
 
 void OidnDenoiser::denoise(ImageRGB& image, const std::vector<float>& albedo,
-                           const std::vector<float>& normal, int threads) const {
+                           const std::vector<float>& normal, const std::vector<float>& direct,
+                           int threads) const {
   const Api& a = *api_;
   const size_t w = image.width, h = image.height, n = 3 * w * h;
-  if (albedo.size() != n || normal.size() != n)
-    throw std::invalid_argument("denoise: the guides do not match the image's size");
+  if (albedo.size() != n || normal.size() != n || direct.size() != n)
+    throw std::invalid_argument("denoise: the passes do not match the image's size");
   // OIDN expects albedo in [0, 1] and normals in [-1, 1]; the passes hold those already, up to
   // rounding, which the clamps take away.
   std::vector<float> a01(n), n11(n), out(n);
@@ -155,10 +156,14 @@ void OidnDenoiser::denoise(ImageRGB& image, const std::vector<float>& albedo,
   std::vector<float> albedoClean(n), normalClean(n);
   run({{"albedo", a01.data()}}, albedoClean.data(), false, false);
   run({{"normal", n11.data()}}, normalClean.data(), false, false);
-  run({{"color", image.pixels.data()},
-       {"albedo", albedoClean.data()},
-       {"normal", normalClean.data()}},
-      out.data(), true, true);
+  // Direct and indirect light are filtered apart and added: the direct part is far less noisy
+  // and keeps its detail (docs/performance.md, Denoising).
+  std::vector<float> directPart(direct), indirectPart(n), indirectOut(n);
+  for (size_t i = 0; i < n; ++i) indirectPart[i] = image.pixels[i] - direct[i];
+  for (auto [colour, output] : {std::pair{&directPart, &out}, {&indirectPart, &indirectOut}})
+    run({{"color", colour->data()}, {"albedo", albedoClean.data()}, {"normal", normalClean.data()}},
+        output->data(), true, true);
+  for (size_t i = 0; i < n; ++i) out[i] += indirectOut[i];
   const char* message = nullptr;
   const int error = a.getDeviceError(device, &message);
   a.releaseDevice(device);
@@ -169,9 +174,9 @@ void OidnDenoiser::denoise(ImageRGB& image, const std::vector<float>& albedo,
 }
 
 void OidnDenoiser::denoise(RenderResult& result, const SceneData& scene, int threads) const {
-  const std::vector<ImageLayer> guides =
-      makeAovLayers(scene, {Aov::Albedo, Aov::Normal}, result.aovs);
-  denoise(result.image, guides[0].pixels, guides[1].pixels, threads);
+  const std::vector<ImageLayer> passes =
+      makeAovLayers(scene, {Aov::Albedo, Aov::Normal, Aov::Direct}, result.aovs);
+  denoise(result.image, passes[0].pixels, passes[1].pixels, passes[2].pixels, threads);
 }
 
 }  // namespace candela::cli

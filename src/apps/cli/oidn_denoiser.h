@@ -1,6 +1,6 @@
-// `candela render --denoise`: Intel Open Image Denoise's "RT" filter on the rendered image, guided
-// by the albedo and normal passes (docs/aovs.md, Denoising), as scene.render(denoise=True) does
-// in Python.
+// `candela render --denoise`: Intel Open Image Denoise's "RT" filter on the rendered image's direct
+// and indirect light, guided by the albedo and normal passes (docs/aovs.md, Denoising), as
+// scene.render(denoise=True) does in Python.
 //
 // Debian has no OIDN package; PyPI's `pyoidn` (which scripts/install-python installs) carries the
 // library. It is loaded at run time, so the build needs none of it: from $CANDELA_OIDN_LIBRARY
@@ -24,14 +24,15 @@ class OidnDenoiser {
   static std::unique_ptr<OidnDenoiser> load(std::string* whyNot);
   ~OidnDenoiser();
 
-  // Replaces `image` (HDR radiance) by its denoised version. `albedo` and `normal` hold 3 floats
-  // per pixel of the same size. On OIDN's CPU device, `threads` > 0 caps its threads (0: all
-  // cores). Throws std::runtime_error with OIDN's message when it fails.
+  // Replaces `image` (HDR radiance) by its denoised version: its direct light `direct` and the
+  // rest, each filtered, added. `albedo`, `normal` and `direct` hold 3 floats per pixel of the
+  // same size. On OIDN's CPU device, `threads` > 0 caps its threads (0: all cores). Throws
+  // std::runtime_error with OIDN's message when it fails.
   void denoise(ImageRGB& image, const std::vector<float>& albedo, const std::vector<float>& normal,
-               int threads = 0) const;
+               const std::vector<float>& direct, int threads = 0) const;
 
-  // Denoises the image of `result`, a render of `scene` with passes (RenderOptions::aovs), guided
-  // by its albedo and normal passes.
+  // Denoises the image of `result`, a render of `scene` with passes (RenderOptions::aovs), by its
+  // direct light pass, guided by its albedo and normal passes.
   void denoise(RenderResult& result, const SceneData& scene, int threads = 0) const;
 
   // The library file that was loaded.

@@ -155,11 +155,12 @@ CLI::App* addRenderCommand(CLI::App& app, RenderCommandOptions* options) {
                   "samples/s, peak RSS) to this JSON file; single stills only");
   cmd->add_option("--aov", options->aovs,
                   "Render passes to write beside the image, comma-separated: depth, distance, "
-                  "normal, normal_camera, albedo, position, instance, material, flow (in an .exr "
-                  "as layers, else as sibling .pfm files: out.depth.pfm)");
+                  "normal, normal_camera, albedo, position, instance, material, flow, direct (in "
+                  "an .exr as layers, else as sibling .pfm files: out.depth.pfm)");
   cmd->add_flag("--denoise", options->denoise,
-                "Denoise the image with Intel Open Image Denoise, guided by the albedo and normal "
-                "passes (needs OIDN 2: pip install pyoidn)");
+                "Denoise the image with Intel Open Image Denoise, its direct and indirect light "
+                "apart, guided by the albedo and normal passes (needs OIDN 2: pip install "
+                "pyoidn)");
   cmd->add_flag("--no-bvh", options->noBvh,
                 "Benchmarks only: test every primitive for every ray instead of using the BVH")
       ->group("");  // hidden from --help
