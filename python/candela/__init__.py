@@ -165,8 +165,8 @@ def _pass_names(aovs: Optional[Sequence[str]]) -> Optional[list]:
 
 
 def _passes_to_render(aovs: Optional[list], denoise: bool) -> Optional[list]:
-    """The passes a render needs: those asked for, and the denoiser's guides. With denoise, fails
-    before rendering where the denoiser is missing."""
+    """The passes a render needs: those asked for, and with denoise the denoiser's guides and the
+    direct light. With denoise, fails before rendering where the denoiser is missing."""
     if not denoise:
         return aovs
     from . import denoise as oidn

@@ -144,9 +144,9 @@ struct PathState {
 // the caller to trace, and scatters path->ray onwards (at smooth glass within
 // scene.glassSplitDepth, leaving the reflection as a waiting branch: render/path_branch.h). False
 // when the path ends here (its shadow queries still count; a waiting branch is the caller's to
-// resume). With kAovs, `first` (zeroed by the caller) also receives the sample's
-// first hit and albedo (render/aov.h); that work is compiled only into the kAovs instance, and it
-// draws no random numbers, so the radiance is the same.
+// resume). With kAovs, `first` (zeroed by the caller) also receives the sample's first hit,
+// albedo and direct light (render/aov.h); that work is compiled only into the kAovs instance,
+// and it draws no random numbers, so the radiance is the same.
 template <bool kAovs>
 CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool found,
                                  const Hit& hit, SampleStream& rng, RayCounters& counters,
@@ -334,7 +334,8 @@ CANDELA_HDI Vec3 finishPath(const SceneView& scene, const Tracer& tracer, PathSt
 }
 
 // Radiance arriving at the camera along `ray` (one sample), one ray at a time. With kAovs,
-// `first` (zeroed by the caller) also receives the sample's first hit and albedo (interact).
+// `first` (zeroed by the caller) also receives the sample's first hit, albedo and direct light
+// (interact).
 template <bool kAovs = false, class Tracer>
 CANDELA_HDI Vec3 traceRadiance(const SceneView& scene, const Tracer& tracer, const Ray& ray,
                                SampleStream& rng, RayCounters& counters,
