@@ -38,7 +38,8 @@ struct AovRender {
   }
 };
 
-const char* kAll = "depth,distance,normal,normal_camera,albedo,position,instance,material,direct";
+const char* kAll =
+    "depth,distance,normal,normal_camera,albedo,position,instance,material,direct,emission";
 
 AovRender renderAovs(const std::string& json, const std::string& baseDir = ".", int threads = 0,
                      const char* passes = kAll) {
@@ -74,7 +75,7 @@ TEST(Aovs, UnknownPassNamesAreRefusedWithTheKnownOnes) {
   } catch (const std::invalid_argument& e) {
     EXPECT_EQ(std::string(e.what()),
               "unknown render pass \"normals\"; the passes are: depth, distance, normal, "
-              "normal_camera, albedo, position, instance, material, flow, direct");
+              "normal_camera, albedo, position, instance, material, flow, direct, emission");
   }
   const std::vector<Aov> aovs = parseAovList(" normal , depth,normal");
   ASSERT_EQ(aovs.size(), 2u);
@@ -304,6 +305,31 @@ TEST(Aovs, DirectLightLeavesOutTheLightVertexConnections) {
   const DirectAndImage deep = renderDirect(json, 6), shallow = renderDirect(json, 1);
   EXPECT_EQ(std::memcmp(deep.direct.data(), shallow.image.data(), deep.direct.size() * 4), 0);
   EXPECT_NE(std::memcmp(deep.image.data(), shallow.image.data(), deep.image.size() * 4), 0);
+}
+
+// The emission pass holds the emitting surfaces seen at the first hit: an emissive sphere's
+// radiance where the camera sees it, nothing where it sees the environment or the sphere in a
+// mirror, all of which the direct light pass holds.
+TEST(Aovs, EmissionIsTheEmittersSeenAtTheFirstHit) {
+  const AovRender r = renderAovs(R"({
+    "camera": {"width": 21, "height": 9, "fov": 40, "spp": 4, "position": [0, 0, 10]},
+    "render": {"antialiasing": false},
+    "environment": {"color": [0.5, 0.25, 0.125]},
+    "spheres": [{"position": [-2, 0, 0], "radius": 1,
+                 "material": {"type": "emissive", "radiance": [3, 2, 1]}},
+                {"position": [2.5, 0, 0], "radius": 1, "material": "mirror"}]
+  })", ".", 2, "emission,direct");
+  EXPECT_TRUE(same(r.at3("emission", 6, 4), Vec3(3.0f, 2.0f, 1.0f)));  // the emitter
+  EXPECT_TRUE(same(r.at3("direct", 6, 4), Vec3(3.0f, 2.0f, 1.0f)));
+  EXPECT_TRUE(same(r.at3("emission", 10, 0), Vec3(0.0f)));  // the environment
+  EXPECT_TRUE(same(r.at3("direct", 10, 0), Vec3(0.5f, 0.25f, 0.125f)));
+  // The mirror's left side shows the emitter; the direct pass has it, the emission pass not.
+  bool mirrored = false;
+  for (uint32_t x = 11; x < 21; ++x) {
+    EXPECT_TRUE(same(r.at3("emission", x, 4), Vec3(0.0f))) << x;
+    mirrored |= r.at("direct", x, 4, 0) > 1.0f;
+  }
+  EXPECT_TRUE(mirrored);
 }
 
 // Passes draw no random numbers: the beauty image is bit-identical with and without them, and the

@@ -123,7 +123,7 @@ TEST_F(CliAovTest, UnknownPassIsAUsageErrorListingTheKnownOnes) {
   EXPECT_EQ(err,
             "candela: error: --aov: unknown render pass \"nromal\"; the passes are: depth, "
             "distance, normal, normal_camera, albedo, position, instance, material, flow, "
-            "direct\n");
+            "direct, emission\n");
   EXPECT_FALSE(fs::exists(path("out.png")));
 }
 

@@ -121,11 +121,11 @@ class Scene:
         is the denoised radiance and "noisy" the render as it came.
 
         aovs: render passes to return as well (docs/aovs.md): "depth", "distance", "normal",
-        "normal_camera", "albedo", "position", "instance", "material", "flow", "direct". With
-        aovs the result is a dict: "image" the radiance, and one array per pass, (height, width)
-        float32 for depth and distance, (height, width, 2) float32 for flow, (height, width, 3)
-        float32 for the others, (height, width) uint32 for the ids. An unknown pass name raises
-        ValueError.
+        "normal_camera", "albedo", "position", "instance", "material", "flow", "direct",
+        "emission". With aovs the result is a dict: "image" the radiance, and one array per pass,
+        (height, width) float32 for depth and distance, (height, width, 2) float32 for flow,
+        (height, width, 3) float32 for the others, (height, width) uint32 for the ids. An unknown
+        pass name raises ValueError.
 
         spp and seed override the scene's. backend: "auto" (the CPU until the CUDA backend has
         passed its tests on a GPU), "cpu" or "cuda" (untested; RuntimeError where it cannot
@@ -165,13 +165,13 @@ def _pass_names(aovs: Optional[Sequence[str]]) -> Optional[list]:
 
 
 def _passes_to_render(aovs: Optional[list], denoise: bool) -> Optional[list]:
-    """The passes a render needs: those asked for, and with denoise the denoiser's guides and the
-    direct light. With denoise, fails before rendering where the denoiser is missing."""
+    """The passes a render needs: those asked for, and with denoise the denoiser's guides, the
+    direct light and the emission. With denoise, fails before rendering where the denoiser is missing."""
     if not denoise:
         return aovs
     from . import denoise as oidn
     oidn._oidn()
-    return list(dict.fromkeys((aovs or []) + ["albedo", "normal", "direct"]))
+    return list(dict.fromkeys((aovs or []) + ["albedo", "normal", "direct", "emission"]))
 
 
 def _denoised(result: Dict[str, np.ndarray], aovs: Optional[list], threads: int = 0):
@@ -180,7 +180,7 @@ def _denoised(result: Dict[str, np.ndarray], aovs: Optional[list], threads: int 
     and "noisy"."""
     from . import denoise as oidn
     clean = oidn.denoise(result["image"], result["albedo"], result["normal"], result["direct"],
-                         threads=threads)
+                         result["emission"], threads=threads)
     if aovs is None:
         return clean
     result["noisy"] = result["image"]

@@ -4,7 +4,8 @@
 
 OIDN's "RT" filter takes the noisy HDR radiance with the first non-specular surface's albedo and
 its world-space normal (docs/aovs.md), which keep edges and textures that the noise would blur;
-the direct light (the "direct" pass) and the rest are filtered apart.
+the direct light (the "direct" pass, less the emitters seen, "emission") and the rest are
+filtered apart.
 """
 from __future__ import annotations
 
@@ -64,12 +65,16 @@ def _run(pyoidn, inputs: dict, hdr: bool = False, clean_aux: bool = False,
 
 
 def denoise(image: np.ndarray, albedo: np.ndarray, normal: np.ndarray,
-            direct: Optional[np.ndarray] = None, threads: int = 0) -> np.ndarray:
+            direct: Optional[np.ndarray] = None, emission: Optional[np.ndarray] = None,
+            threads: int = 0) -> np.ndarray:
     """The denoised (H, W, 3) float32 radiance of `image`, guided by `albedo` and `normal`, on at
     most `threads` CPU threads (0: all cores). With `direct`, the image's direct light pass, the
     direct light and the rest (image - direct) are filtered apart and added, as
     `scene.render(denoise=True)` and `candela render --denoise` do: the direct light is far less
-    noisy, and filtered alone it keeps its detail (docs/performance.md, Denoising).
+    noisy, and filtered alone it keeps its detail. With `emission` too, the emitters the image
+    shows are left out of the direct light's filter and added as they are: they carry no noise
+    but their edges', and their radiance, far above the rest, would spread into it
+    (docs/performance.md, Denoising).
 
     The guides come from the same samples as the image and carry a little noise of their own
     (antialiased edges, depth of field, what glass and mirrors show): each is denoised first and
@@ -77,7 +82,9 @@ def denoise(image: np.ndarray, albedo: np.ndarray, normal: np.ndarray,
     pyoidn = _oidn()
     contiguous = lambda a: np.ascontiguousarray(a, dtype=np.float32)  # noqa: E731
     colour = contiguous(image)
-    parts = [colour] if direct is None else [contiguous(direct), colour - contiguous(direct)]
+    shown = 0.0 if emission is None else contiguous(emission)
+    parts = ([colour] if direct is None else
+             [contiguous(direct) - shown, colour - contiguous(direct)])
     with _lock:
         albedo = _run(pyoidn, {pyoidn.OIDN_IMAGE_ALBEDO: contiguous(np.clip(albedo, 0.0, 1.0))},
                       threads=threads)
@@ -86,4 +93,4 @@ def denoise(image: np.ndarray, albedo: np.ndarray, normal: np.ndarray,
         filtered = [_run(pyoidn, {pyoidn.OIDN_IMAGE_COLOR: part, pyoidn.OIDN_IMAGE_ALBEDO: albedo,
                                   pyoidn.OIDN_IMAGE_NORMAL: normal}, hdr=True, clean_aux=True,
                          threads=threads) for part in parts]
-        return filtered[0] if direct is None else filtered[0] + filtered[1]
+        return filtered[0] if direct is None else filtered[0] + filtered[1] + shown

@@ -22,12 +22,14 @@ namespace candela {
 // along the sampled path (mirrors and smooth glass are followed), or of an emitter's radiance
 // clamped to [0, 1]; `albedoDone` says it was found. `direct` is the part of the sample's
 // radiance that the path gathered by at most one scattering: what it would carry at max_depth 1
-// (emitters and the environment seen at its first two hits, next-event estimation at its first).
+// (emitters and the environment seen at its first two hits, next-event estimation at its first);
+// `emission` the radiance of an emitting surface that is its first hit.
 struct FirstHit {
   Vec3 position{0.0f};  // world space
   Vec3 normal{0.0f};    // world-space shading normal, turned to face the incoming ray
   Vec3 albedo{0.0f};
   Vec3 direct{0.0f};
+  Vec3 emission{0.0f};
   uint32_t material = 0;  // flattened material index, valid when `hit`
   bool hit = false;
   bool albedoDone = false;
@@ -47,6 +49,7 @@ struct AovPixel {
   Vec3 normalSum{0.0f};    // over samples that hit
   Vec3 albedoSum{0.0f};    // over all samples (the background adds the environment's share)
   Vec3 directSum{0.0f};    // over all samples, as the radiance (a non-finite sample adds 0)
+  Vec3 emissionSum{0.0f};  // likewise
   float distanceSum = 0.0f;  // |position - camera centre|, over samples that hit
   Vec2 flowSum;              // over samples whose flow is defined (render/flow.h)
   uint32_t flowSamples = 0;
@@ -67,6 +70,7 @@ struct AovPixel {
   X(normalSum, "normal_sum", float, 3, Added)                 \
   X(albedoSum, "albedo_sum", float, 3, Added)                 \
   X(directSum, "direct_sum", float, 3, Added)                 \
+  X(emissionSum, "emission_sum", float, 3, Added)             \
   X(distanceSum, "distance_sum", float, 1, Added)             \
   X(flowSum, "flow_sum", float, 2, Added)                     \
   X(flowSamples, "flow_samples", uint32_t, 1, Added)          \
@@ -82,12 +86,15 @@ static_assert(sizeof(AovPixel) == 0 CANDELA_AOV_PIXEL_FIELDS(CANDELA_AOV_FIELD_B
 #undef CANDELA_AOV_FIELD_BYTES
 
 // Adds sample `first` taken at jitter (jx, jy) in the pixel, by a camera centred at `eye`, and
-// its optical flow `flow` where `hasFlow`; its direct light only where its radiance was finite
-// (and so counted).
+// its optical flow `flow` where `hasFlow`; its direct light and emission only where its
+// radiance was finite (and so counted).
 CANDELA_HDI void addAovSample(AovPixel* pixel, const FirstHit& first, float jx, float jy,
                               const Vec3& eye, bool hasFlow, const Vec2& flow, bool finite) {
   ++pixel->samples;
-  if (finite) pixel->directSum += first.direct;
+  if (finite) {
+    pixel->directSum += first.direct;
+    pixel->emissionSum += first.emission;
+  }
   if (hasFlow) {
     pixel->flowSum = pixel->flowSum + flow;
     ++pixel->flowSamples;

@@ -29,6 +29,7 @@ const std::vector<AovInfo>& aovTable() {
       {Aov::Material, "material", {"id"}, true},
       {Aov::Flow, "flow", {"X", "Y"}, false},
       {Aov::Direct, "direct", {"R", "G", "B"}, false},
+      {Aov::Emission, "emission", {"R", "G", "B"}, false},
   };
   return table;
 }
@@ -91,6 +92,8 @@ void resolvePixel(Aov aov, const SceneData& scene, const AovPixel& p, float* out
     }
     case Aov::Direct:
       return put(p.samples > 0 ? p.directSum / float(p.samples) : Vec3(0.0f));
+    case Aov::Emission:
+      return put(p.samples > 0 ? p.emissionSum / float(p.samples) : Vec3(0.0f));
   }
 }
 

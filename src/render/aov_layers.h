@@ -22,7 +22,8 @@ enum class Aov {
   Instance,
   Material,
   Flow,
-  Direct
+  Direct,
+  Emission
 };
 
 // "depth", "normal_camera", ...

@@ -145,8 +145,8 @@ struct PathState {
 // scene.glassSplitDepth, leaving the reflection as a waiting branch: render/path_branch.h). False
 // when the path ends here (its shadow queries still count; a waiting branch is the caller's to
 // resume). With kAovs, `first` (zeroed by the caller) also receives the sample's first hit,
-// albedo and direct light (render/aov.h); that work is compiled only into the kAovs instance,
-// and it draws no random numbers, so the radiance is the same.
+// albedo, direct light and emission (render/aov.h); that work is compiled only into the kAovs
+// instance, and it draws no random numbers, so the radiance is the same.
 template <bool kAovs>
 CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool found,
                                  const Hit& hit, SampleStream& rng, RayCounters& counters,
@@ -208,8 +208,10 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
         weight = powerHeuristic3(st.bsdfPdf, neePdf, subpathPdf);
       }
       const Vec3 seen = st.throughput * surfaceRadiance(scene, m, hit, sp) * weight;
-      if constexpr (kAovs)
+      if constexpr (kAovs) {
         if (depth <= 2) first->direct += seen;
+        if (depth == 1) first->emission = seen;
+      }
       st.radiance += seen;
     }
     return false;
@@ -334,8 +336,8 @@ CANDELA_HDI Vec3 finishPath(const SceneView& scene, const Tracer& tracer, PathSt
 }
 
 // Radiance arriving at the camera along `ray` (one sample), one ray at a time. With kAovs,
-// `first` (zeroed by the caller) also receives the sample's first hit, albedo and direct light
-// (interact).
+// `first` (zeroed by the caller) also receives the sample's first hit, albedo, direct light and
+// emission (interact).
 template <bool kAovs = false, class Tracer>
 CANDELA_HDI Vec3 traceRadiance(const SceneView& scene, const Tracer& tracer, const Ray& ray,
                                SampleStream& rng, RayCounters& counters,

@@ -54,7 +54,7 @@ def test_flow_of_an_animated_frame_is_an_h_w_2_array_in_pixels():
 
 
 ALL_PASSES = ["depth", "distance", "normal", "normal_camera", "albedo", "position", "instance",
-              "material", "flow", "direct"]
+              "material", "flow", "direct", "emission"]
 
 
 @pytest.mark.parametrize("animated", [True, False], ids=["animation frame", "still scene"])

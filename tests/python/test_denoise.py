@@ -33,15 +33,21 @@ def test_with_aovs_the_noisy_image_and_the_asked_passes_come_back():
     assert not np.array_equal(result["image"], result["noisy"])
 
 
-def test_direct_and_indirect_light_are_denoised_apart():
+def test_direct_and_indirect_light_are_denoised_apart_and_emitters_seen_left_as_they_are():
     from candela import denoise as oidn
-    scene = candela.Scene.from_dict(tiny_scene(size=32))
-    result = scene.render(spp=4, seed=3, aovs=["albedo", "normal", "direct"], denoise=True)
+    spec = tiny_scene(size=32)
+    spec["spheres"].append({"position": [-1.2, 0.3, 0.5], "radius": 0.3,
+                            "material": {"type": "emissive", "radiance": 40}})
+    scene = candela.Scene.from_dict(spec)
+    result = scene.render(spp=4, seed=3, aovs=["albedo", "normal", "direct", "emission"],
+                          denoise=True)
     guides = (result["noisy"], result["albedo"], result["normal"])
-    np.testing.assert_allclose(result["image"], oidn.denoise(*guides, result["direct"]),
-                               rtol=1e-5, atol=1e-6)
-    together = oidn.denoise(*guides)
-    assert np.abs(result["image"] - together).max() > 1e-2 * together.max()
+    np.testing.assert_allclose(
+        result["image"], oidn.denoise(*guides, result["direct"], result["emission"]),
+        rtol=1e-5, atol=1e-6)
+    assert result["emission"].max() == 40.0
+    for other in (oidn.denoise(*guides), oidn.denoise(*guides, result["direct"])):
+        assert np.abs(result["image"] - other).max() > 1e-2 * other.max()
 
 
 def test_a_missing_denoiser_is_named_before_rendering(monkeypatch):

@@ -118,10 +118,10 @@ OidnDenoiser::~OidnDenoiser() {
 
 void OidnDenoiser::denoise(ImageRGB& image, const std::vector<float>& albedo,
                            const std::vector<float>& normal, const std::vector<float>& direct,
-                           int threads) const {
+                           const std::vector<float>& emission, int threads) const {
   const Api& a = *api_;
   const size_t w = image.width, h = image.height, n = 3 * w * h;
-  if (albedo.size() != n || normal.size() != n || direct.size() != n)
+  if (albedo.size() != n || normal.size() != n || direct.size() != n || emission.size() != n)
     throw std::invalid_argument("denoise: the passes do not match the image's size");
   // OIDN expects albedo in [0, 1] and normals in [-1, 1]; the passes hold those already, up to
   // rounding, which the clamps take away.
@@ -157,13 +157,18 @@ void OidnDenoiser::denoise(ImageRGB& image, const std::vector<float>& albedo,
   run({{"albedo", a01.data()}}, albedoClean.data(), false, false);
   run({{"normal", n11.data()}}, normalClean.data(), false, false);
   // Direct and indirect light are filtered apart and added: the direct part is far less noisy
-  // and keeps its detail (docs/performance.md, Denoising).
-  std::vector<float> directPart(direct), indirectPart(n), indirectOut(n);
-  for (size_t i = 0; i < n; ++i) indirectPart[i] = image.pixels[i] - direct[i];
+  // and keeps its detail. Emitters seen directly carry no noise but their edges' and are left
+  // out of both: their radiance, far above the rest, would spread into it (docs/performance.md,
+  // Denoising).
+  std::vector<float> directPart(n), indirectPart(n), indirectOut(n);
+  for (size_t i = 0; i < n; ++i) {
+    directPart[i] = direct[i] - emission[i];
+    indirectPart[i] = image.pixels[i] - direct[i];
+  }
   for (auto [colour, output] : {std::pair{&directPart, &out}, {&indirectPart, &indirectOut}})
     run({{"color", colour->data()}, {"albedo", albedoClean.data()}, {"normal", normalClean.data()}},
         output->data(), true, true);
-  for (size_t i = 0; i < n; ++i) out[i] += indirectOut[i];
+  for (size_t i = 0; i < n; ++i) out[i] += indirectOut[i] + emission[i];
   const char* message = nullptr;
   const int error = a.getDeviceError(device, &message);
   a.releaseDevice(device);
@@ -175,8 +180,9 @@ void OidnDenoiser::denoise(ImageRGB& image, const std::vector<float>& albedo,
 
 void OidnDenoiser::denoise(RenderResult& result, const SceneData& scene, int threads) const {
   const std::vector<ImageLayer> passes =
-      makeAovLayers(scene, {Aov::Albedo, Aov::Normal, Aov::Direct}, result.aovs);
-  denoise(result.image, passes[0].pixels, passes[1].pixels, passes[2].pixels, threads);
+      makeAovLayers(scene, {Aov::Albedo, Aov::Normal, Aov::Direct, Aov::Emission}, result.aovs);
+  denoise(result.image, passes[0].pixels, passes[1].pixels, passes[2].pixels, passes[3].pixels,
+          threads);
 }
 
 }  // namespace candela::cli

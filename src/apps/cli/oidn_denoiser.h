@@ -24,15 +24,17 @@ class OidnDenoiser {
   static std::unique_ptr<OidnDenoiser> load(std::string* whyNot);
   ~OidnDenoiser();
 
-  // Replaces `image` (HDR radiance) by its denoised version: its direct light `direct` and the
-  // rest, each filtered, added. `albedo`, `normal` and `direct` hold 3 floats per pixel of the
-  // same size. On OIDN's CPU device, `threads` > 0 caps its threads (0: all cores). Throws
-  // std::runtime_error with OIDN's message when it fails.
+  // Replaces `image` (HDR radiance) by its denoised version: its direct light `direct` less the
+  // emitters it shows (`emission`) and its indirect light, each filtered, and the emission, added.
+  // `albedo`, `normal`, `direct` and `emission` hold 3 floats per pixel of the same size. On
+  // OIDN's CPU device, `threads` > 0 caps its threads (0: all cores). Throws std::runtime_error
+  // with OIDN's message when it fails.
   void denoise(ImageRGB& image, const std::vector<float>& albedo, const std::vector<float>& normal,
-               const std::vector<float>& direct, int threads = 0) const;
+               const std::vector<float>& direct, const std::vector<float>& emission,
+               int threads = 0) const;
 
   // Denoises the image of `result`, a render of `scene` with passes (RenderOptions::aovs), by its
-  // direct light pass, guided by its albedo and normal passes.
+  // direct light and emission passes, guided by its albedo and normal passes.
   void denoise(RenderResult& result, const SceneData& scene, int threads = 0) const;
 
   // The library file that was loaded.

@@ -155,8 +155,8 @@ CLI::App* addRenderCommand(CLI::App& app, RenderCommandOptions* options) {
                   "samples/s, peak RSS) to this JSON file; single stills only");
   cmd->add_option("--aov", options->aovs,
                   "Render passes to write beside the image, comma-separated: depth, distance, "
-                  "normal, normal_camera, albedo, position, instance, material, flow, direct (in "
-                  "an .exr as layers, else as sibling .pfm files: out.depth.pfm)");
+                  "normal, normal_camera, albedo, position, instance, material, flow, direct, "
+                  "emission (in an .exr as layers, else as sibling .pfm files: out.depth.pfm)");
   cmd->add_flag("--denoise", options->denoise,
                 "Denoise the image with Intel Open Image Denoise, its direct and indirect light "
                 "apart, guided by the albedo and normal passes (needs OIDN 2: pip install "
