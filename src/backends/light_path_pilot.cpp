@@ -10,6 +10,11 @@ namespace candela {
 
 namespace {
 
+// relMSE's floor under each pixel's squared value, as a share of the image's squared mean
+// (bench/compare.py's 0.01): a black pixel weighs 100 times one of the mean value, not without
+// bound.
+constexpr double kRelativeErrorFloor = 0.01;
+
 // The smallest stride at which the camera's image has at most kPilotPixels pixels.
 uint32_t pilotStride(uint32_t width, uint32_t height) {
   uint32_t s = 1;
@@ -47,7 +52,7 @@ std::vector<double> relativeErrorWeights(std::initializer_list<const ImageRGB*> 
           for (uint32_t i = x > 0 ? x - 1 : 0; i <= std::min(x + 1, w - 1); ++i, ++count)
             sum += mean[3 * (size_t(j) * w + i) + c];
         const double v = sum / count;
-        weights[3 * (size_t(y) * w + x) + c] = 1.0 / (v * v + 0.01 * m * m);
+        weights[3 * (size_t(y) * w + x) + c] = 1.0 / (v * v + kRelativeErrorFloor * m * m);
       }
   return weights;
 }
