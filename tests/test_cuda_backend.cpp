@@ -304,7 +304,8 @@ TEST(CudaBackend, PassesMatchCpuWithinRounding) {
                       c.nearestMaterial == g.nearestMaterial &&
                       c.nearestDistance2 == g.nearestDistance2 &&
                       close3(c.positionSum, g.positionSum) && close3(c.normalSum, g.normalSum) &&
-                      close3(c.albedoSum, g.albedoSum) && close(c.distanceSum, g.distanceSum) &&
+                      close3(c.albedoSum, g.albedoSum) && close3(c.directSum, g.directSum) &&
+                      close3(c.emissionSum, g.emissionSum) && close(c.distanceSum, g.distanceSum) &&
                       close(c.flowSum.x, g.flowSum.x) && close(c.flowSum.y, g.flowSum.y);
     differing += !same;
   }
