@@ -2,8 +2,8 @@
 """Issue 22's denoising measurement: on each bench scene, relMSE against candela's converged image
 of candela at 16 spp denoised as scene.render(denoise=True) does it (Open Image Denoise on the
 direct and indirect light apart, albedo and normal guides) and of candela at 256 spp raw, each
-over several seeds. relMSE is bench/run's: compare.py's, on images divided by the
-reference's mean.
+over several seeds. relMSE is bench/run's: compare.py's, on images divided by the reference's
+mean.
 
 A denoiser is judged against the image its renderer converges to: the reference is candela's own
 render at --ref-spp (default 1024), made once and kept in the work folder as

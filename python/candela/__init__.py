@@ -166,7 +166,8 @@ def _pass_names(aovs: Optional[Sequence[str]]) -> Optional[list]:
 
 def _passes_to_render(aovs: Optional[list], denoise: bool) -> Optional[list]:
     """The passes a render needs: those asked for, and with denoise the denoiser's guides, the
-    direct light and the emission. With denoise, fails before rendering where the denoiser is missing."""
+    direct light and the emission. With denoise, fails before rendering where the denoiser is
+    missing."""
     if not denoise:
         return aovs
     from . import denoise as oidn

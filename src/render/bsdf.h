@@ -28,7 +28,7 @@ CANDELA_HDI float sideOf(const Vec3& wo, const Vec3& ng) {
 
 // The shading normal turned to wo's side of the surface (decided by the geometric normal).
 CANDELA_HDI Vec3 facingNormal(const Vec3& wo, const Vec3& ng, const Vec3& ns) {
-  return dot(wo, ng) >= 0.0f ? ns : -ns;
+  return sideOf(wo, ng) > 0.0f ? ns : -ns;
 }
 
 struct Bsdf {
