@@ -13,7 +13,7 @@
 #include <CLI/CLI.hpp>
 
 #include "apps/cli/cli_options.h"
-#include "apps/cli/oidn_denoiser.h"
+#include "apps/denoise/oidn_denoiser.h"
 #include "render/aov_layers.h"
 #include "scene/scene_desc.h"
 

@@ -11,7 +11,7 @@
 
 #include "apps/cli/cli_error.h"
 #include "apps/cli/interrupt.h"
-#include "apps/cli/oidn_denoiser.h"
+#include "apps/denoise/oidn_denoiser.h"
 #include "apps/cli/output_check.h"
 #include "apps/cli/pass_files.h"
 #include "apps/cli/progress_bar.h"

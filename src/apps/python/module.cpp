@@ -15,6 +15,7 @@
 #include <nanobind/stl/vector.h>
 
 #include <cstring>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -23,6 +24,7 @@
 #include <tuple>
 #include <utility>
 
+#include "apps/denoise/oidn_denoiser.h"
 #include "apps/python/interruptible.h"
 #include "backends/light_path_pilot.h"
 #include "backends/thread_limit.h"
@@ -266,6 +268,45 @@ void writeImageArray(const std::string& path, const ImageInput& img, bool srgb, 
   writeImage(path, image, output);
 }
 
+// Open Image Denoise from the library file `library`, loaded once and kept for the process:
+// its devices stay up between calls, as its first start is what costs. RuntimeError where it
+// cannot be loaded.
+const OidnDenoiser& oidn(const std::string& library) {
+  static std::mutex mutex;
+  static std::map<std::string, OidnDenoiser*> loaded;  // never unloaded (see above)
+  std::lock_guard<std::mutex> lock(mutex);
+  OidnDenoiser*& denoiser = loaded[library];
+  if (!denoiser) {
+    std::string whyNot;
+    denoiser = OidnDenoiser::load(&whyNot, library).release();
+    if (!denoiser) throw std::runtime_error(whyNot);
+  }
+  return *denoiser;
+}
+
+// OidnDenoiser::denoise on arrays of one shape: the denoised image, a new array.
+ImageArray denoiseArrays(const std::string& library, const ImageInput& image,
+                         const ImageInput& albedo, const ImageInput& normal,
+                         const std::optional<ImageInput>& direct,
+                         const std::optional<ImageInput>& emission, int threads) {
+  const size_t h = image.shape(0), w = image.shape(1);
+  for (const ImageInput* pass : {&albedo, &normal, direct ? &*direct : nullptr,
+                                 emission ? &*emission : nullptr})
+    if (pass && (pass->shape(0) != h || pass->shape(1) != w))
+      throw std::invalid_argument("denoise: every pass must have the image's shape (" +
+                                  std::to_string(h) + ", " + std::to_string(w) + ", 3)");
+  const OidnDenoiser& denoiser = oidn(library);
+  std::vector<float> pixels(image.data(), image.data() + 3 * w * h);
+  {
+    nb::gil_scoped_release release;
+    denoiser.denoise(pixels.data(), w, h, albedo.data(), normal.data(),
+                     direct ? direct->data() : nullptr, emission ? emission->data() : nullptr,
+                     threads);
+  }
+  auto [data, owner] = heapOwned(std::move(pixels));
+  return ImageArray(data, {h, w, size_t(3)}, owner);
+}
+
 }  // namespace
 }  // namespace candela::python
 
@@ -327,6 +368,8 @@ NB_MODULE(_candela, m) {
   m.def("check_aovs", [](const std::vector<std::string>& names) { aovsFromNames(names); },
         "names"_a);
   m.def("write_image", &writeImageArray, "path"_a, "img"_a, "srgb"_a, "gamma"_a, "exposure"_a);
+  m.def("denoise", &denoiseArrays, "library"_a, "image"_a, "albedo"_a, "normal"_a,
+        "direct"_a = nb::none(), "emission"_a = nb::none(), "threads"_a = 0);
   m.def("cuda_available", [] {
     std::string reason;
     return cudaUsable(&reason);
