@@ -21,8 +21,8 @@ struct OidnDenoiser::Api {
   using Device = void*;
   using Filter = void*;
   using Buffer = void*;
-  static constexpr int kFormatFloat3 = 3;       // OIDN_FORMAT_FLOAT3
-  static constexpr int kDeviceTypeCpu = 1;      // OIDN_DEVICE_TYPE_CPU
+  static constexpr int kFormatFloat3 = 3;   // OIDN_FORMAT_FLOAT3
+  static constexpr int kDeviceTypeCpu = 1;  // OIDN_DEVICE_TYPE_CPU
   Device (*newDevice)(int type);
   void (*setDeviceInt)(Device, const char* name, int value);
   void (*commitDevice)(Device);
@@ -66,8 +66,7 @@ std::string pyoidnLibraryFolder() {
 
 }  // namespace
 
-std::unique_ptr<OidnDenoiser> OidnDenoiser::load(std::string* whyNot,
-                                                const std::string& library) {
+std::unique_ptr<OidnDenoiser> OidnDenoiser::load(std::string* whyNot, const std::string& library) {
   std::string tried;
   std::unique_ptr<OidnDenoiser> d;
   // Opens `path`; true when it opened, with d set, or whyNot where it is not OIDN 2.
@@ -82,22 +81,21 @@ std::unique_ptr<OidnDenoiser> OidnDenoiser::load(std::string* whyNot,
     d->path_ = path;
     d->api_ = std::make_unique<Api>();
     Api& a = *d->api_;
-    const bool complete =
-        bind(handle, "oidnNewDevice", &a.newDevice) &&
-        bind(handle, "oidnSetDeviceInt", &a.setDeviceInt) &&
-        bind(handle, "oidnCommitDevice", &a.commitDevice) &&
-        bind(handle, "oidnGetDeviceError", &a.getDeviceError) &&
-        bind(handle, "oidnReleaseDevice", &a.releaseDevice) &&
-        bind(handle, "oidnNewBuffer", &a.newBuffer) &&
-        bind(handle, "oidnWriteBuffer", &a.writeBuffer) &&
-        bind(handle, "oidnReadBuffer", &a.readBuffer) &&
-        bind(handle, "oidnReleaseBuffer", &a.releaseBuffer) &&
-        bind(handle, "oidnNewFilter", &a.newFilter) &&
-        bind(handle, "oidnSetFilterImage", &a.setFilterImage) &&
-        bind(handle, "oidnSetFilterBool", &a.setFilterBool) &&
-        bind(handle, "oidnCommitFilter", &a.commitFilter) &&
-        bind(handle, "oidnExecuteFilter", &a.executeFilter) &&
-        bind(handle, "oidnReleaseFilter", &a.releaseFilter);
+    const bool complete = bind(handle, "oidnNewDevice", &a.newDevice) &&
+                          bind(handle, "oidnSetDeviceInt", &a.setDeviceInt) &&
+                          bind(handle, "oidnCommitDevice", &a.commitDevice) &&
+                          bind(handle, "oidnGetDeviceError", &a.getDeviceError) &&
+                          bind(handle, "oidnReleaseDevice", &a.releaseDevice) &&
+                          bind(handle, "oidnNewBuffer", &a.newBuffer) &&
+                          bind(handle, "oidnWriteBuffer", &a.writeBuffer) &&
+                          bind(handle, "oidnReadBuffer", &a.readBuffer) &&
+                          bind(handle, "oidnReleaseBuffer", &a.releaseBuffer) &&
+                          bind(handle, "oidnNewFilter", &a.newFilter) &&
+                          bind(handle, "oidnSetFilterImage", &a.setFilterImage) &&
+                          bind(handle, "oidnSetFilterBool", &a.setFilterBool) &&
+                          bind(handle, "oidnCommitFilter", &a.commitFilter) &&
+                          bind(handle, "oidnExecuteFilter", &a.executeFilter) &&
+                          bind(handle, "oidnReleaseFilter", &a.releaseFilter);
     if (!complete) {
       d.reset();
       *whyNot = path + " is not Open Image Denoise 2 (an entry point is missing)";
@@ -232,8 +230,8 @@ void OidnDenoiser::denoise(float* image, size_t width, size_t height, const floa
   for (const std::vector<float>& part : parts) {
     const std::unique_ptr<Buffer> colour = upload(part);
     const Buffer output(a, dev, bytes);
-    run({{"color", colour.get()}, {"albedo", &albedoClean}, {"normal", &normalClean}}, output,
-        true, true);
+    run({{"color", colour.get()}, {"albedo", &albedoClean}, {"normal", &normalClean}}, output, true,
+        true);
     a.readBuffer(output.get(), 0, bytes, filtered.data());
     for (size_t i = 0; i < n; ++i) sum[i] += filtered[i];
   }

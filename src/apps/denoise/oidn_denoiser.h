@@ -37,9 +37,8 @@ class OidnDenoiser {
   // one filter runs over the image. `albedo` and `normal` guide every filter, each denoised
   // first. `threads` > 0 caps OIDN's threads (0: all cores). Calls take turns.
   // Throws std::runtime_error with OIDN's message when it fails.
-  void denoise(float* image, size_t width, size_t height, const float* albedo,
-               const float* normal, const float* direct, const float* emission,
-               int threads = 0) const;
+  void denoise(float* image, size_t width, size_t height, const float* albedo, const float* normal,
+               const float* direct, const float* emission, int threads = 0) const;
 
   // Denoises the image of `result`, a render of `scene` with passes (RenderOptions::aovs), by its
   // direct light and emission passes, guided by its albedo and normal passes.
