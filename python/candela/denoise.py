@@ -55,6 +55,11 @@ def denoise(image: np.ndarray, albedo: np.ndarray, normal: np.ndarray,
     (antialiased edges, depth of field, what glass and mirrors show): each is denoised first and
     the image then filtered with clean guides, as OIDN's documentation recommends."""
     def contiguous(a):
-        return None if a is None else np.ascontiguousarray(a, dtype=np.float32)
+        if a is None:
+            return None
+        a = np.ascontiguousarray(a, dtype=np.float32)
+        if a.ndim != 3 or a.shape[2] != 3:
+            raise ValueError(f"denoise: expected images of shape (H, W, 3), got {a.shape}")
+        return a
     return _candela.denoise(_library(), contiguous(image), contiguous(albedo), contiguous(normal),
                             contiguous(direct), contiguous(emission), threads=threads)

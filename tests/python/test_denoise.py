@@ -55,6 +55,8 @@ def test_passes_of_another_shape_are_refused_by_name():
     image = np.ones((4, 5, 3), np.float32)
     with pytest.raises(ValueError, match=r"the image's shape \(4, 5, 3\)"):
         oidn.denoise(image, image[:3], image)
+    with pytest.raises(ValueError, match=r"shape \(H, W, 3\), got \(4, 5\)"):
+        oidn.denoise(image[..., 0], image, image)
 
 
 def test_a_missing_denoiser_is_named_before_rendering(monkeypatch):
