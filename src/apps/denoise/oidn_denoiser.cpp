@@ -113,7 +113,7 @@ std::unique_ptr<OidnDenoiser> OidnDenoiser::load(std::string* whyNot, const std:
              !folder.empty() && open(folder + "/libOpenImageDenoise.so.2")) {
     return d;
   }
-  *whyNot = "--denoise needs Intel Open Image Denoise 2, which was not found (tried " + tried +
+  *whyNot = "denoising needs Intel Open Image Denoise 2, which was not found (tried " + tried +
             "): install it with `pip install pyoidn` (scripts/install-python does), or set "
             "CANDELA_OIDN_LIBRARY to its libOpenImageDenoise.so";
   return nullptr;
