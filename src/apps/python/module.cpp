@@ -290,8 +290,8 @@ ImageArray denoiseArrays(const std::string& library, const ImageInput& image,
                          const std::optional<ImageInput>& direct,
                          const std::optional<ImageInput>& emission, int threads) {
   const size_t h = image.shape(0), w = image.shape(1);
-  for (const ImageInput* pass : {&albedo, &normal, direct ? &*direct : nullptr,
-                                 emission ? &*emission : nullptr})
+  for (const ImageInput* pass :
+       {&albedo, &normal, direct ? &*direct : nullptr, emission ? &*emission : nullptr})
     if (pass && (pass->shape(0) != h || pass->shape(1) != w))
       throw std::invalid_argument("denoise: every pass must have the image's shape (" +
                                   std::to_string(h) + ", " + std::to_string(w) + ", 3)");
