@@ -78,7 +78,6 @@ std::unique_ptr<OidnDenoiser> OidnDenoiser::load(std::string* whyNot, const std:
     }
     d.reset(new OidnDenoiser);
     d->handle_ = handle;
-    d->path_ = path;
     d->api_ = std::make_unique<Api>();
     Api& a = *d->api_;
     const bool complete = bind(handle, "oidnNewDevice", &a.newDevice) &&
@@ -146,14 +145,15 @@ void* OidnDenoiser::device(int threads) const {
 
 namespace {
 
-// An OIDN buffer, released when it goes.
+// An OIDN buffer of `bytes`, filled from `source` where given, released when it goes.
 class Buffer {
  public:
-  Buffer(const OidnDenoiser::Api& api, void* device, size_t bytes)
+  Buffer(const OidnDenoiser::Api& api, void* device, size_t bytes, const float* source = nullptr)
       : api_(api), buffer_(api.newBuffer(device, bytes)) {
     if (!buffer_)
       throw std::runtime_error("Open Image Denoise could not allocate " + std::to_string(bytes) +
                                " bytes for an image");
+    if (source) api.writeBuffer(buffer_, 0, bytes, source);
   }
   ~Buffer() {
     if (buffer_) api_.releaseBuffer(buffer_);
@@ -176,11 +176,6 @@ void OidnDenoiser::denoise(float* image, size_t width, size_t height, const floa
   const Api& a = *api_;
   void* dev = device(threads);
   const size_t n = 3 * width * height, bytes = n * sizeof(float), pixel = 3 * sizeof(float);
-  const auto upload = [&](const std::vector<float>& pixels) {
-    auto buffer = std::make_unique<Buffer>(a, dev, bytes);
-    a.writeBuffer(buffer->get(), 0, bytes, pixels.data());
-    return buffer;
-  };
   // One "RT" filter over `inputs` (name, buffer) into `output`.
   const auto run = [&](std::initializer_list<std::pair<const char*, const Buffer*>> inputs,
                        const Buffer& output, bool hdr, bool cleanAux) {
@@ -201,17 +196,17 @@ void OidnDenoiser::denoise(float* image, size_t width, size_t height, const floa
   std::vector<float> host(n);
   std::transform(albedo, albedo + n, host.begin(),
                  [](float v) { return std::min(1.0f, std::max(0.0f, v)); });
-  const std::unique_ptr<Buffer> albedoIn = upload(host);
+  const Buffer albedoIn(a, dev, bytes, host.data());
   std::transform(normal, normal + n, host.begin(),
                  [](float v) { return std::min(1.0f, std::max(-1.0f, v)); });
-  const std::unique_ptr<Buffer> normalIn = upload(host);
+  const Buffer normalIn(a, dev, bytes, host.data());
   // The guides come from the same samples as the image and carry a little noise of their own
   // (antialiased edges, depth of field, what glass and mirrors show): each is denoised first and
   // the image then filtered with clean guides, as OIDN's documentation recommends
   // (docs/performance.md, Denoising, has what it gains).
   const Buffer albedoClean(a, dev, bytes), normalClean(a, dev, bytes);
-  run({{"albedo", albedoIn.get()}}, albedoClean, false, false);
-  run({{"normal", normalIn.get()}}, normalClean, false, false);
+  run({{"albedo", &albedoIn}}, albedoClean, false, false);
+  run({{"normal", &normalIn}}, normalClean, false, false);
   // Direct and indirect light are filtered apart and added: the direct part is far less noisy
   // and keeps its detail. Emitters seen directly carry no noise but their edges' and are left
   // out of both: their radiance, far above the rest, would spread into it (docs/performance.md,
@@ -228,9 +223,8 @@ void OidnDenoiser::denoise(float* image, size_t width, size_t height, const floa
   }
   std::vector<float> sum(n, 0.0f), filtered(n);
   for (const std::vector<float>& part : parts) {
-    const std::unique_ptr<Buffer> colour = upload(part);
-    const Buffer output(a, dev, bytes);
-    run({{"color", colour.get()}, {"albedo", &albedoClean}, {"normal", &normalClean}}, output, true,
+    const Buffer colour(a, dev, bytes, part.data()), output(a, dev, bytes);
+    run({{"color", &colour}, {"albedo", &albedoClean}, {"normal", &normalClean}}, output, true,
         true);
     a.readBuffer(output.get(), 0, bytes, filtered.data());
     for (size_t i = 0; i < n; ++i) sum[i] += filtered[i];

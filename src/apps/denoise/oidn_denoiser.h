@@ -44,9 +44,6 @@ class OidnDenoiser {
   // direct light and emission passes, guided by its albedo and normal passes.
   void denoise(RenderResult& result, const SceneData& scene, int threads = 0) const;
 
-  // The library file that was loaded.
-  const std::string& path() const { return path_; }
-
   struct Api;
 
  private:
@@ -57,7 +54,6 @@ class OidnDenoiser {
 
   void* handle_ = nullptr;
   std::unique_ptr<Api> api_;
-  std::string path_;
   mutable std::mutex mutex_;
   mutable std::map<int, void*> devices_;
 };
