@@ -16,18 +16,28 @@
 
 #include "core/device.h"
 #include "core/rng.h"
+#include "core/sample_table.h"
 
 namespace candela {
+
+// The bit-mixing steps below are templates over the word type U (uint32_t, or a SIMD vector
+// of them, whose lanes the CPU's sample tables compute at once: core/sample_table.h), so that
+// every lane computes what SampleStream does, from one source.
+
+// Each byte's bits in reverse order.
+template <class U>
+CANDELA_HDI_ALWAYS U reverseBitsWithinBytes(U v) {
+  v = ((v & 0x0f0f0f0fu) << 4) | ((v & 0xf0f0f0f0u) >> 4);
+  v = ((v & 0x33333333u) << 2) | ((v & 0xccccccccu) >> 2);
+  v = ((v & 0x55555555u) << 1) | ((v & 0xaaaaaaaau) >> 1);
+  return v;
+}
 
 CANDELA_HDI uint32_t reverseBits32(uint32_t v) {
 #if defined(__CUDA_ARCH__)  // the device compilation pass: one instruction
   return __brev(v);
 #else
-  v = __builtin_bswap32(v);  // one instruction on x86-64; then the bits within each byte
-  v = ((v & 0x0f0f0f0fu) << 4) | ((v & 0xf0f0f0f0u) >> 4);
-  v = ((v & 0x33333333u) << 2) | ((v & 0xccccccccu) >> 2);
-  v = ((v & 0x55555555u) << 1) | ((v & 0xaaaaaaaau) >> 1);
-  return v;
+  return reverseBitsWithinBytes(__builtin_bswap32(v));  // bswap: one instruction on x86-64
 #endif
 }
 
@@ -48,7 +58,8 @@ CANDELA_HDI uint32_t sobolDimension1(uint32_t index) {
 // result is the XOR of the index bits k over all supersets k of j, which five shift-and-mask
 // steps compute (the subset-sum transform over the five bits of a bit position), branch-free:
 // a loop over the index bits mispredicted on every sample.
-CANDELA_HDI uint32_t sobolDimension1Reversed(uint32_t index) {
+template <class U>
+CANDELA_HDI_ALWAYS U sobolDimension1Reversed(U index) {
   index ^= (index >> 1) & 0x55555555u;
   index ^= (index >> 2) & 0x33333333u;
   index ^= (index >> 4) & 0x0f0f0f0fu;
@@ -59,7 +70,8 @@ CANDELA_HDI uint32_t sobolDimension1Reversed(uint32_t index) {
 
 // The Laine–Karras hash on a bit-reversed value: each bit is flipped depending only on the bits
 // below it, i.e. on the more significant bits of the unreversed value.
-CANDELA_HDI uint32_t laineKarrasHash(uint32_t v, uint32_t seed) {
+template <class U>
+CANDELA_HDI_ALWAYS U laineKarrasHash(U v, uint32_t seed) {
   v ^= v * 0x3d20adeau;
   v += seed;
   v *= (seed >> 16) | 1u;
@@ -85,29 +97,36 @@ CANDELA_HDI uint32_t permutationMask(uint32_t n) {
   return w;
 }
 
+// One step of the cycle walk of permutationElement below.
+template <class U>
+CANDELA_HDI_ALWAYS U permutationStep(U i, uint32_t w, uint32_t seed) {
+  i ^= seed;
+  i *= 0xe170893du;
+  i ^= seed >> 16;
+  i ^= (i & w) >> 4;
+  i ^= seed >> 8;
+  i *= 0x0929eb3fu;
+  i ^= seed >> 23;
+  i ^= (i & w) >> 1;
+  i *= 1u | seed >> 27;
+  i *= 0x6935fa69u;
+  i ^= (i & w) >> 11;
+  i *= 0x74dcb303u;
+  i ^= (i & w) >> 2;
+  i *= 0x9e501cc3u;
+  i ^= (i & w) >> 2;
+  i *= 0xc860a3dfu;
+  i &= w;
+  i ^= i >> 5;
+  return i;
+}
+
 // Element i of a pseudo-random permutation of [0, n) chosen by `seed` (Kensler 2013,
 // "Correlated Multi-Jittered Sampling"), by cycle walking over the power-of-two range w + 1,
 // w = permutationMask(n).
 CANDELA_HDI_ALWAYS uint32_t permutationElement(uint32_t i, uint32_t n, uint32_t w, uint32_t seed) {
   do {
-    i ^= seed;
-    i *= 0xe170893du;
-    i ^= seed >> 16;
-    i ^= (i & w) >> 4;
-    i ^= seed >> 8;
-    i *= 0x0929eb3fu;
-    i ^= seed >> 23;
-    i ^= (i & w) >> 1;
-    i *= 1u | seed >> 27;
-    i *= 0x6935fa69u;
-    i ^= (i & w) >> 11;
-    i *= 0x74dcb303u;
-    i ^= (i & w) >> 2;
-    i *= 0x9e501cc3u;
-    i ^= (i & w) >> 2;
-    i *= 0xc860a3dfu;
-    i &= w;
-    i ^= i >> 5;
+    i = permutationStep(i, w, seed);
   } while (i >= n);
   // A power-of-two n (the usual spp) needs no division.
   return n == w + 1 ? (i + seed) & w : (i + seed) % n;
@@ -122,23 +141,50 @@ CANDELA_HDI float bitsToUnitFloat(uint32_t bits) {
   return static_cast<float>(bits >> 8) * 0x1p-24f;
 }
 
-// The random numbers of one (seed, pixel, sample) among spp samples of that pixel.
+// The hash that keys every stream of a pixel, and the one that keys its dimension d.
+CANDELA_HDI uint64_t samplePixelKey(uint64_t seed, uint64_t pixelIndex) {
+  return mix64(mix64(seed ^ 0x6a09e667f3bcc909ull) ^ pixelIndex);
+}
+CANDELA_HDI_ALWAYS uint64_t sampleDimensionHash(uint64_t pixelKey, uint32_t dimension) {
+  return mix64(pixelKey + 0x9e3779b97f4a7c15ull * dimension);
+}
+
+// Dimension d's number as next1D draws it for the sample whose shuffled index is `index`
+// (permutationElement under the low half of the dimension's hash h): owenScramble(
+// sobolDimension0(index), h >> 32) computed in the bit-reversed domain, where dimension 0 is the
+// index itself.
+CANDELA_HDI_ALWAYS float sobolNumber1D(uint32_t index, uint64_t h) {
+  return bitsToUnitFloat(reverseBits32(laineKarrasHash(index, uint32_t(h >> 32))));
+}
+
+// Dimension d's pair as next2D draws it: the first two Sobol dimensions of `index`,
+// Owen-scrambled by the two halves of mix64(h), again in the bit-reversed domain (two bit
+// reversals instead of six, the same bits).
+CANDELA_HDI_ALWAYS void sobolNumbers2D(uint32_t index, uint64_t h, float* u, float* v) {
+  const uint64_t scramble = mix64(h);
+  *u = bitsToUnitFloat(reverseBits32(laineKarrasHash(index, uint32_t(scramble))));
+  *v = bitsToUnitFloat(
+      reverseBits32(laineKarrasHash(sobolDimension1Reversed(index), uint32_t(scramble >> 32))));
+}
+
+// The random numbers of one (seed, pixel, sample) among spp samples of that pixel; with a
+// table, its first dimensions come from the table's lane `lane`, the same numbers.
 class SampleStream {
  public:
   SampleStream() = default;
-  CANDELA_HDI SampleStream(uint64_t seed, uint64_t pixelIndex, uint32_t sampleIndex, uint32_t spp)
-      : pixelKey_(mix64(mix64(seed ^ 0x6a09e667f3bcc909ull) ^ pixelIndex)),
+  CANDELA_HDI SampleStream(uint64_t seed, uint64_t pixelIndex, uint32_t sampleIndex, uint32_t spp,
+                           SampleTable* table = nullptr, uint32_t lane = 0)
+      : pixelKey_(samplePixelKey(seed, pixelIndex)),
         sampleIndex_(sampleIndex),
         spp_(spp > 0 ? spp : 1),
-        sppMask_(permutationMask(spp_)) {}
+        sppMask_(permutationMask(spp_)),
+        table_(table),
+        lane_(lane) {}
 
-  // owenScramble(sobolDimension0(index), s) and owenScramble(sobolDimension1(index), s),
-  // computed in the bit-reversed domain, where dimension 0 is the index itself: two bit
-  // reversals per 2D sample instead of six, the same bits.
   CANDELA_HDI_ALWAYS float next1D() {
+    if (tableHolds(false)) return table_->a[dimension_++][lane_];
     const uint64_t h = dimensionHash();
-    const uint32_t index = permutationElement(sampleIndex_, spp_, sppMask_, uint32_t(h));
-    return bitsToUnitFloat(reverseBits32(laineKarrasHash(index, uint32_t(h >> 32))));
+    return sobolNumber1D(permutationElement(sampleIndex_, spp_, sppMask_, uint32_t(h)), h);
   }
 
   // Passes over one dimension unused (a point light's position needs no random numbers), so
@@ -155,12 +201,13 @@ class SampleStream {
   }
 
   CANDELA_HDI_ALWAYS void next2D(float* u, float* v) {
+    if (tableHolds(true)) {
+      *u = table_->a[dimension_][lane_];
+      *v = table_->b[dimension_++][lane_];
+      return;
+    }
     const uint64_t h = dimensionHash();
-    const uint32_t index = permutationElement(sampleIndex_, spp_, sppMask_, uint32_t(h));
-    const uint64_t scramble = mix64(h);
-    *u = bitsToUnitFloat(reverseBits32(laineKarrasHash(index, uint32_t(scramble))));
-    *v = bitsToUnitFloat(
-        reverseBits32(laineKarrasHash(sobolDimension1Reversed(index), uint32_t(scramble >> 32))));
+    sobolNumbers2D(permutationElement(sampleIndex_, spp_, sppMask_, uint32_t(h)), h, u, v);
   }
 
   // The stream of a branch split off the sample's path here (render/path_branch.h): the same
@@ -174,8 +221,20 @@ class SampleStream {
   }
 
  private:
-  CANDELA_HDI uint64_t dimensionHash() {
-    return mix64(pixelKey_ + 0x9e3779b97f4a7c15ull * ++dimension_);
+  CANDELA_HDI_ALWAYS uint64_t dimensionHash() {
+    return sampleDimensionHash(pixelKey_, ++dimension_);
+  }
+
+  // Whether the table holds the next dimension drawn as asked (twoD: as a pair), after filling
+  // it where no sample of the packet has drawn it yet. Host code only: the GPU has no table.
+  CANDELA_HDI_ALWAYS bool tableHolds(bool twoD) {
+#if defined(__CUDA_ARCH__)
+    return false;
+#else
+    if (!table_ || dimension_ >= SampleTable::kMaxDimensions) return false;
+    if (table_->kind[dimension_] == SampleTable::kEmpty) table_->fill(table_, dimension_, twoD);
+    return table_->kind[dimension_] == (twoD ? SampleTable::kTwoD : SampleTable::kOneD);
+#endif
   }
 
   uint64_t pixelKey_;
@@ -183,6 +242,8 @@ class SampleStream {
   uint32_t spp_;
   uint32_t sppMask_;
   uint32_t dimension_ = 0;
+  SampleTable* table_ = nullptr;
+  uint32_t lane_ = 0;
 };
 
 }  // namespace candela

@@ -57,13 +57,16 @@ constexpr uint32_t kShadowPacketsUpToLights = 4;
 template <bool kAovs, class Tracer>
 CANDELA_HDI void renderPacket(const SceneView& scene, const Tracer& tracer, uint32_t x, uint32_t y,
                               uint64_t pixelIndex, uint32_t s, uint32_t n, RayCounters& counters,
-                              Vec3* sum, AovPixel* aov) {
+                              Vec3* sum, AovPixel* aov, SampleTable* table) {
   constexpr uint32_t kWidth = Tracer::kPacketWidth;
+  static_assert(kWidth <= SampleTable::kLanes, "a packet's samples fit a sample table");
   SampleStream rng[kWidth];
   Ray rays[kWidth];
   float jx[kWidth], jy[kWidth];
+  if (table)
+    table->start(samplePixelKey(scene.settings.seed, pixelIndex), s, n, scene.settings.spp);
   for (uint32_t i = 0; i < n; ++i) {
-    rng[i] = SampleStream(scene.settings.seed, pixelIndex, s + i, scene.settings.spp);
+    rng[i] = SampleStream(scene.settings.seed, pixelIndex, s + i, scene.settings.spp, table, i);
     rays[i] = cameraSample(scene, x, y, rng[i], &jx[i], &jy[i]);
   }
   Hit hits[kWidth];
@@ -117,12 +120,14 @@ CANDELA_HDI void renderPacket(const SceneView& scene, const Tracer& tracer, uint
 // (seed, pixel, sample index, dimension) and spp. `tracer` answers the ray queries
 // (geometry/bvh_tracer.h); one whose kPacketWidth exceeds 1 takes the pixel's samples that many
 // at a time (renderPacket). With kAovs the samples' first hits are added to `aov` too
-// (render/aov.h); the radiance is the same either way.
+// (render/aov.h); the radiance is the same either way. With a `table` (whose fill is set), the
+// samples' random numbers are computed there, up to SampleTable::kLanes samples at a time: the
+// same numbers.
 template <bool kAovs = false, class Tracer>
 CANDELA_HDI Vec3 renderPixelSamples(const SceneView& scene, const Tracer& tracer, uint32_t x,
                                     uint32_t y, uint32_t sampleBegin, uint32_t sampleCount,
                                     RayCounters& counters, Vec3 sum = Vec3(0.0f),
-                                    AovPixel* aov = nullptr) {
+                                    AovPixel* aov = nullptr, SampleTable* table = nullptr) {
   const uint64_t pixelIndex = uint64_t(y) * scene.camera.width + x;
   const uint32_t sampleEnd = sampleBegin + sampleCount;
   constexpr uint32_t kWidth = Tracer::kPacketWidth;
@@ -132,11 +137,21 @@ CANDELA_HDI Vec3 renderPixelSamples(const SceneView& scene, const Tracer& tracer
       // there groups its rays as one call would.
       const uint32_t toBoundary = kWidth - s % kWidth;
       n = sampleEnd - s < toBoundary ? sampleEnd - s : toBoundary;
-      renderPacket<kAovs>(scene, tracer, x, y, pixelIndex, s, n, counters, &sum, aov);
+      renderPacket<kAovs>(scene, tracer, x, y, pixelIndex, s, n, counters, &sum, aov, table);
     }
   } else {
+    uint32_t tableStart = sampleBegin;  // the first sample of the table's lanes
     for (uint32_t s = sampleBegin; s < sampleEnd; ++s) {
-      SampleStream rng(scene.settings.seed, pixelIndex, s, scene.settings.spp);
+      // One after another too, a pixel's samples take their numbers from a table kLanes at a
+      // time.
+      if (table && (s == sampleBegin || s - tableStart == SampleTable::kLanes)) {
+        tableStart = s;
+        const uint32_t left = sampleEnd - s;
+        table->start(samplePixelKey(scene.settings.seed, pixelIndex), s,
+                     left < SampleTable::kLanes ? left : SampleTable::kLanes, scene.settings.spp);
+      }
+      SampleStream rng(scene.settings.seed, pixelIndex, s, scene.settings.spp, table,
+                       s - tableStart);
       float jx, jy;
       const Ray ray = cameraSample(scene, x, y, rng, &jx, &jy);
       ++counters.camera;

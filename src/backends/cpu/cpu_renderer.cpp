@@ -9,6 +9,7 @@
 #include <mutex>
 
 #include "backends/cpu/flush_denormals.h"
+#include "backends/cpu/sample_table_fill.h"
 #include "backends/thread_limit.h"
 #include "geometry/bvh_tracer.h"
 #include "render/render_pixel.h"
@@ -53,6 +54,9 @@ RenderResult renderTilesWith(const SceneView& given, const Tracer& tracer,
 
   // Renders one tile; false when a cancel stopped it.
   auto renderTile = [&](uint32_t tile, RayCounters& local) {
+    SampleTable table;
+    table.fill = sampleTableFill();
+    SampleTable* const sampleTable = table.fill ? &table : nullptr;
     const uint32_t x0 = (tile % tilesX) * kTileSize, y0 = (tile / tilesX) * kTileSize;
     const uint32_t x1 = std::min(x0 + kTileSize, width), y1 = std::min(y0 + kTileSize, height);
     for (uint32_t y = y0; y < y1; ++y) {
@@ -63,7 +67,7 @@ RenderResult renderTilesWith(const SceneView& given, const Tracer& tracer,
           if (stopAsked()) return false;
           const uint32_t count = std::min(kSamplesPerCancelCheck, samples.count - done);
           sum = renderPixelSamples<kAovs>(scene, tracer, x, y, samples.begin + done, count, local,
-                                          sum, aov);
+                                          sum, aov, sampleTable);
         }
         result.image.set(x, y, sum / float(samples.count));
       }

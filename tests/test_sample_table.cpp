@@ -1,0 +1,113 @@
+// The CPU's sample tables (core/sample_table.h, backends/cpu/sample_table_fill.h): a stream that
+// reads its numbers from a packet's table draws exactly, bit for bit, what it draws alone, in any
+// order of the lanes' requests, where lanes draw a dimension in different ways, past the table's
+// dimensions and on branches.
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <vector>
+
+#include "backends/cpu/sample_table_fill.h"
+#include "core/rng.h"
+#include "core/sobol_sampler.h"
+
+namespace candela {
+namespace {
+
+uint32_t bitsOf(float f) {
+  uint32_t b;
+  std::memcpy(&b, &f, sizeof b);
+  return b;
+}
+
+// What request `step` of lane `lane` is: mostly the same for every lane (paths that do the same
+// things), now and then another for some lanes (a path that chose otherwise, or ended).
+enum class Draw { kOneD, kTwoD, kSkip };
+Draw drawAt(uint32_t step, uint32_t lane) {
+  const uint64_t h = mix64(step * 0x9e3779b97f4a7c15ull + 17);
+  Draw d = h % 3 == 0 ? Draw::kOneD : Draw::kTwoD;
+  if (h % 7 == 3) d = Draw::kSkip;
+  if ((mix64(h ^ lane) & 7) == 0) d = d == Draw::kTwoD ? Draw::kOneD : Draw::kTwoD;
+  return d;
+}
+
+// Makes lane's request `step` of both streams and expects the same bits.
+void drawBoth(SampleStream& tabled, SampleStream& alone, uint32_t step, uint32_t lane) {
+  switch (drawAt(step, lane)) {
+    case Draw::kOneD:
+      ASSERT_EQ(bitsOf(tabled.next1D()), bitsOf(alone.next1D())) << "step " << step;
+      break;
+    case Draw::kTwoD: {
+      float u1, v1, u2, v2;
+      tabled.next2D(&u1, &v1);
+      alone.next2D(&u2, &v2);
+      ASSERT_EQ(bitsOf(u1), bitsOf(u2)) << "step " << step;
+      ASSERT_EQ(bitsOf(v1), bitsOf(v2)) << "step " << step;
+      break;
+    }
+    case Draw::kSkip:
+      tabled.skip();
+      alone.skip();
+      break;
+  }
+}
+
+class SampleTables : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    if (!sampleTableFill()) GTEST_SKIP() << "this CPU has no sample tables (they need AVX2)";
+  }
+};
+
+TEST_F(SampleTables, StreamsDrawWhatTheyDrawAloneInAnyOrder) {
+  const uint32_t steps = SampleTable::kMaxDimensions + 12;  // past the table too
+  SampleTable table;
+  table.fill = sampleTableFill();
+  for (uint32_t spp : {1u, 3u, 8u, 16u, 24u, 100u}) {
+    for (uint64_t seed : {0ull, 7ull}) {
+      for (uint64_t pixel : {0ull, 12345ull}) {
+        for (uint32_t first = 0; first < spp; first += SampleTable::kLanes) {
+          const uint32_t lanes = std::min(SampleTable::kLanes, spp - first);
+          for (bool laneByLane : {false, true}) {
+            SCOPED_TRACE(::testing::Message()
+                         << "spp " << spp << " seed " << seed << " pixel " << pixel << " first "
+                         << first << (laneByLane ? " lane by lane" : " in step"));
+            table.start(samplePixelKey(seed, pixel), first, lanes, spp);
+            std::vector<SampleStream> tabled, alone;
+            for (uint32_t k = 0; k < lanes; ++k) {
+              tabled.emplace_back(seed, pixel, first + k, spp, &table, k);
+              alone.emplace_back(seed, pixel, first + k, spp);
+            }
+            if (laneByLane) {
+              for (uint32_t k = 0; k < lanes; ++k)
+                for (uint32_t step = 0; step < steps; ++step)
+                  drawBoth(tabled[k], alone[k], step, k);
+            } else {
+              for (uint32_t step = 0; step < steps; ++step)
+                for (uint32_t k = 0; k < lanes; ++k) drawBoth(tabled[k], alone[k], step, k);
+            }
+          }
+        }
+      }
+    }
+  }
+}
+
+// A branch (render/path_branch.h) draws far past the table; the stream it left goes on in it.
+TEST_F(SampleTables, BranchesAndTheStreamsTheyLeaveDrawWhatTheyDrawAlone) {
+  SampleTable table;
+  table.fill = sampleTableFill();
+  table.start(samplePixelKey(3, 99), 0, SampleTable::kLanes, 16);
+  for (uint32_t k = 0; k < SampleTable::kLanes; ++k) {
+    SampleStream tabled(3, 99, k, 16, &table, k), alone(3, 99, k, 16);
+    for (uint32_t step = 0; step < 5; ++step) drawBoth(tabled, alone, step, k);
+    SampleStream tabledBranch = tabled.branch(), aloneBranch = alone.branch();
+    for (uint32_t step = 5; step < 15; ++step) {
+      drawBoth(tabledBranch, aloneBranch, step, k);
+      drawBoth(tabled, alone, step, k);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace candela
