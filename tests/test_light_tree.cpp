@@ -464,6 +464,32 @@ TEST(LightTree, SseLanesMatchTheScalarImportance) {
     }
   }
 }
+
+// A node whose clusters share one box and one cone (a quad's two triangles) shares by power: on
+// the host in SSE lanes, on the GPU by prefixEnds, the same bits.
+TEST(LightTree, SharesByPowerAreTheGpusSums) {
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<float> power(0.0f, 10.0f);
+  for (int trial = 0; trial < 50; ++trial) {
+    LightTreeNode node{};
+    node.byPower = 1;
+    const int clusters = 1 + trial % kLightTreeWidth;
+    for (int k = 0; k < clusters; ++k) node.power[k] = trial % 5 == 0 && k == 0 ? 0.0f : power(rng);
+    ClusterShares host, gpu;
+    clusterShares(node, Vec3(1.0f, 2.0f, 3.0f), Vec3(0.0f, 1.0f, 0.0f), &host);
+    gpu.positive = 0;
+    for (int k = 0; k < kLightTreeWidth; ++k) {
+      gpu.importance[k] = node.power[k];
+      gpu.positive |= (node.power[k] > 0.0f ? 1 : 0) << k;
+    }
+    prefixEnds(&gpu);
+    EXPECT_EQ(host.positive, gpu.positive);
+    for (int k = 0; k < kLightTreeWidth; ++k) {
+      EXPECT_EQ(host.importance[k], gpu.importance[k]) << k;
+      EXPECT_EQ(host.ends[k], gpu.ends[k]) << k;
+    }
+  }
+}
 #endif
 
 }  // namespace

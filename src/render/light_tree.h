@@ -186,21 +186,17 @@ CANDELA_HDI_ALWAYS void prefixEnds(ClusterShares* s) {
 
 CANDELA_HDI_ALWAYS void clusterShares(const LightTreeNode& node, const Vec3& p, const Vec3& n,
                                       ClusterShares* s) {
-  if (node.byPower) {
-    s->positive = 0;
-    for (int k = 0; k < kLightTreeWidth; ++k) {
-      s->importance[k] = node.power[k];
-      s->positive |= (node.power[k] > 0.0f ? 1 : 0) << k;
-    }
-    prefixEnds(s);
-    return;
-  }
 #if CANDELA_LIGHT_TREE_SSE
   // Clusters fill a node from its first lane: a node of four or fewer (a small scene's only
   // node) leaves the second vector empty.
-  const __m128 low = lightClusterImportanceSse(node, 0, p, n);
-  const __m128 high =
-      node.power[4] > 0.0f ? lightClusterImportanceSse(node, 4, p, n) : _mm_setzero_ps();
+  __m128 low, high;
+  if (node.byPower) {
+    low = _mm_loadu_ps(node.power);
+    high = _mm_loadu_ps(node.power + 4);
+  } else {
+    low = lightClusterImportanceSse(node, 0, p, n);
+    high = node.power[4] > 0.0f ? lightClusterImportanceSse(node, 4, p, n) : _mm_setzero_ps();
+  }
   const __m128 lowEnds = prefixSums(low);
   const __m128 highEnds =
       _mm_add_ps(prefixSums(high), _mm_shuffle_ps(lowEnds, lowEnds, _MM_SHUFFLE(3, 3, 3, 3)));
@@ -213,7 +209,7 @@ CANDELA_HDI_ALWAYS void clusterShares(const LightTreeNode& node, const Vec3& p, 
 #else
   s->positive = 0;
   for (int k = 0; k < kLightTreeWidth; ++k) {
-    s->importance[k] = lightClusterImportanceLane(node, k, p, n);
+    s->importance[k] = node.byPower ? node.power[k] : lightClusterImportanceLane(node, k, p, n);
     s->positive |= (s->importance[k] > 0.0f ? 1 : 0) << k;
   }
   prefixEnds(s);
