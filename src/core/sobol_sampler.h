@@ -149,22 +149,22 @@ CANDELA_HDI_ALWAYS uint64_t sampleDimensionHash(uint64_t pixelKey, uint32_t dime
   return mix64(pixelKey + 0x9e3779b97f4a7c15ull * dimension);
 }
 
-// Dimension d's number as next1D draws it for the sample whose shuffled index is `index`
-// (permutationElement under the low half of the dimension's hash h): owenScramble(
-// sobolDimension0(index), h >> 32) computed in the bit-reversed domain, where dimension 0 is the
-// index itself.
-CANDELA_HDI_ALWAYS float sobolNumber1D(uint32_t index, uint64_t h) {
-  return bitsToUnitFloat(reverseBits32(laineKarrasHash(index, uint32_t(h >> 32))));
+// Dimension d's word as next1D draws it for the sample whose shuffled index is `index`
+// (permutationElement under the low half of the dimension's hash h), still bit-reversed:
+// owenScramble(sobolDimension0(index), h >> 32) computed in the bit-reversed domain, where
+// dimension 0 is the index itself.
+template <class U>
+CANDELA_HDI_ALWAYS U scrambledWord1D(U index, uint64_t h) {
+  return laineKarrasHash(index, uint32_t(h >> 32));
 }
 
-// Dimension d's pair as next2D draws it: the first two Sobol dimensions of `index`,
-// Owen-scrambled by the two halves of mix64(h), again in the bit-reversed domain (two bit
+// Dimension d's pair of words as next2D draws it, still bit-reversed: the first two Sobol
+// dimensions of `index`, Owen-scrambled by the two halves of `scramble` = mix64(h) (two bit
 // reversals instead of six, the same bits).
-CANDELA_HDI_ALWAYS void sobolNumbers2D(uint32_t index, uint64_t h, float* u, float* v) {
-  const uint64_t scramble = mix64(h);
-  *u = bitsToUnitFloat(reverseBits32(laineKarrasHash(index, uint32_t(scramble))));
-  *v = bitsToUnitFloat(
-      reverseBits32(laineKarrasHash(sobolDimension1Reversed(index), uint32_t(scramble >> 32))));
+template <class U>
+CANDELA_HDI_ALWAYS void scrambledWords2D(U index, uint64_t scramble, U* u, U* v) {
+  *u = laineKarrasHash(index, uint32_t(scramble));
+  *v = laineKarrasHash(sobolDimension1Reversed(index), uint32_t(scramble >> 32));
 }
 
 // The random numbers of one (seed, pixel, sample) among spp samples of that pixel; with a
@@ -184,7 +184,8 @@ class SampleStream {
   CANDELA_HDI_ALWAYS float next1D() {
     if (tableHolds(false)) return table_->a[dimension_++][lane_];
     const uint64_t h = dimensionHash();
-    return sobolNumber1D(permutationElement(sampleIndex_, spp_, sppMask_, uint32_t(h)), h);
+    const uint32_t index = permutationElement(sampleIndex_, spp_, sppMask_, uint32_t(h));
+    return bitsToUnitFloat(reverseBits32(scrambledWord1D(index, h)));
   }
 
   // Passes over one dimension unused (a point light's position needs no random numbers), so
@@ -207,7 +208,11 @@ class SampleStream {
       return;
     }
     const uint64_t h = dimensionHash();
-    sobolNumbers2D(permutationElement(sampleIndex_, spp_, sppMask_, uint32_t(h)), h, u, v);
+    uint32_t wordU, wordV;
+    scrambledWords2D(permutationElement(sampleIndex_, spp_, sppMask_, uint32_t(h)), mix64(h),
+                     &wordU, &wordV);
+    *u = bitsToUnitFloat(reverseBits32(wordU));
+    *v = bitsToUnitFloat(reverseBits32(wordV));
   }
 
   // The stream of a branch split off the sample's path here (render/path_branch.h): the same

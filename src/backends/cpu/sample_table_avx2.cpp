@@ -57,11 +57,12 @@ void fillSampleTableAvx2(SampleTable* table, uint32_t entry, bool twoD) {
       sample[k] = table->firstSample + (first + k < table->lanes ? first + k : 0);
     const Words index = permutationElements(sample, n, w, uint32_t(h));
     if (twoD) {
-      store(reverseBits(laineKarrasHash(index, uint32_t(scramble))), &table->a[entry][first]);
-      store(reverseBits(laineKarrasHash(sobolDimension1Reversed(index), uint32_t(scramble >> 32))),
-            &table->b[entry][first]);
+      Words u, v;
+      scrambledWords2D(index, scramble, &u, &v);
+      store(reverseBits(u), &table->a[entry][first]);
+      store(reverseBits(v), &table->b[entry][first]);
     } else {
-      store(reverseBits(laineKarrasHash(index, uint32_t(h >> 32))), &table->a[entry][first]);
+      store(reverseBits(scrambledWord1D(index, h)), &table->a[entry][first]);
     }
   }
   table->kind[entry] = twoD ? SampleTable::kTwoD : SampleTable::kOneD;
