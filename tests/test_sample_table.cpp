@@ -10,6 +10,9 @@
 #include "backends/cpu/sample_table_fill.h"
 #include "core/rng.h"
 #include "core/sobol_sampler.h"
+#include "geometry/bvh_tracer.h"
+#include "render/render_pixel.h"
+#include "render_test_util.h"
 
 namespace candela {
 namespace {
@@ -107,6 +110,71 @@ TEST_F(SampleTables, BranchesAndTheStreamsTheyLeaveDrawWhatTheyDrawAlone) {
       drawBoth(tabled, alone, step, k);
     }
   }
+}
+
+// Answers a packet's queries ray by ray, so that renderPixelSamples takes its packet path.
+struct PacketsRayByRay : BvhTracer {
+  static constexpr uint32_t kPacketWidth = 16;
+  void closestPacket(const Ray* rays, uint32_t n, Hit* hits) const {
+    for (uint32_t i = 0; i < n; ++i) {
+      hits[i] = Hit();
+      closest(rays[i], &hits[i]);
+    }
+  }
+  void occludedPacket(const Ray* rays, const uint32_t* skipPrims, uint32_t n,
+                      bool* blocked) const {
+    for (uint32_t k = 0; k < n; ++k) blocked[k] = occluded(rays[k], skipPrims[k]);
+  }
+};
+
+uint32_t fills = 0;
+void countingFill(SampleTable* table, uint32_t entry, bool twoD) {
+  ++fills;
+  sampleTableFill()(table, entry, twoD);
+}
+
+// Renders samples [first, first + count) of pixel (x, y) with and without a table and expects the
+// same radiance, bit for bit; returns how many times the table was filled.
+template <class Tracer>
+uint32_t fillsOfOneRange(const SceneView& view, const Tracer& tracer, uint32_t x, uint32_t y,
+                         uint32_t first, uint32_t count) {
+  SampleTable table;
+  table.fill = countingFill;
+  RayCounters counters;
+  fills = 0;
+  const Vec3 tabled = renderPixelSamples(view, tracer, x, y, first, count, counters, Vec3(0.0f),
+                                         nullptr, &table);
+  const uint32_t tableFills = fills;
+  const Vec3 alone = renderPixelSamples(view, tracer, x, y, first, count, counters);
+  EXPECT_EQ(bitsOf(tabled.x), bitsOf(alone.x));
+  EXPECT_EQ(bitsOf(tabled.y), bitsOf(alone.y));
+  EXPECT_EQ(bitsOf(tabled.z), bitsOf(alone.z));
+  return tableFills;
+}
+
+// A table serves only packets (or, ray by ray, runs of samples) of at least kMinLanes samples,
+// below which a fill costs more than it saves; either way a pixel's radiance is what it is
+// without one.
+TEST_F(SampleTables, ServeOnlyPacketsOfAtLeastTheirLeastLanes) {
+  const SceneData data = test::loadTestScene(test::lampUnderTheCeiling(
+      R"("width": 8, "height": 8, "spp": 24)", R"("max_depth": 5, "light_paths": "on")"));
+  const SceneView view = data.view();
+  const BvhTracer rayByRay{&view};
+  const PacketsRayByRay packets{{&view}};
+  for (uint32_t count : {1u, 3u, 7u}) {
+    SCOPED_TRACE(::testing::Message() << count << " samples");
+    EXPECT_EQ(fillsOfOneRange(view, rayByRay, 4, 5, 0, count), 0u);
+    EXPECT_EQ(fillsOfOneRange(view, packets, 4, 5, 0, count), 0u);
+    EXPECT_EQ(fillsOfOneRange(view, packets, 4, 5, 16, count), 0u);  // a spp's last packet
+  }
+  for (uint32_t count : {8u, 16u, 24u}) {
+    SCOPED_TRACE(::testing::Message() << count << " samples");
+    EXPECT_GT(fillsOfOneRange(view, rayByRay, 4, 5, 0, count), 0u);
+    EXPECT_GT(fillsOfOneRange(view, packets, 4, 5, 0, count), 0u);
+  }
+  // 20 samples: a packet of 16 with a table and one of 4 without, as 16 alone fill it.
+  EXPECT_EQ(fillsOfOneRange(view, packets, 4, 5, 0, 20),
+            fillsOfOneRange(view, packets, 4, 5, 0, 16));
 }
 
 }  // namespace

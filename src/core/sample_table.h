@@ -16,6 +16,9 @@ namespace candela {
 struct SampleTable {
   static constexpr uint32_t kLanes = 16;
   static constexpr uint32_t kMaxDimensions = 48;
+  // Fewer samples than this draw their own numbers: a fill computes a vector of 8 lanes
+  // whatever their count, and for fewer it cost more than it saved (docs/performance.md).
+  static constexpr uint32_t kMinLanes = 8;
   enum Kind : uint8_t { kEmpty, kOneD, kTwoD };
 
   // Computes entry `entry` (dimension entry + 1) for every lane, as next2D's pair where twoD,

@@ -63,6 +63,7 @@ CANDELA_HDI void renderPacket(const SceneView& scene, const Tracer& tracer, uint
   SampleStream rng[kWidth];
   Ray rays[kWidth];
   float jx[kWidth], jy[kWidth];
+  if (n < SampleTable::kMinLanes) table = nullptr;
   if (table)
     table->start(samplePixelKey(scene.settings.seed, pixelIndex), s, n, scene.settings.spp);
   for (uint32_t i = 0; i < n; ++i) {
@@ -121,8 +122,8 @@ CANDELA_HDI void renderPacket(const SceneView& scene, const Tracer& tracer, uint
 // (geometry/bvh_tracer.h); one whose kPacketWidth exceeds 1 takes the pixel's samples that many
 // at a time (renderPacket). With kAovs the samples' first hits are added to `aov` too
 // (render/aov.h); the radiance is the same either way. With a `table` (whose fill is set), the
-// samples' random numbers are computed there, up to SampleTable::kLanes samples at a time: the
-// same numbers.
+// samples' random numbers are computed there, up to SampleTable::kLanes samples at a time (and
+// at least SampleTable::kMinLanes): the same numbers.
 template <bool kAovs = false, class Tracer>
 CANDELA_HDI Vec3 renderPixelSamples(const SceneView& scene, const Tracer& tracer, uint32_t x,
                                     uint32_t y, uint32_t sampleBegin, uint32_t sampleCount,
@@ -141,16 +142,20 @@ CANDELA_HDI Vec3 renderPixelSamples(const SceneView& scene, const Tracer& tracer
     }
   } else {
     uint32_t tableStart = sampleBegin;  // the first sample of the table's lanes
+    SampleTable* lanesTable = nullptr;   // the table, where it serves these lanes
     for (uint32_t s = sampleBegin; s < sampleEnd; ++s) {
       // One after another too, a pixel's samples take their numbers from a table kLanes at a
       // time.
       if (table && (s == sampleBegin || s - tableStart == SampleTable::kLanes)) {
         tableStart = s;
         const uint32_t left = sampleEnd - s;
-        table->start(samplePixelKey(scene.settings.seed, pixelIndex), s,
-                     left < SampleTable::kLanes ? left : SampleTable::kLanes, scene.settings.spp);
+        const uint32_t lanes = left < SampleTable::kLanes ? left : SampleTable::kLanes;
+        lanesTable = lanes >= SampleTable::kMinLanes ? table : nullptr;
+        if (lanesTable)
+          table->start(samplePixelKey(scene.settings.seed, pixelIndex), s, lanes,
+                       scene.settings.spp);
       }
-      SampleStream rng(scene.settings.seed, pixelIndex, s, scene.settings.spp, table,
+      SampleStream rng(scene.settings.seed, pixelIndex, s, scene.settings.spp, lanesTable,
                        s - tableStart);
       float jx, jy;
       const Ray ray = cameraSample(scene, x, y, rng, &jx, &jy);
