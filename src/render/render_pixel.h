@@ -6,6 +6,7 @@
 #include "render/camera_ray.h"
 #include "render/flow.h"
 #include "render/integrator.h"
+#include "render/packet_slots.h"
 
 namespace candela {
 
@@ -60,28 +61,29 @@ CANDELA_HDI void renderPacket(const SceneView& scene, const Tracer& tracer, uint
                               Vec3* sum, AovPixel* aov, SampleTable* table) {
   constexpr uint32_t kWidth = Tracer::kPacketWidth;
   static_assert(kWidth <= SampleTable::kLanes, "a packet's samples fit a sample table");
-  SampleStream rng[kWidth];
+  PacketSlots<SampleStream, kWidth> rng;
   Ray rays[kWidth];
   float jx[kWidth], jy[kWidth];
   if (n < SampleTable::kMinLanes) table = nullptr;
   if (table)
     table->start(samplePixelKey(scene.settings.seed, pixelIndex), s, n, scene.settings.spp);
   for (uint32_t i = 0; i < n; ++i) {
-    rng[i] = SampleStream(scene.settings.seed, pixelIndex, s + i, scene.settings.spp, table, i);
+    rng.emplace(i, scene.settings.seed, pixelIndex, s + i, scene.settings.spp, table, i);
     rays[i] = cameraSample(scene, x, y, rng[i], &jx[i], &jy[i]);
   }
   Hit hits[kWidth];
   tracer.closestPacket(rays, n, hits);
   counters.camera += n;
 
-  PathState paths[kWidth];
+  PacketSlots<PathState, kWidth> paths;
   FirstHit first[kAovs ? kWidth : 1];  // only the passes read them
   bool goesOn[kWidth];
   Ray shadowRays[kWidth];
   uint32_t skipPrims[kWidth], shadowLane[kWidth], shadowCount = 0;
-  ShadowQuery shadows[kWidth];
+  PacketSlots<ShadowQuery, kWidth> shadows;
   for (uint32_t i = 0; i < n; ++i) {
-    paths[i] = PathState(scene, rays[i]);
+    paths.emplace(i, scene, rays[i]);
+    shadows.emplace(i);
     if (scene.lightPathLights > 0)
       traceLightVertex(scene, tracer, rng[i], counters, &paths[i].lightVertex);
     ShadowQuery connect;
