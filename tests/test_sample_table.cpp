@@ -66,10 +66,15 @@ TEST_F(SampleTables, StreamsDrawWhatTheyDrawAloneInAnyOrder) {
   const uint32_t steps = SampleTable::kMaxDimensions + 12;  // past the table too
   SampleTable table;
   table.fill = sampleTableFill();
-  for (uint32_t spp : {1u, 3u, 8u, 16u, 24u, 100u}) {
+  // Up to 65,536 spp the fill walks its permutations in 16-bit lanes, above in 32-bit ones.
+  for (uint32_t spp : {1u, 3u, 8u, 16u, 24u, 100u, 1000u, 65536u, 65537u, 131072u}) {
+    std::vector<uint32_t> firsts;  // every packet of a small spp; the first, a middle, the last
+    for (uint32_t first = 0; first < spp; first += SampleTable::kLanes)
+      if (spp <= 128 || first == 0 || first == spp / 32 * 16 || first + SampleTable::kLanes >= spp)
+        firsts.push_back(first);
     for (uint64_t seed : {0ull, 7ull}) {
       for (uint64_t pixel : {0ull, 12345ull}) {
-        for (uint32_t first = 0; first < spp; first += SampleTable::kLanes) {
+        for (uint32_t first : firsts) {
           const uint32_t lanes = std::min(SampleTable::kLanes, spp - first);
           for (bool laneByLane : {false, true}) {
             SCOPED_TRACE(::testing::Message()
