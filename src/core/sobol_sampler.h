@@ -99,8 +99,9 @@ CANDELA_HDI uint32_t permutationMask(uint32_t n) {
 
 // One step of the cycle walk of permutationElement below, on words whose lanes are of type S.
 // Every operation's low bits depend only on low bits (products, sums, and right shifts of values
-// masked by w), so where w < 2^16 lanes of 16 bits (S = uint16_t) give the same step as 32-bit
-// ones: the CPU's sample tables take them, whose multiplies then take half the time.
+// masked by w), so where w < 2^16 a vector of 16-bit lanes (S = uint16_t; not a scalar, which C++
+// would promote to int) gives the same step as 32-bit words: the CPU's sample tables take one,
+// whose multiplies then take half the time.
 template <class U, class S = uint32_t>
 CANDELA_HDI_ALWAYS U permutationStep(U i, uint32_t w, uint32_t seed) {
   i ^= S(seed);
