@@ -160,7 +160,7 @@ uint32_t fillsOfOneRange(const SceneView& view, const Tracer& tracer, uint32_t x
 // A table serves only packets (or, ray by ray, runs of samples) of at least kMinLanes samples,
 // below which a fill costs more than it saves; either way a pixel's radiance is what it is
 // without one.
-TEST_F(SampleTables, ServeOnlyPacketsOfAtLeastTheirLeastLanes) {
+TEST_F(SampleTables, ServeOnlyPacketsOfEightSamplesOrMore) {
   const SceneData data = test::loadTestScene(test::lampUnderTheCeiling(
       R"("width": 8, "height": 8, "spp": 24)", R"("max_depth": 5, "light_paths": "on")"));
   const SceneView view = data.view();
