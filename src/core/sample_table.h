@@ -40,6 +40,15 @@ struct SampleTable {
     spp = samplesPerPixel;
     for (uint32_t d = 0; d < kMaxDimensions; ++d) kind[d] = kEmpty;
   }
+
+  // The table, started for those samples, where there are enough of them for it to pay (at least
+  // kMinLanes); else null, and the samples draw their own numbers.
+  CANDELA_HDI SampleTable* serve(uint64_t key, uint32_t first, uint32_t count,
+                                 uint32_t samplesPerPixel) {
+    if (count < kMinLanes) return nullptr;
+    start(key, first, count, samplesPerPixel);
+    return this;
+  }
 };
 
 }  // namespace candela

@@ -171,6 +171,12 @@ CANDELA_HDI_ALWAYS void scrambledWords2D(U index, uint64_t scramble, U* u, U* v)
   *v = laineKarrasHash(sobolDimension1Reversed(index), uint32_t(scramble >> 32));
 }
 
+// A pixel's key (samplePixelKey), from which each of its samples' streams starts: a caller with
+// many samples of one pixel computes it once.
+struct PixelKey {
+  uint64_t value;
+};
+
 // The random numbers of one (seed, pixel, sample) among spp samples of that pixel; with a
 // table, its first dimensions come from the table's lane `lane`, the same numbers.
 class SampleStream {
@@ -178,7 +184,10 @@ class SampleStream {
   SampleStream() = default;
   CANDELA_HDI SampleStream(uint64_t seed, uint64_t pixelIndex, uint32_t sampleIndex, uint32_t spp,
                            SampleTable* table = nullptr, uint32_t lane = 0)
-      : pixelKey_(samplePixelKey(seed, pixelIndex)),
+      : SampleStream(PixelKey{samplePixelKey(seed, pixelIndex)}, sampleIndex, spp, table, lane) {}
+  CANDELA_HDI SampleStream(PixelKey pixel, uint32_t sampleIndex, uint32_t spp,
+                           SampleTable* table = nullptr, uint32_t lane = 0)
+      : pixelKey_(pixel.value),
         sampleIndex_(sampleIndex),
         spp_(spp > 0 ? spp : 1),
         sppMask_(permutationMask(spp_)),

@@ -57,18 +57,16 @@ constexpr uint32_t kShadowPacketsUpToLights = 4;
 // from a lone ray's by rounding.
 template <bool kAovs, class Tracer>
 CANDELA_HDI void renderPacket(const SceneView& scene, const Tracer& tracer, uint32_t x, uint32_t y,
-                              uint64_t pixelIndex, uint32_t s, uint32_t n, RayCounters& counters,
+                              PixelKey pixel, uint32_t s, uint32_t n, RayCounters& counters,
                               Vec3* sum, AovPixel* aov, SampleTable* table) {
   constexpr uint32_t kWidth = Tracer::kPacketWidth;
   static_assert(kWidth <= SampleTable::kLanes, "a packet's samples fit a sample table");
   PacketSlots<SampleStream, kWidth> rng;
   Ray rays[kWidth];
   float jx[kWidth], jy[kWidth];
-  if (n < SampleTable::kMinLanes) table = nullptr;
-  if (table)
-    table->start(samplePixelKey(scene.settings.seed, pixelIndex), s, n, scene.settings.spp);
+  if (table) table = table->serve(pixel.value, s, n, scene.settings.spp);
   for (uint32_t i = 0; i < n; ++i) {
-    rng.emplace(i, scene.settings.seed, pixelIndex, s + i, scene.settings.spp, table, i);
+    rng.emplace(i, pixel, s + i, scene.settings.spp, table, i);
     rays[i] = cameraSample(scene, x, y, rng[i], &jx[i], &jy[i]);
   }
   Hit hits[kWidth];
@@ -131,7 +129,7 @@ CANDELA_HDI Vec3 renderPixelSamples(const SceneView& scene, const Tracer& tracer
                                     uint32_t y, uint32_t sampleBegin, uint32_t sampleCount,
                                     RayCounters& counters, Vec3 sum = Vec3(0.0f),
                                     AovPixel* aov = nullptr, SampleTable* table = nullptr) {
-  const uint64_t pixelIndex = uint64_t(y) * scene.camera.width + x;
+  const PixelKey pixel{samplePixelKey(scene.settings.seed, uint64_t(y) * scene.camera.width + x)};
   const uint32_t sampleEnd = sampleBegin + sampleCount;
   constexpr uint32_t kWidth = Tracer::kPacketWidth;
   if constexpr (kWidth > 1) {
@@ -140,25 +138,22 @@ CANDELA_HDI Vec3 renderPixelSamples(const SceneView& scene, const Tracer& tracer
       // there groups its rays as one call would.
       const uint32_t toBoundary = kWidth - s % kWidth;
       n = sampleEnd - s < toBoundary ? sampleEnd - s : toBoundary;
-      renderPacket<kAovs>(scene, tracer, x, y, pixelIndex, s, n, counters, &sum, aov, table);
+      renderPacket<kAovs>(scene, tracer, x, y, pixel, s, n, counters, &sum, aov, table);
     }
   } else {
     uint32_t tableStart = sampleBegin;  // the first sample of the table's lanes
-    SampleTable* lanesTable = nullptr;   // the table, where it serves these lanes
+    SampleTable* lanesTable = nullptr;  // the table, where it serves these lanes
     for (uint32_t s = sampleBegin; s < sampleEnd; ++s) {
       // One after another too, a pixel's samples take their numbers from a table kLanes at a
       // time.
       if (table && (s == sampleBegin || s - tableStart == SampleTable::kLanes)) {
         tableStart = s;
         const uint32_t left = sampleEnd - s;
-        const uint32_t lanes = left < SampleTable::kLanes ? left : SampleTable::kLanes;
-        lanesTable = lanes >= SampleTable::kMinLanes ? table : nullptr;
-        if (lanesTable)
-          table->start(samplePixelKey(scene.settings.seed, pixelIndex), s, lanes,
-                       scene.settings.spp);
+        lanesTable =
+            table->serve(pixel.value, s, left < SampleTable::kLanes ? left : SampleTable::kLanes,
+                         scene.settings.spp);
       }
-      SampleStream rng(scene.settings.seed, pixelIndex, s, scene.settings.spp, lanesTable,
-                       s - tableStart);
+      SampleStream rng(pixel, s, scene.settings.spp, lanesTable, s - tableStart);
       float jx, jy;
       const Ray ray = cameraSample(scene, x, y, rng, &jx, &jy);
       ++counters.camera;
