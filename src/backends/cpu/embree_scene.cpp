@@ -89,9 +89,11 @@ void rejectSkippedTriangle(const RTCFilterFunctionNArguments* args) {
   }
 }
 
-EmbreeScene::EmbreeScene(const char* deviceConfig, uint32_t indexedLeavesFrom)
+EmbreeScene::EmbreeScene(const char* deviceConfig, uint32_t indexedLeavesFrom,
+                         uint32_t triangleBlocksUpTo)
     : deviceConfig_(deviceConfig ? deviceConfig : ""),
       indexedLeavesFrom_(indexedLeavesFrom),
+      triangleBlocksUpTo_(triangleBlocksUpTo),
       device_(newDevice(deviceConfig_)) {
   // Eight-wide nodes where the instruction set Embree runs has them (AVX and up), as its default.
   indexedLeavesConfig_ =
@@ -130,7 +132,7 @@ void EmbreeScene::release() {
 
 size_t EmbreeScene::bytes() const {
   return size_t(std::max(0LL, embreeBytes.load())) + sphereNodes_.size() * sizeof(BvhNode) +
-         spherePrims_.size() * sizeof(uint32_t) + sphereBlocks_.bytes();
+         spherePrims_.size() * sizeof(uint32_t) + sphereBlocks_.bytes() + triangleBlocks_.bytes();
 }
 
 uint32_t EmbreeScene::instanceCount() const {
@@ -139,7 +141,9 @@ uint32_t EmbreeScene::instanceCount() const {
 }
 
 void EmbreeScene::update(const SceneData& scene, SceneChange change) {
-  if (change == SceneChange::Structure || !built_) {
+  // A material that became masked needs Embree's filters, which the blocks do not apply.
+  const bool blocksNoLonger = triangleBlocks_.view().blockCount != 0 && !scene.alphaMasks.empty();
+  if (change == SceneChange::Structure || !built_ || blocksNoLonger) {
     build(scene);
   } else if (change == SceneChange::Motion || verticesMoved(scene)) {
     // New values keep the geometry, but where its arrays moved Embree must read them anew.
@@ -193,6 +197,15 @@ void EmbreeScene::placeSpheres(const SceneData& scene) {
   sphereView_.nodeCount = uint32_t(sphereNodes_.size());
   sphereView_.primIndices = spherePrims_.data();
   sphereView_.primIndexCount = uint32_t(spherePrims_.size());
+}
+
+bool EmbreeScene::placeTriangleBlocks(const SceneData& scene) {
+  const uint32_t count = uint32_t(scene.triangles.size());
+  if (scene.triangles.size() <= triangleBlocksUpTo_ && scene.alphaMasks.empty())
+    triangleBlocks_.assign(scene.positions.data(), scene.triangles.data(), count);
+  else
+    triangleBlocks_.assign(nullptr, nullptr, 0);
+  return triangleBlocks_.view().blockCount != 0;
 }
 
 EmbreeScene::Plan EmbreeScene::planParts(const SceneData& scene) {
@@ -297,8 +310,9 @@ void EmbreeScene::build(const SceneData& scene) {
   lastError.clear();
   const auto start = std::chrono::steady_clock::now();
   placeSpheres(scene);
+  const bool inBlocks = placeTriangleBlocks(scene);
   buildSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (scene.triangles.empty()) return;
+  if (scene.triangles.empty() || inBlocks) return;
 
   Plan plan = planParts(scene);
   parts_ = std::move(plan.parts);
@@ -344,6 +358,7 @@ void EmbreeScene::refit(const SceneData& scene) {
   lastError.clear();
   const auto start = std::chrono::steady_clock::now();
   placeSpheres(scene);
+  placeTriangleBlocks(scene);
   buildSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!scene_) return;
   // A motion keeps the meshes (FrameScene's structure key covers them) and so the repeats; a

@@ -10,7 +10,9 @@
 // are instances of one BVH built over the mesh in object space, each with its object's transform;
 // the other objects' triangles are geometries over the runs of the triangle array between them
 // (with no repeats, one over all). The spheres stay candela's: in blocks of 4 or 8 when they are
-// few, else in a BVH of their own. A frame whose primitives moved (SceneChange::Motion) shares
+// few, else in a BVH of their own. A scene of at most kTriangleBlocksUpTo triangles, none of them
+// masked, has no Embree BVH: its triangles are tested in blocks too (backends/cpu/
+// triangle_blocks.h), placed anew every frame that moves them. A frame whose primitives moved (SceneChange::Motion) shares
 // its vertices and refits Embree's BVHs, moves the instances, and places the spheres anew (their
 // blocks, or their BVH beyond 32 spheres); a new structure rebuilds both. Alpha-masked materials
 // (geometry/alpha_mask.h) get intersection and occlusion filters on the triangles that apply the
@@ -43,9 +45,11 @@ class EmbreeScene {
  public:
   // `deviceConfig`: Embree's device configuration (rtcNewDevice), e.g. "isa=avx2" to test an
   // instruction set below the CPU's; null: Embree's defaults. Scenes of at least
-  // `indexedLeavesFrom` triangles get indexed leaves.
+  // `indexedLeavesFrom` triangles get indexed leaves, and scenes of at most `triangleBlocksUpTo`
+  // (and no alpha masks) triangle blocks instead of Embree's BVH, where the CPU has them.
   explicit EmbreeScene(const char* deviceConfig = nullptr,
-                       uint32_t indexedLeavesFrom = kIndexedLeavesFromTriangles);
+                       uint32_t indexedLeavesFrom = kIndexedLeavesFromTriangles,
+                       uint32_t triangleBlocksUpTo = kTriangleBlocksUpTo);
   ~EmbreeScene();
   EmbreeScene(const EmbreeScene&) = delete;
   EmbreeScene& operator=(const EmbreeScene&) = delete;
@@ -58,14 +62,15 @@ class EmbreeScene {
 
   EmbreeTracer tracer() const {
     return EmbreeTracer{scene_,      firstTriangleOf_.data(), prototypes_.empty(),
-                        sphereView_, sphereBlocks_.view(),    sphereCount_};
+                        sphereView_, sphereBlocks_.view(),    sphereCount_,
+                        triangleBlocks_.view()};
   }
   // How many objects Embree traces as instances of a repeated mesh.
   uint32_t instanceCount() const;
   // Seconds the last update spent building or refitting Embree's BVH.
   double buildSeconds() const { return buildSeconds_; }
   // Bytes the engine holds: what Embree has now for this process (its BVH, from its memory
-  // monitor) and the spheres' BVH.
+  // monitor), the spheres' BVH or blocks and the triangle blocks.
   size_t bytes() const;
 
  private:
@@ -114,6 +119,9 @@ class EmbreeScene {
                            uint32_t triangleCount, uint32_t firstVertex, bool shareIndices);
   void placeInstance(const SceneData& scene, const Part& part);
   void placeSpheres(const SceneData& scene);
+  // Puts the scene's triangles in blocks where it qualifies, else empties them; returns whether
+  // the blocks hold the triangles.
+  bool placeTriangleBlocks(const SceneData& scene);
   // Commits `scene` (scene_, or a prototype's), adding the seconds to buildSeconds_.
   void commit(RTCScene scene);
   void updateMasks(const SceneData& scene);
@@ -121,6 +129,7 @@ class EmbreeScene {
 
   std::string deviceConfig_, indexedLeavesConfig_;  // the latter with Embree's indexed leaves
   uint32_t indexedLeavesFrom_;
+  uint32_t triangleBlocksUpTo_;
   RTCDevice device_ = nullptr;
   bool indexedLeaves_ = false;  // device_'s
   RTCScene scene_ = nullptr;  // the triangles; null when there are none
@@ -130,6 +139,7 @@ class EmbreeScene {
   std::vector<BvhNode> sphereNodes_;
   std::vector<uint32_t> spherePrims_;
   SphereBlocks sphereBlocks_;
+  TriangleBlocks triangleBlocks_;
   GeometryView sphereView_;  // the spheres of the scene given last, with sphereNodes_
   uint32_t sphereCount_ = 0;
   bool built_ = false;  // whether update() has built anything yet: the first frame builds

@@ -6,7 +6,8 @@
 // inline first, so a ray pays no callback per sphere (Embree's user geometry cost the
 // sphere-walled default room a fifth of its speed) and a sphere hit shortens the ray Embree then
 // traces. A few spheres are tested in blocks of 4 or 8 (backends/cpu/sphere_blocks.h), more
-// through a BVH over the spheres alone. Hits carry the primitive numbering of
+// through a BVH over the spheres alone. A scene of very few triangles has them in blocks too
+// (backends/cpu/triangle_blocks.h), and no Embree scene. Hits carry the primitive numbering of
 // geometry/geometry_view.h, so the integrator cannot tell the engines apart. A shadow ray's
 // skipped triangle is rejected by a context filter that reads it from the intersection context.
 #pragma once
@@ -16,6 +17,7 @@
 #include <cstdint>
 
 #include "backends/cpu/sphere_blocks.h"
+#include "backends/cpu/triangle_blocks.h"
 #include "core/constants.h"
 #include "geometry/bvh_traverse.h"
 
@@ -60,10 +62,12 @@ struct EmbreeTracer {
   GeometryView spheres;  // the spheres and, when they are not in blocks, their BVH (no triangles)
   SphereBlocksView sphereBlocks;  // the spheres in blocks, when they are few; else empty
   uint32_t sphereCount;
+  TriangleBlocksView triangleBlocks;  // the triangles in blocks, when they are few; else empty
 
   bool closest(const Ray& ray, Hit* hit) const {
     if (!isFiniteRay(ray)) return false;  // Embree's behaviour on NaN rays is undefined
     const bool sphereFound = closestSphereOf(ray, hit);
+    if (triangleBlocks.blockCount != 0) return closestTriangleOf(ray, sphereFound, hit);
     if (!triangles) return sphereFound;
     EmbreeQueryContext context = queryContext(&ray, nullptr);
     RTCRayHit rayHit;
@@ -80,9 +84,16 @@ struct EmbreeTracer {
     return true;
   }
 
-  // closest for rays[0, n), n <= kPacketWidth, as one Embree packet: hits[i] is invalid where
-  // ray i hits nothing.
+  // closest for rays[0, n), n <= kPacketWidth, as one Embree packet (ray by ray where the
+  // triangles are in blocks): hits[i] is invalid where ray i hits nothing.
   void closestPacket(const Ray* rays, uint32_t n, Hit* hits) const {
+    if (triangleBlocks.blockCount != 0) {
+      for (uint32_t i = 0; i < n; ++i) {
+        hits[i] = Hit();
+        closest(rays[i], &hits[i]);
+      }
+      return;
+    }
     alignas(64) int valid[kPacketWidth];
     alignas(64) RTCRayHit16 packet;
     bool any = false;
@@ -119,6 +130,8 @@ struct EmbreeTracer {
   bool occluded(const Ray& ray, uint32_t skipPrim) const {
     if (!isFiniteRay(ray)) return false;
     if (anySphereOf(ray, skipPrim)) return true;
+    if (triangleBlocks.blockCount != 0)
+      return anyTriangle(triangleBlocks, ray, skipPrim - sphereCount);
     if (!triangles) return false;
     EmbreeQueryContext context = queryContext(&ray, &skipPrim);
     if (skipsTriangle(skipPrim)) context.base.filter = rejectSkippedTriangle;
@@ -129,8 +142,12 @@ struct EmbreeTracer {
   }
 
   // occluded for rays[0, n), n <= kPacketWidth, ray k skipping skipPrims[k], as one Embree
-  // packet: blocked[k] is the answer for ray k.
+  // packet (ray by ray where the triangles are in blocks): blocked[k] is the answer for ray k.
   void occludedPacket(const Ray* rays, const uint32_t* skipPrims, uint32_t n, bool* blocked) const {
+    if (triangleBlocks.blockCount != 0) {
+      for (uint32_t k = 0; k < n; ++k) blocked[k] = occluded(rays[k], skipPrims[k]);
+      return;
+    }
     alignas(64) int valid[kPacketWidth];
     alignas(64) RTCRay16 packet;
     bool any = false, skips = false;
@@ -176,13 +193,25 @@ struct EmbreeTracer {
   }
 
   bool closestSphereOf(const Ray& ray, Hit* hit) const {
+    if (sphereCount == 0) return false;
     if (sphereBlocks.blockCount == 0) return intersectClosest(spheres, ray, hit);
     if (!closestSphere(sphereBlocks, ray, ray.tMax, &hit->t, &hit->prim)) return false;
     hit->b1 = hit->b2 = 0.0f;
     return true;
   }
 
+  // The nearest of the sphere hit in *hit (where sphereFound) and a triangle hit in the blocks.
+  bool closestTriangleOf(const Ray& ray, bool sphereFound, Hit* hit) const {
+    uint32_t triangle;
+    if (!closestTriangle(triangleBlocks, ray, sphereFound ? hit->t : ray.tMax, &hit->t, &triangle,
+                         &hit->b1, &hit->b2))
+      return sphereFound;
+    hit->prim = sphereCount + triangle;
+    return true;
+  }
+
   bool anySphereOf(const Ray& ray, uint32_t skipPrim) const {
+    if (sphereCount == 0) return false;
     return sphereBlocks.blockCount != 0 ? anySphere(sphereBlocks, ray, skipPrim)
                                         : intersectAny(spheres, ray, skipPrim);
   }

@@ -1,0 +1,67 @@
+#include "backends/cpu/triangle_blocks.h"
+
+namespace candela {
+
+void TriangleBlocks::assign(const Vec3* positions, const Triangle* triangles, uint32_t count,
+                            uint32_t maxWidth) {
+  blockCount_ = 0;
+  data_.clear();
+  if (maxWidth == 0 || count == 0) return;
+  width_ = maxWidth;
+  blockCount_ = (count + width_ - 1) / width_;
+  const size_t lanes = size_t(blockCount_) * width_;
+  // A padding lane is all zeros: its det is 0, which no hit has.
+  data_.assign(12 * lanes, 0.0f);
+  for (size_t i = 0; i < count; ++i) {
+    const Triangle& tri = triangles[i];
+    const Vec3 p0 = positions[tri.v[0]], p1 = positions[tri.v[1]], p2 = positions[tri.v[2]];
+    const Vec3 a = p0 - p1, b = p2 - p0;
+    const Vec3 values[4] = {p0, a, b, cross(a, b)};
+    for (int k = 0; k < 4; ++k) {
+      data_[(3 * k + 0) * lanes + i] = values[k].x;
+      data_[(3 * k + 1) * lanes + i] = values[k].y;
+      data_[(3 * k + 2) * lanes + i] = values[k].z;
+    }
+  }
+}
+
+TriangleBlocksView TriangleBlocks::view() const {
+  TriangleBlocksView v;
+  if (blockCount_ == 0) return v;
+  const size_t lanes = size_t(blockCount_) * width_;
+  for (int k = 0; k < 12; ++k) v.lanes[k] = data_.data() + k * lanes;
+  v.blockCount = blockCount_;
+  v.width = width_;
+  return v;
+}
+
+#if defined(__x86_64__)
+
+uint32_t widestTriangleBlock() {
+  static const uint32_t widest = __builtin_cpu_supports("avx2") ? 8 : 0;
+  return widest;
+}
+
+bool closestTriangle(const TriangleBlocksView& blocks, const Ray& ray, float tMax, float* t,
+                     uint32_t* triangle, float* b1, float* b2) {
+  return closestTriangleW8(blocks, ray, tMax, t, triangle, b1, b2);
+}
+
+bool anyTriangle(const TriangleBlocksView& blocks, const Ray& ray, uint32_t skipTriangle) {
+  return anyTriangleW8(blocks, ray, skipTriangle);
+}
+
+#else  // not x86-64: no blocks (widestTriangleBlock is 0), so these are never called
+
+uint32_t widestTriangleBlock() { return 0; }
+
+bool closestTriangle(const TriangleBlocksView&, const Ray&, float, float*, uint32_t*, float*,
+                     float*) {
+  return false;
+}
+
+bool anyTriangle(const TriangleBlocksView&, const Ray&, uint32_t) { return false; }
+
+#endif
+
+}  // namespace candela

@@ -1,0 +1,72 @@
+// TriangleBlocks: a scene's triangles, when they are very few, tested a block at a time with SIMD
+// instead of through Embree's BVH; the Embree engine's triangle part for such scenes
+// (backends/cpu/embree_tracer.h).
+//
+// In a box of a few dozen triangles (the Cornell box's 32) nearly every ray enters the boxes of
+// most leaves, so a BVH walk is mostly overhead: Embree took 43% of the Cornell box's render,
+// about 90 ns a ray. All of them tested at once, 8 to a block with AVX2, is a few dozen vector
+// operations (docs/performance.md, "Triangles in blocks").
+//
+// Only the AVX2 width is built: blocks of 16 with AVX-512 rendered the Cornell box no faster on
+// an Intel Xeon that has it. Without AVX2 there are no blocks.
+//
+// The test is Moeller and Trumbore's in the form Embree's own triangle leaves use (its
+// Triangle4 precomputes the same edges and normal): not watertight, as Embree's default is not.
+// A hit counts for t in (0, tMax); of two triangles hit at exactly the same t the lower index
+// wins.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "core/vec3.h"
+#include "geometry/ray.h"
+#include "geometry/shapes.h"
+
+namespace candela {
+
+// Scenes of at most this many triangles (and no alpha masks) test them in blocks: the Cornell
+// box with a ball of 16 more triangles rendered 1.28x faster than through Embree, with 32 more
+// 1.16x, with 64 more level, with 128 more slower (docs/performance.md).
+constexpr uint32_t kTriangleBlocksUpTo = 64;
+
+// Structure of arrays, padded to a multiple of `width` with triangles no ray hits: per triangle
+// its first vertex p0, the edges a = p0 - p1 and b = p2 - p0, and n = a x b.
+struct TriangleBlocksView {
+  const float* lanes[12] = {};  // p0 x, y, z; a x, y, z; b x, y, z; n x, y, z
+  uint32_t blockCount = 0;
+  uint32_t width = 8;  // triangles per block
+};
+
+// The widest block this CPU tests: 8 with AVX2, else 0 (no blocks).
+uint32_t widestTriangleBlock();
+
+class TriangleBlocks {
+ public:
+  // Blocks of `count` triangles (the caller keeps to kTriangleBlocksUpTo), `maxWidth` wide (a
+  // width the CPU has); none where maxWidth is 0 (a CPU without AVX2).
+  void assign(const Vec3* positions, const Triangle* triangles, uint32_t count,
+              uint32_t maxWidth = widestTriangleBlock());
+  TriangleBlocksView view() const;
+  size_t bytes() const { return data_.size() * sizeof(float); }
+
+ private:
+  std::vector<float> data_;  // twelve arrays of width_ * blockCount_ floats, one after the other
+  uint32_t blockCount_ = 0;
+  uint32_t width_ = 8;
+};
+
+// The nearest triangle hit for t in (0, tMax): sets *t, *triangle (its index among the scene's
+// triangles) and its barycentrics *b1, *b2 (of p1 and p2) and returns true.
+bool closestTriangle(const TriangleBlocksView& blocks, const Ray& ray, float tMax, float* t,
+                     uint32_t* triangle, float* b1, float* b2);
+// Whether a triangle other than `skipTriangle` is hit for t in (0, ray.tMax).
+bool anyTriangle(const TriangleBlocksView& blocks, const Ray& ray, uint32_t skipTriangle);
+
+// The two tests, compiled for AVX2 (triangle_blocks_w8.cpp); closestTriangle and anyTriangle call
+// them.
+bool closestTriangleW8(const TriangleBlocksView&, const Ray&, float tMax, float* t,
+                       uint32_t* triangle, float* b1, float* b2);
+bool anyTriangleW8(const TriangleBlocksView&, const Ray&, uint32_t skipTriangle);
+
+}  // namespace candela

@@ -1,0 +1,7 @@
+// The triangle-block tests 8 triangles wide (backends/cpu/triangle_blocks_kernel.h), compiled for
+// AVX2; called only where the CPU has it (widestTriangleBlock).
+#if defined(__x86_64__)
+#include "backends/cpu/triangle_blocks_kernel.h"
+
+CANDELA_TRIANGLE_BLOCK_TESTS(8)
+#endif
