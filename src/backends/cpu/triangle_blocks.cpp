@@ -9,18 +9,19 @@ void TriangleBlocks::assign(const Vec3* positions, const Triangle* triangles, ui
   if (maxWidth == 0 || count == 0) return;
   width_ = maxWidth;
   blockCount_ = (count + width_ - 1) / width_;
-  const size_t lanes = size_t(blockCount_) * width_;
   // A padding lane is all zeros: its det is 0, which no hit has.
-  data_.assign(12 * lanes, 0.0f);
+  data_.assign(size_t(blockCount_) * 12 * width_, 0.0f);
   for (size_t i = 0; i < count; ++i) {
+    float* block = data_.data() + (i / width_) * 12 * width_;
+    const size_t lane = i % width_;
     const Triangle& tri = triangles[i];
     const Vec3 p0 = positions[tri.v[0]], p1 = positions[tri.v[1]], p2 = positions[tri.v[2]];
     const Vec3 a = p0 - p1, b = p2 - p0;
     const Vec3 values[4] = {p0, a, b, cross(a, b)};
     for (int k = 0; k < 4; ++k) {
-      data_[(3 * k + 0) * lanes + i] = values[k].x;
-      data_[(3 * k + 1) * lanes + i] = values[k].y;
-      data_[(3 * k + 2) * lanes + i] = values[k].z;
+      block[(3 * k + 0) * width_ + lane] = values[k].x;
+      block[(3 * k + 1) * width_ + lane] = values[k].y;
+      block[(3 * k + 2) * width_ + lane] = values[k].z;
     }
   }
 }
@@ -28,8 +29,7 @@ void TriangleBlocks::assign(const Vec3* positions, const Triangle* triangles, ui
 TriangleBlocksView TriangleBlocks::view() const {
   TriangleBlocksView v;
   if (blockCount_ == 0) return v;
-  const size_t lanes = size_t(blockCount_) * width_;
-  for (int k = 0; k < 12; ++k) v.lanes[k] = data_.data() + k * lanes;
+  v.data = data_.data();
   v.blockCount = blockCount_;
   v.width = width_;
   return v;

@@ -30,10 +30,11 @@ namespace candela {
 // 1.16x, with 64 more level, with 128 more slower (docs/performance.md).
 constexpr uint32_t kTriangleBlocksUpTo = 64;
 
-// Structure of arrays, padded to a multiple of `width` with triangles no ray hits: per triangle
-// its first vertex p0, the edges a = p0 - p1 and b = p2 - p0, and n = a x b.
+// Blocks of `width` triangles, padded with triangles no ray hits; a block is twelve arrays of
+// `width` floats, one after the other: per triangle its first vertex p0, the edges a = p0 - p1
+// and b = p2 - p0, and n = a x b (p0 x, y, z; a x, y, z; b x, y, z; n x, y, z).
 struct TriangleBlocksView {
-  const float* lanes[12] = {};  // p0 x, y, z; a x, y, z; b x, y, z; n x, y, z
+  const float* data = nullptr;
   uint32_t blockCount = 0;
   uint32_t width = 8;  // triangles per block
 };
@@ -51,7 +52,7 @@ class TriangleBlocks {
   size_t bytes() const { return data_.size() * sizeof(float); }
 
  private:
-  std::vector<float> data_;  // twelve arrays of width_ * blockCount_ floats, one after the other
+  std::vector<float> data_;  // blockCount_ blocks of twelve arrays of width_ floats
   uint32_t blockCount_ = 0;
   uint32_t width_ = 8;
 };

@@ -62,8 +62,10 @@ inline BlockTest<W> testBlock(const TriangleBlocksView& b, uint32_t block, const
                               typename Lanes<W>::F tMax) {
   using F = typename Lanes<W>::F;
   using I = typename Lanes<W>::I;
-  const size_t o = size_t(block) * W;
-  const auto at = [&](int array) { return F(*reinterpret_cast<const typename Lanes<W>::Unaligned*>(b.lanes[array] + o)); };
+  const float* lanes = b.data + size_t(block) * 12 * W;
+  const auto at = [&](int k) {
+    return F(*reinterpret_cast<const typename Lanes<W>::Unaligned*>(lanes + k * W));
+  };
   const F cx = at(0) - r.ox, cy = at(1) - r.oy, cz = at(2) - r.oz;
   const F rx = r.dy * cz - r.dz * cy;
   const F ry = r.dz * cx - r.dx * cz;
@@ -87,8 +89,9 @@ bool closestTriangleInLanes(const TriangleBlocksView& blocks, const Ray& ray, fl
                             float* t, uint32_t* triangle, float* b1, float* b2) {
   using F = typename Lanes<W>::F;
   using I = typename Lanes<W>::I;
-  // Each lane keeps its nearest hit (the earliest block's on a tie) and what its barycentrics
-  // need; the lanes are compared at the end.
+  // Each lane keeps its nearest hit (the earliest block's on a tie); the lanes are compared at
+  // the end, and the winner's block tested again for its barycentrics (the same operations, so
+  // the same bits), which frees the registers that carrying them would take.
   const RayLanes<W> lanes(ray);
   const F far = splat<W>(tMax);
   F nearest = far, nearestU = F{}, nearestV = F{}, nearestDet = F{};
