@@ -89,9 +89,8 @@ bool closestTriangleInLanes(const TriangleBlocksView& blocks, const Ray& ray, fl
                             float* t, uint32_t* triangle, float* b1, float* b2) {
   using F = typename Lanes<W>::F;
   using I = typename Lanes<W>::I;
-  // Each lane keeps its nearest hit (the earliest block's on a tie); the lanes are compared at
-  // the end, and the winner's block tested again for its barycentrics (the same operations, so
-  // the same bits), which frees the registers that carrying them would take.
+  // Each lane keeps its nearest hit (the earliest block's on a tie) with what its barycentrics
+  // need; the lanes are compared at the end.
   const RayLanes<W> lanes(ray);
   const F far = splat<W>(tMax);
   F nearest = far, nearestU = F{}, nearestV = F{}, nearestDet = F{};
