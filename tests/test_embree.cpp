@@ -514,7 +514,7 @@ TEST(Embree, TracesTheVerticesOfTheSceneGivenLast) {
 // A scene in triangle blocks whose next frame masks a material goes to Embree, whose filters
 // apply the mask, and back to blocks when the mask is gone.
 TEST(Embree, TriangleBlocksGiveWayToEmbreeForAlphaMasks) {
-  if (widestTriangleBlock() == 0) GTEST_SKIP() << "this CPU has no triangle blocks (AVX2)";
+  if (widestTriangleBlock() == 0) GTEST_SKIP() << "this CPU has no triangle blocks (AVX2 and FMA)";
   SceneData scene = randomScene(23, 10, 40);
   EmbreeScene embree;
   embree.update(scene, SceneChange::Structure);

@@ -89,7 +89,7 @@ TriangleBlocks blocksOf(const Mesh& mesh) {
 class TriangleBlocksTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    if (widestTriangleBlock() == 0) GTEST_SKIP() << "this CPU has no triangle blocks (AVX2)";
+    if (widestTriangleBlock() == 0) GTEST_SKIP() << "this CPU has no triangle blocks (AVX2 and FMA)";
   }
 };
 

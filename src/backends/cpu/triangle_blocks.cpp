@@ -38,7 +38,8 @@ TriangleBlocksView TriangleBlocks::view() const {
 #if defined(__x86_64__)
 
 uint32_t widestTriangleBlock() {
-  static const uint32_t widest = __builtin_cpu_supports("avx2") ? 8 : 0;
+  static const uint32_t widest =
+      __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") ? 8 : 0;
   return widest;
 }
 

@@ -1,6 +1,6 @@
 // The triangle-block tests of backends/cpu/triangle_blocks.h, written once over W lanes (GCC/Clang
-// vector extensions) and compiled for AVX2 in triangle_blocks_w8.cpp, the only file to include
-// it.
+// vector extensions) and compiled for AVX2 and FMA in triangle_blocks_w8.cpp, the only file to
+// include it.
 //
 // Everything here has internal linkage and calls no inline function of another header, so no
 // AVX code can stand in, at link time, for a function other files expect to run anywhere.

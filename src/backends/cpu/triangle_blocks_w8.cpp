@@ -1,5 +1,5 @@
 // The triangle-block tests 8 triangles wide (backends/cpu/triangle_blocks_kernel.h), compiled for
-// AVX2; called only where the CPU has it (widestTriangleBlock).
+// AVX2 and FMA; called only where the CPU has both (widestTriangleBlock).
 #if defined(__x86_64__)
 #include "backends/cpu/triangle_blocks_kernel.h"
 
