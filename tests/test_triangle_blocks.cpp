@@ -89,7 +89,8 @@ TriangleBlocks blocksOf(const Mesh& mesh) {
 class TriangleBlocksTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    if (widestTriangleBlock() == 0) GTEST_SKIP() << "this CPU has no triangle blocks (AVX2 and FMA)";
+    if (widestTriangleBlock() == 0)
+      GTEST_SKIP() << "this CPU has no triangle blocks (AVX2 and FMA)";
   }
 };
 
@@ -115,7 +116,8 @@ TEST_F(TriangleBlocksTest, MatchTheWatertightTestUpToRounding) {
       }
       if (!got.found) continue;
       ++hits;
-      EXPECT_NEAR(got.t, expected.t, 1e-4f * expected.t + 1e-6f) << count << " triangles, ray " << i;
+      EXPECT_NEAR(got.t, expected.t, 1e-4f * expected.t + 1e-6f)
+          << count << " triangles, ray " << i;
       if (got.triangle == expected.triangle) {
         EXPECT_NEAR(got.b1, expected.b1, 1e-4f) << "ray " << i;
         EXPECT_NEAR(got.b2, expected.b2, 1e-4f) << "ray " << i;
@@ -145,8 +147,9 @@ Mesh facing(const std::vector<Vec3>& offsets) {
   Mesh mesh;
   for (const Vec3& offset : offsets) {
     const uint32_t first = uint32_t(mesh.positions.size());
-    mesh.positions.insert(mesh.positions.end(), {offset + Vec3(-1, -1, -5), offset + Vec3(2, -1, -5),
-                                                 offset + Vec3(-1, 2, -5)});
+    mesh.positions.insert(
+        mesh.positions.end(),
+        {offset + Vec3(-1, -1, -5), offset + Vec3(2, -1, -5), offset + Vec3(-1, 2, -5)});
     mesh.triangles.push_back(Triangle{{first, first + 1, first + 2}, 0});
   }
   return mesh;

@@ -89,11 +89,9 @@ void rejectSkippedTriangle(const RTCFilterFunctionNArguments* args) {
   }
 }
 
-EmbreeScene::EmbreeScene(const char* deviceConfig, uint32_t indexedLeavesFrom,
-                         uint32_t triangleBlocksUpTo)
+EmbreeScene::EmbreeScene(const char* deviceConfig, uint32_t indexedLeavesFrom)
     : deviceConfig_(deviceConfig ? deviceConfig : ""),
       indexedLeavesFrom_(indexedLeavesFrom),
-      triangleBlocksUpTo_(triangleBlocksUpTo),
       device_(newDevice(deviceConfig_)) {
   // Eight-wide nodes where the instruction set Embree runs has them (AVX and up), as its default.
   indexedLeavesConfig_ =
@@ -132,7 +130,8 @@ void EmbreeScene::release() {
 
 size_t EmbreeScene::bytes() const {
   return size_t(std::max(0LL, embreeBytes.load())) + sphereNodes_.size() * sizeof(BvhNode) +
-         spherePrims_.size() * sizeof(uint32_t) + sphereBlocks_.bytes() + triangleBlocks_.bytes();
+         spherePrims_.size() * sizeof(uint32_t) + sphereBlocks_.bytes() +
+         triangleBlocks_.bytes();
 }
 
 uint32_t EmbreeScene::instanceCount() const {
@@ -200,9 +199,9 @@ void EmbreeScene::placeSpheres(const SceneData& scene) {
 }
 
 bool EmbreeScene::placeTriangleBlocks(const SceneData& scene) {
-  const uint32_t count = uint32_t(scene.triangles.size());
-  if (scene.triangles.size() <= triangleBlocksUpTo_ && scene.alphaMasks.empty())
-    triangleBlocks_.assign(scene.positions.data(), scene.triangles.data(), count);
+  if (scene.triangles.size() <= kTriangleBlocksUpTo && scene.alphaMasks.empty())
+    triangleBlocks_.assign(scene.positions.data(), scene.triangles.data(),
+                           uint32_t(scene.triangles.size()));
   else
     triangleBlocks_.assign(nullptr, nullptr, 0);
   return triangleBlocks_.view().blockCount != 0;

@@ -11,10 +11,11 @@
 // the other objects' triangles are geometries over the runs of the triangle array between them
 // (with no repeats, one over all). The spheres stay candela's: in blocks of 4 or 8 when they are
 // few, else in a BVH of their own. A scene of at most kTriangleBlocksUpTo triangles, none of them
-// masked, has no Embree BVH: its triangles are tested in blocks too (backends/cpu/
-// triangle_blocks.h), placed anew every frame that moves them. A frame whose primitives moved (SceneChange::Motion) shares
-// its vertices and refits Embree's BVHs, moves the instances, and places the spheres anew (their
-// blocks, or their BVH beyond 32 spheres); a new structure rebuilds both. Alpha-masked materials
+// masked, has no Embree BVH: its triangles are tested in blocks too
+// (backends/cpu/triangle_blocks.h). A frame whose primitives moved (SceneChange::Motion) shares
+// its vertices and refits Embree's BVHs, moves the instances, and places the spheres (their
+// blocks, or their BVH beyond 32 spheres) and the triangle blocks anew; a new structure rebuilds
+// both. Alpha-masked materials
 // (geometry/alpha_mask.h) get intersection and occlusion filters on the triangles that apply the
 // same test as candela's own traversal. Embree picks the widest SIMD the CPU has at run time (SSE2
 // up to AVX-512).
@@ -45,11 +46,9 @@ class EmbreeScene {
  public:
   // `deviceConfig`: Embree's device configuration (rtcNewDevice), e.g. "isa=avx2" to test an
   // instruction set below the CPU's; null: Embree's defaults. Scenes of at least
-  // `indexedLeavesFrom` triangles get indexed leaves, and scenes of at most `triangleBlocksUpTo`
-  // (and no alpha masks) triangle blocks instead of Embree's BVH, where the CPU has them.
+  // `indexedLeavesFrom` triangles get indexed leaves.
   explicit EmbreeScene(const char* deviceConfig = nullptr,
-                       uint32_t indexedLeavesFrom = kIndexedLeavesFromTriangles,
-                       uint32_t triangleBlocksUpTo = kTriangleBlocksUpTo);
+                       uint32_t indexedLeavesFrom = kIndexedLeavesFromTriangles);
   ~EmbreeScene();
   EmbreeScene(const EmbreeScene&) = delete;
   EmbreeScene& operator=(const EmbreeScene&) = delete;
@@ -129,7 +128,6 @@ class EmbreeScene {
 
   std::string deviceConfig_, indexedLeavesConfig_;  // the latter with Embree's indexed leaves
   uint32_t indexedLeavesFrom_;
-  uint32_t triangleBlocksUpTo_;
   RTCDevice device_ = nullptr;
   bool indexedLeaves_ = false;  // device_'s
   RTCScene scene_ = nullptr;  // the triangles; null when there are none

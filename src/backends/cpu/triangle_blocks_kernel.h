@@ -85,8 +85,8 @@ inline BlockTest<W> testBlock(const TriangleBlocksView& b, uint32_t block, const
 }
 
 template <int W>
-bool closestTriangleInLanes(const TriangleBlocksView& blocks, const Ray& ray, float tMax,
-                            float* t, uint32_t* triangle, float* b1, float* b2) {
+bool closestTriangleInLanes(const TriangleBlocksView& blocks, const Ray& ray, float tMax, float* t,
+                            uint32_t* triangle, float* b1, float* b2) {
   using F = typename Lanes<W>::F;
   using I = typename Lanes<W>::I;
   // Each lane keeps its nearest hit (the earliest block's on a tie) with what its barycentrics
@@ -142,13 +142,13 @@ bool anyTriangleInLanes(const TriangleBlocksView& blocks, const Ray& ray, uint32
 
 // Defines closestTriangleW<W> and anyTriangleW<W> (backends/cpu/triangle_blocks.h) over the
 // kernel above.
-#define CANDELA_TRIANGLE_BLOCK_TESTS(W)                                                         \
-  namespace candela {                                                                           \
-  bool closestTriangleW##W(const TriangleBlocksView& blocks, const Ray& ray, float tMax,        \
-                           float* t, uint32_t* triangle, float* b1, float* b2) {                \
-    return closestTriangleInLanes<W>(blocks, ray, tMax, t, triangle, b1, b2);                   \
-  }                                                                                             \
-  bool anyTriangleW##W(const TriangleBlocksView& blocks, const Ray& ray, uint32_t skipTriangle) { \
-    return anyTriangleInLanes<W>(blocks, ray, skipTriangle);                                    \
-  }                                                                                             \
+#define CANDELA_TRIANGLE_BLOCK_TESTS(W)                                                            \
+  namespace candela {                                                                              \
+  bool closestTriangleW##W(const TriangleBlocksView& blocks, const Ray& ray, float tMax, float* t, \
+                           uint32_t* triangle, float* b1, float* b2) {                             \
+    return closestTriangleInLanes<W>(blocks, ray, tMax, t, triangle, b1, b2);                      \
+  }                                                                                                \
+  bool anyTriangleW##W(const TriangleBlocksView& blocks, const Ray& ray, uint32_t skipTriangle) {  \
+    return anyTriangleInLanes<W>(blocks, ray, skipTriangle);                                       \
+  }                                                                                                \
   }
