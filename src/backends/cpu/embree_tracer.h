@@ -16,6 +16,7 @@
 
 #include <cstdint>
 
+#include "backends/cpu/finite_ray.h"
 #include "backends/cpu/sphere_blocks.h"
 #include "backends/cpu/triangle_blocks.h"
 #include "core/constants.h"
@@ -65,7 +66,7 @@ struct EmbreeTracer {
   TriangleBlocksView triangleBlocks;  // the triangles in blocks, when they are few; else empty
 
   bool closest(const Ray& ray, Hit* hit) const {
-    if (!isFiniteRay(ray)) return false;  // Embree's behaviour on NaN rays is undefined
+    if (!isFiniteRayCpu(ray)) return false;  // Embree's behaviour on NaN rays is undefined
     const bool sphereFound = closestSphereOf(ray, hit);
     if (triangleBlocks.blockCount != 0) return closestTriangleOf(ray, sphereFound, hit);
     if (!triangles) return sphereFound;
@@ -104,7 +105,7 @@ struct EmbreeTracer {
       packet.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID;
       if (i >= n) continue;
       hits[i] = Hit();
-      if (!isFiniteRay(rays[i])) continue;
+      if (!isFiniteRayCpu(rays[i])) continue;
       Hit sphere;
       const bool sphereFound = closestSphereOf(rays[i], &sphere);
       if (sphereFound) hits[i] = sphere;
@@ -128,7 +129,7 @@ struct EmbreeTracer {
   }
 
   bool occluded(const Ray& ray, uint32_t skipPrim) const {
-    if (!isFiniteRay(ray)) return false;
+    if (!isFiniteRayCpu(ray)) return false;
     if (anySphereOf(ray, skipPrim)) return true;
     if (triangleBlocks.blockCount != 0)
       return anyTriangle(triangleBlocks, ray, skipPrim - sphereCount);
@@ -156,7 +157,7 @@ struct EmbreeTracer {
       setInactiveLane(k, &packet);
       if (k >= n) continue;
       blocked[k] = false;
-      if (!isFiniteRay(rays[k])) continue;
+      if (!isFiniteRayCpu(rays[k])) continue;
       if (anySphereOf(rays[k], skipPrims[k])) {
         blocked[k] = true;
         continue;

@@ -43,25 +43,9 @@ uint32_t widestTriangleBlock() {
   return widest;
 }
 
-bool closestTriangle(const TriangleBlocksView& blocks, const Ray& ray, float tMax, float* t,
-                     uint32_t* triangle, float* b1, float* b2) {
-  return closestTriangleW8(blocks, ray, tMax, t, triangle, b1, b2);
-}
-
-bool anyTriangle(const TriangleBlocksView& blocks, const Ray& ray, uint32_t skipTriangle) {
-  return anyTriangleW8(blocks, ray, skipTriangle);
-}
-
-#else  // not x86-64: no blocks (widestTriangleBlock is 0), so these are never called
+#else  // not x86-64: no blocks
 
 uint32_t widestTriangleBlock() { return 0; }
-
-bool closestTriangle(const TriangleBlocksView&, const Ray&, float, float*, uint32_t*, float*,
-                     float*) {
-  return false;
-}
-
-bool anyTriangle(const TriangleBlocksView&, const Ray&, uint32_t) { return false; }
 
 #endif
 

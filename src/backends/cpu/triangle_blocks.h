@@ -58,17 +58,29 @@ class TriangleBlocks {
   uint32_t width_ = 8;
 };
 
-// The nearest triangle hit for t in (0, tMax): sets *t, *triangle (its index among the scene's
-// triangles) and its barycentrics *b1, *b2 (of p1 and p2) and returns true.
-bool closestTriangle(const TriangleBlocksView& blocks, const Ray& ray, float tMax, float* t,
-                     uint32_t* triangle, float* b1, float* b2);
-// Whether a triangle other than `skipTriangle` is hit for t in (0, ray.tMax).
-bool anyTriangle(const TriangleBlocksView& blocks, const Ray& ray, uint32_t skipTriangle);
-
 // The two tests, compiled for AVX2 and FMA (triangle_blocks_w8.cpp); closestTriangle and
 // anyTriangle call them.
 bool closestTriangleW8(const TriangleBlocksView&, const Ray&, float tMax, float* t,
                        uint32_t* triangle, float* b1, float* b2);
 bool anyTriangleW8(const TriangleBlocksView&, const Ray&, uint32_t skipTriangle);
+
+// closestTriangle: the nearest triangle hit for t in (0, tMax); sets *t, *triangle (its index
+// among the scene's triangles) and its barycentrics *b1, *b2 (of p1 and p2) and returns true.
+// anyTriangle: whether a triangle other than `skipTriangle` is hit for t in (0, ray.tMax).
+#if defined(__x86_64__)
+inline bool closestTriangle(const TriangleBlocksView& blocks, const Ray& ray, float tMax, float* t,
+                            uint32_t* triangle, float* b1, float* b2) {
+  return closestTriangleW8(blocks, ray, tMax, t, triangle, b1, b2);
+}
+inline bool anyTriangle(const TriangleBlocksView& blocks, const Ray& ray, uint32_t skipTriangle) {
+  return anyTriangleW8(blocks, ray, skipTriangle);
+}
+#else  // no blocks (widestTriangleBlock is 0), so never called
+inline bool closestTriangle(const TriangleBlocksView&, const Ray&, float, float*, uint32_t*, float*,
+                            float*) {
+  return false;
+}
+inline bool anyTriangle(const TriangleBlocksView&, const Ray&, uint32_t) { return false; }
+#endif
 
 }  // namespace candela
