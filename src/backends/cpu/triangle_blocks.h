@@ -3,13 +3,11 @@
 // (backends/cpu/embree_tracer.h).
 //
 // In a box of a few dozen triangles (the Cornell box's 32) nearly every ray enters the boxes of
-// most leaves, so a BVH walk is mostly overhead: Embree took 43% of the Cornell box's render,
-// about 90 ns a ray. All of them tested at once, 8 to a block with AVX2, is a few dozen vector
-// operations (docs/performance.md, "Triangles in blocks").
+// most leaves, so a BVH walk is mostly overhead; all of them tested at once, 8 to a block, is a
+// few dozen vector operations (docs/performance.md, "Triangles in blocks", has the figures).
 //
-// Only the AVX2 width is built (with FMA, which every AVX2 CPU has: 4% fewer instructions, 3% less
-// time): blocks of 16 with AVX-512 rendered the Cornell box no faster on an Intel Xeon that has
-// it. Without AVX2 there are no blocks.
+// Only the AVX2 width is built, with FMA, which every AVX2 CPU has: blocks of 16 with AVX-512
+// rendered the Cornell box no faster. Without AVX2 and FMA there are no blocks.
 //
 // The test is Moeller and Trumbore's in the form Embree's own triangle leaves use (its
 // Triangle4 precomputes the same edges and normal): not watertight, as Embree's default is not.
@@ -26,9 +24,8 @@
 
 namespace candela {
 
-// Scenes of at most this many triangles (and no alpha masks) test them in blocks: the Cornell
-// box with a ball of 16 more triangles rendered 1.28x faster than through Embree, with 32 more
-// 1.16x, with 64 more level, with 128 more slower (docs/performance.md).
+// Scenes of at most this many triangles (and no alpha masks) test them in blocks: beyond it,
+// Embree's BVH gains more than its walk costs (docs/performance.md).
 constexpr uint32_t kTriangleBlocksUpTo = 64;
 
 // Blocks of `width` triangles, padded with triangles no ray hits; a block is twelve arrays of
