@@ -344,10 +344,10 @@ std::string ballObj(bool veiled = true) {
 }
 
 // Both engines trace the same sample streams; paths part only where a hit point differs by
-// rounding, so the images differ by far less than the noise of one seed against another. At 20
-// spp a pixel's camera rays go to Embree as a packet of 16 and one of 4, and so do the shadow
+// rounding, so the images differ by far less than the noise of one seed against another. The
+// room's 30 triangles alone go into triangle blocks; with a ball of 96 more, to Embree, and at
+// 20 spp a pixel's camera rays then go to it as a packet of 16 and one of 4, and so do the shadow
 // rays from their first hits (the scene's four lights are few enough: render/render_pixel.h).
-// The room's 24 triangles alone go into triangle blocks; with a ball of 96 more, to Embree.
 TEST(Embree, RendersTheSameImageAsTheOwnBvhUpToRounding) {
   const test::TempDir temp;
   const std::string ball = temp.write("ball.obj", ballObj(false));
