@@ -17,15 +17,18 @@ CANDELA_HDI void sampleUniformDisk(float u1, float u2, float* x, float* y) {
     *x = *y = 0.0f;
     return;
   }
-  // The angle is pi/4 (b/a) where |a| > |b| and pi/2 - pi/4 (a/b) elsewhere, where cos and sin
-  // trade places; either way the polynomial's argument is within [-pi/4, pi/4]. Selects, not a
-  // branch: which case holds is a coin toss per sample, which a branch predictor loses.
-  const bool aMajor = fabsf(a) > fabsf(b);
-  const float major = aMajor ? a : b, minor = aMajor ? b : a;
+  // The angle is pi/4 (b/a) in the first case and pi/2 - pi/4 (a/b) in the second, where
+  // cos and sin trade places; either way the polynomial's argument is within [-pi/4, pi/4].
   float s, c;
-  sinCosQuarterPi((kPi / 4.0f) * (minor / major), &s, &c);
-  *x = major * (aMajor ? c : s);
-  *y = major * (aMajor ? s : c);
+  if (fabsf(a) > fabsf(b)) {
+    sinCosQuarterPi((kPi / 4.0f) * (b / a), &s, &c);
+    *x = a * c;
+    *y = a * s;
+  } else {
+    sinCosQuarterPi((kPi / 4.0f) * (a / b), &s, &c);
+    *x = b * s;
+    *y = b * c;
+  }
 }
 
 // Cosine-weighted hemisphere around +z; pdf = cos(theta) / pi.
