@@ -280,33 +280,6 @@ TEST(FloatError, NextFloatMatchesNextafter) {
   EXPECT_EQ(nextFloatDown(-INFINITY), -INFINITY);
 }
 
-// stepFloatTowards, the branch-free step offsetRayOrigin takes, is nextFloatUp / nextFloatDown /
-// no step by the sign of its second argument, to the bit, over random bit patterns (denormals,
-// infinities and NaNs among them) and the zeros, infinities and extremes.
-TEST(FloatError, StepFloatTowardsIsTheNextFloatOfTheStepsSign) {
-  const auto expected = [](float v, float towards) {
-    return towards > 0.0f ? nextFloatUp(v) : towards < 0.0f ? nextFloatDown(v) : v;
-  };
-  std::vector<float> values = {0.0f, -0.0f, INFINITY, -INFINITY, 0x1p-149f, -0x1p-149f,
-                               3.4028235e38f, -3.4028235e38f, 1.0f, -1.0f};
-  std::vector<float> steps = {1.0f, -1.0f, 0.0f, -0.0f, 1e-40f, -1e-40f, INFINITY, -INFINITY,
-                              std::nanf("")};
-  std::mt19937 gen(11);
-  for (int i = 0; i < 200000; ++i) values.push_back(bitsToFloat(uint32_t(gen())));
-  for (int i = 0; i < 200; ++i) steps.push_back(bitsToFloat(uint32_t(gen())));
-  for (size_t i = 0; i < values.size(); ++i) {
-    const float v = values[i];
-    for (const float towards : {steps[i % steps.size()], steps[(i * 7 + 3) % steps.size()]}) {
-      const float got = stepFloatTowards(v, towards), want = expected(v, towards);
-      if (std::isnan(v)) {
-        EXPECT_TRUE(std::isnan(got)) << v << " towards " << towards;
-        continue;
-      }
-      EXPECT_EQ(floatToBits(got), floatToBits(want)) << v << " towards " << towards;
-    }
-  }
-}
-
 // The rounding in offsetRayOrigin against its definition: each coordinate of p +
 // offset moved one float further along the offset's sign, and left alone where the offset is 0.
 TEST(FloatError, OffsetRayOriginRoundsAwayFromThePoint) {

@@ -52,37 +52,19 @@ CANDELA_HDI float nextFloatDown(float v) {
   return bitsToFloat(v > 0.0f ? bits - 1 : bits + 1);
 }
 
-// v stepped by one float in the direction of `towards`'s sign: nextFloatUp(v) where towards > 0,
-// nextFloatDown(v) where towards < 0, v itself where towards is zero or NaN, to the bit (a NaN v
-// stays a NaN). In
-// integer masks, without a branch: the signs it depends on are a coin toss per ray, which a
-// branch predictor loses, and compilers turn the plain form into branches.
-CANDELA_HDI float stepFloatTowards(float v, float towards) {
-  const uint32_t original = floatToBits(v), toward = floatToBits(towards);
-  const uint32_t magnitude = original & 0x7fffffffu, towardMagnitude = toward & 0x7fffffffu;
-  const uint32_t sign = toward & 0x80000000u;
-  // A zero takes the step's sign, so that the step below leads away from it.
-  const uint32_t zero = 0u - uint32_t(magnitude == 0u);  // all ones where v is zero
-  const uint32_t bits = (sign & zero) | (original & ~zero);
-  // Away from zero (+1) where v and the step share a sign, towards it (-1) where they do not;
-  // an infinity stepped outwards stays, as does v where the step is zero or NaN.
-  const uint32_t outwards = uint32_t((bits & 0x80000000u) == sign);
-  const uint32_t stays = (uint32_t(magnitude == 0x7f800000u) & outwards) |
-                         uint32_t(towardMagnitude == 0u) | uint32_t(towardMagnitude > 0x7f800000u);
-  const uint32_t stepped = bits + (outwards << 1) - 1u;
-  return bitsToFloat(stepped ^ ((stepped ^ original) & (0u - stays)));
-}
-
 // Origin for a ray leaving point p (absolute error bound `error` per axis) in direction w,
 // on the side of geometric normal n that w points to.
 CANDELA_HDI_ALWAYS Vec3 offsetRayOrigin(const Vec3& p, const Vec3& error, const Vec3& n, const Vec3& w) {
   const float d = dot(abs(n), error);
   Vec3 offset = n * d;
   if (dot(w, n) < 0.0f) offset = -offset;
-  const Vec3 po = p + offset;
+  Vec3 po = p + offset;
   // Round away from p so the offset is never lost to rounding.
-  return {stepFloatTowards(po.x, offset.x), stepFloatTowards(po.y, offset.y),
-          stepFloatTowards(po.z, offset.z)};
+  for (int i = 0; i < 3; ++i) {
+    if (offset[i] > 0.0f) po[i] = nextFloatUp(po[i]);
+    else if (offset[i] < 0.0f) po[i] = nextFloatDown(po[i]);
+  }
+  return po;
 }
 
 }  // namespace candela
