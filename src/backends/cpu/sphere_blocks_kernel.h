@@ -2,50 +2,25 @@
 // vector extensions) and compiled once per width, each in its own file with its instruction set:
 // sphere_blocks_w4.cpp (SSE2) and _w8.cpp (AVX2). Only those files include it.
 //
-// Everything here has internal linkage and calls no inline function of another header, so no
-// AVX code can stand in, at link time, for a function other files expect to run anywhere.
+// Everything here has internal linkage and calls no inline function of another header but
+// simd_lanes.h's, internal too, so no AVX code can stand in, at link time, for a function other
+// files expect to run anywhere.
 #pragma once
 
 #include <immintrin.h>
 
 #include <cstdint>
 
+#include "backends/cpu/simd_lanes.h"
 #include "backends/cpu/sphere_blocks.h"
 
 namespace candela {
 namespace {
 
 template <int W>
-struct Lanes {
-  typedef float F __attribute__((vector_size(W * 4)));
-  typedef int32_t I __attribute__((vector_size(W * 4)));
-  typedef float Unaligned __attribute__((vector_size(W * 4), aligned(4)));
-};
-
-template <int W>
-inline typename Lanes<W>::F load(const float* p) {
-  return *reinterpret_cast<const typename Lanes<W>::Unaligned*>(p);
-}
-
-template <int W>
 inline typename Lanes<W>::F squareRoot(typename Lanes<W>::F x) {
   if constexpr (W == 4) return _mm_sqrt_ps(x);
   if constexpr (W == 8) return _mm256_sqrt_ps(x);
-}
-
-// Bit k set where lane k of `mask` (all ones or all zeros) is set.
-template <int W>
-inline uint32_t laneBits(typename Lanes<W>::I mask) {
-  if constexpr (W == 4) return uint32_t(_mm_movemask_ps(__m128(mask)));
-  if constexpr (W == 8) return uint32_t(_mm256_movemask_ps(__m256(mask)));
-}
-
-// x in every lane, -0 included (adding x to a zero vector would turn -0 into +0).
-template <int W>
-inline typename Lanes<W>::F splat(float x) {
-  typename Lanes<W>::F v;
-  for (int i = 0; i < W; ++i) v[i] = x;
-  return v;
 }
 
 template <int W>

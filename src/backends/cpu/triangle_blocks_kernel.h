@@ -2,39 +2,20 @@
 // vector extensions) and compiled for AVX2 and FMA in triangle_blocks_w8.cpp, the only file to
 // include it.
 //
-// Everything here has internal linkage and calls no inline function of another header, so no
-// AVX code can stand in, at link time, for a function other files expect to run anywhere.
+// Everything here has internal linkage and calls no inline function of another header but
+// simd_lanes.h's, internal too, so no AVX code can stand in, at link time, for a function other
+// files expect to run anywhere.
 #pragma once
 
 #include <immintrin.h>
 
 #include <cstdint>
 
+#include "backends/cpu/simd_lanes.h"
 #include "backends/cpu/triangle_blocks.h"
 
 namespace candela {
 namespace {
-
-template <int W>
-struct Lanes {
-  typedef float F __attribute__((vector_size(W * 4)));
-  typedef int32_t I __attribute__((vector_size(W * 4)));
-  typedef float Unaligned __attribute__((vector_size(W * 4), aligned(4)));
-};
-
-// Bit k set where lane k of `mask` (all ones or all zeros) is set.
-template <int W>
-inline uint32_t laneBits(typename Lanes<W>::I mask) {
-  static_assert(W == 8, "AVX2 only");
-  return uint32_t(_mm256_movemask_ps(__m256(mask)));
-}
-
-template <int W>
-inline typename Lanes<W>::F splat(float x) {
-  typename Lanes<W>::F v;
-  for (int i = 0; i < W; ++i) v[i] = x;
-  return v;
-}
 
 template <int W>
 struct RayLanes {
@@ -63,9 +44,7 @@ inline BlockTest<W> testBlock(const TriangleBlocksView& b, uint32_t block, const
   using F = typename Lanes<W>::F;
   using I = typename Lanes<W>::I;
   const float* lanes = b.data + size_t(block) * 12 * W;
-  const auto at = [&](int k) {
-    return F(*reinterpret_cast<const typename Lanes<W>::Unaligned*>(lanes + k * W));
-  };
+  const auto at = [&](int k) { return load<W>(lanes + k * W); };
   const F cx = at(0) - r.ox, cy = at(1) - r.oy, cz = at(2) - r.oz;
   const F rx = r.dy * cz - r.dz * cy;
   const F ry = r.dz * cx - r.dx * cz;
