@@ -131,6 +131,7 @@ struct EmbreeTracer {
   bool occluded(const Ray& ray, uint32_t skipPrim) const {
     if (!isFiniteRayCpu(ray)) return false;
     if (anySphereOf(ray, skipPrim)) return true;
+    // A skipped sphere (or none) wraps to an index beyond every triangle's.
     if (triangleBlocks.blockCount != 0)
       return anyTriangle(triangleBlocks, ray, skipPrim - sphereCount);
     if (!triangles) return false;

@@ -33,6 +33,14 @@ inline uint32_t laneBits(typename Lanes<W>::I mask) {
   if constexpr (W == 8) return uint32_t(_mm256_movemask_ps(__m256(mask)));
 }
 
+// `hitBits` (laneBits of block `block`) without the lane of primitive `skip`, where that block
+// holds it: in bits, not behind a branch, since which block holds it changes from ray to ray.
+template <int W>
+inline uint32_t withoutSkippedLane(uint32_t hitBits, uint32_t skip, uint32_t block) {
+  const uint32_t lane = skip - block * W;
+  return hitBits & ~(uint32_t(lane < W) << (lane % W));
+}
+
 // x in every lane, -0 included (adding x to a zero vector would turn -0 into +0).
 template <int W>
 inline typename Lanes<W>::F splat(float x) {

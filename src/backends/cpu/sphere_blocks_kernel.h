@@ -126,9 +126,7 @@ bool anySphereInLanes(const SphereBlocksView& blocks, const Ray& ray, uint32_t s
     typename Lanes<W>::F distances;
     typename Lanes<W>::I hit;
     if (!blockHits<W>(blocks, block, lanes, ray.tMax, &distances, &hit)) continue;
-    uint32_t hitLanes = laneBits<W>(hit);
-    if (skipPrim - block * W < W) hitLanes &= ~(1u << (skipPrim - block * W));
-    if (hitLanes != 0) return true;
+    if (withoutSkippedLane<W>(laneBits<W>(hit), skipPrim, block) != 0) return true;
   }
   return false;
 }

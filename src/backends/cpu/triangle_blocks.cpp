@@ -2,12 +2,12 @@
 
 namespace candela {
 
-void TriangleBlocks::assign(const Vec3* positions, const Triangle* triangles, uint32_t count,
-                            uint32_t maxWidth) {
+void TriangleBlocks::assign(const Vec3* positions, const Triangle* triangles, uint32_t count) {
+  const uint32_t width = widestTriangleBlock();
   blockCount_ = 0;
   data_.clear();
-  if (maxWidth == 0 || count == 0) return;
-  width_ = maxWidth;
+  if (width == 0 || count == 0) return;
+  width_ = width;
   blockCount_ = (count + width_ - 1) / width_;
   // A padding lane is all zeros: its det is 0, which no hit has.
   data_.assign(size_t(blockCount_) * 12 * width_, 0.0f);

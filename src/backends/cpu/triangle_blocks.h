@@ -42,10 +42,9 @@ uint32_t widestTriangleBlock();
 
 class TriangleBlocks {
  public:
-  // Blocks of `count` triangles (the caller keeps to kTriangleBlocksUpTo), `maxWidth` wide (a
-  // width the CPU has); none where maxWidth is 0 (a CPU without AVX2).
-  void assign(const Vec3* positions, const Triangle* triangles, uint32_t count,
-              uint32_t maxWidth = widestTriangleBlock());
+  // Blocks of `count` triangles (the caller keeps to kTriangleBlocksUpTo); none where the CPU
+  // has no blocks (widestTriangleBlock is 0).
+  void assign(const Vec3* positions, const Triangle* triangles, uint32_t count);
   TriangleBlocksView view() const;
   size_t bytes() const { return data_.size() * sizeof(float); }
 

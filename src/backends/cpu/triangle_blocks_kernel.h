@@ -109,11 +109,8 @@ bool anyTriangleInLanes(const TriangleBlocksView& blocks, const Ray& ray, uint32
   const RayLanes<W> lanes(ray);
   const typename Lanes<W>::F far = splat<W>(ray.tMax);
   for (uint32_t block = 0; block < blocks.blockCount; ++block) {
-    // The skipped triangle's lane, where it lies in this block, in bits rather than a branch:
-    // which block holds it changes from ray to ray.
-    const uint32_t lane = skipTriangle - block * W;
-    const uint32_t skipped = uint32_t(lane < W) << (lane % W);
-    if ((laneBits<W>(testBlock<W>(blocks, block, lanes, far).hit) & ~skipped) != 0) return true;
+    const uint32_t hitBits = laneBits<W>(testBlock<W>(blocks, block, lanes, far).hit);
+    if (withoutSkippedLane<W>(hitBits, skipTriangle, block) != 0) return true;
   }
   return false;
 }
