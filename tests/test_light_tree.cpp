@@ -139,10 +139,11 @@ TEST(LightTree, EnvironmentTakesHalfThePicksBesideOtherLights) {
   EXPECT_EQ(view.environmentShare, 0.5f);
   const Vec3 p(0, 1, 0), n(0, 1, 0);
   EXPECT_EQ(lightSelectPmf(view, uint32_t(view.environment.light), p, n), 0.5f);
-  float pmf = 0;
-  EXPECT_EQ(selectLight(view, p, n, 0.25f, &pmf), view.environment.light);
+  float pmf = 0, remapped = 0;
+  EXPECT_EQ(selectLight(view, p, n, 0.25f, &pmf, &remapped), view.environment.light);
   EXPECT_EQ(pmf, 0.5f);
-  EXPECT_NE(selectLight(view, p, n, 0.75f, &pmf), view.environment.light);
+  EXPECT_EQ(remapped, 0.5f);  // 0.25's place in the environment's share [0, 0.5)
+  EXPECT_NE(selectLight(view, p, n, 0.75f, &pmf, &remapped), view.environment.light);
   EXPECT_NEAR(lightSelectPmf(view, 0, p, n) + lightSelectPmf(view, 1, p, n), 0.5f, 1e-6f);
 
   const SceneData alone = test::loadTestScene(R"({
@@ -150,7 +151,7 @@ TEST(LightTree, EnvironmentTakesHalfThePicksBesideOtherLights) {
     "spheres": [{"position": [0, -1000, 0], "radius": 1000}]})");
   EXPECT_EQ(alone.view().environmentShare, 1.0f);
   EXPECT_TRUE(alone.lightTree.empty());
-  EXPECT_EQ(selectLight(alone.view(), p, n, 0.9f, &pmf), alone.view().environment.light);
+  EXPECT_EQ(selectLight(alone.view(), p, n, 0.9f, &pmf, &remapped), alone.view().environment.light);
   EXPECT_EQ(pmf, 1.0f);
 }
 
@@ -177,17 +178,31 @@ void expectPicksFollowTheirPmfs(const SceneView& view, int trials, int* behind,
     }
     EXPECT_LE(sum, 1.0 + 1e-5) << trial;
     std::vector<int> picked(view.lightCount, 0);
+    // Each light's picks take one interval of u, whose place in it comes back as the remapped
+    // number: from 0 to 1 as u crosses the interval.
+    std::vector<std::vector<float>> remappedOf(view.lightCount);
     int none = 0;
     const int draws = 20000;
     for (int k = 0; k < draws; ++k) {
-      float pmf = 0;
-      const int i = selectLight(view, p, n, (k + 0.5f) / draws, &pmf);
+      float pmf = 0, remapped = -1;
+      const int i = selectLight(view, p, n, (k + 0.5f) / draws, &pmf, &remapped);
       if (i < 0) {
         ++none;
         continue;
       }
       ASSERT_EQ(pmf, float(pmfs[size_t(i)])) << i;
       ++picked[size_t(i)];
+      ASSERT_GE(remapped, 0.0f);
+      ASSERT_LT(remapped, 1.0f);
+      remappedOf[size_t(i)].push_back(remapped);
+    }
+    for (uint32_t i = 0; i < view.lightCount; ++i) {
+      const std::vector<float>& r = remappedOf[i];
+      if (r.size() < 50) continue;
+      EXPECT_TRUE(std::is_sorted(r.begin(), r.end())) << "light " << i << ", trial " << trial;
+      const float step = 2.0f / float(r.size());
+      EXPECT_LT(r.front(), step) << "light " << i << ", trial " << trial;
+      EXPECT_GT(r.back(), 1.0f - step) << "light " << i << ", trial " << trial;
     }
     // Stratified u: off by a few picks per tree level at most.
     EXPECT_NEAR(none, (1.0 - sum) * draws, 8.0) << trial;
@@ -212,6 +227,39 @@ TEST(LightTree, PicksFollowTheirPmfWhichMissesNoLightThatReachesThePoint) {
   expectPicksFollowTheirPmfs(view, 40, &behind, &behindWithoutPmf);
   EXPECT_GT(behind, 1000);  // the test saw many lights that cannot reach the point
   EXPECT_GT(behindWithoutPmf, 0.9 * behind);
+}
+
+// A light sample's first number is the pick's place within the light's share where the pick is
+// likely (then a pair of numbers stays stratified over the picked lights' surfaces together),
+// and the sample's own number where the place would keep too few bits (a light among hundreds).
+TEST(LightTree, ALikelyPickHandsOnItsPlaceAsItsSamplesFirstNumber) {
+  test::TempDir dir;
+  const SceneData data = randomLights(dir, 2000, 5);
+  const SceneView view = data.view();
+  RandomInputs rng{std::mt19937(17)};
+  const float own = 0.123f;
+  int placed = 0, owned = 0;
+  for (int trial = 0; trial < 20; ++trial) {
+    const Vec3 p = rng.inBox(12.0f), n = rng.direction();
+    for (int k = 0; k < 500; ++k) {
+      const float u = (k + 0.5f) / 500;
+      float pmf = 0, place = -1, u1 = u, pmfForSample = 0;
+      const int light = selectLight(view, p, n, u, &pmf, &place);
+      EXPECT_EQ(selectLightForSample(view, p, n, own, &u1, &pmfForSample), light);
+      if (light < 0) continue;
+      EXPECT_EQ(pmfForSample, pmf);
+      if (pmf >= kPickPlaceReusedFrom) {
+        EXPECT_EQ(u1, place) << "trial " << trial << ", u " << u;
+        ++placed;
+      } else {
+        EXPECT_EQ(u1, own) << "trial " << trial << ", u " << u;
+        ++owned;
+      }
+    }
+  }
+  // Both cases came up often: the two sphere lights and the two point lights among the triangles.
+  EXPECT_GT(placed, 500);
+  EXPECT_GT(owned, 500);
 }
 
 // The angle between two directions, accurate also near 0.
@@ -334,8 +382,8 @@ TEST(LightTree, LightsWithoutPowerAreNeverPicked) {
   EXPECT_EQ(view.lights[0].trail, kNotInLightTree);
   EXPECT_EQ(view.lights[3].trail, kNotInLightTree);
   for (float u : {0.0f, 0.3f, 0.99999994f}) {
-    float pmf;
-    const int i = selectLight(view, Vec3(0, -3, 0), Vec3(0.0f), u, &pmf);
+    float pmf, remapped;
+    const int i = selectLight(view, Vec3(0, -3, 0), Vec3(0.0f), u, &pmf, &remapped);
     EXPECT_TRUE(i == 1 || i == 2) << u;
   }
   std::vector<uint64_t> trails;

@@ -90,22 +90,20 @@ CANDELA_HDI void drawLightNumbers(SampleStream& rng, const Light& light, float* 
 CANDELA_HDI void estimateDirect(const SceneView& scene, const Bsdf& bsdf, const Vec3& hemisphere,
                                 const SurfacePoint& sp, const Vec3& throughput, float arrivalPdf,
                                 SampleStream& rng, ShadowQuery* shadow) {
-  // One dimension for the lone point light, or two for a picked one (the pick and its light's
-  // sample), whatever the geometry, so the stream's layout never depends on it.
+  // One dimension for the lone point light, or two for a picked one (the pick with its light's
+  // sample, and a number for that sample where the pick's place in its share is too coarse),
+  // whatever the geometry, so the stream's layout never depends on it.
   float u1 = 0.0f, u2 = 0.0f;
   if (scene.lonePointLight) {
     drawLightNumbers(rng, scene.lights[0], &u1, &u2);
     sampleOneLight(scene, 0, 1.0f, bsdf, sp, u1, u2, throughput, arrivalPdf, shadow);
     return;
   }
-  const float uLight = rng.next1D();
+  rng.next2D(&u1, &u2);
+  const float own = rng.next1D();
   float selectPmf;
-  const int index = selectLight(scene, sp.p, hemisphere, uLight, &selectPmf);
-  if (index < 0) {
-    rng.skip();
-    return;
-  }
-  drawLightNumbers(rng, scene.lights[index], &u1, &u2);
+  const int index = selectLightForSample(scene, sp.p, hemisphere, own, &u1, &selectPmf);
+  if (index < 0) return;
   sampleOneLight(scene, uint32_t(index), selectPmf, bsdf, sp, u1, u2, throughput, arrivalPdf,
                  shadow);
 }

@@ -9,20 +9,39 @@
 namespace candela {
 
 // The light picked at p, whose reflecting hemisphere is around n (zero where the surface also
-// transmits), for uniform u in [0, 1), and in *pmf the probability of that pick; -1 when no
+// transmits), for uniform u in [0, 1), and in *pmf the probability of that pick, in *remapped
+// u's place within the picked light's share of [0, 1), again uniform in [0, 1); -1 when no
 // light can reach p.
 CANDELA_HDI int selectLight(const SceneView& scene, const Vec3& p, const Vec3& n, float u,
-                            float* pmf) {
+                            float* pmf, float* remapped) {
   const float environment = scene.environmentShare;
   if (u < environment) {
     *pmf = environment;
+    *remapped = minf(u / environment, kOneMinusEpsilon);
     return scene.environment.light;
   }
   if (scene.lightTreeNodeCount == 0) return -1;
   const float rest = 1.0f - environment;
-  const int light =
-      pickTreeLight(scene.lightTree, p, n, minf((u - environment) / rest, kOneMinusEpsilon), pmf);
+  const int light = pickTreeLight(scene.lightTree, p, n,
+                                  minf((u - environment) / rest, kOneMinusEpsilon), pmf, remapped);
   *pmf *= rest;
+  return light;
+}
+
+// Picks at least this likely hand on their place within their share as the first number of
+// their light's sample (selectLightForSample): it keeps 14 of the number's 24 bits or more.
+constexpr float kPickPlaceReusedFrom = 0x1p-10f;
+
+// selectLight for a light sample whose two numbers are (*u1, u2): the pick takes *u1 and hands
+// on its place within the picked light's share in its stead, so that picks and points together
+// keep the pair's stratification over the lights' surfaces (Mitsuba 3's emitter sampling does
+// the same). That place has only the share's resolution, a few bits for a light among
+// thousands, so there `own`, a number of its own, stands in.
+CANDELA_HDI int selectLightForSample(const SceneView& scene, const Vec3& p, const Vec3& n,
+                                     float own, float* u1, float* pmf) {
+  float place;
+  const int light = selectLight(scene, p, n, *u1, pmf, &place);
+  *u1 = *pmf >= kPickPlaceReusedFrom ? place : own;
   return light;
 }
 

@@ -218,9 +218,9 @@ CANDELA_HDI_ALWAYS void clusterShares(const LightTreeNode& node, const Vec3& p, 
 
 // Picks a light of the tree `nodes` (at least one node) for the point p with hemisphere normal n
 // (lightClusterImportanceLane) from uniform u in [0, 1): its index and, in *pmf, the probability
-// of the pick. -1 when no light can reach p.
+// of the pick, in *remapped u's place within the light's share. -1 when no light can reach p.
 CANDELA_HDI int pickTreeLight(const LightTreeNode* nodes, const Vec3& p, const Vec3& n, float u,
-                              float* pmf) {
+                              float* pmf, float* remapped) {
   uint32_t node = 0;
   float probability = 1.0f;
   for (;;) {
@@ -234,14 +234,15 @@ CANDELA_HDI int pickTreeLight(const LightTreeNode* nodes, const Vec3& p, const V
     const int beyond = sharesEndingBeyond(s, target) & s.positive;
     const int k = beyond ? lowestSetBit(uint32_t(beyond)) : highestSetBit(uint32_t(s.positive));
     probability *= s.importance[k] / total;
+    // u's place within the share, for the next level (or the caller).
+    const float start = k > 0 ? s.ends[k - 1] : 0.0f;
+    u = minf(maxf((target - start) / s.importance[k], 0.0f), kOneMinusEpsilon);
     const uint32_t child = nodes[node].child[k];
     if (child & kLightTreeLeaf) {
       *pmf = probability;
+      *remapped = u;
       return int(child & ~kLightTreeLeaf);
     }
-    // u's place within the share, for the next level.
-    const float start = k > 0 ? s.ends[k - 1] : 0.0f;
-    u = minf(maxf((target - start) / s.importance[k], 0.0f), kOneMinusEpsilon);
     node = child;
   }
 }
