@@ -234,8 +234,10 @@ CANDELA_HDI int pickTreeLight(const LightTreeNode* nodes, const Vec3& p, const V
     const int beyond = sharesEndingBeyond(s, target) & s.positive;
     const int k = beyond ? lowestSetBit(uint32_t(beyond)) : highestSetBit(uint32_t(s.positive));
     probability *= s.importance[k] / total;
-    // u's place within the share, for the next level (or the caller).
-    const float start = k > 0 ? s.ends[k - 1] : 0.0f;
+    // u's place within the share, for the next level (or the caller). The share's start found
+    // from its end, not by a branch on k, a coin toss where the tree has a choice (its rounding,
+    // an ulp of the end, moves u's place by as little).
+    const float start = s.ends[k] - s.importance[k];
     u = minf(maxf((target - start) / s.importance[k], 0.0f), kOneMinusEpsilon);
     const uint32_t child = nodes[node].child[k];
     if (child & kLightTreeLeaf) {
