@@ -2,8 +2,13 @@
 cores, with a diffuse sphere on a floor lit by a point light."""
 import copy
 import json
+import os
+import sys
 
 import pytest
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
+from pfm import read_pfm  # noqa: E402,F401  (the tests' PFM reader: tools/pfm.py)
 
 
 def tiny_scene(spp=4, seed=3, size=16):
@@ -44,14 +49,3 @@ def animation_file(tmp_path):
     path = tmp_path / "anim.json"
     path.write_text(json.dumps(animated_scene()))
     return path
-
-
-def read_pfm(path):
-    """An RGB PFM file as an (H, W, 3) float32 array, rows from the top."""
-    import numpy as np
-    with open(path, "rb") as f:
-        assert f.readline().strip() == b"PF"
-        width, height = map(int, f.readline().split())
-        scale = float(f.readline())
-        data = np.frombuffer(f.read(), dtype="<f4" if scale < 0 else ">f4")
-    return data.reshape(height, width, 3)[::-1]  # PFM rows run bottom to top
