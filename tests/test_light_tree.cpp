@@ -257,7 +257,8 @@ TEST(LightTree, ALikelyPickHandsOnItsPlaceAsItsSamplesFirstNumber) {
       }
     }
   }
-  // Both cases came up often: the two sphere lights and the two point lights among the triangles.
+  // Both cases came up often: lights that take much of a point's picks (a near sphere or point
+  // light, a near triangle) and the many small shares of 2,000 triangles.
   EXPECT_GT(placed, 500);
   EXPECT_GT(owned, 500);
 }

@@ -1,4 +1,4 @@
-"""PFM images as numpy arrays, for the repository's Python scripts (scripts/gpu-check, the tests)."""
+"""PFM images as numpy arrays, for the repository's Python (scripts/gpu-check, the tests)."""
 import numpy as np
 
 
