@@ -66,10 +66,10 @@ CANDELA_HDI void sampleOneLight(const SceneView& scene, uint32_t index, float se
   // A light with a surface is also reached by the light subpath's connection (none: density 0).
   const float weight =
       !ls.isDelta
-          ? powerHeuristic3(lightPdf, bsdfPdf,
-                            lightSubpathSolidAnglePdf(scene, index, sp.ng, ls.wi, arrivalPdf))
+          ? balanceHeuristic3(lightPdf, bsdfPdf,
+                              lightSubpathSolidAnglePdf(scene, index, sp.ng, ls.wi, arrivalPdf))
       : arrivalPdf > 0.0f
-          ? powerHeuristic(arrivalPdf * selectPmf, lightVertexPdf(scene, index, sp.p, sp.ng))
+          ? balanceHeuristic(arrivalPdf * selectPmf, lightVertexPdf(scene, index, sp.p, sp.ng))
           : 1.0f;
   shadow->contribution = throughput * (f * ls.radiance * (weight / lightPdf));
   shadow->active = true;
@@ -154,10 +154,11 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
   if (!found) {
     const int32_t light = st.specularBounce ? -1 : scene.environment.light;
     const float weight =
-        light < 0 ? 1.0f
-                  : powerHeuristic(st.bsdfPdf, lightSelectPmf(scene, uint32_t(light),
-                                                              st.bouncePoint, st.bounceHemisphere) *
-                                                   environmentPdf(scene, st.ray.direction));
+        light < 0
+            ? 1.0f
+            : balanceHeuristic(st.bsdfPdf, lightSelectPmf(scene, uint32_t(light), st.bouncePoint,
+                                                          st.bounceHemisphere) *
+                                               environmentPdf(scene, st.ray.direction));
     const Vec3 background = environmentRadiance(scene, st.ray.direction);
     const Vec3 seen = st.throughput * background * weight;
     if constexpr (kAovs) {
@@ -203,7 +204,7 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
         const float subpathPdf =
             lightSubpathSolidAnglePdf(scene, uint32_t(light), st.bounceNormal, st.ray.direction,
                                       st.bounceArrivalPdf);
-        weight = powerHeuristic3(st.bsdfPdf, neePdf, subpathPdf);
+        weight = balanceHeuristic3(st.bsdfPdf, neePdf, subpathPdf);
       }
       const Vec3 seen = st.throughput * surfaceRadiance(scene, m, hit, sp) * weight;
       if constexpr (kAovs) {

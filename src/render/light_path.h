@@ -9,7 +9,7 @@
 // connected by a shadow ray to every interaction x of the camera path that may scatter (as
 // bidirectional path tracing's strategy s = 2 does).
 //
-// The strategies are combined by the power heuristic over the density of the whole of (y, light
+// The strategies are combined by the balance heuristic over the density of the whole of (y, light
 // point) in area measure. For a point light there are two: x's BSDF sample finds y, whose
 // next-event estimation picks the light, p(x -> y) pick(l at y), with p(x -> y) = pdf(wi)
 // |cos_y| / |x - y|^2; and the light's, pathPick(l) |cos_y| / (4 pi r^2). A light with a surface
@@ -104,12 +104,9 @@ CANDELA_HDI float lightSubpathSolidAnglePdf(const SceneView& scene, uint32_t ind
   return start * fabsf(dot(ng, wi)) * kInvPi / arrivalPdf;
 }
 
-// The power heuristic weight of the strategy of density `a` among three (c = 0: between two,
-// to the bit, as powerHeuristic).
-CANDELA_HDI float powerHeuristic3(float a, float b, float c) {
-  const float a2 = a * a;
-  return a2 / (a2 + b * b + c * c);
-}
+// The balance heuristic weight of the strategy of density `a` among three (c = 0: between two,
+// to the bit, as balanceHeuristic).
+CANDELA_HDI float balanceHeuristic3(float a, float b, float c) { return a / (a + b + c); }
 
 // The light a subpath starts from, for u in [0, 1): in lightPathOrder, the first whose
 // cumulative pick exceeds u (lights without a pick have none to exceed it with).
@@ -186,7 +183,7 @@ CANDELA_HDI void traceLightVertex(const SceneView& scene, const Tracer& tracer, 
 
 // The connection of interaction `sp` (whose BSDF is `bsdf` and throughput `throughput`) to the
 // light vertex `lv`, as a shadow query whose contribution is weighted against next-event
-// estimation from lv (the power heuristic over the two densities of lv's point); no query where
+// estimation from lv (the balance heuristic over the two densities of lv's point); no query where
 // the connection carries nothing. The ray runs between the two points each offset off its
 // surface, stopped short of the far one as shadow rays to area lights are. lv keeps what every
 // connection to it shares (lightVertexNeePdf).
@@ -214,11 +211,11 @@ CANDELA_HDI void connectLightVertex(const SceneView& scene, LightVertex* vertex,
   float weight;
   if (!lv.area) {
     const float pdfBsdf = pdfHere * cosOut / dist2 * neePdf;
-    weight = powerHeuristic(lv.pdfArea, pdfBsdf);
+    weight = balanceHeuristic(lv.pdfArea, pdfBsdf);
   } else {
     const float toVertex = pdfHere * cosOut / dist2;
-    weight = powerHeuristic3(lv.pdfArea, toVertex * neePdf * lv.cosOverDist2,
-                             toVertex * pdfThere * lv.cosOverDist2);
+    weight = balanceHeuristic3(lv.pdfArea, toVertex * neePdf * lv.cosOverDist2,
+                               toVertex * pdfThere * lv.cosOverDist2);
   }
   // The light's 1 / (4 pi r^2) irradiance over its density of lv leaves power / (cos_in pick).
   query->contribution =
