@@ -75,7 +75,7 @@ TEST(Environment, MappingPutsTheMapCentreAlongMinusZ) {
 // The sampled pdf equals the pdf environmentPdf evaluates for the same direction (what MIS needs)
 // and integrates to 1 over the sphere. The distribution is MIS-compensated: it holds only the
 // texels brighter than the map's mean (the sun here), so light sampling alone would miss the sky,
-// while light sampling beside uniform sampling of the sphere, weighed by the balance heuristic as
+// while light sampling beside uniform sampling of the sphere, weighed by the power heuristic as
 // the integrator weighs light and BSDF samples, estimates the irradiance that uniform sampling
 // alone estimates, with less noise.
 TEST(Environment, MapSamplingIsConsistentWithItsPdf) {
@@ -103,7 +103,7 @@ TEST(Environment, MapSamplingIsConsistentWithItsPdf) {
       ASSERT_NEAR(environmentPdf(view, ls.wi), ls.pdf, 2e-3f * ls.pdf)
           << i << " wi " << ls.wi.x << " " << ls.wi.y << " " << ls.wi.z;
       mis += ls.radiance.x * std::max(0.0f, dot(ls.wi, n)) / ls.pdf *
-             balanceHeuristic(ls.pdf, uniformPdf);
+             powerHeuristic(ls.pdf, uniformPdf);
     }
     const float z = 1 - 2 * u(gen), r = std::sqrt(std::max(0.0f, 1 - z * z)),
                 phi = 2 * kPi * u(gen);
@@ -111,7 +111,7 @@ TEST(Environment, MapSamplingIsConsistentWithItsPdf) {
     const float lightPdf = environmentPdf(view, w);
     pdfIntegral += lightPdf / uniformPdf;
     const double v = environmentRadiance(view, w).x * std::max(0.0f, dot(w, n)) / uniformPdf;
-    mis += v * balanceHeuristic(uniformPdf, lightPdf);
+    mis += v * powerHeuristic(uniformPdf, lightPdf);
     byUniform += v;
     byUniform2 += v * v;
     byMis += mis;

@@ -15,6 +15,25 @@
 namespace candela {
 namespace {
 
+// The three strategies' weights of one path sum to one under either heuristic; a light that
+// starts no subpaths keeps the power heuristic, to the bit powerHeuristic between two, and one
+// that does gets the balance heuristic.
+TEST(LightPaths, MisWeightsOfAPathSumToOneUnderTheLightsHeuristic) {
+  const float densities[][3] = {{1, 3, 0.5f}, {2, 0, 7}, {0.25f, 0.25f, 0}, {1e-3f, 40, 2}};
+  for (const auto& d : densities) {
+    for (bool startsSubpaths : {false, true}) {
+      const float sum = misWeight3(d[0], d[1], d[2], startsSubpaths) +
+                        misWeight3(d[1], d[0], d[2], startsSubpaths) +
+                        misWeight3(d[2], d[0], d[1], startsSubpaths);
+      EXPECT_NEAR(sum, 1.0f, 1e-6f) << d[0] << " " << d[1] << " " << d[2];
+    }
+    EXPECT_EQ(misWeight3(d[0], d[1], 0.0f, false), powerHeuristic(d[0], d[1]));
+    EXPECT_FLOAT_EQ(misWeight3(d[0], d[1], d[2], true), d[0] / (d[0] + d[1] + d[2]));
+  }
+  EXPECT_FLOAT_EQ(misWeight3(1, 3, 0, true), 0.25f);
+  EXPECT_FLOAT_EQ(misWeight3(1, 3, 0, false), 0.1f);
+}
+
 TEST(LightPaths, EveryLightButTheEnvironmentStartsSubpathsByPower) {
   // Powers (RGB sums): 30, a sphere light of intensity 100 (300), 60, 30; 420 in all.
   const SceneData data = test::loadTestScene(R"({

@@ -60,9 +60,13 @@ CANDELA_HDI float uniformConePdf(float oneMinusCosThetaMax) {
   return 1.0f / (2.0f * kPi * oneMinusCosThetaMax);
 }
 
-// Balance heuristic weight (Veach 1997) of a strategy with density `pdfA` against one with
-// `pdfB`. It weighs candela's strategies better than the power heuristic does: less noise on six
-// of the eight bench scenes, up to 6%, and under 1% more on two (docs/performance.md).
+// Power heuristic (beta = 2) weight of a strategy with density `pdfA` against one with `pdfB`.
+CANDELA_HDI float powerHeuristic(float pdfA, float pdfB) {
+  const float a = pdfA * pdfA, b = pdfB * pdfB;
+  return a / (a + b);
+}
+
+// Balance heuristic weight (Veach 1997) of a strategy with density `pdfA` against one with `pdfB`.
 CANDELA_HDI float balanceHeuristic(float pdfA, float pdfB) { return pdfA / (pdfA + pdfB); }
 
 }  // namespace candela

@@ -65,9 +65,9 @@ CANDELA_HDI void sampleOneLight(const SceneView& scene, uint32_t index, float se
   const float lightPdf = selectPmf * ls.pdf;
   // A light with a surface is also reached by the light subpath's connection (none: density 0).
   const float weight =
-      !ls.isDelta
-          ? balanceHeuristic3(lightPdf, bsdfPdf,
-                              lightSubpathSolidAnglePdf(scene, index, sp.ng, ls.wi, arrivalPdf))
+      !ls.isDelta ? misWeight3(lightPdf, bsdfPdf,
+                               lightSubpathSolidAnglePdf(scene, index, sp.ng, ls.wi, arrivalPdf),
+                               light.pathPmf > 0.0f)
       : arrivalPdf > 0.0f
           ? balanceHeuristic(arrivalPdf * selectPmf, lightVertexPdf(scene, index, sp.p, sp.ng))
           : 1.0f;
@@ -154,11 +154,10 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
   if (!found) {
     const int32_t light = st.specularBounce ? -1 : scene.environment.light;
     const float weight =
-        light < 0
-            ? 1.0f
-            : balanceHeuristic(st.bsdfPdf, lightSelectPmf(scene, uint32_t(light), st.bouncePoint,
-                                                          st.bounceHemisphere) *
-                                               environmentPdf(scene, st.ray.direction));
+        light < 0 ? 1.0f
+                  : powerHeuristic(st.bsdfPdf, lightSelectPmf(scene, uint32_t(light),
+                                                              st.bouncePoint, st.bounceHemisphere) *
+                                                   environmentPdf(scene, st.ray.direction));
     const Vec3 background = environmentRadiance(scene, st.ray.direction);
     const Vec3 seen = st.throughput * background * weight;
     if constexpr (kAovs) {
@@ -204,7 +203,7 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
         const float subpathPdf =
             lightSubpathSolidAnglePdf(scene, uint32_t(light), st.bounceNormal, st.ray.direction,
                                       st.bounceArrivalPdf);
-        weight = balanceHeuristic3(st.bsdfPdf, neePdf, subpathPdf);
+        weight = misWeight3(st.bsdfPdf, neePdf, subpathPdf, scene.lights[light].pathPmf > 0.0f);
       }
       const Vec3 seen = st.throughput * surfaceRadiance(scene, m, hit, sp) * weight;
       if constexpr (kAovs) {

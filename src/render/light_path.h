@@ -9,9 +9,9 @@
 // connected by a shadow ray to every interaction x of the camera path that may scatter (as
 // bidirectional path tracing's strategy s = 2 does).
 //
-// The strategies are combined by the balance heuristic over the density of the whole of (y, light
-// point) in area measure. For a point light there are two: x's BSDF sample finds y, whose
-// next-event estimation picks the light, p(x -> y) pick(l at y), with p(x -> y) = pdf(wi)
+// The strategies are combined by the balance heuristic (misWeight3) over the density of the whole
+// of (y, light point) in area measure. For a point light there are two: x's BSDF sample finds y,
+// whose next-event estimation picks the light, p(x -> y) pick(l at y), with p(x -> y) = pdf(wi)
 // |cos_y| / |x - y|^2; and the light's, pathPick(l) |cos_y| / (4 pi r^2). A light with a surface
 // is also reached by y's BSDF sample, so it has three: those two, each times the density of the
 // light's point L from y (next-event estimation's, or the BSDF's, by area at L), and the light's,
@@ -104,9 +104,18 @@ CANDELA_HDI float lightSubpathSolidAnglePdf(const SceneView& scene, uint32_t ind
   return start * fabsf(dot(ng, wi)) * kInvPi / arrivalPdf;
 }
 
-// The balance heuristic weight of the strategy of density `a` among three (c = 0: between two,
-// to the bit, as balanceHeuristic).
-CANDELA_HDI float balanceHeuristic3(float a, float b, float c) { return a / (a + b + c); }
+// The weight of the strategy of density `a` among three (c = 0: between two): for a light that
+// starts light subpaths, whose connections are among the strategies, the balance heuristic; for
+// any other, the power heuristic (to the bit powerHeuristic(a, b) for c = 0). Where connections
+// take part the balance heuristic leaves less noise (the bench scenes, up to 6%); between
+// next-event estimation and a BSDF sample alone the power heuristic does, on glossy surfaces
+// above all (docs/performance.md). The choice is the light's, not the densities', so every site
+// that weighs a path makes the same one.
+CANDELA_HDI float misWeight3(float a, float b, float c, bool lightStartsSubpaths) {
+  if (lightStartsSubpaths) return a / (a + b + c);
+  const float a2 = a * a;
+  return a2 / (a2 + b * b + c * c);
+}
 
 // The light a subpath starts from, for u in [0, 1): in lightPathOrder, the first whose
 // cumulative pick exceeds u (lights without a pick have none to exceed it with).
@@ -214,8 +223,8 @@ CANDELA_HDI void connectLightVertex(const SceneView& scene, LightVertex* vertex,
     weight = balanceHeuristic(lv.pdfArea, pdfBsdf);
   } else {
     const float toVertex = pdfHere * cosOut / dist2;
-    weight = balanceHeuristic3(lv.pdfArea, toVertex * neePdf * lv.cosOverDist2,
-                               toVertex * pdfThere * lv.cosOverDist2);
+    weight = misWeight3(lv.pdfArea, toVertex * neePdf * lv.cosOverDist2,
+                        toVertex * pdfThere * lv.cosOverDist2, true);
   }
   // The light's 1 / (4 pi r^2) irradiance over its density of lv leaves power / (cos_in pick).
   query->contribution =
