@@ -237,15 +237,18 @@ TEST(LightTree, ALikelyPickHandsOnItsPlaceAsItsSamplesFirstNumber) {
   const SceneData data = randomLights(dir, 2000, 5);
   const SceneView view = data.view();
   RandomInputs rng{std::mt19937(17)};
-  const float own = 0.123f;
   int placed = 0, owned = 0;
   for (int trial = 0; trial < 20; ++trial) {
     const Vec3 p = rng.inBox(12.0f), n = rng.direction();
     for (int k = 0; k < 500; ++k) {
       const float u = (k + 0.5f) / 500;
+      // The stand-in is the stream's next number; either way the stream moves on by one.
+      SampleStream stream(7, uint64_t(trial), uint32_t(k), 500), expected = stream;
+      const float own = expected.next1D(), after = expected.next1D();
       float pmf = 0, place = -1, u1 = u, pmfForSample = 0;
       const int light = selectLight(view, p, n, u, &pmf, &place);
-      EXPECT_EQ(selectLightForSample(view, p, n, own, &u1, &pmfForSample), light);
+      EXPECT_EQ(selectLightForSample(view, p, n, stream, &u1, &pmfForSample), light);
+      EXPECT_EQ(stream.next1D(), after);
       if (light < 0) continue;
       EXPECT_EQ(pmfForSample, pmf);
       if (pmf >= kPickPlaceReusedFrom) {

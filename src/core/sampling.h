@@ -66,7 +66,4 @@ CANDELA_HDI float powerHeuristic(float pdfA, float pdfB) {
   return a / (a + b);
 }
 
-// Balance heuristic weight (Veach 1997) of a strategy with density `pdfA` against one with `pdfB`.
-CANDELA_HDI float balanceHeuristic(float pdfA, float pdfB) { return pdfA / (pdfA + pdfB); }
-
 }  // namespace candela

@@ -69,7 +69,8 @@ CANDELA_HDI void sampleOneLight(const SceneView& scene, uint32_t index, float se
                                lightSubpathSolidAnglePdf(scene, index, sp.ng, ls.wi, arrivalPdf),
                                light.pathPmf > 0.0f)
       : arrivalPdf > 0.0f
-          ? balanceHeuristic(arrivalPdf * selectPmf, lightVertexPdf(scene, index, sp.p, sp.ng))
+          ? misWeight3(arrivalPdf * selectPmf, lightVertexPdf(scene, index, sp.p, sp.ng), 0.0f,
+                       light.pathPmf > 0.0f)
           : 1.0f;
   shadow->contribution = throughput * (f * ls.radiance * (weight / lightPdf));
   shadow->active = true;
@@ -91,8 +92,8 @@ CANDELA_HDI void estimateDirect(const SceneView& scene, const Bsdf& bsdf, const 
                                 const SurfacePoint& sp, const Vec3& throughput, float arrivalPdf,
                                 SampleStream& rng, ShadowQuery* shadow) {
   // One dimension for the lone point light, or two for a picked one (the pick with its light's
-  // sample, and a number for that sample where the pick's place in its share is too coarse),
-  // whatever the geometry, so the stream's layout never depends on it.
+  // sample, and one passed over unless the pick's place in its share is too coarse), whatever
+  // the geometry, so the stream's layout never depends on it.
   float u1 = 0.0f, u2 = 0.0f;
   if (scene.lonePointLight) {
     drawLightNumbers(rng, scene.lights[0], &u1, &u2);
@@ -100,9 +101,8 @@ CANDELA_HDI void estimateDirect(const SceneView& scene, const Bsdf& bsdf, const 
     return;
   }
   rng.next2D(&u1, &u2);
-  const float own = rng.next1D();
   float selectPmf;
-  const int index = selectLightForSample(scene, sp.p, hemisphere, own, &u1, &selectPmf);
+  const int index = selectLightForSample(scene, sp.p, hemisphere, rng, &u1, &selectPmf);
   if (index < 0) return;
   sampleOneLight(scene, uint32_t(index), selectPmf, bsdf, sp, u1, u2, throughput, arrivalPdf,
                  shadow);

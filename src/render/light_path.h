@@ -220,7 +220,7 @@ CANDELA_HDI void connectLightVertex(const SceneView& scene, LightVertex* vertex,
   float weight;
   if (!lv.area) {
     const float pdfBsdf = pdfHere * cosOut / dist2 * neePdf;
-    weight = balanceHeuristic(lv.pdfArea, pdfBsdf);
+    weight = misWeight3(lv.pdfArea, pdfBsdf, 0.0f, true);
   } else {
     const float toVertex = pdfHere * cosOut / dist2;
     weight = misWeight3(lv.pdfArea, toVertex * neePdf * lv.cosOverDist2,

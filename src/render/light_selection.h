@@ -4,6 +4,7 @@
 // light is a point light samples it without a pick instead (render/light.h, isLonePointLight).
 #pragma once
 
+#include "core/sobol_sampler.h"
 #include "render/scene_view.h"
 
 namespace candela {
@@ -36,12 +37,19 @@ constexpr float kPickPlaceReusedFrom = 0x1p-10f;
 // on its place within the picked light's share in its stead, so that picks and points together
 // keep the pair's stratification over the lights' surfaces (Mitsuba 3's emitter sampling does
 // the same). That place has only the share's resolution, a few bits for a light among
-// thousands, so there `own`, a number of its own, stands in.
+// thousands, so there a number of the stream's next dimension stands in; that dimension is
+// passed over otherwise, so the stream's layout is the same either way.
 CANDELA_HDI int selectLightForSample(const SceneView& scene, const Vec3& p, const Vec3& n,
-                                     float own, float* u1, float* pmf) {
-  float place;
+                                     SampleStream& rng, float* u1, float* pmf) {
+  float place = 0.0f;
   const int light = selectLight(scene, p, n, *u1, pmf, &place);
-  *u1 = *pmf >= kPickPlaceReusedFrom ? place : own;
+  // No light (nothing to sample) or a likely one: the stand-in's dimension is not computed.
+  if (light < 0 || *pmf >= kPickPlaceReusedFrom) {
+    *u1 = place;
+    rng.skip();
+  } else {
+    *u1 = rng.next1D();
+  }
   return light;
 }
 
