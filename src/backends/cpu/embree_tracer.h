@@ -14,6 +14,8 @@
 
 #include <embree3/rtcore.h>
 
+#include <immintrin.h>
+
 #include <cstdint>
 
 #include "backends/cpu/finite_ray.h"
@@ -253,15 +255,12 @@ struct EmbreeTracer {
     r->flags[k] = 0;
   }
 
+  // Origin and tnear, direction and time, each written as the one 16-byte store that Embree then
+  // loads them as: a 16-byte load across smaller stores just made cannot take their values from
+  // the store buffer, and waits for them (a store-forwarding stall) in every query.
   static void setRay(const Ray& ray, float tMax, RTCRay* r) {
-    r->org_x = ray.origin.x;
-    r->org_y = ray.origin.y;
-    r->org_z = ray.origin.z;
-    r->tnear = 0.0f;
-    r->dir_x = ray.direction.x;
-    r->dir_y = ray.direction.y;
-    r->dir_z = ray.direction.z;
-    r->time = 0.0f;
+    _mm_store_ps(&r->org_x, _mm_setr_ps(ray.origin.x, ray.origin.y, ray.origin.z, 0.0f));
+    _mm_store_ps(&r->dir_x, _mm_setr_ps(ray.direction.x, ray.direction.y, ray.direction.z, 0.0f));
     r->tfar = tMax;
     r->mask = 0xffffffffu;
     r->id = 0;
