@@ -13,7 +13,6 @@
 #pragma once
 
 #include <embree3/rtcore.h>
-
 #include <immintrin.h>
 
 #include <cstdint>
