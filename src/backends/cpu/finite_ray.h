@@ -9,20 +9,26 @@
 
 namespace candela {
 
+// v's exponent field plus one: bit 31 is set only where v is an infinity or a NaN (exponent bits
+// all ones), whatever v's sign.
+inline uint32_t exponentCarry(float v) {
+  uint32_t bits;
+  std::memcpy(&bits, &v, sizeof bits);
+  return (bits & 0x7f800000u) + 0x00800000u;
+}
+
 // Whether every component of the ray's origin and direction is finite, as isFiniteRay answers.
-// A float is finite where its exponent bits are not all ones, so one added to the exponent field
-// carries into the sign bit only for infinities and NaNs. The words are read one float at a time:
-// the ray was just stored that way, and a wider load across those stores waits for them to
-// retire instead of taking their values from the store buffer (a store-forwarding stall that cost
-// more than the comparisons).
+// The floats are read one at a time, as the ray was just stored: a wider load across those
+// stores cannot take their values from the store buffer and waits for them (a store-forwarding
+// stall that cost more than the check). An empty asm statement keeps each word in a register of
+// its own, so the compiler does not merge the six loads into vector loads that meet it again.
 inline bool isFiniteRayCpu(const Ray& ray) {
-  const float c[6] = {ray.origin.x,    ray.origin.y,    ray.origin.z,
-                      ray.direction.x, ray.direction.y, ray.direction.z};
   uint32_t carried = 0;
-  for (const float v : c) {
-    uint32_t bits;
-    std::memcpy(&bits, &v, sizeof bits);
-    carried |= (bits & 0x7f800000u) + 0x00800000u;
+  for (const float v : {ray.origin.x, ray.origin.y, ray.origin.z, ray.direction.x, ray.direction.y,
+                        ray.direction.z}) {
+    uint32_t word = exponentCarry(v);
+    asm("" : "+r"(word));
+    carried |= word;
   }
   return (carried & 0x80000000u) == 0;
 }
