@@ -67,10 +67,10 @@ CANDELA_HDI void sampleOneLight(const SceneView& scene, uint32_t index, float se
   const float weight =
       !ls.isDelta ? misWeight3(lightPdf, bsdfPdf,
                                lightSubpathSolidAnglePdf(scene, index, sp.ng, ls.wi, arrivalPdf),
-                               light.pathPmf > 0.0f)
+                               startsLightSubpaths(light))
       : arrivalPdf > 0.0f
           ? misWeight3(arrivalPdf * selectPmf, lightVertexPdf(scene, index, sp.p, sp.ng), 0.0f,
-                       light.pathPmf > 0.0f)
+                       startsLightSubpaths(light))
           : 1.0f;
   shadow->contribution = throughput * (f * ls.radiance * (weight / lightPdf));
   shadow->active = true;
@@ -203,7 +203,8 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
         const float subpathPdf =
             lightSubpathSolidAnglePdf(scene, uint32_t(light), st.bounceNormal, st.ray.direction,
                                       st.bounceArrivalPdf);
-        weight = misWeight3(st.bsdfPdf, neePdf, subpathPdf, scene.lights[light].pathPmf > 0.0f);
+        weight =
+            misWeight3(st.bsdfPdf, neePdf, subpathPdf, startsLightSubpaths(scene.lights[light]));
       }
       const Vec3 seen = st.throughput * surfaceRadiance(scene, m, hit, sp) * weight;
       if constexpr (kAovs) {

@@ -37,6 +37,11 @@ struct Light {
   float pathAreaPdf = 0.0f;
 };
 
+// Whether samples' light subpaths start at light `l` (render/light_path.h): those lights'
+// connections are among the strategies that reach them, which decides their MIS heuristic
+// (misWeight3).
+CANDELA_HDI bool startsLightSubpaths(const Light& l) { return l.pathPmf > 0.0f; }
+
 // Whether the `count` lights are one point light, which next-event estimation then samples at
 // every shading point: there is nothing to pick, and a pick would cost a tree walk and a random
 // number. Every other scene picks one light per shading point: the environment in a fixed share

@@ -267,7 +267,7 @@ void setLightPathPicks(SceneData& s, const std::vector<LightBounds>& bounds) {
     l.pathCdf = float(sum / total);
     const bool area = l.type == LightType::Sphere || l.type == LightType::Triangle;
     l.pathAreaPdf = area ? l.pathPmf * emissionAreaPdf(view, l) : 0.0f;
-    if (l.pathPmf > 0.0f) {
+    if (startsLightSubpaths(l)) {
       ++s.lightsStartingPaths;
       s.areaLightsStartPaths |= area;
       last = k;
