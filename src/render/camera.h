@@ -5,6 +5,7 @@
 
 #include <cstdint>
 
+#include "core/device.h"
 #include "core/mat3.h"
 #include "core/vec3.h"
 
@@ -21,6 +22,17 @@ struct Camera {
   // camera's image: a sparse sample of its pixels (the light-path pilot's,
   // backends/light_path_pilot.h); 1 for every render of the image itself.
   uint32_t pixelStride = 1;
+  // Or pixel (windowX + x, windowY + y): a window of the image (backends/seen_emitters.h) whose
+  // pixels take the samples they have in the whole image, `imageWidth` wide (0: the render is the
+  // whole image).
+  uint32_t windowX = 0, windowY = 0, imageWidth = 0;
 };
+
+// The index of the render's pixel (x, y) among those of the image it belongs to, which keys its
+// samples: a window's pixels draw what the whole image's render draws there.
+CANDELA_HDI uint64_t samplePixelIndex(const Camera& camera, uint32_t x, uint32_t y) {
+  const uint32_t width = camera.imageWidth > 0 ? camera.imageWidth : camera.width;
+  return uint64_t(camera.windowY + y) * width + camera.windowX + x;
+}
 
 }  // namespace candela

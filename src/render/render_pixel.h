@@ -25,8 +25,8 @@ CANDELA_HDI Ray cameraSample(const SceneView& scene, uint32_t x, uint32_t y, Sam
   // A pinhole camera passes over the lens dimension, as a point light does over its own.
   rng.next2DIfUsed(scene.camera.apertureRadius > 0.0f, &lensU, &lensV);
   const uint32_t stride = scene.camera.pixelStride, offset = stride / 2;
-  return generateCameraRay(scene.camera, float(x * stride + offset) + *jx,
-                           float(y * stride + offset) + *jy, lensU, lensV);
+  return generateCameraRay(scene.camera, float(scene.camera.windowX + x * stride + offset) + *jx,
+                           float(scene.camera.windowY + y * stride + offset) + *jy, lensU, lensV);
 }
 
 // Adds one sample's radiance L, whose camera ray is `ray` through (jx, jy) in the pixel, to
@@ -129,7 +129,7 @@ CANDELA_HDI Vec3 renderPixelSamples(const SceneView& scene, const Tracer& tracer
                                     uint32_t y, uint32_t sampleBegin, uint32_t sampleCount,
                                     RayCounters& counters, Vec3 sum = Vec3(0.0f),
                                     AovPixel* aov = nullptr, SampleTable* table = nullptr) {
-  const PixelKey pixel{samplePixelKey(scene.settings.seed, uint64_t(y) * scene.camera.width + x)};
+  const PixelKey pixel{samplePixelKey(scene.settings.seed, samplePixelIndex(scene.camera, x, y))};
   const uint32_t sampleEnd = sampleBegin + sampleCount;
   constexpr uint32_t kWidth = Tracer::kPacketWidth;
   if constexpr (kWidth > 1) {

@@ -1,6 +1,7 @@
 // What one render changes of the scene's view for itself alone: the light-path pilot's coarse,
-// reseeded images and the choice it makes (backends/light_path_pilot.h), with the scene given to
-// the renderer left as it is.
+// reseeded images and the choice it makes (backends/light_path_pilot.h), and the windows in which
+// the emitters seen are sampled again (backends/seen_emitters.h), with the scene given to the
+// renderer left as it is.
 #pragma once
 
 #include <cstdint>
@@ -9,13 +10,25 @@
 
 namespace candela {
 
+// Pixels [x, x + width) x [y, y + height) of the camera's image.
+struct PixelWindow {
+  uint32_t x = 0, y = 0, width = 0, height = 0;
+};
+
 struct ViewAdjustment {
   // The render's pixels are every stride-th pixel of the camera's image in x and y, from the
   // middle of each stride x stride block (Camera::pixelStride).
   uint32_t pixelStride = 1;
+  // Where width > 0 (and the stride is 1), the render's pixels are this window of the image, each
+  // drawing the samples it has in the whole image's render.
+  PixelWindow window;
   bool lightPaths = true;  // false: no light subpaths, whatever the scene allows
   bool reseed = false;     // true: render with `seed` instead of the scene's
   uint64_t seed = 0;
+  uint32_t spp = 0;  // > 0: the render's samples per pixel instead of the scene's
+  // Only what the camera sees directly (max_depth 0): emitters and the environment, no
+  // scattering and no light subpaths.
+  bool seenOnly = false;
 };
 
 inline SceneView adjustedView(SceneView view, const ViewAdjustment& adjust) {
@@ -24,9 +37,17 @@ inline SceneView adjustedView(SceneView view, const ViewAdjustment& adjust) {
     view.camera.width /= s;
     view.camera.height /= s;
     view.camera.pixelStride = s;
+  } else if (adjust.window.width > 0) {
+    view.camera.imageWidth = view.camera.width;
+    view.camera.windowX = adjust.window.x;
+    view.camera.windowY = adjust.window.y;
+    view.camera.width = adjust.window.width;
+    view.camera.height = adjust.window.height;
   }
-  if (!adjust.lightPaths) view.lightPathLights = 0;
+  if (!adjust.lightPaths || adjust.seenOnly) view.lightPathLights = 0;
+  if (adjust.seenOnly) view.settings.maxDepth = 0;
   if (adjust.reseed) view.settings.seed = adjust.seed;
+  if (adjust.spp > 0) view.settings.spp = adjust.spp;
   return view;
 }
 

@@ -1,0 +1,119 @@
+// Emitters seen, sampled again; see seen_emitters.h.
+#include "backends/seen_emitters.h"
+
+#include <algorithm>
+#include <cstddef>
+
+#include "core/rng.h"
+#include "render/bsdf.h"
+
+namespace candela {
+
+namespace {
+
+// A render of only what the camera sees, with the passes, over `window` (the whole image where
+// its width is 0) at `spp` samples per pixel.
+RenderOptions seenOnlyRender(const RenderOptions& options, PixelWindow window, uint32_t spp) {
+  RenderOptions seen;
+  seen.threads = options.threads;
+  seen.cancel = options.cancel;
+  seen.sceneLabel = options.sceneLabel;
+  seen.aovs = true;
+  seen.adjust.seenOnly = true;
+  seen.adjust.spp = spp;
+  seen.adjust.window = window;
+  return seen;
+}
+
+// The emission pass's value, channel `c` of a pixel, from its sums.
+float emissionOf(const AovPixel& p, int c) {
+  return p.samples > 0 ? (&p.emissionSum.x)[c] / float(p.samples) : 0.0f;
+}
+
+}  // namespace
+
+uint32_t seenEmitterSamples(const SceneData& scene) {
+  const bool emitters = std::any_of(scene.materials.begin(), scene.materials.end(),
+                                    [](const Material& m) { return isEmissive(m); });
+  const bool spread = scene.settings.antialiasing || scene.camera.apertureRadius > 0.0f;
+  const uint64_t spp = scene.settings.spp;
+  const uint32_t samples = uint32_t(std::min<uint64_t>(kSeenEmitterSampleFactor * spp,
+                                                       kMaxSeenEmitterSamples));
+  return emitters && spread && samples > spp ? samples : 0;
+}
+
+std::vector<PixelWindow> seenEmitterWindows(const ImageLayer& emission) {
+  const uint32_t w = emission.width, h = emission.height, t = kSeenEmitterTile;
+  const uint32_t tilesX = (w + t - 1) / t, tilesY = (h + t - 1) / t;
+  std::vector<char> tileSees(size_t(tilesX) * tilesY, 0);
+  for (uint32_t y = 0; y < h; ++y)
+    for (uint32_t x = 0; x < w; ++x) {
+      const float* v = &emission.pixels[3 * (size_t(y) * w + x)];
+      if (v[0] <= 0.0f && v[1] <= 0.0f && v[2] <= 0.0f) continue;
+      // The pixel and its neighbours: an emitter seen in one may cover a sliver of the next.
+      for (uint32_t j = y > 0 ? y - 1 : 0; j <= std::min(y + 1, h - 1); ++j)
+        for (uint32_t i = x > 0 ? x - 1 : 0; i <= std::min(x + 1, w - 1); ++i)
+          tileSees[size_t(j / t) * tilesX + i / t] = 1;
+    }
+  std::vector<PixelWindow> windows;
+  for (uint32_t ty = 0; ty < tilesY; ++ty)
+    for (uint32_t tx = 0; tx < tilesX;) {
+      if (!tileSees[size_t(ty) * tilesX + tx]) {
+        ++tx;
+        continue;
+      }
+      const uint32_t first = tx;
+      while (tx < tilesX && tileSees[size_t(ty) * tilesX + tx]) ++tx;
+      PixelWindow window;
+      window.x = first * t;
+      window.y = ty * t;
+      window.width = std::min(tx * t, w) - window.x;
+      window.height = std::min(window.y + t, h) - window.y;
+      windows.push_back(window);
+    }
+  return windows;
+}
+
+void SeenEmitters::replaceIn(float* pass) const {
+  for (size_t i = 0; i < covered.size(); ++i)
+    if (covered[i])
+      for (size_t c = 0; c < 3; ++c) pass[3 * i + c] = emission.pixels[3 * i + c];
+}
+
+SeenEmitters sampleSeenEmitters(Renderer& renderer, const SceneData& scene,
+                                const RenderOptions& options) {
+  SeenEmitters seen;
+  const uint32_t samples = seenEmitterSamples(scene);
+  if (samples == 0) return seen;
+  const uint32_t width = scene.camera.width, height = scene.camera.height;
+  RenderOptions pilot = seenOnlyRender(options, PixelWindow(), scene.settings.spp);
+  pilot.adjust.reseed = true;
+  pilot.adjust.seed = mix64(scene.settings.seed ^ 0x5ee7e3177e25ull);
+  const RenderResult found = renderer.render(pilot);
+  seen.cancelled = found.cancelled;
+  seen.emission = ImageLayer("emission", {"R", "G", "B"}, false, width, height);
+  if (seen.cancelled) return seen;
+  for (size_t i = 0; i < found.aovs.size(); ++i)
+    for (int c = 0; c < 3; ++c) seen.emission.pixels[3 * i + c] = emissionOf(found.aovs[i], c);
+  const std::vector<PixelWindow> windows = seenEmitterWindows(seen.emission);
+  std::fill(seen.emission.pixels.begin(), seen.emission.pixels.end(), 0.0f);
+  seen.covered.assign(size_t(width) * height, 0);
+  for (const PixelWindow& window : windows) {
+    const RenderResult r = renderer.render(seenOnlyRender(options, window, samples));
+    if (r.cancelled) {
+      seen.cancelled = true;
+      seen.covered.clear();
+      return seen;
+    }
+    for (uint32_t y = 0; y < window.height; ++y)
+      for (uint32_t x = 0; x < window.width; ++x) {
+        const size_t i = size_t(window.y + y) * width + window.x + x;
+        seen.covered[i] = 1;
+        for (int c = 0; c < 3; ++c)
+          seen.emission.pixels[3 * i + c] = emissionOf(r.aovs[size_t(y) * window.width + x], c);
+      }
+  }
+  return seen;
+}
+
+}  // namespace candela
