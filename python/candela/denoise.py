@@ -41,7 +41,7 @@ def _library() -> str:
 
 def denoise(image: np.ndarray, albedo: np.ndarray, normal: np.ndarray,
             direct: Optional[np.ndarray] = None, emission: Optional[np.ndarray] = None,
-            threads: int = 0) -> np.ndarray:
+            threads: int = 0, seen_emission: Optional[np.ndarray] = None) -> np.ndarray:
     """The denoised (H, W, 3) float32 radiance of `image`, guided by `albedo` and `normal`, on at
     most `threads` CPU threads (0: all cores). With `direct`, the image's direct light pass, the
     direct light and the rest (image - direct) are filtered apart and added, as
@@ -49,7 +49,10 @@ def denoise(image: np.ndarray, albedo: np.ndarray, normal: np.ndarray,
     noisy, and filtered alone it keeps its detail. With `emission` too, the emitters the image
     shows are left out of the direct light's filter and added as they are: they carry no noise
     but their edges', and their radiance, far above the rest, would spread into it
-    (docs/performance.md, Denoising).
+    (docs/performance.md, Denoising). `seen_emission`, where given, is what is added back in
+    their place: the same emitters sampled again with more camera rays, as
+    `scene.render(denoise=True)` does where the image shows emitters (their edges within a
+    pixel are what no filter can place from few samples).
 
     The guides come from the same samples as the image and carry a little noise of their own
     (antialiased edges, depth of field, what glass and mirrors show): each is denoised first and
@@ -62,4 +65,5 @@ def denoise(image: np.ndarray, albedo: np.ndarray, normal: np.ndarray,
             raise ValueError(f"denoise: expected images of shape (H, W, 3), got {a.shape}")
         return a
     return _candela.denoise(_library(), contiguous(image), contiguous(albedo), contiguous(normal),
-                            contiguous(direct), contiguous(emission), threads=threads)
+                            contiguous(direct), contiguous(emission),
+                            seen_emission=contiguous(seen_emission), threads=threads)

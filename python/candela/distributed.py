@@ -172,7 +172,8 @@ def render_image(scene: Union[Scene, str], spp: Optional[int] = None, chunks: in
     aovs and denoise as in Scene.render, with the same result: the tasks return their passes'
     per-pixel sums (merge_pass_sums), which merge as one render's would, so the filtered passes
     equal the single render's to float rounding and the id passes exactly; the denoiser runs
-    once, here, on the merged image."""
+    once, here, on the merged image (the emitters seen sampled again here too, on this machine's
+    CPU, as Scene.render(denoise=True) does)."""
     if not isinstance(scene, Scene):
         scene = Scene.load(scene)
     names = _pass_names(aovs)
@@ -198,4 +199,8 @@ def render_image(scene: Union[Scene, str], spp: Optional[int] = None, chunks: in
         return image
     result = {"image": image}
     result.update(scene._core.passes_from_sums(sums, passes))
-    return _denoised(result, names) if denoise else result
+    if not denoise:
+        return result
+    # The emitters seen are sampled again here, as Scene.render does: camera rays alone, a small
+    # part of the render's work (backends/seen_emitters.h).
+    return _denoised(result, names, seen=scene._core.seen_emitters(spp, seed, "auto", 0))

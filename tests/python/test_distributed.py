@@ -76,7 +76,10 @@ def test_render_image_merges_passes_as_one_render_holds_them(local_ray):
 
 def test_render_image_denoises_the_merged_image(local_ray):
     pytest.importorskip("pyoidn", reason="the denoiser (PyPI pyoidn) is not installed")
-    scene = candela.Scene.from_dict(tiny_scene())
+    spec = tiny_scene()  # with an emitter in view, which both sample again alike
+    spec["spheres"].append({"position": [-1.2, 0.3, 0.5], "radius": 0.3,
+                            "material": {"type": "emissive", "radiance": 40}})
+    scene = candela.Scene.from_dict(spec)
     local = scene.render(spp=8, backend="cpu", aovs=["depth"], denoise=True)
     merged = distributed.render_image(scene, spp=8, chunks=2, aovs=["depth"], denoise=True)
     assert set(merged) == {"image", "noisy", "depth"}

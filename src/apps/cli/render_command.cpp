@@ -244,7 +244,7 @@ int renderStill(const RenderCommandOptions& options, SceneDesc desc, double load
   LightPathChoice lightPaths;
   RenderResult result = renderChoosingLightPaths(*renderer, scene, render, &lightPaths);
   if (bar) bar->clear();
-  if (denoiser && !result.cancelled) denoiser->denoise(result, scene, options.threads);
+  if (denoiser && !result.cancelled) denoiser->denoise(result, scene, *renderer, render);
 
   if (result.cancelled) {
     std::fputs("candela: interrupted, no image written\n", stderr);

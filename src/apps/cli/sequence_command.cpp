@@ -263,7 +263,7 @@ int runSequence(const RenderCommandOptions& options, std::vector<SceneDesc> scen
     renderer->setScene(data, frameScene.change());
     RenderResult result = renderChoosingLightPaths(*renderer, data, render);
     if (bar) bar->clear();
-    if (denoiser && !result.cancelled) denoiser->denoise(result, data, options.threads);
+    if (denoiser && !result.cancelled) denoiser->denoise(result, data, *renderer, render);
     if (result.cancelled) {
       std::fprintf(stderr,
                    "candela: interrupted during frame %u; the %zu frames finished are kept, run "

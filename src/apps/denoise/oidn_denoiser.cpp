@@ -171,7 +171,7 @@ class Buffer {
 
 void OidnDenoiser::denoise(float* image, size_t width, size_t height, const float* albedo,
                            const float* normal, const float* direct, const float* emission,
-                           int threads) const {
+                           const float* seenEmission, int threads) const {
   std::lock_guard<std::mutex> lock(mutex_);
   const Api& a = *api_;
   void* dev = device(threads);
@@ -233,15 +233,29 @@ void OidnDenoiser::denoise(float* image, size_t width, size_t height, const floa
   if (a.getDeviceError(dev, &message) != 0)
     throw std::runtime_error(std::string("Open Image Denoise failed: ") +
                              (message ? message : "unknown error"));
-  for (size_t i = 0; i < n; ++i) image[i] = sum[i] + (direct && emission ? emission[i] : 0.0f);
+  const float* added = direct ? (seenEmission ? seenEmission : emission) : nullptr;
+  for (size_t i = 0; i < n; ++i) image[i] = sum[i] + (added ? added[i] : 0.0f);
 }
 
-void OidnDenoiser::denoise(RenderResult& result, const SceneData& scene, int threads) const {
-  const std::vector<ImageLayer> passes =
+void OidnDenoiser::denoise(RenderResult& result, const SceneData& scene, const SeenEmitters& seen,
+                           int threads) const {
+  std::vector<ImageLayer> passes =
       makeAovLayers(scene, {Aov::Albedo, Aov::Normal, Aov::Direct, Aov::Emission}, result.aovs);
+  std::vector<float> seenEmission = passes[3].pixels;
+  seen.replaceIn(seenEmission.data());
   denoise(result.image.pixels.data(), result.image.width, result.image.height,
           passes[0].pixels.data(), passes[1].pixels.data(), passes[2].pixels.data(),
-          passes[3].pixels.data(), threads);
+          passes[3].pixels.data(), seenEmission.data(), threads);
+}
+
+void OidnDenoiser::denoise(RenderResult& result, const SceneData& scene, Renderer& renderer,
+                           const RenderOptions& options) const {
+  const SeenEmitters seen = sampleSeenEmitters(renderer, scene, options);
+  if (seen.cancelled) {
+    result.cancelled = true;
+    return;
+  }
+  denoise(result, scene, seen, options.threads);
 }
 
 }  // namespace candela

@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "backends/seen_emitters.h"
 #include "image/image.h"
 #include "render/render_result.h"
 #include "render/scene_data.h"
@@ -33,16 +34,26 @@ class OidnDenoiser {
 
   // Denoises `image` (width x height HDR radiance, 3 floats a pixel) in place. With `direct`
   // (its direct light pass) the direct light, less the emitters it shows (`emission`, or none
-  // where null), and the rest are filtered apart, and the two and the emission added; without,
+  // where null), and the rest are filtered apart, and the two and the emission added (or, where
+  // given, `seenEmission`: the same emitters sampled again, backends/seen_emitters.h); without,
   // one filter runs over the image. `albedo` and `normal` guide every filter, each denoised
   // first. `threads` > 0 caps OIDN's threads (0: all cores). Calls take turns.
   // Throws std::runtime_error with OIDN's message when it fails.
   void denoise(float* image, size_t width, size_t height, const float* albedo, const float* normal,
-               const float* direct, const float* emission, int threads = 0) const;
+               const float* direct, const float* emission, const float* seenEmission = nullptr,
+               int threads = 0) const;
 
   // Denoises the image of `result`, a render of `scene` with passes (RenderOptions::aovs), by its
-  // direct light and emission passes, guided by its albedo and normal passes.
-  void denoise(RenderResult& result, const SceneData& scene, int threads = 0) const;
+  // direct light and emission passes, guided by its albedo and normal passes, adding back the
+  // emitters seen as `seen` sampled them where it did.
+  void denoise(RenderResult& result, const SceneData& scene, const SeenEmitters& seen,
+               int threads = 0) const;
+
+  // The same, with the emitters seen sampled again by `renderer`, which holds `scene` and made
+  // `result` with `options` (whose threads and cancellation hold here too). A cancel while they
+  // are sampled marks `result` cancelled and leaves it as it was.
+  void denoise(RenderResult& result, const SceneData& scene, Renderer& renderer,
+               const RenderOptions& options) const;
 
   struct Api;
 

@@ -27,8 +27,9 @@
 #include "apps/denoise/oidn_denoiser.h"
 #include "apps/python/interruptible.h"
 #include "backends/light_path_pilot.h"
-#include "backends/thread_limit.h"
 #include "backends/renderer.h"
+#include "backends/seen_emitters.h"
+#include "backends/thread_limit.h"
 #include "image/image_io.h"
 #include "render/aov_layers.h"
 #include "scene/animation.h"
@@ -176,6 +177,36 @@ nb::dict passSumMerges() {
   return d;
 }
 
+// The still `desc` of a scene flattened into `cache` and given to its renderer on `chosen`, made
+// anew where it has none or one on another backend. The caller holds cache.mutex.
+const SceneData& prepareRenderer(RenderCache& cache, SceneDesc& desc, Backend chosen,
+                                 const FlowMotion* flow) {
+  const CpuEngine engine =
+      resolveCpuEngine(CpuEngine::Auto, false, meshTriangleCount(desc), sphereCount(desc));
+  if (!needsOwnBvh(chosen, engine)) desc.ownBvh = OwnBvh::None;
+  const SceneData& data = cache.frames.prepare(desc, flow);
+  SceneChange change = cache.frames.change();
+  if (!cache.renderer || cache.backend != chosen) {
+    cache.renderer.reset();  // a GPU's copy is freed before the next is made
+    cache.renderer = makeRenderer(chosen, engine);
+    cache.backend = chosen;
+    change = SceneChange::Structure;
+  }
+  cache.renderer->setScene(data, change);
+  return data;
+}
+
+// The still of `scene`, with spp and seed overridden where given.
+SceneDesc stillWith(const Scene& scene, std::optional<uint32_t> spp, std::optional<uint64_t> seed) {
+  SceneDesc desc = scene.still();
+  if (spp) {
+    if (*spp == 0) throw std::invalid_argument("spp must be positive");
+    desc.render.spp = *spp;
+  }
+  if (seed) desc.render.seed = *seed;
+  return desc;
+}
+
 // passSums: the passes as their per-pixel sums ({"image", "sums"}), for a caller that adds those
 // of several sample ranges and then calls passesFromSums; else as layers.
 nb::object render(const Scene& scene, std::optional<uint32_t> spp, std::optional<uint64_t> seed,
@@ -184,12 +215,7 @@ nb::object render(const Scene& scene, std::optional<uint32_t> spp, std::optional
   const ThreadLimit threadLimit(threads);  // the build and pilot too, not only the tiles
   if (passSums && !aovNames) aovNames.emplace();
   const std::vector<Aov> aovs = aovNames ? aovsFromNames(*aovNames) : std::vector<Aov>();
-  SceneDesc desc = scene.still();
-  if (spp) {
-    if (*spp == 0) throw std::invalid_argument("spp must be positive");
-    desc.render.spp = *spp;
-  }
-  if (seed) desc.render.seed = *seed;
+  SceneDesc desc = stillWith(scene, spp, seed);
   SampleRange samples;
   if (range) {
     samples = {std::get<0>(*range), std::get<1>(*range)};
@@ -206,22 +232,11 @@ nb::object render(const Scene& scene, std::optional<uint32_t> spp, std::optional
   RenderCache& cache = *scene.cache;
   runInterruptible([&](const std::atomic<bool>& cancel) {
     std::lock_guard<std::mutex> lock(cache.mutex);
-    const CpuEngine engine =
-        resolveCpuEngine(CpuEngine::Auto, false, meshTriangleCount(desc), sphereCount(desc));
-    if (!needsOwnBvh(chosen, engine)) desc.ownBvh = OwnBvh::None;
     std::optional<FlowMotion> flow;
     if (hasAov(aovs, Aov::Flow))
       flow = flowMotion(desc, sceneAtFrame(*scene.desc, scene.frame.value_or(0) + 1));
-    const SceneData& data = cache.frames.prepare(desc, flow ? &*flow : nullptr);
-    SceneChange change = cache.frames.change();
-    if (!cache.renderer || cache.backend != chosen) {
-      cache.renderer.reset();  // a GPU's copy is freed before the next is made
-      cache.renderer = makeRenderer(chosen, engine);
-      cache.backend = chosen;
-      change = SceneChange::Structure;
-    }
+    const SceneData& data = prepareRenderer(cache, desc, chosen, flow ? &*flow : nullptr);
     options.cancel = &cancel;
-    cache.renderer->setScene(data, change);
     result = renderChoosingLightPaths(*cache.renderer, data, options);
     if (!result.cancelled && aovNames && !passSums)
       layers = makeAovLayers(data, aovs, result.aovs);
@@ -237,6 +252,32 @@ nb::object render(const Scene& scene, std::optional<uint32_t> spp, std::optional
   }
   addLayers(std::move(layers), &out);
   return out;
+}
+
+// The emitters that a render of `scene` (spp and seed as render's) sees, sampled again for the
+// denoiser (backends/seen_emitters.h): None where nothing is, else (emission, covered), an
+// (H, W, 3) float32 emission pass valid where the (H, W) uint8 array `covered` is 1.
+nb::object seenEmitters(const Scene& scene, std::optional<uint32_t> spp,
+                        std::optional<uint64_t> seed, const std::string& backend, int threads) {
+  const ThreadLimit threadLimit(threads);
+  SceneDesc desc = stillWith(scene, spp, seed);
+  const Backend chosen = backendNamed(backend);
+  RenderOptions options;
+  options.threads = threads;
+  options.sceneLabel = desc.file;
+  SeenEmitters seen;
+  RenderCache& cache = *scene.cache;
+  runInterruptible([&](const std::atomic<bool>& cancel) {
+    std::lock_guard<std::mutex> lock(cache.mutex);
+    const SceneData& data = prepareRenderer(cache, desc, chosen, nullptr);
+    options.cancel = &cancel;
+    seen = sampleSeenEmitters(*cache.renderer, data, options);
+  });
+  if (seen.covered.empty()) return nb::none();
+  const size_t h = seen.emission.height, w = seen.emission.width;
+  return nb::make_tuple(
+      ownedArray(std::move(seen.emission.pixels), h, w, 3),
+      ownedArray(std::move(seen.covered), h, w, 1));
 }
 
 // The layers of passes `aovNames` from per-pixel sums (sumsToDict's, possibly added over sample
@@ -288,10 +329,12 @@ const OidnDenoiser& oidn(const std::string& library) {
 ImageArray denoiseArrays(const std::string& library, const ImageInput& image,
                          const ImageInput& albedo, const ImageInput& normal,
                          const std::optional<ImageInput>& direct,
-                         const std::optional<ImageInput>& emission, int threads) {
+                         const std::optional<ImageInput>& emission,
+                         const std::optional<ImageInput>& seenEmission, int threads) {
   const size_t h = image.shape(0), w = image.shape(1);
   for (const ImageInput* pass :
-       {&albedo, &normal, direct ? &*direct : nullptr, emission ? &*emission : nullptr})
+       {&albedo, &normal, direct ? &*direct : nullptr, emission ? &*emission : nullptr,
+        seenEmission ? &*seenEmission : nullptr})
     if (pass && (pass->shape(0) != h || pass->shape(1) != w))
       throw std::invalid_argument("denoise: every pass must have the image's shape (" +
                                   std::to_string(h) + ", " + std::to_string(w) + ", 3)");
@@ -301,7 +344,7 @@ ImageArray denoiseArrays(const std::string& library, const ImageInput& image,
     nb::gil_scoped_release release;
     denoiser.denoise(pixels.data(), w, h, albedo.data(), normal.data(),
                      direct ? direct->data() : nullptr, emission ? emission->data() : nullptr,
-                     threads);
+                     seenEmission ? seenEmission->data() : nullptr, threads);
   }
   auto [data, owner] = heapOwned(std::move(pixels));
   return ImageArray(data, {h, w, size_t(3)}, owner);
@@ -362,14 +405,17 @@ NB_MODULE(_candela, m) {
       .def("render", &render, "spp"_a = nb::none(), "seed"_a = nb::none(), "backend"_a = "auto",
            "sample_range"_a = nb::none(), "threads"_a = 0, "aovs"_a = nb::none(),
            "pass_sums"_a = false)
-      .def("passes_from_sums", &passesFromSums, "sums"_a, "aovs"_a);
+      .def("passes_from_sums", &passesFromSums, "sums"_a, "aovs"_a)
+      .def("seen_emitters", &seenEmitters, "spp"_a = nb::none(), "seed"_a = nb::none(),
+           "backend"_a = "auto", "threads"_a = 0);
 
   m.attr("PASS_SUM_MERGES") = passSumMerges();
   m.def("check_aovs", [](const std::vector<std::string>& names) { aovsFromNames(names); },
         "names"_a);
   m.def("write_image", &writeImageArray, "path"_a, "img"_a, "srgb"_a, "gamma"_a, "exposure"_a);
   m.def("denoise", &denoiseArrays, "library"_a, "image"_a, "albedo"_a, "normal"_a,
-        "direct"_a = nb::none(), "emission"_a = nb::none(), "threads"_a = 0);
+        "direct"_a = nb::none(), "emission"_a = nb::none(), "seen_emission"_a = nb::none(),
+        "threads"_a = 0);
   m.def("cuda_available", [] {
     std::string reason;
     return cudaUsable(&reason);
