@@ -146,16 +146,16 @@ TEST(SeenEmitters, SampleAnEmittersEdgesCloserToWhatItCovers) {
   std::vector<float> pass = ownEmission.pixels;
   seen.replaceIn(pass.data());
   for (size_t i = 0; i < seen.covered.size(); ++i)
-    EXPECT_EQ(pass[3 * i], seen.covered[i] ? seen.emission.pixels[3 * i]
-                                           : ownEmission.pixels[3 * i]);
+    EXPECT_EQ(pass[3 * i],
+              seen.covered[i] ? seen.emission.pixels[3 * i] : ownEmission.pixels[3 * i]);
 }
 
 TEST(SeenEmitters, NothingIsSampledAgainWhereNothingWouldGain) {
   // Without antialiasing every sample of a pinhole camera goes through the pixel's centre; at
   // 4096 spp and more the render's own samples are as many; a scene without an emitting surface
   // shows none.
-  EXPECT_EQ(seenEmitterSamples(test::loadTestScene(
-                emitterScene(R"("spp": 16)", R"("antialiasing": false)"))),
+  EXPECT_EQ(seenEmitterSamples(
+                test::loadTestScene(emitterScene(R"("spp": 16)", R"("antialiasing": false)"))),
             0u);
   EXPECT_EQ(seenEmitterSamples(test::loadTestScene(emitterScene(R"("spp": 4096)", ""))), 0u);
   EXPECT_EQ(seenEmitterSamples(test::loadTestScene(emitterScene(R"("spp": 1024)", ""))),

@@ -37,8 +37,8 @@ uint32_t seenEmitterSamples(const SceneData& scene) {
                                     [](const Material& m) { return isEmissive(m); });
   const bool spread = scene.settings.antialiasing || scene.camera.apertureRadius > 0.0f;
   const uint64_t spp = scene.settings.spp;
-  const uint32_t samples = uint32_t(std::min<uint64_t>(kSeenEmitterSampleFactor * spp,
-                                                       kMaxSeenEmitterSamples));
+  const uint32_t samples =
+      uint32_t(std::min<uint64_t>(kSeenEmitterSampleFactor * spp, kMaxSeenEmitterSamples));
   return emitters && spread && samples > spp ? samples : 0;
 }
 
@@ -86,7 +86,8 @@ SeenEmitters sampleSeenEmitters(Renderer& renderer, const SceneData& scene,
   const uint32_t samples = seenEmitterSamples(scene);
   if (samples == 0) return seen;
   const uint32_t width = scene.camera.width, height = scene.camera.height;
-  RenderOptions pilot = seenOnlyRender(options, PixelWindow(), scene.settings.spp);
+  RenderOptions pilot = seenOnlyRender(options, PixelWindow(),
+                                       std::min(scene.settings.spp, kSeenEmitterPilotSamples));
   pilot.adjust.reseed = true;
   pilot.adjust.seed = mix64(scene.settings.seed ^ 0x5ee7e3177e25ull);
   const RenderResult found = renderer.render(pilot);

@@ -10,11 +10,11 @@
 // where emitters are seen, with camera rays alone (max_depth 0), each a small part of a
 // sample's cost.
 //
-// Which windows is found by a pilot of its own (every pixel, the render's samples per pixel,
-// camera rays alone, its own seed), not from the render's emission pass: the pass is kept where
-// no window covers it, so a choice made from its own samples would bias it (a sub-pixel emitter
-// that the render's samples missed would stay black, one they found would be sampled again).
-// With an independent pilot, each pixel's emission is either the render's or the windows',
+// Which windows is found by a pilot of its own (every pixel, kSeenEmitterPilotSamples samples
+// per pixel, camera rays alone, its own seed), not from the render's emission pass: the pass is
+// kept where no window covers it, so a choice made from its own samples would bias it (a sub-pixel
+// emitter that the render's samples missed would stay black, one they found would be sampled
+// again). With an independent pilot, each pixel's emission is either the render's or the windows',
 // both unbiased.
 #pragma once
 
@@ -33,6 +33,10 @@ namespace candela {
 constexpr uint32_t kSeenEmitterSampleFactor = 16;
 // ...but at most this many (a render of as many samples has sharp emitters of its own).
 constexpr uint32_t kMaxSeenEmitterSamples = 4096;
+// The pilot's samples per pixel (the render's where it has fewer): an emitter that covers a
+// pixel or more is found in a tile whatever the samples; a smaller one, which fewer find, keeps
+// the render's own samples more often, still unbiased.
+constexpr uint32_t kSeenEmitterPilotSamples = 4;
 // The windows are made of tiles of this many pixels square.
 constexpr uint32_t kSeenEmitterTile = 8;
 
@@ -48,7 +52,7 @@ std::vector<PixelWindow> seenEmitterWindows(const ImageLayer& emission);
 
 // The emission pass sampled again in the windows where the pilot saw emitters.
 struct SeenEmitters {
-  ImageLayer emission;            // where `covered`, the pass's value from these samples
+  ImageLayer emission;           // where `covered`, the pass's value from these samples
   std::vector<uint8_t> covered;  // per pixel, rows from the top; empty where none is
   bool cancelled = false;        // a cancel stopped the renders: nothing is covered
   // `pass` (a render's emission pass of this image) with the values sampled here in place of its

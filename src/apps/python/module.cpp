@@ -275,9 +275,8 @@ nb::object seenEmitters(const Scene& scene, std::optional<uint32_t> spp,
   });
   if (seen.covered.empty()) return nb::none();
   const size_t h = seen.emission.height, w = seen.emission.width;
-  return nb::make_tuple(
-      ownedArray(std::move(seen.emission.pixels), h, w, 3),
-      ownedArray(std::move(seen.covered), h, w, 1));
+  return nb::make_tuple(ownedArray(std::move(seen.emission.pixels), h, w, 3),
+                        ownedArray(std::move(seen.covered), h, w, 1));
 }
 
 // The layers of passes `aovNames` from per-pixel sums (sumsToDict's, possibly added over sample
