@@ -16,7 +16,9 @@
 #include "texture_test_util.h"
 
 #if defined(CANDELA_HAS_CUDA)
+#include "backends/cpu/cpu_renderer.h"
 #include "backends/cuda/cuda_renderer.h"
+#include "backends/seen_emitters.h"
 #include "render/aov.h"
 #include "scene/animation.h"
 #include "scene/flow_motion.h"
@@ -311,6 +313,45 @@ TEST(CudaBackend, PassesMatchCpuWithinRounding) {
   }
   EXPECT_GT(flowing, cpu.aovs.size() / 2);  // the flow pass has motion to agree on
   EXPECT_LT(differing, cpu.aovs.size() / 100);
+}
+
+// A window of the image on the device (the emitters seen, sampled again: backends/
+// seen_emitters.h) renders the pixels of the device's whole image, to the bit; and what the
+// device samples again of the emitters seen agrees with what the CPU does.
+TEST(CudaBackend, WindowsAndSeenEmittersMatch) {
+  REQUIRE_GPU();
+  std::string json = sceneWithEverything(4);  // and an emissive ball in view
+  json.insert(json.find(R"("spheres": [)") + 12,
+              R"({"position": [-0.4, 1.6, 0], "radius": 0.3,
+                  "material": {"type": "emissive", "radiance": 20}}, )");
+  const SceneData data = test::loadTestScene(json);
+  CudaRenderer renderer;
+  renderer.setScene(data, SceneChange::Structure);
+  RenderOptions whole, window;
+  window.sceneLabel = whole.sceneLabel = "test.json";
+  window.adjust.window = {9, 5, 17, 11};
+  const RenderResult a = renderer.render(whole), b = renderer.render(window);
+  ASSERT_EQ(b.image.width, 17u);
+  ASSERT_EQ(b.image.height, 11u);
+  for (uint32_t y = 0; y < 11; ++y)
+    for (uint32_t x = 0; x < 17; ++x)
+      for (int c = 0; c < 3; ++c)
+        ASSERT_EQ(b.image.at(x, y)[c], a.image.at(9 + x, 5 + y)[c]) << x << ", " << y;
+
+  const SeenEmitters gpu = sampleSeenEmitters(renderer, data, whole);
+  CpuRenderer cpuRenderer(CpuEngine::Bvh);
+  cpuRenderer.setScene(data, SceneChange::Structure);
+  const SeenEmitters cpu = sampleSeenEmitters(cpuRenderer, data, whole);
+  ASSERT_FALSE(cpu.covered.empty());
+  size_t differing = 0, covered = 0;
+  for (size_t i = 0; i < cpu.covered.size(); ++i) {
+    covered += cpu.covered[i];
+    differing += gpu.covered[i] != cpu.covered[i] ||
+                 std::fabs(gpu.emission.pixels[3 * i] - cpu.emission.pixels[3 * i]) >
+                     1e-3f * (std::fabs(cpu.emission.pixels[3 * i]) + 1);
+  }
+  EXPECT_GT(covered, 0u);
+  EXPECT_LT(differing, cpu.covered.size() / 100);
 }
 
 #endif

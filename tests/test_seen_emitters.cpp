@@ -168,6 +168,14 @@ TEST(SeenEmitters, NothingIsSampledAgainWhereNothingWouldGain) {
   const SeenEmitters seen = sampleSeenEmitters(renderer, lamp, RenderOptions());
   EXPECT_TRUE(seen.covered.empty());
   EXPECT_FALSE(seen.cancelled);
+
+  // An emitter behind the camera: its pilot finds no tile to sample again.
+  std::string away = emitterScene(R"("spp": 16)", "");
+  away.replace(away.find("[0, 0, -1]"), 10, "[0, 0, 1] ");
+  const SceneData behind = test::loadTestScene(away);
+  EXPECT_GT(seenEmitterSamples(behind), 0u);
+  renderer.setScene(behind, SceneChange::Structure);
+  EXPECT_TRUE(sampleSeenEmitters(renderer, behind, RenderOptions()).covered.empty());
 }
 
 }  // namespace

@@ -97,6 +97,7 @@ SeenEmitters sampleSeenEmitters(Renderer& renderer, const SceneData& scene,
   for (size_t i = 0; i < found.aovs.size(); ++i)
     for (int c = 0; c < 3; ++c) seen.emission.pixels[3 * i + c] = emissionOf(found.aovs[i], c);
   const std::vector<PixelWindow> windows = seenEmitterWindows(seen.emission);
+  if (windows.empty()) return SeenEmitters();
   std::fill(seen.emission.pixels.begin(), seen.emission.pixels.end(), 0.0f);
   seen.covered.assign(size_t(width) * height, 0);
   for (const PixelWindow& window : windows) {
