@@ -16,29 +16,36 @@
 namespace candela {
 
 // The few entry points of OIDN's C API (OpenImageDenoise/oidn.h, version 2) that denoising
-// needs, declared here because only the library, not its header, comes with pyoidn.
+// needs, as X(member, symbol, return type, parameters): declared here because only the library,
+// not its header, comes with pyoidn.
+#define CANDELA_OIDN_ENTRY_POINTS(X)                                                        \
+  X(newDevice, oidnNewDevice, void*, (int type))                                            \
+  X(setDeviceInt, oidnSetDeviceInt, void, (void* device, const char* name, int value))      \
+  X(commitDevice, oidnCommitDevice, void, (void* device))                                   \
+  X(getDeviceError, oidnGetDeviceError, int, (void* device, const char** message))          \
+  X(releaseDevice, oidnReleaseDevice, void, (void* device))                                 \
+  X(newBuffer, oidnNewBuffer, void*, (void* device, size_t byteSize))                       \
+  X(writeBuffer, oidnWriteBuffer, void,                                                     \
+    (void* buffer, size_t byteOffset, size_t byteSize, const void* source))                 \
+  X(readBuffer, oidnReadBuffer, void,                                                       \
+    (void* buffer, size_t byteOffset, size_t byteSize, void* destination))                  \
+  X(releaseBuffer, oidnReleaseBuffer, void, (void* buffer))                                 \
+  X(newFilter, oidnNewFilter, void*, (void* device, const char* type))                      \
+  X(setFilterImage, oidnSetFilterImage, void,                                               \
+    (void* filter, const char* name, void* buffer, int format, size_t width, size_t height, \
+     size_t byteOffset, size_t pixelStride, size_t rowStride))                              \
+  X(setFilterBool, oidnSetFilterBool, void, (void* filter, const char* name, bool value))   \
+  X(commitFilter, oidnCommitFilter, void, (void* filter))                                   \
+  X(executeFilter, oidnExecuteFilter, void, (void* filter))                                 \
+  X(releaseFilter, oidnReleaseFilter, void, (void* filter))
+
 struct OidnDenoiser::Api {
-  using Device = void*;
-  using Filter = void*;
-  using Buffer = void*;
   static constexpr int kFormatFloat3 = 3;   // OIDN_FORMAT_FLOAT3
   static constexpr int kDeviceTypeCpu = 1;  // OIDN_DEVICE_TYPE_CPU
-  Device (*newDevice)(int type);
-  void (*setDeviceInt)(Device, const char* name, int value);
-  void (*commitDevice)(Device);
-  int (*getDeviceError)(Device, const char** message);
-  void (*releaseDevice)(Device);
-  Buffer (*newBuffer)(Device, size_t byteSize);
-  void (*writeBuffer)(Buffer, size_t byteOffset, size_t byteSize, const void* source);
-  void (*readBuffer)(Buffer, size_t byteOffset, size_t byteSize, void* destination);
-  void (*releaseBuffer)(Buffer);
-  Filter (*newFilter)(Device, const char* type);
-  void (*setFilterImage)(Filter, const char* name, Buffer buffer, int format, size_t width,
-                         size_t height, size_t byteOffset, size_t pixelStride, size_t rowStride);
-  void (*setFilterBool)(Filter, const char* name, bool value);
-  void (*commitFilter)(Filter);
-  void (*executeFilter)(Filter);
-  void (*releaseFilter)(Filter);
+#define CANDELA_OIDN_MEMBER(member, symbol, Result, Parameters) \
+  Result(*member) Parameters = nullptr;
+  CANDELA_OIDN_ENTRY_POINTS(CANDELA_OIDN_MEMBER)
+#undef CANDELA_OIDN_MEMBER
 };
 
 namespace {
@@ -80,21 +87,11 @@ std::unique_ptr<OidnDenoiser> OidnDenoiser::load(std::string* whyNot, const std:
     d->handle_ = handle;
     d->api_ = std::make_unique<Api>();
     Api& a = *d->api_;
-    const bool complete = bind(handle, "oidnNewDevice", &a.newDevice) &&
-                          bind(handle, "oidnSetDeviceInt", &a.setDeviceInt) &&
-                          bind(handle, "oidnCommitDevice", &a.commitDevice) &&
-                          bind(handle, "oidnGetDeviceError", &a.getDeviceError) &&
-                          bind(handle, "oidnReleaseDevice", &a.releaseDevice) &&
-                          bind(handle, "oidnNewBuffer", &a.newBuffer) &&
-                          bind(handle, "oidnWriteBuffer", &a.writeBuffer) &&
-                          bind(handle, "oidnReadBuffer", &a.readBuffer) &&
-                          bind(handle, "oidnReleaseBuffer", &a.releaseBuffer) &&
-                          bind(handle, "oidnNewFilter", &a.newFilter) &&
-                          bind(handle, "oidnSetFilterImage", &a.setFilterImage) &&
-                          bind(handle, "oidnSetFilterBool", &a.setFilterBool) &&
-                          bind(handle, "oidnCommitFilter", &a.commitFilter) &&
-                          bind(handle, "oidnExecuteFilter", &a.executeFilter) &&
-                          bind(handle, "oidnReleaseFilter", &a.releaseFilter);
+    bool complete = true;
+#define CANDELA_OIDN_BIND(member, symbol, Result, Parameters) \
+  complete = complete && bind(handle, #symbol, &a.member);
+    CANDELA_OIDN_ENTRY_POINTS(CANDELA_OIDN_BIND)
+#undef CANDELA_OIDN_BIND
     if (!complete) {
       d.reset();
       *whyNot = path + " is not Open Image Denoise 2 (an entry point is missing)";
