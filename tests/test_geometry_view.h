@@ -1,9 +1,10 @@
-// A GeometryView (spheres, vertices, triangles), for intersection and BVH tests.
+// A GeometryView (spheres, vertices, triangles) and rays, for intersection and BVH tests.
 #pragma once
 
 #include <vector>
 
 #include "geometry/geometry_view.h"
+#include "geometry/ray.h"
 
 namespace candela::test {
 
@@ -20,6 +21,14 @@ inline GeometryView geometryView(const std::vector<Sphere>& spheres, const std::
   v.triangles = triangles.data();
   v.triangleCount = static_cast<uint32_t>(triangles.size());
   return v;
+}
+
+// From the origin down -z.
+inline Ray rayDownMinusZ() {
+  Ray ray;
+  ray.origin = Vec3(0.0f);
+  ray.direction = Vec3(0, 0, -1);
+  return ray;
 }
 
 }  // namespace candela::test

@@ -11,6 +11,7 @@
 
 #include "backends/cpu/sphere_blocks.h"
 #include "geometry/sphere_intersect.h"
+#include "test_geometry_view.h"
 #include "test_random.h"
 
 namespace candela {
@@ -119,13 +120,7 @@ TEST_P(SphereBlocksOfWidth, MatchOneSphereAtATimeBitForBit) {
   }
 }
 
-// From the origin down -z, towards the spheres at z = -5 of the tests below.
-Ray rayDownMinusZ() {
-  Ray ray;
-  ray.origin = Vec3(0.0f);
-  ray.direction = Vec3(0, 0, -1);
-  return ray;
-}
+using test::rayDownMinusZ;  // towards the shapes at z = -5 of the tests below
 
 TEST_P(SphereBlocksOfWidth, ATieGoesToTheLowerIndexANearerHitToAnyIndex) {
   // Copies of one sphere in several blocks and lanes at every width, the rest out of the way:

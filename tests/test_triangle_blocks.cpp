@@ -10,6 +10,7 @@
 
 #include "backends/cpu/triangle_blocks.h"
 #include "geometry/triangle_intersect.h"
+#include "test_geometry_view.h"
 #include "test_random.h"
 
 namespace candela {
@@ -155,12 +156,7 @@ Mesh facing(const std::vector<Vec3>& offsets) {
   return mesh;
 }
 
-Ray rayDownMinusZ() {
-  Ray ray;
-  ray.origin = Vec3(0.0f);
-  ray.direction = Vec3(0, 0, -1);
-  return ray;
-}
+using test::rayDownMinusZ;  // towards the shapes at z = -5 of the tests below
 
 TEST_F(TriangleBlocksTest, ATieGoesToTheLowerIndexANearerHitToAnyIndex) {
   // Copies of one triangle in several blocks and lanes, the rest out of the way: the first copy
