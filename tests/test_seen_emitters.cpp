@@ -43,7 +43,7 @@ double diskCoverage(uint32_t x, uint32_t y) {
   return double(inside) / (n * n);
 }
 
-TEST(SeenEmitters, WindowsAreRunsOfTheTilesAroundEveryPixelThatSeesAnEmitter) {
+TEST(SeenEmitters, WindowsAreRunsOfTheTilesAroundTheEdgesOfTheEmittersSeen) {
   // 20 x 12 pixels: tiles of 8 in three columns (the last 4 wide) and two rows (the last 4 high).
   ImageLayer emission("emission", {"R", "G", "B"}, false, 20, 12);
   emission.pixels[3 * (7 * 20 + 9) + 1] = 0.5f;  // (9, 7): its neighbours reach row 8
@@ -60,6 +60,23 @@ TEST(SeenEmitters, WindowsAreRunsOfTheTilesAroundEveryPixelThatSeesAnEmitter) {
   EXPECT_EQ(windows[1].width, 8u);
   EXPECT_EQ(windows[1].height, 4u);
   EXPECT_TRUE(seenEmitterWindows(ImageLayer("emission", {"R", "G", "B"}, false, 20, 12)).empty());
+
+  // An emitter of one radiance over [4, 36) x [4, 36) of 40 x 40 pixels: its edges lie in the
+  // ring of tiles around the image's 3 x 3 middle ones, which nothing inside it differs in.
+  ImageLayer square("emission", {"R", "G", "B"}, false, 40, 40);
+  for (uint32_t y = 4; y < 36; ++y)
+    for (uint32_t x = 4; x < 36; ++x)
+      for (int c = 0; c < 3; ++c) square.pixels[3 * (size_t(y) * 40 + x) + c] = 3.0f;
+  const std::vector<PixelWindow> ring = seenEmitterWindows(square);
+  ASSERT_EQ(ring.size(), 8u);  // the first and last rows of tiles whole, the rows between at
+                               // their ends
+  uint32_t pixels = 0;
+  for (const PixelWindow& window : ring) {
+    pixels += window.width * window.height;
+    EXPECT_FALSE(window.x <= 20 && 20 < window.x + window.width && window.y <= 20 &&
+                 20 < window.y + window.height);
+  }
+  EXPECT_EQ(pixels, 40u * 40 - 24 * 24);
 }
 
 TEST(ViewAdjustment, AWindowRendersThePixelsOfTheWholeImage) {
@@ -120,8 +137,8 @@ TEST(SeenEmitters, SampleAnEmittersEdgesCloserToWhatItCovers) {
     for (uint32_t x = 0; x < kWidth; ++x) {
       const size_t i = size_t(y) * kWidth + x;
       const double coverage = diskCoverage(x, y), expected = kRadiance * coverage;
-      // Every pixel the disk touches lies in a window; those far from it do not.
-      if (coverage > 0) {
+      // Every pixel the disk's edge crosses lies in a window; those far from it do not.
+      if (coverage > 0 && coverage < 1) {
         EXPECT_TRUE(seen.covered[i]) << x << ", " << y;
       }
       if (std::hypot(x + 0.5 - 24.0, y + 0.5 - 20.0) > kDiskRadius + 18) {

@@ -46,14 +46,22 @@ std::vector<PixelWindow> seenEmitterWindows(const ImageLayer& emission) {
   const uint32_t w = emission.width, h = emission.height, t = kSeenEmitterTile;
   const uint32_t tilesX = (w + t - 1) / t, tilesY = (h + t - 1) / t;
   std::vector<char> tileSees(size_t(tilesX) * tilesY, 0);
+  const auto at = [&](uint32_t x, uint32_t y) { return &emission.pixels[3 * (size_t(y) * w + x)]; };
   for (uint32_t y = 0; y < h; ++y)
     for (uint32_t x = 0; x < w; ++x) {
-      const float* v = &emission.pixels[3 * (size_t(y) * w + x)];
+      const float* v = at(x, y);
       if (v[0] <= 0.0f && v[1] <= 0.0f && v[2] <= 0.0f) continue;
-      // The pixel and its neighbours: an emitter seen in one may cover a sliver of the next.
+      // An emitter's edge (or a change of its radiance) between the pixel and a neighbour: both
+      // may hold a part of a pixel that samples cannot place. Inside an emitter of one radiance
+      // every sample sees the same, and nothing is sampled again.
       for (uint32_t j = y > 0 ? y - 1 : 0; j <= std::min(y + 1, h - 1); ++j)
-        for (uint32_t i = x > 0 ? x - 1 : 0; i <= std::min(x + 1, w - 1); ++i)
-          tileSees[size_t(j / t) * tilesX + i / t] = 1;
+        for (uint32_t i = x > 0 ? x - 1 : 0; i <= std::min(x + 1, w - 1); ++i) {
+          const float* n = at(i, j);
+          if (n[0] != v[0] || n[1] != v[1] || n[2] != v[2]) {
+            tileSees[size_t(y / t) * tilesX + x / t] = 1;
+            tileSees[size_t(j / t) * tilesX + i / t] = 1;
+          }
+        }
     }
   std::vector<PixelWindow> windows;
   for (uint32_t ty = 0; ty < tilesY; ++ty)

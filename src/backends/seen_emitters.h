@@ -4,11 +4,11 @@
 // sample landing on a lamp's rim makes the pixel read a sixteenth of the lamp's radiance, often
 // far above everything around, and no filter can tell from those samples where in the pixel the
 // rim lies (docs/performance.md, Denoising). The denoiser leaves the emitters seen (the
-// `emission` pass) out of its filters and adds them back as they are
-// (apps/denoise/oidn_denoiser.h); this gives it a sharper emission pass to add: sampled again,
+// `emission` pass) out of its filters and adds them back (apps/denoise/oidn_denoiser.h); this
+// gives it a sharper emission pass to add: sampled again,
 // kSeenEmitterSampleFactor times the render's samples per pixel, in the windows of the image
-// where emitters are seen, with camera rays alone (max_depth 0), each a small part of a
-// sample's cost.
+// around the edges of the emitters seen, with camera rays alone (max_depth 0), each a small part of
+// a sample's cost.
 //
 // Which windows is found by a pilot of its own (every pixel, kSeenEmitterPilotSamples samples
 // per pixel, camera rays alone, its own seed), not from the render's emission pass: the pass is
@@ -45,9 +45,10 @@ constexpr uint32_t kSeenEmitterTile = 8;
 // through its centre (no antialiasing, a pinhole), or the render has as many samples already.
 uint32_t seenEmitterSamples(const SceneData& scene);
 
-// The windows around the emitters that `emission` (an emission pass, 3 channels) shows: the
-// tiles (kSeenEmitterTile square) that hold a pixel which, or one of whose eight neighbours, is
-// not black there, each run of them along a row of tiles one window.
+// The windows around the edges of the emitters that `emission` (an emission pass, 3 channels)
+// shows: the tiles (kSeenEmitterTile square) that hold a pixel whose emission differs from one
+// of its eight neighbours' where either is not black (the inside of an emitter of one radiance
+// needs nothing), each run of them along a row of tiles one window.
 std::vector<PixelWindow> seenEmitterWindows(const ImageLayer& emission);
 
 // The emission pass sampled again in the windows where the pilot saw emitters.
