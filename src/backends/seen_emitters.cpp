@@ -5,6 +5,7 @@
 #include <cstddef>
 
 #include "core/rng.h"
+#include "render/aov_layers.h"
 #include "render/bsdf.h"
 
 namespace candela {
@@ -23,11 +24,6 @@ RenderOptions seenOnlyRender(const RenderOptions& options, PixelWindow window, u
   seen.adjust.spp = spp;
   seen.adjust.window = window;
   return seen;
-}
-
-// The emission pass's value, channel `c` of a pixel, from its sums.
-float emissionOf(const AovPixel& p, int c) {
-  return p.samples > 0 ? (&p.emissionSum.x)[c] / float(p.samples) : 0.0f;
 }
 
 }  // namespace
@@ -99,14 +95,14 @@ SeenEmitters sampleSeenEmitters(Renderer& renderer, const SceneData& scene,
   pilot.adjust.reseed = true;
   pilot.adjust.seed = mix64(scene.settings.seed ^ 0x5ee7e3177e25ull);
   const RenderResult found = renderer.render(pilot);
-  seen.cancelled = found.cancelled;
+  if (found.cancelled) {
+    seen.cancelled = true;
+    return seen;
+  }
+  const std::vector<PixelWindow> windows =
+      seenEmitterWindows(makeAovLayers(scene, {Aov::Emission}, found.aovs)[0]);
+  if (windows.empty()) return seen;
   seen.emission = ImageLayer("emission", {"R", "G", "B"}, false, width, height);
-  if (seen.cancelled) return seen;
-  for (size_t i = 0; i < found.aovs.size(); ++i)
-    for (int c = 0; c < 3; ++c) seen.emission.pixels[3 * i + c] = emissionOf(found.aovs[i], c);
-  const std::vector<PixelWindow> windows = seenEmitterWindows(seen.emission);
-  if (windows.empty()) return SeenEmitters();
-  std::fill(seen.emission.pixels.begin(), seen.emission.pixels.end(), 0.0f);
   seen.covered.assign(size_t(width) * height, 0);
   for (const PixelWindow& window : windows) {
     const RenderResult r = renderer.render(seenOnlyRender(options, window, samples));
@@ -118,9 +114,10 @@ SeenEmitters sampleSeenEmitters(Renderer& renderer, const SceneData& scene,
     for (uint32_t y = 0; y < window.height; ++y)
       for (uint32_t x = 0; x < window.width; ++x) {
         const size_t i = size_t(window.y + y) * width + window.x + x;
+        const AovPixel& p = r.aovs[size_t(y) * window.width + x];
+        const Vec3 mean = meanOverSamples(p, p.emissionSum);
         seen.covered[i] = 1;
-        for (int c = 0; c < 3; ++c)
-          seen.emission.pixels[3 * i + c] = emissionOf(r.aovs[size_t(y) * window.width + x], c);
+        for (int c = 0; c < 3; ++c) seen.emission.pixels[3 * i + c] = mean[c];
       }
   }
   return seen;

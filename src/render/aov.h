@@ -60,6 +60,12 @@ struct AovPixel {
   int32_t nearestMaterial = -1;   // -1: that sample saw the background
 };
 
+// The mean over all of a pixel's samples of a pass summed over them all (`sum`: its albedoSum,
+// directSum or emissionSum); 0 for a pixel without samples.
+inline Vec3 meanOverSamples(const AovPixel& pixel, const Vec3& sum) {
+  return pixel.samples > 0 ? sum / float(pixel.samples) : Vec3(0.0f);
+}
+
 // AovPixel's fields, as X(member, name, scalar type, channels, merge): the one list that the
 // Python module's conversions expand (`name` is the array's name there) and that says how the
 // sums of two sample ranges of a pixel merge: Added, or Nearest, the id passes' sample, taken

@@ -67,7 +67,7 @@ void resolvePixel(Aov aov, const SceneData& scene, const AovPixel& p, float* out
     case Aov::NormalCamera:
       return put(cam.cameraToWorld.transposed() * normal);
     case Aov::Albedo:
-      return put(p.samples > 0 ? p.albedoSum / float(p.samples) : Vec3(0.0f));
+      return put(meanOverSamples(p, p.albedoSum));
     case Aov::Position:
       return put(position);
     case Aov::Instance: {
@@ -91,9 +91,9 @@ void resolvePixel(Aov aov, const SceneData& scene, const AovPixel& p, float* out
       return;
     }
     case Aov::Direct:
-      return put(p.samples > 0 ? p.directSum / float(p.samples) : Vec3(0.0f));
+      return put(meanOverSamples(p, p.directSum));
     case Aov::Emission:
-      return put(p.samples > 0 ? p.emissionSum / float(p.samples) : Vec3(0.0f));
+      return put(meanOverSamples(p, p.emissionSum));
   }
 }
 

@@ -234,17 +234,6 @@ void OidnDenoiser::denoise(float* image, size_t width, size_t height, const floa
   for (size_t i = 0; i < n; ++i) image[i] = sum[i] + (added ? added[i] : 0.0f);
 }
 
-void OidnDenoiser::denoise(RenderResult& result, const SceneData& scene, const SeenEmitters& seen,
-                           int threads) const {
-  std::vector<ImageLayer> passes =
-      makeAovLayers(scene, {Aov::Albedo, Aov::Normal, Aov::Direct, Aov::Emission}, result.aovs);
-  std::vector<float> seenEmission = passes[3].pixels;
-  seen.replaceIn(seenEmission.data());
-  denoise(result.image.pixels.data(), result.image.width, result.image.height,
-          passes[0].pixels.data(), passes[1].pixels.data(), passes[2].pixels.data(),
-          passes[3].pixels.data(), seenEmission.data(), threads);
-}
-
 void OidnDenoiser::denoise(RenderResult& result, const SceneData& scene, Renderer& renderer,
                            const RenderOptions& options) const {
   const SeenEmitters seen = sampleSeenEmitters(renderer, scene, options);
@@ -252,7 +241,13 @@ void OidnDenoiser::denoise(RenderResult& result, const SceneData& scene, Rendere
     result.cancelled = true;
     return;
   }
-  denoise(result, scene, seen, options.threads);
+  const std::vector<ImageLayer> passes =
+      makeAovLayers(scene, {Aov::Albedo, Aov::Normal, Aov::Direct, Aov::Emission}, result.aovs);
+  std::vector<float> seenEmission = passes[3].pixels;
+  seen.replaceIn(seenEmission.data());
+  denoise(result.image.pixels.data(), result.image.width, result.image.height,
+          passes[0].pixels.data(), passes[1].pixels.data(), passes[2].pixels.data(),
+          passes[3].pixels.data(), seenEmission.data(), options.threads);
 }
 
 }  // namespace candela

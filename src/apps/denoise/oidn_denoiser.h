@@ -45,13 +45,9 @@ class OidnDenoiser {
 
   // Denoises the image of `result`, a render of `scene` with passes (RenderOptions::aovs), by its
   // direct light and emission passes, guided by its albedo and normal passes, adding back the
-  // emitters seen as `seen` sampled them where it did.
-  void denoise(RenderResult& result, const SceneData& scene, const SeenEmitters& seen,
-               int threads = 0) const;
-
-  // The same, with the emitters seen sampled again by `renderer`, which holds `scene` and made
-  // `result` with `options` (whose threads and cancellation hold here too). A cancel while they
-  // are sampled marks `result` cancelled and leaves it as it was.
+  // emitters seen as `renderer` (which holds `scene` and made `result` with `options`, whose
+  // threads and cancellation hold here too) samples them again (backends/seen_emitters.h). A
+  // cancel while they are sampled marks `result` cancelled and leaves it as it was.
   void denoise(RenderResult& result, const SceneData& scene, Renderer& renderer,
                const RenderOptions& options) const;
 
