@@ -112,6 +112,19 @@ TEST(Frame, OrthonormalAndRightHandedForManyNormals) {
   }
 }
 
+// A wall's normal whose z is 0 only up to rounding (exactly 0 from a cross product on the CPU,
+// +-1e-9 where the GPU fuses a multiply-add) gets one frame, not two mirrored ones that would send
+// a sample in different directions on the two backends.
+TEST(Frame, NormalsWithZeroZUpToRoundingShareTheirFrame) {
+  const Vec3 wall = normalize(Vec3(-0.99998f, 0.0058f, 0.0f));
+  const Frame f(wall);
+  for (const float z : {-0.0f, 1e-9f, -1e-9f, 3e-8f, -3e-8f}) {
+    const Frame g(Vec3(wall.x, wall.y, z));
+    expectNearVec(g.s, f.s, 1e-6f);
+    expectNearVec(g.t, f.t, 1e-6f);
+  }
+}
+
 TEST(OctNormal, RoundTripWithinSeventyMicroradians) {
   std::mt19937 gen(5);
   std::normal_distribution<float> g(0.0f, 1.0f);

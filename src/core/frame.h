@@ -7,12 +7,22 @@
 
 namespace candela {
 
+// Where the frame turns over: normals with n.z above it take one branch, below it the other.
+// Duff et al. place it at n.z = 0, but modelled geometry is full of normals whose z is 0 only
+// up to rounding (a wall in the x-y plane's cross product, exactly 0 without fused multiply-adds
+// and +-1e-9 with them): there the two backends, or two builds, would turn the frame over
+// differently and send the same sample in mirrored directions. Any n.z far from -1 serves
+// (the formula below loses precision only as sign + n.z nears 0), and none is more likely
+// than another from rounding alone.
+constexpr float kFrameTurnZ = -1e-4f;
+
 struct Frame {
   Vec3 s, t, n;
 
-  // Duff et al. 2017, "Building an Orthonormal Basis, Revisited": branch-free and continuous.
+  // Duff et al. 2017, "Building an Orthonormal Basis, Revisited": branch-free and continuous
+  // but where it turns over (kFrameTurnZ).
   CANDELA_HDI explicit Frame(const Vec3& normal) : n(normal) {
-    const float sign = copysignf(1.0f, n.z);
+    const float sign = n.z >= kFrameTurnZ ? 1.0f : -1.0f;
     const float a = -1.0f / (sign + n.z);
     const float b = n.x * n.y * a;
     s = Vec3(1.0f + sign * n.x * n.x * a, sign * b, -sign * n.x);
