@@ -30,19 +30,24 @@ std::vector<CpuEngine> engines() {
   return list;
 }
 
-// The mean radiance (channel 0) of the view, with the blocker's MTL statements `blocker`.
-double renderMean(const std::string& blocker, CpuEngine engine, const test::TempDir& dir) {
+// The view's image, with the blocker's MTL statements `blocker`; with `sheets` 2 a second
+// blocker of the same material hangs a unit above the first; `render` adds to the render
+// settings.
+ImageRGB renderView(const std::string& blocker, CpuEngine engine, const test::TempDir& dir,
+                    int sheets = 1, const std::string& render = "") {
   dir.write("scene.mtl", "newmtl floor\nKd 0.5 0.5 0.5\nnewmtl blocker\nKd 0 0 0\n" + blocker);
   dir.write("scene.obj",
             "mtllib scene.mtl\n"
             "v -10 0 -10\nv 10 0 -10\nv 10 0 10\nv -10 0 10\n"
             "v -3 5 -3\nv 3 5 -3\nv 3 5 3\nv -3 5 3\n"
+            "v -3 6 -3\nv 3 6 -3\nv 3 6 3\nv -3 6 3\n"
             "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
-            "usemtl floor\nf 4 3 2 1\nusemtl blocker\nf 8/4 7/3 6/2 5/1\n");
+            "usemtl floor\nf 4 3 2 1\nusemtl blocker\nf 8/4 7/3 6/2 5/1\n" +
+                std::string(sheets == 2 ? "f 12/4 11/3 10/2 9/1\n" : ""));
   const std::string json = R"({
     "camera": {"width": 32, "height": 32, "fov": 1, "spp": 4, "position": [0, 20, 0],
                "look_at": [0, 0, 0], "up": [0, 0, -1]},
-    "render": {"max_depth": 1},
+    "render": {"max_depth": 1)" + render + R"(},
     "objects": [{"file": "scene.obj"}],
     "lights": [{"position": [0, 10, 0], "intensity": 7896}]
   })";
@@ -51,8 +56,13 @@ double renderMean(const std::string& blocker, CpuEngine engine, const test::Temp
   const SceneData data = flattenScene(desc);
   CpuRenderer renderer(engine);
   renderer.setScene(data, SceneChange::Structure);
-  const RenderResult r = renderer.render(RenderOptions{});
-  return test::regionStats(r.image, 0, 0, 32, 32, 0).mean;
+  return renderer.render(RenderOptions{}).image;
+}
+
+// The mean radiance (channel 0) of the view (renderView).
+double renderMean(const std::string& blocker, CpuEngine engine, const test::TempDir& dir,
+                  int sheets = 1) {
+  return test::regionStats(renderView(blocker, engine, dir, sheets), 0, 0, 32, 32, 0).mean;
 }
 
 class Alpha : public ::testing::TestWithParam<CpuEngine> {
@@ -71,6 +81,30 @@ TEST_P(Alpha, HalfPassesHalfTheRays) {
   // 4096 camera samples, each reaching a lit floor with probability 1/4: the fraction's standard
   // deviation is sqrt(3/16 / 4096) = 0.0068.
   EXPECT_NEAR(renderMean("d 0.5\n", GetParam(), dir) / kL0, 0.25, 4 * 0.0068);
+}
+
+TEST_P(Alpha, EachSheetIsPassedOnItsOwn) {
+  // Two sheets of alpha 0.5: a camera ray reaches the floor past both a quarter of the time, and
+  // a shadow ray from there reaches the light a quarter of the time, so 1/16 of the camera
+  // samples find a lit floor: sd sqrt(15/256 / 4096) = 0.0038. One threshold for the whole ray
+  // would pass both sheets or neither, half the time: 1/4.
+  EXPECT_NEAR(renderMean("d 0.5\n", GetParam(), dir, 2) / kL0, 1.0 / 16, 4 * 0.0038);
+}
+
+TEST_P(Alpha, EachSampleDrawsAnewWithoutAntialiasing) {
+  // Without antialiasing a pixel's four samples share their camera ray and their shadow ray,
+  // yet each passes the sheet on its own: a pixel is dark or lit throughout only where all four
+  // samples agree, (3/4)^4 + (1/4)^4 = 32% of them. A threshold drawn from the ray would make
+  // every pixel all dark or all lit, never converging.
+  const ImageRGB image = renderView("d 0.5\n", GetParam(), dir, 1, R"(, "antialiasing": false)");
+  size_t between = 0;
+  for (uint32_t y = 0; y < 32; ++y)
+    for (uint32_t x = 0; x < 32; ++x) {
+      const double v = image.at(x, y).x;
+      between += v > 0.1 * kL0 && v < 0.9 * kL0;
+    }
+  // 68% expected, sd sqrt(0.68 * 0.32 / 1024) = 1.5%.
+  EXPECT_GT(between, 1024u / 2);
 }
 
 TEST_P(Alpha, MaskTextures) {

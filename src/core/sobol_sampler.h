@@ -228,6 +228,13 @@ class SampleStream {
     *v = bitsToUnitFloat(reverseBits32(wordV));
   }
 
+  // The key of a ray that the sample's path casts here (geometry/ray.h, Ray::alphaKey), of the
+  // kind `kind` (RayKind): a pure function of (seed, pixel, sample index, dimension) like the
+  // numbers, drawing none of them.
+  CANDELA_HDI uint32_t rayKey(uint32_t kind) const {
+    return uint32_t(mix64(pixelKey_ ^ ((uint64_t(sampleIndex_) << 32) | dimension_)) >> 32) ^ kind;
+  }
+
   // The stream of a branch split off the sample's path here (render/path_branch.h): the same
   // sample's numbers from kBranchDimensions dimensions further on, where no path reaches from
   // the dimension it left.

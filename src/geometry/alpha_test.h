@@ -12,14 +12,23 @@
 
 namespace candela {
 
-// A number in [0, 1) that is a pure function of the ray's origin and direction: the same ray
-// meets the same threshold in every engine and on every run.
-CANDELA_HDI float rayHash(const Ray& ray) {
-  const float words[6] = {ray.origin.x,    ray.origin.y,    ray.origin.z,
-                          ray.direction.x, ray.direction.y, ray.direction.z};
-  uint64_t h = 0x9e3779b97f4a7c15ull;
-  for (int i = 0; i < 6; ++i) h = mix64(h ^ floatToBits(words[i]));
-  return toUnitFloat(h);
+// A hash of a vertex's position.
+CANDELA_HDI uint64_t hashPosition(const Vec3& p) {
+  return mix64(floatToBits(p.x) ^ (uint64_t(floatToBits(p.y)) << 32) ^ mix64(floatToBits(p.z)));
+}
+
+// The number in [0, 1) that a hit of `ray` on triangle `tri` passes when it is below the
+// triangle's alpha there: a pure function of the ray's key (Ray::alphaKey, from its sample's
+// random stream) and the triangle's vertices (in any order: not its index, which the own BVH's
+// build reorders and Embree's does not). Not of the ray's bits, which rounding makes differ
+// between the backends (fused multiply-adds on the GPU) and so would make their images part;
+// and not of the ray alone, which would pass two half-transparent sheets together half the time
+// instead of a quarter.
+CANDELA_HDI float alphaThreshold(const GeometryView& scene, const Triangle& tri, const Ray& ray) {
+  const uint64_t corners = hashPosition(scene.positions[tri.v[0]]) +
+                           hashPosition(scene.positions[tri.v[1]]) +
+                           hashPosition(scene.positions[tri.v[2]]);
+  return toUnitFloat(mix64(corners ^ ray.alphaKey));
 }
 
 // The alpha of triangle `tri` at barycentrics (b1, b2), in [0, 1]; the scene must have masks.
@@ -42,7 +51,7 @@ CANDELA_HD_COLD inline bool maskedAlphaKeepsHit(const GeometryView& scene, const
   const float alpha = triangleAlpha(scene, tri, b1, b2);
   if (alpha >= 1.0f) return true;
   if (!(alpha > 0.0f)) return false;
-  return rayHash(ray) < alpha;
+  return alphaThreshold(scene, tri, ray) < alpha;
 }
 
 // Whether `ray`'s hit of `tri` at (b1, b2) counts: always without masks.

@@ -24,6 +24,7 @@
 #include "render/light_selection.h"
 #include "render/path_branch.h"
 #include "render/ray_counters.h"
+#include "render/ray_kind.h"
 #include "render/shadow_query.h"
 #include "render/surface_color.h"
 
@@ -33,10 +34,12 @@ namespace candela {
 // has what earlier starts cost).
 constexpr uint32_t kRouletteDepth = 5;
 
-CANDELA_HDI_ALWAYS Ray spawnRay(const SurfacePoint& sp, const Vec3& wi) {
+// The ray leaving surface point `sp` towards `wi`, keyed `key` (SampleStream::rayKey).
+CANDELA_HDI_ALWAYS Ray spawnRay(const SurfacePoint& sp, const Vec3& wi, uint32_t key) {
   Ray r;
   r.origin = offsetRayOrigin(sp.p, sp.error, sp.ng, wi);
   r.direction = wi;
+  r.alphaKey = key;
   return r;
 }
 
@@ -45,17 +48,19 @@ CANDELA_HDI_ALWAYS Ray spawnRay(const SurfacePoint& sp, const Vec3& wi) {
 // selectPmf of sampling that light; no query where the light shows the point nothing.
 // `arrivalPdf` is the density in area measure with which the path's last BSDF sample found this
 // point where a light vertex could have been connected to instead (0 where not): the light's
-// share is then weighted against that connection too (render/light_path.h).
+// share is then weighted against that connection too (render/light_path.h). The shadow ray is
+// keyed `key`.
 CANDELA_HDI void sampleOneLight(const SceneView& scene, uint32_t index, float selectPmf,
                                 const Bsdf& bsdf, const SurfacePoint& sp, float u1, float u2,
-                                const Vec3& throughput, float arrivalPdf, ShadowQuery* shadow) {
+                                const Vec3& throughput, float arrivalPdf, uint32_t key,
+                                ShadowQuery* shadow) {
   const Light& light = scene.lights[index];
   LightSample ls;
   if (!sampleLight(scene, light, sp.p, u1, u2, &ls)) return;
   float bsdfPdf;
   const Vec3 f = evalBsdf(bsdf, ls.wi, &bsdfPdf);
   if (isBlack(f)) return;
-  shadow->ray = spawnRay(sp, ls.wi);
+  shadow->ray = spawnRay(sp, ls.wi, key);
   // The environment lies beyond everything: nothing short of infinity may block it.
   if (ls.distance < kInfinity) {
     const Vec3 target = sp.p + ls.wi * ls.distance;
@@ -97,7 +102,8 @@ CANDELA_HDI void estimateDirect(const SceneView& scene, const Bsdf& bsdf, const 
   float u1 = 0.0f, u2 = 0.0f;
   if (scene.lonePointLight) {
     drawLightNumbers(rng, scene.lights[0], &u1, &u2);
-    sampleOneLight(scene, 0, 1.0f, bsdf, sp, u1, u2, throughput, arrivalPdf, shadow);
+    sampleOneLight(scene, 0, 1.0f, bsdf, sp, u1, u2, throughput, arrivalPdf, rng.rayKey(kShadowRay),
+                   shadow);
     return;
   }
   rng.next2D(&u1, &u2);
@@ -105,7 +111,7 @@ CANDELA_HDI void estimateDirect(const SceneView& scene, const Bsdf& bsdf, const 
   const int index = selectLightForSample(scene, sp.p, hemisphere, rng, &u1, &selectPmf);
   if (index < 0) return;
   sampleOneLight(scene, uint32_t(index), selectPmf, bsdf, sp, u1, u2, throughput, arrivalPdf,
-                 shadow);
+                 rng.rayKey(kShadowRay), shadow);
 }
 
 // A path between its interactions: what it has gathered and what it carries to the next.
@@ -243,7 +249,8 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
   // A light vertex connected to here is the path's interaction depth + 1.
   st.connectable = smooth && scene.lightPathLights > 0 && depth < st.maxDepth;
   if (st.connectable && st.lightVertex.valid) {
-    connectLightVertex(scene, &st.lightVertex, bsdf, sp, st.throughput, connect);
+    connectLightVertex(scene, &st.lightVertex, bsdf, sp, st.throughput, rng.rayKey(kConnectionRay),
+                       connect);
     if (connect->active) ++counters.shadow;
   }
 
@@ -256,7 +263,7 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
   if (depth <= scene.glassSplitDepth && st.branches.waiting < kMaxWaitingBranches &&
       hasTwoDeltaLobes(m) && sampleBothDeltaLobes(bsdf, &bs, &reflected)) {
     PathBranch& b = st.branches.branch[st.branches.waiting++];
-    b.ray = spawnRay(sp, reflected.wi);
+    b.ray = spawnRay(sp, reflected.wi, rng.rayKey(kBranchRay));
     b.throughput = st.throughput * reflected.weight;
     b.depth = st.depth;
     b.maxDepth = st.maxDepth;
@@ -280,7 +287,7 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
     if (rng.next1D() >= survive) return false;
     st.throughput /= survive;
   }
-  st.ray = spawnRay(sp, bs.wi);
+  st.ray = spawnRay(sp, bs.wi, rng.rayKey(kBounceRay));
   ++counters.bounce;
   return true;
 }

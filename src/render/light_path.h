@@ -31,6 +31,7 @@
 #include "render/light_sample.h"
 #include "render/light_selection.h"
 #include "render/ray_counters.h"
+#include "render/ray_kind.h"
 #include "render/shadow_query.h"
 #include "render/surface_color.h"
 
@@ -160,6 +161,7 @@ CANDELA_HDI void traceLightVertex(const SceneView& scene, const Tracer& tracer, 
     ray.origin = light.position;
     ray.direction = sampleUniformCone(u1, u2, 2.0f);  // the whole sphere
   }
+  ray.alphaKey = rng.rayKey(kLightRay);
   Hit hit;
   ++counters.bounce;
   if (!tracer.closest(ray, &hit)) return;
@@ -194,10 +196,10 @@ CANDELA_HDI void traceLightVertex(const SceneView& scene, const Tracer& tracer, 
 // light vertex `lv`, as a shadow query whose contribution is weighted against next-event
 // estimation from lv (the balance heuristic over the two densities of lv's point); no query where
 // the connection carries nothing. The ray runs between the two points each offset off its
-// surface, stopped short of the far one as shadow rays to area lights are. lv keeps what every
-// connection to it shares (lightVertexNeePdf).
+// surface, stopped short of the far one as shadow rays to area lights are, and keyed `key`. lv
+// keeps what every connection to it shares (lightVertexNeePdf).
 CANDELA_HDI void connectLightVertex(const SceneView& scene, LightVertex* vertex, const Bsdf& bsdf,
-                                    const SurfacePoint& sp, const Vec3& throughput,
+                                    const SurfacePoint& sp, const Vec3& throughput, uint32_t key,
                                     ShadowQuery* query) {
   const LightVertex& lv = *vertex;
   const Vec3 d = lv.sp.p - sp.p;
@@ -237,6 +239,7 @@ CANDELA_HDI void connectLightVertex(const SceneView& scene, LightVertex* vertex,
   query->ray.origin = from;
   query->ray.direction = span / length;
   query->ray.tMax = length * (1.0f - kShadowEpsilon);
+  query->ray.alphaKey = key;
   query->active = true;
 }
 

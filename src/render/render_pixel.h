@@ -25,8 +25,11 @@ CANDELA_HDI Ray cameraSample(const SceneView& scene, uint32_t x, uint32_t y, Sam
   // A pinhole camera passes over the lens dimension, as a point light does over its own.
   rng.next2DIfUsed(scene.camera.apertureRadius > 0.0f, &lensU, &lensV);
   const uint32_t stride = scene.camera.pixelStride, offset = stride / 2;
-  return generateCameraRay(scene.camera, float(scene.camera.windowX + x * stride + offset) + *jx,
-                           float(scene.camera.windowY + y * stride + offset) + *jy, lensU, lensV);
+  Ray ray =
+      generateCameraRay(scene.camera, float(scene.camera.windowX + x * stride + offset) + *jx,
+                        float(scene.camera.windowY + y * stride + offset) + *jy, lensU, lensV);
+  ray.alphaKey = rng.rayKey(kCameraRay);
+  return ray;
 }
 
 // Adds one sample's radiance L, whose camera ray is `ray` through (jx, jy) in the pixel, to

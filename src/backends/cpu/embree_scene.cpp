@@ -44,7 +44,7 @@ void rejectMaskedHit(const RTCFilterFunctionNArguments* args) {
     const uint32_t triangle =
         triangleOfHit(context->firstTriangleOf, RTCHitN_geomID(args->hit, n, i),
                       RTCHitN_instID(args->hit, n, i, 0), RTCHitN_primID(args->hit, n, i));
-    // The world's ray, as candela's own traversal tests it (a stochastic alpha hashes it).
+    // The world's ray, as candela's own traversal tests it (its key draws the alpha test).
     const Ray& ray = context->rays[RTCRayN_id(args->ray, n, i)];
     if (!alphaKeepsHit(*geometry, geometry->triangles[triangle], RTCHitN_u(args->hit, n, i),
                        RTCHitN_v(args->hit, n, i), ray))
