@@ -128,8 +128,8 @@ class Scene:
         pass name raises ValueError.
 
         spp and seed override the scene's. backend: "auto" (the CPU until the CUDA backend has
-        passed its tests on a GPU), "cpu" or "cuda" (untested; RuntimeError where it cannot
-        run). sample_range=(first, count) renders only samples [first, first + count) of the
+        passed its tests on a GPU), "cpu" or "cuda" (run on a GPU once, not yet the default;
+        RuntimeError where it cannot run). sample_range=(first, count) renders only samples [first, first + count) of the
         spp and returns their mean; the count-weighted mean of disjoint slices equals the full
         render to rounding. threads: CPU threads, 0 for all cores; it holds all of the call's
         work, the BVH build and the denoiser included, not only the tiles.
