@@ -12,8 +12,8 @@ struct Ray {
   Vec3 origin;
   Vec3 direction;
   float tMax = kInfinity;
-  // The alpha test's key (geometry/alpha_test.h): where the ray's path drew it from its sample's
-  // random stream (SampleStream::rayKey), so that it does not depend on the ray's rounding.
+  // The alpha test's key (geometry/alpha_test.h), drawn from the ray's sample stream where its
+  // path casts it (SampleStream::rayKey), so that it does not depend on the ray's rounding.
   uint32_t alphaKey = 0;
 };
 
