@@ -129,10 +129,11 @@ class Scene:
 
         spp and seed override the scene's. backend: "auto" (the CPU until the CUDA backend has
         passed its tests on a GPU), "cpu" or "cuda" (run on a GPU once, not yet the default;
-        RuntimeError where it cannot run). sample_range=(first, count) renders only samples [first, first + count) of the
-        spp and returns their mean; the count-weighted mean of disjoint slices equals the full
-        render to rounding. threads: CPU threads, 0 for all cores; it holds all of the call's
-        work, the BVH build and the denoiser included, not only the tiles.
+        RuntimeError where it cannot run). sample_range=(first, count) renders only samples
+        [first, first + count) of the spp and returns their mean; the count-weighted mean of
+        disjoint slices equals the full render to rounding. threads: CPU threads, 0 for all
+        cores; it holds all of the call's work, the BVH build and the denoiser included, not
+        only the tiles.
 
         Renders of one loaded scene and its frames share the flattened scene and its BVH: a
         later render whose geometry is unchanged (another spp, seed or sample range, or a frame
