@@ -193,8 +193,8 @@ TEST_F(CliTest, CudaBackendWithoutGpuFailsClearly) {
 
 #endif
 
-// Until the CUDA backend has passed its tests on a GPU, `auto` renders on the CPU: silently where
-// there is no GPU, with a one-line note where one would be left unused.
+// `auto` renders on the CPU (the GPU is not yet the default): silently where there is no GPU,
+// with a one-line note where one would be left unused.
 TEST_F(CliTest, AutoRendersOnTheCpu) {
   writeFile("tiny.json", kTinyScene);
   const RunResult r = run("render tiny.json -o x.png --stats x.json");

@@ -127,9 +127,8 @@ class Scene:
         (height, width, 3) float32 for the others, (height, width) uint32 for the ids. An unknown
         pass name raises ValueError.
 
-        spp and seed override the scene's. backend: "auto" (the CPU until the CUDA backend has
-        passed its tests on a GPU), "cpu" or "cuda" (run on a GPU once, not yet the default;
-        RuntimeError where it cannot run). sample_range=(first, count) renders only samples
+        spp and seed override the scene's. backend: "auto" (the CPU for now), "cpu" or "cuda"
+        (an NVIDIA GPU, not yet the default; RuntimeError where it cannot run). sample_range=(first, count) renders only samples
         [first, first + count) of the spp and returns their mean; the count-weighted mean of
         disjoint slices equals the full render to rounding. threads: CPU threads, 0 for all
         cores; it holds all of the call's work, the BVH build and the denoiser included, not

@@ -35,8 +35,8 @@ def _connect(address: Optional[str]):
 
 
 def _task_options(ray, cpus_per_task: int, max_retries: int, backend: str) -> dict:
-    # Only the cuda backend renders on a GPU ("auto" means the CPU until the CUDA backend has
-    # passed its tests on one), so only its tasks ask for one.
+    # Only the cuda backend renders on a GPU ("auto" means the CPU for now), so only its tasks
+    # ask for one.
     gpus = ray.cluster_resources().get("GPU", 0)
     options = {"max_retries": max_retries, "retry_exceptions": False, "scheduling_strategy": "SPREAD"}
     if backend == "cuda" and gpus >= 1:

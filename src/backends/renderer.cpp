@@ -56,8 +56,7 @@ Backend chooseBackend(Backend requested, std::string* note) {
     case Backend::Auto:
       if (note && cudaUsable(&reason))
         *note =
-            "a GPU is present but `auto` renders on the CPU until the CUDA backend has passed "
-            "its tests on a real GPU; ask for the cuda backend to use it";
+            "a GPU is present but `auto` renders on the CPU; ask for the cuda backend to use it";
       return Backend::Cpu;
     case Backend::Cpu:
       return Backend::Cpu;

@@ -30,7 +30,7 @@ bool backendFromName(const std::string& name, Backend* backend);
 bool cudaUsable(std::string* reason);
 
 // Resolves Auto to the CPU, with a one-line `note` when a GPU is present but left unused (the
-// CUDA backend has not yet passed its parity tests on a real GPU), and checks that the backend
+// GPU is not yet the default: docs/performance.md, CUDA backend), and checks that the backend
 // can run here: BackendError otherwise.
 Backend chooseBackend(Backend requested, std::string* note);
 
