@@ -20,6 +20,8 @@
 
 #include "backends/renderer.h"
 #include "image/image_io.h"
+#include "image_difference.h"
+#include "require_gpu.h"
 #include "spawn_candela.h"
 
 namespace fs = std::filesystem;
@@ -86,6 +88,8 @@ class CliTest : public ::testing::Test {
   RunResult runEndless(const std::string& args) const {
     return run(args + " --backend cpu --spp 1000000000", "timeout 60");
   }
+
+  void expectSignalsStopTheRender(const std::string& backend) const;
 
   fs::path dir_;
 };
@@ -277,9 +281,9 @@ TEST_F(CliTest, QuietPrintsNothing) {
   EXPECT_EQ(candela::readImage(path("q.exr").string()).width, 16u);
 }
 
-// SIGINT (Ctrl-C) and SIGTERM (a scheduler, `kill`) both stop the render cleanly, and soon even
-// when one tile alone would take hours (very many samples per pixel).
-TEST_F(CliTest, InterruptStopsWithoutWritingAnImage) {
+// SIGINT (Ctrl-C) and SIGTERM (a scheduler, `kill`) both stop a render on `backend` cleanly, and
+// soon even when one tile alone would take hours (very many samples per pixel).
+void CliTest::expectSignalsStopTheRender(const std::string& backend) const {
   for (const int signal : {SIGINT, SIGTERM})
     for (const char* camera : {R"("width": 512, "height": 512, "spp": 4096)",
                                R"("width": 16, "height": 16, "spp": 1000000000)"}) {
@@ -294,7 +298,7 @@ TEST_F(CliTest, InterruptStopsWithoutWritingAnImage) {
     })");
       const pid_t pid =
           candela::test::spawnCandela({"render", path("long.json").string(), "-o",
-                                       path("long.png").string(), "--backend", "cpu"},
+                                       path("long.png").string(), "--backend", backend},
                                       path("stdout.txt").string(), path("stderr.txt").string());
       ASSERT_GT(pid, 0);
 
@@ -315,6 +319,38 @@ TEST_F(CliTest, InterruptStopsWithoutWritingAnImage) {
       EXPECT_EQ(slurp(path("stderr.txt")), "candela: interrupted, no image written\n");
       EXPECT_FALSE(fs::exists(path("long.png")));
     }
+}
+
+TEST_F(CliTest, InterruptStopsWithoutWritingAnImage) { expectSignalsStopTheRender("cpu"); }
+
+// The CLI's own path on the GPU (`--backend cuda`), which the CUDA backend's tests do not reach:
+// its summary and statistics, the signals, a sequence's frames. They need a GPU (scripts/
+// gpu-check runs them on one) and skip where there is none.
+
+// An image and a CPU render of it agree up to rounding (test_cuda_backend.cpp says why).
+void expectSameUpToRounding(const fs::path& cpu, const fs::path& gpu) {
+  EXPECT_LT(candela::test::relMseAgainst(candela::readImage(cpu.string()).pixels,
+                                         candela::readImage(gpu.string()).pixels),
+            1e-4)
+      << gpu;
+}
+
+TEST_F(CliTest, RendersOnTheGpuAsOnTheCpu) {
+  REQUIRE_GPU();
+  writeFile("tiny.json", kTinyScene);
+  const RunResult gpu = run("render tiny.json --backend cuda -o gpu.pfm --stats gpu.json");
+  ASSERT_EQ(gpu.exitCode, 0) << gpu.err;
+  EXPECT_TRUE(gpu.err.empty()) << gpu.err;
+  EXPECT_EQ(countLines(gpu.out), 1u) << gpu.out;
+  EXPECT_EQ(gpu.out.rfind("gpu.pfm: 16x12, 4 spp, ", 0), 0u) << gpu.out;
+  EXPECT_NE(slurp(path("gpu.json")).find(R"("backend": "cuda")"), std::string::npos);
+  ASSERT_EQ(run("render tiny.json --backend cpu -o cpu.pfm").exitCode, 0);
+  expectSameUpToRounding(path("cpu.pfm"), path("gpu.pfm"));
+}
+
+TEST_F(CliTest, InterruptStopsTheRenderOnTheGpu) {
+  REQUIRE_GPU();
+  expectSignalsStopTheRender("cuda");
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -375,6 +411,22 @@ TEST_F(CliTest, SequenceOfFilesAndAnimationBlockGiveBitIdenticalFrames) {
   }
   EXPECT_NE(slurp(path("a/frame_0000.pfm")), slurp(path("a/frame_0001.pfm")));
   EXPECT_FALSE(fs::exists(path("a/frame_0003.pfm")));
+}
+
+// The device keeps a sequence's scene between frames and moves only what changed
+// (render/scene_change.h): an object, a light and the camera here, each frame as on the CPU.
+TEST_F(CliTest, SequenceOnTheGpuRendersEachFrameAsTheCpu) {
+  REQUIRE_GPU();
+  writeFile("anim.json", animatedScene(3, R"(
+      {"target": "ball", "property": "position", "keys": [[0, [0, 0, 0]], [2, [1, 0, 0]]]},
+      {"target": "lamp", "property": "intensity", "keys": [[0, 100], [2, 300]]},
+      {"target": "camera", "property": "fov", "keys": [[0, 50], [2, 70]]})"));
+  const RunResult gpu = run("render anim.json -o g/ --format pfm --backend cuda");
+  ASSERT_EQ(gpu.exitCode, 0) << gpu.err;
+  ASSERT_EQ(run("render anim.json -o c/ --format pfm --backend cpu").exitCode, 0);
+  for (const char* name : {"frame_0000.pfm", "frame_0001.pfm", "frame_0002.pfm"})
+    expectSameUpToRounding(path("c") / name, path("g") / name);
+  EXPECT_NE(slurp(path("g/frame_0000.pfm")), slurp(path("g/frame_0001.pfm")));
 }
 
 TEST_F(CliTest, EachFrameHasItsOwnSeedSoNoiseDiffersButTheMeanAgrees) {

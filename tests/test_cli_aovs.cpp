@@ -11,10 +11,13 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include "image/atomic_file.h"
 #include "image/image_io.h"
+#include "image_difference.h"
 #include "moving_sphere_scene.h"
+#include "require_gpu.h"
 #include "temp_dir.h"
 
 namespace fs = std::filesystem;
@@ -76,6 +79,37 @@ TEST_F(CliAovTest, ExrHoldsThePassesAsLayersBesideTheImage) {
   const candela::ExrChannels plain = candela::readExrChannels(path("plain.exr").string());
   for (const char* c : {"R", "G", "B"})
     EXPECT_EQ(channel(exr, c)->pixels, channel(plain, c)->pixels) << c;
+}
+
+// On the GPU (`--backend cuda`; skipped where there is none) the same layers hold what the CPU's
+// do, up to rounding, and the beauty is that of the device's render without passes.
+TEST_F(CliAovTest, PassesOnTheGpuAsOnTheCpu) {
+  REQUIRE_GPU();
+  const std::string passes = " -q --aov depth,normal,instance,material";
+  ASSERT_EQ(run("render s.json --backend cpu -o cpu.exr" + passes), 0);
+  ASSERT_EQ(run("render s.json --backend cuda -o gpu.exr" + passes), 0);
+  ASSERT_EQ(run("render s.json --backend cuda -q -o plain.exr"), 0);
+  const candela::ExrChannels cpu = candela::readExrChannels(path("cpu.exr").string());
+  const candela::ExrChannels gpu = candela::readExrChannels(path("gpu.exr").string());
+  const candela::ExrChannels plain = candela::readExrChannels(path("plain.exr").string());
+  ASSERT_EQ(gpu.channels.size(), cpu.channels.size());
+  for (const candela::ExrChannel& c : cpu.channels) {
+    SCOPED_TRACE(c.name);
+    const candela::ExrChannel* g = channel(gpu, c.name);
+    ASSERT_NE(g, nullptr);
+    if (c.isUint) {  // the id of the sample nearest the pixel centre: the same sample
+      EXPECT_EQ(g->pixels, c.pixels);
+    } else {
+      std::vector<float> finite = c.pixels, gpuFinite = g->pixels;  // depth: inf on the background
+      for (size_t i = 0; i < finite.size(); ++i)
+        if (std::isinf(finite[i]) && finite[i] == gpuFinite[i]) finite[i] = gpuFinite[i] = 0;
+      EXPECT_LT(candela::test::relMseAgainst(finite, gpuFinite), 1e-4);
+    }
+  }
+  for (const char* c : {"R", "G", "B"})
+    EXPECT_LT(candela::test::relMseAgainst(channel(plain, c)->pixels, channel(gpu, c)->pixels),
+              1e-4)
+        << c;
 }
 
 TEST_F(CliAovTest, PngGetsSiblingPfmFiles) {

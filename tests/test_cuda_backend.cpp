@@ -13,7 +13,9 @@
 
 #include "core/constants.h"
 #include "image/image_io.h"
+#include "image_difference.h"
 #include "render_test_util.h"
+#include "require_gpu.h"
 #include "texture_test_util.h"
 
 #if defined(CANDELA_HAS_CUDA)
@@ -35,12 +37,6 @@ namespace {
 TEST(CudaBackend, NotBuilt) { GTEST_SKIP() << "this build has no CUDA backend (nvcc not found)"; }
 
 #else
-
-#define REQUIRE_GPU()                                                \
-  do {                                                               \
-    std::string reason;                                              \
-    if (!cudaBackendAvailable(&reason)) GTEST_SKIP() << "no GPU: " << reason; \
-  } while (0)
 
 RenderResult renderCuda(const SceneData& data, bool aovs = false) {
   CudaRenderer renderer;
@@ -76,15 +72,12 @@ TEST(CudaBackend, MatchesCpuWithinRounding) {
   const RenderResult cpu = renderCpu(data.view(), RenderOptions{});
   const RenderResult gpu = renderCuda(data);
   ASSERT_EQ(cpu.image.pixels.size(), gpu.image.pixels.size());
-  double relMse = 0;
   size_t outliers = 0;
   for (size_t i = 0; i < cpu.image.pixels.size(); ++i) {
     const double a = cpu.image.pixels[i], b = gpu.image.pixels[i];
-    relMse += (a - b) * (a - b) / (a * a + 1e-2);
     if (std::fabs(a - b) > 1e-3 * (std::fabs(a) + 1e-2)) ++outliers;
   }
-  relMse /= double(cpu.image.pixels.size());
-  EXPECT_LT(relMse, 1e-4);
+  EXPECT_LT(test::relMseAgainst(cpu.image.pixels, gpu.image.pixels), 1e-4);
   EXPECT_LT(outliers, cpu.image.pixels.size() / 50);
   EXPECT_EQ(cpu.rays.camera, gpu.rays.camera);
 }
@@ -138,12 +131,7 @@ TEST(CudaBackend, MatchesCpuWithAreaLightsAndAnEnvironmentMap) {
   ASSERT_FALSE(data.lightTree.empty());
   const RenderResult cpu = renderCpu(data.view(), RenderOptions{});
   const RenderResult gpu = renderCuda(data);
-  double relMse = 0;
-  for (size_t i = 0; i < cpu.image.pixels.size(); ++i) {
-    const double a = cpu.image.pixels[i], b = gpu.image.pixels[i];
-    relMse += (a - b) * (a - b) / (a * a + 1e-2);
-  }
-  EXPECT_LT(relMse / double(cpu.image.pixels.size()), 1e-4);
+  EXPECT_LT(test::relMseAgainst(cpu.image.pixels, gpu.image.pixels), 1e-4);
   EXPECT_EQ(cpu.rays.camera, gpu.rays.camera);
 }
 
