@@ -197,6 +197,22 @@ TEST_F(CliTest, CudaBackendWithoutGpuFailsClearly) {
 
 #endif
 
+// `candela devices`: a line per backend, then the one `auto` picks.
+TEST_F(CliTest, DevicesSaysWhatEachBackendRendersOn) {
+  const RunResult r = run("devices --threads 1");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_TRUE(r.err.empty()) << r.err;
+  ASSERT_EQ(countLines(r.out), 3u) << r.out;
+  EXPECT_EQ(r.out.rfind("cpu:  ", 0), 0u) << r.out;
+  EXPECT_NE(r.out.find(", 1 thread, "), std::string::npos) << r.out;
+  std::string reason;
+  const std::string cuda =
+      candela::cudaUsable(&reason) ? "\ncuda: " : "\ncuda: not usable: " + reason + "\n";
+  EXPECT_NE(r.out.find(cuda), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\nauto: renders on the cpu\n"), std::string::npos) << r.out;
+  EXPECT_EQ(run("devices --threads 0").exitCode, 2);
+}
+
 // `auto` renders on the CPU (the GPU is not yet the default): silently where there is no GPU,
 // with a one-line note where one would be left unused.
 TEST_F(CliTest, AutoRendersOnTheCpu) {

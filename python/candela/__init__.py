@@ -12,14 +12,14 @@ from __future__ import annotations
 
 import json
 import os
-from typing import Any, Dict, Optional, Sequence, Tuple
+from typing import Any, Dict, List, Optional, Sequence, Tuple
 
 import numpy as np
 
 from . import _candela
 from ._candela import ImageWriteError, SceneError, cuda_available
 
-__all__ = ["Scene", "SceneError", "ImageWriteError", "write_image", "cuda_available"]
+__all__ = ["Scene", "SceneError", "ImageWriteError", "write_image", "cuda_available", "devices"]
 __version__ = "0.1.0"
 
 
@@ -196,6 +196,14 @@ def _denoised(result: Dict[str, np.ndarray], aovs: Optional[list], threads: int 
     result["noisy"] = result["image"]
     result["image"] = clean
     return {k: v for k, v in result.items() if k in ("image", "noisy") or k in aovs}
+
+
+def devices(threads: int = 0) -> List[Dict[str, Any]]:
+    """What each backend would render on here, or why it cannot: one dict per backend, the CPU's
+    then the GPU's, {"backend": "cpu" or "cuda", "usable": bool, "summary": str (the processor,
+    or the reason), "auto": bool (the backend that backend="auto" renders on)}. threads: CPU
+    threads, as Scene.render's (0 for all cores). `candela devices` prints the same."""
+    return _candela.devices(int(threads))
 
 
 def write_image(path: str | os.PathLike, img: Any, gamma: float | str = 2.2,

@@ -177,3 +177,13 @@ def test_ctrl_c_cancels_a_render(tmp_path):
     proc.send_signal(signal.SIGINT)
     out, _ = proc.communicate(timeout=30)
     assert out.startswith("interrupted after"), out
+
+
+def test_devices_name_the_cpu_and_say_where_auto_renders():
+    reports = candela.devices(threads=1)
+    assert [r["backend"] for r in reports] == ["cpu", "cuda"]
+    cpu, gpu = reports
+    assert cpu["usable"] and ", 1 thread, " in cpu["summary"]
+    assert gpu["usable"] == candela.cuda_available()
+    assert gpu["usable"] or gpu["summary"].startswith("not usable: ")
+    assert [r["backend"] for r in reports if r["auto"]] == ["cpu"]  # auto: the CPU for now

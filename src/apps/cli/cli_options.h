@@ -50,6 +50,11 @@ struct InfoOptions {
   std::string scene;
 };
 
+// `candela devices`.
+struct DevicesOptions {
+  int threads = 0;  // as render's --threads; 0: all cores
+};
+
 // Accepts plain decimal integers only and strips leading zeros, because CLI11 would otherwise
 // read "010" as octal, "0x10" as hex and wrap "-1" around for unsigned types.
 inline CLI::Validator decimalInteger(bool positive, uint64_t max) {

@@ -8,6 +8,7 @@
 
 #include "apps/cli/cli_error.h"
 #include "apps/cli/cli_options.h"
+#include "apps/cli/devices_command.h"
 #include "apps/cli/info_command.h"
 #include "apps/cli/render_command.h"
 #include "apps/cli/version.h"
@@ -26,10 +27,11 @@ int fail(ExitCode code, const char* message) {
 
 // Runs the chosen subcommand and maps each kind of error to its exit code.
 int dispatch(CLI::App& app, CLI::App* render, const RenderCommandOptions& renderOptions, CLI::App* info,
-             const InfoOptions& infoOptions) {
+             const InfoOptions& infoOptions, CLI::App* devices, const DevicesOptions& devicesOptions) {
   try {
     if (render->parsed()) return runRender(renderOptions);
     if (info->parsed()) return runInfo(infoOptions);
+    if (devices->parsed()) return runDevices(devicesOptions);
     std::fputs(app.help().c_str(), stderr);  // no subcommand
     return kExitUsage;
   } catch (const CliError& e) {
@@ -62,8 +64,10 @@ int main(int argc, char** argv) {
 
   RenderCommandOptions renderOptions;
   InfoOptions infoOptions;
+  DevicesOptions devicesOptions;
   CLI::App* render = addRenderCommand(app, &renderOptions);
   CLI::App* info = addInfoCommand(app, &infoOptions);
+  CLI::App* devices = addDevicesCommand(app, &devicesOptions);
 
   try {
     app.parse(argc, argv);
@@ -71,5 +75,5 @@ int main(int argc, char** argv) {
     // Help and version requests are "errors" with exit code 0; real ones are usage errors.
     return app.exit(e) == 0 ? kExitOk : kExitUsage;
   }
-  return dispatch(app, render, renderOptions, info, infoOptions);
+  return dispatch(app, render, renderOptions, info, infoOptions, devices, devicesOptions);
 }

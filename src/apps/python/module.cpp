@@ -26,6 +26,7 @@
 
 #include "apps/denoise/oidn_denoiser.h"
 #include "apps/python/interruptible.h"
+#include "backends/backend_report.h"
 #include "backends/light_path_pilot.h"
 #include "backends/renderer.h"
 #include "backends/seen_emitters.h"
@@ -415,6 +416,19 @@ NB_MODULE(_candela, m) {
   m.def("denoise", &denoiseArrays, "library"_a, "image"_a, "albedo"_a, "normal"_a,
         "direct"_a = nb::none(), "emission"_a = nb::none(), "seen_emission"_a = nb::none(),
         "threads"_a = 0);
+  m.def("devices", [](int threads) {
+    const std::string autoPick = backendName(chooseBackend(Backend::Auto, nullptr));
+    nb::list reports;
+    for (const BackendReport& r : reportBackends(threads)) {
+      nb::dict d;
+      d["backend"] = r.backend;
+      d["usable"] = r.usable;
+      d["summary"] = r.summary;
+      d["auto"] = autoPick == r.backend;
+      reports.append(d);
+    }
+    return reports;
+  }, "threads"_a = 0);
   m.def("cuda_available", [] {
     std::string reason;
     return cudaUsable(&reason);

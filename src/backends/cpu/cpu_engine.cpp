@@ -5,6 +5,10 @@
 
 #include "backends/backend_error.h"
 
+#if defined(CANDELA_HAS_EMBREE)
+#include <embree3/rtcore_config.h>
+#endif
+
 namespace candela {
 
 const char* cpuEngineName(CpuEngine engine) {
@@ -36,6 +40,14 @@ bool embreeAvailable() {
   return true;
 #else
   return false;
+#endif
+}
+
+const char* embreeVersion() {
+#if defined(CANDELA_HAS_EMBREE)
+  return RTC_VERSION_STRING;
+#else
+  return "";
 #endif
 }
 

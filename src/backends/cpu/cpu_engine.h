@@ -20,6 +20,9 @@ bool cpuEngineFromName(const std::string& name, CpuEngine* engine);
 // Whether this build has the Embree engine (CANDELA_EMBREE).
 bool embreeAvailable();
 
+// The version of the Embree it was built with ("3.13.5"); "" without Embree.
+const char* embreeVersion();
+
 // Auto picks Embree for scenes of at least kEmbreeFromTriangles triangles, and for smaller scenes
 // of at most kSphereBlocksUpTo spheres (backends/cpu/sphere_blocks.h), which the Embree engine
 // tests in blocks (of 4 then): there, on one core, the default room (nine spheres, a 4,320-triangle

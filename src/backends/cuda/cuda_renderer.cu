@@ -2,6 +2,8 @@
 // logic is the shared integrator; this file only maps pixels to threads.
 #include "backends/cuda/cuda_renderer.h"
 
+#include <unistd.h>
+
 #include <chrono>
 
 #include "backends/cuda/cuda_check.h"
@@ -27,7 +29,13 @@ bool cudaBackendAvailable(std::string* reason) {
   const cudaError_t err = cudaGetDeviceCount(&count);
   if (err != cudaSuccess) {
     cudaGetLastError();
-    if (reason) *reason = cudaGetErrorString(err);
+    if (reason) {
+      *reason = cudaGetErrorString(err);
+      // What the runtime says where no driver is loaded at all is about versions; say what is
+      // missing first.
+      if (err == cudaErrorInsufficientDriver && access("/proc/driver/nvidia/version", F_OK) != 0)
+        *reason = "no NVIDIA driver is loaded (CUDA: " + *reason + ")";
+    }
     return false;
   }
   if (count == 0) {
@@ -35,6 +43,26 @@ bool cudaBackendAvailable(std::string* reason) {
     return false;
   }
   return true;
+}
+
+std::string cudaDeviceSummary() {
+  int device = 0, count = 0, driver = 0, runtime = 0;
+  cudaDeviceProp p{};
+  if (cudaGetDevice(&device) != cudaSuccess || cudaGetDeviceCount(&count) != cudaSuccess ||
+      cudaGetDeviceProperties(&p, device) != cudaSuccess) {
+    cudaGetLastError();
+    return "a CUDA device that does not describe itself";
+  }
+  cudaDriverGetVersion(&driver);
+  cudaRuntimeGetVersion(&runtime);
+  char text[512];
+  std::snprintf(text, sizeof text,
+                "%s (device %d of %d), %.1f GiB, compute capability %d.%d, %d multiprocessors; "
+                "driver %d.%d, runtime %d.%d",
+                p.name, device, count, double(p.totalGlobalMem) / (1024.0 * 1024.0 * 1024.0),
+                p.major, p.minor, p.multiProcessorCount, driver / 1000, driver % 1000 / 10,
+                runtime / 1000, runtime % 1000 / 10);
+  return text;
 }
 
 namespace {

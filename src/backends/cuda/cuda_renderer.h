@@ -20,6 +20,10 @@ namespace candela {
 // device found" or the driver's error).
 bool cudaBackendAvailable(std::string* reason);
 
+// The device the backend renders on, for people: its name, memory, compute capability and the
+// driver's and runtime's versions. Call only where cudaBackendAvailable is true.
+std::string cudaDeviceSummary();
+
 class CudaRenderer final : public Renderer {
  public:
   CudaRenderer();  // throws CudaError without a usable device
