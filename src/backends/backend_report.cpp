@@ -4,8 +4,10 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
-
 #include <fstream>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "backends/cpu/cpu_engine.h"
 #include "backends/renderer.h"
@@ -50,7 +52,7 @@ std::string cpuSummary(int threads) {
   const int used = int(std::min(
       tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism),
       size_t(tbb::this_task_arena::max_concurrency())));
-  std::string model = cpuModel();
+  const std::string model = cpuModel();
   std::string text = (model.empty() ? std::string("this processor") : model) + ", " +
                      std::to_string(used) + (used == 1 ? " thread, " : " threads, ") +
                      widestSimd() + "; ray engines: ";
