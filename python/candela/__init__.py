@@ -128,11 +128,11 @@ class Scene:
         pass name raises ValueError.
 
         spp and seed override the scene's. backend: "auto" (the CPU for now), "cpu" or "cuda"
-        (an NVIDIA GPU, not yet the default; RuntimeError where it cannot run). sample_range=(first, count) renders only samples
-        [first, first + count) of the spp and returns their mean; the count-weighted mean of
-        disjoint slices equals the full render to rounding. threads: CPU threads, 0 for all
-        cores; it holds all of the call's work, the BVH build and the denoiser included, not
-        only the tiles.
+        (an NVIDIA GPU, not yet the default; RuntimeError where it cannot run).
+        sample_range=(first, count) renders only samples [first, first + count) of the spp and
+        returns their mean; the count-weighted mean of disjoint slices equals the full render to
+        rounding. threads: CPU threads, 0 for all cores; it holds all of the call's work, the BVH
+        build and the denoiser included, not only the tiles.
 
         Renders of one loaded scene and its frames share the flattened scene and its BVH: a
         later render whose geometry is unchanged (another spp, seed or sample range, or a frame

@@ -11,9 +11,9 @@ namespace candela {
 // Duff et al. place it at n.z = 0, but modelled geometry is full of normals whose z is 0 only
 // up to rounding (a wall whose normal lies in the x-y plane: its cross product's z is exactly 0
 // without fused multiply-adds and +-1e-9 with them): there the two backends, or two builds,
-// would turn the frame over differently and send the same sample in mirrored directions. Any n.z far from -1 serves
-// (the formula below loses precision only as sign + n.z nears 0), and none is more likely
-// than another from rounding alone.
+// would turn the frame over differently and send the same sample in mirrored directions. Any
+// n.z far from -1 serves (the formula below loses precision only as sign + n.z nears 0), and
+// none is more likely than another from rounding alone.
 constexpr float kFrameTurnZ = -1e-4f;
 
 struct Frame {
