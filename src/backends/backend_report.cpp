@@ -76,8 +76,9 @@ std::string cudaSummary(bool* usable) {
 std::vector<BackendReport> reportBackends(int threads) {
   bool cudaReady = false;
   std::string cuda = cudaSummary(&cudaReady);
-  return {{backendName(Backend::Cpu), true, cpuSummary(threads)},
-          {backendName(Backend::Cuda), cudaReady, std::move(cuda)}};
+  const Backend picked = chooseBackend(Backend::Auto, nullptr);
+  return {{backendName(Backend::Cpu), true, cpuSummary(threads), picked == Backend::Cpu},
+          {backendName(Backend::Cuda), cudaReady, std::move(cuda), picked == Backend::Cuda}};
 }
 
 }  // namespace candela

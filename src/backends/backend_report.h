@@ -11,6 +11,7 @@ struct BackendReport {
   const char* backend;  // backendName's: "cpu" or "cuda"
   bool usable;
   std::string summary;  // what it runs on, or why it cannot run
+  bool autoPicks;       // whether `auto` renders on it (chooseBackend)
 };
 
 // The CPU's report, then the GPU's. `threads`: the CPU threads a render would use, as --threads

@@ -2,10 +2,10 @@
 
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include "apps/cli/cli_error.h"
 #include "backends/backend_report.h"
-#include "backends/renderer.h"
 
 namespace candela::cli {
 
@@ -18,9 +18,11 @@ CLI::App* addDevicesCommand(CLI::App& app, DevicesOptions* options) {
 }
 
 int runDevices(const DevicesOptions& options) {
-  for (const BackendReport& r : reportBackends(options.threads))
+  const std::vector<BackendReport> reports = reportBackends(options.threads);
+  for (const BackendReport& r : reports)
     std::printf("%-5s %s\n", (std::string(r.backend) + ":").c_str(), r.summary.c_str());
-  std::printf("auto: renders on the %s\n", backendName(chooseBackend(Backend::Auto, nullptr)));
+  for (const BackendReport& r : reports)
+    if (r.autoPicks) std::printf("auto: renders on the %s\n", r.backend);
   return kExitOk;
 }
 

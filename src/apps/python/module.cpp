@@ -417,14 +417,13 @@ NB_MODULE(_candela, m) {
         "direct"_a = nb::none(), "emission"_a = nb::none(), "seen_emission"_a = nb::none(),
         "threads"_a = 0);
   m.def("devices", [](int threads) {
-    const std::string autoPick = backendName(chooseBackend(Backend::Auto, nullptr));
     nb::list reports;
     for (const BackendReport& r : reportBackends(threads)) {
       nb::dict d;
       d["backend"] = r.backend;
       d["usable"] = r.usable;
       d["summary"] = r.summary;
-      d["auto"] = autoPick == r.backend;
+      d["auto"] = r.autoPicks;
       reports.append(d);
     }
     return reports;
