@@ -102,8 +102,8 @@ CANDELA_HDI void estimateDirect(const SceneView& scene, const Bsdf& bsdf, const 
   float u1 = 0.0f, u2 = 0.0f;
   if (scene.lonePointLight) {
     drawLightNumbers(rng, scene.lights[0], &u1, &u2);
-    sampleOneLight(scene, 0, 1.0f, bsdf, sp, u1, u2, throughput, arrivalPdf, rng.rayKey(kShadowRay),
-                   shadow);
+    sampleOneLight(scene, 0, 1.0f, bsdf, sp, u1, u2, throughput, arrivalPdf,
+                   rayKeyFor(scene, rng, kShadowRay), shadow);
     return;
   }
   rng.next2D(&u1, &u2);
@@ -111,7 +111,7 @@ CANDELA_HDI void estimateDirect(const SceneView& scene, const Bsdf& bsdf, const 
   const int index = selectLightForSample(scene, sp.p, hemisphere, rng, &u1, &selectPmf);
   if (index < 0) return;
   sampleOneLight(scene, uint32_t(index), selectPmf, bsdf, sp, u1, u2, throughput, arrivalPdf,
-                 rng.rayKey(kShadowRay), shadow);
+                 rayKeyFor(scene, rng, kShadowRay), shadow);
 }
 
 // A path between its interactions: what it has gathered and what it carries to the next.
@@ -249,8 +249,8 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
   // A light vertex connected to here is the path's interaction depth + 1.
   st.connectable = smooth && scene.lightPathLights > 0 && depth < st.maxDepth;
   if (st.connectable && st.lightVertex.valid) {
-    connectLightVertex(scene, &st.lightVertex, bsdf, sp, st.throughput, rng.rayKey(kConnectionRay),
-                       connect);
+    connectLightVertex(scene, &st.lightVertex, bsdf, sp, st.throughput,
+                       rayKeyFor(scene, rng, kConnectionRay), connect);
     if (connect->active) ++counters.shadow;
   }
 
@@ -263,7 +263,7 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
   if (depth <= scene.glassSplitDepth && st.branches.waiting < kMaxWaitingBranches &&
       hasTwoDeltaLobes(m) && sampleBothDeltaLobes(bsdf, &bs, &reflected)) {
     PathBranch& b = st.branches.branch[st.branches.waiting++];
-    b.ray = spawnRay(sp, reflected.wi, rng.rayKey(kBranchRay));
+    b.ray = spawnRay(sp, reflected.wi, rayKeyFor(scene, rng, kBranchRay));
     b.throughput = st.throughput * reflected.weight;
     b.depth = st.depth;
     b.maxDepth = st.maxDepth;
@@ -287,7 +287,7 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
     if (rng.next1D() >= survive) return false;
     st.throughput /= survive;
   }
-  st.ray = spawnRay(sp, bs.wi, rng.rayKey(kBounceRay));
+  st.ray = spawnRay(sp, bs.wi, rayKeyFor(scene, rng, kBounceRay));
   ++counters.bounce;
   return true;
 }

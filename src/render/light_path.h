@@ -161,7 +161,7 @@ CANDELA_HDI void traceLightVertex(const SceneView& scene, const Tracer& tracer, 
     ray.origin = light.position;
     ray.direction = sampleUniformCone(u1, u2, 2.0f);  // the whole sphere
   }
-  ray.alphaKey = rng.rayKey(kLightRay);
+  ray.alphaKey = rayKeyFor(scene, rng, kLightRay);
   Hit hit;
   ++counters.bounce;
   if (!tracer.closest(ray, &hit)) return;

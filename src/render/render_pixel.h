@@ -28,7 +28,7 @@ CANDELA_HDI Ray cameraSample(const SceneView& scene, uint32_t x, uint32_t y, Sam
   Ray ray =
       generateCameraRay(scene.camera, float(scene.camera.windowX + x * stride + offset) + *jx,
                         float(scene.camera.windowY + y * stride + offset) + *jy, lensU, lensV);
-  ray.alphaKey = rng.rayKey(kCameraRay);
+  ray.alphaKey = rayKeyFor(scene, rng, kCameraRay);
   return ray;
 }
 
