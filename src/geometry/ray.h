@@ -13,7 +13,8 @@ struct Ray {
   Vec3 direction;
   float tMax = kInfinity;
   // The alpha test's key (geometry/alpha_test.h), drawn from the ray's sample stream where its
-  // path casts it (SampleStream::rayKey), so that it does not depend on the ray's rounding.
+  // path casts it (SampleStream::rayKey), so that it does not depend on the ray's rounding; 0
+  // in a scene without alpha masks, where nothing reads it (render/ray_kind.h, rayKeyFor).
   uint32_t alphaKey = 0;
 };
 
