@@ -147,7 +147,7 @@ class Scene:
         if not denoise:
             return result
         return _denoised(result, aovs, threads,
-                         self._core.seen_emitters(spp, seed, backend, threads))
+                         self._core.seen_emitters(result["emission"], spp, seed, backend, threads))
 
     def __repr__(self) -> str:
         frame = "" if self.frame_index is None else f", frame {self.frame_index}"
@@ -179,16 +179,12 @@ def _passes_to_render(aovs: Optional[list], denoise: bool) -> Optional[list]:
 
 
 def _denoised(result: Dict[str, np.ndarray], aovs: Optional[list], threads: int = 0,
-              seen: Optional[tuple] = None):
+              seen_emission: Optional[np.ndarray] = None):
     """A render's result with its passes and guides, denoised as Scene.render(denoise=True)
     returns it: the clean image alone without aovs, else the asked passes plus "image" (clean)
-    and "noisy". `seen`: the emitters seen, sampled again (the core's seen_emitters: None, or
-    the emission pass and where it holds), added back in place of the render's own there."""
+    and "noisy". `seen_emission`: the emission pass with the emitters seen sampled again (the
+    core's seen_emitters; None where none are), added back in place of the render's own."""
     from . import denoise as oidn
-    seen_emission = None
-    if seen is not None:
-        values, covered = seen
-        seen_emission = np.where(covered[..., None] != 0, values, result["emission"])
     clean = oidn.denoise(result["image"], result["albedo"], result["normal"], result["direct"],
                          result["emission"], threads=threads, seen_emission=seen_emission)
     if aovs is None:

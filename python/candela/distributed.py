@@ -203,4 +203,5 @@ def render_image(scene: Union[Scene, str], spp: Optional[int] = None, chunks: in
         return result
     # The emitters seen are sampled again here, as Scene.render does: camera rays alone, a small
     # part of the render's work (backends/seen_emitters.h).
-    return _denoised(result, names, seen=scene._core.seen_emitters(spp, seed, "auto", 0))
+    return _denoised(result, names, seen_emission=scene._core.seen_emitters(
+        result["emission"], spp, seed, "auto", 0))

@@ -48,9 +48,9 @@ def test_direct_and_indirect_light_are_denoised_apart_and_emitters_seen_sampled_
     guides = (result["noisy"], result["albedo"], result["normal"])
     # The emitters seen, sampled again around where they are (16 times the samples, camera rays
     # alone), are added back in place of the render's own emission pass.
-    values, covered = scene._core.seen_emitters(4, 3, "auto", 0)
-    assert 0 < covered.mean() < 0.5 and covered[result["emission"].max(axis=2) > 0].all()
-    seen = np.where(covered[..., None] != 0, values, result["emission"])
+    seen = scene._core.seen_emitters(result["emission"], 4, 3, "auto", 0)
+    replaced = (seen != result["emission"]).any(axis=2)
+    assert 0 < replaced.mean() < 0.5
     np.testing.assert_allclose(
         result["image"],
         oidn.denoise(*guides, result["direct"], result["emission"], seen_emission=seen),
@@ -59,7 +59,11 @@ def test_direct_and_indirect_light_are_denoised_apart_and_emitters_seen_sampled_
     for other in (oidn.denoise(*guides), oidn.denoise(*guides, result["direct"]),
                   oidn.denoise(*guides, result["direct"], result["emission"])):
         assert np.abs(result["image"] - other).max() > 1e-2 * other.max()
-    assert scene.from_dict(tiny_scene(size=32))._core.seen_emitters(4, 3, "auto", 0) is None
+    no_emitter = scene.from_dict(tiny_scene(size=32))
+    assert no_emitter._core.seen_emitters(np.zeros((32, 32, 3), np.float32), 4, 3, "auto",
+                                          0) is None
+    with pytest.raises(ValueError, match=r"the render's, \(32, 32, 3\)"):
+        no_emitter._core.seen_emitters(np.zeros((16, 32, 3), np.float32), 4, 3, "auto", 0)
 
 
 def test_emitters_seen_sampled_again_bring_the_denoised_image_closer_to_the_reference():

@@ -255,13 +255,17 @@ nb::object render(const Scene& scene, std::optional<uint32_t> spp, std::optional
   return out;
 }
 
-// The emitters that a render of `scene` (spp and seed as render's) sees, sampled again for the
-// denoiser (backends/seen_emitters.h): None where nothing is, else (emission, covered), an
-// (H, W, 3) float32 emission pass valid where the (H, W) uint8 array `covered` is 1.
-nb::object seenEmitters(const Scene& scene, std::optional<uint32_t> spp,
+// `emission` (the emission pass of a render of `scene`, spp and seed as render's) with the
+// emitters it sees sampled again for the denoiser in place of its own values there
+// (backends/seen_emitters.h); None where nothing is sampled again.
+nb::object seenEmitters(const Scene& scene, const ImageInput& emission, std::optional<uint32_t> spp,
                         std::optional<uint64_t> seed, const std::string& backend, int threads) {
   const ThreadLimit threadLimit(threads);
   SceneDesc desc = stillWith(scene, spp, seed);
+  if (emission.shape(0) != desc.camera.height || emission.shape(1) != desc.camera.width)
+    throw std::invalid_argument("the emission pass must be the render's, (" +
+                                std::to_string(desc.camera.height) + ", " +
+                                std::to_string(desc.camera.width) + ", 3)");
   const Backend chosen = backendNamed(backend);
   RenderOptions options;
   options.threads = threads;
@@ -275,9 +279,10 @@ nb::object seenEmitters(const Scene& scene, std::optional<uint32_t> spp,
     seen = sampleSeenEmitters(*cache.renderer, data, options);
   });
   if (seen.covered.empty()) return nb::none();
-  const size_t h = seen.emission.height, w = seen.emission.width;
-  return nb::make_tuple(ownedArray(std::move(seen.emission.pixels), h, w, 3),
-                        ownedArray(std::move(seen.covered), h, w, 1));
+  const size_t h = emission.shape(0), w = emission.shape(1);
+  std::vector<float> pass(emission.data(), emission.data() + h * w * 3);
+  seen.replaceIn(pass.data());
+  return ownedArray(std::move(pass), h, w, 3);
 }
 
 // The layers of passes `aovNames` from per-pixel sums (sumsToDict's, possibly added over sample
@@ -406,8 +411,8 @@ NB_MODULE(_candela, m) {
            "sample_range"_a = nb::none(), "threads"_a = 0, "aovs"_a = nb::none(),
            "pass_sums"_a = false)
       .def("passes_from_sums", &passesFromSums, "sums"_a, "aovs"_a)
-      .def("seen_emitters", &seenEmitters, "spp"_a = nb::none(), "seed"_a = nb::none(),
-           "backend"_a = "auto", "threads"_a = 0);
+      .def("seen_emitters", &seenEmitters, "emission"_a, "spp"_a = nb::none(),
+           "seed"_a = nb::none(), "backend"_a = "auto", "threads"_a = 0);
 
   m.attr("PASS_SUM_MERGES") = passSumMerges();
   m.def("check_aovs", [](const std::vector<std::string>& names) { aovsFromNames(names); },
