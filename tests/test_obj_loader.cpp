@@ -271,6 +271,22 @@ TEST_F(ObjLoader, MalformedFilesNameTheLine) {
   EXPECT_EQ(error("\x89PNG\r\n\x1a\n"), "m.obj:1: unknown statement \"\\x89PNG\"");
 }
 
+// Numbers in every form the grammar allows read as strtod reads them, and values beyond double's
+// range as it does too: a vertex 0 below it, an error above.
+TEST_F(ObjLoader, NumbersReadAsStrtodReadsThem) {
+  const MeshDesc mesh = load("v +1 -0 0\nv +2.5e+0 1e-400 0\nv .5 +1. -2E-1\nf 1 2 3\n");
+  ASSERT_EQ(mesh.positions.size(), 3u);
+  EXPECT_EQ(mesh.positions[0].x, 1.0f);
+  EXPECT_EQ(mesh.positions[1].x, 2.5f);
+  EXPECT_EQ(mesh.positions[1].y, 0.0f);
+  EXPECT_EQ(mesh.positions[2].x, 0.5f);
+  EXPECT_EQ(mesh.positions[2].y, 1.0f);
+  EXPECT_EQ(mesh.positions[2].z, -0.2f);
+  EXPECT_EQ(error("v 0 0 1e400\n"), "m.obj:1: expected a finite number, got \"1e400\"");
+  EXPECT_EQ(error(std::string(kSquare) + "f 1 2 +3\nf 1 2 +0\n"),
+            "m.obj:6: face index 0 is invalid (OBJ indices start at 1)");
+}
+
 TEST_F(ObjLoader, FileWithoutFacesIsAnError) {
   EXPECT_EQ(error(kSquare), "m.obj: expected at least one face, got none");
   EXPECT_EQ(error(""), "m.obj: expected at least one face, got none");

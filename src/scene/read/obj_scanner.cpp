@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cfloat>
+#include <charconv>
 #include <cmath>
 #include <cstdlib>
 #include <string_view>
@@ -24,16 +25,43 @@ constexpr std::string_view kIgnoredStatements[] = {
 
 bool isBlank(char c) { return c == ' ' || c == '\t'; }
 
-std::vector<std::string_view> tokenize(std::string_view line) {
-  std::vector<std::string_view> tokens;
+// The blank-separated tokens of `line` into *tokens (cleared first).
+void tokenize(std::string_view line, std::vector<std::string_view>* tokens) {
+  tokens->clear();
   size_t i = 0;
   while (i < line.size()) {
     while (i < line.size() && isBlank(line[i])) ++i;
     const size_t start = i;
     while (i < line.size() && !isBlank(line[i])) ++i;
-    if (i > start) tokens.push_back(line.substr(start, i - start));
+    if (i > start) tokens->push_back(line.substr(start, i - start));
   }
-  return tokens;
+}
+
+// The value of `token`, a number of isObjNumber's grammar, as strtod reads it (from_chars, which
+// rounds alike, but takes no '+' and leaves values beyond double's range to strtod).
+double parseNumber(std::string_view token) {
+  if (!token.empty() && token[0] == '+') token.remove_prefix(1);
+  double value = 0.0;
+  const std::from_chars_result parsed =
+      std::from_chars(token.data(), token.data() + token.size(), value);
+  if (parsed.ec == std::errc()) return value;
+  return std::strtod(std::string(token).c_str(), nullptr);
+}
+
+// The value of `digits`, an optional sign and at most 18 decimal digits.
+long long parseIndex(std::string_view digits) {
+  if (!digits.empty() && digits[0] == '+') digits.remove_prefix(1);
+  long long value = 0;
+  std::from_chars(digits.data(), digits.data() + digits.size(), value);
+  return value;
+}
+
+// Where the first line of `text` ends: its first \n or \r, npos if neither. (string_view's
+// find_first_of calls memchr on the set for every character.)
+size_t lineEnd(std::string_view text) {
+  for (size_t i = 0; i < text.size(); ++i)
+    if (text[i] == '\n' || text[i] == '\r') return i;
+  return std::string_view::npos;
 }
 
 // Text from the file, quoted for a message: shortened, with unprintable bytes escaped.
@@ -87,7 +115,7 @@ class Scanner {
     throw SceneError(label_ + ":" + std::to_string(line_) + ": " + reason);
   }
   void numbers(const std::vector<std::string_view>& tokens, size_t min, size_t max,
-               const char* form, std::string_view line) const;
+               const char* form, std::string_view line, double* values) const;
   void references(const std::vector<std::string_view>& tokens, size_t min, const char* form,
                   const char* indexName, std::string_view line) const;
   void reference(std::string_view token, const char* indexName) const;
@@ -99,7 +127,8 @@ class Scanner {
   const std::string& label_;
   size_t line_ = 0;
   long long vertices_ = 0, texcoords_ = 0, normals_ = 0;
-  std::vector<Vec3> positions_;  // of the vertices so far, for triangulating polygons
+  std::vector<Vec3> positions_;           // of the vertices so far, for triangulating polygons
+  std::vector<std::string_view> tokens_;  // the current line's, reused from line to line
 };
 
 void Scanner::scanLine(std::string_view line, size_t number, ObjScan& out) {
@@ -129,22 +158,23 @@ void Scanner::scanLine(std::string_view line, size_t number, ObjScan& out) {
   }
   // Data lines may end in a comment; tinyobjloader would read it as a face index.
   const std::string_view content = line.substr(0, line.find('#'));
-  std::vector<std::string_view> tokens = tokenize(content);
-  tokens.erase(tokens.begin());
+  tokenize(content, &tokens_);
+  tokens_.erase(tokens_.begin());
+  const std::vector<std::string_view>& tokens = tokens_;
   std::string_view whole = content.substr(first);
   while (!whole.empty() && isBlank(whole.back())) whole.remove_suffix(1);
   if (keyword == "v") {
-    numbers(tokens, 3, 7, "a vertex \"v x y z\"", whole);
-    Vec3 position;
-    for (int i = 0; i < 3; ++i)
-      position[i] = float(std::strtod(std::string(tokens[i]).c_str(), nullptr));
-    positions_.push_back(position);
+    double values[7];
+    numbers(tokens, 3, 7, "a vertex \"v x y z\"", whole, values);
+    positions_.push_back(Vec3(float(values[0]), float(values[1]), float(values[2])));
     ++vertices_;
   } else if (keyword == "vn") {
-    numbers(tokens, 3, 3, "a normal \"vn x y z\"", whole);
+    double values[3];
+    numbers(tokens, 3, 3, "a normal \"vn x y z\"", whole, values);
     ++normals_;
   } else if (keyword == "vt") {
-    numbers(tokens, 1, 3, "a texture coordinate \"vt u [v [w]]\"", whole);
+    double values[3];
+    numbers(tokens, 1, 3, "a texture coordinate \"vt u [v [w]]\"", whole, values);
     ++texcoords_;
   } else if (keyword == "f") {
     references(tokens, 3, "a face with at least 3 vertices", "face index", whole);
@@ -169,14 +199,16 @@ void Scanner::scanLine(std::string_view line, size_t number, ObjScan& out) {
   out.text += '\n';
 }
 
+// Checks that `tokens` are min to max finite numbers and writes their values to values[].
 void Scanner::numbers(const std::vector<std::string_view>& tokens, size_t min, size_t max,
-                      const char* form, std::string_view line) const {
+                      const char* form, std::string_view line, double* values) const {
   if (tokens.size() < min || tokens.size() > max)
     fail(std::string("expected ") + form + ", got " + shown(line));
-  for (std::string_view token : tokens) {
-    if (!isObjNumber(token)) fail("expected a number, got " + shown(token));
-    const double value = std::strtod(std::string(token).c_str(), nullptr);
-    if (!(std::fabs(value) <= FLT_MAX)) fail("expected a finite number, got " + shown(token));
+  for (size_t i = 0; i < tokens.size(); ++i) {
+    if (!isObjNumber(tokens[i])) fail("expected a number, got " + shown(tokens[i]));
+    values[i] = parseNumber(tokens[i]);
+    if (!(std::fabs(values[i]) <= FLT_MAX))
+      fail("expected a finite number, got " + shown(tokens[i]));
   }
 }
 
@@ -219,7 +251,7 @@ void Scanner::index(std::string_view digits, std::string_view token, long long c
                        });
   if (!numeric)
     fail("expected a vertex reference such as 1, 1/2, 1//3 or 1/2/3, got " + shown(token));
-  const long long value = std::strtoll(std::string(digits).c_str(), nullptr, 10);
+  const long long value = parseIndex(digits);
   if (value == 0) fail(name + " 0 is invalid (OBJ indices start at 1)");
   if (value > count || value < -count)
     fail(name + " " + std::to_string(value) + " out of range (" + counted(count, singular, plural) +
@@ -255,8 +287,7 @@ void Scanner::polygon(const std::vector<std::string_view>& tokens, ObjScan& out)
   std::vector<Vec3> corners;
   corners.reserve(tokens.size());
   for (std::string_view token : tokens) {
-    const long long index = std::strtoll(std::string(token.substr(0, token.find('/'))).c_str(),
-                                         nullptr, 10);  // checked by reference()
+    const long long index = parseIndex(token.substr(0, token.find('/')));  // checked by reference()
     corners.push_back(positions_[size_t(index > 0 ? index - 1 : vertices_ + index)]);
   }
   std::vector<CornerTriangle> triangles;
@@ -284,7 +315,7 @@ ObjScan scanObj(const std::string& text, const std::string& label) {
   if (rest.substr(0, 3) == "\xEF\xBB\xBF") rest.remove_prefix(3);  // UTF-8 byte order mark
   size_t number = 0;
   while (!rest.empty()) {
-    const size_t end = rest.find_first_of("\r\n");
+    const size_t end = lineEnd(rest);
     const std::string_view line = rest.substr(0, end);
     scanner.scanLine(line, ++number, out);
     if (end == std::string_view::npos) break;
