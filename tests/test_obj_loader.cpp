@@ -272,8 +272,19 @@ TEST_F(ObjLoader, MalformedFilesNameTheLine) {
 }
 
 // Numbers in every form the grammar allows read as strtod reads them, and values beyond double's
-// range as it does too: a vertex 0 below it, an error above.
+// range as it does too: a vertex 0 below it, an error above. The scan's own reading places the
+// corners of the faces it cuts into triangles: a concave pentagon written in other forms of the
+// same numbers is cut the same way (where its dent, the last corner, lies decides the cut).
 TEST_F(ObjLoader, NumbersReadAsStrtodReadsThem) {
+  const MeshDesc plain = load("v 0 4 0\nv 0 0 0\nv 4 0 0\nv 4 4 0\nv 2 3 0\nf 1 2 3 4 5\n");
+  const MeshDesc forms =
+      load("v .0 +4 0\nv +0 -0 0\nv 4.0 0 0\nv +4 4. 0\nv +2e0 .3E+1 1e-400\nf 1 2 3 4 5\n");
+  ASSERT_EQ(plain.triangles.size(), 3u);
+  ASSERT_EQ(forms.triangles.size(), plain.triangles.size());
+  for (size_t i = 0; i < plain.triangles.size(); ++i)
+    expectTriangle(forms.triangles[i], plain.triangles[i].v[0], plain.triangles[i].v[1],
+                   plain.triangles[i].v[2]);
+
   const MeshDesc mesh = load("v +1 -0 0\nv +2.5e+0 1e-400 0\nv .5 +1. -2E-1\nf 1 2 3\n");
   ASSERT_EQ(mesh.positions.size(), 3u);
   EXPECT_EQ(mesh.positions[0].x, 1.0f);
