@@ -35,6 +35,7 @@ namespace candela {
     (void* filter, const char* name, void* buffer, int format, size_t width, size_t height, \
      size_t byteOffset, size_t pixelStride, size_t rowStride))                              \
   X(setFilterBool, oidnSetFilterBool, void, (void* filter, const char* name, bool value))   \
+  X(setFilterInt, oidnSetFilterInt, void, (void* filter, const char* name, int value))      \
   X(commitFilter, oidnCommitFilter, void, (void* filter))                                   \
   X(executeFilter, oidnExecuteFilter, void, (void* filter))                                 \
   X(releaseFilter, oidnReleaseFilter, void, (void* filter))
@@ -42,6 +43,7 @@ namespace candela {
 struct OidnDenoiser::Api {
   static constexpr int kFormatFloat3 = 3;   // OIDN_FORMAT_FLOAT3
   static constexpr int kDeviceTypeCpu = 1;  // OIDN_DEVICE_TYPE_CPU
+  static constexpr int kQualityBalanced = 5;  // OIDN_QUALITY_BALANCED
 #define CANDELA_OIDN_MEMBER(member, symbol, Result, Parameters) \
   Result(*member) Parameters = nullptr;
   CANDELA_OIDN_ENTRY_POINTS(CANDELA_OIDN_MEMBER)
@@ -173,9 +175,10 @@ void OidnDenoiser::denoise(float* image, size_t width, size_t height, const floa
   const Api& a = *api_;
   void* dev = device(threads);
   const size_t n = 3 * width * height, bytes = n * sizeof(float), pixel = 3 * sizeof(float);
-  // One "RT" filter over `inputs` (name, buffer) into `output`.
+  // One "RT" filter over `inputs` (name, buffer) into `output`, at OIDN's default quality (high)
+  // unless `balanced`.
   const auto run = [&](std::initializer_list<std::pair<const char*, const Buffer*>> inputs,
-                       const Buffer& output, bool hdr, bool cleanAux) {
+                       const Buffer& output, bool hdr, bool cleanAux, bool balanced = false) {
     void* filter = a.newFilter(dev, "RT");
     for (const auto& [name, buffer] : inputs)
       a.setFilterImage(filter, name, buffer->get(), Api::kFormatFloat3, width, height, 0, pixel,
@@ -184,6 +187,7 @@ void OidnDenoiser::denoise(float* image, size_t width, size_t height, const floa
                      pixel * width);
     if (hdr) a.setFilterBool(filter, "hdr", true);
     if (cleanAux) a.setFilterBool(filter, "cleanAux", true);
+    if (balanced) a.setFilterInt(filter, "quality", Api::kQualityBalanced);
     a.commitFilter(filter);
     a.executeFilter(filter);
     a.releaseFilter(filter);
@@ -200,10 +204,12 @@ void OidnDenoiser::denoise(float* image, size_t width, size_t height, const floa
   // The guides come from the same samples as the image and carry a little noise of their own
   // (antialiased edges, depth of field, what glass and mirrors show): each is denoised first and
   // the image then filtered with clean guides, as OIDN's documentation recommends
-  // (docs/performance.md, Denoising, has what it gains).
+  // (docs/performance.md, Denoising, has what it gains). At OIDN's balanced quality: its high
+  // quality's larger networks took twice the time and left the denoised images no closer to the
+  // converged ones (docs/performance.md, Denoising).
   const Buffer albedoClean(a, dev, bytes), normalClean(a, dev, bytes);
-  run({{"albedo", &albedoIn}}, albedoClean, false, false);
-  run({{"normal", &normalIn}}, normalClean, false, false);
+  run({{"albedo", &albedoIn}}, albedoClean, false, false, true);
+  run({{"normal", &normalIn}}, normalClean, false, false, true);
   // Direct and indirect light are filtered apart and added: the direct part is far less noisy
   // and keeps its detail. Emitters seen directly carry no noise but their edges' and are left
   // out of both: their radiance, far above the rest, would spread into it (docs/performance.md,
