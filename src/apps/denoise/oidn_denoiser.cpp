@@ -58,11 +58,14 @@ bool bind(void* handle, const char* name, F* f) {
   return *f != nullptr;
 }
 
-// The folder of the pyoidn package of python3 on PATH, or "" (no python3, no pyoidn).
+// The folder of the pyoidn package of python3 on PATH, or "" (no python3, no pyoidn). The
+// package is found, not imported: importing it loads numpy too, a quarter of a second.
 std::string pyoidnLibraryFolder() {
   FILE* pipe = popen(
-      "python3 -c 'import os, pyoidn; print(os.path.join(os.path.dirname(pyoidn.__file__), "
-      "\"oidn\", \"lib\"))' 2>/dev/null < /dev/null",
+      "python3 -c 'import importlib.util, os, sys; s = importlib.util.find_spec(\"pyoidn\"); "
+      "sys.exit(1) if s is None or not s.submodule_search_locations else "
+      "print(os.path.join(list(s.submodule_search_locations)[0], \"oidn\", \"lib\"))' "
+      "2>/dev/null < /dev/null",
       "r");
   if (!pipe) return "";
   std::array<char, 4096> line{};
