@@ -136,3 +136,36 @@ def test_cli_without_the_denoiser_says_how_to_install_it_and_writes_nothing(tmp_
     assert done.returncode == 2
     assert "pip install pyoidn" in done.stderr and "Traceback" not in done.stderr
     assert not out.exists()
+
+
+def test_cli_with_a_python_that_lacks_pyoidn_says_how_to_install_it(tmp_path):
+    """The command line looks for pyoidn through the python3 on PATH (without importing it);
+    one whose packages are out of reach (-S) has none, and the error says how to install it."""
+    import json
+    import os
+    import shutil
+    import subprocess
+    # (A process of its own: this one has loaded pyoidn's copy, which dlopen would find.)
+    on_path = subprocess.run(
+        [shutil.which("python3"), "-S", "-c",
+         "import ctypes; ctypes.CDLL('libOpenImageDenoise.so.2')"],
+        capture_output=True, stdin=subprocess.DEVNULL).returncode == 0
+    if on_path:
+        pytest.skip("libOpenImageDenoise.so.2 is on the library path: pyoidn is not looked for")
+    if not CLI.exists():
+        pytest.skip(f"{CLI} is not built (scripts/build builds it)")
+    bin_dir = tmp_path / "bin"
+    bin_dir.mkdir()
+    wrapper = bin_dir / "python3"
+    wrapper.write_text(f'#!/bin/sh\nexec "{shutil.which("python3")}" -S "$@"\n')
+    wrapper.chmod(0o755)
+    scene_file = tmp_path / "scene.json"
+    scene_file.write_text(json.dumps(tiny_scene(size=8)))
+    out = tmp_path / "out.png"
+    env = {k: v for k, v in os.environ.items() if k != "CANDELA_OIDN_LIBRARY"}
+    env["PATH"] = f"{bin_dir}{os.pathsep}{env.get('PATH', '')}"
+    done = subprocess.run([str(CLI), "render", str(scene_file), "--denoise", "-o", str(out)],
+                          capture_output=True, text=True, stdin=subprocess.DEVNULL, env=env)
+    assert done.returncode == 2, done.stderr
+    assert "pip install pyoidn" in done.stderr and "Traceback" not in done.stderr
+    assert not out.exists()
