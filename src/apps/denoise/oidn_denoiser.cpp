@@ -41,8 +41,8 @@ namespace candela {
   X(releaseFilter, oidnReleaseFilter, void, (void* filter))
 
 struct OidnDenoiser::Api {
-  static constexpr int kFormatFloat3 = 3;   // OIDN_FORMAT_FLOAT3
-  static constexpr int kDeviceTypeCpu = 1;  // OIDN_DEVICE_TYPE_CPU
+  static constexpr int kFormatFloat3 = 3;     // OIDN_FORMAT_FLOAT3
+  static constexpr int kDeviceTypeCpu = 1;    // OIDN_DEVICE_TYPE_CPU
   static constexpr int kQualityBalanced = 5;  // OIDN_QUALITY_BALANCED
 #define CANDELA_OIDN_MEMBER(member, symbol, Result, Parameters) \
   Result(*member) Parameters = nullptr;
