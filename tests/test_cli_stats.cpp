@@ -136,6 +136,7 @@ TEST_P(CliStatsEngineTest, WritesEveryKeyWithSaneNumbers) {
                           "samples_per_second",
                           "rays",
                           "rays_per_second",
+                          "denoise_seconds",
                           "peak_rss_bytes"})
     EXPECT_TRUE(s.contains(key)) << key;
 
@@ -149,6 +150,7 @@ TEST_P(CliStatsEngineTest, WritesEveryKeyWithSaneNumbers) {
   EXPECT_EQ(s["integrator"], "path");
   EXPECT_EQ(s["antialiasing"], true);
   EXPECT_EQ(s["use_bvh"], true);
+  EXPECT_EQ(s["denoise_seconds"], 0.0);  // no --denoise
   // Too small a render for the light-path pilot (backends/light_path_pilot.h): they stay on.
   EXPECT_EQ(s["light_paths"]["setting"], "auto");
   EXPECT_EQ(s["light_paths"]["on"], true);

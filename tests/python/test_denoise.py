@@ -169,3 +169,22 @@ def test_cli_with_a_python_that_lacks_pyoidn_says_how_to_install_it(tmp_path):
     assert done.returncode == 2, done.stderr
     assert "pip install pyoidn" in done.stderr and "Traceback" not in done.stderr
     assert not out.exists()
+
+
+def test_cli_reports_the_denoisers_time(tmp_path):
+    """`--denoise` reports the denoiser's seconds on the summary line and in --stats (0 without)."""
+    import json
+    scene_file = tmp_path / "scene.json"
+    scene_file.write_text(json.dumps(with_emitter(32)))
+    for denoise in (False, True):
+        stats = tmp_path / f"stats-{denoise}.json"
+        args = ["render", scene_file, "--spp", 2, "-o", tmp_path / "out.pfm", "--stats", stats]
+        done = cli(*args, *(["--denoise"] if denoise else []))
+        assert done.returncode == 0, done.stderr
+        seconds = json.loads(stats.read_text())["denoise_seconds"]
+        if denoise:
+            assert 0 < seconds < 60
+            assert f", denoised in {seconds:.2f} s" in done.stdout, done.stdout
+        else:
+            assert seconds == 0
+            assert "denoised" not in done.stdout, done.stdout

@@ -94,6 +94,14 @@ std::unique_ptr<OidnDenoiser> loadDenoiser(const RenderCommandOptions& options) 
   return denoiser;
 }
 
+double denoiseTimed(const OidnDenoiser* denoiser, RenderResult& result, const SceneData& scene,
+                    Renderer& renderer, const RenderOptions& render) {
+  if (!denoiser || result.cancelled) return 0;
+  const auto start = std::chrono::steady_clock::now();
+  denoiser->denoise(result, scene, renderer, render);
+  return secondsSince(start);
+}
+
 std::vector<Aov> chooseAovs(const RenderCommandOptions& options) {
   if (options.aovs.empty()) return {};
   try {
@@ -244,7 +252,7 @@ int renderStill(const RenderCommandOptions& options, SceneDesc desc, double load
   LightPathChoice lightPaths;
   RenderResult result = renderChoosingLightPaths(*renderer, scene, render, &lightPaths);
   if (bar) bar->clear();
-  if (denoiser && !result.cancelled) denoiser->denoise(result, scene, *renderer, render);
+  const double denoiseSeconds = denoiseTimed(denoiser.get(), result, scene, *renderer, render);
 
   if (result.cancelled) {
     std::fputs("candela: interrupted, no image written\n", stderr);
@@ -263,6 +271,7 @@ int renderStill(const RenderCommandOptions& options, SceneDesc desc, double load
     info.useBvh = !options.noBvh;
     info.loadSeconds = loadSeconds;
     info.flattenSeconds = flattenSeconds;
+    info.denoiseSeconds = denoiseSeconds;
     info.acceleration = renderer->acceleration();
     info.lightPaths = lightPaths;
     createParentDirectories(options.stats);
@@ -271,7 +280,7 @@ int renderStill(const RenderCommandOptions& options, SceneDesc desc, double load
   for (StagedFile& file : images) file.commit();
   if (stats) stats->commit();
   if (!options.quiet)
-    std::printf("%s\n", renderSummary(output, scene.settings.spp, result).c_str());
+    std::printf("%s\n", renderSummary(output, scene.settings.spp, result, denoiseSeconds).c_str());
   return kExitOk;
 }
 

@@ -39,6 +39,11 @@ std::vector<Aov> chooseAovs(const RenderCommandOptions& options);
 // is not found. Without, null.
 std::unique_ptr<OidnDenoiser> loadDenoiser(const RenderCommandOptions& options);
 
+// Denoises `result` (OidnDenoiser::denoise) where there is a denoiser and the render was not
+// cancelled; the seconds it took, else 0.
+double denoiseTimed(const OidnDenoiser* denoiser, RenderResult& result, const SceneData& scene,
+                    Renderer& renderer, const RenderOptions& render);
+
 // Command-line values win over the scene file's (spp, seed, max depth); candela's own BVH is
 // left out where the renderer (`backend` with `engine`) does not trace it.
 void applyOverrides(const RenderCommandOptions& options, Backend backend, CpuEngine engine,

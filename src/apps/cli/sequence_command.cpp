@@ -263,7 +263,7 @@ int runSequence(const RenderCommandOptions& options, std::vector<SceneDesc> scen
     renderer->setScene(data, frameScene.change());
     RenderResult result = renderChoosingLightPaths(*renderer, data, render);
     if (bar) bar->clear();
-    if (denoiser && !result.cancelled) denoiser->denoise(result, data, *renderer, render);
+    const double denoiseSeconds = denoiseTimed(denoiser.get(), result, data, *renderer, render);
     if (result.cancelled) {
       std::fprintf(stderr,
                    "candela: interrupted during frame %u; the %zu frames finished are kept, run "
@@ -278,7 +278,7 @@ int runSequence(const RenderCommandOptions& options, std::vector<SceneDesc> scen
     for (StagedFile& file : files) file.commit();
     if (!options.quiet) {
       std::printf("%s (scene %s in %.3f ms)\n",
-                  renderSummary(path, data.settings.spp, result).c_str(),
+                  renderSummary(path, data.settings.spp, result, denoiseSeconds).c_str(),
                   preparationName(frameScene.change()), frameScene.seconds() * 1e3);
       std::fflush(stdout);
     }

@@ -85,6 +85,7 @@ std::string renderStatsJson(const RenderStats& info, const SceneData& scene,
                {"shadow", result.rays.shadow},
                {"total", result.rays.total()}};
   o["rays_per_second"] = finiteOrZero(rate(double(result.rays.total()), result.seconds));
+  o["denoise_seconds"] = finiteOrZero(info.denoiseSeconds);
   o["peak_rss_bytes"] = peakRssBytes();
   // A scene path need not be UTF-8: its bad bytes become U+FFFD rather than an exception.
   return o.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";

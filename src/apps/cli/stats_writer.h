@@ -18,6 +18,7 @@
 //   render_seconds, samples, samples_per_second (render_seconds includes pilot_seconds; rays
 //                      and rays_per_second count the image's rays alone)
 //   rays {camera, bounce, shadow, total}, rays_per_second
+//   denoise_seconds    --denoise: the denoiser (emitters seen sampled again, the filters); else 0
 //   peak_rss_bytes     getrusage(RUSAGE_SELF).ru_maxrss, in bytes
 #pragma once
 
@@ -37,6 +38,7 @@ struct RenderStats {
   bool useBvh = true;  // false under --no-bvh (the one-level tree of the benchmarks)
   double loadSeconds = 0;
   double flattenSeconds = 0;
+  double denoiseSeconds = 0;
   AccelerationStats acceleration;  // the renderer's ray engine
   LightPathChoice lightPaths;      // and whether its samples started light subpaths
 };

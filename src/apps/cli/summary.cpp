@@ -19,7 +19,8 @@ std::string shortCount(uint64_t count) {
   return text;
 }
 
-std::string renderSummary(const std::string& output, uint32_t spp, const RenderResult& result) {
+std::string renderSummary(const std::string& output, uint32_t spp, const RenderResult& result,
+                          double denoiseSeconds) {
   const ImageRGB& image = result.image;
   const double samples = double(image.width) * double(image.height) * double(spp);
   // A tiny render can finish within the clock's resolution; avoid dividing by zero.
@@ -32,7 +33,12 @@ std::string renderSummary(const std::string& output, uint32_t spp, const RenderR
                 samples / seconds / 1e6, double(result.rays.total()) / seconds / 1e6,
                 shortCount(result.rays.camera).c_str(), shortCount(result.rays.bounce).c_str(),
                 shortCount(result.rays.shadow).c_str());
-  return line;
+  std::string summary = line;
+  if (denoiseSeconds > 0) {
+    std::snprintf(line, sizeof line, ", denoised in %.2f s", denoiseSeconds);
+    summary += line;
+  }
+  return summary;
 }
 
 }  // namespace candela::cli
