@@ -101,13 +101,16 @@ REPO = __import__("pathlib").Path(__file__).resolve().parents[2]
 CLI = REPO / "build" / "candela"
 
 
-def cli(*args, env=None):
+def cli(*args, env=None, unset=()):
+    """The command line run with `args`, this process's environment with `env` added and the
+    variables named in `unset` removed."""
     import os
     import subprocess
     if not CLI.exists():
         pytest.skip(f"{CLI} is not built (scripts/build builds it)")
+    environment = {k: v for k, v in {**os.environ, **(env or {})}.items() if k not in unset}
     return subprocess.run([str(CLI), *map(str, args)], capture_output=True, text=True,
-                          stdin=subprocess.DEVNULL, env={**os.environ, **(env or {})})
+                          stdin=subprocess.DEVNULL, env=environment)
 
 
 def test_cli_denoise_matches_python_and_beats_the_raw_render(tmp_path):
@@ -152,8 +155,6 @@ def test_cli_with_a_python_that_lacks_pyoidn_says_how_to_install_it(tmp_path):
         capture_output=True, stdin=subprocess.DEVNULL).returncode == 0
     if on_path:
         pytest.skip("libOpenImageDenoise.so.2 is on the library path: pyoidn is not looked for")
-    if not CLI.exists():
-        pytest.skip(f"{CLI} is not built (scripts/build builds it)")
     bin_dir = tmp_path / "bin"
     bin_dir.mkdir()
     wrapper = bin_dir / "python3"
@@ -162,10 +163,9 @@ def test_cli_with_a_python_that_lacks_pyoidn_says_how_to_install_it(tmp_path):
     scene_file = tmp_path / "scene.json"
     scene_file.write_text(json.dumps(tiny_scene(size=8)))
     out = tmp_path / "out.png"
-    env = {k: v for k, v in os.environ.items() if k != "CANDELA_OIDN_LIBRARY"}
-    env["PATH"] = f"{bin_dir}{os.pathsep}{env.get('PATH', '')}"
-    done = subprocess.run([str(CLI), "render", str(scene_file), "--denoise", "-o", str(out)],
-                          capture_output=True, text=True, stdin=subprocess.DEVNULL, env=env)
+    done = cli("render", scene_file, "--denoise", "-o", out,
+               env={"PATH": f"{bin_dir}{os.pathsep}{os.environ.get('PATH', '')}"},
+               unset=("CANDELA_OIDN_LIBRARY",))
     assert done.returncode == 2, done.stderr
     assert "pip install pyoidn" in done.stderr and "Traceback" not in done.stderr
     assert not out.exists()
