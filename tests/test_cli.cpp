@@ -124,6 +124,21 @@ TEST_F(CliTest, BadSceneExitsTwoWithTheLoaderMessageAndWritesNothing) {
   EXPECT_FALSE(fs::exists(path("out"))) << "nothing may be written for a bad scene";
 }
 
+TEST_F(CliTest, MaterialWarningsGoToStderrAndTheRenderGoesOn) {
+  writeFile("m.obj", "mtllib gone.mtl\nv -1 -1 0\nv 1 -1 0\nv 0 1 0\nf 1 2 3\n");
+  writeFile("m.json", R"({"camera": {"width": 8, "height": 8, "spp": 1, "position": [0, 0, 5]},
+                         "objects": [{"file": "m.obj"}]})");
+  for (const char* quiet : {"", " --quiet"}) {
+    const RunResult r = run(std::string("render m.json -o m.pfm") + quiet);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(r.err,
+              "candela: warning: m.json: objects[0].file: m.obj:1: cannot read the material "
+              "library \"gone.mtl\" (No such file or directory); the materials it would define "
+              "are diffuse 0.8\n");
+    EXPECT_EQ(candela::readImage(path("m.pfm").string()).width, 8u);
+  }
+}
+
 TEST_F(CliTest, MissingSceneFileIsAUsageError) {
   const RunResult r = run("render nowhere.json");
   EXPECT_EQ(r.exitCode, 2);

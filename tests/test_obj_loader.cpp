@@ -175,6 +175,10 @@ TEST_F(ObjLoader, MtlDiffuseColourPerFaceGroup) {
     EXPECT_FLOAT_EQ(fallback.color.x, 0.8f);
     EXPECT_FLOAT_EQ(fallback.color.z, 0.8f);
   }
+  // The material no library defines is warned of, at its `usemtl` line.
+  EXPECT_EQ(mesh.warnings, std::vector<std::string>{
+                               "m.obj:11: no material library defines \"undefined\"; its faces "
+                               "are diffuse 0.8"});
 }
 
 TEST_F(ObjLoader, MtlMaterialWithoutKdIsDefaultDiffuse) {
@@ -183,6 +187,7 @@ TEST_F(ObjLoader, MtlMaterialWithoutKdIsDefaultDiffuse) {
   ASSERT_EQ(mesh.materials.size(), 1u);
   EXPECT_EQ(mesh.triangles[0].material, 0u);
   EXPECT_FLOAT_EQ(mesh.materials[0].color.x, 0.8f);
+  EXPECT_TRUE(mesh.warnings.empty());
 }
 
 // Ks turns a material glossy: plastic over Kd (index Ni), or without a diffuse colour a
@@ -224,6 +229,24 @@ TEST_F(ObjLoader, MissingMtlFileFallsBackToTheDefaultMaterial) {
   ASSERT_EQ(mesh.materials.size(), 1u);
   EXPECT_FLOAT_EQ(mesh.materials[0].color.x, 0.8f);
   EXPECT_EQ(mesh.triangles[0].material, 0u);
+  // A warning names the library and its line; its materials are not warned of one by one.
+  EXPECT_EQ(mesh.warnings,
+            std::vector<std::string>{"m.obj:1: cannot read the material library \"absent.mtl\" "
+                                     "(No such file or directory); the materials it would "
+                                     "define are diffuse 0.8"});
+}
+
+TEST_F(ObjLoader, WarnsOfEachUndefinedMaterialOnceOnlyWhereTheFileNamesALibrary) {
+  // `usemtl` without any `mtllib` (exporters write it for files without materials): no warning.
+  EXPECT_TRUE(load(std::string("usemtl default\n") + kSquare + "f 1 2 3\n").warnings.empty());
+  const MeshDesc mesh = load(std::string("mtllib m.mtl\n") + kSquare +
+                                 "usemtl ghost\nf 1 2 3\nusemtl red\nf 1 3 4\n"
+                                 "usemtl ghost\nf 1 2 4\nusemtl other extra words\nf 2 3 4\n",
+                             "newmtl red\nKd 1 0 0\n");
+  EXPECT_EQ(mesh.warnings,
+            (std::vector<std::string>{
+                "m.obj:6: no material library defines \"ghost\"; its faces are diffuse 0.8",
+                "m.obj:12: no material library defines \"other\"; its faces are diffuse 0.8"}));
 }
 
 TEST_F(ObjLoader, CommentsGroupsAndIgnoredStatements) {

@@ -318,6 +318,25 @@ TEST_F(SceneLoader, MalformedObjFileNamesItsLine) {
             "s.json: objects[0].file: meshes/bad.obj:6: face index 99 out of range (4 vertices)");
 }
 
+// What an OBJ file leaves to the default material is a warning, not an error: given once per
+// file, at the first object that takes its materials from it, prefixed like an error.
+TEST_F(SceneLoader, ObjMaterialWarningsNameTheObjectThatUsesTheFile) {
+  dir.write("meshes/m.obj", std::string("mtllib gone.mtl\nusemtl a\n") + kTriangleObj);
+  dir.write("meshes/plain.obj", kTriangleObj);
+  const SceneDesc scene = parse(R"({"camera": {}, "objects": [
+      {"file": "meshes/plain.obj"},
+      {"file": "meshes/m.obj", "color": [1, 0, 0]},
+      {"file": "meshes/m.obj"}, {"file": "meshes/m.obj"}]})");
+  EXPECT_EQ(scene.warnings,
+            std::vector<std::string>{
+                "s.json: objects[2].file: meshes/m.obj:1: cannot read the material library "
+                "\"gone.mtl\" (No such file or directory); the materials it would define are "
+                "diffuse 0.8"});
+  // Where every object sets its own material, the file's materials do not matter.
+  EXPECT_TRUE(parse(R"({"camera": {}, "objects": [{"file": "meshes/m.obj", "color": 0.5}]})")
+                  .warnings.empty());
+}
+
 TEST_F(SceneLoader, JsonIsValidatedBeforeMeshesLoad) {
   EXPECT_EQ(
       errorWith(R"("objects": [{"file": "missing.obj"}], "lights": [{"positon": [0, 0, 0]}])"),

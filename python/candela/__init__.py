@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import json
 import os
+import warnings
 from typing import Any, Dict, List, Optional, Sequence, Tuple
 
 import numpy as np
@@ -38,7 +39,8 @@ class Scene:
     def load(cls, path: str | os.PathLike) -> "Scene":
         """Loads and validates a JSON scene file (and its OBJ meshes). Raises SceneError."""
         path = os.fspath(path)
-        return cls(_candela._Scene.load(path), {"path": os.path.abspath(path), "label": path})
+        return cls(_candela._Scene.load(path),
+                   {"path": os.path.abspath(path), "label": path})._warned()
 
     @classmethod
     def from_dict(cls, scene: dict, base_dir: str | os.PathLike = ".") -> "Scene":
@@ -46,7 +48,7 @@ class Scene:
         text = json.dumps(scene)
         base_dir = os.path.abspath(os.fspath(base_dir))
         return cls(_candela._Scene.from_text(text, "<dict>", base_dir),
-                   {"text": text, "base_dir": base_dir, "label": "<dict>"})
+                   {"text": text, "base_dir": base_dir, "label": "<dict>"})._warned()
 
     @classmethod
     def from_spec(cls, spec: dict) -> "Scene":
@@ -59,6 +61,18 @@ class Scene:
         source = {k: v for k, v in spec.items() if k != "frame"}
         scene = cls(core, source)
         return scene.frame(spec["frame"]) if spec.get("frame") is not None else scene
+
+    @property
+    def warnings(self) -> List[str]:
+        """What the scene's files leave to a default their author may not have meant (an MTL
+        file that cannot be read, a material no MTL file defines), one message each; `load` and
+        `from_dict` also issue each as a UserWarning. The scene renders."""
+        return list(self._core.warnings)
+
+    def _warned(self) -> "Scene":
+        for message in self._core.warnings:
+            warnings.warn(message, UserWarning, stacklevel=3)
+        return self
 
     @property
     def spec(self) -> dict:

@@ -47,6 +47,9 @@ struct MeshDesc {
   std::vector<MeshTriangle> triangles;
   std::vector<Material> materials;  // from the MTL (obj_loader.h's mapping), else diffuse 0.8
   std::vector<std::string> materialFiles;  // the MTL files read, beside the OBJ file
+  // What the file leaves to a default that its author may not have meant, "<file>:<line>: ..."
+  // (an MTL file that cannot be read, a material that no MTL file defines).
+  std::vector<std::string> warnings;
 };
 
 struct ObjectDesc {
@@ -161,6 +164,9 @@ struct SceneDesc {
   // The images materials name by TextureRef::index, each file read once; shared by frames.
   std::vector<std::shared_ptr<const TextureDesc>> textures;
   std::optional<AnimationDesc> animation;  // absent: a still image
+  // Messages on what the scene's files leave to a default, each prefixed like an error's (the
+  // scene file, the JSON path); the scene renders. The command line prints them, Python warns.
+  std::vector<std::string> warnings;
 };
 
 // The triangles of all the scene's meshes.

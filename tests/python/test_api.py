@@ -51,6 +51,23 @@ def test_scene_error_carries_the_loader_message(scene_dict, tmp_path):
         candela.Scene.load(tmp_path / "missing.json")
 
 
+def test_material_warnings_are_user_warnings_and_the_scene_renders(tmp_path, scene_dict):
+    (tmp_path / "m.obj").write_text("mtllib gone.mtl\nv -1 -1 0\nv 1 -1 0\nv 0 1 0\nf 1 2 3\n")
+    scene_dict["objects"] = [{"file": "m.obj"}]
+    expected = ('<dict>: objects[0].file: m.obj:1: cannot read the material library "gone.mtl" '
+                "(No such file or directory); the materials it would define are diffuse 0.8")
+    with pytest.warns(UserWarning) as caught:
+        scene = candela.Scene.from_dict(scene_dict, base_dir=tmp_path)
+    assert [str(w.message) for w in caught] == [expected]
+    assert caught[0].filename == __file__  # points at the caller, not at candela
+    assert scene.warnings == [expected]
+    assert scene.render(spp=1).shape[2] == 3
+    path = tmp_path / "m.json"
+    path.write_text(__import__("json").dumps(scene_dict))
+    with pytest.warns(UserWarning, match=r"m\.json: objects\[0\]\.file: m\.obj:1: cannot read"):
+        candela.Scene.load(path)
+
+
 def test_message_matches_the_cli(tmp_path, scene_dict):
     scene_dict["spheres"][1]["radius"] = -1
     path = tmp_path / "neg.json"

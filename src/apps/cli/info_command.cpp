@@ -4,6 +4,7 @@
 
 #include <cstdio>
 
+#include "apps/cli/scene_warnings.h"
 #include "scene/flatten.h"
 #include "scene/read/scene_loader.h"
 
@@ -19,6 +20,7 @@ CLI::App* addInfoCommand(CLI::App& app, InfoOptions* options) {
 
 int runInfo(const InfoOptions& options) {
   const SceneDesc desc = loadSceneFile(options.scene);
+  printSceneWarnings(desc);
   const SceneData scene = flattenScene(desc);
 
   std::printf("scene:      %s\n", options.scene.c_str());

@@ -24,6 +24,7 @@
 #include "apps/cli/output_check.h"
 #include "apps/cli/pass_files.h"
 #include "apps/cli/progress_bar.h"
+#include "apps/cli/scene_warnings.h"
 #include "apps/cli/sequence_command.h"
 #include "apps/cli/stats_writer.h"
 #include "apps/cli/summary.h"
@@ -198,7 +199,10 @@ int runRender(const RenderCommandOptions& options) {
   // Every scene is loaded and validated before anything renders or is written.
   const auto loadStart = std::chrono::steady_clock::now();
   std::vector<SceneDesc> scenes;
-  for (const std::string& file : options.scenes) scenes.push_back(loadSceneFile(file));
+  for (const std::string& file : options.scenes) {
+    scenes.push_back(loadSceneFile(file));
+    printSceneWarnings(scenes.back());
+  }
   const double loadSeconds = secondsSince(loadStart);
   const bool sequence = scenes.size() > 1 || scenes[0].animation || options.sequenceOptionGiven() ||
                         isFolderOutput(options.output);

@@ -376,6 +376,7 @@ NB_MODULE(_candela, m) {
                      std::nullopt};
       }, "text"_a, "label"_a, "base_dir"_a)
       .def_prop_ro("frames", &Scene::frameCount)
+      .def_prop_ro("warnings", [](const Scene& s) { return s.desc->warnings; })
       .def_prop_ro("frame_index", [](const Scene& s) { return s.frame; })
       .def_prop_ro("fps", [](const Scene& s) {
         return s.desc->animation ? s.desc->animation->fps : 24.0f;

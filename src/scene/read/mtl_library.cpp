@@ -57,7 +57,10 @@ MtlLibrary readMtlLibrary(const std::string& objPath, const std::string& objLabe
   for (const std::string& name : names) {
     std::string contents, reason;
     const std::string path = (folder / name).string();
-    if (!readTextFile(path, &contents, &reason)) continue;
+    if (!readTextFile(path, &contents, &reason)) {
+      library.unread.push_back(MtlLibrary::Unread{name, reason});
+      continue;
+    }
     library.files.push_back(path);
     collectStatements(contents, (labelFolder / name).string(),
                       std::filesystem::path(path).parent_path().string(), library);

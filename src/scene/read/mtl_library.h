@@ -32,9 +32,15 @@ struct MtlLibrary {
   std::set<std::string> kdNames;   // materials with a Kd statement
   std::map<std::string, MtlTextures> statements;  // by material name
   std::vector<std::string> files;  // the files read, as paths from the OBJ file's folder
+  struct Unread {
+    std::string name;  // as the OBJ file names it
+    std::string why;
+  };
+  std::vector<Unread> unread;  // the files that could not be read
 };
 
-// Files that cannot be read are skipped: their materials fall back to the default. `objLabel`
+// Files that cannot be read are skipped (and listed in `unread`): their materials fall back to
+// the default. `objLabel`
 // is the OBJ file as messages show it; MTL files are shown beside it.
 MtlLibrary readMtlLibrary(const std::string& objPath, const std::string& objLabel,
                           const std::vector<std::string>& names);

@@ -227,6 +227,28 @@ MeshDesc buildMesh(const tinyobj::ObjReader& reader, const MtlLibrary& library,
   return mesh;
 }
 
+// What the OBJ file's MTL files leave undefined: a library that cannot be read, or else a material
+// that no library defines (where the file names any library: `usemtl` alone is common in files
+// without materials). Their faces are diffuse 0.8 (docs/scene-format.md, MTL materials).
+std::vector<std::string> materialWarnings(const ObjScan& scan, const MtlLibrary& library,
+                                          const std::vector<tinyobj::material_t>& materials,
+                                          const std::string& label) {
+  std::vector<std::string> warnings;
+  const auto at = [&](size_t line) { return label + ":" + std::to_string(line) + ": "; };
+  for (const MtlLibrary::Unread& unread : library.unread)
+    for (const NamedAtLine& named : scan.materialLibraries)
+      if (named.name == unread.name)
+        warnings.push_back(at(named.line) + "cannot read the material library \"" + unread.name +
+                           "\" (" + unread.why + "); the materials it would define are diffuse 0.8");
+  if (!warnings.empty() || scan.materialLibraries.empty()) return warnings;
+  for (const NamedAtLine& use : scan.materialUses)
+    if (std::none_of(materials.begin(), materials.end(),
+                     [&](const tinyobj::material_t& m) { return m.name == use.name; }))
+      warnings.push_back(at(use.line) + "no material library defines \"" + use.name +
+                         "\"; its faces are diffuse 0.8");
+  return warnings;
+}
+
 }  // namespace
 
 MeshDesc loadObjFile(const std::string& path, const std::string& label, TextureLoader& textures) {
@@ -238,7 +260,9 @@ MeshDesc loadObjFile(const std::string& path, const std::string& label, TextureL
   tinyobj::ObjReaderConfig config;
   config.triangulate = true;
   config.vertex_color = false;
-  const MtlLibrary library = readMtlLibrary(path, label, scan.materialLibraries);
+  std::vector<std::string> libraryNames;
+  for (const NamedAtLine& named : scan.materialLibraries) libraryNames.push_back(named.name);
+  const MtlLibrary library = readMtlLibrary(path, label, libraryNames);
   tinyobj::ObjReader reader;
   if (!reader.ParseFromString(scan.text, library.text, config))
     throw SceneError(label + ": " + firstLine(reader.Error()));
@@ -246,6 +270,7 @@ MeshDesc loadObjFile(const std::string& path, const std::string& label, TextureL
   MeshDesc mesh = buildMesh(reader, library, label, textures);
   if (mesh.triangles.empty()) throw SceneError(label + ": expected at least one face, got none");
   mesh.materialFiles = library.files;
+  mesh.warnings = materialWarnings(scan, library, reader.GetMaterials(), label);
   return mesh;
 }
 

@@ -122,6 +122,7 @@ class Scanner {
   void index(std::string_view digits, std::string_view token, long long count,
              const std::string& name, const char* singular, const char* plural) const;
   void materialLibraries(std::string_view arguments, ObjScan& out) const;
+  void materialUse(std::string_view arguments, ObjScan& out) const;
   void polygon(const std::vector<std::string_view>& tokens, ObjScan& out) const;
 
   const std::string& label_;
@@ -145,6 +146,8 @@ void Scanner::scanLine(std::string_view line, size_t number, ObjScan& out) {
   if (!data) {
     if (keyword == "mtllib") {
       materialLibraries(line.substr(keywordEnd), out);
+    } else if (keyword == "usemtl") {
+      materialUse(line.substr(keywordEnd), out);
     } else if (std::find(std::begin(kIgnoredStatements), std::end(kIgnoredStatements), keyword) ==
                std::end(kIgnoredStatements)) {
       fail("unknown statement " + shown(keyword));
@@ -263,9 +266,9 @@ void Scanner::index(std::string_view digits, std::string_view token, long long c
 void Scanner::materialLibraries(std::string_view arguments, ObjScan& out) const {
   std::string name;
   auto flush = [&] {
-    if (!name.empty() && std::find(out.materialLibraries.begin(), out.materialLibraries.end(),
-                                   name) == out.materialLibraries.end())
-      out.materialLibraries.push_back(name);
+    if (!name.empty() && std::none_of(out.materialLibraries.begin(), out.materialLibraries.end(),
+                                      [&](const NamedAtLine& l) { return l.name == name; }))
+      out.materialLibraries.push_back(NamedAtLine{name, line_});
     name.clear();
   };
   for (size_t i = 0; i < arguments.size(); ++i) {
@@ -278,6 +281,17 @@ void Scanner::materialLibraries(std::string_view arguments, ObjScan& out) const 
     }
   }
   flush();
+}
+
+// The material name after `usemtl`: its first word, as tinyobjloader reads it.
+void Scanner::materialUse(std::string_view arguments, ObjScan& out) const {
+  const size_t first = arguments.find_first_not_of(" \t");
+  if (first == std::string_view::npos) return;
+  const std::string_view word =
+      arguments.substr(first, arguments.find_first_of(" \t\r", first) - first);
+  if (std::none_of(out.materialUses.begin(), out.materialUses.end(),
+                   [&](const NamedAtLine& use) { return use.name == word; }))
+    out.materialUses.push_back(NamedAtLine{std::string(word), line_});
 }
 
 // A face of more than four corners goes to tinyobjloader as triangles, which keep the corners'

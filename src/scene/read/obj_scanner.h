@@ -17,9 +17,16 @@
 
 namespace candela {
 
+// A name and the first line (1-based) that gives it.
+struct NamedAtLine {
+  std::string name;
+  size_t line = 0;
+};
+
 struct ObjScan {
   std::string text;                            // for tinyobjloader
-  std::vector<std::string> materialLibraries;  // `mtllib` file names, unique, in order of use
+  std::vector<NamedAtLine> materialLibraries;  // `mtllib` file names, unique, in order of use
+  std::vector<NamedAtLine> materialUses;       // `usemtl` names, unique, in order of use
 };
 
 ObjScan scanObj(const std::string& text, const std::string& label);

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <map>
+#include <set>
 #include <vector>
 
 #include "scene/camera_resolve.h"
@@ -65,6 +66,15 @@ void loadMeshes(SceneDesc& scene, const std::vector<std::string>& writtenNames,
       failAt(scene.file, memberPath(object.where, "file"), error.what());
     }
     loaded.emplace(object.file, object.mesh);
+  }
+  // A mesh's warnings concern its own materials: each is given once, at the first object that
+  // takes its materials from the file.
+  std::set<const MeshDesc*> warned;
+  for (const ObjectDesc& object : scene.objects) {
+    if (object.material || !warned.insert(object.mesh.get()).second) continue;
+    for (const std::string& warning : object.mesh->warnings)
+      scene.warnings.push_back(scene.file + ": " + memberPath(object.where, "file") + ": " +
+                               warning);
   }
 }
 
