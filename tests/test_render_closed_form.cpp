@@ -195,6 +195,59 @@ TEST(ClosedForm, PointLightOverDiffusePlaneMatchesContractFormula) {
       for (int c = 0; c < 3; ++c) EXPECT_EQ(d.image.at(x, y)[c], r.image.at(x, y)[c]);
 }
 
+// (b') Two to four point lights and nothing else: a path's first interaction samples each with a
+// shadow ray of its own (render/light.h, firstHitPointLights), so with pixel centres every pixel
+// shows the sum of their exact contributions, without the noise of a pick; five are picked from.
+void expectPointLightsSampledEachAtTheFirstHit(int count) {
+  const std::string obj = writePlaneObj("plane_each.obj", 100);
+  const double rho = 0.6;
+  struct PointLight {
+    double x, y, z, power;
+    Vec3 color;
+  };
+  std::vector<PointLight> points;
+  for (int i = 0; i < count; ++i)
+    points.push_back({-3.0 + 1.7 * i, 3.0 + i, 1.0 - i, 900.0 / (i + 1),
+                      Vec3(1.0f, 0.3f + 0.15f * i, 1.0f - 0.2f * i)});
+  std::string lights;
+  for (const PointLight& p : points)
+    lights += std::string(lights.empty() ? "" : ",") + R"({"position": [)" + num(p.x) + ", " +
+              num(p.y) + ", " + num(p.z) + R"(], "intensity": )" + num(p.power) +
+              R"(, "color": [)" + num(p.color.x) + ", " + num(p.color.y) + ", " +
+              num(p.color.z) + "]}";
+  const SceneData data = test::loadTestScene(R"({
+    "camera": {"width": 32, "height": 24, "fov": 70, "position": [0, 6, 0],
+               "look_at": [0, 0, 0.001], "up": [0, 0, -1], "spp": 4},
+    "render": {"antialiasing": false, "max_depth": 1},
+    "objects": [{"file": ")" + obj + R"(", "color": )" + num(rho) + R"(}],
+    "lights": [)" + lights + "]}");
+  const bool each = count <= 4;
+  EXPECT_EQ(data.view().firstHitPointLights, each ? uint32_t(count) : 0u);
+  const RenderResult r = renderCpu(data.view(), RenderOptions{});
+  EXPECT_EQ(r.rays.shadow, (each ? uint64_t(count) : 1u) * 32u * 24u * 4u);
+  double worst = 0;
+  for (uint32_t y = 0; y < 24; ++y)
+    for (uint32_t x = 0; x < 32; ++x) {
+      const PlanePoint at = planePointAt(data.camera, x, y);
+      for (int c = 0; c < 3; ++c) {
+        double expected = 0;
+        for (const PointLight& p : points) {
+          const double dx = p.x - at.x, dz = p.z - at.z, d2 = dx * dx + p.y * p.y + dz * dz;
+          expected += rho * p.power * (p.y / std::sqrt(d2)) / (4 * kPi * kPi * d2) * p.color[c];
+        }
+        worst = std::max(worst, std::fabs(r.image.at(x, y)[c] / expected - 1.0));
+      }
+    }
+  if (each)
+    EXPECT_LT(worst, 2e-4) << count << " lights";
+  else
+    EXPECT_GT(worst, 0.05) << "a pick among five lights leaves noise at 4 spp";
+}
+
+TEST(ClosedForm, TwoToFourPointLightsAreEachSampledAtTheFirstHit) {
+  for (int count : {2, 3, 4, 5}) expectPointLightsSampledEachAtTheFirstHit(count);
+}
+
 // (c) Under a uniform environment of radiance 1 a convex object never sees itself: a diffuse
 // sphere shows its albedo, a mirror its colour, and clear glass conserves energy (every path's
 // weight is exactly 1 once it leaves). Each sphere is alone so that none sees another.

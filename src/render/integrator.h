@@ -114,6 +114,22 @@ CANDELA_HDI void estimateDirect(const SceneView& scene, const Bsdf& bsdf, const 
                  rayKeyFor(scene, rng, kShadowRay), shadow);
 }
 
+// Direct light at a path's first interaction in a scene of a few point lights
+// (SceneView::firstHitPointLights): every light sampled, light k as the shadow query
+// lights->query[k]. The dimensions estimateDirect's pick draws are passed over, so the stream's
+// layout is the same as with a pick.
+CANDELA_HDI void estimateDirectFromEach(const SceneView& scene, const Bsdf& bsdf,
+                                        const SurfacePoint& sp, const Vec3& throughput,
+                                        SampleStream& rng, LightQueries* lights) {
+  static_assert(kEachPointLightUpTo <= kMaxLightQueries, "a query for each light");
+  rng.skip();  // the pick's pair of numbers (a point light uses none)
+  rng.skip();  // the stand-in for the pick's place
+  for (uint32_t i = 0; i < scene.firstHitPointLights; ++i)
+    sampleOneLight(scene, i, 1.0f, bsdf, sp, 0.0f, 0.0f, throughput, 0.0f,
+                   rayKeyFor(scene, rng, RayKind(kEachLightRay + i)), &lights->query.emplace(i));
+  lights->count = scene.firstHitPointLights;
+}
+
 // A path between its interactions: what it has gathered and what it carries to the next.
 struct PathState {
   Vec3 radiance = Vec3(0.0f), throughput = Vec3(1.0f);
@@ -143,18 +159,20 @@ struct PathState {
 };
 
 // Interaction path->depth, where path->ray found `hit` (`found` false: it left the scene): adds
-// what it sees there to path->radiance, leaves next-event estimation's shadow ray in *shadow and
-// the connection to the sample's light vertex in *connect (each inactive when there is none) for
-// the caller to trace, and scatters path->ray onwards (at smooth glass within
-// scene.glassSplitDepth, leaving the reflection as a waiting branch: render/path_branch.h). False
-// when the path ends here (its shadow queries still count; a waiting branch is the caller's to
-// resume). With kAovs, `first` (zeroed by the caller) also receives the sample's first hit,
-// albedo, direct light and emission (render/aov.h); that work is compiled only into the kAovs
-// instance, and it draws no random numbers, so the radiance is the same.
+// what it sees there to path->radiance, leaves next-event estimation's shadow rays in *lights
+// (one, or at a first interaction one for each of a few point lights) and the connection to the
+// sample's light vertex in *connect (inactive when there is none) for the caller to trace, and
+// scatters path->ray onwards (at smooth glass within scene.glassSplitDepth, leaving the reflection
+// as a waiting branch: render/path_branch.h). False when the path ends here (its shadow queries
+// still count; a waiting branch is the caller's to resume). With kAovs, `first` (zeroed by the
+// caller) also receives the sample's first hit, albedo, direct light and emission (render/aov.h);
+// that work is compiled only into the kAovs instance, and it draws no random numbers, so the
+// radiance is the same.
 template <bool kAovs>
 CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool found,
                                  const Hit& hit, SampleStream& rng, RayCounters& counters,
-                                 FirstHit* first, ShadowQuery* shadow, ShadowQuery* connect) {
+                                 FirstHit* first, LightQueries* lights, ShadowQuery* connect) {
+  lights->count = 0;  // the slots may hold the last interaction's queries
   PathState& st = *path;
   const uint32_t depth = st.depth++;
   if (!found) {
@@ -240,9 +258,19 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
       const float dist2 = dot(back, back);
       arrivalPdf = st.bsdfPdf * fabsf(dot(sp.ng, back)) / (dist2 * sqrtf(dist2));
     }
-    estimateDirect(scene, bsdf, hemisphere, sp, st.throughput, arrivalPdf, rng, shadow);
-    if (shadow->active) ++counters.shadow;
-    if constexpr (kAovs) shadow->direct = depth == 1;
+    if (depth == 1 && scene.firstHitPointLights > 0) {
+      estimateDirectFromEach(scene, bsdf, sp, st.throughput, rng, lights);
+      for (uint32_t k = 0; k < lights->count; ++k) {
+        counters.shadow += lights->query[k].active;
+        if constexpr (kAovs) lights->query[k].direct = true;
+      }
+    } else {
+      ShadowQuery& shadow = lights->query.emplace(0);
+      lights->count = 1;
+      estimateDirect(scene, bsdf, hemisphere, sp, st.throughput, arrivalPdf, rng, &shadow);
+      counters.shadow += shadow.active;
+      if constexpr (kAovs) shadow.direct = depth == 1;
+    }
     // "direct": the scattered ray below only gathers emission; nothing scatters after it.
     if (scene.settings.integrator == IntegratorType::Direct) st.maxDepth = depth;
   }
@@ -327,14 +355,18 @@ CANDELA_HDI_ALWAYS void resolveShadow(const ShadowQuery& shadow, bool blocked, P
 template <bool kAovs, class Tracer>
 CANDELA_HDI Vec3 finishPath(const SceneView& scene, const Tracer& tracer, PathState* path,
                             SampleStream& rng, RayCounters& counters, FirstHit* first) {
+  LightQueries lights;  // reused: each interaction sets the queries it leaves
   for (;;) {
     Hit hit;
     const bool found = tracer.closest(path->ray, &hit);
-    ShadowQuery shadow, connect;
+    ShadowQuery connect;
     const bool goesOn =
-        interact<kAovs>(scene, path, found, hit, rng, counters, first, &shadow, &connect);
-    if (shadow.active)
-      resolveShadow<kAovs>(shadow, tracer.occluded(shadow.ray, shadow.skipPrim), path, first);
+        interact<kAovs>(scene, path, found, hit, rng, counters, first, &lights, &connect);
+    for (uint32_t k = 0; k < lights.count; ++k) {
+      const ShadowQuery& shadow = lights.query[k];
+      if (shadow.active)
+        resolveShadow<kAovs>(shadow, tracer.occluded(shadow.ray, shadow.skipPrim), path, first);
+    }
     if (connect.active)
       resolveShadow<kAovs>(connect, tracer.occluded(connect.ray, connect.skipPrim), path, first);
     if (!goesOn && !resumeBranch(path, &rng)) return path->radiance;

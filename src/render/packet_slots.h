@@ -1,6 +1,7 @@
 // PacketSlots: room for up to N values of T, one for each sample of a packet (a pixel's samples
 // in step: render/render_pixel.h), each constructed when its sample takes it, so that a packet
-// of n samples initialises n values and not N. As an array T[N] of a type with default member
+// of n samples initialises n values and not N (and likewise an interaction's shadow queries,
+// render/shadow_query.h). As an array T[N] of a type with default member
 // initialisers (a path's state is 440 bytes), every packet initialised all 16 and copied each
 // sample's in: 3% of the Cornell box's time at 16 spp, 7% at one (docs/performance.md).
 #pragma once

@@ -16,6 +16,9 @@ enum RayKind : uint32_t {
   kBounceRay = 4,
   kBranchRay = 5,
   kLightRay = 6,
+  // The shadow rays towards each of a few point lights at a first interaction
+  // (SceneView::firstHitPointLights): kEachLightRay + the light's index.
+  kEachLightRay = 8,
 };
 
 // The key of a ray of kind `kind` cast here in `rng`'s stream (Ray::alphaKey). Only the alpha

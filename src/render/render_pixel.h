@@ -79,36 +79,44 @@ CANDELA_HDI void renderPacket(const SceneView& scene, const Tracer& tracer, uint
   PacketSlots<PathState, kWidth> paths;
   FirstHit first[kAovs ? kWidth : 1];  // only the passes read them
   bool goesOn[kWidth];
-  Ray shadowRays[kWidth];
-  uint32_t skipPrims[kWidth], shadowLane[kWidth], shadowCount = 0;
-  PacketSlots<ShadowQuery, kWidth> shadows;
+  PacketSlots<LightQueries, kWidth> lights;
+  uint32_t mostQueries = 0;  // the most shadow queries of one path
   for (uint32_t i = 0; i < n; ++i) {
     paths.emplace(i, scene, rays[i]);
-    shadows.emplace(i);
+    lights.emplace(i);
     if (scene.lightPathLights > 0)
       traceLightVertex(scene, tracer, rng[i], counters, &paths[i].lightVertex);
     ShadowQuery connect;
     goesOn[i] = interact<kAovs>(scene, &paths[i], hits[i].valid(), hits[i], rng[i], counters,
-                                &first[kAovs ? i : 0], &shadows[i], &connect) ||
+                                &first[kAovs ? i : 0], &lights[i], &connect) ||
                 resumeBranch(&paths[i], &rng[i]);
+    mostQueries = lights[i].count > mostQueries ? lights[i].count : mostQueries;
     if (connect.active)
       resolveShadow<kAovs>(connect, tracer.occluded(connect.ray, connect.skipPrim), &paths[i],
                            &first[kAovs ? i : 0]);
-    if (!shadows[i].active) continue;
-    shadowRays[shadowCount] = shadows[i].ray;
-    skipPrims[shadowCount] = shadows[i].skipPrim;
-    shadowLane[shadowCount++] = i;
   }
-  bool blocked[kWidth];
-  if (scene.lightCount <= kShadowPacketsUpToLights) {
-    if (shadowCount) tracer.occludedPacket(shadowRays, skipPrims, shadowCount, blocked);
-  } else {
-    for (uint32_t k = 0; k < shadowCount; ++k)
-      blocked[k] = tracer.occluded(shadowRays[k], skipPrims[k]);
+  // The paths' k-th shadow rays together (towards light k, where each point light is sampled).
+  for (uint32_t k = 0; k < mostQueries; ++k) {
+    Ray shadowRays[kWidth];
+    uint32_t skipPrims[kWidth], shadowLane[kWidth], shadowCount = 0;
+    for (uint32_t i = 0; i < n; ++i) {
+      if (k >= lights[i].count || !lights[i].query[k].active) continue;
+      shadowRays[shadowCount] = lights[i].query[k].ray;
+      skipPrims[shadowCount] = lights[i].query[k].skipPrim;
+      shadowLane[shadowCount++] = i;
+    }
+    if (shadowCount == 0) continue;
+    bool blocked[kWidth];
+    if (scene.lightCount <= kShadowPacketsUpToLights) {
+      tracer.occludedPacket(shadowRays, skipPrims, shadowCount, blocked);
+    } else {
+      for (uint32_t j = 0; j < shadowCount; ++j)
+        blocked[j] = tracer.occluded(shadowRays[j], skipPrims[j]);
+    }
+    for (uint32_t j = 0; j < shadowCount; ++j)
+      resolveShadow<kAovs>(lights[shadowLane[j]].query[k], blocked[j], &paths[shadowLane[j]],
+                           &first[kAovs ? shadowLane[j] : 0]);
   }
-  for (uint32_t k = 0; k < shadowCount; ++k)
-    resolveShadow<kAovs>(shadows[shadowLane[k]], blocked[k], &paths[shadowLane[k]],
-                         &first[kAovs ? shadowLane[k] : 0]);
 
   for (uint32_t i = 0; i < n; ++i) {
     FirstHit& f = first[kAovs ? i : 0];

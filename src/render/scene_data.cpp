@@ -17,6 +17,7 @@ SceneView SceneData::view() const {
 #undef CANDELA_VIEW_OF
   v.firstTriangleLight = firstTriangleLight;
   v.lonePointLight = lonePointLight;
+  v.firstHitPointLights = firstHitPointLights;
   v.lightPathLights = settings.integrator == IntegratorType::Path && settings.maxDepth >= 2 &&
                               settings.lightPaths != LightPaths::Off
                           ? lightsStartingPaths

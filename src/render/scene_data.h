@@ -37,6 +37,7 @@ struct SceneData {
   CANDELA_SCENE_ARRAYS(CANDELA_OWNED_ARRAY)
   uint32_t firstTriangleLight = 0;
   bool lonePointLight = false;
+  uint32_t firstHitPointLights = 0;  // SceneView::firstHitPointLights
   // The lights that start light subpaths, when the view allows (render/light_path.h), and
   // whether any of them has a surface.
   uint32_t lightsStartingPaths = 0;

@@ -53,6 +53,9 @@ struct SceneView : GeometryView {
   // Whether the scene's one light is a point light, which next-event estimation samples without
   // a pick (render/light.h, isLonePointLight).
   bool lonePointLight = false;
+  // How many point lights a path's first interaction samples each of (render/light.h,
+  // firstHitPointLights); 0: one light is picked there too.
+  uint32_t firstHitPointLights = 0;
   // How many lights start light subpaths (render/light_path.h): those with power but the
   // environment, where the integrator is "path" and a path may have two interactions; 0 for
   // none. Where some of them have a surface, each subpath draws two numbers for its point.

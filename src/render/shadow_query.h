@@ -5,6 +5,7 @@
 #include <cstdint>
 
 #include "geometry/ray.h"
+#include "render/packet_slots.h"
 
 namespace candela {
 
@@ -20,6 +21,20 @@ struct ShadowQuery {
   Vec3 contribution;  // the path's throughput times the light's weighted share
   bool active = false;
   bool direct = false;  // next-event estimation at the first hit, set only for the passes
+};
+
+// The most shadow queries next-event estimation leaves at one interaction: one for each point
+// light at a path's first interaction in scenes of a few point lights (render/light.h,
+// firstHitPointLights), else one.
+constexpr uint32_t kMaxLightQueries = 4;
+
+// Next-event estimation's shadow queries at one interaction: query[0, count), each constructed by
+// the interaction that leaves it (an interaction costs one query's construction, not
+// kMaxLightQueries'), of which the active ones are traced (query[k] towards light k where each
+// light is sampled).
+struct LightQueries {
+  PacketSlots<ShadowQuery, kMaxLightQueries> query;
+  uint32_t count = 0;
 };
 
 }  // namespace candela

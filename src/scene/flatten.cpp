@@ -320,6 +320,7 @@ void addEmitterLights(SceneData& s, PreviousLights* previous) {
     }
   }
   s.lonePointLight = isLonePointLight(s.lights.data(), s.lights.size());
+  s.firstHitPointLights = firstHitPointLights(s.lights.data(), s.lights.size());
   std::vector<LightBounds> bounds;
   for (const Light& l : s.lights) bounds.push_back(lightBounds(s, l));
   setLightPathPicks(s, bounds);
