@@ -48,6 +48,22 @@ std::string num(double v) {
   return buf;
 }
 
+// A point light above the plane y = 0 (y > 0): its JSON, and the radiance that a diffuse plane
+// of albedo rho reflects at `at` in colour channel c, rho P cos / (4 pi^2 d^2) times the colour.
+struct PointLight {
+  double x, y, z, power;
+  Vec3 color;
+  std::string json() const {
+    return R"({"position": [)" + num(x) + ", " + num(y) + ", " + num(z) + R"(], "intensity": )" +
+           num(power) + R"(, "color": [)" + num(color.x) + ", " + num(color.y) + ", " +
+           num(color.z) + "]}";
+  }
+  double onPlane(double rho, const PlanePoint& at, int c) const {
+    const double dx = x - at.x, dz = z - at.z, d2 = dx * dx + y * y + dz * dz;
+    return rho * power * (y / std::sqrt(d2)) / (4 * kPi * kPi * d2) * color[c];
+  }
+};
+
 // (a) Inside a diffuse sphere of albedo 0.5 lit by a point light at its centre: the direct
 // radiance rho*P/(4 pi^2 R^2) is 0.5 and every bounce adds half again, so L = 1 everywhere.
 TEST(ClosedForm, FurnaceInsideDiffuseSphereIsOne) {
@@ -201,20 +217,12 @@ TEST(ClosedForm, PointLightOverDiffusePlaneMatchesContractFormula) {
 void expectPointLightsSampledEachAtTheFirstHit(int count) {
   const std::string obj = writePlaneObj("plane_each.obj", 100);
   const double rho = 0.6;
-  struct PointLight {
-    double x, y, z, power;
-    Vec3 color;
-  };
   std::vector<PointLight> points;
   for (int i = 0; i < count; ++i)
     points.push_back({-3.0 + 1.7 * i, 3.0 + i, 1.0 - i, 900.0 / (i + 1),
                       Vec3(1.0f, 0.3f + 0.15f * i, 1.0f - 0.2f * i)});
   std::string lights;
-  for (const PointLight& p : points)
-    lights += std::string(lights.empty() ? "" : ",") + R"({"position": [)" + num(p.x) + ", " +
-              num(p.y) + ", " + num(p.z) + R"(], "intensity": )" + num(p.power) +
-              R"(, "color": [)" + num(p.color.x) + ", " + num(p.color.y) + ", " +
-              num(p.color.z) + "]}";
+  for (const PointLight& p : points) lights += (lights.empty() ? "" : ",") + p.json();
   const SceneData data = test::loadTestScene(R"({
     "camera": {"width": 32, "height": 24, "fov": 70, "position": [0, 6, 0],
                "look_at": [0, 0, 0.001], "up": [0, 0, -1], "spp": 4},
@@ -231,10 +239,7 @@ void expectPointLightsSampledEachAtTheFirstHit(int count) {
       const PlanePoint at = planePointAt(data.camera, x, y);
       for (int c = 0; c < 3; ++c) {
         double expected = 0;
-        for (const PointLight& p : points) {
-          const double dx = p.x - at.x, dz = p.z - at.z, d2 = dx * dx + p.y * p.y + dz * dz;
-          expected += rho * p.power * (p.y / std::sqrt(d2)) / (4 * kPi * kPi * d2) * p.color[c];
-        }
+        for (const PointLight& p : points) expected += p.onPlane(rho, at, c);
         worst = std::max(worst, std::fabs(r.image.at(x, y)[c] / expected - 1.0));
       }
     }
@@ -344,10 +349,6 @@ TEST(ClosedForm, SphereLightOverDiffusePlaneMatchesIrradiance) {
 void expectLightsSumToEveryContribution(int extraLights) {
   const std::string obj = writePlaneObj("plane_f.obj", 100);
   const double rho = 0.5;
-  struct PointLight {
-    double x, y, z, power;
-    Vec3 color;
-  };
   std::vector<PointLight> points = {{2, 3, 0, 900, Vec3(1, 0.5f, 0.25f)},
                                     {-3, 5, 1, 300, Vec3(0.2f, 0.6f, 1)}};
   for (int i = 0; i < extraLights; ++i) points.push_back({-4.0 + i, 6, 4.0 - i, 40, Vec3(1.0f)});
@@ -355,11 +356,7 @@ void expectLightsSumToEveryContribution(int extraLights) {
   const double sx = 0, sy = 2, sz = -5, radius = 1.5, intensity = 400;
   const double L = intensity / (4 * kPi * kPi * radius * radius);
   std::string lights;
-  for (const PointLight& p : points) {
-    lights += R"({"position": [)" + num(p.x) + ", " + num(p.y) + ", " + num(p.z) +
-              R"(], "intensity": )" + num(p.power) + R"(, "color": [)" + num(p.color.x) + ", " +
-              num(p.color.y) + ", " + num(p.color.z) + "]},";
-  }
+  for (const PointLight& p : points) lights += p.json() + ",";
   lights += R"({"type": "sphere", "position": [)" + num(sx) + ", " + num(sy) + ", " + num(sz) +
             R"(], "radius": )" + num(radius) + R"(, "intensity": )" + num(intensity) + "},";
   lights += R"({"position": [0, 1, 0], "intensity": 0})";
@@ -376,11 +373,8 @@ void expectLightsSumToEveryContribution(int extraLights) {
     for (uint32_t x = 0; x < 24; ++x) {
       const PlanePoint at = planePointAt(data.camera, x, y);
       double expected[3] = {0, 0, 0};
-      for (const PointLight& p : points) {
-        const double dx = p.x - at.x, dz = p.z - at.z, d2 = dx * dx + p.y * p.y + dz * dz;
-        const double e = rho * p.power * (p.y / std::sqrt(d2)) / (4 * kPi * kPi * d2);
-        for (int c = 0; c < 3; ++c) expected[c] += e * p.color[c];
-      }
+      for (const PointLight& p : points)
+        for (int c = 0; c < 3; ++c) expected[c] += p.onPlane(rho, at, c);
       const double e = sphereLightOnPlane(rho, L, radius, sx, sy, sz, at);
       for (int c = 0; c < 3; ++c) expected[c] += e;
       const Vec3 v = r.image.at(x, y);
