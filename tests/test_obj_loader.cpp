@@ -247,6 +247,15 @@ TEST_F(ObjLoader, WarnsOfEachUndefinedMaterialOnceOnlyWhereTheFileNamesALibrary)
             (std::vector<std::string>{
                 "m.obj:6: no material library defines \"ghost\"; its faces are diffuse 0.8",
                 "m.obj:12: no material library defines \"other\"; its faces are diffuse 0.8"}));
+  // Beyond five, the rest are counted in one line.
+  std::string many = std::string("mtllib m.mtl\n") + kSquare;
+  for (int i = 0; i < 8; ++i) many += "usemtl m" + std::to_string(i) + "\nf 1 2 3\n";
+  const std::vector<std::string> warnings = load(many, "newmtl red\nKd 1 0 0\n").warnings;
+  ASSERT_EQ(warnings.size(), 6u);
+  EXPECT_EQ(warnings[4], "m.obj:14: no material library defines \"m4\"; its faces are diffuse 0.8");
+  EXPECT_EQ(warnings[5],
+            "m.obj: 3 more materials that no material library defines; diffuse 0.8 in their "
+            "stead");
 }
 
 TEST_F(ObjLoader, CommentsGroupsAndIgnoredStatements) {

@@ -9,6 +9,8 @@
 #include <cstdlib>
 #include <filesystem>
 #include <sstream>
+#include <unordered_map>
+#include <unordered_set>
 
 #include "render/material_prepare.h"
 #include "scene/read/mtl_library.h"
@@ -108,11 +110,11 @@ float roughnessOfPhongExponent(float ns) {
 }
 
 // One material per MTL material (docs/scene-format.md, MTL materials): emissive with radiance Ke
-// (times map_Ke, Ke 1 where only map_Ke is given) where either is set; else with a Ks that is not black a plastic (colour Kd or map_Kd, index
-// Ni) or, without a diffuse colour, a conductor of reflectance Ks, rough as Ns says; else diffuse
-// with colour Kd (0.8 where the material sets none), times map_Kd when it has one. Alpha is d (or
-// 1 - Tr; d wins when both are given) times map_d's alpha channel (or, for an image without one,
-// its first channel).
+// (times map_Ke, Ke 1 where only map_Ke is given) where either is set; else with a Ks that is not
+// black a plastic (colour Kd or map_Kd, index Ni) or, without a diffuse colour, a conductor of
+// reflectance Ks, rough as Ns says; else diffuse with colour Kd (0.8 where the material sets none),
+// times map_Kd when it has one. Alpha is d (or 1 - Tr; d wins when both are given) times map_d's
+// alpha channel (or, for an image without one, its first channel).
 std::vector<Material> mtlMaterials(const std::vector<tinyobj::material_t>& materials,
                                    const MtlLibrary& library, const std::string& label,
                                    TextureLoader& textures) {
@@ -227,6 +229,10 @@ MeshDesc buildMesh(const tinyobj::ObjReader& reader, const MtlLibrary& library,
   return mesh;
 }
 
+// Of the libraries that cannot be read, and of the materials that no library defines, this many
+// are named one by one, the rest counted in one line.
+constexpr size_t kWarningsNamed = 5;
+
 // What the OBJ file's MTL files leave undefined: a library that cannot be read, or else a material
 // that no library defines (where the file names any library: `usemtl` alone is common in files
 // without materials). Their faces are diffuse 0.8 (docs/scene-format.md, MTL materials).
@@ -234,18 +240,30 @@ std::vector<std::string> materialWarnings(const ObjScan& scan, const MtlLibrary&
                                           const std::vector<tinyobj::material_t>& materials,
                                           const std::string& label) {
   std::vector<std::string> warnings;
-  const auto at = [&](size_t line) { return label + ":" + std::to_string(line) + ": "; };
+  size_t count = 0;
+  const auto warn = [&](size_t line, const std::string& what) {
+    if (++count <= kWarningsNamed)
+      warnings.push_back(label + ":" + std::to_string(line) + ": " + what);
+  };
+  const auto countRest = [&](const char* what) {
+    if (count > kWarningsNamed)
+      warnings.push_back(label + ": " + std::to_string(count - kWarningsNamed) + " more " + what +
+                         "; diffuse 0.8 in their stead");
+  };
+  std::unordered_map<std::string, size_t> libraryLines;
+  for (const NamedAtLine& named : scan.materialLibraries) libraryLines[named.name] = named.line;
   for (const MtlLibrary::Unread& unread : library.unread)
-    for (const NamedAtLine& named : scan.materialLibraries)
-      if (named.name == unread.name)
-        warnings.push_back(at(named.line) + "cannot read the material library \"" + unread.name +
-                           "\" (" + unread.why + "); the materials it would define are diffuse 0.8");
-  if (!warnings.empty() || scan.materialLibraries.empty()) return warnings;
+    warn(libraryLines[unread.name], "cannot read the material library \"" + unread.name + "\" (" +
+                                        unread.why +
+                                        "); the materials it would define are diffuse 0.8");
+  countRest("material libraries that cannot be read");
+  if (count > 0 || scan.materialLibraries.empty()) return warnings;
+  std::unordered_set<std::string> defined;
+  for (const tinyobj::material_t& m : materials) defined.insert(m.name);
   for (const NamedAtLine& use : scan.materialUses)
-    if (std::none_of(materials.begin(), materials.end(),
-                     [&](const tinyobj::material_t& m) { return m.name == use.name; }))
-      warnings.push_back(at(use.line) + "no material library defines \"" + use.name +
-                         "\"; its faces are diffuse 0.8");
+    if (defined.count(use.name) == 0)
+      warn(use.line, "no material library defines \"" + use.name + "\"; its faces are diffuse 0.8");
+  countRest("materials that no material library defines");
   return warnings;
 }
 

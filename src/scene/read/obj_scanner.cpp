@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <string_view>
+#include <unordered_set>
 
 #include "scene/read/polygon_triangulation.h"
 #include "scene/scene_error.h"
@@ -121,8 +122,8 @@ class Scanner {
   void reference(std::string_view token, const char* indexName) const;
   void index(std::string_view digits, std::string_view token, long long count,
              const std::string& name, const char* singular, const char* plural) const;
-  void materialLibraries(std::string_view arguments, ObjScan& out) const;
-  void materialUse(std::string_view arguments, ObjScan& out) const;
+  void materialLibraries(std::string_view arguments, ObjScan& out);
+  void materialUse(std::string_view arguments, ObjScan& out);
   void polygon(const std::vector<std::string_view>& tokens, ObjScan& out) const;
 
   const std::string& label_;
@@ -130,6 +131,9 @@ class Scanner {
   long long vertices_ = 0, texcoords_ = 0, normals_ = 0;
   std::vector<Vec3> positions_;           // of the vertices so far, for triangulating polygons
   std::vector<std::string_view> tokens_;  // the current line's, reused from line to line
+  // The names in ObjScan's materialLibraries and materialUses, so that a file of many is not
+  // searched line by line.
+  std::unordered_set<std::string> libraryNames_, useNames_;
 };
 
 void Scanner::scanLine(std::string_view line, size_t number, ObjScan& out) {
@@ -263,11 +267,10 @@ void Scanner::index(std::string_view digits, std::string_view token, long long c
 
 // File names after `mtllib`, separated by blanks; a backslash escapes the next character, as
 // tinyobjloader reads them.
-void Scanner::materialLibraries(std::string_view arguments, ObjScan& out) const {
+void Scanner::materialLibraries(std::string_view arguments, ObjScan& out) {
   std::string name;
   auto flush = [&] {
-    if (!name.empty() && std::none_of(out.materialLibraries.begin(), out.materialLibraries.end(),
-                                      [&](const NamedAtLine& l) { return l.name == name; }))
+    if (!name.empty() && libraryNames_.insert(name).second)
       out.materialLibraries.push_back(NamedAtLine{name, line_});
     name.clear();
   };
@@ -284,14 +287,11 @@ void Scanner::materialLibraries(std::string_view arguments, ObjScan& out) const 
 }
 
 // The material name after `usemtl`: its first word, as tinyobjloader reads it.
-void Scanner::materialUse(std::string_view arguments, ObjScan& out) const {
+void Scanner::materialUse(std::string_view arguments, ObjScan& out) {
   const size_t first = arguments.find_first_not_of(" \t");
   if (first == std::string_view::npos) return;
-  const std::string_view word =
-      arguments.substr(first, arguments.find_first_of(" \t\r", first) - first);
-  if (std::none_of(out.materialUses.begin(), out.materialUses.end(),
-                   [&](const NamedAtLine& use) { return use.name == word; }))
-    out.materialUses.push_back(NamedAtLine{std::string(word), line_});
+  std::string word(arguments.substr(first, arguments.find_first_of(" \t\r", first) - first));
+  if (useNames_.insert(word).second) out.materialUses.push_back(NamedAtLine{word, line_});
 }
 
 // A face of more than four corners goes to tinyobjloader as triangles, which keep the corners'
