@@ -98,7 +98,8 @@ CANDELA_HDI void estimateDirect(const SceneView& scene, const Bsdf& bsdf, const 
                                 SampleStream& rng, ShadowQuery* shadow) {
   // One dimension for the lone point light, or two for a picked one (the pick with its light's
   // sample, and one passed over unless the pick's place in its share is too coarse), whatever
-  // the geometry, so the stream's layout never depends on it.
+  // the geometry, so the stream's layout never depends on it (estimateDirectFromEach passes over
+  // the same two).
   float u1 = 0.0f, u2 = 0.0f;
   if (scene.lonePointLight) {
     drawLightNumbers(rng, scene.lights[0], &u1, &u2);

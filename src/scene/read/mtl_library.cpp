@@ -50,15 +50,16 @@ static void collectStatements(const std::string& text, const std::string& label,
 }
 
 MtlLibrary readMtlLibrary(const std::string& objPath, const std::string& objLabel,
-                          const std::vector<std::string>& names) {
+                          const std::vector<NamedAtLine>& names) {
   const std::filesystem::path folder = std::filesystem::path(objPath).parent_path();
   const std::filesystem::path labelFolder = std::filesystem::path(objLabel).parent_path();
   MtlLibrary library;
-  for (const std::string& name : names) {
+  for (const NamedAtLine& named : names) {
+    const std::string& name = named.name;
     std::string contents, reason;
     const std::string path = (folder / name).string();
     if (!readTextFile(path, &contents, &reason)) {
-      library.unread.push_back(MtlLibrary::Unread{name, reason});
+      library.unread.push_back(MtlLibrary::Unread{named, reason});
       continue;
     }
     library.files.push_back(path);

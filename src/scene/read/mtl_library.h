@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include "scene/read/obj_scanner.h"
+
 namespace candela {
 
 // One MTL statement: where it is and what follows its keyword (trimmed).
@@ -33,16 +35,16 @@ struct MtlLibrary {
   std::map<std::string, MtlTextures> statements;  // by material name
   std::vector<std::string> files;  // the files read, as paths from the OBJ file's folder
   struct Unread {
-    std::string name;  // as the OBJ file names it
+    NamedAtLine library;  // as the OBJ file names it, and where
     std::string why;
   };
   std::vector<Unread> unread;  // the files that could not be read
 };
 
-// Files that cannot be read are skipped (and listed in `unread`): their materials fall back to
-// the default. `objLabel`
-// is the OBJ file as messages show it; MTL files are shown beside it.
+// The files `names` (from the OBJ's `mtllib` statements). Files that cannot be read are skipped
+// (and listed in `unread`): their materials fall back to the default. `objLabel` is the OBJ file
+// as messages show it; MTL files are shown beside it.
 MtlLibrary readMtlLibrary(const std::string& objPath, const std::string& objLabel,
-                          const std::vector<std::string>& names);
+                          const std::vector<NamedAtLine>& names);
 
 }  // namespace candela

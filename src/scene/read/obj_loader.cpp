@@ -9,7 +9,6 @@
 #include <cstdlib>
 #include <filesystem>
 #include <sstream>
-#include <unordered_map>
 #include <unordered_set>
 
 #include "render/material_prepare.h"
@@ -250,12 +249,9 @@ std::vector<std::string> materialWarnings(const ObjScan& scan, const MtlLibrary&
       warnings.push_back(label + ": " + std::to_string(count - kWarningsNamed) + " more " + what +
                          "; diffuse 0.8 in their stead");
   };
-  std::unordered_map<std::string, size_t> libraryLines;
-  for (const NamedAtLine& named : scan.materialLibraries) libraryLines[named.name] = named.line;
   for (const MtlLibrary::Unread& unread : library.unread)
-    warn(libraryLines[unread.name], "cannot read the material library \"" + unread.name + "\" (" +
-                                        unread.why +
-                                        "); the materials it would define are diffuse 0.8");
+    warn(unread.library.line, "cannot read the material library \"" + unread.library.name + "\" (" +
+                                  unread.why + "); the materials it would define are diffuse 0.8");
   countRest("material libraries that cannot be read");
   if (count > 0 || scan.materialLibraries.empty()) return warnings;
   std::unordered_set<std::string> defined;
@@ -278,9 +274,7 @@ MeshDesc loadObjFile(const std::string& path, const std::string& label, TextureL
   tinyobj::ObjReaderConfig config;
   config.triangulate = true;
   config.vertex_color = false;
-  std::vector<std::string> libraryNames;
-  for (const NamedAtLine& named : scan.materialLibraries) libraryNames.push_back(named.name);
-  const MtlLibrary library = readMtlLibrary(path, label, libraryNames);
+  const MtlLibrary library = readMtlLibrary(path, label, scan.materialLibraries);
   tinyobj::ObjReader reader;
   if (!reader.ParseFromString(scan.text, library.text, config))
     throw SceneError(label + ": " + firstLine(reader.Error()));
