@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -148,10 +149,19 @@ TEST_F(CliAovTest, InstanceNamesAreWrittenBesideTheInstancePass) {
   EXPECT_EQ(fileText(path("f/frame_0001.instances.json")), expected);
   ASSERT_EQ(run("render named.json -q -o c.png --aov depth,material"), 0);
   EXPECT_FALSE(fs::exists(path("c.instances.json")));
-  // A frame whose table is missing is rendered again.
+  // A frame whose table is missing or cut short is rendered again; a whole one is kept
+  // (regression: a table never counted as whole, so every frame was rendered again).
+  const fs::path kept = path("f/frame_0001.png");
+  const auto old = fs::last_write_time(kept) - std::chrono::hours(1);
+  fs::last_write_time(kept, old);
   fs::remove(path("f/frame_0000.instances.json"));
   ASSERT_EQ(run("render named.json named.json -q -o f/ --aov instance"), 0);
   EXPECT_EQ(fileText(path("f/frame_0000.instances.json")), expected);
+  EXPECT_EQ(fs::last_write_time(kept), old);
+  dir_.write("f/frame_0001.instances.json", expected.substr(0, expected.size() / 2));
+  ASSERT_EQ(run("render named.json named.json -q -o f/ --aov instance"), 0);
+  EXPECT_EQ(fileText(path("f/frame_0001.instances.json")), expected);
+  EXPECT_NE(fs::last_write_time(kept), old);
 }
 
 TEST_F(CliAovTest, UnknownPassIsAUsageErrorListingTheKnownOnes) {

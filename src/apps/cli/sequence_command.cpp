@@ -5,9 +5,12 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <list>
 #include <memory>
 #include <optional>
+
+#include <nlohmann/json.hpp>
 
 #include "apps/cli/cli_error.h"
 #include "apps/cli/interrupt.h"
@@ -98,6 +101,14 @@ std::optional<uint32_t> frameOf(const std::string& file, const std::string& dir,
   const fs::path folder = path.parent_path().empty() ? fs::path(".") : path.parent_path();
   if (!sameFile(folder.string(), dir)) return std::nullopt;
   return frame;
+}
+
+// Whether a frame's file is whole: an image (isCompleteImageFile) or, for the table beside it
+// (the instance names), a JSON document.
+bool isCompleteFrameFile(const std::string& path) {
+  if (fs::path(path).extension() != ".json") return isCompleteImageFile(path);
+  std::ifstream in(path);
+  return in && nlohmann::json::accept(in);
 }
 
 // The "formats" a frame's files end in: "png", and for passes beside it "depth.pfm", ...
@@ -227,7 +238,7 @@ int runSequence(const RenderCommandOptions& options, std::vector<SceneDesc> scen
   for (uint32_t f = range.begin; f < range.end; ++f) {
     bool done = !options.overwrite;
     for (const std::string& suffix : suffixes)
-      done = done && isCompleteImageFile(framePath(dir, f, digits, suffix));
+      done = done && isCompleteFrameFile(framePath(dir, f, digits, suffix));
     if (!done) todo.push_back(f);
   }
   const uint32_t kept = range.end - range.begin - uint32_t(todo.size());
