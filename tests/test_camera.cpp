@@ -117,5 +117,63 @@ TEST(CameraConventions, RenderedEmitterLandsOnProjectedPixel) {
   EXPECT_LE(std::fabs(by + 0.5 - v), 1.0);
 }
 
+CameraMatrices matricesOf(const std::string& cameraJson) {
+  const SceneDesc d = parseSceneText(R"({"camera": )" + cameraJson + "}", "cam.json", ".");
+  return cameraMatrices(d.camera, "cam.json");
+}
+
+// The matrices a camera file holds (docs/aovs.md) project a world point to where the renderer's
+// ray through that pixel passes: u ~ K (R x + t), for every way of writing a camera.
+TEST(CameraMatrices, ProjectWorldPointsWhereTheRaysGo) {
+  for (const char* json :
+       {R"({"width": 64, "height": 48, "fov": 60, "position": [0, 0, 55]})",
+        R"({"width": 50, "height": 40, "fov": 90, "position": [6, 1, 0.5], "rotation": [10, 90, -20]})",
+        R"({"width": 40, "height": 30, "fov": 45, "position": [5, 1, 2], "look_at": [0, 0, 0],
+            "up": [0, 0, 1]})",
+        R"({"width": 80, "height": 50, "intrinsics": {"fx": 60, "fy": 75, "cx": 41.5, "cy": 23},
+            "position": [0, 0, 9], "look_at": [1, 0, 0]})",
+        R"({"width": 32, "height": 32, "fov": 40, "position": [0, 0, 9], "aperture_radius": 0.5,
+            "focus_distance": 9})"}) {
+    const Camera cam = cameraOf(json);
+    const CameraMatrices m = matricesOf(json);
+    EXPECT_EQ(m.width, cam.width);
+    EXPECT_EQ(m.height, cam.height);
+    for (int i = 0; i < 3; ++i) {  // the files print -0 as 0
+      EXPECT_FALSE(m.translation[i] == 0.0f && std::signbit(m.translation[i])) << json;
+      for (int j = 0; j < 3; ++j)
+        EXPECT_FALSE(m.rotation.m[i][j] == 0.0f && std::signbit(m.rotation.m[i][j])) << json;
+    }
+    for (const Vec3 x : {Vec3(0, 0, 0), Vec3(0.5f, 1, -0.3f), Vec3(-1, -0.5f, 0.8f)}) {
+      const Vec3 xc = m.rotation * x + m.translation;
+      const Vec3 p = m.intrinsics * xc;
+      ASSERT_GT(xc.z, 0.0f) << json;
+      EXPECT_LT(rayMiss(cam, {p.x / p.z, p.y / p.z}, x), 1e-4 * (1 + length(x - cam.position)))
+          << json << " at " << x.x << " " << x.y << " " << x.z;
+    }
+  }
+}
+
+TEST(CameraMatrices, GiveBackTheExtrinsicsAndLensAsWritten) {
+  const CameraMatrices m = matricesOf(
+      R"({"width": 20, "height": 10, "intrinsics": [[30, 0, 10], [0, 31, 5], [0, 0, 1]],
+          "extrinsics": [[0, 0, 1, 0.5], [1, 0, 0, -2], [0, 1, 0, 7], [0, 0, 0, 1]],
+          "aperture_radius": 0.25, "focus_distance": 6})");
+  const float r[3][3] = {{0, 0, 1}, {1, 0, 0}, {0, 1, 0}}, t[3] = {0.5f, -2, 7};
+  const float k[3][3] = {{30, 0, 10}, {0, 31, 5}, {0, 0, 1}};
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_FLOAT_EQ(m.translation[i], t[i]);
+    for (int j = 0; j < 3; ++j) {
+      EXPECT_EQ(m.rotation.m[i][j], r[i][j]);
+      EXPECT_EQ(m.intrinsics.m[i][j], k[i][j]);
+    }
+  }
+  EXPECT_EQ(m.apertureRadius, 0.25f);
+  EXPECT_EQ(m.focusDistance, 6.0f);
+  // A pinhole has no lens to report.
+  const CameraMatrices pinhole = matricesOf(R"({"fov": 40, "position": [0, 0, 3]})");
+  EXPECT_EQ(pinhole.apertureRadius, 0.0f);
+  EXPECT_EQ(pinhole.focusDistance, 0.0f);
+}
+
 }  // namespace
 }  // namespace candela

@@ -170,8 +170,51 @@ TEST_F(CliAovTest, UnknownPassIsAUsageErrorListingTheKnownOnes) {
   EXPECT_EQ(err,
             "candela: error: --aov: unknown render pass \"nromal\"; the passes are: depth, "
             "distance, normal, normal_camera, albedo, position, instance, material, flow, "
-            "direct, emission\n");
+            "direct, emission, and camera (the camera's matrices)\n");
   EXPECT_FALSE(fs::exists(path("out.png")));
+}
+
+// `--aov camera` writes the camera's K and [R|t] beside the image as a camera object of the scene
+// format, which, put in place of the camera it came from, renders the same image to the bit.
+TEST_F(CliAovTest, CameraFileIsACameraThatRendersTheSameImage) {
+  dir_.write("look.json", R"({
+    "camera": {"width": 12, "height": 9, "fov": 50, "position": [1, 2, 6], "look_at": [0, 0, 0]},
+    "spheres": [{"position": [0, 0, 0], "radius": 1, "color": 0.5}],
+    "lights": [{"position": [0, 3, 3], "intensity": 100}]})");
+  ASSERT_EQ(run("render look.json -q --spp 2 -o a.pfm --aov camera"), 0);
+  EXPECT_FALSE(fs::exists(path("a.camera.pfm")));
+  const std::string camera = fileText(path("a.camera.json"));
+  EXPECT_EQ(camera.rfind("{\n  \"width\": 12,\n  \"height\": 9,\n  \"intrinsics\": [", 0), 0u)
+      << camera;
+  EXPECT_NE(camera.find("\"extrinsics\": ["), std::string::npos) << camera;
+  EXPECT_NE(camera.find("[0.0, 0.0, 0.0, 1.0]"), std::string::npos) << camera;
+  EXPECT_EQ(camera.find("aperture_radius"), std::string::npos) << "a pinhole has no lens";
+  dir_.write("given.json", R"({"camera": )" + camera + R"(,
+    "spheres": [{"position": [0, 0, 0], "radius": 1, "color": 0.5}],
+    "lights": [{"position": [0, 3, 3], "intensity": 100}]})");
+  ASSERT_EQ(run("render given.json -q --spp 2 -o b.pfm"), 0);
+  // The camera's centre comes back as -R^T t, within rounding of where it was.
+  const double difference = candela::test::relMseAgainst(
+      candela::readImage(path("a.pfm").string()).pixels,
+      candela::readImage(path("b.pfm").string()).pixels);
+  EXPECT_LT(difference, 1e-9);
+
+  // A thin lens keeps its lens; an .exr gets the file too, and so does each frame of a sequence,
+  // with that frame's camera.
+  dir_.write("lens.json", R"({
+    "camera": {"width": 8, "height": 8, "fov": 40, "position": [0, 0, 5], "aperture_radius": 0.2,
+               "focus_distance": 4.5},
+    "spheres": [{"id": "ball", "position": [0, 0, 0], "radius": 1}],
+    "animation": {"frames": 2, "tracks": [
+      {"target": "camera", "property": "position", "keys": [[0, [0, 0, 5]], [1, [1, 0, 5]]]}]}})");
+  ASSERT_EQ(run("render lens.json -q --spp 1 -o f/ --format exr --aov camera,depth"), 0);
+  const std::string first = fileText(path("f/frame_0000.camera.json"));
+  EXPECT_NE(first.find("\"aperture_radius\": 0.2,\n  \"focus_distance\": 4.5\n}\n"),
+            std::string::npos) << first;
+  EXPECT_NE(first.find("[1.0, 0.0, 0.0, 0.0]"), std::string::npos) << first;
+  // Frame 1's camera is 1 to the right: t = -R C has -1 in x.
+  const std::string second = fileText(path("f/frame_0001.camera.json"));
+  EXPECT_NE(second.find("[1.0, 0.0, 0.0, -1.0]"), std::string::npos) << second;
 }
 
 TEST_F(CliAovTest, SiblingFilesNeverOverwriteAnInput) {

@@ -123,6 +123,20 @@ class Scene:
         place in the file, e.g. "spheres[2]"}; 0, the background, is not in it."""
         return dict(self._core.instances)
 
+    @property
+    def camera(self) -> Dict[str, Any]:
+        """This scene's (or frame's) camera as a vision dataset records it, the same as
+        `candela render --aov camera` writes beside the image (docs/aovs.md, *The camera file*):
+        {"width", "height", "intrinsics": K (3, 3), "extrinsics": [R t; 0 1] (4, 4)}, and
+        "aperture_radius" and "focus_distance" for a thin lens. K puts pixel centres at +0.5
+        (OpenCV's cx and cy are 0.5 less); a world point p is at R p + t in OpenCV's camera axes
+        (+x right, +y down, +z forward). The matrices are float64 arrays holding the float32
+        values the renderer uses; as the scene's "camera" (lists) they render the same image."""
+        camera = dict(self._core._camera)
+        for key in ("intrinsics", "extrinsics"):
+            camera[key] = np.array(camera[key], dtype=np.float64)
+        return camera
+
     def render(self, spp: Optional[int] = None, seed: Optional[int] = None,
                backend: str = "auto", sample_range: Optional[Tuple[int, int]] = None,
                threads: int = 0, aovs: Optional[Sequence[str]] = None, denoise: bool = False
@@ -177,6 +191,9 @@ def _pass_names(aovs: Optional[Sequence[str]]) -> Optional[list]:
     if isinstance(aovs, str):
         raise TypeError("aovs must be a list of pass names, e.g. ['depth', 'normal']")
     names = [str(a) for a in aovs]
+    if "camera" in names:  # the CLI's --aov camera writes a file; here it is a property
+        raise ValueError('"camera" is no render pass: scene.camera (or scene.frame(k).camera) '
+                         "gives the camera's matrices")
     _candela.check_aovs(names)
     return names
 

@@ -121,16 +121,20 @@ std::vector<Aov> aovsFromNames(const std::vector<std::string>& names) {
   return aovs;
 }
 
-std::vector<Aov> parseAovList(const std::string& list) {
+std::vector<std::string> splitPassList(const std::string& list) {
   std::vector<std::string> names;
   size_t start = 0;
   for (;;) {
     const size_t comma = list.find(',', start);
-    names.push_back(list.substr(start, comma - start));
+    names.push_back(trimmed(list.substr(start, comma - start)));
     if (comma == std::string::npos) break;
     start = comma + 1;
   }
-  return aovsFromNames(names);
+  return names;
+}
+
+std::vector<Aov> parseAovList(const std::string& list) {
+  return aovsFromNames(splitPassList(list));
 }
 
 bool hasAov(const std::vector<Aov>& aovs, Aov aov) {

@@ -36,7 +36,10 @@ std::string knownAovNames();
 // unknown pass and listing the known ones.
 std::vector<Aov> aovsFromNames(const std::vector<std::string>& names);
 
-// The same from a comma-separated list, "depth,normal" (spaces around names are ignored).
+// The names of a comma-separated list, "depth, normal", without the spaces around them.
+std::vector<std::string> splitPassList(const std::string& list);
+
+// The passes of such a list.
 std::vector<Aov> parseAovList(const std::string& list);
 
 // Whether `aovs` asks for `aov`.

@@ -139,4 +139,28 @@ Camera resolveCamera(const CameraDesc& desc, const std::string& fileLabel) {
   return cam;
 }
 
+CameraMatrices cameraMatrices(const CameraDesc& desc, const std::string& fileLabel) {
+  const Camera cam = resolveCamera(desc, fileLabel);
+  CameraMatrices out;
+  out.width = cam.width;
+  out.height = cam.height;
+  out.intrinsics = intrinsicMatrix(desc);
+  out.rotation = cam.cameraToWorld.transposed();
+  float t[3];
+  for (int i = 0; i < 3; ++i) {
+    float* row = out.rotation.m[i];
+    // t = -R C, summed in double: the one rounding is the result's.
+    t[i] = float(-(double(row[0]) * cam.position.x + double(row[1]) * cam.position.y +
+                   double(row[2]) * cam.position.z)) +
+           0.0f;  // + 0 turns -0 into 0, here and below, for the files' sake
+    for (int j = 0; j < 3; ++j) row[j] += 0.0f;
+  }
+  out.translation = Vec3(t[0], t[1], t[2]);
+  if (cam.apertureRadius > 0.0f) {
+    out.apertureRadius = cam.apertureRadius;
+    out.focusDistance = cam.focusDistance;
+  }
+  return out;
+}
+
 }  // namespace candela

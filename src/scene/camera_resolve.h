@@ -3,6 +3,7 @@
 // camera-to-world rotation (+x right, +y down, +z forward).
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string>
 
@@ -27,5 +28,20 @@ Camera resolveCamera(const CameraDesc& desc, const std::string& fileLabel);
 
 // The intrinsic matrix K of a camera description (from fov or as given).
 Mat3 intrinsicMatrix(const CameraDesc& desc);
+
+// A camera as a vision dataset records it (docs/aovs.md, *The camera file*): K with candela's
+// pixel centres at +0.5, and the world-to-camera pose [R | t] in OpenCV's axes, as the contract's
+// `intrinsics` and `extrinsics` take them, so that a camera given so renders the same image.
+struct CameraMatrices {
+  uint32_t width = 0, height = 0;
+  Mat3 intrinsics;
+  Mat3 rotation;             // R
+  Vec3 translation;          // t: a world point p is at R p + t in camera space
+  float apertureRadius = 0;  // a thin lens where above 0, focused at focusDistance along +z
+  float focusDistance = 0;
+};
+
+// The matrices of the camera `desc` makes; throws SceneError as resolveCamera does.
+CameraMatrices cameraMatrices(const CameraDesc& desc, const std::string& fileLabel);
 
 }  // namespace candela

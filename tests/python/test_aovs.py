@@ -1,4 +1,8 @@
-"""scene.render(aovs=[...]): a dict of the image and the passes (docs/aovs.md)."""
+"""scene.render(aovs=[...]): a dict of the image and the passes (docs/aovs.md); scene.camera."""
+import json
+import subprocess
+import sys
+
 import numpy as np
 import pytest
 
@@ -91,3 +95,82 @@ def test_instances_name_the_numbers_of_the_instance_pass():
     ids = scene.render(spp=2, backend="cpu", aovs=["instance"])["instance"]
     assert set(np.unique(ids)) == {0, 1, 2}  # the background, the ground and the ball
     assert ids[7, 8] == 2  # beside the image's centre, on the ball
+
+
+def test_camera_projects_each_pixels_first_hit_onto_its_centre():
+    # The camera's matrices (docs/aovs.md, The camera file) against the renderer's own rays:
+    # without antialiasing every sample passes through its pixel's centre, so K (R p + t) of the
+    # position pass lands on (x + 0.5, y + 0.5), for a look-at camera with non-square intrinsics.
+    spec = tiny_scene(spp=1, size=24)
+    spec["camera"] = {"width": 24, "height": 18, "intrinsics": {"fx": 20, "fy": 26, "cx": 11, "cy": 9.5},
+                      "position": [1.5, 2, 5], "look_at": [0, 0.5, 0], "spp": 1}
+    spec["render"]["antialiasing"] = False
+    scene = candela.Scene.from_dict(spec)
+    camera = scene.camera
+    assert (camera["width"], camera["height"]) == (24, 18) and "aperture_radius" not in camera
+    K, E = camera["intrinsics"], camera["extrinsics"]
+    assert K.dtype == np.float64 and K.shape == (3, 3) and E.shape == (4, 4)
+    np.testing.assert_array_equal(K, [[20, 0, 11], [0, 26, 9.5], [0, 0, 1]])
+    np.testing.assert_array_equal(E[3], [0, 0, 0, 1])
+    R, t = E[:3, :3], E[:3, 3]
+    np.testing.assert_allclose(R @ R.T, np.eye(3), atol=1e-6)
+    np.testing.assert_allclose(-R.T @ t, [1.5, 2, 5], atol=1e-5)  # the camera's centre
+    position = scene.render(backend="cpu", aovs=["position"])["position"].astype(np.float64)
+    hit = np.isfinite(position).all(axis=2) & (np.abs(position).sum(axis=2) > 0)
+    assert hit.mean() > 0.7  # the rest is sky
+    p = (position @ R.T + t) @ K.T
+    uv = p[..., :2] / p[..., 2:]
+    y, x = np.mgrid[0:18, 0:24]
+    np.testing.assert_allclose(uv[hit], np.stack([x + 0.5, y + 0.5], axis=-1)[hit], atol=2e-3)
+
+
+def test_camera_given_back_renders_the_same_image_and_follows_the_animation():
+    spec = animated_scene(frames=3, spp=2)
+    spec["animation"]["tracks"].append(
+        {"target": "camera", "property": "position", "keys": [[0, [0, 1.5, 6]], [2, [2, 1.5, 6]]]})
+    scene = candela.Scene.from_dict(spec)
+    for k in range(3):
+        frame = scene.frame(k)
+        camera = frame.camera
+        np.testing.assert_allclose(-camera["extrinsics"][:3, :3].T @ camera["extrinsics"][:3, 3],
+                                   [k, 1.5, 6], atol=1e-5)
+        still = tiny_scene(spp=2)
+        still["spheres"][1]["position"] = [-1 + k, 0.5, 0]
+        still["render"]["seed"] = frame.seed
+        still["camera"] = {key: (v.tolist() if isinstance(v, np.ndarray) else v)
+                           for key, v in camera.items()}
+        still["camera"]["spp"] = 2  # samples are the render's, not the camera's
+        again = candela.Scene.from_dict(still).render(backend="cpu")
+        image = frame.render(backend="cpu")
+        # Equal up to rounding: the camera's centre comes back as -R^T t.
+        assert np.abs(again - image).max() <= 1e-5 * image.max()
+
+
+def test_camera_is_what_the_cli_writes_beside_each_frame(tmp_path):
+    spec = animated_scene(frames=2, spp=1)
+    spec["animation"]["tracks"].append(
+        {"target": "camera", "property": "position", "keys": [[0, [0, 1.5, 6]], [1, [0.5, 1, 6]]]})
+    path = tmp_path / "anim.json"
+    path.write_text(json.dumps(spec))
+    cli = subprocess.run([sys.executable, "-m", "candela", "render", str(path), "-q", "--aov", "camera",
+                          "-o", str(tmp_path / "f") + "/"], capture_output=True, text=True)
+    assert cli.returncode == 0, cli.stderr
+    scene = candela.Scene.load(path)
+    for k in range(2):
+        written = json.loads((tmp_path / "f" / f"frame_000{k}.camera.json").read_text())
+        camera = scene.frame(k).camera
+        assert written.keys() == camera.keys()
+        for key in ("intrinsics", "extrinsics"):  # the file holds the float32 values' shortest text
+            np.testing.assert_array_equal(np.float32(written[key]), np.float32(camera[key]))
+
+
+def test_camera_among_the_passes_points_to_the_property():
+    with pytest.raises(ValueError, match=r"scene.camera \(or scene.frame\(k\).camera\)"):
+        candela.Scene.from_dict(SCENE).render(aovs=["depth", "camera"])
+
+
+def test_thin_lens_camera_reports_its_lens():
+    spec = tiny_scene()
+    spec["camera"].update(aperture_radius=0.1, focus_distance=5.5)
+    camera = candela.Scene.from_dict(spec).camera
+    assert camera["aperture_radius"] == pytest.approx(0.1) and camera["focus_distance"] == 5.5

@@ -1,6 +1,7 @@
 // Where a render's passes (--aov) are written: inside a multi-layer .exr beside R, G, B, or, for
 // a .png or .pfm image, as sibling .pfm files named after it, out.png -> out.depth.pfm; with the
-// instance pass, the names of its numbers beside it, out.instances.json (docs/aovs.md).
+// instance pass, the names of its numbers beside it, out.instances.json; and with `camera`, the
+// camera's matrices, out.camera.json (docs/aovs.md).
 #pragma once
 
 #include <string>
@@ -14,20 +15,35 @@
 
 namespace candela::cli {
 
-// The sibling files of `image` for `aovs`: a .pfm per pass (none for an .exr, which holds them),
-// then, with the instance pass, the instance names' .json.
-std::vector<std::string> passFilePaths(const std::string& image, const std::vector<Aov>& aovs);
+// What --aov asks for beside the image: render passes, and the camera file.
+struct PassFiles {
+  std::vector<Aov> aovs;
+  bool camera = false;
+};
+
+// --aov's comma-separated list: "camera" is the camera file, every other name a pass. Throws
+// std::invalid_argument naming an unknown name and listing the known ones.
+PassFiles parsePassFiles(const std::string& list);
+
+// The sibling files of `image` for `files`: a .pfm per pass (none for an .exr, which holds them),
+// then, with the instance pass, the instance names' .json, then the camera's .json.
+std::vector<std::string> passFilePaths(const std::string& image, const PassFiles& files);
 
 // The instance names' table: {"1": "floor", "2": "spheres[1]", ...}, as scene.instances in Python
 // (scene/flatten.h, instanceNames).
 std::string encodeInstanceNames(const SceneDesc& desc);
 
+// The camera of `desc` as a camera object of the scene format (scene/camera_resolve.h,
+// cameraMatrices): {"width", "height", "intrinsics": K, "extrinsics": [R t; 0 1]}, and the lens's
+// "aperture_radius" and "focus_distance" where it has one.
+std::string encodeCamera(const SceneDesc& desc);
+
 // The bytes of `image` and of its sibling files, as (path, bytes), the image first: what a
-// render of `scene`, flattened from `desc`, with `aovs` writes. Throws ImageWriteError.
+// render of `scene`, flattened from `desc`, with `files` writes. Throws ImageWriteError.
 std::vector<std::pair<std::string, std::string>> encodeWithPasses(const std::string& image,
                                                                   const RenderResult& result,
                                                                   const SceneData& scene,
-                                                                  const std::vector<Aov>& aovs,
+                                                                  const PassFiles& files,
                                                                   const SceneDesc& desc);
 
 }  // namespace candela::cli

@@ -103,10 +103,10 @@ double denoiseTimed(const OidnDenoiser* denoiser, RenderResult& result, const Sc
   return secondsSince(start);
 }
 
-std::vector<Aov> chooseAovs(const RenderCommandOptions& options) {
+PassFiles choosePassFiles(const RenderCommandOptions& options) {
   if (options.aovs.empty()) return {};
   try {
-    return parseAovList(options.aovs);
+    return parsePassFiles(options.aovs);
   } catch (const std::invalid_argument& e) {
     throw CliError(kExitUsage, std::string("--aov: ") + e.what());
   }
@@ -165,7 +165,8 @@ CLI::App* addRenderCommand(CLI::App& app, RenderCommandOptions* options) {
   cmd->add_option("--aov", options->aovs,
                   "Render passes to write beside the image, comma-separated: depth, distance, "
                   "normal, normal_camera, albedo, position, instance, material, flow, direct, "
-                  "emission (in an .exr as layers, else as sibling .pfm files: out.depth.pfm)");
+                  "emission (in an .exr as layers, else as sibling .pfm files: out.depth.pfm); "
+                  "camera writes the camera's K and [R|t] beside them (out.camera.json)");
   cmd->add_flag("--denoise", options->denoise,
                 "Denoise the image with Intel Open Image Denoise, its direct and indirect light "
                 "apart, guided by the albedo and normal passes (needs OIDN 2: pip install "
@@ -195,7 +196,7 @@ int runRender(const RenderCommandOptions& options) {
   // while the scenes load instead of inside the first parallel step, the BVH build
   // (docs/performance.md).
   tbb::this_task_arena::enqueue([] {});
-  chooseAovs(options);  // an unknown pass is refused before anything loads
+  choosePassFiles(options);  // an unknown pass is refused before anything loads
   // Every scene is loaded and validated before anything renders or is written.
   const auto loadStart = std::chrono::steady_clock::now();
   std::vector<SceneDesc> scenes;
@@ -218,10 +219,10 @@ int renderStill(const RenderCommandOptions& options, SceneDesc desc, double load
   const std::string& sceneFile = options.scenes[0];
   const std::string output = options.output.empty() ? defaultOutputPath(sceneFile) : options.output;
   checkOutputPath(output);
-  const std::vector<Aov> aovs = chooseAovs(options);
+  const PassFiles passes = choosePassFiles(options);
   std::vector<OutputFile> outputs = {
       {options.output.empty() ? "the default output" : "-o", output}};
-  for (const std::string& pass : passFilePaths(output, aovs)) outputs.push_back({"--aov", pass});
+  for (const std::string& pass : passFilePaths(output, passes)) outputs.push_back({"--aov", pass});
   if (!options.stats.empty()) outputs.push_back({"--stats", options.stats});
   checkOutputFiles(outputs, inputFiles({desc}));
   std::string backendNote;
@@ -233,8 +234,8 @@ int renderStill(const RenderCommandOptions& options, SceneDesc desc, double load
   const auto flattenStart = std::chrono::steady_clock::now();
   // A still does not move: its flow pass is 0 (and NaN nowhere, as both cameras are one).
   std::optional<FlowMotion> flow;
-  if (hasAov(aovs, Aov::Flow)) flow = flowMotion(desc, desc);
-  SceneData scene = flattenScene(std::move(desc));  // only desc.output is used below
+  if (hasAov(passes.aovs, Aov::Flow)) flow = flowMotion(desc, desc);
+  SceneData scene = flattenScene(std::move(desc));  // it keeps all but the meshes, for the files
   if (flow) applyFlowMotion(scene, *flow);
   const double flattenSeconds = secondsSince(flattenStart);
   if (!backendNote.empty() && !options.quiet)
@@ -249,7 +250,7 @@ int renderStill(const RenderCommandOptions& options, SceneDesc desc, double load
   render.sceneLabel = sceneFile;
   render.threads = options.threads;
   render.cancel = &interrupt.flag();
-  render.aovs = !aovs.empty() || denoiser;
+  render.aovs = !passes.aovs.empty() || denoiser;
   if (bar) render.progress = [&bar](double fraction) { bar->update(fraction); };
   const std::unique_ptr<Renderer> renderer = makeRenderer(backend, engine);
   renderer->setScene(scene, SceneChange::Structure);
@@ -264,7 +265,7 @@ int renderStill(const RenderCommandOptions& options, SceneDesc desc, double load
   }
   createParentDirectories(output);
   std::list<StagedFile> images;  // the image and its pass files, all or none
-  for (const auto& [path, bytes] : encodeWithPasses(output, result, scene, aovs, desc))
+  for (const auto& [path, bytes] : encodeWithPasses(output, result, scene, passes, desc))
     images.emplace_back(path, bytes);
   std::optional<StagedFile> stats;
   if (!options.stats.empty()) {

@@ -13,6 +13,7 @@
 #include <CLI/CLI.hpp>
 
 #include "apps/cli/cli_options.h"
+#include "apps/cli/pass_files.h"
 #include "apps/denoise/oidn_denoiser.h"
 #include "render/aov_layers.h"
 #include "scene/scene_desc.h"
@@ -32,8 +33,9 @@ int runRender(const RenderCommandOptions& options);
 CpuEngine chooseCpuEngine(const RenderCommandOptions& options, uint64_t triangles,
                           uint64_t spheres);
 
-// The passes --aov asks for, in its order; CliError (usage) naming an unknown one.
-std::vector<Aov> chooseAovs(const RenderCommandOptions& options);
+// The passes --aov asks for, in its order, and whether it asks for the camera file; CliError
+// (usage) naming an unknown name.
+PassFiles choosePassFiles(const RenderCommandOptions& options);
 
 // With --denoise, Open Image Denoise, loaded; CliError (usage) saying how to install it where it
 // is not found. Without, null.

@@ -103,8 +103,8 @@ std::optional<uint32_t> frameOf(const std::string& file, const std::string& dir,
   return frame;
 }
 
-// Whether a frame's file is whole: an image (isCompleteImageFile) or, for the table beside it
-// (the instance names), a JSON document.
+// Whether a frame's file is whole: an image (isCompleteImageFile) or, for the tables beside it
+// (the instance names, the camera), a JSON document.
 bool isCompleteFrameFile(const std::string& path) {
   if (fs::path(path).extension() != ".json") return isCompleteImageFile(path);
   std::ifstream in(path);
@@ -112,9 +112,9 @@ bool isCompleteFrameFile(const std::string& path) {
 }
 
 // The "formats" a frame's files end in: "png", and for passes beside it "depth.pfm", ...
-std::vector<std::string> frameSuffixes(const std::string& format, const std::vector<Aov>& aovs) {
+std::vector<std::string> frameSuffixes(const std::string& format, const PassFiles& passes) {
   std::vector<std::string> suffixes = {format};
-  for (const std::string& pass : passFilePaths("frame." + format, aovs))
+  for (const std::string& pass : passFilePaths("frame." + format, passes))
     suffixes.push_back(pass.substr(std::string("frame.").size()));
   return suffixes;
 }
@@ -205,15 +205,15 @@ int runSequence(const RenderCommandOptions& options, std::vector<SceneDesc> scen
                                    "to one image");
   }
   const FrameRange range = parseFrames(options.frames, count);
-  const std::vector<Aov> aovs = chooseAovs(options);
-  const bool wantsFlow = hasAov(aovs, Aov::Flow);
+  const PassFiles passes = choosePassFiles(options);
+  const bool wantsFlow = hasAov(passes.aovs, Aov::Flow);
   // The flow pass follows one scene's animation to its next frame; separate files say nothing
   // of how their entities correspond.
   if (wantsFlow && scenes.size() > 1)
     throw CliError(kExitUsage,
                    "--aov flow: the flow pass is the motion of one animated scene; a sequence of "
                    "several scene files has none (render them one by one, or as one animation)");
-  const std::vector<std::string> suffixes = frameSuffixes(format, aovs);
+  const std::vector<std::string> suffixes = frameSuffixes(format, passes);
   const std::unique_ptr<OidnDenoiser> denoiser = loadDenoiser(options);
   std::string backendNote;
   const Backend backend = chooseBackend(options.backend, &backendNote);
@@ -269,7 +269,7 @@ int runSequence(const RenderCommandOptions& options, std::vector<SceneDesc> scen
     render.sceneLabel = still.file;
     render.threads = options.threads;
     render.cancel = &interrupt.flag();
-    render.aovs = !aovs.empty() || denoiser;
+    render.aovs = !passes.aovs.empty() || denoiser;
     if (bar) render.progress = [&bar](double fraction) { bar->update(fraction); };
     renderer->setScene(data, frameScene.change());
     RenderResult result = renderChoosingLightPaths(*renderer, data, render);
@@ -284,7 +284,7 @@ int runSequence(const RenderCommandOptions& options, std::vector<SceneDesc> scen
     }
     const std::string path = framePath(dir, frame, digits, format);
     std::list<StagedFile> files;  // the frame and its pass files, all or none
-    for (const auto& [file, bytes] : encodeWithPasses(path, result, data, aovs, still))
+    for (const auto& [file, bytes] : encodeWithPasses(path, result, data, passes, still))
       files.emplace_back(file, bytes);
     for (StagedFile& file : files) file.commit();
     if (!options.quiet) {

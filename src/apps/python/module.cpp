@@ -34,6 +34,7 @@
 #include "image/image_io.h"
 #include "render/aov_layers.h"
 #include "scene/animation.h"
+#include "scene/camera_resolve.h"
 #include "scene/flatten.h"
 #include "scene/frame_scene.h"
 #include "scene/read/scene_loader.h"
@@ -394,6 +395,29 @@ NB_MODULE(_candela, m) {
         // The same in every frame.
         for (const auto& [number, name] : instanceNames(*s.desc)) names[nb::int_(number)] = name;
         return names;
+      })
+      .def_prop_ro("_camera", [](const Scene& s) {
+        // Rows of K and of [R t; 0 1] (docs/aovs.md, *The camera file*), as the CLI writes them.
+        const SceneDesc frame = s.still();
+        const CameraMatrices c = cameraMatrices(frame.camera, frame.file);
+        nb::list intrinsics, extrinsics;
+        for (int i = 0; i < 3; ++i) {
+          const float* k = c.intrinsics.m[i];
+          const float* r = c.rotation.m[i];
+          intrinsics.append(nb::make_tuple(k[0], k[1], k[2]));
+          extrinsics.append(nb::make_tuple(r[0], r[1], r[2], c.translation[i]));
+        }
+        extrinsics.append(nb::make_tuple(0.0f, 0.0f, 0.0f, 1.0f));
+        nb::dict camera;
+        camera["width"] = c.width;
+        camera["height"] = c.height;
+        camera["intrinsics"] = intrinsics;
+        camera["extrinsics"] = extrinsics;
+        if (c.apertureRadius > 0.0f) {
+          camera["aperture_radius"] = c.apertureRadius;
+          camera["focus_distance"] = c.focusDistance;
+        }
+        return camera;
       })
       .def_prop_ro("_last_change", [](const Scene& s) -> std::optional<std::string> {
         // What the last render of this scene (or of any of its frames) did with the flattened
