@@ -11,6 +11,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -170,7 +171,8 @@ TEST_F(CliAovTest, UnknownPassIsAUsageErrorListingTheKnownOnes) {
   EXPECT_EQ(err,
             "candela: error: --aov: unknown render pass \"nromal\"; the passes are: depth, "
             "distance, normal, normal_camera, albedo, position, instance, material, flow, "
-            "direct, emission, and camera (the camera's matrices)\n");
+            "direct, emission; and beside the image camera (the camera's matrices) and poses "
+            "(each instance's pose)\n");
   EXPECT_FALSE(fs::exists(path("out.png")));
 }
 
@@ -215,6 +217,47 @@ TEST_F(CliAovTest, CameraFileIsACameraThatRendersTheSameImage) {
   // Frame 1's camera is 1 to the right: t = -R C has -1 in x.
   const std::string second = fileText(path("f/frame_0001.camera.json"));
   EXPECT_NE(second.find("[1.0, 0.0, 0.0, -1.0]"), std::string::npos) << second;
+}
+
+// `--aov poses` writes each instance's placement, numbered as the instance pass: the model (the
+// unit sphere; the OBJ's own coordinates) to the world, and to the camera as the camera file's
+// extrinsics times that.
+TEST_F(CliAovTest, PosesFileHoldsEachInstancesPlacementInTheWorldAndTheCamera) {
+  dir_.write("tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  dir_.write("posed.json", R"({
+    "camera": {"width": 8, "height": 6, "fov": 50, "position": [1, 2, 6], "look_at": [0, 0, 0]},
+    "spheres": [{"id": "ball", "position": [0.5, -1, 2], "radius": 2}],
+    "objects": [{"file": "tri.obj", "position": [1, 2, 3], "rotation": [0, 90, 0], "scale": [2, 3, 4]}],
+    "lights": [{"type": "sphere", "position": [0, 5, 0], "radius": 0.5, "intensity": 10}]})");
+  ASSERT_EQ(run("render posed.json -q --spp 1 -o a.png --aov poses,camera"), 0);
+  const nlohmann::json poses = nlohmann::json::parse(fileText(path("a.poses.json")));
+  const nlohmann::json camera = nlohmann::json::parse(fileText(path("a.camera.json")));
+  ASSERT_EQ(poses.size(), 3u);
+  EXPECT_EQ(poses["1"]["name"], "ball");
+  EXPECT_EQ(poses["2"]["name"], "objects[0]");
+  EXPECT_EQ(poses["3"]["name"], "lights[0]");
+  // R_y(90) takes x to -z and z to x, scaled first by (2, 3, 4).
+  const double world[3][3][4] = {{{2, 0, 0, 0.5}, {0, 2, 0, -1}, {0, 0, 2, 2}},
+                                 {{0, 0, 4, 1}, {0, 3, 0, 2}, {-2, 0, 0, 3}},
+                                 {{0.5, 0, 0, 0}, {0, 0.5, 0, 5}, {0, 0, 0.5, 0}}};
+  for (int n = 0; n < 3; ++n) {
+    const nlohmann::json& pose = poses[std::to_string(n + 1)];
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j) {
+        const double expected = i < 3 ? world[n][i][j] : (j == 3 ? 1 : 0);
+        EXPECT_NEAR(pose["object_to_world"][i][j].get<double>(), expected, 1e-6)
+            << n + 1 << " " << i << " " << j;
+        double seen = 0;
+        for (int k = 0; k < 4; ++k)
+          seen += camera["extrinsics"][i][k].get<double>() *
+                  pose["object_to_world"][k][j].get<double>();
+        EXPECT_NEAR(pose["object_to_camera"][i][j].get<double>(), seen, 1e-5)
+            << n + 1 << " " << i << " " << j;
+      }
+  }
+  // Per frame of a sequence too.
+  ASSERT_EQ(run("render posed.json posed.json -q --spp 1 -o f/ --aov poses"), 0);
+  EXPECT_EQ(fileText(path("f/frame_0001.poses.json")), fileText(path("a.poses.json")));
 }
 
 TEST_F(CliAovTest, SiblingFilesNeverOverwriteAnInput) {

@@ -137,6 +137,19 @@ class Scene:
             camera[key] = np.array(camera[key], dtype=np.float64)
         return camera
 
+    @property
+    def poses(self) -> Dict[int, Dict[str, Any]]:
+        """Where each instance is in this scene (or frame), by the instance pass's numbers, the
+        same as `candela render --aov poses` writes (docs/aovs.md, *Instance poses*):
+        {number: {"name", "object_to_world", "object_to_camera"}}, each matrix a (4, 4) float64
+        array [A p; 0 0 0 1] taking the instance's model (an object's mesh as its OBJ file has it,
+        the unit sphere for a sphere or sphere light, the origin for a point light) to world
+        space, and to OpenCV's camera axes (the camera's extrinsics times the first)."""
+        return {number: {"name": name,
+                         "object_to_world": np.array(world, dtype=np.float64),
+                         "object_to_camera": np.array(seen, dtype=np.float64)}
+                for number, name, world, seen in self._core._poses}
+
     def render(self, spp: Optional[int] = None, seed: Optional[int] = None,
                backend: str = "auto", sample_range: Optional[Tuple[int, int]] = None,
                threads: int = 0, aovs: Optional[Sequence[str]] = None, denoise: bool = False
@@ -191,9 +204,10 @@ def _pass_names(aovs: Optional[Sequence[str]]) -> Optional[list]:
     if isinstance(aovs, str):
         raise TypeError("aovs must be a list of pass names, e.g. ['depth', 'normal']")
     names = [str(a) for a in aovs]
-    if "camera" in names:  # the CLI's --aov camera writes a file; here it is a property
-        raise ValueError('"camera" is no render pass: scene.camera (or scene.frame(k).camera) '
-                         "gives the camera's matrices")
+    for name, what in (("camera", "the camera's matrices"), ("poses", "each instance's pose")):
+        if name in names:  # the CLI's --aov writes them as files; here they are properties
+            raise ValueError(f'"{name}" is no render pass: scene.{name} (or '
+                             f"scene.frame(k).{name}) gives {what}")
     _candela.check_aovs(names)
     return names
 

@@ -174,3 +174,42 @@ def test_thin_lens_camera_reports_its_lens():
     spec["camera"].update(aperture_radius=0.1, focus_distance=5.5)
     camera = candela.Scene.from_dict(spec).camera
     assert camera["aperture_radius"] == pytest.approx(0.1) and camera["focus_distance"] == 5.5
+
+
+def test_poses_map_what_each_pixel_sees_back_onto_its_instances_model(tmp_path):
+    # An independent check of the poses (docs/aovs.md, Instance poses): the position pass of each
+    # pixel, taken back through its instance's object_to_world, must lie on that instance's model
+    # (the unit sphere; the OBJ's square in z = 0), in every frame of an animation that turns,
+    # scales and moves them; object_to_camera is the camera's extrinsics times object_to_world.
+    (tmp_path / "square.obj").write_text("v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nf 1 2 3 4\n")
+    spec = {
+        "camera": {"width": 32, "height": 24, "fov": 50, "position": [0.5, 1, 7], "look_at": [0, 0, 0], "spp": 1},
+        "render": {"antialiasing": False},
+        "spheres": [{"id": "ball", "position": [-1, 0, 0], "radius": 0.8}],
+        "objects": [{"id": "card", "file": "square.obj", "position": [1.2, 0.2, 0.5],
+                     "rotation": [20, -30, 10], "scale": [0.9, 1.3, 1]}],
+        "lights": [{"position": [0, 4, 4], "intensity": 300}],
+        "animation": {"frames": 2, "tracks": [
+            {"target": "card", "property": "rotation", "keys": [[0, [20, -30, 10]], [1, [-10, 40, 0]]]},
+            {"target": "ball", "property": "radius", "keys": [[0, 0.8], [1, 0.6]]}]},
+    }
+    (tmp_path / "s.json").write_text(json.dumps(spec))
+    scene = candela.Scene.load(tmp_path / "s.json")
+    for k in range(2):
+        frame = scene.frame(k)
+        poses, extrinsics = frame.poses, frame.camera["extrinsics"]
+        assert sorted(poses) == [1, 2, 3]
+        assert [poses[n]["name"] for n in (1, 2, 3)] == ["ball", "card", "lights[0]"]
+        np.testing.assert_allclose(poses[3]["object_to_world"][:3, 3], [0, 4, 4])
+        res = frame.render(backend="cpu", aovs=["position", "instance"])
+        for number, on_model in ((1, lambda q: np.linalg.norm(q, axis=1) - 1),
+                                 (2, lambda q: q[:, 2])):
+            world = poses[number]["object_to_world"]
+            np.testing.assert_allclose(poses[number]["object_to_camera"], extrinsics @ world,
+                                       rtol=1e-6, atol=1e-5)
+            seen = res["position"][res["instance"] == number].astype(np.float64)
+            assert len(seen) > 20
+            q = (seen - world[:3, 3]) @ np.linalg.inv(world[:3, :3]).T
+            np.testing.assert_allclose(on_model(q), 0, atol=2e-4)
+            if number == 2:
+                assert np.abs(q[:, :2]).max() <= 1 + 1e-4

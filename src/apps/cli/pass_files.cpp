@@ -11,6 +11,7 @@
 #include "image/image_io.h"
 #include "scene/camera_resolve.h"
 #include "scene/flatten.h"
+#include "scene/instance_poses.h"
 
 namespace fs = std::filesystem;
 
@@ -28,10 +29,19 @@ std::string instanceNamesPath(const std::string& image) {
   return siblingPath(image, "instances", ".json");
 }
 
-// The camera file beside `image` (encodeCamera).
+// The camera's and the poses' files beside `image` (encodeCamera, encodePoses).
 std::string cameraPath(const std::string& image) { return siblingPath(image, "camera", ".json"); }
+std::string posesPath(const std::string& image) { return siblingPath(image, "poses", ".json"); }
 
-constexpr const char* kCameraFile = "camera";
+// The names --aov takes beside the passes, for files of the scene's description.
+struct DescriptionFile {
+  const char* name;
+  const char* what;
+  bool PassFiles::*wanted;
+};
+constexpr DescriptionFile kDescriptionFiles[] = {
+    {"camera", "the camera's matrices", &PassFiles::camera},
+    {"poses", "each instance's pose", &PassFiles::poses}};
 
 // The shortest text that reads back to `value` as a float.
 std::string floatText(float value) {
@@ -40,15 +50,23 @@ std::string floatText(float value) {
       .dump();
 }
 
-// A matrix, a row a line: [\n    [a, b, c],\n    ...\n  ].
-std::string matrixText(const std::vector<std::vector<float>>& rows) {
+// A matrix, a row a line, under a key indented by `indent`: [\n    [a, b, c],\n    ...\n  ].
+std::string matrixText(const std::vector<std::vector<float>>& rows, const std::string& indent) {
   std::string text = "[";
   for (size_t i = 0; i < rows.size(); ++i) {
-    text += i ? ",\n    [" : "\n    [";
+    text += (i ? ",\n" : "\n") + indent + "  [";
     for (size_t j = 0; j < rows[i].size(); ++j) text += (j ? ", " : "") + floatText(rows[i][j]);
     text += "]";
   }
-  return text + "\n  ]";
+  return text + "\n" + indent + "]";
+}
+
+// The rows of [m p; 0 0 0 1].
+std::vector<std::vector<float>> affineRows(const Mat3& m, const Vec3& p) {
+  std::vector<std::vector<float>> rows;
+  for (int i = 0; i < 3; ++i) rows.push_back({m.m[i][0], m.m[i][1], m.m[i][2], p[i]});
+  rows.push_back({0.0f, 0.0f, 0.0f, 1.0f});
+  return rows;
 }
 
 }  // namespace
@@ -57,16 +75,19 @@ PassFiles parsePassFiles(const std::string& list) {
   PassFiles files;
   std::vector<std::string> passes;
   for (const std::string& name : splitPassList(list)) {
-    if (name == kCameraFile)
-      files.camera = true;
-    else
-      passes.push_back(name);
+    bool described = false;
+    for (const DescriptionFile& file : kDescriptionFiles)
+      if (name == file.name) files.*file.wanted = described = true;
+    if (!described) passes.push_back(name);
   }
   try {
     files.aovs = aovsFromNames(passes);
   } catch (const std::invalid_argument& e) {
-    throw std::invalid_argument(e.what() + std::string(", and ") + kCameraFile +
-                                " (the camera's matrices)");
+    std::string known = "; and beside the image ";
+    for (const DescriptionFile& file : kDescriptionFiles)
+      known += std::string(&file == kDescriptionFiles ? "" : " and ") + file.name + " (" +
+               file.what + ")";
+    throw std::invalid_argument(e.what() + known);
   }
   return files;
 }
@@ -77,6 +98,7 @@ std::vector<std::string> passFilePaths(const std::string& image, const PassFiles
     for (Aov aov : files.aovs) paths.push_back(siblingPath(image, aovName(aov), ".pfm"));
   if (hasAov(files.aovs, Aov::Instance)) paths.push_back(instanceNamesPath(image));
   if (files.camera) paths.push_back(cameraPath(image));
+  if (files.poses) paths.push_back(posesPath(image));
   return paths;
 }
 
@@ -88,21 +110,31 @@ std::string encodeInstanceNames(const SceneDesc& desc) {
 
 std::string encodeCamera(const SceneDesc& desc) {
   const CameraMatrices c = cameraMatrices(desc.camera, desc.file);
-  std::vector<std::vector<float>> intrinsics, extrinsics;
-  for (int i = 0; i < 3; ++i) {
-    const float* k = c.intrinsics.m[i];
-    const float* r = c.rotation.m[i];
-    intrinsics.push_back({k[0], k[1], k[2]});
-    extrinsics.push_back({r[0], r[1], r[2], c.translation[i]});
-  }
-  extrinsics.push_back({0.0f, 0.0f, 0.0f, 1.0f});
-  std::string text = "{\n  \"width\": " + std::to_string(c.width) +
-                     ",\n  \"height\": " + std::to_string(c.height) +
-                     ",\n  \"intrinsics\": " + matrixText(intrinsics) +
-                     ",\n  \"extrinsics\": " + matrixText(extrinsics);
+  std::vector<std::vector<float>> intrinsics;
+  for (const auto& row : c.intrinsics.m) intrinsics.push_back({row[0], row[1], row[2]});
+  std::string text =
+      "{\n  \"width\": " + std::to_string(c.width) +
+      ",\n  \"height\": " + std::to_string(c.height) +
+      ",\n  \"intrinsics\": " + matrixText(intrinsics, "  ") +
+      ",\n  \"extrinsics\": " + matrixText(affineRows(c.rotation, c.translation), "  ");
   if (c.apertureRadius > 0.0f)
     text += ",\n  \"aperture_radius\": " + floatText(c.apertureRadius) +
             ",\n  \"focus_distance\": " + floatText(c.focusDistance);
+  return text + "\n}\n";
+}
+
+std::string encodePoses(const SceneDesc& desc) {
+  const CameraMatrices camera = cameraMatrices(desc.camera, desc.file);
+  std::string text = "{";
+  for (const InstancePose& pose : instancePoses(desc)) {
+    const InstancePose seen = poseInCamera(pose, camera);
+    text += std::string(text.size() > 1 ? ",\n" : "\n") + "  \"" + std::to_string(pose.number) +
+            "\": {\n    \"name\": " + nlohmann::json(pose.name).dump() +
+            ",\n    \"object_to_world\": " +
+            matrixText(affineRows(pose.linear, pose.position), "    ") +
+            ",\n    \"object_to_camera\": " +
+            matrixText(affineRows(seen.linear, seen.position), "    ") + "\n  }";
+  }
   return text + "\n}\n";
 }
 
@@ -128,6 +160,7 @@ std::vector<std::pair<std::string, std::string>> encodeWithPasses(const std::str
   if (hasAov(files.aovs, Aov::Instance))
     out.emplace_back(instanceNamesPath(image), encodeInstanceNames(desc));
   if (files.camera) out.emplace_back(cameraPath(image), encodeCamera(desc));
+  if (files.poses) out.emplace_back(posesPath(image), encodePoses(desc));
   return out;
 }
 

@@ -166,7 +166,8 @@ CLI::App* addRenderCommand(CLI::App& app, RenderCommandOptions* options) {
                   "Render passes to write beside the image, comma-separated: depth, distance, "
                   "normal, normal_camera, albedo, position, instance, material, flow, direct, "
                   "emission (in an .exr as layers, else as sibling .pfm files: out.depth.pfm); "
-                  "camera writes the camera's K and [R|t] beside them (out.camera.json)");
+                  "camera and poses write the camera's K and [R|t] and each instance's pose "
+                  "beside them (out.camera.json, out.poses.json)");
   cmd->add_flag("--denoise", options->denoise,
                 "Denoise the image with Intel Open Image Denoise, its direct and indirect light "
                 "apart, guided by the albedo and normal passes (needs OIDN 2: pip install "

@@ -37,6 +37,7 @@
 #include "scene/camera_resolve.h"
 #include "scene/flatten.h"
 #include "scene/frame_scene.h"
+#include "scene/instance_poses.h"
 #include "scene/read/scene_loader.h"
 #include "scene/scene_error.h"
 
@@ -418,6 +419,25 @@ NB_MODULE(_candela, m) {
           camera["focus_distance"] = c.focusDistance;
         }
         return camera;
+      })
+      .def_prop_ro("_poses", [](const Scene& s) {
+        // (number, name, rows of [linear position] to the world and to the camera), as the
+        // CLI's poses file (docs/aovs.md, *Instance poses*).
+        const SceneDesc frame = s.still();
+        const CameraMatrices camera = cameraMatrices(frame.camera, frame.file);
+        const auto rows = [](const InstancePose& p) {
+          nb::list out;
+          for (int i = 0; i < 3; ++i)
+            out.append(nb::make_tuple(p.linear.m[i][0], p.linear.m[i][1], p.linear.m[i][2],
+                                      p.position[i]));
+          out.append(nb::make_tuple(0.0f, 0.0f, 0.0f, 1.0f));
+          return out;
+        };
+        nb::list poses;
+        for (const InstancePose& pose : instancePoses(frame))
+          poses.append(nb::make_tuple(pose.number, pose.name, rows(pose),
+                                      rows(poseInCamera(pose, camera))));
+        return poses;
       })
       .def_prop_ro("_last_change", [](const Scene& s) -> std::optional<std::string> {
         // What the last render of this scene (or of any of its frames) did with the flattened

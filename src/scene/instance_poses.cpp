@@ -1,0 +1,54 @@
+#include "scene/instance_poses.h"
+
+#include <utility>
+
+#include "core/rotation.h"
+#include "scene/flatten.h"
+
+namespace candela {
+
+std::vector<InstancePose> instancePoses(const SceneDesc& desc) {
+  std::vector<InstancePose> poses;
+  for (auto& [number, name] : instanceNames(desc)) {
+    InstancePose pose;
+    pose.number = number;
+    pose.name = std::move(name);
+    poses.push_back(std::move(pose));
+  }
+  size_t i = 0;
+  for (const SphereDesc& s : desc.spheres) {
+    poses[i].linear = Mat3::diagonal(Vec3(s.radius));
+    poses[i++].position = s.position;
+  }
+  for (const ObjectDesc& o : desc.objects) {
+    poses[i].linear = eulerRotation(o.rotation) * Mat3::diagonal(o.scale);
+    poses[i++].position = o.position;
+  }
+  for (const LightDesc& l : desc.lights) {
+    poses[i].linear = Mat3::diagonal(Vec3(l.type == LightType::Sphere ? l.radius : 1.0f));
+    poses[i++].position = l.position;
+  }
+  for (InstancePose& pose : poses)  // -0 as 0, for the files
+    for (auto& row : pose.linear.m)
+      for (float& v : row) v += 0.0f;
+  return poses;
+}
+
+InstancePose poseInCamera(const InstancePose& pose, const CameraMatrices& camera) {
+  InstancePose seen = pose;
+  // R m and R p + t, each entry summed in double: one rounding, the result's.
+  for (int i = 0; i < 3; ++i) {
+    const float* r = camera.rotation.m[i];
+    for (int j = 0; j < 3; ++j)
+      seen.linear.m[i][j] =
+          float(double(r[0]) * pose.linear.m[0][j] + double(r[1]) * pose.linear.m[1][j] +
+                double(r[2]) * pose.linear.m[2][j]) +
+          0.0f;  // -0 as 0, for the files
+    seen.position[i] = float(double(r[0]) * pose.position.x + double(r[1]) * pose.position.y +
+                             double(r[2]) * pose.position.z + double(camera.translation[i])) +
+                       0.0f;
+  }
+  return seen;
+}
+
+}  // namespace candela

@@ -1,0 +1,32 @@
+// Where each instance of the scene is, for vision datasets (docs/aovs.md, *Instance poses*): the
+// placement taking its model into world space, numbered as the instance pass numbers it.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/mat3.h"
+#include "core/vec3.h"
+#include "scene/camera_resolve.h"
+#include "scene/scene_desc.h"
+
+namespace candela {
+
+// p_world = linear p_model + position. An object's model is its mesh as its OBJ file has it
+// (linear = R diag(scale)); a sphere's and a sphere light's, the unit sphere at the origin
+// (linear = radius I); a point light's, the origin (linear = I).
+struct InstancePose {
+  uint32_t number = 0;
+  std::string name;  // as instanceNames gives it
+  Mat3 linear;
+  Vec3 position;
+};
+
+// Every instance's pose, in the order of its number.
+std::vector<InstancePose> instancePoses(const SceneDesc& desc);
+
+// The same pose in the camera's frame: from the model to OpenCV's camera axes, [R t] times it.
+InstancePose poseInCamera(const InstancePose& pose, const CameraMatrices& camera);
+
+}  // namespace candela
