@@ -139,6 +139,13 @@ Camera resolveCamera(const CameraDesc& desc, const std::string& fileLabel) {
   return cam;
 }
 
+AffineRows affineRows(const Mat3& m, const Vec3& p) {
+  AffineRows rows{};
+  for (int i = 0; i < 3; ++i) rows[i] = {m.m[i][0], m.m[i][1], m.m[i][2], p[i]};
+  rows[3] = {0.0f, 0.0f, 0.0f, 1.0f};
+  return rows;
+}
+
 CameraMatrices cameraMatrices(const CameraDesc& desc, const std::string& fileLabel) {
   const Camera cam = resolveCamera(desc, fileLabel);
   CameraMatrices out;

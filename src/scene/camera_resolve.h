@@ -3,6 +3,7 @@
 // camera-to-world rotation (+x right, +y down, +z forward).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -43,5 +44,9 @@ struct CameraMatrices {
 
 // The matrices of the camera `desc` makes; throws SceneError as resolveCamera does.
 CameraMatrices cameraMatrices(const CameraDesc& desc, const std::string& fileLabel);
+
+// [m p; 0 0 0 1] by rows: the 4 x 4 form the files write (the extrinsics [R t; 0 1], poses).
+using AffineRows = std::array<std::array<float, 4>, 4>;
+AffineRows affineRows(const Mat3& m, const Vec3& p);
 
 }  // namespace candela

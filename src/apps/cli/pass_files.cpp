@@ -1,6 +1,7 @@
 // Pass files beside an image; see pass_files.h.
 #include "apps/cli/pass_files.h"
 
+#include <array>
 #include <cstdint>
 #include <filesystem>
 #include <stdexcept>
@@ -51,7 +52,8 @@ std::string floatText(float value) {
 }
 
 // A matrix, a row a line, under a key indented by `indent`: [\n    [a, b, c],\n    ...\n  ].
-std::string matrixText(const std::vector<std::vector<float>>& rows, const std::string& indent) {
+template <class Rows>
+std::string matrixText(const Rows& rows, const std::string& indent) {
   std::string text = "[";
   for (size_t i = 0; i < rows.size(); ++i) {
     text += (i ? ",\n" : "\n") + indent + "  [";
@@ -59,14 +61,6 @@ std::string matrixText(const std::vector<std::vector<float>>& rows, const std::s
     text += "]";
   }
   return text + "\n" + indent + "]";
-}
-
-// The rows of [m p; 0 0 0 1].
-std::vector<std::vector<float>> affineRows(const Mat3& m, const Vec3& p) {
-  std::vector<std::vector<float>> rows;
-  for (int i = 0; i < 3; ++i) rows.push_back({m.m[i][0], m.m[i][1], m.m[i][2], p[i]});
-  rows.push_back({0.0f, 0.0f, 0.0f, 1.0f});
-  return rows;
 }
 
 }  // namespace
@@ -110,8 +104,9 @@ std::string encodeInstanceNames(const SceneDesc& desc) {
 
 std::string encodeCamera(const SceneDesc& desc) {
   const CameraMatrices c = cameraMatrices(desc.camera, desc.file);
-  std::vector<std::vector<float>> intrinsics;
-  for (const auto& row : c.intrinsics.m) intrinsics.push_back({row[0], row[1], row[2]});
+  std::array<std::array<float, 3>, 3> intrinsics;
+  for (int i = 0; i < 3; ++i)
+    intrinsics[i] = {c.intrinsics.m[i][0], c.intrinsics.m[i][1], c.intrinsics.m[i][2]};
   std::string text =
       "{\n  \"width\": " + std::to_string(c.width) +
       ",\n  \"height\": " + std::to_string(c.height) +

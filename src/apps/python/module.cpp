@@ -8,6 +8,7 @@
 // std::invalid_argument -> ValueError, BackendError -> RuntimeError.
 #include <nanobind/nanobind.h>
 #include <nanobind/ndarray.h>
+#include <nanobind/stl/array.h>
 #include <nanobind/stl/optional.h>
 #include <nanobind/stl/shared_ptr.h>
 #include <nanobind/stl/string.h>
@@ -401,19 +402,14 @@ NB_MODULE(_candela, m) {
         // Rows of K and of [R t; 0 1] (docs/aovs.md, *The camera file*), as the CLI writes them.
         const SceneDesc frame = s.still();
         const CameraMatrices c = cameraMatrices(frame.camera, frame.file);
-        nb::list intrinsics, extrinsics;
-        for (int i = 0; i < 3; ++i) {
-          const float* k = c.intrinsics.m[i];
-          const float* r = c.rotation.m[i];
-          intrinsics.append(nb::make_tuple(k[0], k[1], k[2]));
-          extrinsics.append(nb::make_tuple(r[0], r[1], r[2], c.translation[i]));
-        }
-        extrinsics.append(nb::make_tuple(0.0f, 0.0f, 0.0f, 1.0f));
+        nb::list intrinsics;
+        for (const auto& row : c.intrinsics.m)
+          intrinsics.append(nb::make_tuple(row[0], row[1], row[2]));
         nb::dict camera;
         camera["width"] = c.width;
         camera["height"] = c.height;
         camera["intrinsics"] = intrinsics;
-        camera["extrinsics"] = extrinsics;
+        camera["extrinsics"] = affineRows(c.rotation, c.translation);
         if (c.apertureRadius > 0.0f) {
           camera["aperture_radius"] = c.apertureRadius;
           camera["focus_distance"] = c.focusDistance;
@@ -425,18 +421,13 @@ NB_MODULE(_candela, m) {
         // CLI's poses file (docs/aovs.md, *Instance poses*).
         const SceneDesc frame = s.still();
         const CameraMatrices camera = cameraMatrices(frame.camera, frame.file);
-        const auto rows = [](const InstancePose& p) {
-          nb::list out;
-          for (int i = 0; i < 3; ++i)
-            out.append(nb::make_tuple(p.linear.m[i][0], p.linear.m[i][1], p.linear.m[i][2],
-                                      p.position[i]));
-          out.append(nb::make_tuple(0.0f, 0.0f, 0.0f, 1.0f));
-          return out;
-        };
         nb::list poses;
-        for (const InstancePose& pose : instancePoses(frame))
-          poses.append(nb::make_tuple(pose.number, pose.name, rows(pose),
-                                      rows(poseInCamera(pose, camera))));
+        for (const InstancePose& pose : instancePoses(frame)) {
+          const InstancePose seen = poseInCamera(pose, camera);
+          poses.append(nb::make_tuple(pose.number, pose.name,
+                                      affineRows(pose.linear, pose.position),
+                                      affineRows(seen.linear, seen.position)));
+        }
         return poses;
       })
       .def_prop_ro("_last_change", [](const Scene& s) -> std::optional<std::string> {
