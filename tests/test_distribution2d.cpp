@@ -1,10 +1,11 @@
 // core/distribution2d.h. Inverting a cdf through its guide gives exactly the segment the full
 // binary search gives, and a point inside that segment's cell, for cdfs with plateaus (cells of
 // no mass), a single dominant cell, and u at every cutpoint k / n, every cdf value and their float
-// neighbours; sampled points follow the density pdf() reports.
+// neighbours; sampled points follow the density pdf() reports, constant or bilinear within cells.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <utility>
 #include <random>
 #include <vector>
 
@@ -84,6 +85,85 @@ TEST(Distribution2D, SampledDensityMatchesPdf) {
     const double expected = f[c] / total;
     EXPECT_NEAR(counts[c] / n, expected, 5.0 * std::sqrt(expected / n) + 1e-12) << "cell " << c;
   }
+}
+
+// With weights at the cells' corners, sampled points follow the bilinear density pdf()
+// reports: each cell gets its share (the mean of its corners times its row's factor), and within
+// a cell the points' mean lies where the bilinear density's does.
+TEST(Distribution2D, BilinearWithinCellsMatchesPdf) {
+  const uint32_t columns = 3, rows = 2;
+  const std::vector<double> corners = {1, 0, 0, 4,  //
+                                       3, 0, 0, 1,  //
+                                       0, 0, 5, 2};
+  const std::vector<double> rowFactor = {1.0, 0.5};
+  Distribution2DArrays d;
+  buildBilinearDistribution2D(corners, rowFactor, columns, rows, &d);
+  const Distribution2D sampler{d.conditional.data(),   d.marginal.data(), d.conditionalGuide.data(),
+                               d.marginalGuide.data(), columns,           rows,
+                               d.corners.data()};
+  std::vector<double> mass(columns * rows), total = {0.0};
+  for (uint32_t j = 0; j < rows; ++j)
+    for (uint32_t i = 0; i < columns; ++i) {
+      const double* top = corners.data() + j * (columns + 1) + i;
+      mass[j * columns + i] = 0.25 * (top[0] + top[1] + top[4] + top[5]) * rowFactor[j];
+      total[0] += mass[j * columns + i];
+    }
+  std::vector<double> counts(mass.size(), 0.0), sumS(mass.size(), 0.0), sumT(mass.size(), 0.0);
+  const int n = 200000;
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
+  for (int k = 0; k < n; ++k) {
+    float x, y, pdf;
+    ASSERT_TRUE(sampler.sample(uniform(rng), uniform(rng), &x, &y, &pdf));
+    ASSERT_FLOAT_EQ(pdf, sampler.pdf(x, y));
+    const size_t i = size_t(x * columns), j = size_t(y * rows), c = j * columns + i;
+    counts[c] += 1.0;
+    sumS[c] += x * columns - i;
+    sumT[c] += y * rows - j;
+  }
+  for (size_t c = 0; c < mass.size(); ++c) {
+    const double expected = mass[c] / total[0];
+    EXPECT_NEAR(counts[c] / n, expected, 5.0 * std::sqrt(expected / n) + 1e-12) << "cell " << c;
+    if (counts[c] < 1000) continue;
+    const size_t i = c % columns, j = c / columns;
+    const double* top = corners.data() + j * (columns + 1) + i;
+    const double w0 = top[0], w1 = top[1], w2 = top[4], w3 = top[5], sum = w0 + w1 + w2 + w3;
+    // The mean of s over the bilinear density: (w0 + w2) / 3 + (w1 + w3) 2 / 3, over the sum /
+    // 2 (each linear factor integrates so); likewise t.
+    const double meanS = ((w0 + w2) / 6 + (w1 + w3) / 3) / (sum / 4) / 2;
+    const double meanT = ((w0 + w1) / 6 + (w2 + w3) / 3) / (sum / 4) / 2;
+    const double error = 5.0 * std::sqrt(1.0 / 12 / counts[c]);
+    EXPECT_NEAR(sumS[c] / counts[c], meanS, error) << "cell " << c;
+    EXPECT_NEAR(sumT[c] / counts[c], meanT, error) << "cell " << c;
+  }
+  EXPECT_EQ(sampler.pdf(0.5f, 0.25f), 0.0f);  // a cell whose corners are all 0
+}
+
+// sampleLinear inverts the cumulative distribution of the density (1 - x) a + x b, nearly equal
+// weights and a weight of 0 included; sampleBilinear and bilinearPdf stay finite on a line of no
+// mass, where the density is 0.
+TEST(Distribution2D, LinearWarpInvertsItsCdf) {
+  for (const auto& ab : {std::pair<float, float>{1, 3}, {3, 1}, {0, 2}, {2, 0}, {5, 5},
+                         {1, 1.0001f}, {1e-6f, 7}}) {
+    const double a = ab.first, b = ab.second;
+    for (float u : {0.0f, 1e-7f, 0.1f, 0.5f, 0.9f, 0.99999994f}) {
+      const double x = sampleLinear(u, ab.first, ab.second);
+      ASSERT_GE(x, 0.0);
+      ASSERT_LT(x, 1.0);
+      const double cdf = (a * x + 0.5 * (b - a) * x * x) / (0.5 * (a + b));
+      EXPECT_NEAR(cdf, u, 2e-6) << "a " << a << " b " << b << " u " << u;
+    }
+  }
+  const float w[4] = {0, 0, 5, 0};  // only the corner (0, 1) has weight: y = 0 has no mass
+  float x, y;
+  sampleBilinear(0.3f, 0.0f, w, &x, &y);
+  EXPECT_EQ(y, 0.0f);
+  EXPECT_TRUE(std::isfinite(x));
+  EXPECT_EQ(bilinearPdf(x, y, w), 0.0f);
+  sampleBilinear(0.3f, 0.6f, w, &x, &y);
+  EXPECT_GT(bilinearPdf(x, y, w), 0.0f);
+  const float none[4] = {0, 0, 0, 0};
+  EXPECT_EQ(bilinearPdf(0.5f, 0.5f, none), 0.0f);
 }
 
 }  // namespace

@@ -1,11 +1,13 @@
-// A piecewise-constant 2D distribution over [0,1)^2 of n x m cells (pbrt-v4's
-// PiecewiseConstant2D), stored as cumulative sums: `marginal` (rows + 1 values) over the rows and,
-// per row, `conditional` (columns + 1 values each) over its columns. Sampling inverts the sums
-// and is continuous within a cell; the density of a point is its cell's share times the cell
-// count. Each sum has a guide table (Chen and Asau's cutpoints): where the search for u in [k/n,
-// (k+1)/n) starts and ends, so inverting costs a step or two rather than log2(n) dependent loads,
-// with the very result of the full search. Built on the host (buildDistribution2D), sampled by
-// the kernel.
+// A 2D distribution over [0,1)^2 of n x m cells (pbrt-v4's PiecewiseConstant2D), stored as
+// cumulative sums: `marginal` (rows + 1 values) over the rows and, per row, `conditional`
+// (columns + 1 values each) over its columns. Sampling inverts the sums and is continuous within
+// a cell. Within a cell the density is constant, or, given the weights at the cells' corners
+// (`corners`, (columns + 1) x (rows + 1)), their bilinear interpolation (Mitsuba 3 samples its
+// environment maps so): then each cell's mass must be the mean of its corners times a factor
+// constant over the cell. Each sum has a guide table (Chen and Asau's cutpoints): where the
+// search for u in [k/n, (k+1)/n) starts and ends, so inverting costs a step or two rather than
+// log2(n) dependent loads, with the very result of the full search. Built on the host
+// (buildDistribution2D), sampled by the kernel.
 #pragma once
 
 #include <cstddef>
@@ -14,14 +16,15 @@
 
 #include "core/device.h"
 #include "core/float_error.h"
+#include "core/sampling.h"
 
 namespace candela {
 
-// Inverts cdf[0..n] (non-decreasing, cdf[0] = 0, cdf[n] = 1) at u in [0, 1): the point in [0, 1)
-// whose segment holds u, its segment and the density there (0 for a segment of no mass).
+// Inverts cdf[0..n] (non-decreasing, cdf[0] = 0, cdf[n] = 1) at u in [0, 1): the segment that
+// holds u, where in it u lies (*t in [0, 1)) and the density there (0 for a segment of no mass).
 // guide[0..n] is cdf's guide table (buildGuide).
-CANDELA_HDI_ALWAYS float sampleCdf(const float* cdf, const uint32_t* guide, uint32_t n, float u,
-                                   uint32_t* segment, float* pdf) {
+CANDELA_HDI_ALWAYS uint32_t invertCdf(const float* cdf, const uint32_t* guide, uint32_t n, float u,
+                                      float* t, float* pdf) {
   // The segment sought is the first o with cdf[o + 1] > u. The guide brackets it in [lo, hi];
   // the two loops only widen the bracket where rounding put u * n in the neighbouring cell.
   const uint32_t cell = u * float(n) < float(n) ? uint32_t(u * float(n)) : n - 1;
@@ -38,16 +41,28 @@ CANDELA_HDI_ALWAYS float sampleCdf(const float* cdf, const uint32_t* guide, uint
   }
   const uint32_t o = lo;
   const float width = cdf[o + 1] - cdf[o];
-  float t = width > 0.0f ? (u - cdf[o]) / width : 0.5f;
-  t = t < 0.0f ? 0.0f : (t < 0.99999994f ? t : 0.99999994f);  // stay inside the segment
-  *segment = o;
+  const float within = width > 0.0f ? (u - cdf[o]) / width : 0.5f;
+  *t = within < 0.0f ? 0.0f : (within < 0.99999994f ? within : 0.99999994f);
   *pdf = width * float(n);
-  // Rounding can carry (o + t) / n onto a neighbouring cell's edge; the point must stay in cell
-  // o as Distribution2D::pdf finds cells (floor of x n), or MIS would weigh it by the wrong pdf.
+  return o;
+}
+
+// The point (o + t) / n of cell o of n, t in [0, 1). Rounding can carry it onto a neighbouring
+// cell's edge; it must stay in cell o as Distribution2D::pdf finds cells (floor of x n), or MIS
+// would weigh it by the wrong pdf.
+CANDELA_HDI_ALWAYS float pointInCell(uint32_t o, float t, uint32_t n) {
   float x = (float(o) + t) / float(n);
   while (x * float(n) >= float(o + 1)) x = nextFloatDown(x);
   while (x * float(n) < float(o)) x = nextFloatUp(x);
   return x;
+}
+
+// invertCdf's point in [0, 1), its segment and the density there.
+CANDELA_HDI_ALWAYS float sampleCdf(const float* cdf, const uint32_t* guide, uint32_t n, float u,
+                                   uint32_t* segment, float* pdf) {
+  float t;
+  *segment = invertCdf(cdf, guide, n, u, &t, pdf);
+  return pointInCell(*segment, t, n);
 }
 
 struct Distribution2D {
@@ -56,16 +71,46 @@ struct Distribution2D {
   const uint32_t* conditionalGuide;  // rows x (columns + 1)
   const uint32_t* marginalGuide;     // rows + 1
   uint32_t columns, rows;
+  const float* corners = nullptr;  // (rows + 1) x (columns + 1); none: constant within cells
+
+  // A cell and a point (s, t) in [0,1)^2 within it from uniform (u1, u2), with the density of
+  // the point (column + s, row + t) / (columns, rows) over [0,1)^2; false where it has none.
+  CANDELA_HDI bool sampleCell(float u1, float u2, uint32_t* column, uint32_t* row, float* s,
+                              float* t, float* pdf) const {
+    float pdfRow, pdfColumn;
+    *row = invertCdf(marginal, marginalGuide, rows, u2, t, &pdfRow);
+    const size_t rowStart = size_t(*row) * (columns + 1);
+    *column = invertCdf(conditional + rowStart, conditionalGuide + rowStart, columns, u1, s,
+                        &pdfColumn);
+    *pdf = pdfRow * pdfColumn;
+    if (corners) {
+      float w[4];
+      cornerWeights(*column, *row, w);
+      sampleBilinear(*s, *t, w, s, t);
+      *pdf *= bilinearPdf(*s, *t, w);
+    }
+    return *pdf > 0.0f;
+  }
+
+  // The density sampleCell gives point (s, t) of cell (column, row).
+  CANDELA_HDI float cellPdf(uint32_t column, uint32_t row, float s, float t) const {
+    const float* c = conditional + size_t(row) * (columns + 1);
+    const float cell = (marginal[row + 1] - marginal[row]) * float(rows) *
+                       (c[column + 1] - c[column]) * float(columns);
+    if (!corners) return cell;
+    float w[4];
+    cornerWeights(column, row, w);
+    return cell * bilinearPdf(s, t, w);
+  }
 
   // A point (x, y) in [0,1)^2 from uniform (u1, u2), with its density; false where it has none.
   CANDELA_HDI bool sample(float u1, float u2, float* x, float* y, float* pdf) const {
-    uint32_t row, column;
-    float pdfRow, pdfColumn;
-    *y = sampleCdf(marginal, marginalGuide, rows, u2, &row, &pdfRow);
-    const size_t rowStart = size_t(row) * (columns + 1);
-    *x = sampleCdf(conditional + rowStart, conditionalGuide + rowStart, columns, u1, &column,
-                   &pdfColumn);
-    *pdf = pdfRow * pdfColumn;
+    uint32_t column, row;
+    float s, t;
+    sampleCell(u1, u2, &column, &row, &s, &t, pdf);
+    *x = pointInCell(column, s, columns);
+    *y = pointInCell(row, t, rows);
+    if (corners) *pdf = this->pdf(*x, *y);  // as pdf() finds it from the point
     return *pdf > 0.0f;
   }
 
@@ -73,11 +118,20 @@ struct Distribution2D {
     uint32_t column = uint32_t(x * float(columns)), row = uint32_t(y * float(rows));
     column = column < columns ? column : columns - 1;
     row = row < rows ? row : rows - 1;
-    const float* c = conditional + size_t(row) * (columns + 1);
-    return (marginal[row + 1] - marginal[row]) * float(rows) * (c[column + 1] - c[column]) *
-           float(columns);
+    return cellPdf(column, row, x * float(columns) - float(column), y * float(rows) - float(row));
+  }
+
+ private:
+  CANDELA_HDI_ALWAYS void cornerWeights(uint32_t column, uint32_t row, float w[4]) const {
+    const float* top = corners + size_t(row) * (columns + 1) + column;
+    const float* bottom = top + (columns + 1);
+    w[0] = top[0];
+    w[1] = top[1];
+    w[2] = bottom[0];
+    w[3] = bottom[1];
   }
 };
+
 
 // The guide table of cdf[0..n]: guide[k], k in [0, n], is the first segment o with
 // cdf[o + 1] > k / n (n - 1 where none is), computed in the float arithmetic sampleCdf uses.
@@ -93,6 +147,7 @@ inline void buildGuide(const float* cdf, uint32_t n, uint32_t* guide) {
 struct Distribution2DArrays {
   std::vector<float> conditional, marginal;
   std::vector<uint32_t> conditionalGuide, marginalGuide;
+  std::vector<float> corners;  // empty: constant within cells
 };
 
 // The cumulative sums of f (rows x columns, row-major, every value >= 0) and their guide tables.
@@ -133,6 +188,25 @@ inline void buildDistribution2D(const std::vector<double>& f, uint32_t columns, 
   }
   d->marginalGuide.assign(marginal->size(), 0);
   buildGuide(marginal->data(), rows, d->marginalGuide.data());
+}
+
+// The bilinear distribution of the corner weights (rows + 1 rows of columns + 1, every value
+// >= 0) over cells whose rows may differ in height: each cell's mass is the mean of its corners
+// times its row's factor (rowFactor[rows], its height in units of the others'), as
+// Distribution2D's bilinear density needs.
+inline void buildBilinearDistribution2D(const std::vector<double>& corners,
+                                        const std::vector<double>& rowFactor, uint32_t columns,
+                                        uint32_t rows, Distribution2DArrays* d) {
+  std::vector<double> f(size_t(columns) * rows);
+  for (uint32_t j = 0; j < rows; ++j) {
+    const double* top = corners.data() + size_t(j) * (columns + 1);
+    const double* bottom = top + (columns + 1);
+    for (uint32_t i = 0; i < columns; ++i)
+      f[size_t(j) * columns + i] =
+          0.25 * (top[i] + top[i + 1] + bottom[i] + bottom[i + 1]) * rowFactor[j];
+  }
+  buildDistribution2D(f, columns, rows, d);
+  d->corners.assign(corners.begin(), corners.end());
 }
 
 }  // namespace candela

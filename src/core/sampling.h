@@ -60,6 +60,32 @@ CANDELA_HDI float uniformConePdf(float oneMinusCosThetaMax) {
   return 1.0f / (2.0f * kPi * oneMinusCosThetaMax);
 }
 
+// A number in [0, 1) whose density is proportional to (1 - x) a + x b (a, b >= 0), by the
+// inversion pbrt-v4's SampleLinear uses, stable where a and b are nearly equal; u itself where
+// both are 0 (a line of no mass, which bilinearPdf gives density 0).
+CANDELA_HDI float sampleLinear(float u, float a, float b) {
+  if (!(a + b > 0.0f)) return u;
+  if (u == 0.0f && a == 0.0f) return 0.0f;
+  const float x = u * (a + b) / (a + sqrtf((1.0f - u) * a * a + u * b * b));
+  return x < 0.99999994f ? x : 0.99999994f;
+}
+
+// A point (x, y) in [0, 1)^2 whose density is proportional to the bilinear interpolation of the
+// corner weights w[0] at (0, 0), w[1] at (1, 0), w[2] at (0, 1) and w[3] at (1, 1), all >= 0:
+// y from its marginal, then x given y.
+CANDELA_HDI void sampleBilinear(float u1, float u2, const float w[4], float* x, float* y) {
+  *y = sampleLinear(u2, w[0] + w[1], w[2] + w[3]);
+  *x = sampleLinear(u1, (1.0f - *y) * w[0] + *y * w[2], (1.0f - *y) * w[1] + *y * w[3]);
+}
+
+// The density sampleBilinear gives point (x, y); 0 where all the weights are.
+CANDELA_HDI float bilinearPdf(float x, float y, const float w[4]) {
+  const float sum = w[0] + w[1] + w[2] + w[3];
+  if (!(sum > 0.0f)) return 0.0f;
+  const float value = (1.0f - y) * ((1.0f - x) * w[0] + x * w[1]) + y * ((1.0f - x) * w[2] + x * w[3]);
+  return 4.0f * value / sum;
+}
+
 // Power heuristic (beta = 2) weight of a strategy with density `pdfA` against one with `pdfB`.
 CANDELA_HDI float powerHeuristic(float pdfA, float pdfB) {
   const float a = pdfA * pdfA, b = pdfB * pdfB;

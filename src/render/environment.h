@@ -6,8 +6,9 @@
 // the image's top-left corner and texel (i, j) covers [i/W, (i+1)/W) x [j/H, (j+1)/H): the
 // image's centre lies along -z, +x right of it, the top row straight up. The map's frame is the
 // world turned by the environment's rotation. Lookups are bilinear (wrapping in u); sampling
-// follows a piecewise-constant distribution over cells of the map (texels split into up to 4 x 4)
-// weighted by sin(theta), so a sun in the map is found by shadow rays rather than by chance. That
+// follows a distribution over cells of the map (texels split into up to 4 x 4), bilinear within
+// each as the lookup is, weighted by sin(theta), so a sun in the map is found by shadow rays
+// rather than by chance, and each shadow ray carries nearly the same radiance / pdf. That
 // distribution is MIS-compensated (scene/flatten_environment.cpp): it leaves out what is dimmer
 // than the map's mean, which only BSDF sampling then finds, so the environment light is valid
 // only beside BSDF sampling.
@@ -24,12 +25,19 @@
 
 namespace candela {
 
+// The map's sampling grid (below): columns x rows cells, shifted by half a cell where texels are
+// not split.
+struct EnvironmentGrid {
+  uint32_t columns = 0, rows = 0;
+  bool shifted = false;
+};
+
 struct Environment {
   Vec3 radiance{0.0f};  // the constant radiance; with a map, the factor of every texel
   Mat3 toWorld;         // map frame -> world (the rotation); fromWorld is its transpose
   Mat3 fromWorld;
   uint32_t width = 0, height = 0;  // of the map; 0: a constant environment
-  uint32_t sampleColumns = 0, sampleRows = 0;  // of its sampling distribution
+  EnvironmentGrid grid;             // of its sampling distribution
   int32_t light = -1;              // its index among the lights; -1: black, not a light
 };
 
@@ -67,6 +75,51 @@ CANDELA_HDI_ALWAYS Vec3 lookupMap(const Vec3* texels, uint32_t width, uint32_t h
   const Vec3 bottom =
       (1.0f - fx) * texels[size_t(y1) * width + x0] + fx * texels[size_t(y1) * width + x1];
   return (1.0f - fy) * top + fy * bottom;
+}
+
+// The map's sampling grid (scene/flatten_environment.cpp) has the texel centres among its cells'
+// corners, so that each cell lies within one of the lookup's bilinear patches. Texels split into
+// k x k cells (k even) give that as they are; unsplit texels need the grid shifted by half a cell,
+// its first and last rows half as tall: they reach the poles from the first and last rows of
+// texel centres.
+
+// The density over the map of a point of row `row` per unit of the grid's density, whose rows
+// are all of one height: 1 unless the grid is shifted.
+CANDELA_HDI_ALWAYS float mapDensityPerGridDensity(const Environment& e, uint32_t row) {
+  if (!e.grid.shifted) return 1.0f;
+  const bool half = row == 0 || row == e.grid.rows - 1;
+  return float(e.grid.rows - 1) / float(e.grid.rows) * (half ? 2.0f : 1.0f);
+}
+
+// The map point (u, v) of point (s, t) of cell (column, row).
+CANDELA_HDI_ALWAYS void cellToMap(const Environment& e, uint32_t column, uint32_t row, float s,
+                                  float t, float* u, float* v) {
+  const bool shifted = e.grid.shifted;
+  float x = (float(column) + (shifted ? 0.5f + s : s)) / float(e.grid.columns);
+  x = x < 1.0f ? x : x - 1.0f;
+  *u = x < 1.0f ? x : 0.0f;
+  // In units of full rows: a shifted grid's first and last rows are halves.
+  float y = float(row) + t;
+  if (shifted) y = row == 0 ? 0.5f * t : (row == e.grid.rows - 1 ? y - 0.5f * (1.0f + t) : y - 0.5f);
+  y /= float(shifted ? e.grid.rows - 1 : e.grid.rows);
+  *v = y < 1.0f ? y : 0.99999994f;
+}
+
+// The cell (column, row) that holds map point (u, v) and the point (s, t) within it: cellToMap's
+// inverse.
+CANDELA_HDI_ALWAYS void mapToCell(const Environment& e, float u, float v, uint32_t* column,
+                                  uint32_t* row, float* s, float* t) {
+  const bool shifted = e.grid.shifted;
+  float x = u * float(e.grid.columns) - (shifted ? 0.5f : 0.0f);
+  x = x < 0.0f ? x + float(e.grid.columns) : x;
+  *column = uint32_t(x) < e.grid.columns ? uint32_t(x) : e.grid.columns - 1;
+  *s = minf(maxf(x - float(*column), 0.0f), 1.0f);
+  const float y = shifted ? v * float(e.grid.rows - 1) + 0.5f : v * float(e.grid.rows);
+  *row = uint32_t(y) < e.grid.rows ? uint32_t(y) : e.grid.rows - 1;
+  float within = y - float(*row);
+  if (shifted && *row == 0) within = 2.0f * within - 1.0f;
+  if (shifted && *row == e.grid.rows - 1) within = 2.0f * within;
+  *t = minf(maxf(within, 0.0f), 1.0f);
 }
 
 }  // namespace candela

@@ -173,7 +173,12 @@ CANDELA_HDI_ALWAYS float environmentPdf(const SceneView& scene, const Vec3& wi) 
   directionToMap(d, &u, &v);
   const float sinTheta = sqrtf(d.x * d.x + d.z * d.z);
   if (!(sinTheta > 0.0f)) return 0.0f;
-  return environmentDistribution(scene).pdf(u, v) / (2.0f * kPi * kPi * sinTheta);
+  uint32_t column, row;
+  float s, t;
+  mapToCell(e, u, v, &column, &row, &s, &t);
+  const float pdfMap = environmentDistribution(scene).cellPdf(column, row, s, t) *
+                       mapDensityPerGridDensity(e, row);
+  return pdfMap / (2.0f * kPi * kPi * sinTheta);
 }
 
 CANDELA_HDI bool sampleEnvironmentLight(const SceneView& scene, float u1, float u2,
@@ -185,12 +190,16 @@ CANDELA_HDI bool sampleEnvironmentLight(const SceneView& scene, float u1, float 
     s->pdf = kInv4Pi;
     s->radiance = e.radiance;
   } else {
-    float u, v, pdfMap, sinTheta;
-    if (!environmentDistribution(scene).sample(u1, u2, &u, &v, &pdfMap)) return false;
+    uint32_t column, row;
+    float cellS, cellT, pdfGrid;
+    if (!environmentDistribution(scene).sampleCell(u1, u2, &column, &row, &cellS, &cellT, &pdfGrid))
+      return false;
+    float u, v, sinTheta;
+    cellToMap(e, column, row, cellS, cellT, &u, &v);
     const Vec3 d = mapToDirection(u, v, &sinTheta);
     if (!(sinTheta > 0.0f)) return false;
     s->wi = normalize(e.toWorld * d);
-    s->pdf = pdfMap / (2.0f * kPi * kPi * sinTheta);
+    s->pdf = pdfGrid * mapDensityPerGridDensity(e, row) / (2.0f * kPi * kPi * sinTheta);
     s->radiance = e.radiance * lookupMap(scene.envTexels, e.width, e.height, u, v);
   }
   s->distance = kInfinity;

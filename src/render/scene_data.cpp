@@ -43,8 +43,7 @@ void SceneData::takeGroup(SceneData& from, RewrittenBy group) {
     case RewrittenBy::EnvironmentMap:
       environmentMapHash = from.environmentMapHash;
       environmentMapMean = from.environmentMapMean;
-      environment.sampleColumns = from.environment.sampleColumns;
-      environment.sampleRows = from.environment.sampleRows;
+      environment.grid = from.environment.grid;
       break;
     case RewrittenBy::TexturePool:
       texturePoolHash = from.texturePoolHash;
@@ -65,7 +64,7 @@ void SceneData::clearGroup(RewrittenBy group) {
     case RewrittenBy::EnvironmentMap:
       environmentMapHash = 0;
       environmentMapMean = Vec3(0.0f);
-      environment.sampleColumns = environment.sampleRows = 0;
+      environment.grid = EnvironmentGrid{};
       break;
     case RewrittenBy::TexturePool:
       texturePoolHash = 0;

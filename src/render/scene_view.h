@@ -24,10 +24,11 @@ namespace candela {
 // the environment map's arrays are rewritten with their own contents only.
 // lightTree is the light tree over the lights other than the environment (render/light_tree.h;
 // empty when every light is sampled or none but the environment has power). envTexels is the
-// environment map (width x height, rows from the top; empty for a constant
-// environment) and envConditionalCdf/envMarginalCdf with their guide tables its sampling
-// distribution (core/distribution2d.h). materialMotions, parallel to materials, is the motion of
-// each material's instance to the next frame; only renders with the flow pass have it.
+// environment map (width x height, rows from the top; empty for a constant environment), and
+// envConditionalCdf/envMarginalCdf with their guide tables and the weights at its cells' corners
+// (envCellCorners) its sampling distribution (core/distribution2d.h). materialMotions, parallel
+// to materials, is the motion of each material's instance to the next frame; only renders with
+// the flow pass have it.
 // lightPathOrder lists the lights in the order their light-subpath picks are laid out over
 // [0, 1) (render/light_path.h, pickLightPathLight).
 #define CANDELA_SHADING_ARRAYS(X)                                            \
@@ -39,6 +40,7 @@ namespace candela {
   X(float, envMarginalCdf, envMarginalCdfCount, EnvironmentMap)              \
   X(uint32_t, envConditionalGuide, envConditionalGuideCount, EnvironmentMap) \
   X(uint32_t, envMarginalGuide, envMarginalGuideCount, EnvironmentMap)       \
+  X(float, envCellCorners, envCellCornerCount, EnvironmentMap)                \
   X(InstanceMotion, materialMotions, materialMotionCount, Values)              \
   X(uint32_t, lightPathOrder, lightPathOrderCount, Values)
 
@@ -89,8 +91,8 @@ CANDELA_HDI_ALWAYS Vec3 environmentRadiance(const SceneView& scene, const Vec3& 
 // The environment map's sampling distribution.
 CANDELA_HDI Distribution2D environmentDistribution(const SceneView& scene) {
   return {scene.envConditionalCdf, scene.envMarginalCdf, scene.envConditionalGuide,
-          scene.envMarginalGuide, scene.environment.sampleColumns,
-          scene.environment.sampleRows};
+          scene.envMarginalGuide, scene.environment.grid.columns,
+          scene.environment.grid.rows, scene.envCellCorners};
 }
 
 }  // namespace candela

@@ -38,14 +38,17 @@ std::array<double, N> meanOverDirections(uint32_t w, uint32_t h, const Value& va
   return sum;
 }
 
+// The map's v at the top of grid row y (y = rows: its bottom, 1).
+double gridRowTop(const EnvironmentGrid& grid, uint32_t y) {
+  const double shift = grid.shifted ? 0.5 : 0.0;
+  return std::min(1.0, std::max(0.0, (y - shift) / (grid.rows - 2.0 * shift)));
+}
+
 // MIS compensation (Karlik et al. 2019, as pbrt-v4's ImageInfiniteLight): the environment is
 // only ever sampled beside BSDF sampling, whose rays find the whole sphere, so light samples are
 // better spent where the map is brighter than its mean over directions: each brightness becomes
 // its excess over that mean. A map with no excess (a uniform one) keeps its brightness.
-void compensateForMis(std::vector<double>& brightness, uint32_t w, uint32_t h) {
-  const double mean = meanOverDirections<1>(w, h, [&](uint32_t x, uint32_t y) {
-    return std::array<double, 1>{brightness[size_t(y) * w + x]};
-  })[0];
+void compensateForMis(std::vector<double>& brightness, double mean) {
   if (!std::any_of(brightness.begin(), brightness.end(), [&](double b) { return b > mean; }))
     return;
   for (double& b : brightness) b = std::max(0.0, b - mean);
@@ -54,31 +57,31 @@ void compensateForMis(std::vector<double>& brightness, uint32_t w, uint32_t h) {
 }  // namespace
 
 uint32_t environmentCellsPerTexel(uint32_t w, uint32_t h) {
-  constexpr uint64_t kMaxCells = uint64_t(1) << 22;  // 8 bytes each: 32 MB
+  constexpr uint64_t kMaxCells = uint64_t(1) << 22;  // 12 bytes each: 48 MB
   for (uint32_t k = 4; k > 1; k /= 2)
     if (uint64_t(k * k) * w * h <= kMaxCells) return k;
   return 1;
 }
 
-// Where k is even a cell lies within one bilinear patch (texel centres are the patches'
-// corners), over which the mean of the lookup is its value at the cell's centre; a whole texel's
-// mean (k = 1) is the mean of its quarters'.
-std::vector<double> environmentCellBrightness(const Vec3* texels, uint32_t w, uint32_t h,
-                                              uint32_t k) {
-  const uint32_t split = k < 2 ? 2 : k, sw = split * w, sh = split * h;
-  const auto lookup = [&](uint32_t x, uint32_t y) {
-    return componentSum(
-        lookupMap(texels, w, h, (float(x) + 0.5f) / float(sw), (float(y) + 0.5f) / float(sh)));
-  };
-  const uint32_t cw = k * w, ch = k * h;
-  std::vector<double> f(size_t(cw) * ch);
-  for (uint32_t y = 0; y < ch; ++y)
-    for (uint32_t x = 0; x < cw; ++x)
-      f[size_t(y) * cw + x] = k >= 2 ? lookup(x, y)
-                                     : 0.25 * (lookup(2 * x, 2 * y) + lookup(2 * x + 1, 2 * y) +
-                                               lookup(2 * x, 2 * y + 1) +
-                                               lookup(2 * x + 1, 2 * y + 1));
-  return f;
+EnvironmentGrid environmentGrid(uint32_t w, uint32_t h) {
+  const uint32_t k = environmentCellsPerTexel(w, h);
+  // Even k puts texel centres on cell corners as the grid is; k = 1 shifts it by half a texel.
+  return {k * w, k == 1 ? h + 1 : k * h, k == 1};
+}
+
+std::vector<double> environmentCornerBrightness(const Vec3* texels, uint32_t w, uint32_t h,
+                                                const EnvironmentGrid& grid) {
+  const double shift = grid.shifted ? 0.5 : 0.0;
+  std::vector<double> corners(size_t(grid.columns + 1) * (grid.rows + 1));
+  for (uint32_t y = 0; y <= grid.rows; ++y) {
+    const double v = gridRowTop(grid, y);
+    for (uint32_t x = 0; x <= grid.columns; ++x) {
+      const double u = (x + shift) / grid.columns;  // past 1 the lookup wraps
+      corners[size_t(y) * (grid.columns + 1) + x] =
+          componentSum(lookupMap(texels, w, h, float(u), float(v)));
+    }
+  }
+  return corners;
 }
 
 namespace {
@@ -113,8 +116,7 @@ void flattenEnvironment(const EnvironmentDesc& desc, SceneData& s) {
   // A map made in memory (tests, Python) has no hash of the reader's.
   const uint64_t hash = desc.mapHash != 0 ? desc.mapHash : hashImage(image);
   if (s.environmentMapHash == hash) {
-    e.sampleColumns = s.environment.sampleColumns;
-    e.sampleRows = s.environment.sampleRows;
+    e.grid = s.environment.grid;
     s.environment = e;
     return;
   }
@@ -126,19 +128,28 @@ void flattenEnvironment(const EnvironmentDesc& desc, SceneData& s) {
     for (uint32_t x = 0; x < w; ++x) s.envTexels[size_t(y) * w + x] = image.at(x, y);
   s.environmentMapMean = meanTexel(s.envTexels.data(), w, h);
 
-  const uint32_t k = environmentCellsPerTexel(w, h), cw = k * w, ch = k * h;
-  std::vector<double> f = environmentCellBrightness(s.envTexels.data(), w, h, k);
-  compensateForMis(f, cw, ch);
-  for (uint32_t y = 0; y < ch; ++y)
-    for (uint32_t x = 0; x < cw; ++x) f[size_t(y) * cw + x] *= rowSinTheta(y, ch);
-  s.environment.sampleColumns = cw;
-  s.environment.sampleRows = ch;
+  const EnvironmentGrid grid = environmentGrid(w, h);
+  std::vector<double> corners = environmentCornerBrightness(s.envTexels.data(), w, h, grid);
+  compensateForMis(corners, componentSum(s.environmentMapMean));
+  // Weighted by sin(theta) at the corners, the density over the map is continuous, and so is the
+  // pdf over directions, the density divided by sin(theta) there.
+  for (uint32_t y = 0; y <= grid.rows; ++y) {
+    const double sinTheta = std::sin(kPi * gridRowTop(grid, y));
+    for (uint32_t x = 0; x <= grid.columns; ++x) corners[size_t(y) * (grid.columns + 1) + x] *= sinTheta;
+  }
+  // Each row's height in units of a full row's (the shifted grid's first and last are halves).
+  const double fullRows = grid.rows - (grid.shifted ? 1.0 : 0.0);
+  std::vector<double> rowHeight(grid.rows);
+  for (uint32_t y = 0; y < grid.rows; ++y)
+    rowHeight[y] = (gridRowTop(grid, y + 1) - gridRowTop(grid, y)) * fullRows;
+  s.environment.grid = grid;
   Distribution2DArrays d;
-  buildDistribution2D(f, cw, ch, &d);
+  buildBilinearDistribution2D(corners, rowHeight, grid.columns, grid.rows, &d);
   s.envConditionalCdf = std::move(d.conditional);
   s.envMarginalCdf = std::move(d.marginal);
   s.envConditionalGuide = std::move(d.conditionalGuide);
   s.envMarginalGuide = std::move(d.marginalGuide);
+  s.envCellCorners = std::move(d.corners);
 }
 
 double environmentMeanRadiance(const SceneData& s) {
