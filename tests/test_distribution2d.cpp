@@ -92,7 +92,7 @@ TEST(Distribution2D, SampledDensityMatchesPdf) {
 // a cell the points' mean lies where the bilinear density's does.
 TEST(Distribution2D, BilinearWithinCellsMatchesPdf) {
   const uint32_t columns = 3, rows = 2;
-  const std::vector<double> corners = {1, 0, 0, 4,  //
+  const std::vector<float> corners = {1, 0, 0, 4,  //
                                        3, 0, 0, 1,  //
                                        0, 0, 5, 2};
   const std::vector<double> rowFactor = {1.0, 0.5};
@@ -104,7 +104,7 @@ TEST(Distribution2D, BilinearWithinCellsMatchesPdf) {
   std::vector<double> mass(columns * rows), total = {0.0};
   for (uint32_t j = 0; j < rows; ++j)
     for (uint32_t i = 0; i < columns; ++i) {
-      const double* top = corners.data() + j * (columns + 1) + i;
+      const float* top = corners.data() + j * (columns + 1) + i;
       mass[j * columns + i] = 0.25 * (top[0] + top[1] + top[4] + top[5]) * rowFactor[j];
       total[0] += mass[j * columns + i];
     }
@@ -126,7 +126,7 @@ TEST(Distribution2D, BilinearWithinCellsMatchesPdf) {
     EXPECT_NEAR(counts[c] / n, expected, 5.0 * std::sqrt(expected / n) + 1e-12) << "cell " << c;
     if (counts[c] < 1000) continue;
     const size_t i = c % columns, j = c / columns;
-    const double* top = corners.data() + j * (columns + 1) + i;
+    const float* top = corners.data() + j * (columns + 1) + i;
     const double w0 = top[0], w1 = top[1], w2 = top[4], w3 = top[5], sum = w0 + w1 + w2 + w3;
     // The mean of s over the bilinear density: (w0 + w2) / 3 + (w1 + w3) 2 / 3, over the sum /
     // 2 (each linear factor integrates so); likewise t.

@@ -169,7 +169,7 @@ TEST(Environment, SamplingCellsInterpolateTheLookupBetweenTheirCorners) {
                                      EnvironmentGrid{w, h + 1, true}}) {
     Environment e;
     e.grid = grid;
-    const std::vector<double> corners = environmentCornerBrightness(texels.data(), w, h, grid);
+    const std::vector<float> corners = environmentCornerBrightness(texels.data(), w, h, grid);
     const uint32_t stride = grid.columns + 1;
     ASSERT_EQ(corners.size(), size_t(stride) * (grid.rows + 1));
     for (uint32_t y = 0; y <= grid.rows; ++y)  // the map wraps
@@ -178,8 +178,8 @@ TEST(Environment, SamplingCellsInterpolateTheLookupBetweenTheirCorners) {
       for (uint32_t column = 0; column < grid.columns; ++column)
         for (int i = 0; i < 4; ++i) {
           const float s = within(gen), t = within(gen);
-          const double* top = corners.data() + size_t(row) * stride + column;
-          const double* bottom = top + stride;
+          const float* top = corners.data() + size_t(row) * stride + column;
+          const float* bottom = top + stride;
           const double interpolated =
               (1 - t) * ((1 - s) * top[0] + s * top[1]) + t * ((1 - s) * bottom[0] + s * bottom[1]);
           float mu, mv;

@@ -12,6 +12,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "core/device.h"
@@ -194,19 +195,20 @@ inline void buildDistribution2D(const std::vector<double>& f, uint32_t columns, 
 // >= 0) over cells whose rows may differ in height: each cell's mass is the mean of its corners
 // times its row's factor (rowFactor[rows], its height in units of the others'), as
 // Distribution2D's bilinear density needs.
-inline void buildBilinearDistribution2D(const std::vector<double>& corners,
+inline void buildBilinearDistribution2D(std::vector<float> corners,
                                         const std::vector<double>& rowFactor, uint32_t columns,
                                         uint32_t rows, Distribution2DArrays* d) {
   std::vector<double> f(size_t(columns) * rows);
   for (uint32_t j = 0; j < rows; ++j) {
-    const double* top = corners.data() + size_t(j) * (columns + 1);
-    const double* bottom = top + (columns + 1);
+    const float* top = corners.data() + size_t(j) * (columns + 1);
+    const float* bottom = top + (columns + 1);
     for (uint32_t i = 0; i < columns; ++i)
-      f[size_t(j) * columns + i] =
-          0.25 * (top[i] + top[i + 1] + bottom[i] + bottom[i + 1]) * rowFactor[j];
+      f[size_t(j) * columns + i] = 0.25 *
+                                   (double(top[i]) + top[i + 1] + bottom[i] + bottom[i + 1]) *
+                                   rowFactor[j];
   }
   buildDistribution2D(f, columns, rows, d);
-  d->corners.assign(corners.begin(), corners.end());
+  d->corners = std::move(corners);
 }
 
 }  // namespace candela

@@ -48,10 +48,10 @@ double gridRowTop(const EnvironmentGrid& grid, uint32_t y) {
 // only ever sampled beside BSDF sampling, whose rays find the whole sphere, so light samples are
 // better spent where the map is brighter than its mean over directions: each brightness becomes
 // its excess over that mean. A map with no excess (a uniform one) keeps its brightness.
-void compensateForMis(std::vector<double>& brightness, double mean) {
-  if (!std::any_of(brightness.begin(), brightness.end(), [&](double b) { return b > mean; }))
+void compensateForMis(std::vector<float>& brightness, float mean) {
+  if (!std::any_of(brightness.begin(), brightness.end(), [&](float b) { return b > mean; }))
     return;
-  for (double& b : brightness) b = std::max(0.0, b - mean);
+  for (float& b : brightness) b = std::max(0.0f, b - mean);
 }
 
 }  // namespace
@@ -69,10 +69,10 @@ EnvironmentGrid environmentGrid(uint32_t w, uint32_t h) {
   return {k * w, k == 1 ? h + 1 : k * h, k == 1};
 }
 
-std::vector<double> environmentCornerBrightness(const Vec3* texels, uint32_t w, uint32_t h,
-                                                const EnvironmentGrid& grid) {
+std::vector<float> environmentCornerBrightness(const Vec3* texels, uint32_t w, uint32_t h,
+                                               const EnvironmentGrid& grid) {
   const double shift = grid.shifted ? 0.5 : 0.0;
-  std::vector<double> corners(size_t(grid.columns + 1) * (grid.rows + 1));
+  std::vector<float> corners(size_t(grid.columns + 1) * (grid.rows + 1));
   for (uint32_t y = 0; y <= grid.rows; ++y) {
     const double v = gridRowTop(grid, y);
     for (uint32_t x = 0; x <= grid.columns; ++x) {
@@ -129,12 +129,12 @@ void flattenEnvironment(const EnvironmentDesc& desc, SceneData& s) {
   s.environmentMapMean = meanTexel(s.envTexels.data(), w, h);
 
   const EnvironmentGrid grid = environmentGrid(w, h);
-  std::vector<double> corners = environmentCornerBrightness(s.envTexels.data(), w, h, grid);
+  std::vector<float> corners = environmentCornerBrightness(s.envTexels.data(), w, h, grid);
   compensateForMis(corners, componentSum(s.environmentMapMean));
   // Weighted by sin(theta) at the corners, the density over the map is continuous, and so is the
   // pdf over directions, the density divided by sin(theta) there.
   for (uint32_t y = 0; y <= grid.rows; ++y) {
-    const double sinTheta = std::sin(kPi * gridRowTop(grid, y));
+    const float sinTheta = float(std::sin(kPi * gridRowTop(grid, y)));
     for (uint32_t x = 0; x <= grid.columns; ++x) corners[size_t(y) * (grid.columns + 1) + x] *= sinTheta;
   }
   // Each row's height in units of a full row's (the shifted grid's first and last are halves).
@@ -144,7 +144,7 @@ void flattenEnvironment(const EnvironmentDesc& desc, SceneData& s) {
     rowHeight[y] = (gridRowTop(grid, y + 1) - gridRowTop(grid, y)) * fullRows;
   s.environment.grid = grid;
   Distribution2DArrays d;
-  buildBilinearDistribution2D(corners, rowHeight, grid.columns, grid.rows, &d);
+  buildBilinearDistribution2D(std::move(corners), rowHeight, grid.columns, grid.rows, &d);
   s.envConditionalCdf = std::move(d.conditional);
   s.envMarginalCdf = std::move(d.marginal);
   s.envConditionalGuide = std::move(d.conditionalGuide);

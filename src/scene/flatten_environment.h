@@ -31,8 +31,8 @@ EnvironmentGrid environmentGrid(uint32_t w, uint32_t h);
 // the grid's cells: rows + 1 rows of columns + 1, the last column the first again (the map
 // wraps). Each cell lies within one of the lookup's bilinear patches, so the bilinear
 // interpolation of its corners is the lookup over it.
-std::vector<double> environmentCornerBrightness(const Vec3* texels, uint32_t w, uint32_t h,
-                                                const EnvironmentGrid& grid);
+std::vector<float> environmentCornerBrightness(const Vec3* texels, uint32_t w, uint32_t h,
+                                               const EnvironmentGrid& grid);
 
 // The sum of the RGB radiance of the environment, averaged over directions.
 double environmentMeanRadiance(const SceneData& scene);
