@@ -76,7 +76,7 @@ struct Distribution2D {
 
   // A cell and a point (s, t) in [0,1)^2 within it from uniform (u1, u2), with the density of
   // the point (column + s, row + t) / (columns, rows) over [0,1)^2; false where it has none.
-  CANDELA_HDI bool sampleCell(float u1, float u2, uint32_t* column, uint32_t* row, float* s,
+  CANDELA_HDI_ALWAYS bool sampleCell(float u1, float u2, uint32_t* column, uint32_t* row, float* s,
                               float* t, float* pdf) const {
     float pdfRow, pdfColumn;
     *row = invertCdf(marginal, marginalGuide, rows, u2, t, &pdfRow);
@@ -94,7 +94,7 @@ struct Distribution2D {
   }
 
   // The density sampleCell gives point (s, t) of cell (column, row).
-  CANDELA_HDI float cellPdf(uint32_t column, uint32_t row, float s, float t) const {
+  CANDELA_HDI_ALWAYS float cellPdf(uint32_t column, uint32_t row, float s, float t) const {
     const float* c = conditional + size_t(row) * (columns + 1);
     const float cell = (marginal[row + 1] - marginal[row]) * float(rows) *
                        (c[column + 1] - c[column]) * float(columns);
