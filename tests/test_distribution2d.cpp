@@ -5,8 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <utility>
 #include <random>
+#include <utility>
 #include <vector>
 
 #include "core/distribution2d.h"
@@ -93,8 +93,8 @@ TEST(Distribution2D, SampledDensityMatchesPdf) {
 TEST(Distribution2D, BilinearWithinCellsMatchesPdf) {
   const uint32_t columns = 3, rows = 2;
   const std::vector<float> corners = {1, 0, 0, 4,  //
-                                       3, 0, 0, 1,  //
-                                       0, 0, 5, 2};
+                                      3, 0, 0, 1,  //
+                                      0, 0, 5, 2};
   const std::vector<double> rowFactor = {1.0, 0.5};
   Distribution2DArrays d;
   buildBilinearDistribution2D(corners, rowFactor, columns, rows, &d);
@@ -143,8 +143,8 @@ TEST(Distribution2D, BilinearWithinCellsMatchesPdf) {
 // weights and a weight of 0 included; sampleBilinear and bilinearPdf stay finite on a line of no
 // mass, where the density is 0.
 TEST(Distribution2D, LinearWarpInvertsItsCdf) {
-  for (const auto& ab : {std::pair<float, float>{1, 3}, {3, 1}, {0, 2}, {2, 0}, {5, 5},
-                         {1, 1.0001f}, {1e-6f, 7}}) {
+  for (const auto& ab :
+       {std::pair<float, float>{1, 3}, {3, 1}, {0, 2}, {2, 0}, {5, 5}, {1, 1.0001f}, {1e-6f, 7}}) {
     const double a = ab.first, b = ab.second;
     for (float u : {0.0f, 1e-7f, 0.1f, 0.5f, 0.9f, 0.99999994f}) {
       const double x = sampleLinear(u, ab.first, ab.second);

@@ -84,7 +84,8 @@ void expectMapSamplingConsistentWithItsPdf(uint32_t w, uint32_t h) {
       writeMap("env_sun_" + std::to_string(w) + ".pfm", w, h, [&](uint32_t x, uint32_t y) {
         const float fx = float(x) / float(w), fy = float(y) / float(h);
         const bool sun = fx >= 0.625f && fx < 0.6875f && fy >= 0.25f && fy < 1.0f / 3.0f;
-        return sun ? Vec3(400, 380, 300) : Vec3(0.1f + 0.01f * float(x % 5), 0.2f, 0.3f + 0.5f * fy);
+        return sun ? Vec3(400, 380, 300)
+                   : Vec3(0.1f + 0.01f * float(x % 5), 0.2f, 0.3f + 0.5f * fy);
       });
   const SceneData data =
       sceneWithEnvironment(R"({"map": ")" + map + R"(", "strength": 2, "rotation": [10, 40, 0]})");
@@ -164,9 +165,9 @@ TEST(Environment, SamplingCellsInterpolateTheLookupBetweenTheirCorners) {
   std::vector<Vec3> texels(w * h);
   for (Vec3& t : texels) t = Vec3(u(gen), u(gen), u(gen));
   std::uniform_real_distribution<float> within(0.0f, 1.0f);
-  for (const EnvironmentGrid grid : {EnvironmentGrid{4 * w, 4 * h, false},
-                                     EnvironmentGrid{2 * w, 2 * h, false},
-                                     EnvironmentGrid{w, h + 1, true}}) {
+  for (const EnvironmentGrid grid :
+       {EnvironmentGrid{4 * w, 4 * h, false}, EnvironmentGrid{2 * w, 2 * h, false},
+        EnvironmentGrid{w, h + 1, true}}) {
     Environment e;
     e.grid = grid;
     const std::vector<float> corners = environmentCornerBrightness(texels.data(), w, h, grid);

@@ -77,12 +77,12 @@ struct Distribution2D {
   // A cell and a point (s, t) in [0,1)^2 within it from uniform (u1, u2), with the density of
   // the point (column + s, row + t) / (columns, rows) over [0,1)^2; false where it has none.
   CANDELA_HDI_ALWAYS bool sampleCell(float u1, float u2, uint32_t* column, uint32_t* row, float* s,
-                              float* t, float* pdf) const {
+                                     float* t, float* pdf) const {
     float pdfRow, pdfColumn;
     *row = invertCdf(marginal, marginalGuide, rows, u2, t, &pdfRow);
     const size_t rowStart = size_t(*row) * (columns + 1);
-    *column = invertCdf(conditional + rowStart, conditionalGuide + rowStart, columns, u1, s,
-                        &pdfColumn);
+    *column =
+        invertCdf(conditional + rowStart, conditionalGuide + rowStart, columns, u1, s, &pdfColumn);
     *pdf = pdfRow * pdfColumn;
     if (corners) {
       float w[4];
@@ -132,7 +132,6 @@ struct Distribution2D {
     w[3] = bottom[1];
   }
 };
-
 
 // The guide table of cdf[0..n]: guide[k], k in [0, n], is the first segment o with
 // cdf[o + 1] > k / n (n - 1 where none is), computed in the float arithmetic sampleCdf uses.
@@ -203,9 +202,8 @@ inline void buildBilinearDistribution2D(std::vector<float> corners,
     const float* top = corners.data() + size_t(j) * (columns + 1);
     const float* bottom = top + (columns + 1);
     for (uint32_t i = 0; i < columns; ++i)
-      f[size_t(j) * columns + i] = 0.25 *
-                                   (double(top[i]) + top[i + 1] + bottom[i] + bottom[i + 1]) *
-                                   rowFactor[j];
+      f[size_t(j) * columns + i] =
+          0.25 * (double(top[i]) + top[i + 1] + bottom[i] + bottom[i + 1]) * rowFactor[j];
   }
   buildDistribution2D(f, columns, rows, d);
   d->corners = std::move(corners);

@@ -82,7 +82,8 @@ CANDELA_HDI void sampleBilinear(float u1, float u2, const float w[4], float* x, 
 CANDELA_HDI float bilinearPdf(float x, float y, const float w[4]) {
   const float sum = w[0] + w[1] + w[2] + w[3];
   if (!(sum > 0.0f)) return 0.0f;
-  const float value = (1.0f - y) * ((1.0f - x) * w[0] + x * w[1]) + y * ((1.0f - x) * w[2] + x * w[3]);
+  const float value =
+      (1.0f - y) * ((1.0f - x) * w[0] + x * w[1]) + y * ((1.0f - x) * w[2] + x * w[3]);
   return 4.0f * value / sum;
 }
 

@@ -37,7 +37,7 @@ struct Environment {
   Mat3 toWorld;         // map frame -> world (the rotation); fromWorld is its transpose
   Mat3 fromWorld;
   uint32_t width = 0, height = 0;  // of the map; 0: a constant environment
-  EnvironmentGrid grid;             // of its sampling distribution
+  EnvironmentGrid grid;            // of its sampling distribution
   int32_t light = -1;              // its index among the lights; -1: black, not a light
 };
 
@@ -100,7 +100,8 @@ CANDELA_HDI_ALWAYS void cellToMap(const Environment& e, uint32_t column, uint32_
   *u = x < 1.0f ? x : 0.0f;
   // In units of full rows: a shifted grid's first and last rows are halves.
   float y = float(row) + t;
-  if (shifted) y = row == 0 ? 0.5f * t : (row == e.grid.rows - 1 ? y - 0.5f * (1.0f + t) : y - 0.5f);
+  if (shifted)
+    y = row == 0 ? 0.5f * t : (row == e.grid.rows - 1 ? y - 0.5f * (1.0f + t) : y - 0.5f);
   y /= float(shifted ? e.grid.rows - 1 : e.grid.rows);
   *v = y < 1.0f ? y : 0.99999994f;
 }

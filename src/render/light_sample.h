@@ -176,8 +176,8 @@ CANDELA_HDI_ALWAYS float environmentPdf(const SceneView& scene, const Vec3& wi) 
   uint32_t column, row;
   float s, t;
   mapToCell(e, u, v, &column, &row, &s, &t);
-  const float pdfMap = environmentDistribution(scene).cellPdf(column, row, s, t) *
-                       mapDensityPerGridDensity(e, row);
+  const float pdfMap =
+      environmentDistribution(scene).cellPdf(column, row, s, t) * mapDensityPerGridDensity(e, row);
   return pdfMap / (2.0f * kPi * kPi * sinTheta);
 }
 

@@ -40,8 +40,8 @@ namespace candela {
   X(float, envMarginalCdf, envMarginalCdfCount, EnvironmentMap)              \
   X(uint32_t, envConditionalGuide, envConditionalGuideCount, EnvironmentMap) \
   X(uint32_t, envMarginalGuide, envMarginalGuideCount, EnvironmentMap)       \
-  X(float, envCellCorners, envCellCornerCount, EnvironmentMap)                \
-  X(InstanceMotion, materialMotions, materialMotionCount, Values)              \
+  X(float, envCellCorners, envCellCornerCount, EnvironmentMap)               \
+  X(InstanceMotion, materialMotions, materialMotionCount, Values)            \
   X(uint32_t, lightPathOrder, lightPathOrderCount, Values)
 
 // Every array of the kernel's scene: SceneData, SceneData::view and the CUDA upload expand
@@ -90,9 +90,9 @@ CANDELA_HDI_ALWAYS Vec3 environmentRadiance(const SceneView& scene, const Vec3& 
 
 // The environment map's sampling distribution.
 CANDELA_HDI Distribution2D environmentDistribution(const SceneView& scene) {
-  return {scene.envConditionalCdf, scene.envMarginalCdf, scene.envConditionalGuide,
-          scene.envMarginalGuide, scene.environment.grid.columns,
-          scene.environment.grid.rows, scene.envCellCorners};
+  return {scene.envConditionalCdf, scene.envMarginalCdf,           scene.envConditionalGuide,
+          scene.envMarginalGuide,  scene.environment.grid.columns, scene.environment.grid.rows,
+          scene.envCellCorners};
 }
 
 }  // namespace candela

@@ -49,8 +49,7 @@ double gridRowTop(const EnvironmentGrid& grid, uint32_t y) {
 // better spent where the map is brighter than its mean over directions: each brightness becomes
 // its excess over that mean. A map with no excess (a uniform one) keeps its brightness.
 void compensateForMis(std::vector<float>& brightness, float mean) {
-  if (!std::any_of(brightness.begin(), brightness.end(), [&](float b) { return b > mean; }))
-    return;
+  if (!std::any_of(brightness.begin(), brightness.end(), [&](float b) { return b > mean; })) return;
   for (float& b : brightness) b = std::max(0.0f, b - mean);
 }
 
@@ -135,7 +134,8 @@ void flattenEnvironment(const EnvironmentDesc& desc, SceneData& s) {
   // pdf over directions, the density divided by sin(theta) there.
   for (uint32_t y = 0; y <= grid.rows; ++y) {
     const float sinTheta = float(std::sin(kPi * gridRowTop(grid, y)));
-    for (uint32_t x = 0; x <= grid.columns; ++x) corners[size_t(y) * (grid.columns + 1) + x] *= sinTheta;
+    for (uint32_t x = 0; x <= grid.columns; ++x)
+      corners[size_t(y) * (grid.columns + 1) + x] *= sinTheta;
   }
   // Each row's height in units of a full row's (the shifted grid's first and last are halves).
   const double fullRows = grid.rows - (grid.shifted ? 1.0 : 0.0);
