@@ -113,11 +113,16 @@ std::string sceneWithAreaLights(const std::string& dir, const std::string& map,
 }
 
 // A 32 x 16 sky with a sun of `sun` at texel (20, 5), as `file` in `dir`.
-void writeSky(const std::string& dir, const std::string& file, float sun) {
-  ImageRGB sky(32, 16);
-  for (uint32_t y = 0; y < 16; ++y)
-    for (uint32_t x = 0; x < 32; ++x)
-      sky.set(x, y, x == 20 && y == 5 ? Vec3(sun) : Vec3(0.2f + 0.02f * x, 0.3f, 0.5f));
+// A sky of w x h texels (32 x 16 by default) whose sun covers a sixteenth of its height and a
+// thirty-second of its width (one texel of the default).
+void writeSky(const std::string& dir, const std::string& file, float sun, uint32_t w = 32,
+              uint32_t h = 16) {
+  ImageRGB sky(w, h);
+  for (uint32_t y = 0; y < h; ++y)
+    for (uint32_t x = 0; x < w; ++x) {
+      const bool inSun = x * 32 / w == 20 && y * 16 / h == 5;
+      sky.set(x, y, inSun ? Vec3(sun) : Vec3(0.2f + 0.64f * float(x) / float(w), 0.3f, 0.5f));
+    }
   writeImage(dir + file, sky, OutputDesc{});
 }
 
@@ -133,6 +138,20 @@ TEST(CudaBackend, MatchesCpuWithAreaLightsAndAnEnvironmentMap) {
   const RenderResult gpu = renderCuda(data);
   EXPECT_LT(test::relMseAgainst(cpu.image.pixels, gpu.image.pixels), 1e-4);
   EXPECT_EQ(cpu.rays.camera, gpu.rays.camera);
+}
+
+// A map of over a million texels is sampled on a grid shifted by half a texel
+// (render/environment.h): the device samples it as the CPU does.
+TEST(CudaBackend, MatchesCpuUnderAMapOfUnsplitTexels) {
+  REQUIRE_GPU();
+  const std::string dir = ::testing::TempDir();
+  writeSky(dir, "cuda_sky_large.pfm", 200.0f, 1600, 800);
+  const SceneData data =
+      test::loadTestScene(sceneWithAreaLights(dir, "cuda_sky_large.pfm", "[0, 1.5, 6]", "4"));
+  ASSERT_TRUE(data.environment.grid.shifted);
+  const RenderResult cpu = renderCpu(data.view(), RenderOptions{});
+  const RenderResult gpu = renderCuda(data);
+  EXPECT_LT(test::relMseAgainst(cpu.image.pixels, gpu.image.pixels), 1e-4);
 }
 
 TEST(CudaBackend, FurnaceInsideDiffuseSphereIsOne) {
