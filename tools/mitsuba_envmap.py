@@ -13,14 +13,14 @@ renders 1 spp first (JIT warm-up) and times the render after it, as the harness 
 
 Mapping: candela looks a map frame direction d up at u = 0.5 + atan2(d.x, -d.z) / (2 pi), Mitsuba's
 envmap at u = atan2(d.x, -d.z) / (2 pi) (its seam at -z), the same mapping turned 180 degrees about
-+y; so Mitsuba's to_world is candela's rotation times a half turn about y. `strength` is the
-envmap's scale; a `color` tint other than 1 multiplies the texels into a temporary EXR.
++y; so Mitsuba's to_world is candela's rotation times a half turn about y. The two place a map's
+rows at different latitudes (rows_at_mitsubas_latitudes), so Mitsuba gets the map resampled to
+candela's. `strength` is the envmap's scale; a `color` tint multiplies the texels.
 """
 import argparse
 import json
 import os
 import sys
-import tempfile
 import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -45,20 +45,35 @@ def environment_map(scene_file):
     return env, scene
 
 
-def envmap_emitter(env, base_dir, work):
+def rows_at_mitsubas_latitudes(texels):
+    """The map Mitsuba must be given to see candela's radiance at every latitude.
+
+    candela puts row j's centre at v = (j + 0.5) / H and holds the first and last rows' values up
+    to the poles; Mitsuba's envmap puts row j of an H'-row bitmap at v = j / (H' - 1), its first
+    and last rows on the poles. With 2H + 1 rows, Mitsuba's row j lies at v = j / (2H): an odd j
+    on candela's row (j - 1) / 2, an even one halfway between two of candela's rows (or on a pole,
+    where candela holds its edge row), so that Mitsuba's linear interpolation between its rows is
+    candela's. Columns need nothing: both put column i at u = (i + 0.5) / W and wrap.
+    """
+    first, last = texels[:1], texels[-1:]
+    out = np.empty((2 * texels.shape[0] + 1,) + texels.shape[1:], dtype=texels.dtype)
+    out[1::2] = texels
+    out[0::2] = 0.5 * (np.concatenate([first, texels]) + np.concatenate([texels, last]))
+    return out
+
+
+def envmap_emitter(env, base_dir):
     path = env['map'] if os.path.isabs(env['map']) else os.path.join(base_dir, env['map'])
     color = env.get('color', 1.0)
     tint = np.array(color if isinstance(color, list) else [color] * 3, dtype=np.float32)
-    if np.any(tint != 1.0):
-        texels = np.array(mi.Bitmap(path).convert(mi.Bitmap.PixelFormat.RGB,
-                                                  mi.Struct.Type.Float32, False))
-        path = os.path.join(work, 'tinted.exr')
-        mi.Bitmap(texels * tint).write(path)
+    texels = np.array(mi.Bitmap(path).convert(mi.Bitmap.PixelFormat.RGB, mi.Struct.Type.Float32,
+                                              False)) * tint
     R = np.array(euler_R(*env.get('rotation', [0, 0, 0])), dtype=np.float64)
     half_turn = np.diag([-1.0, 1.0, -1.0])
     M = np.eye(4)
     M[:3, :3] = R @ half_turn
-    return {'type': 'envmap', 'filename': path, 'scale': float(env.get('strength', 1.0)),
+    return {'type': 'envmap', 'bitmap': mi.Bitmap(rows_at_mitsubas_latitudes(texels)),
+            'scale': float(env.get('strength', 1.0)),
             'to_world': mi.ScalarTransform4f(M.tolist())}
 
 
@@ -82,28 +97,27 @@ def main(argv=None):
         dr.set_thread_count(a.threads)
     base_dir = os.path.dirname(os.path.abspath(a.scene))
     t0 = time.perf_counter()
-    with tempfile.TemporaryDirectory() as work:
-        # Beside the original, so that its relative mesh paths still resolve.
-        stripped = os.path.join(base_dir, f'.mitsuba_envmap_{os.getpid()}.json')
-        with open(stripped, 'w') as f:
-            json.dump(scene, f)
-        try:
-            sc = mr.parse_scene(stripped)
-        finally:
-            os.remove(stripped)
-        d = mr.scene_dict(sc, spp=a.spp)
-        d['envmap'] = envmap_emitter(env, base_dir, work)
-        loaded = mi.load_dict(d)
-        spp = a.spp or sc['camera']['spp']
-        t_load = time.perf_counter() - t0
-        t_warm = None
-        if a.time:
-            t1 = time.perf_counter()
-            mr.render(sc, loaded, 1, a.seed + 987654)
-            t_warm = time.perf_counter() - t1
-        t = time.perf_counter()
-        img = mr.render(sc, loaded, spp, a.seed)
-        seconds = time.perf_counter() - t
+    # Beside the original, so that its relative mesh paths still resolve.
+    stripped = os.path.join(base_dir, f'.mitsuba_envmap_{os.getpid()}.json')
+    with open(stripped, 'w') as f:
+        json.dump(scene, f)
+    try:
+        sc = mr.parse_scene(stripped)
+    finally:
+        os.remove(stripped)
+    d = mr.scene_dict(sc, spp=a.spp)
+    d['envmap'] = envmap_emitter(env, base_dir)
+    loaded = mi.load_dict(d)
+    spp = a.spp or sc['camera']['spp']
+    t_load = time.perf_counter() - t0
+    t_warm = None
+    if a.time:
+        t1 = time.perf_counter()
+        mr.render(sc, loaded, 1, a.seed + 987654)
+        t_warm = time.perf_counter() - t1
+    t = time.perf_counter()
+    img = mr.render(sc, loaded, spp, a.seed)
+    seconds = time.perf_counter() - t
     mr.write_exr(a.out, img)
     W, H = sc['camera']['W'], sc['camera']['H']
     ns = W * H * spp
