@@ -101,12 +101,13 @@ TEST(Distribution2D, BilinearWithinCellsMatchesPdf) {
   const Distribution2D sampler{d.conditional.data(),   d.marginal.data(), d.conditionalGuide.data(),
                                d.marginalGuide.data(), columns,           rows,
                                d.corners.data()};
-  std::vector<double> mass(columns * rows), total = {0.0};
+  std::vector<double> mass(columns * rows);
+  double total = 0.0;
   for (uint32_t j = 0; j < rows; ++j)
     for (uint32_t i = 0; i < columns; ++i) {
       const float* top = corners.data() + j * (columns + 1) + i;
       mass[j * columns + i] = 0.25 * (top[0] + top[1] + top[4] + top[5]) * rowFactor[j];
-      total[0] += mass[j * columns + i];
+      total += mass[j * columns + i];
     }
   std::vector<double> counts(mass.size(), 0.0), sumS(mass.size(), 0.0), sumT(mass.size(), 0.0);
   const int n = 200000;
@@ -122,7 +123,7 @@ TEST(Distribution2D, BilinearWithinCellsMatchesPdf) {
     sumT[c] += y * rows - j;
   }
   for (size_t c = 0; c < mass.size(); ++c) {
-    const double expected = mass[c] / total[0];
+    const double expected = mass[c] / total;
     EXPECT_NEAR(counts[c] / n, expected, 5.0 * std::sqrt(expected / n) + 1e-12) << "cell " << c;
     if (counts[c] < 1000) continue;
     const size_t i = c % columns, j = c / columns;
