@@ -63,6 +63,33 @@ TEST(Distribution2D, GuidedInversionFindsTheSegmentOfTheFullSearch) {
   }
 }
 
+// Draws n points from `sampler` (uniform numbers seeded by `seed`), each of the density pdf()
+// finds for it, and hands each to visit(cell, s, t): its cell (row-major) and where in it the
+// point lies.
+template <typename Visit>
+void drawPoints(const Distribution2D& sampler, int n, uint32_t seed, const Visit& visit) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
+  for (int k = 0; k < n; ++k) {
+    float x, y, pdf;
+    ASSERT_TRUE(sampler.sample(uniform(rng), uniform(rng), &x, &y, &pdf));
+    ASSERT_FLOAT_EQ(pdf, sampler.pdf(x, y));
+    const size_t i = size_t(x * sampler.columns), j = size_t(y * sampler.rows);
+    visit(j * sampler.columns + i, double(x) * sampler.columns - double(i),
+          double(y) * sampler.rows - double(j));
+  }
+}
+
+// Each cell drew its share of the n points: its mass over all cells' (within 5 sigma).
+void expectCellShares(const std::vector<double>& counts, const std::vector<double>& mass, int n) {
+  double total = 0.0;
+  for (double m : mass) total += m;
+  for (size_t c = 0; c < mass.size(); ++c) {
+    const double expected = mass[c] / total;
+    EXPECT_NEAR(counts[c] / n, expected, 5.0 * std::sqrt(expected / n) + 1e-12) << "cell " << c;
+  }
+}
+
 TEST(Distribution2D, SampledDensityMatchesPdf) {
   const uint32_t columns = 5, rows = 3;
   const std::vector<double> f = {1, 0, 2, 3, 1, 0, 0, 0, 0, 0, 4, 1, 1, 1, 8};
@@ -72,19 +99,8 @@ TEST(Distribution2D, SampledDensityMatchesPdf) {
                                d.marginalGuide.data(), columns,           rows};
   std::vector<double> counts(f.size(), 0.0);
   const int n = 200000;
-  std::mt19937 rng(11);
-  std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
-  for (int i = 0; i < n; ++i) {
-    float x, y, pdf;
-    ASSERT_TRUE(sampler.sample(uniform(rng), uniform(rng), &x, &y, &pdf));
-    ASSERT_FLOAT_EQ(pdf, sampler.pdf(x, y));
-    counts[size_t(y * rows) * columns + size_t(x * columns)] += 1.0;
-  }
-  const double total = 22.0;
-  for (size_t c = 0; c < f.size(); ++c) {
-    const double expected = f[c] / total;
-    EXPECT_NEAR(counts[c] / n, expected, 5.0 * std::sqrt(expected / n) + 1e-12) << "cell " << c;
-  }
+  drawPoints(sampler, n, 11, [&](size_t cell, double, double) { counts[cell] += 1.0; });
+  expectCellShares(counts, f, n);
 }
 
 // With weights at the cells' corners, sampled points follow the bilinear density pdf()
@@ -102,29 +118,20 @@ TEST(Distribution2D, BilinearWithinCellsMatchesPdf) {
                                d.marginalGuide.data(), columns,           rows,
                                d.corners.data()};
   std::vector<double> mass(columns * rows);
-  double total = 0.0;
   for (uint32_t j = 0; j < rows; ++j)
     for (uint32_t i = 0; i < columns; ++i) {
       const float* top = corners.data() + j * (columns + 1) + i;
       mass[j * columns + i] = 0.25 * (top[0] + top[1] + top[4] + top[5]) * rowFactor[j];
-      total += mass[j * columns + i];
     }
   std::vector<double> counts(mass.size(), 0.0), sumS(mass.size(), 0.0), sumT(mass.size(), 0.0);
   const int n = 200000;
-  std::mt19937 rng(5);
-  std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
-  for (int k = 0; k < n; ++k) {
-    float x, y, pdf;
-    ASSERT_TRUE(sampler.sample(uniform(rng), uniform(rng), &x, &y, &pdf));
-    ASSERT_FLOAT_EQ(pdf, sampler.pdf(x, y));
-    const size_t i = size_t(x * columns), j = size_t(y * rows), c = j * columns + i;
-    counts[c] += 1.0;
-    sumS[c] += x * columns - i;
-    sumT[c] += y * rows - j;
-  }
+  drawPoints(sampler, n, 5, [&](size_t cell, double s, double t) {
+    counts[cell] += 1.0;
+    sumS[cell] += s;
+    sumT[cell] += t;
+  });
+  expectCellShares(counts, mass, n);
   for (size_t c = 0; c < mass.size(); ++c) {
-    const double expected = mass[c] / total;
-    EXPECT_NEAR(counts[c] / n, expected, 5.0 * std::sqrt(expected / n) + 1e-12) << "cell " << c;
     if (counts[c] < 1000) continue;
     const size_t i = c % columns, j = c / columns;
     const float* top = corners.data() + j * (columns + 1) + i;
