@@ -2,7 +2,6 @@
 #include "scene/flatten_environment.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <utility>
 #include <vector>
@@ -20,22 +19,20 @@ namespace {
 // sin(theta) at the centre of row j of an h-row map.
 double rowSinTheta(uint32_t j, uint32_t h) { return std::sin(kPi * (j + 0.5) / h); }
 
-// The mean over directions of the N numbers value(x, y) gives (a std::array<double, N>) on a
-// w x h map: each cell weighted by the solid angle of its row.
-template <size_t N, typename Value>
-std::array<double, N> meanOverDirections(uint32_t w, uint32_t h, const Value& value) {
-  std::array<double, N> sum{};
-  double weights = 0.0;
+// The map's mean texel over directions: each texel weighted by the solid angle of its row.
+Vec3 meanTexel(const Vec3* texels, uint32_t w, uint32_t h) {
+  double sum[3] = {0.0, 0.0, 0.0}, weights = 0.0;
   for (uint32_t y = 0; y < h; ++y) {
     const double weight = rowSinTheta(y, h);
     for (uint32_t x = 0; x < w; ++x) {
-      const std::array<double, N> v = value(x, y);
-      for (size_t k = 0; k < N; ++k) sum[k] += v[k] * weight;
+      const Vec3& t = texels[size_t(y) * w + x];
+      sum[0] += t.x * weight;
+      sum[1] += t.y * weight;
+      sum[2] += t.z * weight;
       weights += weight;
     }
   }
-  for (double& s : sum) s /= weights;
-  return sum;
+  return Vec3(float(sum[0] / weights), float(sum[1] / weights), float(sum[2] / weights));
 }
 
 // The map's v at the top of grid row y (y = rows: its bottom, 1).
@@ -82,19 +79,6 @@ std::vector<float> environmentCornerBrightness(const Vec3* texels, uint32_t w, u
   }
   return corners;
 }
-
-namespace {
-
-// The map's mean texel over directions.
-Vec3 meanTexel(const Vec3* texels, uint32_t w, uint32_t h) {
-  const std::array<double, 3> mean = meanOverDirections<3>(w, h, [&](uint32_t x, uint32_t y) {
-    const Vec3& t = texels[size_t(y) * w + x];
-    return std::array<double, 3>{t.x, t.y, t.z};
-  });
-  return Vec3(float(mean[0]), float(mean[1]), float(mean[2]));
-}
-
-}  // namespace
 
 void flattenEnvironment(const EnvironmentDesc& desc, SceneData& s) {
   Environment e;
