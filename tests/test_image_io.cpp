@@ -272,5 +272,17 @@ TEST_F(ImageIoTest, ReadingGarbageFails) {
   EXPECT_THROW(readImage(path("missing.pfm")), ImageWriteError);
 }
 
+TEST_F(ImageIoTest, APfmWiderThanItsLimitSaysSo) {
+  std::ofstream(path("wide.pfm")) << "PF\n1100000 1\n-1.0\n";
+  try {
+    readImage(path("wide.pfm"));
+    FAIL() << "no error";
+  } catch (const ImageWriteError& e) {
+    EXPECT_NE(std::string(e.what()).find("1100000 x 1 pixels: at most 1048576 a side"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace candela

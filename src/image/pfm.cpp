@@ -72,9 +72,12 @@ ImageRGB decodePfm(const std::string& bytes) {
   double scale = 0;
   if (!(header >> magic >> width >> height >> scale) || (magic != "PF" && magic != "Pf"))
     throw ImageWriteError("not a PFM file (bad header)");
-  if (width <= 0 || height <= 0 || width > (1 << 20) || height > (1 << 20) || scale == 0 ||
-      !std::isfinite(scale))
+  if (width <= 0 || height <= 0 || scale == 0 || !std::isfinite(scale))
     throw ImageWriteError("not a PFM file (bad size or scale in header)");
+  constexpr long long kMaxSide = 1 << 20;
+  if (width > kMaxSide || height > kMaxSide)
+    throw ImageWriteError("PFM image of " + std::to_string(width) + " x " + std::to_string(height) +
+                          " pixels: at most " + std::to_string(kMaxSide) + " a side is read");
   // Exactly one whitespace character separates the header from the data.
   const size_t dataStart = size_t(header.tellg()) + 1;
   const size_t channels = magic == "PF" ? 3 : 1;
