@@ -76,7 +76,7 @@ CANDELA_HDI float lightVertexNeePdf(const SceneView& scene, LightVertex* lv) {
 }
 
 // The chance that a light subpath starts from light `index`: by power
-// (scene/flatten.cpp, setLightPathPicks); the environment starts none.
+// (scene/flatten_lights.cpp, setLightPathPicks); the environment starts none.
 CANDELA_HDI float lightPathPmf(const SceneView& scene, uint32_t index) {
   return scene.lights[index].pathPmf;
 }

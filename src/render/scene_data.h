@@ -45,7 +45,7 @@ struct SceneData {
   float environmentShare = 0.0f;
   Environment environment;
   // A hash of the bounds and powers of the lights the light tree was built over (0: no tree): a
-  // frame with the same hash keeps the tree (scene/flatten.cpp), and the GPU its copy
+  // frame with the same hash keeps the tree (scene/flatten_lights.cpp), and the GPU its copy
   // (RewrittenBy).
   uint64_t lightTreeHash = 0;
   // The content hash of the map the env* arrays were made from (0: none): a frame with an equal
