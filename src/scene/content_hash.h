@@ -1,6 +1,6 @@
-// hashBytes: a 64-bit hash of a block of memory, for telling whether a mesh, texture or
-// environment map is the one a previous frame had (scene/frame_scene.cpp, scene/flatten.cpp,
-// scene/flatten_lights.cpp).
+// hashBytes: a 64-bit hash of a block of memory, for telling whether a mesh, texture,
+// environment map or set of lights is the one a previous frame had (scene/frame_scene.cpp,
+// scene/flatten.cpp, scene/flatten_lights.cpp).
 // Equal contents give equal hashes; a collision would need two different inputs of one scene.
 #pragma once
 
