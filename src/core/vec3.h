@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "core/constants.h"
 #include "core/device.h"
 
 namespace candela {
@@ -56,6 +57,10 @@ CANDELA_HDI int maxDimension(const Vec3& a) {
   return (a.x > a.y) ? (a.x > a.z ? 0 : 2) : (a.y > a.z ? 1 : 2);
 }
 CANDELA_HDI bool isBlack(const Vec3& a) { return a.x == 0.0f && a.y == 0.0f && a.z == 0.0f; }
+// NaN fails every comparison; infinities exceed the largest float.
+CANDELA_HDI bool isFinite(const Vec3& v) {
+  return fabsf(v.x) <= kInfinity && fabsf(v.y) <= kInfinity && fabsf(v.z) <= kInfinity;
+}
 // x + y + z in double: what the host weighs colours and powers by (light selection, maps).
 inline double componentSum(const Vec3& a) { return double(a.x) + double(a.y) + double(a.z); }
 CANDELA_HDI float luminance(const Vec3& c) { return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z; }

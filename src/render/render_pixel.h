@@ -10,11 +10,6 @@
 
 namespace candela {
 
-// NaN fails every comparison; infinities exceed the largest float.
-CANDELA_HDI bool isFinite(const Vec3& v) {
-  return fabsf(v.x) <= kInfinity && fabsf(v.y) <= kInfinity && fabsf(v.z) <= kInfinity;
-}
-
 // A sample's camera ray through pixel (x, y), from the first dimensions of its stream `rng`,
 // and in *jx, *jy its place within the pixel.
 CANDELA_HDI Ray cameraSample(const SceneView& scene, uint32_t x, uint32_t y, SampleStream& rng,

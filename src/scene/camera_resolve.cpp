@@ -36,11 +36,9 @@ std::string posePath(const CameraDesc& desc) {
   return desc.lookAt ? "camera.look_at" : "camera.rotation";
 }
 
-bool finite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
-
 // A ray the renderer can trace: a finite origin and a finite unit direction.
 bool traceable(const Ray& ray) {
-  return finite(ray.origin) && finite(ray.direction) &&
+  return isFinite(ray.origin) && isFinite(ray.direction) &&
          std::fabs(length(ray.direction) - 1.0f) < 1e-3f;
 }
 
@@ -49,10 +47,10 @@ bool traceable(const Ray& ray) {
 // affine in the pixel, so they bound the rest) and, with a lens, from the lens's rim must be
 // finite.
 std::optional<CameraProblem> rayProblem(const Camera& cam, const CameraDesc& desc) {
-  bool pose = finite(cam.position);
+  bool pose = isFinite(cam.position);
   for (int c = 0; c < 3; ++c) {
     const Vec3 axis = cam.cameraToWorld.column(c);
-    pose = pose && finite(axis) && std::fabs(length(axis) - 1.0f) < 1e-3f;
+    pose = pose && isFinite(axis) && std::fabs(length(axis) - 1.0f) < 1e-3f;
   }
   if (!pose)
     return CameraProblem{posePath(desc),
