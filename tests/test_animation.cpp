@@ -180,6 +180,23 @@ TEST(AnimationErrors, LookAtCameraDegenerateAtSomeFrame) {
             "s.json: animation: at frame 9 the camera looks along its up direction");
 }
 
+TEST(AnimationErrors, SphereLightBeyondSinglePrecisionAtSomeFrame) {
+  // The bulb (intensity 10) shrinks to a radius whose square underflows at the last key.
+  EXPECT_EQ(error(R"({"frames": 12, "tracks": [
+                {"target": "bulb", "property": "radius", "keys": [[0, 0.5], [10, 1e-25]]}]})"),
+            "s.json: lights[1]: at frame 10, its surface's radiance, intensity 10 times color "
+            "[1, 1, 1] over a sphere of radius 1e-25, is beyond single precision; expected a "
+            "larger radius or a smaller intensity");
+  // A still light's own values are not checked where a track replaces them at every frame.
+  EXPECT_EQ(parseSceneText(R"({"camera": {}, "lights": [{"id": "b", "type": "sphere",
+                "position": [0, 0, 0], "intensity": 10, "radius": 1e-25}],
+                "animation": {"frames": 2, "tracks": [
+                {"target": "b", "property": "radius", "keys": [[0, 1]]}]}})",
+                           "s.json", ".")
+                .lights.size(),
+            1u);
+}
+
 TEST(AnimationErrors, ScaleMayNotChangeSign) {
   // Objects need an OBJ file; the check is on the keys, so an object scene is built here.
   try {

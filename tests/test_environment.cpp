@@ -316,5 +316,14 @@ TEST(Environment, BadMapsAreRefusedWithOneMessage) {
             "s.json: environment.strength: expected a non-negative number, got -1");
 }
 
+TEST(Environment, AMapTooBrightForItsStrengthIsRefused) {
+  writeMap("env_bright.pfm", 4, 2,
+           [](uint32_t x, uint32_t y) { return Vec3(1, x == 1 && y == 1 ? 1e30f : 1.0f, 1); });
+  EXPECT_EQ(loadError(R"({"map": "env_bright.pfm", "strength": 1e10})"),
+            "s.json: environment: the map's texel (1, 1), [1, 1e+30, 1], times color [1, 1, 1] "
+            "and strength 1e+10 is beyond single precision; expected a smaller strength");
+  EXPECT_EQ(loadError(R"({"map": "env_bright.pfm", "strength": 1e8})"), "no error");
+}
+
 }  // namespace
 }  // namespace candela

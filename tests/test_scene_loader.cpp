@@ -307,6 +307,23 @@ TEST_F(SceneLoader, InvalidColourAndIor) {
             "s.json: lights[0].intensity: expected a non-negative number, got -1");
 }
 
+TEST_F(SceneLoader, LightsBeyondSinglePrecision) {
+  // Each number fits a float; the power or the radiance they make does not.
+  EXPECT_EQ(errorWith(R"("lights": [{"position": [0, 0, 0], "intensity": 1e30,
+                                     "color": [1e20, 1, 1]}])"),
+            "s.json: lights[0]: its power, intensity 1e+30 times color [1e+20, 1, 1], is beyond "
+            "single precision; expected a smaller intensity or color");
+  EXPECT_EQ(errorWith(R"("lights": [{"type": "sphere", "position": [0, 0, 0], "intensity": 1e30,
+                                     "radius": 1e-10}])"),
+            "s.json: lights[0]: its surface's radiance, intensity 1e+30 times color [1, 1, 1] "
+            "over a sphere of radius 1e-10, is beyond single precision; expected a larger radius "
+            "or a smaller intensity");
+  EXPECT_EQ(parse(R"({"camera": {}, "lights": [{"type": "sphere", "position": [0, 0, 0],
+                       "intensity": 1e30, "radius": 1e-3}]})")
+                .lights.size(),
+            1u);
+}
+
 TEST_F(SceneLoader, MissingObjFile) {
   EXPECT_EQ(errorWith(R"("objects": [{"file": "meshes/x.obj"}])"),
             "s.json: objects[0].file: cannot open \"meshes/x.obj\" (No such file or directory)");

@@ -5,13 +5,13 @@
 #include <map>
 #include <tuple>
 
-#include "core/constants.h"
 #include "core/rotation.h"
 #include "geometry/bvh_build.h"
 #include "render/scene_change.h"
 #include "scene/camera_resolve.h"
 #include "scene/content_hash.h"
 #include "scene/flatten_environment.h"
+#include "scene/light_emission_desc.h"
 #include "scene/mesh_layout.h"
 #include "scene/mesh_repeats.h"
 
@@ -127,19 +127,19 @@ void addObject(SceneData& s, const ObjectDesc& obj, bool geometry, MeshLayouts& 
   }
 }
 
-// A point light, or a sphere light: an emissive sphere of radiance color*intensity/(4 pi^2 r^2)
-// that names the light, which in turn names the sphere.
+// A point light, or a sphere light: an emissive sphere (of sphereLightRadiance) that names the
+// light, which in turn names the sphere.
 void addLight(SceneData& s, const LightDesc& d) {
   Light light;
   light.type = d.type;
   if (d.type == LightType::Point) {
     light.position = d.position;
-    light.power = d.color * d.intensity;
+    light.power = lightPower(d);
   } else {
     Material emitter;
     emitter.type = MaterialType::Emissive;
     emitter.color = Vec3(0.0f);
-    emitter.radiance = (d.color * d.intensity) / (4.0f * kPi * kPi * d.radius * d.radius);
+    emitter.radiance = sphereLightRadiance(d);
     light.shape = uint32_t(s.spheres.size());
     s.spheres.push_back(
         Sphere{d.position, d.radius, addMaterial(s, emitter), int32_t(s.lights.size())});

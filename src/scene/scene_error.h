@@ -9,6 +9,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/vec3.h"
+
 namespace candela {
 
 class SceneError : public std::runtime_error {
@@ -21,6 +23,11 @@ inline std::string formatNumber(float value) {
   char text[32];
   std::snprintf(text, sizeof text, "%g", static_cast<double>(value));
   return text;
+}
+
+// Three numbers as messages show them: "[1, 0.5, 2]".
+inline std::string formatVec3(const Vec3& v) {
+  return "[" + formatNumber(v.x) + ", " + formatNumber(v.y) + ", " + formatNumber(v.z) + "]";
 }
 
 }  // namespace candela

@@ -9,8 +9,25 @@
 #include "image/image_io.h"
 #include "scene/content_hash.h"
 #include "scene/read/texel_check.h"
+#include "scene/scene_error.h"
 
 namespace candela {
+namespace {
+
+// The first texel whose radiance times `scale` (the map's tint times its strength, as the
+// renderer holds it) is not finite in single precision, as "texel (x, y), [r, g, b]", or "".
+std::string texelBeyondFloat(const ImageRGB& image, const Vec3& scale) {
+  for (uint32_t y = 0; y < image.height; ++y)
+    for (uint32_t x = 0; x < image.width; ++x) {
+      const Vec3 t = image.at(x, y);
+      if (!isFinite(t * scale))
+        return "texel (" + std::to_string(x) + ", " + std::to_string(y) + "), " + formatVec3(t);
+    }
+  return "";
+}
+
+}  // namespace
+
 EnvironmentDesc readEnvironment(const JsonValue& value, const std::string& baseDir) {
   JsonObject fields(value, {"color", "map", "strength", "rotation"});
   EnvironmentDesc environment;
@@ -43,6 +60,11 @@ EnvironmentDesc readEnvironment(const JsonValue& value, const std::string& baseD
   const std::string bad = firstBadTexel(image);
   if (!bad.empty())
     map->fail(written + ": " + bad + "; expected finite, non-negative radiance in every texel");
+  const std::string overflow = texelBeyondFloat(image, environment.color * environment.strength);
+  if (!overflow.empty())
+    value.fail("the map's " + overflow + ", times color " + formatVec3(environment.color) +
+               " and strength " + formatNumber(environment.strength) +
+               " is beyond single precision; expected a smaller strength");
   environment.mapHash = hashImage(image);
   environment.image = std::make_shared<const ImageRGB>(std::move(image));
   return environment;

@@ -1,0 +1,25 @@
+// What a light of the description emits, in the float arithmetic the kernel's arrays hold it in:
+// its power, and for a sphere light the radiance of its surface (the power spread over the
+// sphere's area 4 pi r^2 and the pi of a Lambertian emitter's cosine).
+#pragma once
+
+#include <string>
+
+#include "core/constants.h"
+#include "scene/scene_desc.h"
+
+namespace candela {
+
+inline Vec3 lightPower(const LightDesc& d) { return d.color * d.intensity; }
+
+inline Vec3 sphereLightRadiance(const LightDesc& d) {
+  return lightPower(d) / (4.0f * kPi * kPi * d.radius * d.radius);
+}
+
+// Why a light's power or surface radiance is beyond single precision, as "its power, ... ,
+// is ...", or "" when both are finite. Each factor is finite (the reader sees to that); their
+// product need not be, and a light of infinite radiance would light nothing (the renderer drops
+// samples that are not finite).
+std::string lightEmissionProblem(const LightDesc& d);
+
+}  // namespace candela
