@@ -321,7 +321,7 @@ TEST(Environment, AMapTooBrightForItsStrengthIsRefused) {
            [](uint32_t x, uint32_t y) { return Vec3(1, x == 1 && y == 1 ? 1e30f : 1.0f, 1); });
   EXPECT_EQ(loadError(R"({"map": "env_bright.pfm", "strength": 1e10})"),
             "s.json: environment: the map's texel (1, 1), [1, 1e+30, 1], times color [1, 1, 1] "
-            "and strength 1e+10 is beyond single precision; expected a smaller strength");
+            "and strength 1e+10 is beyond single precision; expected a smaller strength or color");
   EXPECT_EQ(loadError(R"({"map": "env_bright.pfm", "strength": 1e8})"), "no error");
 }
 

@@ -64,7 +64,7 @@ EnvironmentDesc readEnvironment(const JsonValue& value, const std::string& baseD
   if (!overflow.empty())
     value.fail("the map's " + overflow + ", times color " + formatVec3(environment.color) +
                " and strength " + formatNumber(environment.strength) +
-               " is beyond single precision; expected a smaller strength");
+               " is beyond single precision; expected a smaller strength or color");
   environment.mapHash = hashImage(image);
   environment.image = std::make_shared<const ImageRGB>(std::move(image));
   return environment;
