@@ -4,6 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
+#include <fstream>
+#include <string>
 #include <vector>
 
 #include "core/constants.h"
@@ -13,6 +16,7 @@
 #include "scene/flatten.h"
 #include "scene/read/obj_loader.h"
 #include "scene/read/scene_loader.h"
+#include "scene/read/texture_reader.h"
 #include "scene/scene_error.h"
 #include "texture_test_util.h"
 
@@ -34,6 +38,43 @@ namespace test {
 bool writeTestPng(const std::string& path, int width, int height, int channels,
                   const std::vector<uint8_t>& bytes) {
   return stbi_write_png(path.c_str(), width, height, channels, bytes.data(), width * channels) != 0;
+}
+
+// stb_image_write writes 8 bits a channel only; this writes the PNG by hand, with its deflate and
+// CRC: each row a filter byte 0 and big-endian samples.
+bool writeTestPng16(const std::string& path, int width, int height, int channels,
+                    const std::vector<uint16_t>& samples) {
+  std::vector<unsigned char> raw;
+  for (int y = 0; y < height; ++y) {
+    raw.push_back(0);
+    for (int i = 0; i < width * channels; ++i) {
+      const uint16_t v = samples[size_t(y) * width * channels + i];
+      raw.push_back(static_cast<unsigned char>(v >> 8));
+      raw.push_back(static_cast<unsigned char>(v & 0xff));
+    }
+  }
+  int zlen = 0;
+  unsigned char* z = stbi_zlib_compress(raw.data(), int(raw.size()), &zlen, 8);
+  if (!z) return false;
+  const std::string idat(reinterpret_cast<const char*>(z), size_t(zlen));
+  STBIW_FREE(z);
+  const auto be32 = [](uint32_t v) {
+    return std::string{char(v >> 24), char((v >> 16) & 0xff), char((v >> 8) & 0xff),
+                       char(v & 0xff)};
+  };
+  const auto chunk = [&](const std::string& type, const std::string& data) {
+    std::string typed = type + data;
+    const uint32_t crc =
+        stbiw__crc32(reinterpret_cast<unsigned char*>(typed.data()), int(typed.size()));
+    return be32(uint32_t(data.size())) + typed + be32(crc);
+  };
+  const char colourType[] = {0, 0, 4, 2, 6};  // by channel count: grey, grey + alpha, RGB, RGBA
+  const std::string header = be32(uint32_t(width)) + be32(uint32_t(height)) +
+                             std::string{16, colourType[channels], 0, 0, 0};
+  std::ofstream out(path, std::ios::binary);
+  out << std::string("\x89PNG\r\n\x1a\n", 8) << chunk("IHDR", header) << chunk("IDAT", idat)
+      << chunk("IEND", "");
+  return bool(out);
 }
 
 }  // namespace test
@@ -426,6 +467,41 @@ TEST(TextureLoading, EachFileOnceWithScaleFromMtl) {
   EXPECT_EQ(desc.textures[size_t(a.alpha.texture.index)]->format, TextureFormat::Linear8);
   EXPECT_EQ(b.alpha.channel, 0u);  // g.png has none: its grey is the mask
   EXPECT_FLOAT_EQ(b.alpha.constant, 0.75f);
+}
+
+TEST(TextureLoading, SixteenBitPngKeepsItsPrecision) {
+  test::TempDir dir;
+  // Two RGBA texels; 0x8000 is 0.500008 where an 8-bit file can say 0.498 or 0.502.
+  ASSERT_TRUE(test::writeTestPng16(dir.file("t16.png"), 2, 1, 4,
+                                   {0x8000, 0x0101, 0xffff, 0x4000, 0, 0x1234, 0xfedc, 0xffff}));
+  ASSERT_TRUE(test::writeTestPng16(dir.file("g16.png"), 1, 1, 1, {0x8000}));
+  SceneDesc desc;
+  TextureLoader loader(desc.textures, dir.path());
+  const LoadedTexture colour = loader.load(dir.file("t16.png"), TextureUse::Color);
+  const LoadedTexture mask = loader.load(dir.file("t16.png"), TextureUse::Mask);
+  const LoadedTexture grey = loader.load(dir.file("g16.png"), TextureUse::Mask);
+  EXPECT_TRUE(colour.hasAlpha);
+  EXPECT_FALSE(grey.hasAlpha);
+  const TextureDesc& c = *desc.textures[size_t(colour.index)];
+  const TextureDesc& m = *desc.textures[size_t(mask.index)];
+  const TextureDesc& g = *desc.textures[size_t(grey.index)];
+  for (const TextureDesc* t : {&c, &m, &g}) EXPECT_EQ(t->format, TextureFormat::Float);
+  ASSERT_EQ(c.texelsF.size(), 8u);
+  const auto unit = [](uint16_t v) { return float(v) / 65535.0f; };
+  // Colour channels from sRGB, alpha linear.
+  EXPECT_NEAR(c.texelsF[0], srgbToLinearValue(unit(0x8000)), 1e-7f);
+  EXPECT_NEAR(c.texelsF[0], 0.214048f, 2e-6f);  // sRGB 0.500008 (8-bit 128 gives 0.215861)
+  EXPECT_NEAR(c.texelsF[1], unit(0x0101) / 12.92f, 1e-9f);
+  EXPECT_FLOAT_EQ(c.texelsF[2], 1.0f);
+  EXPECT_NEAR(c.texelsF[3], unit(0x4000), 1e-7f);
+  EXPECT_NEAR(c.texelsF[5], srgbToLinearValue(unit(0x1234)), 1e-7f);
+  EXPECT_FLOAT_EQ(c.texelsF[7], 1.0f);
+  // A mask reads every channel linearly; a grey file fills R, G and B, alpha 1.
+  EXPECT_NEAR(m.texelsF[0], unit(0x8000), 1e-7f);
+  EXPECT_NEAR(m.texelsF[6], unit(0xfedc), 1e-7f);
+  ASSERT_EQ(g.texelsF.size(), 4u);
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(g.texelsF[size_t(i)], unit(0x8000), 1e-7f);
+  EXPECT_FLOAT_EQ(g.texelsF[3], 1.0f);
 }
 
 // The command line: a bad texture exits 2 with one line and writes nothing.

@@ -16,4 +16,8 @@ namespace candela::test {
 bool writeTestPng(const std::string& path, int width, int height, int channels,
                   const std::vector<uint8_t>& bytes);
 
+// The same with 16 bits a channel (`samples` as the values, rows from the top).
+bool writeTestPng16(const std::string& path, int width, int height, int channels,
+                    const std::vector<uint16_t>& samples);
+
 }  // namespace candela::test

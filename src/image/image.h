@@ -27,12 +27,14 @@ struct ImageRGB {
   }
 };
 
-// Image8: an 8-bit image as decoded from PNG or JPEG, expanded to RGBA (alpha 255 where the file
-// has none), row-major from the top-left pixel.
-struct Image8 {
+// ImageRgba: an 8- or 16-bit image as decoded from PNG or JPEG (16 bits from PNG only), expanded
+// to RGBA (alpha at its largest value where the file has none), row-major from the top-left pixel.
+struct ImageRgba {
   uint32_t width = 0, height = 0;
-  uint32_t channels = 0;        // in the file: 1 grey, 2 grey + alpha, 3 RGB, 4 RGBA
-  std::vector<uint8_t> pixels;  // 4 * width * height
+  uint32_t channels = 0;           // in the file: 1 grey, 2 grey + alpha, 3 RGB, 4 RGBA
+  uint32_t bits = 8;               // per channel: 8 or 16
+  std::vector<uint8_t> pixels8;    // 4 * width * height for 8 bits, else empty
+  std::vector<uint16_t> pixels16;  // 4 * width * height for 16 bits, else empty
 };
 
 }  // namespace candela

@@ -37,7 +37,7 @@ ImageRGB decodePfm(const std::string& bytes);
 // Radiance RGBE (.hdr), read only.
 ImageRGB decodeHdr(const std::string& bytes);
 
-// 8-bit PNG or JPEG, read only, as RGBA; 16-bit PNGs are refused.
-Image8 decodeImage8(const std::string& bytes);
+// PNG (8- or 16-bit) or JPEG, read only, as RGBA.
+ImageRgba decodeImageRgba(const std::string& bytes);
 
 }  // namespace candela

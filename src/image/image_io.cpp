@@ -170,12 +170,12 @@ ImageRGB readImage(const std::string& path) {
   }
 }
 
-Image8 readImage8(const std::string& path) {
+ImageRgba readImageRgba(const std::string& path) {
   const std::string ext = lowercaseExtension(path);
   if (ext != ".png" && ext != ".jpg" && ext != ".jpeg") unsupported(path, ".png, .jpg or .jpeg");
   const std::string bytes = readFileBytes(path);
   try {
-    return decodeImage8(bytes);
+    return decodeImageRgba(bytes);
   } catch (const ImageWriteError& e) {
     throw ImageWriteError(path + ": " + e.what());
   }

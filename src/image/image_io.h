@@ -49,9 +49,9 @@ ExrChannels readExrChannels(const std::string& path);
 // tools); throws ImageWriteError (the image module's one error type, naming the path) on failure.
 ImageRGB readImage(const std::string& path);
 
-// Reads 8-bit .png, .jpg and .jpeg files (textures) as RGBA; throws ImageWriteError naming the
-// path on failure.
-Image8 readImage8(const std::string& path);
+// Reads .png (8- or 16-bit), .jpg and .jpeg files (textures) as RGBA; throws ImageWriteError
+// naming the path on failure.
+ImageRgba readImageRgba(const std::string& path);
 
 // Whether `path` is a regular file that holds a whole image of its extension's format, by a
 // cheap look at its ends: PNG's signature and final IEND chunk, a PFM's header and the size it

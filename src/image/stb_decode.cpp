@@ -1,5 +1,6 @@
-// Decoding through stb_image, in memory: Radiance .hdr (RGBE) and 8-bit PNG and JPEG.
+// Decoding through stb_image, in memory: Radiance .hdr (RGBE), PNG (8- and 16-bit) and JPEG.
 #include <algorithm>
+#include <cstdint>
 #include <cstdlib>
 #include <memory>
 #include <string>
@@ -40,22 +41,32 @@ ImageRGB decodeHdr(const std::string& bytes) {
   return image;
 }
 
-Image8 decodeImage8(const std::string& bytes) {
+ImageRgba decodeImageRgba(const std::string& bytes) {
   int width = 0, height = 0, channels = 0;
   const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
-  if (stbi_is_16_bit_from_memory(data, int(bytes.size())))
-    throw ImageWriteError("a 16-bit image; expected 8 bits per channel");
-  std::unique_ptr<stbi_uc, void (*)(void*)> pixels(
-      stbi_load_from_memory(data, int(bytes.size()), &width, &height, &channels, 4),
+  const int size = int(bytes.size());
+  ImageRgba image;
+  image.bits = stbi_is_16_bit_from_memory(data, size) ? 16 : 8;
+  // stb returns 8-bit samples as stbi_uc and 16-bit ones as stbi_us, both freed alike.
+  std::unique_ptr<void, void (*)(void*)> pixels(
+      image.bits == 16
+          ? static_cast<void*>(stbi_load_16_from_memory(data, size, &width, &height, &channels, 4))
+          : static_cast<void*>(stbi_load_from_memory(data, size, &width, &height, &channels, 4)),
       stbi_image_free);
   if (!pixels)
     throw ImageWriteError(std::string("not a readable PNG or JPEG image (") +
                           stbi_failure_reason() + ")");
-  Image8 image;
   image.width = uint32_t(width);
   image.height = uint32_t(height);
   image.channels = uint32_t(channels);
-  image.pixels.assign(pixels.get(), pixels.get() + size_t(4) * image.width * image.height);
+  const size_t count = size_t(4) * image.width * image.height;
+  if (image.bits == 16) {
+    const auto* p = static_cast<const uint16_t*>(pixels.get());
+    image.pixels16.assign(p, p + count);
+  } else {
+    const auto* p = static_cast<const uint8_t*>(pixels.get());
+    image.pixels8.assign(p, p + count);
+  }
   return image;
 }
 

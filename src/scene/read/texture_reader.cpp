@@ -5,6 +5,7 @@
 #include <exception>
 #include <filesystem>
 
+#include "core/texture.h"
 #include "image/image_io.h"
 #include "scene/content_hash.h"
 #include "scene/read/texel_check.h"
@@ -33,12 +34,24 @@ TextureDesc decode(const std::string& path, TextureUse use, bool* hasAlpha) {
                        {image.pixels[i], image.pixels[i + 1], image.pixels[i + 2], 1.0f});
     *hasAlpha = false;
   } else {
-    Image8 image = readImage8(path);
-    t.format = use == TextureUse::Color ? TextureFormat::Srgb8 : TextureFormat::Linear8;
+    ImageRgba image = readImageRgba(path);
     t.width = image.width;
     t.height = image.height;
-    t.texels8 = std::move(image.pixels);
     *hasAlpha = image.channels == 2 || image.channels == 4;
+    if (image.bits == 8) {
+      t.format = use == TextureUse::Color ? TextureFormat::Srgb8 : TextureFormat::Linear8;
+      t.texels8 = std::move(image.pixels8);
+    } else {
+      // A 16-bit PNG keeps its precision as floats, decoded as an 8-bit file would be: colour
+      // from sRGB, masks and alpha linear.
+      t.format = TextureFormat::Float;
+      t.texelsF.resize(image.pixels16.size());
+      for (size_t i = 0; i < image.pixels16.size(); ++i) {
+        const float v = float(image.pixels16[i]) * (1.0f / 65535.0f);
+        const bool colour = use == TextureUse::Color && i % 4 != 3;
+        t.texelsF[i] = colour ? srgbToLinearValue(v) : v;
+      }
+    }
   }
   t.contentHash = hashTexture(t);
   return t;

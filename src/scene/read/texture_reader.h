@@ -23,7 +23,7 @@ enum class TextureUse { Color, Mask };
 
 struct LoadedTexture {
   int32_t index = -1;     // into the scene's textures
-  bool hasAlpha = false;  // the file has an alpha channel (8-bit files with 2 or 4 channels)
+  bool hasAlpha = false;  // the file has an alpha channel (PNG or JPEG files of 2 or 4 channels)
 };
 
 // Reads textures into a scene's list, each (file, use) once, by canonical path.
