@@ -197,6 +197,13 @@ TEST(AnimationErrors, SphereLightBeyondSinglePrecisionAtSomeFrame) {
             1u);
 }
 
+TEST(AnimationErrors, SphereBeyondSinglePrecisionsReachAtSomeFrame) {
+  EXPECT_EQ(error(R"({"frames": 12, "tracks": [{"target": "ball", "property": "position",
+                      "keys": [[0, [0, 0, 0]], [10, [0, 4e18, 0]]]}]})"),
+            "s.json: spheres[0]: at frame 3, the sphere reaches 1.2e+18 from the origin; expected "
+            "geometry within 1e+18 (single precision cannot intersect it further out)");
+}
+
 TEST(AnimationErrors, ScaleMayNotChangeSign) {
   // Objects need an OBJ file; the check is on the keys, so an object scene is built here.
   try {

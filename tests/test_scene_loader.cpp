@@ -324,6 +324,27 @@ TEST_F(SceneLoader, LightsBeyondSinglePrecision) {
             1u);
 }
 
+TEST_F(SceneLoader, GeometryBeyondSinglePrecisionsReach) {
+  EXPECT_EQ(errorWith(R"("spheres": [{"position": [2e18, 0, 0], "radius": 1}])"),
+            "s.json: spheres[0]: the sphere reaches 2e+18 from the origin; expected geometry "
+            "within 1e+18 (single precision cannot intersect it further out)");
+  EXPECT_EQ(errorWith(R"("spheres": [{"position": [0, 0, 0], "radius": 1e20}])"),
+            "s.json: spheres[0]: the sphere reaches 1e+20 from the origin; expected geometry "
+            "within 1e+18 (single precision cannot intersect it further out)");
+  dir.write("tri.obj", kTriangleObj);  // its farthest vertex 1 from the mesh's origin
+  EXPECT_EQ(errorWith(R"("objects": [{"file": "tri.obj", "scale": [1, 3e18, 1]}])"),
+            "s.json: objects[0]: its mesh, scaled and placed, reaches 3e+18 from the origin; "
+            "expected geometry within 1e+18 (single precision cannot intersect it further out)");
+  EXPECT_EQ(errorWith(R"("objects": [{"file": "tri.obj", "position": [0, 0, -2e18]}])"),
+            "s.json: objects[0]: its mesh, scaled and placed, reaches 2e+18 from the origin; "
+            "expected geometry within 1e+18 (single precision cannot intersect it further out)");
+  EXPECT_EQ(parse(R"({"camera": {}, "objects": [{"file": "tri.obj", "scale": 1e17,
+                      "position": [5e17, 0, 0]}], "spheres": [{"position": [0, -1e17, 0],
+                      "radius": 8e17}]})")
+                .objects.size(),
+            1u);
+}
+
 TEST_F(SceneLoader, MissingObjFile) {
   EXPECT_EQ(errorWith(R"("objects": [{"file": "meshes/x.obj"}])"),
             "s.json: objects[0].file: cannot open \"meshes/x.obj\" (No such file or directory)");

@@ -7,9 +7,7 @@
 #include <set>
 #include <vector>
 
-#include "scene/animation.h"
 #include "scene/camera_resolve.h"
-#include "scene/light_emission_desc.h"
 #include "scene/mesh_order.h"
 #include "scene/read/animation_reader.h"
 #include "scene/read/camera_reader.h"
@@ -19,6 +17,7 @@
 #include "scene/read/material_reader.h"
 #include "scene/read/obj_loader.h"
 #include "scene/read/render_reader.h"
+#include "scene/read/scene_limits.h"
 #include "scene/read/text_file.h"
 #include "scene/scene_error.h"
 
@@ -80,29 +79,6 @@ void loadMeshes(SceneDesc& scene, const std::vector<std::string>& writtenNames,
   }
 }
 
-// Every light's power and surface radiance must be finite in single precision: a still light's
-// once, an animated one's at every frame, so that no frame of a sequence is written before a bad
-// one is found.
-void checkLightEmission(const SceneDesc& scene) {
-  for (uint32_t i = 0; i < scene.lights.size(); ++i) {
-    const LightDesc& light = scene.lights[i];
-    AnimationDesc tracks;
-    if (scene.animation)
-      for (const AnimTrack& t : scene.animation->tracks)
-        if (t.target == AnimTarget::Light && t.index == i) tracks.tracks.push_back(t);
-    if (tracks.tracks.empty()) {
-      const std::string problem = lightEmissionProblem(light);
-      if (!problem.empty()) failAt(scene.file, light.where, problem);
-      continue;
-    }
-    for (uint32_t frame = 0; frame < scene.animation->frames; ++frame) {
-      const std::string problem = lightEmissionProblem(lightAtFrame(light, i, tracks, frame));
-      if (!problem.empty())
-        failAt(scene.file, light.where, "at frame " + std::to_string(frame) + ", " + problem);
-    }
-  }
-}
-
 }  // namespace
 
 SceneDesc parseSceneText(const std::string& text, const std::string& fileLabel,
@@ -156,6 +132,7 @@ SceneDesc parseSceneText(const std::string& text, const std::string& fileLabel,
   top.finish();
 
   loadMeshes(scene, writtenNames, textures);
+  checkWorldExtent(scene);
   return scene;
 }
 
