@@ -24,16 +24,17 @@ AnimationDesc tracksOf(const SceneDesc& scene, AnimTarget target, uint32_t index
   return tracks;
 }
 
-// Calls check(frame, "at frame N, ") for every frame where `tracks` animate the entity, or once
-// with (0, "") where nothing does.
+// Calls check(frame) for every frame where `tracks` animate the entity, or once (frame 0) where
+// nothing does.
 template <typename Check>
 void atEveryFrame(const SceneDesc& scene, const AnimationDesc& tracks, const Check& check) {
-  if (tracks.tracks.empty()) {
-    check(0u, std::string());
-    return;
-  }
-  for (uint32_t frame = 0; frame < scene.animation->frames; ++frame)
-    check(frame, "at frame " + std::to_string(frame) + ", ");
+  const uint32_t frames = tracks.tracks.empty() ? 1 : scene.animation->frames;
+  for (uint32_t frame = 0; frame < frames; ++frame) check(frame);
+}
+
+// How a message names the frame: "at frame N, " for an animated entity, else nothing.
+std::string atFrame(const AnimationDesc& tracks, uint32_t frame) {
+  return tracks.tracks.empty() ? std::string() : "at frame " + std::to_string(frame) + ", ";
 }
 
 // Value `property` of the entity at `frame`: its track's, else `still`.
@@ -64,9 +65,9 @@ void checkLightEmission(const SceneDesc& scene) {
   for (uint32_t i = 0; i < scene.lights.size(); ++i) {
     const LightDesc& light = scene.lights[i];
     const AnimationDesc tracks = tracksOf(scene, AnimTarget::Light, i);
-    atEveryFrame(scene, tracks, [&](uint32_t frame, const std::string& at) {
+    atEveryFrame(scene, tracks, [&](uint32_t frame) {
       const std::string problem = lightEmissionProblem(lightAtFrame(light, i, tracks, frame));
-      if (!problem.empty()) failAt(scene.file, light.where, at + problem);
+      if (!problem.empty()) failAt(scene.file, light.where, atFrame(tracks, frame) + problem);
     });
   }
 }
@@ -75,11 +76,12 @@ void checkWorldExtent(const SceneDesc& scene) {
   for (uint32_t i = 0; i < scene.spheres.size(); ++i) {
     const SphereDesc& sphere = scene.spheres[i];
     const AnimationDesc tracks = tracksOf(scene, AnimTarget::Sphere, i);
-    atEveryFrame(scene, tracks, [&](uint32_t frame, const std::string& at) {
+    atEveryFrame(scene, tracks, [&](uint32_t frame) {
       const Vec3 position = propertyAt(tracks, AnimProperty::Position, frame, sphere.position);
       const double radius = propertyAt(tracks, AnimProperty::Radius, frame, Vec3(sphere.radius)).x;
       const double reach = maxAbs(position) + radius;
-      if (!(reach <= kMaxWorldCoordinate)) failBeyond(scene, sphere.where, at, "the sphere", reach);
+      if (!(reach <= kMaxWorldCoordinate))
+        failBeyond(scene, sphere.where, atFrame(tracks, frame), "the sphere", reach);
     });
   }
   // Rotation keeps lengths: a mesh's farthest vertex from its origin bounds every turn. Objects
@@ -95,12 +97,13 @@ void checkWorldExtent(const SceneDesc& scene) {
       }
     const double meshRadius = found->second;
     const AnimationDesc tracks = tracksOf(scene, AnimTarget::Object, i);
-    atEveryFrame(scene, tracks, [&](uint32_t frame, const std::string& at) {
+    atEveryFrame(scene, tracks, [&](uint32_t frame) {
       const Vec3 position = propertyAt(tracks, AnimProperty::Position, frame, object.position);
       const Vec3 scale = propertyAt(tracks, AnimProperty::Scale, frame, object.scale);
       const double reach = maxAbs(position) + maxAbs(scale) * meshRadius;
       if (!(reach <= kMaxWorldCoordinate))
-        failBeyond(scene, object.where, at, "its mesh, scaled and placed,", reach);
+        failBeyond(scene, object.where, atFrame(tracks, frame), "its mesh, scaled and placed,",
+                   reach);
     });
   }
 }
