@@ -76,15 +76,6 @@ CameraDesc cameraAtFrame(const CameraDesc& camera, const AnimationDesc& animatio
   return result;
 }
 
-LightDesc lightAtFrame(const LightDesc& light, uint32_t index, const AnimationDesc& animation,
-                       uint32_t frame) {
-  LightDesc result = light;
-  for (const AnimTrack& track : animation.tracks)
-    if (track.target == AnimTarget::Light && track.index == index)
-      applyToLight(result, track.property, evaluateTrack(track, frame));
-  return result;
-}
-
 SceneDesc sceneAtFrame(const SceneDesc& scene, uint32_t frame) {
   SceneDesc result = scene;
   result.animation.reset();

@@ -65,8 +65,12 @@ void checkLightEmission(const SceneDesc& scene) {
   for (uint32_t i = 0; i < scene.lights.size(); ++i) {
     const LightDesc& light = scene.lights[i];
     const AnimationDesc tracks = tracksOf(scene, AnimTarget::Light, i);
+    LightDesc at = light;  // what it emits at the frame
     atEveryFrame(scene, tracks, [&](uint32_t frame) {
-      const std::string problem = lightEmissionProblem(lightAtFrame(light, i, tracks, frame));
+      at.intensity = propertyAt(tracks, AnimProperty::Intensity, frame, Vec3(light.intensity)).x;
+      at.color = propertyAt(tracks, AnimProperty::Color, frame, light.color);
+      at.radius = propertyAt(tracks, AnimProperty::Radius, frame, Vec3(light.radius)).x;
+      const std::string problem = lightEmissionProblem(at);
       if (!problem.empty()) failAt(scene.file, light.where, atFrame(tracks, frame) + problem);
     });
   }
