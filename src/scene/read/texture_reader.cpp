@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <exception>
 #include <filesystem>
+#include <vector>
 
 #include "core/texture.h"
 #include "image/image_io.h"
@@ -45,12 +46,15 @@ TextureDesc decode(const std::string& path, TextureUse use, bool* hasAlpha) {
       // A 16-bit PNG keeps its precision as floats, decoded as an 8-bit file would be: colour
       // from sRGB, masks and alpha linear.
       t.format = TextureFormat::Float;
-      t.texelsF.resize(image.pixels16.size());
-      for (size_t i = 0; i < image.pixels16.size(); ++i) {
-        const float v = float(image.pixels16[i]) * (1.0f / 65535.0f);
-        const bool colour = use == TextureUse::Color && i % 4 != 3;
-        t.texelsF[i] = colour ? srgbToLinearValue(v) : v;
+      std::vector<float> linear(65536), decoded(65536);  // by 16-bit value, as the 8-bit table
+      for (uint32_t v = 0; v < 65536; ++v) {
+        linear[v] = float(v) * (1.0f / 65535.0f);
+        decoded[v] = srgbToLinearValue(linear[v]);
       }
+      const std::vector<float>& colour = use == TextureUse::Color ? decoded : linear;
+      t.texelsF.resize(image.pixels16.size());
+      for (size_t i = 0; i < image.pixels16.size(); ++i)
+        t.texelsF[i] = (i % 4 == 3 ? linear : colour)[image.pixels16[i]];
     }
   }
   t.contentHash = hashTexture(t);
