@@ -11,9 +11,10 @@ candela.distributed.
 from __future__ import annotations
 
 import json
+import math
 import os
 import warnings
-from typing import Any, Dict, List, Optional, Sequence, Tuple
+from typing import Any, Dict, List, Mapping, Optional, Sequence, Tuple
 
 import numpy as np
 
@@ -44,8 +45,10 @@ class Scene:
 
     @classmethod
     def from_dict(cls, scene: dict, base_dir: str | os.PathLike = ".") -> "Scene":
-        """A scene from a dict in the JSON scene format; OBJ paths resolve against base_dir."""
-        text = json.dumps(scene)
+        """A scene from a dict in the JSON scene format; OBJ paths resolve against base_dir.
+        Values may be numpy arrays and scalars (a camera's K and [R|t], say) and paths
+        (os.PathLike); a value JSON cannot hold (NaN, a set) raises SceneError naming its place."""
+        text = json.dumps(_plain_json(scene, ""))
         base_dir = os.path.abspath(os.fspath(base_dir))
         return cls(_candela._Scene.from_text(text, "<dict>", base_dir),
                    {"text": text, "base_dir": base_dir, "label": "<dict>"})._warned()
@@ -90,8 +93,12 @@ class Scene:
         return self._core.frame_index
 
     def frame(self, index: int) -> "Scene":
-        """The still scene at animation frame `index` (its seed is render.seed + index)."""
-        return Scene(self._core.frame(index), self._source)
+        """The still scene at animation frame `index` (its seed is render.seed + index); a
+        negative index counts from the end, as a list's does (-1: the last frame)."""
+        index = _whole(index, "frame index", None, None)
+        if not -self.frames <= index < self.frames:
+            raise IndexError(f"frame {index} out of range ({self.frames} frames)")
+        return Scene(self._core.frame(index % self.frames), self._source)
 
     @property
     def width(self) -> int:
@@ -131,7 +138,8 @@ class Scene:
         "aperture_radius" and "focus_distance" for a thin lens. K puts pixel centres at +0.5
         (OpenCV's cx and cy are 0.5 less); a world point p is at R p + t in OpenCV's camera axes
         (+x right, +y down, +z forward). The matrices are float64 arrays holding the float32
-        values the renderer uses; as the scene's "camera" (lists) they render the same image."""
+        values the renderer uses; given back as a scene's "camera" (the arrays as they are, or
+        lists) they render the same image."""
         camera = dict(self._core._camera)
         for key in ("intrinsics", "extrinsics"):
             camera[key] = np.array(camera[key], dtype=np.float64)
@@ -152,8 +160,8 @@ class Scene:
 
     def render(self, spp: Optional[int] = None, seed: Optional[int] = None,
                backend: str = "auto", sample_range: Optional[Tuple[int, int]] = None,
-               threads: int = 0, aovs: Optional[Sequence[str]] = None, denoise: bool = False
-               ) -> np.ndarray | Dict[str, np.ndarray]:
+               threads: int = 0, aovs: Optional[Sequence[str]] = None, denoise: bool = False,
+               max_depth: Optional[int] = None) -> np.ndarray | Dict[str, np.ndarray]:
         """Renders to a float32 array (height, width, 3) of linear radiance.
 
         denoise: run Intel Open Image Denoise (PyPI `pyoidn`) on the result's direct and
@@ -168,8 +176,10 @@ class Scene:
         (height, width, 3) float32 for the others, (height, width) uint32 for the ids. An unknown
         pass name raises ValueError.
 
-        spp and seed override the scene's. backend: "auto" (the CPU for now), "cpu" or "cuda"
-        (an NVIDIA GPU, not yet the default; RuntimeError where it cannot run).
+        spp, seed and max_depth (the most surface interactions along a path) override the
+        scene's, as the CLI's --spp, --seed and --max-depth do. backend: "auto" (the CPU for
+        now), "cpu" or "cuda" (an NVIDIA GPU, not yet the default; RuntimeError where it cannot
+        run).
         sample_range=(first, count) renders only samples [first, first + count) of the spp and
         returns their mean; the count-weighted mean of disjoint slices equals the full render to
         rounding. threads: CPU threads, 0 for all cores; it holds all of the call's work, the BVH
@@ -180,11 +190,14 @@ class Scene:
         where only the camera, lights or materials moved) reuses them, and one where objects
         only moved refits the BVH.
         """
+        spp, seed, max_depth = _render_counts(spp, seed, max_depth)
         if sample_range is not None:
-            sample_range = (int(sample_range[0]), int(sample_range[1]))
+            sample_range = (_whole(sample_range[0], "sample_range's first", 0, _U32),
+                            _whole(sample_range[1], "sample_range's count", 0, _U32))
+        threads = _whole(threads, "threads", 0, 2**31 - 1)
         aovs = _pass_names(aovs)
         result = self._core.render(spp, seed, backend, sample_range, threads,
-                                   _passes_to_render(aovs, denoise))
+                                   _passes_to_render(aovs, denoise), max_depth=max_depth)
         if not denoise:
             return result
         return _denoised(result, aovs, threads,
@@ -194,6 +207,59 @@ class Scene:
         frame = "" if self.frame_index is None else f", frame {self.frame_index}"
         return (f"<candela.Scene {self._source.get('label')} {self.width}x{self.height}, "
                 f"{self.frames} frame(s){frame}>")
+
+
+_U32 = 2**32 - 1
+
+
+def _whole(value: Any, name: str, low: Optional[int], high: Optional[int]) -> int:
+    """`value` as an int in [low, high] (None: unbounded there): TypeError where it is no whole
+    number (a float, a bool), ValueError where it is out of range."""
+    if isinstance(value, bool) or not isinstance(value, (int, np.integer)):
+        raise TypeError(f"{name} must be an integer, got {type(value).__name__} {value!r}")
+    value = int(value)
+    if (low is not None and value < low) or (high is not None and value > high):
+        bound = f"at least {low}" if high is None else f"in [{low}, {high}]"
+        raise ValueError(f"{name} must be {bound}, got {value}")
+    return value
+
+
+def _render_counts(spp, seed, max_depth) -> tuple:
+    """render()'s spp, seed and max_depth checked (None keeps the scene's)."""
+    return (None if spp is None else _whole(spp, "spp", 1, _U32),
+            None if seed is None else _whole(seed, "seed", 0, 2**64 - 1),
+            None if max_depth is None else _whole(max_depth, "max_depth", 1, _U32))
+
+
+def _plain_json(value: Any, path: str) -> Any:
+    """A scene given as Python values, as plain JSON values: numpy arrays and scalars become
+    lists and numbers, paths strings. A value JSON cannot hold raises SceneError naming its
+    place as the loader's messages do (`camera.position[2]`)."""
+    if isinstance(value, np.ndarray):
+        value = value.tolist()
+    elif isinstance(value, np.generic):
+        value = value.item()
+    elif isinstance(value, os.PathLike):
+        value = os.fspath(value)
+    place = f"<dict>: {path}: " if path else "<dict>: at the top level: "
+    if value is None or isinstance(value, (str, bool, int)):
+        return value
+    if isinstance(value, float):
+        if not math.isfinite(value):
+            raise SceneError(f"{place}expected a finite number, got {value}")
+        return value
+    if isinstance(value, Mapping):
+        plain = {}
+        for key, item in value.items():
+            if not isinstance(key, str):
+                raise SceneError(f"{place}expected an object whose keys are strings, got the key "
+                                 f"{key!r}")
+            plain[key] = _plain_json(item, f"{path}.{key}" if path else key)
+        return plain
+    if isinstance(value, (list, tuple)):
+        return [_plain_json(item, f"{path}[{i}]") for i, item in enumerate(value)]
+    raise SceneError(f"{place}expected a JSON value (an object, array, string, number, boolean "
+                     f"or null), got a value of type {type(value).__name__}")
 
 
 def _pass_names(aovs: Optional[Sequence[str]]) -> Optional[list]:

@@ -16,7 +16,7 @@ from typing import Dict, Iterable, List, Optional, Sequence, Union
 
 import numpy as np
 
-from . import Scene, _candela, _denoised, _pass_names, _passes_to_render
+from . import Scene, _candela, _denoised, _pass_names, _passes_to_render, _render_counts
 
 
 def _ray():
@@ -51,7 +51,8 @@ def _frame_path(out_dir: str, frame: int, count: int, fmt: str) -> str:
     return os.path.join(out_dir, f"frame_{frame:0{digits}d}.{fmt}")
 
 
-def _render_frame(spec: dict, path: str, spp, backend: str, threads: int) -> dict:
+def _render_frame(spec: dict, path: str, spp, backend: str, threads: int,
+                  max_depth: Optional[int] = None) -> dict:
     """Task body: rebuild the scene, render, write atomically; says where it ran."""
     import ray
 
@@ -59,21 +60,22 @@ def _render_frame(spec: dict, path: str, spp, backend: str, threads: int) -> dic
 
     start = time.time()
     scene = Scene.from_spec(spec)
-    img = scene.render(spp=spp, backend=backend, threads=threads)
+    img = scene.render(spp=spp, backend=backend, threads=threads, max_depth=max_depth)
     write_image(path, img, **scene.output)
     return {"path": path, "node": ray.get_runtime_context().get_node_id(),
             "seconds": time.time() - start}
 
 
 def _render_slice(spec: dict, spp: int, seed, first: int, count: int, backend: str,
-                  threads: int, passes: Optional[list] = None):
+                  threads: int, passes: Optional[list] = None, max_depth: Optional[int] = None):
     """Task body: samples [first, first + count) of the image; with passes, {"image", "sums"}:
     the mean image and the passes' per-pixel sums, which merge_pass_sums adds."""
     scene = Scene.from_spec(spec)
     if passes is None:
         return scene.render(spp=spp, seed=seed, backend=backend, sample_range=(first, count),
-                            threads=threads)
-    return scene._core.render(spp, seed, backend, (first, count), threads, passes, True)
+                            threads=threads, max_depth=max_depth)
+    return scene._core.render(spp, seed, backend, (first, count), threads, passes, True,
+                              max_depth=max_depth)
 
 
 # How each per-pixel sum merges over sample ranges (render/aov.h's CANDELA_AOV_PIXEL_FIELDS):
@@ -122,17 +124,19 @@ def render_frames(scenes_or_animation: Union[Scene, str, Sequence[Union[Scene, s
                   out_dir: Union[str, os.PathLike], address: Optional[str] = None, *,
                   spp: Optional[int] = None, fmt: str = "png", backend: str = "auto",
                   overwrite: bool = False, max_retries: int = 3,
-                  cpus_per_task: int = 1) -> List[dict]:
+                  cpus_per_task: int = 1, max_depth: Optional[int] = None) -> List[dict]:
     """Renders an animation (one Scene or scene file with an animation block: one frame each) or
     a sequence of scenes (one frame per scene) to out_dir/frame_NNNN.<fmt>, one Ray task per
     frame. address: a Ray cluster ("HOST:PORT" or "auto"); None starts or joins a local runtime
-    when none is connected. Existing frames are skipped unless overwrite.
+    when none is connected. Existing frames are skipped unless overwrite. spp and max_depth
+    override each frame's, as in Scene.render.
 
     Returns one dict per frame: frame, path, node (the Ray node id that rendered it, None when
     skipped), seconds.
     """
     if fmt not in ("png", "exr", "pfm"):
         raise ValueError(f"fmt must be png, exr or pfm, got {fmt!r}")
+    spp, _, max_depth = _render_counts(spp, None, max_depth)
     scenes = _as_scenes(scenes_or_animation)
     out_dir = os.fspath(out_dir)
     os.makedirs(out_dir, exist_ok=True)
@@ -146,7 +150,8 @@ def render_frames(scenes_or_animation: Union[Scene, str, Sequence[Union[Scene, s
     options = _task_options(ray, cpus_per_task, max_retries, backend)
     threads = 0 if "num_gpus" in options else cpus_per_task
     task = ray.remote(_render_frame).options(**options)
-    refs = {i: task.remote(scenes[i].spec, paths[i], spp, backend, threads) for i in todo}
+    refs = {i: task.remote(scenes[i].spec, paths[i], spp, backend, threads, max_depth)
+            for i in todo}
     for i, ref in refs.items():
         results[i].update(ray.get(ref), frame=i)
     return results
@@ -164,10 +169,11 @@ def split_samples(spp: int, chunks: int) -> List[tuple]:
 def render_image(scene: Union[Scene, str], spp: Optional[int] = None, chunks: int = 4,
                  address: Optional[str] = None, *, seed: Optional[int] = None,
                  backend: str = "auto", max_retries: int = 3, cpus_per_task: int = 1,
-                 aovs: Optional[Sequence[str]] = None, denoise: bool = False
-                 ) -> Union[np.ndarray, Dict[str, np.ndarray]]:
+                 aovs: Optional[Sequence[str]] = None, denoise: bool = False,
+                 max_depth: Optional[int] = None) -> Union[np.ndarray, Dict[str, np.ndarray]]:
     """Renders one image as `chunks` Ray tasks, each a slice of the sample indices, and merges
-    them weighted by sample count: equal to scene.render(spp, seed) to float rounding.
+    them weighted by sample count: equal to scene.render(spp, seed, max_depth=max_depth) to
+    float rounding.
 
     aovs and denoise as in Scene.render, with the same result: the tasks return their passes'
     per-pixel sums (merge_pass_sums), which merge as one render's would, so the filtered passes
@@ -178,13 +184,14 @@ def render_image(scene: Union[Scene, str], spp: Optional[int] = None, chunks: in
         scene = Scene.load(scene)
     names = _pass_names(aovs)
     passes = _passes_to_render(names, denoise)
+    spp, seed, max_depth = _render_counts(spp, seed, max_depth)
     spp = scene.spp if spp is None else spp
     ray = _connect(address)
     options = _task_options(ray, cpus_per_task, max_retries, backend)
     threads = 0 if "num_gpus" in options else cpus_per_task
     task = ray.remote(_render_slice).options(**options)
     slices = split_samples(spp, chunks)
-    refs = [task.remote(scene.spec, spp, seed, first, count, backend, threads, passes)
+    refs = [task.remote(scene.spec, spp, seed, first, count, backend, threads, passes, max_depth)
             for first, count in slices]
     total = np.zeros((scene.height, scene.width, 3), dtype=np.float64)
     sums = None

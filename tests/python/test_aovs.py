@@ -137,9 +137,7 @@ def test_camera_given_back_renders_the_same_image_and_follows_the_animation():
         still = tiny_scene(spp=2)
         still["spheres"][1]["position"] = [-1 + k, 0.5, 0]
         still["render"]["seed"] = frame.seed
-        still["camera"] = {key: (v.tolist() if isinstance(v, np.ndarray) else v)
-                           for key, v in camera.items()}
-        still["camera"]["spp"] = 2  # samples are the render's, not the camera's
+        still["camera"] = dict(camera, spp=2)  # its numpy matrices as they come
         again = candela.Scene.from_dict(still).render(backend="cpu")
         image = frame.render(backend="cpu")
         # Equal up to rounding: the camera's centre comes back as -R^T t.

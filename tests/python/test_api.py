@@ -51,6 +51,69 @@ def test_scene_error_carries_the_loader_message(scene_dict, tmp_path):
         candela.Scene.load(tmp_path / "missing.json")
 
 
+def test_from_dict_takes_numpy_values_and_paths(tmp_path, scene_dict):
+    (tmp_path / "tri.obj").write_text("v -1 0 -1\nv 1 0 -1\nv 0 1 -1\nf 1 2 3\n")
+    scene_dict["objects"] = [{"file": "tri.obj", "position": [0, 0.2, 0]}]
+    as_lists = candela.Scene.from_dict(scene_dict, base_dir=tmp_path).render(backend="cpu")
+    scene_dict["camera"]["position"] = np.array([0, 1.5, 6], dtype=np.float32)
+    scene_dict["camera"]["spp"] = np.int64(4)
+    scene_dict["spheres"][1]["radius"] = np.float64(0.5)
+    scene_dict["spheres"][1]["color"] = (np.float32(0.8), 0.3, 0.2)  # a tuple is an array
+    scene_dict["objects"][0]["file"] = tmp_path / "tri.obj"  # a pathlib.Path
+    scene_dict["objects"][0]["position"] = np.array([0.0, 0.2, 0.0])
+    as_numpy = candela.Scene.from_dict(scene_dict, base_dir=tmp_path).render(backend="cpu")
+    np.testing.assert_array_equal(as_numpy, as_lists)
+
+
+@pytest.mark.parametrize("place, value, message", [
+    (("camera", "position"), [0, 1.5, float("nan")],
+     "<dict>: camera.position[2]: expected a finite number, got nan"),
+    (("spheres", 1, "radius"), np.float32("inf"),
+     "<dict>: spheres[1].radius: expected a finite number, got inf"),
+    (("lights", 0, "color"), {1, 2, 3},
+     "<dict>: lights[0].color: expected a JSON value (an object, array, string, number, "
+     "boolean or null), got a value of type set"),
+    (("environment",), {1: [0, 0, 0]},
+     "<dict>: environment: expected an object whose keys are strings, got the key 1"),
+])
+def test_from_dict_names_a_value_json_cannot_hold(scene_dict, place, value, message):
+    parent = scene_dict
+    for key in place[:-1]:
+        parent = parent[key]
+    parent[place[-1]] = value
+    with pytest.raises(candela.SceneError) as err:
+        candela.Scene.from_dict(scene_dict)
+    assert str(err.value) == message
+
+
+def test_max_depth_overrides_the_scenes_as_the_cli_does(scene_dict):
+    scene_dict["render"]["light_paths"] = "off"  # so that depth 1 cuts the same paths short
+    scene = candela.Scene.from_dict(scene_dict)  # max_depth 4
+    direct_only = scene.render(max_depth=1, backend="cpu")
+    scene_dict["render"]["max_depth"] = 1
+    np.testing.assert_array_equal(direct_only,
+                                  candela.Scene.from_dict(scene_dict).render(backend="cpu"))
+    full = scene.render(backend="cpu")  # the override held for that render alone
+    # The same samples cut short: light bounced off the floor and the ball is lost, none gained.
+    assert (direct_only <= full + 1e-6).all() and direct_only.sum() < 0.999 * full.sum()
+    with pytest.raises(ValueError, match=r"max_depth must be in \[1, 4294967295\], got 0"):
+        scene.render(max_depth=0)
+
+
+def test_counts_out_of_range_or_not_whole_are_named(scene_dict):
+    scene = candela.Scene.from_dict(scene_dict)
+    with pytest.raises(ValueError, match=r"^spp must be in \[1, 4294967295\], got 1099511627776$"):
+        scene.render(spp=2**40)
+    with pytest.raises(ValueError, match=r"^seed must be in \[0, 18446744073709551615\], got -1$"):
+        scene.render(seed=-1)
+    with pytest.raises(TypeError, match=r"^spp must be an integer, got float 4\.5$"):
+        scene.render(spp=4.5)
+    with pytest.raises(TypeError, match="threads must be an integer"):
+        scene.render(threads="all")
+    np.testing.assert_array_equal(scene.render(spp=np.int32(4), seed=np.uint64(3)),
+                                  scene.render(spp=4, seed=3))
+
+
 def test_material_warnings_are_user_warnings_and_the_scene_renders(tmp_path, scene_dict):
     (tmp_path / "m.obj").write_text("mtllib gone.mtl\nv -1 -1 0\nv 1 -1 0\nv 0 1 0\nf 1 2 3\n")
     scene_dict["objects"] = [{"file": "m.obj"}]
@@ -112,6 +175,9 @@ def test_animation_frames():
     np.testing.assert_array_equal(scene.render(backend="cpu"), imgs[0])
     with pytest.raises(IndexError):
         scene.frame(4)
+    assert scene.frame(-1).frame_index == 3 and scene.frame(-4).frame_index == 0  # as a list's
+    with pytest.raises(IndexError, match=r"frame -5 out of range \(4 frames\)"):
+        scene.frame(-5)
     rebuilt = candela.Scene.from_spec(frames[2].spec)
     np.testing.assert_array_equal(rebuilt.render(backend="cpu"), imgs[2])
 

@@ -57,6 +57,9 @@ def test_render_image_in_chunks_equals_local_render(local_ray):
     merged = distributed.render_image(scene, spp=10, chunks=3)
     assert merged.dtype == np.float32 and merged.shape == local.shape
     np.testing.assert_allclose(merged, local, rtol=1e-5, atol=1e-6)
+    shallow = distributed.render_image(scene, spp=4, chunks=2, max_depth=1)
+    np.testing.assert_allclose(shallow, scene.render(spp=4, max_depth=1), rtol=1e-5, atol=1e-6)
+    assert shallow.sum() < 0.999 * scene.render(spp=4).sum()
 
 
 def test_render_image_merges_passes_as_one_render_holds_them(local_ray):

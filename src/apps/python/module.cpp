@@ -200,14 +200,19 @@ const SceneData& prepareRenderer(RenderCache& cache, SceneDesc& desc, Backend ch
   return data;
 }
 
-// The still of `scene`, with spp and seed overridden where given.
-SceneDesc stillWith(const Scene& scene, std::optional<uint32_t> spp, std::optional<uint64_t> seed) {
+// The still of `scene`, with spp, seed and max_depth overridden where given.
+SceneDesc stillWith(const Scene& scene, std::optional<uint32_t> spp, std::optional<uint64_t> seed,
+                    std::optional<uint32_t> maxDepth = std::nullopt) {
   SceneDesc desc = scene.still();
   if (spp) {
     if (*spp == 0) throw std::invalid_argument("spp must be positive");
     desc.render.spp = *spp;
   }
   if (seed) desc.render.seed = *seed;
+  if (maxDepth) {
+    if (*maxDepth == 0) throw std::invalid_argument("max_depth must be positive");
+    desc.render.maxDepth = *maxDepth;
+  }
   return desc;
 }
 
@@ -215,11 +220,12 @@ SceneDesc stillWith(const Scene& scene, std::optional<uint32_t> spp, std::option
 // of several sample ranges and then calls passesFromSums; else as layers.
 nb::object render(const Scene& scene, std::optional<uint32_t> spp, std::optional<uint64_t> seed,
                   const std::string& backend, std::optional<std::tuple<uint32_t, uint32_t>> range,
-                  int threads, std::optional<std::vector<std::string>> aovNames, bool passSums) {
+                  int threads, std::optional<std::vector<std::string>> aovNames, bool passSums,
+                  std::optional<uint32_t> maxDepth) {
   const ThreadLimit threadLimit(threads);  // the build and pilot too, not only the tiles
   if (passSums && !aovNames) aovNames.emplace();
   const std::vector<Aov> aovs = aovNames ? aovsFromNames(*aovNames) : std::vector<Aov>();
-  SceneDesc desc = stillWith(scene, spp, seed);
+  SceneDesc desc = stillWith(scene, spp, seed, maxDepth);
   SampleRange samples;
   if (range) {
     samples = {std::get<0>(*range), std::get<1>(*range)};
@@ -445,7 +451,7 @@ NB_MODULE(_candela, m) {
       }, "index"_a)
       .def("render", &render, "spp"_a = nb::none(), "seed"_a = nb::none(), "backend"_a = "auto",
            "sample_range"_a = nb::none(), "threads"_a = 0, "aovs"_a = nb::none(),
-           "pass_sums"_a = false)
+           "pass_sums"_a = false, "max_depth"_a = nb::none())
       .def("passes_from_sums", &passesFromSums, "sums"_a, "aovs"_a)
       .def("seen_emitters", &seenEmitters, "emission"_a, "spp"_a = nb::none(),
            "seed"_a = nb::none(), "backend"_a = "auto", "threads"_a = 0);
