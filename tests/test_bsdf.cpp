@@ -219,6 +219,24 @@ TEST(Bsdf, WhiteFurnaceNeverGainsEnergy) {
   }
 }
 
+// Rough glass of index 1 is prepared as smooth glass: its facets would bend nothing, and the
+// microfacet lobe has no half vector for the straight path. Any other index stays rough.
+TEST(Bsdf, RoughGlassOfIndexOneIsPreparedSmooth) {
+  Material clear = glass(0.5f, 1.0f);
+  prepareMaterial(&clear);
+  EXPECT_EQ(clear.roughness, 0.0f);
+  EXPECT_FALSE(hasSmoothLobe(clear));
+  const Vec3 wo = direction(0.6f, 0.7f);
+  BsdfSample s;
+  ASSERT_TRUE(sampleBsdf(makeBsdf(clear, clear.color, wo, kUp, kUp), 0.5f, 0.5f, 0.5f, &s));
+  EXPECT_NEAR(s.wi.x, -wo.x, 1e-6f);
+  EXPECT_NEAR(s.wi.z, -wo.z, 1e-6f);
+  EXPECT_NEAR(s.weight.x, 1.0f, 1e-6f);
+  Material near = glass(0.5f, 1.01f);
+  prepareMaterial(&near);
+  EXPECT_EQ(near.roughness, 0.5f);
+}
+
 // A white rough plastic's albedo against Mitsuba 3.9.1's roughplastic (GGX, int_ior 1.5,
 // nonlinear false), the mean weight of 20,000 samples of its sample() at wo = (cos, phi 0.7).
 TEST(Bsdf, PlasticAlbedoMatchesMitsuba) {

@@ -285,6 +285,19 @@ TEST(ClosedForm, UniformEnvironmentDiffuseMirrorGlass) {
   }
 }
 
+// Glass of index 1 bends no ray whatever its roughness: a sphere of it is not there, every pixel
+// the environment's radiance, rough (which used to end each path through it black) or smooth.
+TEST(ClosedForm, GlassOfIndexOneIsInvisibleRoughOrSmooth) {
+  for (const char* roughness : {"0", "0.3", "1"}) {
+    SCOPED_TRACE(std::string("roughness ") + roughness);
+    const RenderResult glass =
+        renderAloneInFurnace(R"({"position": [0, 0, 0], "radius": 1, "material": {"type": "glass",
+                                 "ior": 1, "roughness": )" +
+                             std::string(roughness) + "}}");
+    for (float v : glass.image.pixels) EXPECT_NEAR(v, 1.0f, 1e-5f);
+  }
+}
+
 // (d) A sphere light seen directly shows its radiance color * I / (4 pi^2 r^2); seen in a mirror
 // it shows the same radiance (specular paths take the emission at full weight).
 TEST(ClosedForm, SphereLightSeenDirectlyAndInMirror) {

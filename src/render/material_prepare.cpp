@@ -76,6 +76,10 @@ RoughCoat roughCoat(float eta, float alpha) {
 }  // namespace
 
 void prepareMaterial(Material* m) {
+  // Glass of index 1 bends no ray, whatever its facets: each refracts wo to -wo with F = 0, a
+  // delta transmission that the microfacet lobe cannot hold (its half vector wo + wi vanishes,
+  // so every path through it ended black). As pbrt-v4's DielectricBxDF, it is smooth glass.
+  if (m->type == MaterialType::Glass && m->ior == 1.0f) m->roughness = 0.0f;
   if (m->type != MaterialType::Plastic) return;
   const float alpha = roughnessToAlpha(m->roughness);
   const float eta = m->ior;

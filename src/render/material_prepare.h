@@ -1,5 +1,6 @@
 // What a material derives from its parameters once, on the host, before rendering: the plastic's
-// internal reflectance and coating transmittance table (render/bsdf_plastic.h).
+// internal reflectance and coating transmittance table (render/bsdf_plastic.h), and smooth glass
+// in place of rough glass of index 1.
 #pragma once
 
 #include "render/material.h"
