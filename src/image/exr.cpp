@@ -7,9 +7,12 @@
 #include <ImfHeader.h>
 #include <ImfInputFile.h>
 #include <ImfOutputFile.h>
+#include <ImfRgbaFile.h>
 #include <ImfStdIO.h>
 
 #include <exception>
+#include <string>
+#include <vector>
 
 #include "image/image_codecs.h"
 #include "image/image_io.h"
@@ -126,19 +129,66 @@ ExrChannels decodeExrChannels(const std::string& bytes) {
   });
 }
 
+namespace {
+
+// The channels' names, the first few, for a message: "Z, A".
+std::string channelNames(const Imf::ChannelList& list) {
+  std::string names;
+  int count = 0;
+  for (auto it = list.begin(); it != list.end(); ++it, ++count) {
+    if (count == 8) return names + ", ...";
+    names += (count ? ", " : "") + std::string(it.name());
+  }
+  return count ? names : "none";
+}
+
+// A luminance-chroma file (Y, RY, BY: half floats with subsampled chroma) through the library's
+// RGBA interface, which alone converts it; its values are halves already, so nothing is lost.
+ImageRGB decodeLuminanceChroma(const std::string& bytes, const Imath::Box2i& window, uint32_t width,
+                               uint32_t height) {
+  Imf::StdISStream stream;
+  stream.str(bytes);
+  Imf::RgbaInputFile file(stream);
+  std::vector<Imf::Rgba> rgba(size_t(width) * height);
+  file.setFrameBuffer(rgba.data() - window.min.x - ptrdiff_t(window.min.y) * width, 1, width);
+  file.readPixels(window.min.y, window.max.y);
+  ImageRGB image{width, height};
+  for (size_t i = 0; i < rgba.size(); ++i) {
+    image.pixels[3 * i] = rgba[i].r;
+    image.pixels[3 * i + 1] = rgba[i].g;
+    image.pixels[3 * i + 2] = rgba[i].b;
+  }
+  return image;
+}
+
+}  // namespace
+
 ImageRGB decodeExr(const std::string& bytes) {
-  return readExr(bytes, [](Imf::InputFile& file, const Imath::Box2i& window, uint32_t width,
-                           uint32_t height) {
+  return readExr(bytes, [&bytes](Imf::InputFile& file, const Imath::Box2i& window, uint32_t width,
+                                 uint32_t height) {
+    const Imf::ChannelList& list = file.header().channels();
+    const bool rgb = list.findChannel("R") && list.findChannel("G") && list.findChannel("B");
+    const bool grey = !list.findChannel("R") && !list.findChannel("G") && !list.findChannel("B") &&
+                      list.findChannel("Y");
+    if (grey && (list.findChannel("RY") || list.findChannel("BY")))
+      return decodeLuminanceChroma(bytes, window, width, height);
+    if (!rgb && !grey)
+      throw ImageWriteError("expected the channels R, G and B, or Y alone, got " +
+                            channelNames(list));
     ImageRGB image{width, height};
     const size_t xStride = 3 * sizeof(float), yStride = xStride * width;
     Imf::FrameBuffer frame;
-    for (int c = 0; c < 3; ++c) {
+    // Y is read into the red channel and copied to the others (a frame buffer holds a name once).
+    for (int c = 0; c < (grey ? 1 : 3); ++c) {
       char* base = reinterpret_cast<char*>(image.pixels.data() + c);
-      frame.insert(kChannels[c], Imf::Slice::Make(Imf::FLOAT, base, window, xStride, yStride, 1, 1,
-                                                  /*fillValue=*/0.0));
+      frame.insert(grey ? "Y" : kChannels[c],
+                   Imf::Slice::Make(Imf::FLOAT, base, window, xStride, yStride));
     }
     file.setFrameBuffer(frame);
     file.readPixels(window.min.y, window.max.y);
+    if (grey)
+      for (size_t i = 0; i < image.pixels.size(); i += 3)
+        image.pixels[i + 1] = image.pixels[i + 2] = image.pixels[i];
     return image;
   });
 }

@@ -24,7 +24,8 @@ std::string encodeExr(const ImageRGB& image);
 std::string encodeExr(const ImageRGB& image, const std::vector<ImageLayer>& layers);
 // Every channel of an EXR, as float.
 ExrChannels decodeExrChannels(const std::string& bytes);
-// Any scanline or tiled EXR; R, G, B are converted to float, a missing channel reads as 0.
+// Any scanline or tiled EXR with channels R, G and B (converted to float), or a grey one: Y alone
+// (replicated to RGB) or luminance-chroma (Y, RY, BY). Any other set of channels is refused.
 ImageRGB decodeExr(const std::string& bytes);
 
 // Portable float map "PF": little-endian floats, rows stored bottom-to-top.

@@ -1,0 +1,113 @@
+// Which EXR channels an image read takes (environment maps and float textures): R, G and B, a
+// grey file's Y alone or its luminance-chroma (Y, RY, BY), and a clear refusal of anything else
+// (an EXR of depth alone rendered as a black sky before).
+#include <ImfChannelList.h>
+#include <ImfFrameBuffer.h>
+#include <ImfHeader.h>
+#include <ImfOutputFile.h>
+#include <ImfRgbaFile.h>
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "image/image_io.h"
+#include "temp_dir.h"
+
+namespace candela {
+namespace {
+
+constexpr int kWidth = 5, kHeight = 3;
+
+// A file of FLOAT channels `names`, channel c of pixel i holding value(c, i).
+void writeChannels(const std::string& path, const std::vector<std::string>& names) {
+  Imf::Header header(kWidth, kHeight);
+  std::vector<std::vector<float>> planes;
+  for (size_t c = 0; c < names.size(); ++c) {
+    header.channels().insert(names[c], Imf::Channel(Imf::FLOAT));
+    planes.emplace_back(kWidth * kHeight);
+    for (int i = 0; i < kWidth * kHeight; ++i) planes[c][i] = 0.25f * float(c + 1) + 0.01f * i;
+  }
+  Imf::FrameBuffer frame;
+  for (size_t c = 0; c < names.size(); ++c)
+    frame.insert(names[c], Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(planes[c].data()),
+                                      sizeof(float), sizeof(float) * kWidth));
+  Imf::OutputFile file(path.c_str(), header);
+  file.setFrameBuffer(frame);
+  file.writePixels(kHeight);
+}
+
+std::string errorOf(const std::string& path) {
+  try {
+    readImage(path);
+  } catch (const ImageWriteError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(ExrChannels, YAloneIsGrey) {
+  const test::TempDir dir;
+  const std::string path = dir.file("grey.exr");
+  writeChannels(path, {"Y"});
+  const ImageRGB image = readImage(path);
+  ASSERT_EQ(image.width, uint32_t(kWidth));
+  ASSERT_EQ(image.height, uint32_t(kHeight));
+  for (int i = 0; i < kWidth * kHeight; ++i)
+    for (int c = 0; c < 3; ++c) EXPECT_EQ(image.pixels[3 * i + c], 0.25f + 0.01f * i) << i;
+}
+
+TEST(ExrChannels, RgbIsReadWhateverElseTheFileHolds) {
+  const test::TempDir dir;
+  const std::string path = dir.file("rgba.exr");
+  writeChannels(path, {"R", "G", "B", "A", "Y"});
+  const ImageRGB image = readImage(path);
+  for (int i = 0; i < kWidth * kHeight; ++i)
+    for (int c = 0; c < 3; ++c) EXPECT_EQ(image.pixels[3 * i + c], 0.25f * (c + 1) + 0.01f * i);
+}
+
+TEST(ExrChannels, LuminanceChromaIsConvertedToRgb) {
+  const test::TempDir dir;
+  const std::string path = dir.file("yc.exr");
+  const Imf::Rgba colour(0.8f, 0.4f, 0.1f, 1.0f);
+  const int width = 6, height = 4;  // chroma is subsampled 2 x 2
+  std::vector<Imf::Rgba> pixels(width * height, colour);
+  {
+    Imf::RgbaOutputFile file(path.c_str(), width, height, Imf::WRITE_YC);
+    file.setFrameBuffer(pixels.data(), 1, width);
+    file.writePixels(height);
+  }
+  const ImageRGB image = readImage(path);
+  ASSERT_EQ(image.width, uint32_t(width));
+  ASSERT_EQ(image.height, uint32_t(height));
+  // Halves, and the colour through luminance and two chroma ratios (the file keeps those to a
+  // few of their bits): within 2% a channel.
+  for (int i = 0; i < width * height; ++i) {
+    EXPECT_NEAR(image.pixels[3 * i], 0.8f, 0.016f) << i;
+    EXPECT_NEAR(image.pixels[3 * i + 1], 0.4f, 0.008f) << i;
+    EXPECT_NEAR(image.pixels[3 * i + 2], 0.1f, 0.002f) << i;
+  }
+}
+
+TEST(ExrChannels, OtherChannelsAreRefusedByName) {
+  const test::TempDir dir;
+  writeChannels(dir.file("depth.exr"), {"Z"});
+  EXPECT_NE(
+      errorOf(dir.file("depth.exr")).find("expected the channels R, G and B, or Y alone, got Z"),
+      std::string::npos)
+      << errorOf(dir.file("depth.exr"));
+  writeChannels(dir.file("layers.exr"), {"beauty.R", "beauty.G", "beauty.B"});
+  EXPECT_NE(errorOf(dir.file("layers.exr"))
+                .find("expected the channels R, G and B, or Y alone, got beauty.B, beauty.G, "
+                      "beauty.R"),
+            std::string::npos)
+      << errorOf(dir.file("layers.exr"));
+  writeChannels(dir.file("red.exr"), {"R", "G"});
+  EXPECT_NE(errorOf(dir.file("red.exr")).find("got G, R"), std::string::npos)
+      << errorOf(dir.file("red.exr"));
+  // The path leads the message, as every image error's does.
+  EXPECT_EQ(errorOf(dir.file("red.exr")).rfind(dir.file("red.exr"), 0), 0u);
+}
+
+}  // namespace
+}  // namespace candela
