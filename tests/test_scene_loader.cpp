@@ -1,24 +1,27 @@
 // Scene loading: every error class of docs/scene-format.md pinned to its exact message, and the
 // values that each accepted form of the format turns into.
 #include <gtest/gtest.h>
-#include <sys/stat.h>
 #include <stdlib.h>
+#include <sys/stat.h>
 
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "scene/read/did_you_mean.h"
-#include "scene/scene_error.h"
 #include "scene/read/scene_loader.h"
+#include "scene/scene_error.h"
 #include "temp_dir.h"
+#include "texture_test_util.h"
 
 namespace candela {
 namespace {
 
 using test::TempDir;
+using test::writeTestPng;
 
 const char* kTriangleObj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
 
@@ -373,6 +376,30 @@ TEST_F(SceneLoader, ObjMaterialWarningsNameTheObjectThatUsesTheFile) {
   // Where every object sets its own material, the file's materials do not matter.
   EXPECT_TRUE(parse(R"({"camera": {}, "objects": [{"file": "meshes/m.obj", "color": 0.5}]})")
                   .warnings.empty());
+}
+
+// A texture on a mesh without texture coordinates would read one texel everywhere: a warning,
+// per object for a material the scene gives, once per file for the file's own (MTL map_Kd).
+TEST_F(SceneLoader, ATextureOnAMeshWithoutUvsIsAWarning) {
+  ASSERT_TRUE(writeTestPng(dir.file("t.png"), 2, 2, 3, std::vector<uint8_t>(12, 200)));
+  dir.write("meshes/plain.obj", kTriangleObj);
+  dir.write("meshes/uv.obj",
+            std::string("vt 0 0\nvt 1 0\nvt 0 1\n") + "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/1 2/2 3/3\n");
+  dir.write("meshes/mapped.mtl", "newmtl m\nKd 1 1 1\nmap_Kd ../t.png\n");
+  dir.write("meshes/mapped.obj", std::string("mtllib mapped.mtl\nusemtl m\n") + kTriangleObj);
+  const SceneDesc scene = parse(R"({"camera": {}, "objects": [
+      {"file": "meshes/plain.obj", "color": {"texture": "t.png"}},
+      {"file": "meshes/uv.obj", "color": {"texture": "t.png"}},
+      {"file": "meshes/plain.obj", "color": 0.5},
+      {"file": "meshes/mapped.obj"}, {"file": "meshes/mapped.obj"},
+      {"file": "meshes/mapped.obj", "color": 0.5}]})");
+  EXPECT_EQ(scene.warnings,
+            (std::vector<std::string>{
+                "s.json: objects[0]: its material has a texture, but meshes/plain.obj has no "
+                "texture coordinates (\"vt\"): the texel at uv (0, 0) covers the whole surface",
+                "s.json: objects[3]: a material of meshes/mapped.obj has a texture, but "
+                "meshes/mapped.obj has no texture coordinates (\"vt\"): the texel at uv (0, 0) "
+                "covers the whole surface"}));
 }
 
 TEST_F(SceneLoader, JsonIsValidatedBeforeMeshesLoad) {

@@ -6,13 +6,9 @@
 
 namespace candela {
 
-namespace {
-
 bool readsUvs(const Material& m) {
   return m.colorTexture.index >= 0 || m.emissionTexture.index >= 0 || m.alpha.texture.index >= 0;
 }
-
-}  // namespace
 
 bool usesNormals(const ObjectDesc& obj) { return obj.smooth && !obj.mesh->normals.empty(); }
 

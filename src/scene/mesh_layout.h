@@ -37,6 +37,8 @@ struct MeshLayout {
 
 MeshLayout layOutMesh(const MeshDesc& mesh, bool withNormals, bool withUvs);
 
+// Whether a material looks anything up by uv: a texture, or an alpha mask's.
+bool readsUvs(const Material& m);
 // Whether an object uses its mesh's normals: it is smooth and the file has them.
 bool usesNormals(const ObjectDesc& obj);
 // Whether an object uses its mesh's uvs: the file has them and one of the object's materials reads

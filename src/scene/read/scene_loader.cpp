@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "scene/camera_resolve.h"
+#include "scene/mesh_layout.h"
 #include "scene/mesh_order.h"
 #include "scene/read/animation_reader.h"
 #include "scene/read/camera_reader.h"
@@ -76,6 +77,24 @@ void loadMeshes(SceneDesc& scene, const std::vector<std::string>& writtenNames,
     for (const std::string& warning : object.mesh->warnings)
       scene.warnings.push_back(scene.file + ": " + memberPath(object.where, "file") + ": " +
                                warning);
+  }
+  // A texture on a mesh without texture coordinates reads one texel everywhere: a flat colour,
+  // surely not what was meant (a file exported without `vt`). Once per file for its own
+  // materials, as above, and per object for a material the scene gives it.
+  std::set<const MeshDesc*> flat;
+  for (size_t i = 0; i < scene.objects.size(); ++i) {
+    const ObjectDesc& object = scene.objects[i];
+    const MeshDesc& mesh = *object.mesh;
+    if (!mesh.uvs.empty()) continue;
+    const bool textured = object.material
+                              ? readsUvs(*object.material)
+                              : std::any_of(mesh.materials.begin(), mesh.materials.end(), readsUvs);
+    if (!textured || (!object.material && !flat.insert(&mesh).second)) continue;
+    scene.warnings.push_back(
+        scene.file + ": " + object.where + ": " +
+        (object.material ? "its material" : "a material of " + writtenNames[i]) +
+        " has a texture, but " + writtenNames[i] +
+        " has no texture coordinates (\"vt\"): the texel at uv (0, 0) covers the whole surface");
   }
 }
 
