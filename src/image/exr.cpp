@@ -10,6 +10,7 @@
 #include <ImfRgbaFile.h>
 #include <ImfStdIO.h>
 
+#include <cstddef>
 #include <exception>
 #include <string>
 #include <vector>
@@ -173,7 +174,7 @@ ImageRGB decodeExr(const std::string& bytes) {
     if (grey && (list.findChannel("RY") || list.findChannel("BY")))
       return decodeLuminanceChroma(bytes, window, width, height);
     if (!rgb && !grey)
-      throw ImageWriteError("expected the channels R, G and B, or Y alone, got " +
+      throw ImageWriteError("expected the channels R, G and B (or Y, for a grey image), got " +
                             channelNames(list));
     ImageRGB image{width, height};
     const size_t xStride = 3 * sizeof(float), yStride = xStride * width;
