@@ -402,6 +402,34 @@ TEST_F(SceneLoader, ATextureOnAMeshWithoutUvsIsAWarning) {
                 "covers the whole surface"}));
 }
 
+// A colour above 1 on a surface that reflects light (an 8-bit colour, most often) is a warning:
+// named for the first four spheres or objects, then counted. Emitters' radiance is no
+// reflectance, nor is a colour of 1.
+TEST_F(SceneLoader, AReflectanceAboveOneIsAWarning) {
+  dir.write("m.obj", kTriangleObj);
+  const SceneDesc scene = parse(R"({"camera": {},
+      "materials": {"hot": {"type": "emissive", "radiance": 5}, "white": {"type": "diffuse", "color": 1}},
+      "spheres": [{"position": [0, 0, 0], "radius": 1, "color": [255, 128, 0]},
+                  {"position": [0, 0, 0], "radius": 1, "material": "hot"},
+                  {"position": [0, 0, 0], "radius": 1, "material": "white"},
+                  {"position": [0, 0, 0], "radius": 1, "material": {"type": "glass", "color": 1.5}},
+                  {"position": [0, 0, 0], "radius": 1, "material": "mirror"}],
+      "objects": [{"file": "m.obj", "color": [0.5, 2, 0.5]}, {"file": "m.obj"},
+                  {"file": "m.obj", "material": {"type": "conductor", "color": 3}},
+                  {"file": "m.obj", "material": {"type": "plastic", "color": 4}},
+                  {"file": "m.obj", "color": 5}]})");
+  const std::string tail =
+      " is above 1, a surface that reflects more light than it receives; colours are linear "
+      "reflectances in [0, 1] (8-bit values divided by 255)";
+  EXPECT_EQ(scene.warnings,
+            (std::vector<std::string>{
+                "s.json: spheres[0]: its material's color [255, 128, 0]" + tail,
+                "s.json: spheres[3]: its material's color [1.5, 1.5, 1.5]" + tail,
+                "s.json: objects[0]: its material's color [0.5, 2, 0.5]" + tail,
+                "s.json: objects[2]: its material's color [3, 3, 3]" + tail,
+                "s.json: 2 more spheres or objects whose material's color is above 1"}));
+}
+
 TEST_F(SceneLoader, JsonIsValidatedBeforeMeshesLoad) {
   EXPECT_EQ(
       errorWith(R"("objects": [{"file": "missing.obj"}], "lights": [{"positon": [0, 0, 0]}])"),

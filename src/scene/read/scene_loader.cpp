@@ -17,6 +17,7 @@
 #include "scene/read/json_parse.h"
 #include "scene/read/material_reader.h"
 #include "scene/read/obj_loader.h"
+#include "scene/read/reflectance_check.h"
 #include "scene/read/render_reader.h"
 #include "scene/read/scene_limits.h"
 #include "scene/read/text_file.h"
@@ -149,6 +150,7 @@ SceneDesc parseSceneText(const std::string& text, const std::string& fileLabel,
       failAt(fileLabel, problem->path, problem->message);
   checkLightEmission(scene);
   top.finish();
+  warnReflectanceAboveOne(scene);
 
   loadMeshes(scene, writtenNames, textures);
   checkWorldExtent(scene);
