@@ -136,6 +136,25 @@ TEST_F(ObjLoader, CrlfAndLoneCrLineEndings) {
             "m.obj:4: face index 4 out of range (3 vertices)");
 }
 
+// A backslash at a line's end continues the statement on the next line (the OBJ specification);
+// messages still name physical lines, and a comment ending in one (a Windows path) continues
+// nothing.
+TEST_F(ObjLoader, BackslashContinuesAStatementOnTheNextLine) {
+  const MeshDesc mesh = load(
+      "# from C:\\models\\\n"
+      "v 0 0 0\nv 1 0 \\\n  0\nv 0 1 0\nv 1 1 0\n"
+      "f 1 2 \\  \r\n 4 \\\n 3\n");
+  ASSERT_EQ(mesh.positions.size(), 4u);
+  EXPECT_EQ(mesh.positions[1].z, 0.0f);
+  ASSERT_EQ(mesh.triangles.size(), 2u);  // the quad 1 2 4 3
+  EXPECT_EQ(error("v 0 0 0\nv 1 0 0\nv 0 1 \\\n0\nf 1 2 \\\n3\nf 1 2 7\n"),
+            "m.obj:7: face index 7 out of range (3 vertices)");
+  EXPECT_EQ(error("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 \\\n 2\n"),
+            "m.obj:4: expected a face with at least 3 vertices, got \"f 1   2\"");
+  // Continued into the end of the file.
+  EXPECT_EQ(load("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 \\\n3").triangles.size(), 1u);
+}
+
 TEST_F(ObjLoader, VertexNormalsAreKeptPerCorner) {
   const MeshDesc mesh = load(
       "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvn 0 0 1\nvn 0 1 0\nvn 1 0 0\n"

@@ -105,6 +105,15 @@ std::string counted(long long count, const char* singular, const char* plural) {
   return std::to_string(count) + " " + (count == 1 ? singular : plural);
 }
 
+// Whether a statement goes on to the next line: its last character but blanks is a backslash
+// (the OBJ specification's continuation). A comment never does: a Windows path at its end would
+// swallow the data line after it.
+bool continues(std::string_view line) {
+  const size_t last = line.find_last_not_of(" \t");
+  const size_t first = line.find_first_not_of(" \t");
+  return last != std::string_view::npos && line[last] == '\\' && line[first] != '#';
+}
+
 class Scanner {
  public:
   explicit Scanner(const std::string& label) : label_(label) {}
@@ -328,10 +337,27 @@ ObjScan scanObj(const std::string& text, const std::string& label) {
   std::string_view rest(text);
   if (rest.substr(0, 3) == "\xEF\xBB\xBF") rest.remove_prefix(3);  // UTF-8 byte order mark
   size_t number = 0;
+  std::string joined;  // a statement continued over several lines, as one
+  size_t joinedFrom = 0, joinedLines = 0;
   while (!rest.empty()) {
     const size_t end = lineEnd(rest);
-    const std::string_view line = rest.substr(0, end);
-    scanner.scanLine(line, ++number, out);
+    std::string_view line = rest.substr(0, end);
+    ++number;
+    if (continues(line) || joinedLines > 0) {
+      if (joinedLines++ == 0) joinedFrom = number;
+      const bool more = continues(line);
+      if (more) line.remove_suffix(line.size() - line.find_last_not_of(" \t"));
+      joined.append(line.data(), line.size());
+      joined += ' ';
+      if (!more || end == std::string_view::npos) {
+        scanner.scanLine(joined, joinedFrom, out);
+        out.text.append(joinedLines - 1, '\n');  // one output line per input line, as ever
+        joined.clear();
+        joinedLines = 0;
+      }
+    } else {
+      scanner.scanLine(line, number, out);
+    }
     if (end == std::string_view::npos) break;
     const bool crlf = rest[end] == '\r' && end + 1 < rest.size() && rest[end + 1] == '\n';
     rest.remove_prefix(end + (crlf ? 2 : 1));
