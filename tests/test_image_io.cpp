@@ -206,6 +206,15 @@ TEST_F(ImageIoTest, MissingDirectoryFailsAndLeavesNothing) {
     EXPECT_NE(message.find("does not exist"), std::string::npos) << message;
   }
   EXPECT_TRUE(listing().empty());
+  // A file where the folder should be is named as such.
+  std::ofstream(path("file")) << "x";
+  try {
+    writeImage(path("file/x.png"), testImage(2, 2), OutputDesc{});
+    FAIL() << "expected ImageWriteError";
+  } catch (const ImageWriteError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              path("file/x.png") + ": '" + path("file") + "' is not a folder");
+  }
 }
 
 TEST_F(ImageIoTest, UnwritableTargetFailsAndLeavesNoTemporaryFile) {

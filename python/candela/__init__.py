@@ -316,12 +316,17 @@ def devices(threads: int = 0) -> List[Dict[str, Any]]:
 def write_image(path: str | os.PathLike, img: Any, gamma: float | str = 2.2,
                 exposure: float = 0.0) -> None:
     """Writes a linear (H, W, 3) image as the CLI does: .png (exposure in stops, then gamma, or
-    gamma="srgb"), .exr or .pfm (linear float). The file is replaced atomically."""
+    gamma="srgb"), .exr or .pfm (linear float), creating the folders it goes in. The file is
+    replaced atomically."""
     arr = np.ascontiguousarray(img, dtype=np.float32)
     if arr.ndim != 3 or arr.shape[2] != 3:
         raise ValueError(f"expected an image of shape (H, W, 3), got {arr.shape}")
     srgb = isinstance(gamma, str)
     if srgb and gamma.lower() != "srgb":
         raise ValueError(f"gamma must be a number or 'srgb', got {gamma!r}")
-    _candela.write_image(os.fspath(path), arr, srgb, 2.2 if srgb else float(gamma),
-                         float(exposure))
+    path = os.fspath(path)
+    try:
+        os.makedirs(os.path.dirname(path) or ".", exist_ok=True)
+    except OSError:
+        pass  # a file where a folder should be: the writer below names it
+    _candela.write_image(path, arr, srgb, 2.2 if srgb else float(gamma), float(exposure))

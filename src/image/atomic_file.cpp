@@ -66,7 +66,8 @@ StagedFile::StagedFile(const std::string& path, const std::string& bytes)
   const fs::path dir = target.parent_path();
   std::error_code ec;
   if (!dir.empty() && !fs::is_directory(dir, ec))
-    fail(path, "directory '" + dir.string() + "' does not exist");
+    fail(path, fs::exists(dir, ec) ? "'" + dir.string() + "' is not a folder"
+                                   : "directory '" + dir.string() + "' does not exist");
 
   const std::string temp = temporaryPathFor(target);
   std::FILE* file = std::fopen(temp.c_str(), "wb");

@@ -212,8 +212,12 @@ def test_write_image_formats(tmp_path, scene_dict):
         candela.write_image(tmp_path / "a.bmp", img)
     with pytest.raises(ValueError, match="shape"):
         candela.write_image(tmp_path / "b.png", img[..., 0])
-    with pytest.raises(OSError):
-        candela.write_image(tmp_path / "no" / "such" / "dir" / "c.png", img)
+    # Folders are made as the CLI's -o makes them; a file in the way is an error naming the path.
+    candela.write_image(tmp_path / "new" / "nested" / "c.png", img)
+    assert (tmp_path / "new" / "nested" / "c.png").stat().st_size > 0
+    (tmp_path / "file").write_text("")
+    with pytest.raises(OSError, match="'.*file' is not a folder"):
+        candela.write_image(tmp_path / "file" / "d.png", img)
 
 
 def test_render_releases_the_gil(scene_dict):
