@@ -150,23 +150,24 @@ struct Distribution2DArrays {
   std::vector<float> corners;  // empty: constant within cells
 };
 
-// The cumulative sums of f (rows x columns, row-major, every value >= 0) and their guide tables.
-// A row without mass gets a uniform conditional (never reached: its marginal share is 0); without
-// any mass at all the marginal is uniform too.
-inline void buildDistribution2D(const std::vector<double>& f, uint32_t columns, uint32_t rows,
-                                Distribution2DArrays* d) {
+// The cumulative sums of the cell masses mass(j, i) (row j < rows, column i < columns, every
+// value >= 0) and their guide tables. A row without mass gets a uniform conditional (never
+// reached: its marginal share is 0); without any mass at all the marginal is uniform too. Each
+// mass is asked for twice (a row's sum, then its running sums), so none has to be stored.
+template <class Mass>
+void buildDistribution2DOf(Mass mass, uint32_t columns, uint32_t rows, Distribution2DArrays* d) {
   std::vector<float>* conditional = &d->conditional;
   std::vector<float>* marginal = &d->marginal;
   conditional->assign(size_t(rows) * (columns + 1), 0.0f);
   std::vector<double> rowSums(rows, 0.0);
   for (uint32_t j = 0; j < rows; ++j) {
     double sum = 0.0;
-    for (uint32_t i = 0; i < columns; ++i) sum += f[size_t(j) * columns + i];
+    for (uint32_t i = 0; i < columns; ++i) sum += mass(j, i);
     rowSums[j] = sum;
     float* c = conditional->data() + size_t(j) * (columns + 1);
     double running = 0.0;
     for (uint32_t i = 0; i < columns; ++i) {
-      running += f[size_t(j) * columns + i];
+      running += mass(j, i);
       c[i + 1] = sum > 0.0 ? float(running / sum) : float(double(i + 1) / columns);
     }
     c[columns] = 1.0f;
@@ -190,6 +191,13 @@ inline void buildDistribution2D(const std::vector<double>& f, uint32_t columns, 
   buildGuide(marginal->data(), rows, d->marginalGuide.data());
 }
 
+// The distribution of the masses f (rows x columns, row-major), constant within cells.
+inline void buildDistribution2D(const std::vector<double>& f, uint32_t columns, uint32_t rows,
+                                Distribution2DArrays* d) {
+  buildDistribution2DOf([&](uint32_t j, uint32_t i) { return f[size_t(j) * columns + i]; }, columns,
+                        rows, d);
+}
+
 // The bilinear distribution of the corner weights (rows + 1 rows of columns + 1, every value
 // >= 0) over cells whose rows may differ in height: each cell's mass is the mean of its corners
 // times its row's factor (rowFactor[rows], its height in units of the others'), as
@@ -197,15 +205,14 @@ inline void buildDistribution2D(const std::vector<double>& f, uint32_t columns, 
 inline void buildBilinearDistribution2D(std::vector<float> corners,
                                         const std::vector<double>& rowFactor, uint32_t columns,
                                         uint32_t rows, Distribution2DArrays* d) {
-  std::vector<double> f(size_t(columns) * rows);
-  for (uint32_t j = 0; j < rows; ++j) {
-    const float* top = corners.data() + size_t(j) * (columns + 1);
-    const float* bottom = top + (columns + 1);
-    for (uint32_t i = 0; i < columns; ++i)
-      f[size_t(j) * columns + i] =
-          0.25 * (double(top[i]) + top[i + 1] + bottom[i] + bottom[i + 1]) * rowFactor[j];
-  }
-  buildDistribution2D(f, columns, rows, d);
+  const float* weights = corners.data();
+  buildDistribution2DOf(
+      [&](uint32_t j, uint32_t i) {
+        const float* top = weights + size_t(j) * (columns + 1);
+        const float* bottom = top + (columns + 1);
+        return 0.25 * (double(top[i]) + top[i + 1] + bottom[i] + bottom[i + 1]) * rowFactor[j];
+      },
+      columns, rows, d);
   d->corners = std::move(corners);
 }
 
