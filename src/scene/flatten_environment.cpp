@@ -1,6 +1,8 @@
 // Flattening the environment; see flatten_environment.h.
 #include "scene/flatten_environment.h"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
 #include <utility>
@@ -19,18 +21,26 @@ namespace {
 // sin(theta) at the centre of row j of an h-row map.
 double rowSinTheta(uint32_t j, uint32_t h) { return std::sin(kPi * (j + 0.5) / h); }
 
-// The map's mean texel over directions: each texel weighted by the solid angle of its row.
+// The map's mean texel over directions: each texel weighted by the solid angle of its row. Rows
+// are summed in parallel and their sums added in order, so the mean is the same on any number of
+// threads.
 Vec3 meanTexel(const Vec3* texels, uint32_t w, uint32_t h) {
-  double sum[3] = {0.0, 0.0, 0.0}, weights = 0.0;
-  for (uint32_t y = 0; y < h; ++y) {
+  std::vector<double> rowSums(size_t(h) * 3);
+  tbb::parallel_for(uint32_t(0), h, [&](uint32_t y) {
     const double weight = rowSinTheta(y, h);
+    double sum[3] = {0.0, 0.0, 0.0};
     for (uint32_t x = 0; x < w; ++x) {
       const Vec3& t = texels[size_t(y) * w + x];
       sum[0] += t.x * weight;
       sum[1] += t.y * weight;
       sum[2] += t.z * weight;
-      weights += weight;
     }
+    for (int c = 0; c < 3; ++c) rowSums[size_t(y) * 3 + c] = sum[c];
+  });
+  double sum[3] = {0.0, 0.0, 0.0}, weights = 0.0;
+  for (uint32_t y = 0; y < h; ++y) {
+    for (int c = 0; c < 3; ++c) sum[c] += rowSums[size_t(y) * 3 + c];
+    weights += rowSinTheta(y, h) * w;
   }
   return Vec3(float(sum[0] / weights), float(sum[1] / weights), float(sum[2] / weights));
 }
@@ -69,14 +79,14 @@ std::vector<float> environmentCornerBrightness(const Vec3* texels, uint32_t w, u
                                                const EnvironmentGrid& grid) {
   const double shift = grid.shifted ? 0.5 : 0.0;
   std::vector<float> corners(size_t(grid.columns + 1) * (grid.rows + 1));
-  for (uint32_t y = 0; y <= grid.rows; ++y) {
+  tbb::parallel_for(uint32_t(0), grid.rows + 1, [&](uint32_t y) {
     const double v = gridRowTop(grid, y);
     for (uint32_t x = 0; x <= grid.columns; ++x) {
       const double u = (x + shift) / grid.columns;  // past 1 the lookup wraps
       corners[size_t(y) * (grid.columns + 1) + x] =
           componentSum(lookupMap(texels, w, h, float(u), float(v)));
     }
-  }
+  });
   return corners;
 }
 
@@ -107,8 +117,9 @@ void flattenEnvironment(const EnvironmentDesc& desc, SceneData& s) {
   s.environmentMapHash = hash;
   const uint32_t w = image.width, h = image.height;
   s.envTexels.resize(size_t(w) * h);
-  for (uint32_t y = 0; y < h; ++y)
+  tbb::parallel_for(uint32_t(0), h, [&](uint32_t y) {
     for (uint32_t x = 0; x < w; ++x) s.envTexels[size_t(y) * w + x] = image.at(x, y);
+  });
   s.environmentMapMean = meanTexel(s.envTexels.data(), w, h);
 
   const EnvironmentGrid grid = environmentGrid(w, h);
