@@ -6,6 +6,7 @@
 #include <ImfHeader.h>
 #include <ImfOutputFile.h>
 #include <ImfRgbaFile.h>
+#include <ImfTiledOutputFile.h>
 #include <gtest/gtest.h>
 
 #include <string>
@@ -87,6 +88,60 @@ TEST(ExrChannels, LuminanceChromaIsConvertedToRgb) {
     EXPECT_NEAR(image.pixels[3 * i + 1], 0.4f, 0.008f) << i;
     EXPECT_NEAR(image.pixels[3 * i + 2], 0.1f, 0.002f) << i;
   }
+}
+
+// Files are read in bands of rows on several threads: every lossless compression, scanlines or
+// tiles, and a data window that does not start at (0, 0), read back exactly, band edges included.
+TEST(ExrChannels, BandsOfRowsReadEveryCompressionAndLayout) {
+  const test::TempDir dir;
+  const int width = 7, height = 600;  // three bands of 256 rows
+  const Imath::Box2i window(Imath::V2i(3, -7), Imath::V2i(3 + width - 1, -7 + height - 1));
+  std::vector<float> planes[3];
+  for (int c = 0; c < 3; ++c)
+    for (int i = 0; i < width * height; ++i) planes[c].push_back(float(c) + 1e-3f * float(i));
+  const auto frameOf = [&] {
+    Imf::FrameBuffer frame;
+    for (int c = 0; c < 3; ++c)
+      frame.insert(std::string(1, "RGB"[c]),
+                   Imf::Slice::Make(Imf::FLOAT, planes[c].data(), window, sizeof(float),
+                                    sizeof(float) * width));
+    return frame;
+  };
+  const auto headerOf = [&](Imf::Compression compression) {
+    Imf::Header header(window, window);
+    header.compression() = compression;
+    for (const char* name : {"R", "G", "B"})
+      header.channels().insert(name, Imf::Channel(Imf::FLOAT));
+    return header;
+  };
+  const auto expectExact = [&](const std::string& path) {
+    const ImageRGB image = readImage(path);
+    ASSERT_EQ(image.width, uint32_t(width));
+    ASSERT_EQ(image.height, uint32_t(height));
+    for (int i = 0; i < width * height; ++i)
+      for (int c = 0; c < 3; ++c)
+        ASSERT_EQ(image.pixels[3 * i + c], planes[c][i]) << path << " " << i;
+  };
+  for (const Imf::Compression compression :
+       {Imf::NO_COMPRESSION, Imf::RLE_COMPRESSION, Imf::ZIPS_COMPRESSION, Imf::ZIP_COMPRESSION,
+        Imf::PIZ_COMPRESSION}) {
+    const std::string path = dir.file("scan" + std::to_string(int(compression)) + ".exr");
+    {
+      Imf::OutputFile file(path.c_str(), headerOf(compression));
+      file.setFrameBuffer(frameOf());
+      file.writePixels(height);
+    }
+    expectExact(path);
+  }
+  const std::string tiled = dir.file("tiled.exr");
+  {
+    Imf::Header header = headerOf(Imf::ZIP_COMPRESSION);
+    header.setTileDescription(Imf::TileDescription(64, 64, Imf::ONE_LEVEL));
+    Imf::TiledOutputFile file(tiled.c_str(), header);
+    file.setFrameBuffer(frameOf());
+    file.writeTiles(0, file.numXTiles() - 1, 0, file.numYTiles() - 1);
+  }
+  expectExact(tiled);
 }
 
 TEST(ExrChannels, OtherChannelsAreRefusedByName) {
