@@ -343,9 +343,9 @@ ObjScan scanObj(const std::string& text, const std::string& label) {
     const size_t end = lineEnd(rest);
     std::string_view line = rest.substr(0, end);
     ++number;
-    if (continues(line) || joinedLines > 0) {
+    const bool more = continues(line);
+    if (more || joinedLines > 0) {
       if (joinedLines++ == 0) joinedFrom = number;
-      const bool more = continues(line);
       if (more) line.remove_suffix(line.size() - line.find_last_not_of(" \t"));
       joined.append(line.data(), line.size());
       joined += ' ';
