@@ -515,8 +515,10 @@ TEST_F(SceneLoader, InvalidRenderSettings) {
 TEST_F(SceneLoader, InvalidObjectKeys) {
   EXPECT_EQ(errorWith(R"("objects": [{"file": "a.obj", "scale": [1, 0, 1]}])"),
             "s.json: objects[0].scale[1]: expected a non-zero number, got 0");
-  EXPECT_EQ(errorWith(R"("objects": [{"file": "a.obj", "smooth": "yes"}])"),
-            "s.json: objects[0].smooth: expected true or false, got a string \"yes\"");
+  EXPECT_EQ(
+      errorWith(R"("objects": [{"file": "a.obj", "smooth": "yes"}])"),
+      "s.json: objects[0].smooth: expected true, false or a crease angle in degrees (above 0, "
+      "up to 180), got a string \"yes\"");
   EXPECT_EQ(errorWith(R"("spheres": [{"position": [0, 0, 0], "center": [0, 0, 0], "radius": 1}])"),
             "s.json: spheres[0]: expected either \"position\" or \"center\", got both");
 }

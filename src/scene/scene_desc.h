@@ -60,6 +60,9 @@ struct ObjectDesc {
   Vec3 rotation;     // degrees, R = Rz * Ry * Rx
   Vec3 scale{1.0f};
   bool smooth = true;
+  // Above 0 (degrees): the faces the file gives no normals get them computed, smoothed across
+  // edges up to this angle (scene/vertex_normals.h); 0: such faces are flat.
+  float creaseDegrees = 0;
   std::optional<Material> material;  // overrides the mesh's own materials when present
   // Read once per file: the objects that name one file share it (and so do frames).
   std::shared_ptr<const MeshDesc> mesh = std::make_shared<const MeshDesc>();

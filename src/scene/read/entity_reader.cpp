@@ -17,6 +17,19 @@ std::string readId(JsonObject& fields) {
   return text;
 }
 
+// `smooth`: true (the file's normals), false (flat faces), or a crease angle in degrees.
+void readSmooth(const JsonValue& smooth, ObjectDesc& object) {
+  const std::string expected = "true, false or a crease angle in degrees (above 0, up to 180)";
+  if (smooth.json().is_boolean()) {
+    object.smooth = smooth.boolean();
+    return;
+  }
+  if (!smooth.json().is_number()) smooth.failExpected(expected);
+  const double degrees = smooth.json().get<double>();
+  if (!(degrees > 0 && degrees <= 180)) smooth.failExpected(expected);
+  object.creaseDegrees = float(degrees);
+}
+
 }  // namespace
 
 Vec3 readScale(const JsonValue& value) {
@@ -71,7 +84,7 @@ ObjectDesc readObject(const JsonValue& value, const MaterialLibrary& library,
   if (std::optional<JsonValue> rotation = fields.get("rotation"))
     object.rotation = rotation->vec3();
   if (std::optional<JsonValue> scale = fields.get("scale")) object.scale = readScale(*scale);
-  if (std::optional<JsonValue> smooth = fields.get("smooth")) object.smooth = smooth->boolean();
+  if (std::optional<JsonValue> smooth = fields.get("smooth")) readSmooth(*smooth, object);
   object.material = readMaterialReference(fields, library, textures);
   fields.finish();
   return object;

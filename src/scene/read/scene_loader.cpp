@@ -22,6 +22,7 @@
 #include "scene/read/scene_limits.h"
 #include "scene/read/text_file.h"
 #include "scene/scene_error.h"
+#include "scene/vertex_normals.h"
 
 namespace candela {
 namespace {
@@ -46,6 +47,23 @@ template <typename Read>
 void forEachElement(JsonObject& top, const std::string& key, Read read) {
   if (std::optional<JsonValue> array = top.get(key))
     for (const JsonValue& element : array->elements()) read(element);
+}
+
+// An object that gives `smooth` a crease angle takes its mesh with normals computed for the faces
+// its file gives none; objects that place one file at one angle share that mesh.
+void shadeFacesWithoutNormals(SceneDesc& scene) {
+  std::map<std::pair<const MeshDesc*, float>, std::shared_ptr<const MeshDesc>> shaded;
+  for (ObjectDesc& object : scene.objects) {
+    const MeshDesc& mesh = *object.mesh;
+    if (!object.smooth || object.creaseDegrees <= 0 ||
+        std::none_of(mesh.triangles.begin(), mesh.triangles.end(),
+                     [](const MeshTriangle& t) { return t.n[0] < 0; }))
+      continue;
+    std::shared_ptr<const MeshDesc>& made = shaded[{&mesh, object.creaseDegrees}];
+    if (!made)
+      made = std::make_shared<const MeshDesc>(withComputedNormals(mesh, object.creaseDegrees));
+    object.mesh = made;
+  }
 }
 
 // The OBJ files named by the scene's objects, each read once however many objects use it and
@@ -97,6 +115,7 @@ void loadMeshes(SceneDesc& scene, const std::vector<std::string>& writtenNames,
         " has a texture, but " + writtenNames[i] +
         " has no texture coordinates (\"vt\"): the texel at uv (0, 0) covers the whole surface");
   }
+  shadeFacesWithoutNormals(scene);
 }
 
 }  // namespace
