@@ -11,6 +11,7 @@
 #include <unordered_set>
 
 #include "scene/read/polygon_triangulation.h"
+#include "scene/read/shown_text.h"
 #include "scene/scene_error.h"
 
 namespace candela {
@@ -63,23 +64,6 @@ size_t lineEnd(std::string_view text) {
   for (size_t i = 0; i < text.size(); ++i)
     if (text[i] == '\n' || text[i] == '\r') return i;
   return std::string_view::npos;
-}
-
-// Text from the file, quoted for a message: shortened, with unprintable bytes escaped.
-std::string shown(std::string_view text) {
-  std::string out = "\"";
-  for (size_t i = 0; i < text.size() && i < 40; ++i) {
-    const unsigned char c = static_cast<unsigned char>(text[i]);
-    if (c >= 0x20 && c < 0x7f && c != '"' && c != '\\') {
-      out += static_cast<char>(c);
-    } else {
-      static const char kHex[] = "0123456789abcdef";
-      out += "\\x";
-      out += kHex[c >> 4];
-      out += kHex[c & 15];
-    }
-  }
-  return out + (text.size() > 40 ? "...\"" : "\"");
 }
 
 // The number grammar tinyobjloader reads: [+-] digits [. digits] [e [+-] digits], where the
@@ -163,7 +147,7 @@ void Scanner::scanLine(std::string_view line, size_t number, ObjScan& out) {
       materialUse(line.substr(keywordEnd), out);
     } else if (std::find(std::begin(kIgnoredStatements), std::end(kIgnoredStatements), keyword) ==
                std::end(kIgnoredStatements)) {
-      fail("unknown statement " + shown(keyword));
+      fail("unknown statement " + shownText(keyword));
     } else if (keyword != "usemtl") {
       out.text += '\n';  // unused, and unchecked: tinyobjloader must not parse it either
       return;
@@ -219,18 +203,18 @@ void Scanner::scanLine(std::string_view line, size_t number, ObjScan& out) {
 void Scanner::numbers(const std::vector<std::string_view>& tokens, size_t min, size_t max,
                       const char* form, std::string_view line, double* values) const {
   if (tokens.size() < min || tokens.size() > max)
-    fail(std::string("expected ") + form + ", got " + shown(line));
+    fail(std::string("expected ") + form + ", got " + shownText(line));
   for (size_t i = 0; i < tokens.size(); ++i) {
-    if (!isObjNumber(tokens[i])) fail("expected a number, got " + shown(tokens[i]));
+    if (!isObjNumber(tokens[i])) fail("expected a number, got " + shownText(tokens[i]));
     values[i] = parseNumber(tokens[i]);
     if (!(std::fabs(values[i]) <= FLT_MAX))
-      fail("expected a finite number, got " + shown(tokens[i]));
+      fail("expected a finite number, got " + shownText(tokens[i]));
   }
 }
 
 void Scanner::references(const std::vector<std::string_view>& tokens, size_t min, const char* form,
                          const char* indexName, std::string_view line) const {
-  if (tokens.size() < min) fail(std::string("expected ") + form + ", got " + shown(line));
+  if (tokens.size() < min) fail(std::string("expected ") + form + ", got " + shownText(line));
   for (std::string_view token : tokens) reference(token, indexName);
 }
 
@@ -249,7 +233,7 @@ void Scanner::reference(std::string_view token, const char* indexName) const {
   const bool wellFormed = slashes <= 2 && !vertex.empty() && (slashes != 1 || !texcoord.empty()) &&
                           (slashes != 2 || !normal.empty());
   if (!wellFormed)
-    fail("expected a vertex reference such as 1, 1/2, 1//3 or 1/2/3, got " + shown(token));
+    fail("expected a vertex reference such as 1, 1/2, 1//3 or 1/2/3, got " + shownText(token));
   index(vertex, token, vertices_, indexName, "vertex", "vertices");
   if (!texcoord.empty())
     index(texcoord, token, texcoords_, "texture coordinate index", "texture coordinate",
@@ -266,7 +250,7 @@ void Scanner::index(std::string_view digits, std::string_view token, long long c
                          return std::isdigit(static_cast<unsigned char>(c)) != 0;
                        });
   if (!numeric)
-    fail("expected a vertex reference such as 1, 1/2, 1//3 or 1/2/3, got " + shown(token));
+    fail("expected a vertex reference such as 1, 1/2, 1//3 or 1/2/3, got " + shownText(token));
   const long long value = parseIndex(digits);
   if (value == 0) fail(name + " 0 is invalid (OBJ indices start at 1)");
   if (value > count || value < -count)

@@ -17,6 +17,7 @@
 #include "scene/read/json_parse.h"
 #include "scene/read/material_reader.h"
 #include "scene/read/obj_loader.h"
+#include "scene/read/ply_loader.h"
 #include "scene/read/reflectance_check.h"
 #include "scene/read/render_reader.h"
 #include "scene/read/scene_limits.h"
@@ -66,9 +67,9 @@ void shadeFacesWithoutNormals(SceneDesc& scene) {
   }
 }
 
-// The OBJ files named by the scene's objects, each read once however many objects use it and
-// its triangles put in spatial order (scene/mesh_order.h). A failure is reported at the object's
-// "file" key, with the file as the scene wrote it.
+// The mesh files (OBJ or PLY) named by the scene's objects, each read once however many objects use
+// it and its triangles put in spatial order (scene/mesh_order.h). A failure is reported at the
+// object's "file" key, with the file as the scene wrote it.
 void loadMeshes(SceneDesc& scene, const std::vector<std::string>& writtenNames,
                 TextureLoader& textures) {
   std::map<std::string, std::shared_ptr<const MeshDesc>> loaded;  // resolved path -> its mesh
@@ -80,7 +81,8 @@ void loadMeshes(SceneDesc& scene, const std::vector<std::string>& writtenNames,
       continue;
     }
     try {
-      MeshDesc mesh = loadObjFile(object.file, writtenNames[i], textures);
+      MeshDesc mesh = isPlyPath(object.file) ? loadPlyFile(object.file, writtenNames[i])
+                                             : loadObjFile(object.file, writtenNames[i], textures);
       orderTrianglesSpatially(&mesh);
       object.mesh = std::make_shared<const MeshDesc>(std::move(mesh));
     } catch (const SceneError& error) {
