@@ -38,14 +38,14 @@ class Scene:
 
     @classmethod
     def load(cls, path: str | os.PathLike) -> "Scene":
-        """Loads and validates a JSON scene file (and its OBJ meshes). Raises SceneError."""
+        """Loads and validates a JSON scene file (and its OBJ and PLY meshes). Raises SceneError."""
         path = os.fspath(path)
         return cls(_candela._Scene.load(path),
                    {"path": os.path.abspath(path), "label": path})._warned()
 
     @classmethod
     def from_dict(cls, scene: dict, base_dir: str | os.PathLike = ".") -> "Scene":
-        """A scene from a dict in the JSON scene format; OBJ paths resolve against base_dir.
+        """A scene from a dict in the JSON scene format; mesh paths resolve against base_dir.
         Values may be numpy arrays and scalars (a camera's K and [R|t], say) and paths
         (os.PathLike); a value JSON cannot hold (NaN, a set) raises SceneError naming its place."""
         text = json.dumps(_plain_json(scene, ""))
@@ -150,7 +150,7 @@ class Scene:
         """Where each instance is in this scene (or frame), by the instance pass's numbers, the
         same as `candela render --aov poses` writes (docs/aovs.md, *Instance poses*):
         {number: {"name", "object_to_world", "object_to_camera"}}, each matrix a (4, 4) float64
-        array [A p; 0 0 0 1] taking the instance's model (an object's mesh as its OBJ file has it,
+        array [A p; 0 0 0 1] taking the instance's model (an object's mesh as its file has it,
         the unit sphere for a sphere or sphere light, the origin for a point light) to world
         space, and to OpenCV's camera axes (the camera's extrinsics times the first)."""
         return {number: {"name": name,
