@@ -257,8 +257,9 @@ TEST_F(SceneLoader, BadRoughMaterialsAreRefused) {
 }
 
 TEST_F(SceneLoader, UnknownLightType) {
-  EXPECT_EQ(errorWith(R"("lights": [{"type": "spot", "position": [0, 0, 0], "intensity": 1}])"),
-            "s.json: lights[0].type: expected \"point\" or \"sphere\", got a string \"spot\"");
+  EXPECT_EQ(errorWith(R"("lights": [{"type": "area", "position": [0, 0, 0], "intensity": 1}])"),
+            "s.json: lights[0].type: expected one of \"point\", \"sphere\", \"spot\", got a "
+            "string \"area\"");
 }
 
 TEST_F(SceneLoader, UnknownNamedMaterial) {

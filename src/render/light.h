@@ -1,6 +1,7 @@
 // Lights that next-event estimation samples: point lights and the emitting surfaces of the scene.
 //
-// Every emitter is a light. A point light is declared in the scene; the environment, unless it
+// Every emitter is a light. A point light (or a spot light, a point light limited to a cone) is
+// declared in the scene; the environment, unless it
 // is black, is a light (render/environment.h); every sphere and every
 // triangle whose material is emissive (a declared sphere light included) is an area light whose
 // shape is that primitive: its position and size are the primitive's, its radiance the
@@ -12,6 +13,7 @@
 #include <cstdint>
 
 #include "core/vec3.h"
+#include "render/spot_cone.h"
 
 namespace candela {
 
@@ -24,6 +26,9 @@ struct Light {
   LightType type = LightType::Point;
   Vec3 position;       // point lights
   Vec3 power;          // point lights: total emitted power (color * intensity)
+  // A spot light is a point light limited to a cone; its power is the point light's it would be
+  // without one (its intensity within the beam is that light's).
+  SpotCone spot;
   uint32_t shape = 0;  // area lights: index into the scene's spheres or triangles, by type
   // The light's path in the light tree (render/light_tree.h): its slot at each level, 3 bits
   // a level from the lowest, the root's first.

@@ -83,14 +83,20 @@ CANDELA_HDI float lightPathPmf(const SceneView& scene, uint32_t index) {
 
 // The density, in area measure, with which a light subpath from point light `index` reaches the
 // point p of geometric normal ng as its first vertex: its pick, times its uniform emission
-// 1 / (4 pi) carried to p's surface.
+// 1 / (4 pi) (a spot's: uniform within its cone, 0 outside) carried to p's surface.
 CANDELA_HDI float lightVertexPdf(const SceneView& scene, uint32_t index, const Vec3& p,
                                  const Vec3& ng) {
   const float pmf = lightPathPmf(scene, index);
   if (pmf == 0.0f) return 0.0f;
-  const Vec3 d = scene.lights[index].position - p;
+  const Light& light = scene.lights[index];
+  const Vec3 d = light.position - p;
   const float r2 = dot(d, d);
-  return pmf * (0.25f * kInvPi) * fabsf(dot(ng, d)) / (r2 * sqrtf(r2));
+  float density = 0.25f * kInvPi;
+  if (hasCone(light.spot)) {
+    if (!(dot(-d, light.spot.axis) > light.spot.cosCutoff * sqrtf(r2))) return 0.0f;
+    density = uniformConePdf(coneOneMinusCos(light.spot));
+  }
+  return pmf * density * fabsf(dot(ng, d)) / (r2 * sqrtf(r2));
 }
 
 // Where next-event estimation at p (geometric normal ng, found by a BSDF sample of density
@@ -159,7 +165,8 @@ CANDELA_HDI void traceLightVertex(const SceneView& scene, const Tracer& tracer, 
     ray.origin = offsetRayOrigin(e.p, e.error, e.n, ray.direction);
   } else {
     ray.origin = light.position;
-    ray.direction = sampleUniformCone(u1, u2, 2.0f);  // the whole sphere
+    ray.direction = hasCone(light.spot) ? sampleConeDirection(light.spot, u1, u2)
+                                        : sampleUniformCone(u1, u2, 2.0f);  // the whole sphere
   }
   ray.alphaKey = rayKeyFor(scene, rng, kLightRay);
   Hit hit;
@@ -175,6 +182,10 @@ CANDELA_HDI void traceLightVertex(const SceneView& scene, const Tracer& tracer, 
   lv->area = area;
   if (!area) {
     lv->power = light.power / lightPathPmf(scene, index);
+    // A spot's directions are drawn within its cone, (1 - cos cutoff) / 2 of the sphere's, and
+    // weighted by its falloff.
+    if (hasCone(light.spot))
+      lv->power *= coneFalloff(light.spot, ray.direction) * 0.5f * coneOneMinusCos(light.spot);
     lv->pdfArea = lightVertexPdf(scene, index, sp.p, sp.ng);
   } else {
     // The subpath's density: pick / area at L, cos_L / pi towards the vertex, carried to its

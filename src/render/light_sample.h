@@ -80,6 +80,11 @@ CANDELA_HDI bool samplePointLight(const Light& l, const Vec3& p, LightSample* s)
   s->distance = sqrtf(dist2);
   s->wi = toLight / s->distance;
   s->radiance = l.power * (kInv4Pi / dist2);
+  if (hasCone(l.spot)) {
+    const float share = coneFalloff(l.spot, -s->wi);
+    if (!(share > 0.0f)) return false;
+    s->radiance *= share;
+  }
   s->pdf = 1.0f;
   s->isDelta = true;
   return true;

@@ -127,14 +127,15 @@ void addObject(SceneData& s, const ObjectDesc& obj, bool geometry, MeshLayouts& 
   }
 }
 
-// A point light, or a sphere light: an emissive sphere (of sphereLightRadiance) that names the
-// light, which in turn names the sphere.
+// A point light (a spot light: with a cone), or a sphere light: an emissive sphere (of
+// sphereLightRadiance) that names the light, which in turn names the sphere.
 void addLight(SceneData& s, const LightDesc& d) {
   Light light;
   light.type = d.type;
   if (d.type == LightType::Point) {
     light.position = d.position;
     light.power = lightPower(d);
+    light.spot = spotCone(d);
   } else {
     Material emitter;
     emitter.type = MaterialType::Emissive;

@@ -2,6 +2,7 @@
 #include "scene/flatten_lights.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "core/constants.h"
 #include "geometry/primitive_bounds.h"
@@ -24,6 +25,10 @@ LightBounds lightBounds(const SceneData& s, const Light& l) {
     case LightType::Point:
       b.lo = b.hi = b.anchor = l.position;
       b.cosThetaO = -1.0;  // every direction
+      if (hasCone(l.spot)) {  // the tree's cones widen by 90 degrees: a bound, if a loose one
+        b.axis = l.spot.axis;
+        b.cosThetaO = l.spot.cosCutoff;
+      }
       b.power = std::max(0.0, componentSum(l.power));
       break;
     case LightType::Sphere: {
@@ -103,12 +108,18 @@ std::vector<uint32_t> lightPathOrder(const SceneData& s) {
 }
 
 // The chances that a sample's light subpath starts from each light but the environment, by the
-// sum of its RGB power (as the light tree weighs lights), and their running sums in
+// sum of its RGB power (as the light tree weighs lights; a spot's, by what leaves its cone), and
+// their running sums in
 // lightPathOrder (render/light.h).
 void setLightPathPicks(SceneData& s, const std::vector<LightBounds>& bounds) {
   std::vector<double> powers;
-  for (uint32_t i = 0; i < s.lights.size(); ++i)
-    powers.push_back(s.lights[i].type == LightType::Environment ? 0.0 : bounds[i].power);
+  for (uint32_t i = 0; i < s.lights.size(); ++i) {
+    const Light& l = s.lights[i];
+    double power = l.type == LightType::Environment ? 0.0 : bounds[i].power;
+    if (hasCone(l.spot))  // what leaves the cone
+      power *= coneFluxShare(std::acos(double(l.spot.cosBeam)), double(l.spot.cutoff));
+    powers.push_back(power);
+  }
   double total = 0;
   for (const double power : powers) total += power;
   s.lightsStartingPaths = 0;

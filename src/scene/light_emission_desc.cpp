@@ -1,5 +1,7 @@
-// lightEmissionProblem; see light_emission_desc.h.
+// lightEmissionProblem and spotCone; see light_emission_desc.h.
 #include "scene/light_emission_desc.h"
+
+#include <cmath>
 
 #include "scene/scene_error.h"
 
@@ -18,6 +20,20 @@ std::string lightEmissionProblem(const LightDesc& d) {
            ", is beyond single precision; expected a larger radius or a "
            "smaller intensity";
   return "";
+}
+
+SpotCone spotCone(const LightDesc& d) {
+  SpotCone cone;
+  if (!d.spot) return cone;
+  const SpotDesc& spot = *d.spot;
+  cone.axis = normalize(spot.lookAt ? *spot.lookAt - d.position : spot.direction);
+  const double cutoff = double(spot.cutoffDegrees) * (kPi / 180.0);
+  const double beam = double(spot.beamDegrees) * (kPi / 180.0);
+  cone.cosCutoff = float(std::cos(cutoff));
+  cone.cosBeam = float(std::cos(beam));
+  cone.cutoff = float(cutoff);
+  cone.invTransition = cutoff > beam ? float(1.0 / (cutoff - beam)) : 0.0f;
+  return cone;
 }
 
 }  // namespace candela

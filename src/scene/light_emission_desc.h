@@ -1,11 +1,12 @@
 // What a light of the description emits, in the float arithmetic the kernel's arrays hold it in:
-// its power, and for a sphere light the radiance of its surface (the power spread over the
-// sphere's area 4 pi r^2 and the pi of a Lambertian emitter's cosine).
+// its power, for a sphere light the radiance of its surface (the power spread over the sphere's
+// area 4 pi r^2 and the pi of a Lambertian emitter's cosine), and for a spot light its cone.
 #pragma once
 
 #include <string>
 
 #include "core/constants.h"
+#include "render/spot_cone.h"
 #include "scene/scene_desc.h"
 
 namespace candela {
@@ -21,5 +22,8 @@ inline Vec3 sphereLightRadiance(const LightDesc& d) {
 // product need not be, and a light of infinite radiance would light nothing (the renderer drops
 // samples that are not finite).
 std::string lightEmissionProblem(const LightDesc& d);
+
+// The kernel's cone of a spot light (none for other lights), aimed from d.position.
+SpotCone spotCone(const LightDesc& d);
 
 }  // namespace candela

@@ -68,14 +68,23 @@ struct ObjectDesc {
   std::shared_ptr<const MeshDesc> mesh = std::make_shared<const MeshDesc>();
 };
 
+// A spot light's aim and cone (render/spot_cone.h), angles in degrees from its axis.
+struct SpotDesc {
+  Vec3 direction;              // where it points, unless lookAt is given
+  std::optional<Vec3> lookAt;  // the point it points at, from wherever it is at a frame
+  float cutoffDegrees = 20;
+  float beamDegrees = 15;
+};
+
 struct LightDesc {
   std::string id;
   std::string where;
-  LightType type = LightType::Point;
+  LightType type = LightType::Point;  // a spot light is a point light with a cone
   Vec3 position;
   float radius = 0;  // sphere lights
-  float intensity = 0;  // total emitted power
+  float intensity = 0;  // total emitted power (a spot's: that of the point light it limits)
   Vec3 color{1.0f};
+  std::optional<SpotDesc> spot;
 };
 
 struct CameraDesc {

@@ -243,6 +243,20 @@ void checkCameraAtEveryFrame(const JsonValue& value, const AnimationDesc& animat
   }
 }
 
+// A spot light aimed with look_at must not reach that point at any frame its position moves.
+void checkSpotsAtEveryFrame(const AnimationDesc& animation, const SceneDesc& scene,
+                            const std::string& file) {
+  for (const AnimTrack& t : animation.tracks) {
+    if (t.target != AnimTarget::Light || t.property != AnimProperty::Position) continue;
+    const LightDesc& light = scene.lights[t.index];
+    if (!light.spot || !light.spot->lookAt) continue;
+    for (uint32_t frame = 0; frame < animation.frames; ++frame)
+      if (isBlack(*light.spot->lookAt - evaluateTrack(t, frame)))
+        failAt(file, t.where,
+               "at frame " + std::to_string(frame) + " the spot light looks at its own position");
+  }
+}
+
 }  // namespace
 
 AnimationDesc readAnimation(const JsonValue& value, const SceneDesc& scene) {
@@ -277,6 +291,7 @@ AnimationDesc readAnimation(const JsonValue& value, const SceneDesc& scene) {
   fields.finish();
   checkLens(value, animation, scene);
   checkCameraAtEveryFrame(value, animation, scene);
+  checkSpotsAtEveryFrame(animation, scene, value.file());
   return animation;
 }
 

@@ -2,6 +2,7 @@
 #include "scene/read/entity_reader.h"
 
 #include <filesystem>
+#include <sstream>
 
 namespace candela {
 namespace {
@@ -28,6 +29,36 @@ void readSmooth(const JsonValue& smooth, ObjectDesc& object) {
   const double degrees = smooth.json().get<double>();
   if (!(degrees > 0 && degrees <= 180)) smooth.failExpected(expected);
   object.creaseDegrees = float(degrees);
+}
+
+// A spot light's aim ("direction" or "look_at") and cone ("cutoff_angle", "beam_width").
+SpotDesc readSpot(JsonObject& fields, const Vec3& position) {
+  SpotDesc spot;
+  fields.exclusive("direction", "look_at");
+  if (std::optional<JsonValue> direction = fields.get("direction")) {
+    spot.direction = direction->vec3();
+    if (isBlack(spot.direction)) direction->failExpected("a direction of non-zero length");
+  } else if (std::optional<JsonValue> lookAt = fields.get("look_at")) {
+    spot.lookAt = lookAt->vec3();
+    if (isBlack(*spot.lookAt - position)) lookAt->fail("the spot light looks at its own position");
+  } else {
+    fields.fail("missing \"direction\" or \"look_at\" (where the spot light points)");
+  }
+  const std::string cutoffRange = "an angle in degrees above 0, up to 180";
+  if (std::optional<JsonValue> cutoff = fields.get("cutoff_angle")) {
+    spot.cutoffDegrees = cutoff->number(cutoffRange);
+    if (!(spot.cutoffDegrees > 0 && spot.cutoffDegrees <= 180)) cutoff->failExpected(cutoffRange);
+  }
+  spot.beamDegrees = 0.75f * spot.cutoffDegrees;
+  if (std::optional<JsonValue> beam = fields.get("beam_width")) {
+    std::ostringstream range;
+    range << "an angle in degrees from 0 to the cutoff_angle, " << spot.cutoffDegrees;
+    const std::string beamRange = range.str();
+    spot.beamDegrees = beam->number(beamRange);
+    if (!(spot.beamDegrees >= 0 && spot.beamDegrees <= spot.cutoffDegrees))
+      beam->failExpected(beamRange);
+  }
+  return spot;
 }
 
 }  // namespace
@@ -91,19 +122,32 @@ ObjectDesc readObject(const JsonValue& value, const MaterialLibrary& library,
 }
 
 LightDesc readLight(const JsonValue& value) {
-  JsonObject fields(value, {"id", "type", "position", "intensity", "color", "radius"});
+  JsonObject fields(value, {"id", "type", "position", "intensity", "color", "radius", "direction",
+                            "look_at", "cutoff_angle", "beam_width"});
   LightDesc light;
   light.where = value.path();
   light.id = readId(fields);
+  size_t kind = 0;  // point, sphere or spot
   if (std::optional<JsonValue> type = fields.get("type"))
-    light.type = type->choice({"point", "sphere"}) == 0 ? LightType::Point : LightType::Sphere;
+    kind = type->choice({"point", "sphere", "spot"});
+  light.type = kind == 1 ? LightType::Sphere : LightType::Point;
   light.position = fields.require("position").vec3();
   light.intensity = fields.require("intensity").nonNegativeNumber();
   if (std::optional<JsonValue> color = fields.get("color")) light.color = color->colour();
+  const char* const name =
+      kind == 0 ? "a point light" : (kind == 1 ? "a sphere light" : "a spot light");
   if (light.type == LightType::Sphere)
     light.radius = fields.require("radius").positiveNumber();
   else
-    fields.reject("radius", "not used by a point light (only \"sphere\" lights have a radius)");
+    fields.reject("radius",
+                  std::string("not used by ") + name + " (only \"sphere\" lights have a radius)");
+  if (kind == 2) {
+    light.spot = readSpot(fields, light.position);
+  } else {
+    for (const char* key : {"direction", "look_at", "cutoff_angle", "beam_width"})
+      fields.reject(key,
+                    std::string("not used by ") + name + " (only \"spot\" lights have a cone)");
+  }
   fields.finish();
   return light;
 }
