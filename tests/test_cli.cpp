@@ -258,20 +258,24 @@ TEST_F(CliTest, UnwritableOutputExitsOne) {
 }
 
 TEST_F(CliTest, InfoPrintsTheSceneCounts) {
-  // One quad (two triangles, emissive: two lights) and one sphere.
+  // One quad (two triangles, emissive: two lights), one sphere, a point and a spot light and the
+  // environment (each light type once: a count by type once wrote past its array for the last).
   writeFile("quad.obj", "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nf 1 2 3 4\n");
   writeFile("mesh.json", R"({
     "camera": {"width": 32, "height": 24, "spp": 8, "position": [0, 0, 5]},
     "spheres": [{"position": [0, 0, -2], "radius": 1}],
     "objects": [{"file": "quad.obj", "material": {"type": "emissive", "radiance": 1}}],
-    "lights": [{"position": [0, 3, 3], "intensity": 100}]
+    "lights": [{"position": [0, 3, 3], "intensity": 100},
+               {"type": "spot", "position": [0, 3, 3], "direction": [0, -1, 0], "intensity": 9}],
+    "environment": {"color": 0.1}
   })");
   const RunResult r = run("info mesh.json");
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.out.find("triangles:  2\n"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("spheres:    1\n"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("objects:    1\n"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("lights:     3 (1 point, 0 emissive spheres, 2 emissive faces)\n"),
+  EXPECT_NE(r.out.find("lights:     5 (1 point, 1 spot, 0 emissive spheres, 2 emissive faces, "
+                       "the environment)\n"),
             std::string::npos)
       << r.out;
   EXPECT_NE(r.out.find("image:      32x24, 8 spp\n"), std::string::npos) << r.out;

@@ -29,10 +29,27 @@ int runInfo(const InfoOptions& options) {
   std::printf("spheres:    %zu\n", desc.spheres.size());
   std::printf("objects:    %zu\n", desc.objects.size());
   std::printf("triangles:  %zu\n", scene.triangles.size());
-  size_t byType[3] = {0, 0, 0};  // point, sphere, triangle
-  for (const Light& l : scene.lights) ++byType[uint32_t(l.type)];
-  std::printf("lights:     %zu (%zu point, %zu emissive spheres, %zu emissive faces)\n",
-              scene.lights.size(), byType[0], byType[1], byType[2]);
+  size_t points = 0, spots = 0, spheres = 0, faces = 0;
+  bool environment = false;
+  for (const Light& l : scene.lights) {
+    switch (l.type) {
+      case LightType::Point:
+        ++(hasCone(l.spot) ? spots : points);
+        break;
+      case LightType::Sphere:
+        ++spheres;
+        break;
+      case LightType::Triangle:
+        ++faces;
+        break;
+      case LightType::Environment:
+        environment = true;
+        break;
+    }
+  }
+  std::printf("lights:     %zu (%zu point, %zu spot, %zu emissive spheres, %zu emissive faces%s)\n",
+              scene.lights.size(), points, spots, spheres, faces,
+              environment ? ", the environment" : "");
   std::printf("materials:  %zu\n", scene.materials.size());
 
   Vec3 lo, hi;
