@@ -220,6 +220,11 @@ TEST(SpotLight, TheSceneFormatRefusesWhatASpotCannotBe) {
                     R"(, "animation": {"frames": 3, "tracks": [{"target": "lamp",
                        "property": "position", "keys": [[0, [0, 2, 0]], [2, [0, -2, 0]]]}]})"),
             "s.json: animation.tracks[0]: at frame 1 the spot light looks at its own position");
+  EXPECT_EQ(errorOf("{" + at + R"(, "id": "lamp", "direction": [0, -1, 0]})",
+                    R"(, "animation": {"frames": 3, "tracks": [{"target": "lamp",
+                       "property": "radius", "keys": [[0, 1]]}]})"),
+            "s.json: animation.tracks[0].property: \"radius\" is not used by a spot light (only "
+            "\"sphere\" lights have a radius)");
   // A spot light's beam defaults to three quarters of its cutoff.
   const SceneDesc s = parseSceneText(R"({"camera": {"width": 4, "height": 4}, "lights": [{)" + at +
                                          R"(, "direction": [0, -1, 0], "cutoff_angle": 40}]})",

@@ -185,9 +185,10 @@ void checkUsed(const JsonValue& property, const AnimTrack& track, const SceneDes
       default: break;
     }
   } else if (track.target == AnimTarget::Light) {
-    if (track.property == AnimProperty::Radius &&
-        scene.lights[track.index].type == LightType::Point)
-      unused("a point light (only \"sphere\" lights have a radius)");
+    const LightDesc& light = scene.lights[track.index];
+    if (track.property == AnimProperty::Radius && light.type == LightType::Point)
+      unused(std::string(light.spot ? "a spot light" : "a point light") +
+             " (only \"sphere\" lights have a radius)");
   } else if (track.property == AnimProperty::Color) {
     const Material* m = track.target == AnimTarget::Sphere
                                 ? &scene.spheres[track.index].material
