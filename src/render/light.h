@@ -1,13 +1,12 @@
 // Lights that next-event estimation samples: point lights and the emitting surfaces of the scene.
 //
 // Every emitter is a light. A point light (or a spot light, a point light limited to a cone) is
-// declared in the scene; the environment, unless it
-// is black, is a light (render/environment.h); every sphere and every
-// triangle whose material is emissive (a declared sphere light included) is an area light whose
-// shape is that primitive: its position and size are the primitive's, its radiance the
-// material's, and the primitive names the light back (Sphere::light, or the triangle lights'
-// order: see lightOfPrimitive), so BSDF-sampled rays that hit it are weighted by multiple
-// importance sampling.
+// declared in the scene; the environment, unless it is black, is a light (render/environment.h);
+// every sphere and every triangle whose material is emissive (a declared sphere light included)
+// is an area light whose shape is that primitive: its position and size are the primitive's, its
+// radiance the material's, and the primitive names the light back (Sphere::light, or the
+// triangle lights' order: see lightOfPrimitive), so BSDF-sampled rays that hit it are weighted
+// by multiple importance sampling.
 #pragma once
 
 #include <cstdint>
