@@ -66,8 +66,9 @@ TEST(Environment, MappingPutsTheMapCentreAlongMinusZ) {
 
   // rotation [0, 90, 0] turns the map's frame by 90 degrees about +y: its -z (the centre) now
   // lies along world -x, its +x (red) along world -z.
-  const SceneView turned =
-      sceneWithEnvironment(R"({"map": ")" + map + R"(", "rotation": [0, 90, 0]})").view();
+  const SceneData turnedData =
+      sceneWithEnvironment(R"({"map": ")" + map + R"(", "rotation": [0, 90, 0]})");
+  const SceneView turned = turnedData.view();
   EXPECT_EQ(environmentRadiance(turned, normalize(Vec3(-1, 0, 0.2f))).z, 1.0f);
   EXPECT_EQ(environmentRadiance(turned, normalize(Vec3(-1, 0, -0.2f))).x, 1.0f);
 }
