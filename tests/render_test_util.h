@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -24,6 +25,16 @@ inline RenderResult renderTestScene(const std::string& json, int threads = 0,
   RenderOptions options;
   options.threads = threads;
   return renderCpu(data.view(), options);
+}
+
+// Writes a square of half-side `half` in the plane y = 0 (two triangles facing +y) as an OBJ file
+// `name` in the test's temporary folder; returns its path.
+inline std::string writePlaneObj(const std::string& name, double half) {
+  const std::string path = ::testing::TempDir() + name;
+  std::ofstream f(path);
+  f << "v " << -half << " 0 " << -half << "\nv " << half << " 0 " << -half << "\nv " << half
+    << " 0 " << half << "\nv " << -half << " 0 " << half << "\nf 1 3 2\nf 1 4 3\n";
+  return path;
 }
 
 // Mean and standard deviation of one channel over a pixel rectangle [x0,x1) x [y0,y1).

@@ -157,19 +157,10 @@ TEST(ClosedForm, FurnaceAroundATriangleLightMatchesItsSeries) {
   EXPECT_NEAR(mean, 0.0, kZ * standardError + 2e-3);
 }
 
-// Writes a large square in the plane y = 0 (two triangles facing +y) into `dir`.
-std::string writePlaneObj(const std::string& name, double half) {
-  const std::string path = ::testing::TempDir() + name;
-  std::ofstream f(path);
-  f << "v " << -half << " 0 " << -half << "\nv " << half << " 0 " << -half << "\nv " << half
-    << " 0 " << half << "\nv " << -half << " 0 " << half << "\nf 1 3 2\nf 1 4 3\n";
-  return path;
-}
-
 // (b) A point light over a diffuse plane, no other geometry: the plane cannot see itself, so a
 // pixel shows exactly rho * color * P * cos(theta) / (4 pi^2 d^2) of the point it sees.
 TEST(ClosedForm, PointLightOverDiffusePlaneMatchesContractFormula) {
-  const std::string obj = writePlaneObj("plane_b.obj", 100);
+  const std::string obj = test::writePlaneObj("plane_b.obj", 100);
   const double rho = 0.6, power = 1000, lightY = 4, lightX = 1;
   const std::string scene = R"({
     "camera": {"width": 64, "height": 48, "fov": 70, "position": [0, 6, 0],
@@ -215,7 +206,7 @@ TEST(ClosedForm, PointLightOverDiffusePlaneMatchesContractFormula) {
 // shadow ray of its own (render/light.h, firstHitPointLights), so with pixel centres every pixel
 // shows the sum of their exact contributions, without the noise of a pick; five are picked from.
 void expectPointLightsSampledEachAtTheFirstHit(int count) {
-  const std::string obj = writePlaneObj("plane_each.obj", 100);
+  const std::string obj = test::writePlaneObj("plane_each.obj", 100);
   const double rho = 0.6;
   std::vector<PointLight> points;
   for (int i = 0; i < count; ++i)
@@ -326,7 +317,7 @@ TEST(ClosedForm, SphereLightSeenDirectlyAndInMirror) {
 // fully above the horizon is pi L (r/d)^2 cos(theta), so the plane shows rho L (r/d)^2 cos.
 // Light sampling and BSDF sampling share the estimate (MIS), so this checks their weights.
 TEST(ClosedForm, SphereLightOverDiffusePlaneMatchesIrradiance) {
-  const std::string obj = writePlaneObj("plane_e.obj", 100);
+  const std::string obj = test::writePlaneObj("plane_e.obj", 100);
   const double rho = 0.7, radius = 0.5, intensity = 500, lightX = 3, lightY = 2;
   const double L = intensity / (4 * kPi * kPi * radius * radius);
   // The light sits outside the camera's view, which looks straight down at the origin.
@@ -360,7 +351,7 @@ TEST(ClosedForm, SphereLightOverDiffusePlaneMatchesIrradiance) {
 // direct contributions (the sphere light's through MIS with the BSDF), each light picked through
 // the light tree, among few lights or many.
 void expectLightsSumToEveryContribution(int extraLights) {
-  const std::string obj = writePlaneObj("plane_f.obj", 100);
+  const std::string obj = test::writePlaneObj("plane_f.obj", 100);
   const double rho = 0.5;
   std::vector<PointLight> points = {{2, 3, 0, 900, Vec3(1, 0.5f, 0.25f)},
                                     {-3, 5, 1, 300, Vec3(0.2f, 0.6f, 1)}};

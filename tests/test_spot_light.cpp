@@ -7,7 +7,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <string>
 #include <utility>
 
@@ -25,14 +24,6 @@ std::string num(double v) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.9g", v);
   return buf;
-}
-
-std::string writePlaneObj(const std::string& name, double half) {
-  const std::string path = ::testing::TempDir() + name;
-  std::ofstream f(path);
-  f << "v " << -half << " 0 " << -half << "\nv " << half << " 0 " << -half << "\nv " << half
-    << " 0 " << half << "\nv " << -half << " 0 " << half << "\nf 1 3 2\nf 1 4 3\n";
-  return path;
 }
 
 // Where the ray through the centre of pixel (x, y) meets the plane y = 0.
@@ -75,7 +66,7 @@ struct DownSpot {
 
 // Nothing but the plane and the spot, pixel centres, one bounce: every pixel is exact.
 TEST(SpotLight, OverADiffusePlaneEveryPixelIsItsClosedForm) {
-  const std::string obj = writePlaneObj("spot_plane.obj", 100);
+  const std::string obj = test::writePlaneObj("spot_plane.obj", 100);
   const double rho = 0.6;
   const DownSpot spot{Vec3(1, 4, 0), 1000, 30, 15};
   const std::string scene = R"({
@@ -109,7 +100,7 @@ TEST(SpotLight, OverADiffusePlaneEveryPixelIsItsClosedForm) {
 // A spot among point lights and a sphere light, one light picked per sample through the light
 // tree, whose cones must not leave out the spot where it shines: the plane shows the sum.
 TEST(SpotLight, AmongPickedLightsThePlaneShowsTheSum) {
-  const std::string obj = writePlaneObj("spot_plane2.obj", 100);
+  const std::string obj = test::writePlaneObj("spot_plane2.obj", 100);
   const double rho = 0.5;
   const DownSpot spot{Vec3(-1, 3, 1), 900, 40, 10};
   const DownSpot point{Vec3(3, 5, -1), 300, 180, 180};  // for its pointLightOnPlane

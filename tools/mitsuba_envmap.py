@@ -77,6 +77,44 @@ def envmap_emitter(env, base_dir):
             'to_world': mi.ScalarTransform4f(M.tolist())}
 
 
+def parse_beside(scene, scene_file, tag):
+    """The harness's reading of `scene` (a dict), written for it beside scene_file, so that its
+    relative mesh paths still resolve."""
+    path = os.path.join(os.path.dirname(os.path.abspath(scene_file)),
+                        f'.mitsuba_{tag}_{os.getpid()}.json')
+    with open(path, 'w') as f:
+        json.dump(scene, f)
+    try:
+        return mr.parse_scene(path)
+    finally:
+        os.remove(path)
+
+
+def render_and_report(scene_file, sc, loaded, out, spp, seed, t_load, warm=False):
+    """Renders the loaded scene (a 1-spp warm-up first with `warm`), writes `out` and prints the
+    harness's two lines."""
+    spp = spp or sc['camera']['spp']
+    t_warm = None
+    if warm:
+        t1 = time.perf_counter()
+        mr.render(sc, loaded, 1, seed + 987654)
+        t_warm = time.perf_counter() - t1
+    t = time.perf_counter()
+    img = mr.render(sc, loaded, spp, seed)
+    seconds = time.perf_counter() - t
+    mr.write_exr(out, img)
+    W, H = sc['camera']['W'], sc['camera']['H']
+    ns = W * H * spp
+    msg = (f'{scene_file}: {W}x{H} spp={spp} variant=llvm_ad_rgb camera=mitsuba '
+           f'load={t_load:.2f}s render={seconds:.2f}s '
+           f'samples/s={ns / seconds:.4g} ({ns / seconds / 1e6:.3f} Msamples/s)')
+    if t_warm is not None:
+        msg += f' warmup(1spp)={t_warm:.2f}s'
+    print(msg)
+    print(f'mean rgb = {img.reshape(-1, 3).astype(np.float64).mean(0).tolist()}  '
+          f'nonfinite={int((~np.isfinite(img)).sum())}')
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -95,40 +133,13 @@ def main(argv=None):
                        (['--threads', str(a.threads)] if a.threads else []))
     if a.threads:
         dr.set_thread_count(a.threads)
-    base_dir = os.path.dirname(os.path.abspath(a.scene))
     t0 = time.perf_counter()
-    # Beside the original, so that its relative mesh paths still resolve.
-    stripped = os.path.join(base_dir, f'.mitsuba_envmap_{os.getpid()}.json')
-    with open(stripped, 'w') as f:
-        json.dump(scene, f)
-    try:
-        sc = mr.parse_scene(stripped)
-    finally:
-        os.remove(stripped)
+    sc = parse_beside(scene, a.scene, 'envmap')
     d = mr.scene_dict(sc, spp=a.spp)
-    d['envmap'] = envmap_emitter(env, base_dir)
+    d['envmap'] = envmap_emitter(env, os.path.dirname(os.path.abspath(a.scene)))
     loaded = mi.load_dict(d)
-    spp = a.spp or sc['camera']['spp']
-    t_load = time.perf_counter() - t0
-    t_warm = None
-    if a.time:
-        t1 = time.perf_counter()
-        mr.render(sc, loaded, 1, a.seed + 987654)
-        t_warm = time.perf_counter() - t1
-    t = time.perf_counter()
-    img = mr.render(sc, loaded, spp, a.seed)
-    seconds = time.perf_counter() - t
-    mr.write_exr(a.out, img)
-    W, H = sc['camera']['W'], sc['camera']['H']
-    ns = W * H * spp
-    msg = (f'{a.scene}: {W}x{H} spp={spp} variant=llvm_ad_rgb camera=mitsuba '
-           f'load={t_load:.2f}s render={seconds:.2f}s '
-           f'samples/s={ns / seconds:.4g} ({ns / seconds / 1e6:.3f} Msamples/s)')
-    if t_warm is not None:
-        msg += f' warmup(1spp)={t_warm:.2f}s'
-    print(msg)
-    print(f'mean rgb = {img.reshape(-1, 3).astype(np.float64).mean(0).tolist()}  '
-          f'nonfinite={int((~np.isfinite(img)).sum())}')
+    render_and_report(a.scene, sc, loaded, a.out, a.spp, a.seed, time.perf_counter() - t0,
+                      warm=a.time)
     return 0
 
 

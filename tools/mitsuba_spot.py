@@ -26,7 +26,9 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 REFERENCE = os.environ.get('CANDELA_REFERENCE_DIR',
                            os.path.join(HERE, '..', '..', 'shared', 'reference'))
 sys.path.insert(0, REFERENCE)
+sys.path.insert(0, HERE)
 
+import mitsuba_envmap  # noqa: E402  (parse_beside, render_and_report)
 import mitsuba_ref as mr  # noqa: E402  (the harness sets up mitsuba and drjit)
 
 mi, dr, np = mr.mi, mr.dr, mr.np
@@ -81,33 +83,14 @@ def main(argv=None):
         dr.set_thread_count(a.threads)
     with open(a.scene) as f:
         scene, spots = split_spots(json.load(f))
-    base_dir = os.path.dirname(os.path.abspath(a.scene))
     t0 = time.perf_counter()
-    # Beside the original, so that its relative mesh paths still resolve.
-    pointed = os.path.join(base_dir, f'.mitsuba_spot_{os.getpid()}.json')
-    with open(pointed, 'w') as f:
-        json.dump(scene, f)
-    try:
-        sc = mr.parse_scene(pointed)
-    finally:
-        os.remove(pointed)
+    sc = mitsuba_envmap.parse_beside(scene, a.scene, 'spot')
     d = mr.scene_dict(sc, spp=a.spp)
     for i, spot in spots.items():
         d[f'light{i}'] = spot_emitter(spot)
     loaded = mi.load_dict(d)
-    spp = a.spp or sc['camera']['spp']
-    t_load = time.perf_counter() - t0
-    t = time.perf_counter()
-    img = mr.render(sc, loaded, spp, a.seed)
-    seconds = time.perf_counter() - t
-    mr.write_exr(a.out, img)
-    W, H = sc['camera']['W'], sc['camera']['H']
-    ns = W * H * spp
-    print(f'{a.scene}: {W}x{H} spp={spp} variant=llvm_ad_rgb camera=mitsuba '
-          f'load={t_load:.2f}s render={seconds:.2f}s '
-          f'samples/s={ns / seconds:.4g} ({ns / seconds / 1e6:.3f} Msamples/s)')
-    print(f'mean rgb = {img.reshape(-1, 3).astype(np.float64).mean(0).tolist()}  '
-          f'nonfinite={int((~np.isfinite(img)).sum())}')
+    mitsuba_envmap.render_and_report(a.scene, sc, loaded, a.out, a.spp, a.seed,
+                                     time.perf_counter() - t0)
     return 0
 
 
