@@ -159,6 +159,17 @@ TEST(PlyLoader, ASceneObjectNamesAPlyFileInAnyCase) {
   EXPECT_FALSE(isPlyPath("a.obj"));
 }
 
+// An element without properties takes no bytes, so its count bounds nothing: skipping it one by
+// one once spun for 2^34 turns (found by ply_fuzzer).
+TEST(PlyLoader, AnElementOfNoPropertiesIsSkippedAtOnceWhateverItsCount) {
+  const std::string text =
+      "ply\nformat ascii 1.0\nelement nothing 18446744073709551615\nelement vertex 3\n"
+      "property float x\nproperty float y\nproperty float z\nelement face 1\n"
+      "property list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  const MeshDesc mesh = loadPlyFile(writeFile("nothing.ply", text), "nothing.ply");
+  EXPECT_EQ(mesh.triangles.size(), 1u);
+}
+
 TEST(PlyLoader, VertexColoursAreNamedInAWarning) {
   const std::string text =
       "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"

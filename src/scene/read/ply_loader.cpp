@@ -374,7 +374,7 @@ MeshDesc loadPlyFile(const std::string& path, const std::string& label) {
       readVertices(body, element, layout, mesh);
     } else if (&element == face) {
       readFaces(body, element, list, vertex->count, polygons);
-    } else {
+    } else if (!element.properties.empty()) {  // an element of none takes no bytes, however many
       for (uint64_t i = 0; i < element.count; ++i) {
         body.at(element.name, i);
         for (const PlyProperty& p : element.properties) body.skip(p);
