@@ -109,8 +109,7 @@ std::vector<uint32_t> lightPathOrder(const SceneData& s) {
 
 // The chances that a sample's light subpath starts from each light but the environment, by the
 // sum of its RGB power (as the light tree weighs lights; a spot's, by what leaves its cone), and
-// their running sums in
-// lightPathOrder (render/light.h).
+// their running sums in lightPathOrder (render/light.h).
 void setLightPathPicks(SceneData& s, const std::vector<LightBounds>& bounds) {
   std::vector<double> powers;
   for (uint32_t i = 0; i < s.lights.size(); ++i) {
