@@ -163,6 +163,43 @@ TEST(VertexNormals, EdgesAtTheCreaseAngleAreSmoothedWeightedByAngle) {
     }
 }
 
+// A fan of n triangles around the apex of a cone of half-angle `opening` (radians; pi/2 is a
+// flat disk), the apex at the origin, the rim at height -cos(opening).
+MeshDesc coneFan(int n, double opening) {
+  MeshDesc m;
+  m.positions.push_back(Vec3(0.0f));
+  for (int i = 0; i < n; ++i) {
+    const double phi = 2 * kPi * i / n;
+    m.positions.push_back(Vec3(float(std::sin(opening) * std::cos(phi)), float(-std::cos(opening)),
+                               float(-std::sin(opening) * std::sin(phi))));
+  }
+  for (int i = 0; i < n; ++i)
+    m.triangles.push_back(flatTriangle(0, uint32_t(1 + i), uint32_t(1 + (i + 1) % n)));
+  return m;
+}
+
+// However many faces meet at a vertex, the work stays near linear: where they all lie within the
+// crease (a flat disk's centre) their sum serves every corner; where they spread wider (a cone's
+// apex) past 4096 faces each corner keeps its own face's normal.
+TEST(VertexNormals, AVertexOfManyFacesCostsNoSquareOfThem) {
+  const MeshDesc disk = withComputedNormals(coneFan(200000, kPi / 2), 30);
+  for (const MeshTriangle& t : disk.triangles) {
+    const Vec3 n = disk.normals[t.n[0]];
+    EXPECT_NEAR(n.y, 1.0f, 1e-6f);
+  }
+  const MeshDesc apex = withComputedNormals(coneFan(20000, kPi / 4), 30);
+  for (const MeshTriangle& t : apex.triangles) {
+    const Vec3 n = apex.normals[t.n[0]], face = faceNormalOf(apex, t);
+    EXPECT_NEAR(dot(n, face), 1.0f, 1e-6f);
+  }
+  // Below the cap the apex's corners average the faces within the crease of their own.
+  const MeshDesc small = withComputedNormals(coneFan(64, kPi / 4), 30);
+  const Vec3 n = small.normals[small.triangles[0].n[0]],
+             face = faceNormalOf(small, small.triangles[0]);
+  EXPECT_LT(dot(n, face), 0.9999f);
+  EXPECT_GT(dot(n, face), 0.9f);
+}
+
 TEST(VertexNormals, TheFilesNormalsAndFacesOfNoAreaAreKept) {
   MeshDesc m = cube();
   m.normals.push_back(Vec3(0, 0, 1));

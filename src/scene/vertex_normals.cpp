@@ -82,6 +82,9 @@ FaceShape faceShape(const MeshDesc& mesh, const MeshTriangle& t) {
   return s;
 }
 
+// The most faces at one position whose corners are each weighed against all the others there.
+constexpr uint32_t kMostFacesCreasedAtAVertex = 4096;
+
 }  // namespace
 
 MeshDesc withComputedNormals(const MeshDesc& mesh, float creaseDegrees) {
@@ -111,13 +114,51 @@ MeshDesc withComputedNormals(const MeshDesc& mesh, float creaseDegrees) {
 
   // Each corner's normal. A little below the crease's cosine, so that faces meeting at exactly
   // the crease angle (a cube's at 90 degrees) are smoothed whichever way their products round.
-  const double minCos = std::cos(double(creaseDegrees) * (kPi / 180.0)) - 1e-6;
+  const double crease = double(creaseDegrees) * (kPi / 180.0);
+  const double minCos = std::cos(crease) - 1e-6;
   std::vector<Vec3> cornerNormals(corners.size());
+  const auto unit = [](double x, double y, double z, const Vec3& fallback) {
+    const double length = std::sqrt(x * x + y * y + z * z);
+    return length > 1e-9 ? Vec3(float(x / length), float(y / length), float(z / length)) : fallback;
+  };
   tbb::parallel_for(size_t(0), positionCount, [&](size_t w) {
-    for (uint32_t c = start[w]; c < start[w + 1]; ++c) {
+    const uint32_t first = start[w], end = start[w + 1];
+    if (first == end) return;
+    // The sum over every face here, and the cone holding the faces' normals (axis m, half-angle
+    // spread): a corner whose own normal lies within the crease less the spread of m has every
+    // face within the crease, and takes that sum as the loop below would add it. So a smooth
+    // vertex costs its faces, not their square, however many meet there.
+    double sx = 0, sy = 0, sz = 0, mx = 0, my = 0, mz = 0;
+    for (uint32_t o = first; o < end; ++o) {
+      const FaceShape& other = shapes[corners[o].face];
+      const double weight = other.angle[corners[o].k];
+      sx += weight * other.normal.x;
+      sy += weight * other.normal.y;
+      sz += weight * other.normal.z;
+      mx += other.normal.x;
+      my += other.normal.y;
+      mz += other.normal.z;
+    }
+    const Vec3 axis = unit(mx, my, mz, Vec3(0.0f));
+    double spread = isBlack(axis) ? kPi : 0.0;
+    for (uint32_t o = first; o < end && spread < crease; ++o)
+      spread = std::max(spread, std::acos(std::clamp(
+                                    double(dot(axis, shapes[corners[o].face].normal)), -1.0, 1.0)));
+    for (uint32_t c = first; c < end; ++c) {
       const Vec3& own = shapes[corners[c].face].normal;
+      const double fromAxis = std::acos(std::clamp(double(dot(own, axis)), -1.0, 1.0));
+      if (minCos <= -1.0 || fromAxis + spread <= crease) {
+        cornerNormals[c] = unit(sx, sy, sz, own);
+        continue;
+      }
+      // A vertex of more faces than modelling makes, with faces on both sides of the crease: its
+      // own face's normal, rather than a wait quadratic in its faces.
+      if (end - first > kMostFacesCreasedAtAVertex) {
+        cornerNormals[c] = own;
+        continue;
+      }
       double x = 0, y = 0, z = 0;
-      for (uint32_t o = start[w]; o < start[w + 1]; ++o) {
+      for (uint32_t o = first; o < end; ++o) {
         const FaceShape& other = shapes[corners[o].face];
         if (double(dot(own, other.normal)) < minCos) continue;
         const double weight = other.angle[corners[o].k];
@@ -125,22 +166,28 @@ MeshDesc withComputedNormals(const MeshDesc& mesh, float creaseDegrees) {
         y += weight * other.normal.y;
         z += weight * other.normal.z;
       }
-      const double length = std::sqrt(x * x + y * y + z * z);
-      cornerNormals[c] =
-          length > 1e-9 ? Vec3(float(x / length), float(y / length), float(z / length)) : own;
+      cornerNormals[c] = unit(x, y, z, own);
     }
   });
 
-  // The normals, once per position and value: where every face is smoothed, one per vertex.
+  // The normals, once per position and value: where every face is smoothed, one per vertex. A
+  // corner looks among the first few made at its position only, so that a position of thousands
+  // of creased faces costs no square of them (its later normals may repeat a value: more
+  // vertices, the same image).
+  constexpr size_t kNormalsSearched = 32;
   MeshDesc out = mesh;
   out.normals.reserve(out.normals.size() + positionCount);
   for (size_t w = 0; w < positionCount; ++w) {
     const size_t first = out.normals.size();
     for (uint32_t c = start[w]; c < start[w + 1]; ++c) {
       const Vec3& n = cornerNormals[c];
+      const size_t searched = std::min(out.normals.size(), first + kNormalsSearched);
       size_t index = first;
-      while (index < out.normals.size() && !sameValue(out.normals[index], n)) ++index;
-      if (index == out.normals.size()) out.normals.push_back(n);
+      while (index < searched && !sameValue(out.normals[index], n)) ++index;
+      if (index == searched) {
+        index = out.normals.size();
+        out.normals.push_back(n);
+      }
       out.triangles[corners[c].face].n[corners[c].k] = int32_t(index);
     }
   }
