@@ -223,6 +223,13 @@ TEST(PlyLoader, BrokenHeadersAreRefusedAtTheirLine) {
             "bad.ply: expected a mesh, got no faces (a point cloud?)");
 }
 
+// A number below the smallest double reads as 0, as in an OBJ file.
+TEST(PlyLoader, ANumberBelowTheSmallestDoubleIsZero) {
+  const MeshDesc mesh = loadPlyFile(
+      writeFile("tiny.ply", kAsciiHeader + "0 0 1e-400\n1 0 0\n0 1 0\n3 0 1 2\n"), "tiny.ply");
+  EXPECT_EQ(mesh.positions[0].z, 0.0f);
+}
+
 TEST(PlyLoader, BrokenAsciiBodiesAreRefusedAtTheirLine) {
   EXPECT_EQ(errorOf(kAsciiHeader + "0 0 0\n1 0 0\n0 1 zero\n3 0 1 2\n"),
             "bad.ply:12: vertex 2: expected a number, got \"zero\"");
@@ -234,6 +241,8 @@ TEST(PlyLoader, BrokenAsciiBodiesAreRefusedAtTheirLine) {
             "bad.ply:12: vertex 2: z is nan; expected a finite number");
   EXPECT_EQ(errorOf(kAsciiHeader + "0 0 0\n1 0 0\n0 1 1e39\n3 0 1 2\n"),
             "bad.ply:12: vertex 2: z is 1e+39, beyond single precision");
+  EXPECT_EQ(errorOf(kAsciiHeader + "0 0 0\n1 0 0\n0 1 1e400\n3 0 1 2\n"),
+            "bad.ply:12: vertex 2: the number \"1e400\" is out of range");
   EXPECT_EQ(errorOf(kAsciiHeader + "0 0 0\n1 0 0\n0 1 0\n3 0 1.5 2\n"),
             "bad.ply:13: face 0: expected an integer of type int, got \"1.5\"");
   EXPECT_EQ(errorOf(kAsciiHeader + "0 0 0\n1 0 0\n0 1 0\n"),

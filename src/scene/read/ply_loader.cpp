@@ -5,6 +5,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <limits>
 
@@ -106,8 +107,11 @@ class Body {
     if (parsed.ptr != last ||
         (parsed.ec != std::errc() && parsed.ec != std::errc::result_out_of_range))
       fail("expected a number, got " + shownText(token));
-    if (parsed.ec == std::errc::result_out_of_range)
-      fail("the number " + shownText(token) + " is out of range");
+    if (parsed.ec == std::errc::result_out_of_range) {
+      // As the OBJ reader: below the smallest double reads as 0, beyond the largest is refused.
+      v = std::strtod(std::string(token).c_str(), nullptr);
+      if (!std::isfinite(v)) fail("the number " + shownText(token) + " is out of range");
+    }
     if (isInteger(type) && !(v == std::floor(v) && inRange(v, type)))
       fail(std::string("expected an integer of type ") + typeName(type) + ", got " +
            shownText(token));
