@@ -121,52 +121,49 @@ MeshDesc withComputedNormals(const MeshDesc& mesh, float creaseDegrees) {
     const double length = std::sqrt(x * x + y * y + z * z);
     return length > 1e-9 ? Vec3(float(x / length), float(y / length), float(z / length)) : fallback;
   };
+  // The angle-weighted sum of the unit normals of the faces at corners [first, end), those within
+  // the crease of `own` only where one is given.
+  const auto weighedSum = [&](uint32_t first, uint32_t end, const Vec3* own) {
+    Dir sum{0, 0, 0};
+    for (uint32_t o = first; o < end; ++o) {
+      const FaceShape& other = shapes[corners[o].face];
+      if (own && double(dot(*own, other.normal)) < minCos) continue;
+      const double weight = other.angle[corners[o].k];
+      sum = {sum.x + weight * other.normal.x, sum.y + weight * other.normal.y,
+             sum.z + weight * other.normal.z};
+    }
+    return sum;
+  };
   tbb::parallel_for(size_t(0), positionCount, [&](size_t w) {
     const uint32_t first = start[w], end = start[w + 1];
     if (first == end) return;
-    // The sum over every face here, and the cone holding the faces' normals (axis m, half-angle
-    // spread): a corner whose own normal lies within the crease less the spread of m has every
-    // face within the crease, and takes that sum as the loop below would add it. So a smooth
-    // vertex costs its faces, not their square, however many meet there.
-    double sx = 0, sy = 0, sz = 0, mx = 0, my = 0, mz = 0;
+    // The cone holding the faces' normals here (axis, half-angle spread): a corner whose own
+    // normal lies within the crease less the spread of the axis has every face within the crease,
+    // and takes the sum over all of them, which weighedSum adds in the same order either way. So
+    // a smooth vertex costs its faces, not their square, however many meet there.
+    Dir m{0, 0, 0};
     for (uint32_t o = first; o < end; ++o) {
-      const FaceShape& other = shapes[corners[o].face];
-      const double weight = other.angle[corners[o].k];
-      sx += weight * other.normal.x;
-      sy += weight * other.normal.y;
-      sz += weight * other.normal.z;
-      mx += other.normal.x;
-      my += other.normal.y;
-      mz += other.normal.z;
+      const Vec3& n = shapes[corners[o].face].normal;
+      m = {m.x + n.x, m.y + n.y, m.z + n.z};
     }
-    const Vec3 axis = unit(mx, my, mz, Vec3(0.0f));
+    const Vec3 axis = unit(m.x, m.y, m.z, Vec3(0.0f));
     double spread = isBlack(axis) ? kPi : 0.0;
     for (uint32_t o = first; o < end && spread < crease; ++o)
       spread = std::max(spread, std::acos(std::clamp(
                                     double(dot(axis, shapes[corners[o].face].normal)), -1.0, 1.0)));
+    const Dir all = weighedSum(first, end, nullptr);
     for (uint32_t c = first; c < end; ++c) {
       const Vec3& own = shapes[corners[c].face].normal;
       const double fromAxis = std::acos(std::clamp(double(dot(own, axis)), -1.0, 1.0));
-      if (minCos <= -1.0 || fromAxis + spread <= crease) {
-        cornerNormals[c] = unit(sx, sy, sz, own);
-        continue;
-      }
-      // A vertex of more faces than modelling makes, with faces on both sides of the crease: its
-      // own face's normal, rather than a wait quadratic in its faces.
-      if (end - first > kMostFacesCreasedAtAVertex) {
+      const bool allWithin = minCos <= -1.0 || fromAxis + spread <= crease;
+      if (!allWithin && end - first > kMostFacesCreasedAtAVertex) {
+        // A vertex of more faces than modelling makes, with faces on both sides of the crease:
+        // its own face's normal, rather than a wait quadratic in its faces.
         cornerNormals[c] = own;
         continue;
       }
-      double x = 0, y = 0, z = 0;
-      for (uint32_t o = first; o < end; ++o) {
-        const FaceShape& other = shapes[corners[o].face];
-        if (double(dot(own, other.normal)) < minCos) continue;
-        const double weight = other.angle[corners[o].k];
-        x += weight * other.normal.x;
-        y += weight * other.normal.y;
-        z += weight * other.normal.z;
-      }
-      cornerNormals[c] = unit(x, y, z, own);
+      const Dir sum = allWithin ? all : weighedSum(first, end, &own);
+      cornerNormals[c] = unit(sum.x, sum.y, sum.z, own);
     }
   });
 

@@ -168,6 +168,12 @@ size_t plySize(PlyType type) {
   return 0;
 }
 
+const char* plyTypeName(PlyType type) {
+  for (const TypeName& t : kTypeNames)  // each type's first name is the specification's
+    if (t.type == type) return t.name;
+  return "?";
+}
+
 PlyHeader readPlyHeader(const std::string& bytes, const std::string& label) {
   return HeaderReader(bytes, label).read();
 }

@@ -21,7 +21,8 @@ namespace candela {
 enum class PlyFormat { Ascii, BinaryLittleEndian, BinaryBigEndian };
 enum class PlyType { Int8, Uint8, Int16, Uint16, Int32, Uint32, Float32, Float64 };
 
-size_t plySize(PlyType type);  // bytes of a binary value
+size_t plySize(PlyType type);           // bytes of a binary value
+const char* plyTypeName(PlyType type);  // as the specification spells it: "uchar", "float", ...
 
 struct PlyProperty {
   std::string name;

@@ -29,12 +29,6 @@ bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; }
 
 bool isInteger(PlyType t) { return t != PlyType::Float32 && t != PlyType::Float64; }
 
-const char* typeName(PlyType t) {
-  static const char* const kNames[] = {"char", "uchar", "short", "ushort",
-                                       "int",  "uint",  "float", "double"};
-  return kNames[int(t)];
-}
-
 // A number for a message, as printf's %g writes it.
 std::string shownNumber(double v) {
   char text[32];
@@ -113,7 +107,7 @@ class Body {
       if (!std::isfinite(v)) fail("the number " + shownText(token) + " is out of range");
     }
     if (isInteger(type) && !(v == std::floor(v) && inRange(v, type)))
-      fail(std::string("expected an integer of type ") + typeName(type) + ", got " +
+      fail(std::string("expected an integer of type ") + plyTypeName(type) + ", got " +
            shownText(token));
     offset_ = end;
     return v;
