@@ -266,7 +266,8 @@ TEST_F(CliTest, InfoPrintsTheSceneCounts) {
     "spheres": [{"position": [0, 0, -2], "radius": 1}],
     "objects": [{"file": "quad.obj", "material": {"type": "emissive", "radiance": 1}}],
     "lights": [{"position": [0, 3, 3], "intensity": 100},
-               {"type": "spot", "position": [0, 3, 3], "direction": [0, -1, 0], "intensity": 9}],
+               {"type": "spot", "position": [0, 3, 3], "direction": [0, -1, 0], "intensity": 9},
+               {"type": "directional", "direction": [1, -1, 0], "intensity": 2}],
     "environment": {"color": 0.1}
   })");
   const RunResult r = run("info mesh.json");
@@ -274,8 +275,8 @@ TEST_F(CliTest, InfoPrintsTheSceneCounts) {
   EXPECT_NE(r.out.find("triangles:  2\n"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("spheres:    1\n"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("objects:    1\n"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("lights:     5 (1 point, 1 spot, 0 emissive spheres, 2 emissive faces, "
-                       "the environment)\n"),
+  EXPECT_NE(r.out.find("lights:     6 (1 point, 1 spot, 1 directional, 0 emissive spheres, 2 "
+                       "emissive faces, the environment)\n"),
             std::string::npos)
       << r.out;
   EXPECT_NE(r.out.find("image:      32x24, 8 spp\n"), std::string::npos) << r.out;

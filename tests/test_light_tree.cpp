@@ -87,6 +87,8 @@ bool canReach(const SceneView& v, const Light& l, const Vec3& p, const Vec3& n) 
     }
     case LightType::Environment:
       break;
+    case LightType::Directional:
+      return anyDirection || dot(n, l.direction) < 0.0f;
   }
   return true;
 }
@@ -95,7 +97,7 @@ TEST(LightTree, ALonePointLightIsSampledWithoutAPick) {
   const SceneData lone = test::loadTestScene(R"({
     "camera": {"width": 4, "height": 4, "fov": 40},
     "lights": [{"position": [0, 1, 0], "intensity": 2}]})");
-  EXPECT_TRUE(lone.view().lonePointLight);
+  EXPECT_TRUE(lone.view().loneDeltaLight);
   EXPECT_TRUE(lone.lightTree.empty());
   EXPECT_EQ(lightSelectPmf(lone.view(), 0, Vec3(0.0f), Vec3(0, 1, 0)), 1.0f);
 }
@@ -107,7 +109,7 @@ TEST(LightTree, SeveralPointLightsArePickedByTheTree) {
     "lights": [{"position": [0, 1, 0], "intensity": 2},
                {"position": [0, 5, 0], "intensity": 3}]})");
   ASSERT_EQ(data.lights.size(), 2u);
-  EXPECT_FALSE(data.view().lonePointLight);
+  EXPECT_FALSE(data.view().loneDeltaLight);
   EXPECT_FALSE(data.lightTree.empty());
   // The nearer light is picked more often at a point below both, and the picks sum to one.
   const float near = lightSelectPmf(data.view(), 0, Vec3(0.0f), Vec3(0, 1, 0));
@@ -136,7 +138,8 @@ TEST(LightTree, EnvironmentTakesHalfThePicksBesideOtherLights) {
   const SceneView view = data.view();
   ASSERT_EQ(view.lightCount, 3u);
   ASSERT_GE(view.environment.light, 0);
-  EXPECT_EQ(view.environmentShare, 0.5f);
+  EXPECT_EQ(view.infiniteLightShare, 0.5f);
+  ASSERT_EQ(view.infiniteLightCount, 1u);
   const Vec3 p(0, 1, 0), n(0, 1, 0);
   EXPECT_EQ(lightSelectPmf(view, uint32_t(view.environment.light), p, n), 0.5f);
   float pmf = 0, remapped = 0;
@@ -149,7 +152,7 @@ TEST(LightTree, EnvironmentTakesHalfThePicksBesideOtherLights) {
   const SceneData alone = test::loadTestScene(R"({
     "camera": {"width": 4, "height": 4, "fov": 40}, "environment": {"color": 0.5},
     "spheres": [{"position": [0, -1000, 0], "radius": 1000}]})");
-  EXPECT_EQ(alone.view().environmentShare, 1.0f);
+  EXPECT_EQ(alone.view().infiniteLightShare, 1.0f);
   EXPECT_TRUE(alone.lightTree.empty());
   EXPECT_EQ(selectLight(alone.view(), p, n, 0.9f, &pmf, &remapped), alone.view().environment.light);
   EXPECT_EQ(pmf, 1.0f);
@@ -222,7 +225,7 @@ TEST(LightTree, PicksFollowTheirPmfWhichMissesNoLightThatReachesThePoint) {
   const SceneData data = randomLights(dir, 300, 7);
   const SceneView view = data.view();
   ASSERT_EQ(view.lightCount, 304u);
-  ASSERT_FALSE(view.lonePointLight);
+  ASSERT_FALSE(view.loneDeltaLight);
   int behind = 0, behindWithoutPmf = 0;
   expectPicksFollowTheirPmfs(view, 40, &behind, &behindWithoutPmf);
   EXPECT_GT(behind, 1000);  // the test saw many lights that cannot reach the point
@@ -321,7 +324,8 @@ double expectClusterHoldsItsLights(const SceneView& view, uint32_t index, int k,
         break;
       }
       case LightType::Environment:
-        ADD_FAILURE() << "the environment is not in the tree";
+      case LightType::Directional:
+        ADD_FAILURE() << "a light at infinity is not in the tree";
     }
   }
   return node.power[k];

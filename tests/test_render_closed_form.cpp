@@ -203,7 +203,7 @@ TEST(ClosedForm, PointLightOverDiffusePlaneMatchesContractFormula) {
 }
 
 // (b') Two to four point lights and nothing else: a path's first interaction samples each with a
-// shadow ray of its own (render/light.h, firstHitPointLights), so with pixel centres every pixel
+// shadow ray of its own (render/light.h, firstHitDeltaLights), so with pixel centres every pixel
 // shows the sum of their exact contributions, without the noise of a pick; five are picked from.
 void expectPointLightsSampledEachAtTheFirstHit(int count) {
   const std::string obj = test::writePlaneObj("plane_each.obj", 100);
@@ -221,7 +221,7 @@ void expectPointLightsSampledEachAtTheFirstHit(int count) {
     "objects": [{"file": ")" + obj + R"(", "color": )" + num(rho) + R"(}],
     "lights": [)" + lights + "]}");
   const bool each = count <= 4;
-  EXPECT_EQ(data.view().firstHitPointLights, each ? uint32_t(count) : 0u);
+  EXPECT_EQ(data.view().firstHitDeltaLights, each ? uint32_t(count) : 0u);
   const RenderResult r = renderCpu(data.view(), RenderOptions{});
   EXPECT_EQ(r.rays.shadow, (each ? uint64_t(count) : 1u) * 32u * 24u * 4u);
   double worst = 0;

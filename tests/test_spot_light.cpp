@@ -114,7 +114,7 @@ TEST(SpotLight, AmongPickedLightsThePlaneShowsTheSum) {
                             R"(, {"position": [3, 5, -1], "intensity": 300},
                {"position": [-4, 6, 4], "intensity": 0}]})";
   const SceneData data = test::loadTestScene(scene);
-  EXPECT_FALSE(data.view().lonePointLight);
+  EXPECT_FALSE(data.view().loneDeltaLight);
   const RenderResult r = renderCpu(data.view(), RenderOptions{});
   ImageRGB ratios(24, 24);
   for (uint32_t y = 0; y < 24; ++y)

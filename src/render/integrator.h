@@ -7,8 +7,8 @@
 // Light reaching interaction k <= max_depth counts, by a shadow ray (next-event estimation) or
 // by the ray scattered from k hitting an emitter or the environment; nothing beyond max_depth
 // scatters. Emitting spheres and triangles are reached both ways and combined with the power
-// heuristic, and so is the environment; point lights are reached by shadow rays and by
-// connections to the sample's light vertex (render/light_path.h), combined likewise.
+// heuristic, and so is the environment; point and directional lights are reached by shadow rays
+// and by connections to the sample's light vertex (render/light_path.h), combined likewise.
 #pragma once
 
 #include <cmath>
@@ -81,27 +81,27 @@ CANDELA_HDI void sampleOneLight(const SceneView& scene, uint32_t index, float se
   shadow->active = true;
 }
 
-// The two numbers a light sample of `light` uses, from the stream's next dimension. A point
+// The two numbers a light sample of `light` uses, from the stream's next dimension. A delta
 // light uses none: its dimension is passed over without computing them, so the stream's layout
 // is the same whatever the lights are.
 CANDELA_HDI void drawLightNumbers(SampleStream& rng, const Light& light, float* u1, float* u2) {
-  rng.next2DIfUsed(light.type != LightType::Point, u1, u2);
+  rng.next2DIfUsed(!isDeltaLight(light.type), u1, u2);
 }
 
 // Direct light at a point with a smooth BSDF lobe, whose reflecting hemisphere is around
 // `hemisphere` (reflectingHemisphere: zero where the surface also transmits), as a shadow query
-// (sampleOneLight, which `arrivalPdf` is passed to): from the scene's lone point light
-// (render/light.h, isLonePointLight), else from one light picked by its importance here
+// (sampleOneLight, which `arrivalPdf` is passed to): from the scene's lone delta light
+// (render/light.h, isLoneDeltaLight), else from one light picked by its importance here
 // (render/light_selection.h).
 CANDELA_HDI void estimateDirect(const SceneView& scene, const Bsdf& bsdf, const Vec3& hemisphere,
                                 const SurfacePoint& sp, const Vec3& throughput, float arrivalPdf,
                                 SampleStream& rng, ShadowQuery* shadow) {
-  // One dimension for the lone point light, or two for a picked one (the pick with its light's
+  // One dimension for the lone delta light, or two for a picked one (the pick with its light's
   // sample, and one passed over unless the pick's place in its share is too coarse), whatever
   // the geometry, so the stream's layout never depends on it (estimateDirectFromEach passes over
   // the same two).
   float u1 = 0.0f, u2 = 0.0f;
-  if (scene.lonePointLight) {
+  if (scene.loneDeltaLight) {
     drawLightNumbers(rng, scene.lights[0], &u1, &u2);
     sampleOneLight(scene, 0, 1.0f, bsdf, sp, u1, u2, throughput, arrivalPdf,
                    rayKeyFor(scene, rng, kShadowRay), shadow);
@@ -115,20 +115,20 @@ CANDELA_HDI void estimateDirect(const SceneView& scene, const Bsdf& bsdf, const 
                  rayKeyFor(scene, rng, kShadowRay), shadow);
 }
 
-// Direct light at a path's first interaction in a scene of a few point lights
-// (SceneView::firstHitPointLights): every light sampled, light k as the shadow query
+// Direct light at a path's first interaction in a scene of a few delta lights
+// (SceneView::firstHitDeltaLights): every light sampled, light k as the shadow query
 // lights->query[k]. The dimensions estimateDirect's pick draws are passed over, so the stream's
 // layout is the same as with a pick.
 CANDELA_HDI void estimateDirectFromEach(const SceneView& scene, const Bsdf& bsdf,
                                         const SurfacePoint& sp, const Vec3& throughput,
                                         SampleStream& rng, LightQueries* lights) {
-  static_assert(kEachPointLightUpTo <= kMaxLightQueries, "a query for each light");
-  rng.skip();  // the pick's pair of numbers (a point light uses none)
+  static_assert(kEachDeltaLightUpTo <= kMaxLightQueries, "a query for each light");
+  rng.skip();  // the pick's pair of numbers (a delta light uses none)
   rng.skip();  // the stand-in for the pick's place
-  for (uint32_t i = 0; i < scene.firstHitPointLights; ++i)
+  for (uint32_t i = 0; i < scene.firstHitDeltaLights; ++i)
     sampleOneLight(scene, i, 1.0f, bsdf, sp, 0.0f, 0.0f, throughput, 0.0f,
                    rayKeyFor(scene, rng, RayKind(kEachLightRay + i)), &lights->query.emplace(i));
-  lights->count = scene.firstHitPointLights;
+  lights->count = scene.firstHitDeltaLights;
 }
 
 // A path between its interactions: what it has gathered and what it carries to the next.
@@ -161,7 +161,7 @@ struct PathState {
 
 // Interaction path->depth, where path->ray found `hit` (`found` false: it left the scene): adds
 // what it sees there to path->radiance, leaves next-event estimation's shadow rays in *lights
-// (one, or at a first interaction one for each of a few point lights) and the connection to the
+// (one, or at a first interaction one for each of a few delta lights) and the connection to the
 // sample's light vertex in *connect (inactive when there is none) for the caller to trace, and
 // scatters path->ray onwards (at smooth glass within scene.glassSplitDepth, leaving the reflection
 // as a waiting branch: render/path_branch.h). False when the path ends here (its shadow queries
@@ -259,7 +259,7 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
       const float dist2 = dot(back, back);
       arrivalPdf = st.bsdfPdf * fabsf(dot(sp.ng, back)) / (dist2 * sqrtf(dist2));
     }
-    if (depth == 1 && scene.firstHitPointLights > 0) {
+    if (depth == 1 && scene.firstHitDeltaLights > 0) {
       estimateDirectFromEach(scene, bsdf, sp, st.throughput, rng, lights);
       for (uint32_t k = 0; k < lights->count; ++k) {
         counters.shadow += lights->query[k].active;

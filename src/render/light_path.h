@@ -76,7 +76,7 @@ CANDELA_HDI float lightVertexNeePdf(const SceneView& scene, LightVertex* lv) {
 }
 
 // The chance that a light subpath starts from light `index`: by power
-// (scene/flatten_lights.cpp, setLightPathPicks); the environment starts none.
+// (scene/flatten_lights.cpp, setLightPathPicks); the lights at infinity start none.
 CANDELA_HDI float lightPathPmf(const SceneView& scene, uint32_t index) {
   return scene.lights[index].pathPmf;
 }
@@ -150,7 +150,8 @@ CANDELA_HDI void traceLightVertex(const SceneView& scene, const Tracer& tracer, 
   rng.next2D(&u1, &u2);
   const uint32_t index = pickLightPathLight(scene, uPick);
   const Light& light = scene.lights[index];
-  const bool area = light.type != LightType::Point;
+  // A point light or a light with a surface: the lights at infinity start none (pathPmf 0).
+  const bool area = light.type == LightType::Sphere || light.type == LightType::Triangle;
   float v1 = 0.0f, v2 = 0.0f;
   if (scene.areaLightPaths) rng.next2DIfUsed(area, &v1, &v2);
   Ray ray;

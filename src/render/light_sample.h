@@ -1,10 +1,11 @@
-// Next-event estimation towards point lights, emitting spheres and triangles and the
-// environment.
+// Next-event estimation towards point and directional lights, emitting spheres and triangles and
+// the environment.
 //
-// A point light of power P seen from distance d contributes irradiance (P / 4 pi) cos / d^2.
+// A point light of power P seen from distance d contributes irradiance (P / 4 pi) cos / d^2; a
+// directional light of irradiance E, E cos.
 // A sphere is sampled uniformly by the solid angle of the cone it subtends, a triangle by the
-// solid angle it subtends or, where that is ill-conditioned, by area; either pdf can be evaluated again when a BSDF-sampled ray hits the emitter, for
-// multiple importance sampling (emitterPdf).
+// solid angle it subtends or, where that is ill-conditioned, by area; either pdf can be evaluated
+// again when a BSDF-sampled ray hits the emitter, for multiple importance sampling (emitterPdf).
 #pragma once
 
 #include <cmath>
@@ -21,9 +22,10 @@ namespace candela {
 struct LightSample {
   Vec3 wi;           // unit direction from the shading point towards the light
   float distance;    // to the sampled light point
-  Vec3 radiance;     // incident radiance (area light) or intensity / d^2 (point light)
-  float pdf;         // solid-angle density; 1 for point lights
-  bool isDelta;      // point lights cannot be hit by BSDF sampling
+  // Incident radiance (area light), intensity / d^2 (point light) or irradiance (directional).
+  Vec3 radiance;
+  float pdf;     // solid-angle density; 1 for delta lights
+  bool isDelta;  // delta lights cannot be hit by BSDF sampling (render/light.h, isDeltaLight)
 };
 
 // 1 - cos(theta_max) of the cone a sphere subtends, accurate also for tiny, far spheres.
@@ -68,6 +70,7 @@ CANDELA_HDI uint32_t lightPrimitive(const SceneView& scene, const Light& l) {
       return scene.sphereCount + l.shape;
     case LightType::Point:
     case LightType::Environment:
+    case LightType::Directional:
       break;
   }
   return 0xffffffffu;
@@ -85,6 +88,16 @@ CANDELA_HDI bool samplePointLight(const Light& l, const Vec3& p, LightSample* s)
     if (!(share > 0.0f)) return false;
     s->radiance *= share;
   }
+  s->pdf = 1.0f;
+  s->isDelta = true;
+  return true;
+}
+
+// A directional light shines along its direction from infinitely far, on every point alike.
+CANDELA_HDI bool sampleDirectionalLight(const Light& l, LightSample* s) {
+  s->wi = -l.direction;
+  s->distance = kInfinity;
+  s->radiance = l.power;
   s->pdf = 1.0f;
   s->isDelta = true;
   return true;
@@ -212,7 +225,7 @@ CANDELA_HDI bool sampleEnvironmentLight(const SceneView& scene, float u1, float 
   return true;
 }
 
-// A sample of light `l` as seen from p, from the uniform numbers (u1, u2) (a point light uses
+// A sample of light `l` as seen from p, from the uniform numbers (u1, u2) (a delta light uses
 // neither); false when the light shows p nothing.
 CANDELA_HDI bool sampleLight(const SceneView& scene, const Light& l, const Vec3& p, float u1,
                              float u2, LightSample* s) {
@@ -225,6 +238,8 @@ CANDELA_HDI bool sampleLight(const SceneView& scene, const Light& l, const Vec3&
       return sampleTriangleLight(scene, l, p, u1, u2, s);
     case LightType::Environment:
       return sampleEnvironmentLight(scene, u1, u2, s);
+    case LightType::Directional:
+      return sampleDirectionalLight(l, s);
   }
   return false;
 }
@@ -249,6 +264,7 @@ CANDELA_HDI float emitterPdf(const SceneView& scene, const Light& l, const Vec3&
     }
     case LightType::Point:
     case LightType::Environment:
+    case LightType::Directional:
       break;
   }
   return 0.0f;

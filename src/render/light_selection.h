@@ -1,7 +1,8 @@
-// Which light next-event estimation samples at a shading point, and with what probability: the
-// environment in its fixed share of the picks (SceneView::environmentShare), every other light
-// through the light tree by its importance at the point (render/light_tree.h). A scene whose only
-// light is a point light samples it without a pick instead (render/light.h, isLonePointLight).
+// Which light next-event estimation samples at a shading point, and with what probability: each
+// light at infinity (the environment, directional lights) in a fixed share of the picks of its
+// own (SceneView::infiniteLightShare), every other light through the light tree by its importance
+// at the point (render/light_tree.h). A scene whose only light is a point or directional light
+// samples it without a pick instead (render/light.h, isLoneDeltaLight).
 #pragma once
 
 #include "core/sobol_sampler.h"
@@ -15,16 +16,21 @@ namespace candela {
 // light can reach p.
 CANDELA_HDI int selectLight(const SceneView& scene, const Vec3& p, const Vec3& n, float u,
                             float* pmf, float* remapped) {
-  const float environment = scene.environmentShare;
-  if (u < environment) {
-    *pmf = environment;
-    *remapped = minf(u / environment, kOneMinusEpsilon);
-    return scene.environment.light;
+  const float share = scene.infiniteLightShare;
+  const float infinite = share * float(scene.infiniteLightCount);
+  // Without a tree the infinite lights take every pick, whatever share * count rounds to.
+  if (scene.infiniteLightCount > 0 && (u < infinite || scene.lightTreeNodeCount == 0)) {
+    const float place = u / share;
+    const uint32_t last = scene.infiniteLightCount - 1;
+    const uint32_t k = uint32_t(place) < last ? uint32_t(place) : last;
+    *pmf = share;
+    *remapped = minf(place - float(k), kOneMinusEpsilon);
+    return int(scene.infiniteLights[k]);
   }
   if (scene.lightTreeNodeCount == 0) return -1;
-  const float rest = 1.0f - environment;
+  const float rest = 1.0f - infinite;
   const int light = pickTreeLight(scene.lightTree, p, n,
-                                  minf((u - environment) / rest, kOneMinusEpsilon), pmf, remapped);
+                                  minf((u - infinite) / rest, kOneMinusEpsilon), pmf, remapped);
   *pmf *= rest;
   return light;
 }
@@ -56,11 +62,16 @@ CANDELA_HDI int selectLightForSample(const SceneView& scene, const Vec3& p, cons
 // The probability with which selectLight picks light `index` at p with hemisphere normal n.
 CANDELA_HDI float lightSelectPmf(const SceneView& scene, uint32_t index, const Vec3& p,
                                  const Vec3& n) {
-  if (scene.lonePointLight) return 1.0f;
+  if (scene.loneDeltaLight) return 1.0f;
   const Light& l = scene.lights[index];
-  if (l.type == LightType::Environment) return scene.environmentShare;
+  if (isInfiniteLight(l.type)) {  // a few at most: the environment and the directional lights
+    for (uint32_t k = 0; k < scene.infiniteLightCount; ++k)
+      if (scene.infiniteLights[k] == index) return scene.infiniteLightShare;
+    return 0.0f;
+  }
   if (l.trail == kNotInLightTree) return 0.0f;
-  return (1.0f - scene.environmentShare) * treeLightPmf(scene.lightTree, l.trail, p, n);
+  const float rest = 1.0f - scene.infiniteLightShare * float(scene.infiniteLightCount);
+  return rest * treeLightPmf(scene.lightTree, l.trail, p, n);
 }
 
 }  // namespace candela

@@ -17,7 +17,7 @@ enum RayKind : uint32_t {
   kBranchRay = 5,
   kLightRay = 6,
   // The shadow rays towards each of a few point lights at a first interaction
-  // (SceneView::firstHitPointLights): kEachLightRay + the light's index.
+  // (SceneView::firstHitDeltaLights): kEachLightRay + the light's index.
   kEachLightRay = 8,
 };
 

@@ -46,7 +46,7 @@ CANDELA_HDI void addSample(const SceneView& scene, const Vec3& L, const Ray& ray
 // many (a mesh lamp's triangles, picked one by one) they part, and packets of them were slower
 // than rays alone (docs/performance.md).
 constexpr uint32_t kShadowPacketsUpToLights = 4;
-static_assert(kEachPointLightUpTo <= kShadowPacketsUpToLights,
+static_assert(kEachDeltaLightUpTo <= kShadowPacketsUpToLights,
               "a scene whose every light is sampled at the first hit traces those rays as packets");
 
 // Samples [s, s + n) of a pixel, n <= Tracer::kPacketWidth, their paths in step up to their

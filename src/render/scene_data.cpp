@@ -16,15 +16,15 @@ SceneView SceneData::view() const {
   CANDELA_SCENE_ARRAYS(CANDELA_VIEW_OF)
 #undef CANDELA_VIEW_OF
   v.firstTriangleLight = firstTriangleLight;
-  v.lonePointLight = lonePointLight;
-  v.firstHitPointLights = firstHitPointLights;
+  v.loneDeltaLight = loneDeltaLight;
+  v.firstHitDeltaLights = firstHitDeltaLights;
   v.lightPathLights = settings.integrator == IntegratorType::Path && settings.maxDepth >= 2 &&
                               settings.lightPaths != LightPaths::Off
                           ? lightsStartingPaths
                           : 0;
   v.areaLightPaths = v.lightPathLights > 0 && areaLightsStartPaths;
   v.glassSplitDepth = kGlassSplitDepth;
-  v.environmentShare = environmentShare;
+  v.infiniteLightShare = infiniteLightShare;
   v.environment = environment;
   v.emissionReachable = !isBlack(environment.radiance);
   for (const Material& m : materials) v.emissionReachable |= m.type == MaterialType::Emissive;

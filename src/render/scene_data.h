@@ -36,13 +36,13 @@ struct OwnedArray<Vec3> {
 struct SceneData {
   CANDELA_SCENE_ARRAYS(CANDELA_OWNED_ARRAY)
   uint32_t firstTriangleLight = 0;
-  bool lonePointLight = false;
-  uint32_t firstHitPointLights = 0;  // SceneView::firstHitPointLights
+  bool loneDeltaLight = false;
+  uint32_t firstHitDeltaLights = 0;  // SceneView::firstHitDeltaLights
   // The lights that start light subpaths, when the view allows (render/light_path.h), and
   // whether any of them has a surface.
   uint32_t lightsStartingPaths = 0;
   bool areaLightsStartPaths = false;
-  float environmentShare = 0.0f;
+  float infiniteLightShare = 0.0f;
   Environment environment;
   // A hash of the bounds and powers of the lights the light tree was built over (0: no tree): a
   // frame with the same hash keeps the tree (scene/flatten_lights.cpp), and the GPU its copy

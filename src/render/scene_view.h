@@ -30,7 +30,8 @@ namespace candela {
 // to materials, is the motion of each material's instance to the next frame; only renders with
 // the flow pass have it.
 // lightPathOrder lists the lights in the order their light-subpath picks are laid out over
-// [0, 1) (render/light_path.h, pickLightPathLight).
+// [0, 1) (render/light_path.h, pickLightPathLight). infiniteLights lists the lights at infinity
+// that next-event estimation picks, each in a share of its own (render/light_selection.h).
 #define CANDELA_SHADING_ARRAYS(X)                                            \
   X(Material, materials, materialCount, Values)                              \
   X(Light, lights, lightCount, Values)                                       \
@@ -42,7 +43,8 @@ namespace candela {
   X(uint32_t, envMarginalGuide, envMarginalGuideCount, EnvironmentMap)       \
   X(float, envCellCorners, envCellCornerCount, EnvironmentMap)               \
   X(InstanceMotion, materialMotions, materialMotionCount, Values)            \
-  X(uint32_t, lightPathOrder, lightPathOrderCount, Values)
+  X(uint32_t, lightPathOrder, lightPathOrderCount, Values)                   \
+  X(uint32_t, infiniteLights, infiniteLightCount, Values)
 
 // Every array of the kernel's scene: SceneData, SceneData::view and the CUDA upload expand
 // this.
@@ -53,21 +55,21 @@ struct SceneView : GeometryView {
 
   uint32_t firstTriangleLight = 0;  // lights from here on are triangles (see lightOfPrimitive)
   // Whether the scene's one light is a point light, which next-event estimation samples without
-  // a pick (render/light.h, isLonePointLight).
-  bool lonePointLight = false;
+  // a pick (render/light.h, isLoneDeltaLight).
+  bool loneDeltaLight = false;
   // How many point lights a path's first interaction samples each of (render/light.h,
-  // firstHitPointLights); 0: one light is picked there too.
-  uint32_t firstHitPointLights = 0;
-  // How many lights start light subpaths (render/light_path.h): those with power but the
-  // environment, where the integrator is "path" and a path may have two interactions; 0 for
+  // firstHitDeltaLights); 0: one light is picked there too.
+  uint32_t firstHitDeltaLights = 0;
+  // How many lights start light subpaths (render/light_path.h): those with power but the lights
+  // at infinity, where the integrator is "path" and a path may have two interactions; 0 for
   // none. Where some of them have a surface, each subpath draws two numbers for its point.
   uint32_t lightPathLights = 0;
   bool areaLightPaths = false;
   // Paths follow both lobes of smooth glass at interactions up to this depth (0: at none), the
   // reflection as a branch (render/path_branch.h).
   uint32_t glassSplitDepth = 0;
-  // The share of picks that go to the environment light; the light tree has the rest.
-  float environmentShare = 0.0f;
+  // The share of the picks that goes to each of infiniteLights; the light tree has the rest.
+  float infiniteLightShare = 0.0f;
   Environment environment;
   // Whether a scattered ray can find any light: an emissive material (sphere lights included) or
   // a nonzero environment. Without, light arrives only by shadow rays to point lights, and the

@@ -25,7 +25,7 @@ struct ShadowQuery {
 
 // The most shadow queries next-event estimation leaves at one interaction: one for each point
 // light at a path's first interaction in scenes of a few point lights (render/light.h,
-// firstHitPointLights), else one.
+// firstHitDeltaLights), else one.
 constexpr uint32_t kMaxLightQueries = 4;
 
 // Next-event estimation's shadow queries at one interaction: query[0, count), each constructed by

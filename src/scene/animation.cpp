@@ -47,6 +47,12 @@ void applyToLight(LightDesc& light, AnimProperty property, const Vec3& v) {
     case AnimProperty::Intensity: light.intensity = v.x; break;
     case AnimProperty::Color: light.color = v; break;
     case AnimProperty::Radius: light.radius = v.x; break;
+    case AnimProperty::Direction:
+      light.direction = v;
+      break;
+    case AnimProperty::LookAt:
+      if (light.spot) light.spot->lookAt = v;
+      break;
     default: break;
   }
 }
@@ -73,6 +79,15 @@ CameraDesc cameraAtFrame(const CameraDesc& camera, const AnimationDesc& animatio
   for (const AnimTrack& track : animation.tracks)
     if (track.target == AnimTarget::Camera)
       applyToCamera(result, track.property, evaluateTrack(track, frame));
+  return result;
+}
+
+LightDesc lightAtFrame(const LightDesc& light, uint32_t index, const AnimationDesc& animation,
+                       uint32_t frame) {
+  LightDesc result = light;
+  for (const AnimTrack& track : animation.tracks)
+    if (track.target == AnimTarget::Light && track.index == index)
+      applyToLight(result, track.property, evaluateTrack(track, frame));
   return result;
 }
 

@@ -21,6 +21,10 @@ Vec3 evaluateTrack(const AnimTrack& track, uint32_t frame);
 // `camera` with the camera tracks of `animation` applied at `frame`.
 CameraDesc cameraAtFrame(const CameraDesc& camera, const AnimationDesc& animation, uint32_t frame);
 
+// Light `index` of a scene, `light`, with its tracks in `animation` applied at `frame`.
+LightDesc lightAtFrame(const LightDesc& light, uint32_t index, const AnimationDesc& animation,
+                       uint32_t frame);
+
 // The still scene at `frame`: every track applied, render.seed + frame, and no animation block.
 // Works for scenes without animation too (only the seed changes). A colour track on an object
 // without a material of its own makes it diffuse with that colour, as a static "color" would.

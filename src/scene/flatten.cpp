@@ -127,8 +127,8 @@ void addObject(SceneData& s, const ObjectDesc& obj, bool geometry, MeshLayouts& 
   }
 }
 
-// A point light (a spot light: with a cone), or a sphere light: an emissive sphere (of
-// sphereLightRadiance) that names the light, which in turn names the sphere.
+// A point light (a spot light: with a cone), a directional light, or a sphere light: an
+// emissive sphere (of sphereLightRadiance) that names the light, which in turn names the sphere.
 void addLight(SceneData& s, const LightDesc& d) {
   Light light;
   light.type = d.type;
@@ -136,6 +136,9 @@ void addLight(SceneData& s, const LightDesc& d) {
     light.position = d.position;
     light.power = lightPower(d);
     light.spot = spotCone(d);
+  } else if (d.type == LightType::Directional) {
+    light.direction = normalize(d.direction);
+    light.power = lightPower(d);  // the irradiance
   } else {
     Material emitter;
     emitter.type = MaterialType::Emissive;

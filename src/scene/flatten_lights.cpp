@@ -17,8 +17,8 @@ namespace {
 
 // What the light tree knows of light l: its box, the cone of its emitting normals, and the power
 // it weighs the light by, the sum of its RGB power (a surface of radiance L and area A emits
-// pi A L, from one side of a triangle, from all of a sphere). The environment, picked apart from
-// the tree (SceneView::environmentShare), has no power there.
+// pi A L, from one side of a triangle, from all of a sphere). The lights at infinity, picked
+// apart from the tree (SceneView::infiniteLightShare), have no power there.
 LightBounds lightBounds(const SceneData& s, const Light& l) {
   LightBounds b;
   switch (l.type) {
@@ -58,6 +58,7 @@ LightBounds lightBounds(const SceneData& s, const Light& l) {
       break;
     }
     case LightType::Environment:
+    case LightType::Directional:
       break;
   }
   return b;
@@ -107,14 +108,14 @@ std::vector<uint32_t> lightPathOrder(const SceneData& s) {
   return order;
 }
 
-// The chances that a sample's light subpath starts from each light but the environment, by the
+// The chances that a sample's light subpath starts from each light but those at infinity, by the
 // sum of its RGB power (as the light tree weighs lights; a spot's, by what leaves its cone), and
 // their running sums in lightPathOrder (render/light.h).
 void setLightPathPicks(SceneData& s, const std::vector<LightBounds>& bounds) {
   std::vector<double> powers;
   for (uint32_t i = 0; i < s.lights.size(); ++i) {
     const Light& l = s.lights[i];
-    double power = l.type == LightType::Environment ? 0.0 : bounds[i].power;
+    double power = isInfiniteLight(l.type) ? 0.0 : bounds[i].power;
     if (hasCone(l.spot))  // what leaves the cone
       power *= coneFluxShare(std::acos(double(l.spot.cosBeam)), double(l.spot.cutoff));
     powers.push_back(power);
@@ -149,6 +150,22 @@ void setLightPathPicks(SceneData& s, const std::vector<LightBounds>& bounds) {
   }
   // The last pick must hold every u < 1, whatever the rounding of the sums.
   for (uint32_t k = last; k < order.size(); ++k) s.lights[order[k]].pathCdf = 1.0f;
+}
+
+// The lights at infinity that send light, each picked in an equal share, as the light tree as a
+// whole is (pbrt-v4's BVHLightSampler does the same): a power estimated through the scene's
+// bounding sphere grows with the square of the scene's size, and a ground sphere of radius 1000
+// once made the environment's a million times a lamp's.
+void setInfiniteLightPicks(SceneData& s) {
+  for (uint32_t i = 0; i < s.lights.size(); ++i) {
+    const Light& l = s.lights[i];
+    const bool sends = l.type == LightType::Environment ? environmentMeanRadiance(s) > 0.0
+                                                        : componentSum(l.power) > 0.0;
+    if (isInfiniteLight(l.type) && sends) s.infiniteLights.push_back(i);
+  }
+  if (s.infiniteLights.empty()) return;
+  const size_t picks = s.infiniteLights.size() + (s.lightTree.empty() ? 0 : 1);
+  s.infiniteLightShare = 1.0f / float(picks);
 }
 
 }  // namespace
@@ -193,18 +210,16 @@ void addEmitterLights(SceneData& s, PreviousLights* previous) {
       s.lights.push_back(light);
     }
   }
-  s.lonePointLight = isLonePointLight(s.lights.data(), s.lights.size());
-  s.firstHitPointLights = firstHitPointLights(s.lights.data(), s.lights.size());
+  s.loneDeltaLight = isLoneDeltaLight(s.lights.data(), s.lights.size());
+  s.firstHitDeltaLights = firstHitDeltaLights(s.lights.data(), s.lights.size());
   std::vector<LightBounds> bounds;
   for (const Light& l : s.lights) bounds.push_back(lightBounds(s, l));
   setLightPathPicks(s, bounds);
   s.lightTree.clear();
   s.lightTreeHash = 0;
-  s.environmentShare = 0.0f;
-  if (s.lonePointLight) return;
-  // The environment takes half the picks beside other lights (as pbrt-v4's BVHLightSampler
-  // does): a power estimated through the scene's bounding sphere grows with the square of the
-  // scene's size, and a ground sphere of radius 1000 once made it a million times a lamp's.
+  s.infiniteLights.clear();
+  s.infiniteLightShare = 0.0f;
+  if (s.loneDeltaLight) return;
   s.lightTreeHash = lightTreeHash(bounds);
   if (previous && previous->hash == s.lightTreeHash) {
     s.lightTree = std::move(previous->tree);
@@ -214,8 +229,7 @@ void addEmitterLights(SceneData& s, PreviousLights* previous) {
     s.lightTree = buildLightTree(bounds, &trails);
     for (size_t i = 0; i < s.lights.size(); ++i) s.lights[i].trail = trails[i];
   }
-  if (s.environment.light >= 0 && environmentMeanRadiance(s) > 0.0)
-    s.environmentShare = s.lightTree.empty() ? 1.0f : 0.5f;
+  setInfiniteLightPicks(s);
 }
 
 }  // namespace candela

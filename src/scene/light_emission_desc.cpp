@@ -11,7 +11,8 @@ std::string lightEmissionProblem(const LightDesc& d) {
   const std::string factors =
       "intensity " + formatNumber(d.intensity) + " times color " + formatVec3(d.color);
   if (!isFinite(lightPower(d)))
-    return "its power, " + factors +
+    return std::string(d.type == LightType::Directional ? "its irradiance, " : "its power, ") +
+           factors +
            ", is beyond single precision; expected a smaller intensity "
            "or color";
   if (d.type == LightType::Sphere && !isFinite(sphereLightRadiance(d)))
@@ -26,7 +27,7 @@ SpotCone spotCone(const LightDesc& d) {
   SpotCone cone;
   if (!d.spot) return cone;
   const SpotDesc& spot = *d.spot;
-  cone.axis = normalize(spot.lookAt ? *spot.lookAt - d.position : spot.direction);
+  cone.axis = normalize(spot.lookAt ? *spot.lookAt - d.position : d.direction);
   const double cutoff = double(spot.cutoffDegrees) * (kPi / 180.0);
   const double beam = double(spot.beamDegrees) * (kPi / 180.0);
   cone.cosCutoff = float(std::cos(cutoff));

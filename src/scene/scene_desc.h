@@ -68,9 +68,9 @@ struct ObjectDesc {
   std::shared_ptr<const MeshDesc> mesh = std::make_shared<const MeshDesc>();
 };
 
-// A spot light's aim and cone (render/spot_cone.h), angles in degrees from its axis.
+// A spot light's cone (render/spot_cone.h), angles in degrees from its axis, and its aim when
+// that is a point (else LightDesc::direction).
 struct SpotDesc {
-  Vec3 direction;              // where it points, unless lookAt is given
   std::optional<Vec3> lookAt;  // the point it points at, from wherever it is at a frame
   float cutoffDegrees = 20;
   float beamDegrees = 15;
@@ -80,9 +80,14 @@ struct LightDesc {
   std::string id;
   std::string where;
   LightType type = LightType::Point;  // a spot light is a point light with a cone
-  Vec3 position;
+  Vec3 position;                      // all but directional lights
+  // Where a directional light's light travels, or where a spot light points (unless it has a
+  // look_at); not of unit length.
+  Vec3 direction;
   float radius = 0;  // sphere lights
-  float intensity = 0;  // total emitted power (a spot's: that of the point light it limits)
+  // Total emitted power (a spot's: that of the point light it limits); a directional light's
+  // irradiance on a surface facing it.
+  float intensity = 0;
   Vec3 color{1.0f};
   std::optional<SpotDesc> spot;
 };
@@ -119,8 +124,18 @@ struct EnvironmentDesc {
 
 enum class AnimTarget { Camera, Sphere, Object, Light };
 enum class AnimProperty {
-  Position, Rotation, LookAt, Up, Fov, ApertureRadius, FocusDistance,  // camera
-  Radius, Color, Scale, Intensity                                       // entities
+  Position,
+  Rotation,
+  LookAt,
+  Up,
+  Fov,
+  ApertureRadius,
+  FocusDistance,  // camera
+  Radius,
+  Color,
+  Scale,
+  Intensity,
+  Direction  // entities
 };
 
 // One key: the value at `frame`. Scalars are stored in all three components, so that per-component

@@ -29,7 +29,7 @@ int runInfo(const InfoOptions& options) {
   std::printf("spheres:    %zu\n", desc.spheres.size());
   std::printf("objects:    %zu\n", desc.objects.size());
   std::printf("triangles:  %zu\n", scene.triangles.size());
-  size_t points = 0, spots = 0, spheres = 0, faces = 0;
+  size_t points = 0, spots = 0, directional = 0, spheres = 0, faces = 0;
   bool environment = false;
   for (const Light& l : scene.lights) {
     switch (l.type) {
@@ -45,11 +45,16 @@ int runInfo(const InfoOptions& options) {
       case LightType::Environment:
         environment = true;
         break;
+      case LightType::Directional:
+        ++directional;
+        break;
     }
   }
-  std::printf("lights:     %zu (%zu point, %zu spot, %zu emissive spheres, %zu emissive faces%s)\n",
-              scene.lights.size(), points, spots, spheres, faces,
-              environment ? ", the environment" : "");
+  std::printf(
+      "lights:     %zu (%zu point, %zu spot, %zu directional, %zu emissive spheres, %zu emissive "
+      "faces%s)\n",
+      scene.lights.size(), points, spots, directional, spheres, faces,
+      environment ? ", the environment" : "");
   std::printf("materials:  %zu\n", scene.materials.size());
 
   Vec3 lo, hi;

@@ -31,10 +31,10 @@ const std::vector<PropertyName>& propertiesOf(AnimTarget target) {
                                                    {"rotation", AnimProperty::Rotation},
                                                    {"scale", AnimProperty::Scale},
                                                    {"color", AnimProperty::Color}};
-  static const std::vector<PropertyName> light = {{"position", AnimProperty::Position},
-                                                  {"intensity", AnimProperty::Intensity},
-                                                  {"color", AnimProperty::Color},
-                                                  {"radius", AnimProperty::Radius}};
+  static const std::vector<PropertyName> light = {
+      {"position", AnimProperty::Position},   {"intensity", AnimProperty::Intensity},
+      {"color", AnimProperty::Color},         {"radius", AnimProperty::Radius},
+      {"direction", AnimProperty::Direction}, {"look_at", AnimProperty::LookAt}};
   switch (target) {
     case AnimTarget::Camera: return camera;
     case AnimTarget::Sphere: return sphere;
@@ -129,6 +129,8 @@ Vec3 readValue(const JsonValue& value, AnimProperty property) {
     case AnimProperty::Radius: return Vec3(value.positiveNumber());
     case AnimProperty::Color: return value.colour();
     case AnimProperty::Scale: return readScale(value);
+    case AnimProperty::Direction:
+      return readDirection(value);
   }
   return Vec3(0.0f);
 }
@@ -186,9 +188,31 @@ void checkUsed(const JsonValue& property, const AnimTrack& track, const SceneDes
     }
   } else if (track.target == AnimTarget::Light) {
     const LightDesc& light = scene.lights[track.index];
-    if (track.property == AnimProperty::Radius && light.type == LightType::Point)
-      unused(std::string(light.spot ? "a spot light" : "a point light") +
-             " (only \"sphere\" lights have a radius)");
+    const bool directional = light.type == LightType::Directional;
+    const std::string name = light.type == LightType::Sphere ? "a sphere light"
+                             : directional                   ? "a directional light"
+                             : light.spot                    ? "a spot light"
+                                                             : "a point light";
+    switch (track.property) {
+      case AnimProperty::Radius:
+        if (light.type != LightType::Sphere)
+          unused(name + " (only \"sphere\" lights have a radius)");
+        break;
+      case AnimProperty::Position:
+        if (directional) unused(name + " (it shines from infinitely far)");
+        break;
+      case AnimProperty::Direction:
+        if (!directional && !light.spot)
+          unused(name + " (only \"spot\" and \"directional\" lights have a direction)");
+        if (light.spot && light.spot->lookAt) unused("a spot light aimed with \"look_at\"");
+        break;
+      case AnimProperty::LookAt:
+        if (!light.spot || !light.spot->lookAt)
+          unused(name + " (only a spot light aimed with \"look_at\" has one)");
+        break;
+      default:
+        break;
+    }
   } else if (track.property == AnimProperty::Color) {
     const Material* m = track.target == AnimTarget::Sphere
                                 ? &scene.spheres[track.index].material
@@ -244,17 +268,31 @@ void checkCameraAtEveryFrame(const JsonValue& value, const AnimationDesc& animat
   }
 }
 
-// A spot light aimed with look_at must not reach that point at any frame its position moves.
-void checkSpotsAtEveryFrame(const AnimationDesc& animation, const SceneDesc& scene,
-                            const std::string& file) {
-  for (const AnimTrack& t : animation.tracks) {
-    if (t.target != AnimTarget::Light || t.property != AnimProperty::Position) continue;
-    const LightDesc& light = scene.lights[t.index];
-    if (!light.spot || !light.spot->lookAt) continue;
-    for (uint32_t frame = 0; frame < animation.frames; ++frame)
-      if (isBlack(*light.spot->lookAt - evaluateTrack(t, frame)))
-        failAt(file, t.where,
-               "at frame " + std::to_string(frame) + " the spot light looks at its own position");
+// A light's aim must make a direction at every frame: a spot light aimed with look_at must not
+// reach that point as either moves, and an animated direction must not pass through zero between
+// its keys. The fault is put on the light's last track of position, look_at or direction.
+void checkAimsAtEveryFrame(const AnimationDesc& animation, const SceneDesc& scene,
+                           const std::string& file) {
+  for (uint32_t i = 0; i < scene.lights.size(); ++i) {
+    const LightDesc& light = scene.lights[i];
+    if (!light.spot && light.type != LightType::Directional) continue;
+    const AnimTrack* aim = nullptr;
+    for (const AnimTrack& t : animation.tracks)
+      if (t.target == AnimTarget::Light && t.index == i &&
+          (t.property == AnimProperty::Position || t.property == AnimProperty::LookAt ||
+           t.property == AnimProperty::Direction))
+        aim = &t;
+    if (!aim) continue;
+    for (uint32_t frame = 0; frame < animation.frames; ++frame) {
+      const LightDesc at = lightAtFrame(light, i, animation, frame);
+      const std::string when = "at frame " + std::to_string(frame);
+      if (at.spot && at.spot->lookAt) {
+        if (isBlack(*at.spot->lookAt - at.position))
+          failAt(file, aim->where, when + " the spot light looks at its own position");
+      } else if (!(lengthSquared(normalize(at.direction)) > 0.5f)) {
+        failAt(file, aim->where, when + " the light's direction is zero");
+      }
+    }
   }
 }
 
@@ -292,7 +330,7 @@ AnimationDesc readAnimation(const JsonValue& value, const SceneDesc& scene) {
   fields.finish();
   checkLens(value, animation, scene);
   checkCameraAtEveryFrame(value, animation, scene);
-  checkSpotsAtEveryFrame(animation, scene, value.file());
+  checkAimsAtEveryFrame(animation, scene, value.file());
   return animation;
 }
 

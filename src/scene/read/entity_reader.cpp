@@ -31,13 +31,13 @@ void readSmooth(const JsonValue& smooth, ObjectDesc& object) {
   object.creaseDegrees = float(degrees);
 }
 
-// A spot light's aim ("direction" or "look_at") and cone ("cutoff_angle", "beam_width").
-SpotDesc readSpot(JsonObject& fields, const Vec3& position) {
+// A spot light's aim ("direction", into *direction, or "look_at") and cone ("cutoff_angle",
+// "beam_width").
+SpotDesc readSpot(JsonObject& fields, const Vec3& position, Vec3* direction) {
   SpotDesc spot;
   fields.exclusive("direction", "look_at");
-  if (std::optional<JsonValue> direction = fields.get("direction")) {
-    spot.direction = direction->vec3();
-    if (isBlack(spot.direction)) direction->failExpected("a direction of non-zero length");
+  if (std::optional<JsonValue> aim = fields.get("direction")) {
+    *direction = readDirection(*aim);
   } else if (std::optional<JsonValue> lookAt = fields.get("look_at")) {
     spot.lookAt = lookAt->vec3();
     if (isBlack(*spot.lookAt - position)) lookAt->fail("the spot light looks at its own position");
@@ -79,6 +79,15 @@ Vec3 readScale(const JsonValue& value) {
     if (scale[i] == 0) elements[i].failExpected(expectation);
   }
   return scale;
+}
+
+// A vector whose unit vector single precision can make: not zero, nor one whose squared length
+// underflows or overflows.
+Vec3 readDirection(const JsonValue& value) {
+  const Vec3 direction = value.vec3();
+  const float unit = lengthSquared(normalize(direction));
+  if (!(unit > 0.5f && unit < 2.0f)) value.failExpected("a direction of non-zero length");
+  return direction;
 }
 
 SphereDesc readSphere(const JsonValue& value, const MaterialLibrary& library,
@@ -127,26 +136,36 @@ LightDesc readLight(const JsonValue& value) {
   LightDesc light;
   light.where = value.path();
   light.id = readId(fields);
-  size_t kind = 0;  // point, sphere or spot
+  enum Kind { kPoint, kSphere, kSpot, kDirectional };
+  size_t kind = kPoint;
   if (std::optional<JsonValue> type = fields.get("type"))
-    kind = type->choice({"point", "sphere", "spot"});
-  light.type = kind == 1 ? LightType::Sphere : LightType::Point;
-  light.position = fields.require("position").vec3();
+    kind = type->choice({"point", "sphere", "spot", "directional"});
+  static const char* const names[] = {"a point light", "a sphere light", "a spot light",
+                                      "a directional light"};
+  const std::string notUsed = std::string("not used by ") + names[kind];
+  light.type = kind == kSphere        ? LightType::Sphere
+               : kind == kDirectional ? LightType::Directional
+                                      : LightType::Point;
+  if (kind == kDirectional)
+    fields.reject("position", notUsed + " (it shines from infinitely far along its \"direction\")");
+  else
+    light.position = fields.require("position").vec3();
   light.intensity = fields.require("intensity").nonNegativeNumber();
   if (std::optional<JsonValue> color = fields.get("color")) light.color = color->colour();
-  const char* const name =
-      kind == 0 ? "a point light" : (kind == 1 ? "a sphere light" : "a spot light");
-  if (light.type == LightType::Sphere)
+  if (kind == kSphere)
     light.radius = fields.require("radius").positiveNumber();
   else
-    fields.reject("radius",
-                  std::string("not used by ") + name + " (only \"sphere\" lights have a radius)");
-  if (kind == 2) {
-    light.spot = readSpot(fields, light.position);
+    fields.reject("radius", notUsed + " (only \"sphere\" lights have a radius)");
+  if (kind == kSpot) {
+    light.spot = readSpot(fields, light.position, &light.direction);
   } else {
-    for (const char* key : {"direction", "look_at", "cutoff_angle", "beam_width"})
-      fields.reject(key,
-                    std::string("not used by ") + name + " (only \"spot\" lights have a cone)");
+    if (kind == kDirectional)
+      light.direction = readDirection(fields.require("direction"));
+    else
+      fields.reject("direction",
+                    notUsed + " (only \"spot\" and \"directional\" lights have a direction)");
+    for (const char* key : {"look_at", "cutoff_angle", "beam_width"})
+      fields.reject(key, notUsed + " (only \"spot\" lights have a cone)");
   }
   fields.finish();
   return light;
