@@ -1,15 +1,18 @@
 #!/usr/bin/env python3
-"""Renders a candela scene with spot lights with Mitsuba 3, for reference images.
+"""Renders a candela scene with spot or directional lights with Mitsuba 3, for reference images.
 
 The shared harness (../shared/reference/mitsuba_ref.py) maps the original scene contract, whose
-lights are point and sphere lights; this adds spot lights and hands everything else to it.
+lights are point and sphere lights; this adds spot and directional lights (and an environment
+map, as tools/mitsuba_envmap.py maps it) and hands everything else to it.
 
-    /tmp/mi/bin/python tools/mitsuba_spot.py SCENE.json OUT.exr [--spp N] [--seed S]
-                                             [--threads T]
+    /tmp/mi/bin/python tools/mitsuba_lights.py SCENE.json OUT.exr [--spp N] [--seed S]
+                                               [--threads T]
 
 It prints the harness's two lines (the timing line, then `mean rgb = ...`).
 
-Mapping: a candela spot light (docs/scene-format.md, Lights) is Mitsuba's `spot` with the same
+Mapping: a candela directional light is Mitsuba's `directional` with the same `direction` and
+its `irradiance` color * intensity (both the irradiance of a surface facing the light). A spot
+light (docs/scene-format.md, Lights) is Mitsuba's `spot` with the same
 `cutoff_angle` and `beam_width` (both renderers fall off linearly in angle between them), its
 `intensity` the radiant intensity of the point light it limits, color * intensity / (4 pi), as the
 harness maps a point light, and its `to_world` a look-at from its position along its direction (or
@@ -28,7 +31,7 @@ REFERENCE = os.environ.get('CANDELA_REFERENCE_DIR',
 sys.path.insert(0, REFERENCE)
 sys.path.insert(0, HERE)
 
-import mitsuba_envmap  # noqa: E402  (parse_beside, render_and_report)
+import mitsuba_envmap  # noqa: E402  (environment_map, parse_beside, render_and_report)
 import mitsuba_ref as mr  # noqa: E402  (the harness sets up mitsuba and drjit)
 
 mi, dr, np = mr.mi, mr.dr, mr.np
@@ -36,18 +39,36 @@ mi, dr, np = mr.mi, mr.dr, mr.np
 SPOT_KEYS = ('direction', 'look_at', 'cutoff_angle', 'beam_width')
 
 
-def split_spots(scene):
-    """The scene with its spot lights made point lights for the harness, and the spots by index."""
+def split_lights(scene):
+    """The scene for the harness, with its spot lights made point lights and its directional
+    lights taken out; the spots by index, and the directional lights' Mitsuba emitters."""
     spots = {}
+    directional = []
+    harness_lights = []
     for i, light in enumerate(scene.get('lights', [])):
+        if light.get('type') == 'directional':
+            directional.append(directional_emitter(light))
+            continue
         if light.get('type') == 'spot':
-            spots[i] = {k: light[k] for k in SPOT_KEYS if k in light}
-            spots[i].update(position=light['position'], intensity=light['intensity'],
-                            color=light.get('color', 1.0))
+            spots[len(harness_lights)] = {k: light[k] for k in SPOT_KEYS if k in light}
+            spots[len(harness_lights)].update(position=light['position'],
+                                              intensity=light['intensity'],
+                                              color=light.get('color', 1.0))
             light['type'] = 'point'
             for k in SPOT_KEYS:
                 light.pop(k, None)
-    return scene, spots
+        harness_lights.append(light)
+    scene['lights'] = harness_lights
+    return scene, spots, directional
+
+
+def rgb_of(color):
+    return np.array(color if isinstance(color, list) else [color] * 3, dtype=np.float64)
+
+
+def directional_emitter(light):
+    return {'type': 'directional', 'direction': [float(x) for x in light['direction']],
+            'irradiance': mr.rgb(rgb_of(light.get('color', 1.0)) * light['intensity'])}
 
 
 def spot_emitter(spot):
@@ -58,11 +79,9 @@ def spot_emitter(spot):
         axis = np.array(spot['direction'], dtype=np.float64)
     axis /= np.linalg.norm(axis)
     up = [0.0, 1.0, 0.0] if abs(axis[1]) < 0.9 else [1.0, 0.0, 0.0]
-    color = spot['color'] if isinstance(spot['color'], list) else [spot['color']] * 3
     cutoff = float(spot.get('cutoff_angle', 20.0))
     return {'type': 'spot',
-            'intensity': mr.rgb(np.array(color, dtype=np.float64) * spot['intensity'] /
-                                (4 * math.pi)),
+            'intensity': mr.rgb(rgb_of(spot['color']) * spot['intensity'] / (4 * math.pi)),
             'cutoff_angle': cutoff,
             'beam_width': float(spot.get('beam_width', 0.75 * cutoff)),
             'to_world': mi.ScalarTransform4f().look_at(origin=position.tolist(),
@@ -81,13 +100,20 @@ def main(argv=None):
     mi.set_variant('llvm_ad_rgb')
     if a.threads:
         dr.set_thread_count(a.threads)
-    with open(a.scene) as f:
-        scene, spots = split_spots(json.load(f))
+    env, scene = mitsuba_envmap.environment_map(a.scene)
+    if env is None:
+        with open(a.scene) as f:
+            scene = json.load(f)
+    scene, spots, directional = split_lights(scene)
     t0 = time.perf_counter()
-    sc = mitsuba_envmap.parse_beside(scene, a.scene, 'spot')
+    sc = mitsuba_envmap.parse_beside(scene, a.scene, 'lights')
     d = mr.scene_dict(sc, spp=a.spp)
     for i, spot in spots.items():
         d[f'light{i}'] = spot_emitter(spot)
+    for i, emitter in enumerate(directional):
+        d[f'directional{i}'] = emitter
+    if env is not None:
+        d['envmap'] = mitsuba_envmap.envmap_emitter(env, os.path.dirname(os.path.abspath(a.scene)))
     loaded = mi.load_dict(d)
     mitsuba_envmap.render_and_report(a.scene, sc, loaded, a.out, a.spp, a.seed,
                                      time.perf_counter() - t0)
