@@ -1,8 +1,9 @@
 // Directional lights: irradiance E along one direction from infinitely far (Mitsuba 3's
-// `directional`). Against closed forms: the plane under a lone directional light pixel for pixel,
-// a sphere's shadow on it, a few delta lights each sampled at the first hit, and a directional
-// light among picked lights; the picks of the lights at infinity; the scene format's refusals and
-// its animated directions.
+// `directional`), or from a disc of directions (a sun's angle). Against closed forms: the plane
+// under a lone directional light pixel for pixel, a sphere's shadow on it, a few delta lights each
+// sampled at the first hit, a directional light among picked lights, the plane under a disc and
+// the disc seen; a disc's penumbra against a far sphere light's; the picks of the lights at
+// infinity; the scene format's refusals and its animated directions.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -196,6 +197,107 @@ TEST(DirectionalLight, AmongPickedLightsThePlaneShowsTheSum) {
   EXPECT_NEAR(s.mean, 1.0, kZ * s.standardError() + 1e-3);
 }
 
+// A sun with a disc (an angle): a surface facing it still receives its irradiance E, now from a
+// cone of uniform radiance E / (pi sin^2 r), next-event estimation's samples and the BSDF's that
+// find the disc weighted against each other. A disc wide enough for the BSDF's samples to find.
+TEST(DirectionalLight, ADiscLightsThePlaneWithTheIrradianceOfItsDirection) {
+  const std::string obj = test::writePlaneObj("directional_plane4.obj", 100);
+  const double rho = 0.5;
+  const Sun sun{0.5, -1.0, 0.0, 2.0};
+  const SceneData data = test::loadTestScene(R"({
+    "camera": {"width": 24, "height": 24, "fov": 50, "position": [0, 8, 0],
+               "look_at": [0, 0, 0.001], "up": [0, 0, -1], "spp": 64},
+    "render": {"max_depth": 1, "antialiasing": false},
+    "objects": [{"file": ")" + obj + R"(", "color": )" +
+                                             num(rho) + R"(}],
+    "lights": [{"type": "directional", "direction": [0.5, -1, 0], "intensity": 2,
+                "angle": 40}]})");
+  EXPECT_FALSE(data.view().loneDeltaLight);
+  EXPECT_TRUE(data.view().sunDiscs);
+  const RenderResult r = renderCpu(data.view(), RenderOptions{});
+  EXPECT_GT(r.rays.bounce, 0u);  // the BSDF's rays are traced: they may find the disc
+  ImageRGB ratios(24, 24);
+  for (uint32_t y = 0; y < 24; ++y)
+    for (uint32_t x = 0; x < 24; ++x)
+      ratios.set(x, y, Vec3(float(r.image.at(x, y).x / sun.onPlane(rho))));
+  const test::RegionStats s = test::regionStats(ratios, 0, 0, 24, 24, 0);
+  EXPECT_NEAR(s.mean, 1.0, kZ * s.standardError() + 1e-3);
+  EXPECT_GT(s.standardError(), 0.0);  // noise, not a delta light's exact value
+}
+
+// Looking at the sun: every pixel whose ray lies within the disc shows its radiance
+// E / (pi sin^2 r), every other pixel the black sky.
+TEST(DirectionalLight, ItsDiscIsSeenWithTheRadianceOfItsIrradiance) {
+  const double angle = 6, irradiance = 3;
+  const SceneData data = test::loadTestScene(R"({
+    "camera": {"width": 32, "height": 32, "fov": 10, "position": [0, 0, 0],
+               "look_at": [0.3, 1, 0.2], "spp": 1},
+    "render": {"max_depth": 1, "antialiasing": false},
+    "lights": [{"type": "directional", "direction": [-0.3, -1, -0.2], "intensity": 3,
+                "angle": 6}]})");
+  const RenderResult r = renderCpu(data.view(), RenderOptions{});
+  const double radius = angle / 2 * kPi / 180;
+  const double radiance = irradiance / (kPi * std::sin(radius) * std::sin(radius));
+  const double axisLength = std::sqrt(0.09 + 1 + 0.04);
+  int inside = 0, outside = 0;
+  for (uint32_t y = 0; y < 32; ++y)
+    for (uint32_t x = 0; x < 32; ++x) {
+      const Camera& cam = data.camera;
+      const Vec3 d = cam.cameraToWorld * (cam.inverseK * Vec3(x + 0.5f, y + 0.5f, 1.0f));
+      const double cosAngle =
+          (0.3 * d.x + 1.0 * d.y + 0.2 * d.z) / (axisLength * std::sqrt(double(dot(d, d))));
+      const double fromAxis = std::acos(std::min(1.0, cosAngle));
+      if (std::fabs(fromAxis - radius) < 1e-4) continue;  // the rim, where rounding decides
+      const bool in = fromAxis < radius;
+      (in ? inside : outside) += 1;
+      EXPECT_NEAR(r.image.at(x, y).y, in ? radiance : 0.0, 1e-5 * radiance) << x << "," << y;
+    }
+  EXPECT_GT(inside, 100);
+  EXPECT_GT(outside, 100);
+}
+
+// A sphere's shadow under a sun of 10 degrees has a penumbra, the shadow of a sphere light that
+// subtends the same cone from far away with the same radiance: the two images agree (the far
+// light's parallax over the scene, 2e-4 radians, is a fraction of the penumbra's 0.17).
+TEST(DirectionalLight, ItsPenumbraIsThatOfAFarSphereLightOfItsCone) {
+  const std::string obj = test::writePlaneObj("directional_plane5.obj", 100);
+  const double angle = 10, irradiance = 2, distance = 1e4;
+  const double radius = angle / 2 * kPi / 180;
+  const double sphereRadius = distance * std::sin(radius);
+  const double radiance = irradiance / (kPi * std::sin(radius) * std::sin(radius));
+  const double power = radiance * 4 * kPi * kPi * sphereRadius * sphereRadius;
+  const double len = std::sqrt(0.2 * 0.2 + 1 + 0.1 * 0.1);
+  const std::string farSphere = R"({"type": "sphere", "position": [)" + num(-0.2 / len * distance) +
+                                ", " + num(1 / len * distance) + ", " + num(-0.1 / len * distance) +
+                                R"(], "radius": )" + num(sphereRadius) + R"(, "intensity": )" +
+                                num(power) + "}";
+  const std::string sun = R"({"type": "directional", "direction": [0.2, -1, 0.1], "intensity": )" +
+                          num(irradiance) + R"(, "angle": )" + num(angle) + "}";
+  const auto render = [&](const std::string& light, uint32_t seed) {
+    return test::renderTestScene(R"({
+      "camera": {"width": 32, "height": 32, "fov": 40, "position": [0, 6, 0.5],
+                 "look_at": [0, 0, 0], "spp": 64},
+      "render": {"max_depth": 1, "seed": )" +
+                                 std::to_string(seed) + R"(},
+      "objects": [{"file": ")" + obj +
+                                 R"(", "color": 0.6}],
+      "spheres": [{"position": [0, 1.2, 0], "radius": 0.7, "color": 0.4}],
+      "lights": [)" + light + "]}");
+  };
+  const test::SeedPair discs{render(sun, 1), render(sun, 2)};
+  const test::SeedPair spheres{render(farSphere, 3), render(farSphere, 4)};
+  test::expectSameImage(discs, spheres, 4);
+  // The penumbra is there: pixels between lit and umbra.
+  const double lit = 0.6 * irradiance * (1 / len) / kPi;
+  int between = 0;
+  for (uint32_t y = 0; y < 32; ++y)
+    for (uint32_t x = 0; x < 32; ++x) {
+      const double v = (discs.a.image.at(x, y).x + discs.b.image.at(x, y).x) / 2;
+      between += v > 0.15 * lit && v < 0.85 * lit;
+    }
+  EXPECT_GT(between, 20);
+}
+
 std::string errorOf(const std::string& light, const std::string& animation = "") {
   try {
     parseSceneText(
@@ -234,6 +336,18 @@ TEST(DirectionalLight, TheSceneFormatRefusesWhatItCannotBe) {
                       "color": [1e30, 1, 1]})"),
             "s.json: lights[0]: its irradiance, intensity 1e+30 times color [1e+30, 1, 1], is "
             "beyond single precision; expected a smaller intensity or color");
+  EXPECT_EQ(errorOf("{" + sun + R"(, "direction": [0, -1, 0], "angle": 180})"),
+            "s.json: lights[0].angle: expected an apparent diameter in degrees from 0, below 180, "
+            "got 180");
+  EXPECT_EQ(errorOf(R"({"type": "directional", "direction": [0, -1, 0], "intensity": 1e30,
+                      "angle": 1e-15})"),
+            "s.json: lights[0]: its disc's radiance, intensity 1e+30 times color [1, 1, 1] over a "
+            "disc 1e-15 degrees across, is beyond single precision; expected a larger angle or a "
+            "smaller intensity");
+  EXPECT_EQ(errorOf(R"({"type": "spot", "position": [0, 2, 0], "intensity": 10,
+                      "direction": [0, -1, 0], "angle": 10})"),
+            "s.json: lights[0].angle: not used by a spot light (only \"directional\" lights have "
+            "a disc's angle)");
   EXPECT_EQ(errorOf(R"({"position": [0, 2, 0], "intensity": 10, "direction": [0, -1, 0]})"),
             "s.json: lights[0].direction: not used by a point light (only \"spot\" and "
             "\"directional\" lights have a direction)");

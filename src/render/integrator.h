@@ -85,7 +85,7 @@ CANDELA_HDI void sampleOneLight(const SceneView& scene, uint32_t index, float se
 // light uses none: its dimension is passed over without computing them, so the stream's layout
 // is the same whatever the lights are.
 CANDELA_HDI void drawLightNumbers(SampleStream& rng, const Light& light, float* u1, float* u2) {
-  rng.next2DIfUsed(!isDeltaLight(light.type), u1, u2);
+  rng.next2DIfUsed(!isDeltaLight(light), u1, u2);
 }
 
 // Direct light at a point with a smooth BSDF lobe, whose reflecting hemisphere is around
@@ -159,6 +159,23 @@ struct PathState {
       : ray(cameraRay), maxDepth(scene.settings.maxDepth) {}
 };
 
+// The radiance of the suns' discs (directional lights with an angle) that a ray leaving the scene
+// along `st.ray` sees, each weighted against next-event estimation's sample of it as the
+// environment is.
+CANDELA_HDI Vec3 sunDiscsSeen(const SceneView& scene, const PathState& st) {
+  Vec3 sum(0.0f);
+  for (uint32_t k = 0; k < scene.infiniteLightCount; ++k) {
+    const Light& l = scene.lights[scene.infiniteLights[k]];
+    if (!hasSunDisc(l) || !inSunDisc(l, st.ray.direction)) continue;
+    const float weight = st.specularBounce
+                             ? 1.0f
+                             : powerHeuristic(st.bsdfPdf, scene.infiniteLightShare *
+                                                              uniformConePdf(l.sunOneMinusCos));
+    sum += sunRadiance(l) * weight;
+  }
+  return sum;
+}
+
 // Interaction path->depth, where path->ray found `hit` (`found` false: it left the scene): adds
 // what it sees there to path->radiance, leaves next-event estimation's shadow rays in *lights
 // (one, or at a first interaction one for each of a few delta lights) and the connection to the
@@ -183,8 +200,13 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
                   : powerHeuristic(st.bsdfPdf, lightSelectPmf(scene, uint32_t(light),
                                                               st.bouncePoint, st.bounceHemisphere) *
                                                    environmentPdf(scene, st.ray.direction));
-    const Vec3 background = environmentRadiance(scene, st.ray.direction);
-    const Vec3 seen = st.throughput * background * weight;
+    Vec3 background = environmentRadiance(scene, st.ray.direction);
+    Vec3 seen = st.throughput * background * weight;
+    if (scene.sunDiscs) {
+      const Vec3 suns = sunDiscsSeen(scene, st);
+      background += suns;
+      seen += st.throughput * suns;
+    }
     if constexpr (kAovs) {
       if (!first->albedoDone) {
         first->albedoDone = true;

@@ -26,12 +26,6 @@ enum class LightType : uint32_t {
   Directional = 4
 };
 
-// Lights that light from one point or along one direction, which no scattered ray finds: only
-// next-event estimation (and light subpaths) reach them, and their sample draws no numbers.
-CANDELA_HDI bool isDeltaLight(LightType t) {
-  return t == LightType::Point || t == LightType::Directional;
-}
-
 // Lights at infinity, which the light tree cannot bound: each is picked in a share of its own
 // (render/light_selection.h).
 CANDELA_HDI bool isInfiniteLight(LightType t) {
@@ -48,6 +42,9 @@ struct Light {
   // of a surface facing them (color * intensity).
   Vec3 power;
   Vec3 direction;  // directional lights: the unit direction the light travels in
+  // Directional lights: 1 - cos of the angular radius of the sun's disc, whose every direction
+  // sends the same radiance; 0 for a delta light, of one direction.
+  float sunOneMinusCos = 0.0f;
   // A spot light is a point light limited to a cone; its power is the point light's it would be
   // without one (its intensity within the beam is that light's).
   SpotCone spot;
@@ -64,6 +61,18 @@ struct Light {
   float pathAreaPdf = 0.0f;
 };
 
+// Whether light `l` lights from one point or along one direction, which no scattered ray finds:
+// only next-event estimation (and light subpaths) reach it, and its sample draws no numbers.
+CANDELA_HDI bool isDeltaLight(const Light& l) {
+  return l.type == LightType::Point ||
+         (l.type == LightType::Directional && l.sunOneMinusCos == 0.0f);
+}
+
+// Whether light `l` is a directional light with a disc, which rays that leave the scene may see.
+CANDELA_HDI bool hasSunDisc(const Light& l) {
+  return l.type == LightType::Directional && l.sunOneMinusCos > 0.0f;
+}
+
 // Whether samples' light subpaths start at light `l` (render/light_path.h): those lights'
 // connections are among the strategies that reach them, which decides their MIS heuristic
 // (misWeight3).
@@ -78,7 +87,7 @@ CANDELA_HDI bool startsLightSubpaths(const Light& l) { return l.pathPmf > 0.0f; 
 // (Sponza's three lamps: 0.8x the render time for 3% more error; the dragon's two: even;
 // docs/performance.md).
 inline bool isLoneDeltaLight(const Light* lights, size_t count) {
-  return count == 1 && isDeltaLight(lights[0].type);
+  return count == 1 && isDeltaLight(lights[0]);
 }
 
 // Scenes of at most this many lights, all of them point or directional lights, sample each of them
@@ -95,7 +104,7 @@ constexpr uint32_t kEachDeltaLightUpTo = 4;
 inline uint32_t firstHitDeltaLights(const Light* lights, size_t count) {
   if (count < 2 || count > kEachDeltaLightUpTo) return 0;
   for (size_t i = 0; i < count; ++i)
-    if (!isDeltaLight(lights[i].type)) return 0;
+    if (!isDeltaLight(lights[i])) return 0;
   return uint32_t(count);
 }
 

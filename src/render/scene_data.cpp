@@ -25,8 +25,9 @@ SceneView SceneData::view() const {
   v.areaLightPaths = v.lightPathLights > 0 && areaLightsStartPaths;
   v.glassSplitDepth = kGlassSplitDepth;
   v.infiniteLightShare = infiniteLightShare;
+  v.sunDiscs = sunDiscs;
   v.environment = environment;
-  v.emissionReachable = !isBlack(environment.radiance);
+  v.emissionReachable = !isBlack(environment.radiance) || sunDiscs;
   for (const Material& m : materials) v.emissionReachable |= m.type == MaterialType::Emissive;
   v.camera = camera;
   v.settings = settings;

@@ -43,6 +43,7 @@ struct SceneData {
   uint32_t lightsStartingPaths = 0;
   bool areaLightsStartPaths = false;
   float infiniteLightShare = 0.0f;
+  bool sunDiscs = false;
   Environment environment;
   // A hash of the bounds and powers of the lights the light tree was built over (0: no tree): a
   // frame with the same hash keeps the tree (scene/flatten_lights.cpp), and the GPU its copy

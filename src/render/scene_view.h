@@ -70,10 +70,14 @@ struct SceneView : GeometryView {
   uint32_t glassSplitDepth = 0;
   // The share of the picks that goes to each of infiniteLights; the light tree has the rest.
   float infiniteLightShare = 0.0f;
+  // Whether some of infiniteLights is a directional light with a disc, which the rays that leave
+  // the scene may see (render/light.h, hasSunDisc).
+  bool sunDiscs = false;
   Environment environment;
-  // Whether a scattered ray can find any light: an emissive material (sphere lights included) or
-  // a nonzero environment. Without, light arrives only by shadow rays to point lights, and the
-  // ray a path would scatter from its last interaction is not traced: it could add nothing.
+  // Whether a scattered ray can find any light: an emissive material (sphere lights included), a
+  // nonzero environment or a sun's disc. Without, light arrives only by shadow rays to point
+  // lights, and the ray a path would scatter from its last interaction is not traced: it could add
+  // nothing.
   bool emissionReachable = true;
   Camera camera;
   RenderSettings settings;

@@ -139,6 +139,7 @@ void addLight(SceneData& s, const LightDesc& d) {
   } else if (d.type == LightType::Directional) {
     light.direction = normalize(d.direction);
     light.power = lightPower(d);  // the irradiance
+    light.sunOneMinusCos = sunOneMinusCos(d);
   } else {
     Material emitter;
     emitter.type = MaterialType::Emissive;

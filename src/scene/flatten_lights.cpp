@@ -161,7 +161,9 @@ void setInfiniteLightPicks(SceneData& s) {
     const Light& l = s.lights[i];
     const bool sends = l.type == LightType::Environment ? environmentMeanRadiance(s) > 0.0
                                                         : componentSum(l.power) > 0.0;
-    if (isInfiniteLight(l.type) && sends) s.infiniteLights.push_back(i);
+    if (!isInfiniteLight(l.type) || !sends) continue;
+    s.infiniteLights.push_back(i);
+    s.sunDiscs |= hasSunDisc(l);
   }
   if (s.infiniteLights.empty()) return;
   const size_t picks = s.infiniteLights.size() + (s.lightTree.empty() ? 0 : 1);
@@ -219,6 +221,7 @@ void addEmitterLights(SceneData& s, PreviousLights* previous) {
   s.lightTreeHash = 0;
   s.infiniteLights.clear();
   s.infiniteLightShare = 0.0f;
+  s.sunDiscs = false;
   if (s.loneDeltaLight) return;
   s.lightTreeHash = lightTreeHash(bounds);
   if (previous && previous->hash == s.lightTreeHash) {

@@ -1,8 +1,9 @@
-// lightEmissionProblem and spotCone; see light_emission_desc.h.
+// lightEmissionProblem, sunOneMinusCos and spotCone; see light_emission_desc.h.
 #include "scene/light_emission_desc.h"
 
 #include <cmath>
 
+#include "render/light_sample.h"
 #include "scene/scene_error.h"
 
 namespace candela {
@@ -15,12 +16,30 @@ std::string lightEmissionProblem(const LightDesc& d) {
            factors +
            ", is beyond single precision; expected a smaller intensity "
            "or color";
+  if (d.type == LightType::Directional && d.angleDegrees > 0) {
+    Light l;
+    l.type = LightType::Directional;
+    l.power = lightPower(d);
+    l.sunOneMinusCos = sunOneMinusCos(d);
+    // A disc too small for single precision (omc 0) is a delta light, whose irradiance is checked
+    // above.
+    if (l.sunOneMinusCos > 0.0f && !isFinite(sunRadiance(l)))
+      return "its disc's radiance, " + factors + " over a disc " + formatNumber(d.angleDegrees) +
+             " degrees across, is beyond single precision; expected a larger angle or a smaller "
+             "intensity";
+  }
   if (d.type == LightType::Sphere && !isFinite(sphereLightRadiance(d)))
     return "its surface's radiance, " + factors + " over a sphere of radius " +
            formatNumber(d.radius) +
            ", is beyond single precision; expected a larger radius or a "
            "smaller intensity";
   return "";
+}
+
+float sunOneMinusCos(const LightDesc& d) {
+  const double halfRadius = double(d.angleDegrees) * (kPi / 180.0) / 4.0;
+  const double s = std::sin(halfRadius);
+  return float(2.0 * s * s);
 }
 
 SpotCone spotCone(const LightDesc& d) {

@@ -1,6 +1,7 @@
 // What a light of the description emits, in the float arithmetic the kernel's arrays hold it in:
 // its power, for a sphere light the radiance of its surface (the power spread over the sphere's
-// area 4 pi r^2 and the pi of a Lambertian emitter's cosine), and for a spot light its cone.
+// area 4 pi r^2 and the pi of a Lambertian emitter's cosine), for a spot light its cone, and for
+// a directional light its disc.
 #pragma once
 
 #include <string>
@@ -22,6 +23,10 @@ inline Vec3 sphereLightRadiance(const LightDesc& d) {
 // product need not be, and a light of infinite radiance would light nothing (the renderer drops
 // samples that are not finite).
 std::string lightEmissionProblem(const LightDesc& d);
+
+// A directional light's 1 - cos of its disc's angular radius, 2 sin^2(radius / 2) in double (0:
+// a delta light, as is a disc too small for single precision).
+float sunOneMinusCos(const LightDesc& d);
 
 // The kernel's cone of a spot light (none for other lights), aimed from d.position.
 SpotCone spotCone(const LightDesc& d);

@@ -85,6 +85,9 @@ struct LightDesc {
   // look_at); not of unit length.
   Vec3 direction;
   float radius = 0;  // sphere lights
+  // Directional lights: the apparent diameter of the disc they shine from, in degrees (0: a
+  // delta light, of one direction).
+  float angleDegrees = 0;
   // Total emitted power (a spot's: that of the point light it limits); a directional light's
   // irradiance on a surface facing it.
   float intensity = 0;

@@ -132,7 +132,7 @@ ObjectDesc readObject(const JsonValue& value, const MaterialLibrary& library,
 
 LightDesc readLight(const JsonValue& value) {
   JsonObject fields(value, {"id", "type", "position", "intensity", "color", "radius", "direction",
-                            "look_at", "cutoff_angle", "beam_width"});
+                            "look_at", "cutoff_angle", "beam_width", "angle"});
   LightDesc light;
   light.where = value.path();
   light.id = readId(fields);
@@ -156,14 +156,22 @@ LightDesc readLight(const JsonValue& value) {
     light.radius = fields.require("radius").positiveNumber();
   else
     fields.reject("radius", notUsed + " (only \"sphere\" lights have a radius)");
+  if (kind != kDirectional)
+    fields.reject("angle", notUsed + " (only \"directional\" lights have a disc's angle)");
   if (kind == kSpot) {
     light.spot = readSpot(fields, light.position, &light.direction);
   } else {
-    if (kind == kDirectional)
+    if (kind == kDirectional) {
       light.direction = readDirection(fields.require("direction"));
-    else
+      if (std::optional<JsonValue> angle = fields.get("angle")) {
+        const std::string range = "an apparent diameter in degrees from 0, below 180";
+        light.angleDegrees = angle->number(range);
+        if (!(light.angleDegrees >= 0 && light.angleDegrees < 180)) angle->failExpected(range);
+      }
+    } else {
       fields.reject("direction",
                     notUsed + " (only \"spot\" and \"directional\" lights have a direction)");
+    }
     for (const char* key : {"look_at", "cutoff_angle", "beam_width"})
       fields.reject(key, notUsed + " (only \"spot\" lights have a cone)");
   }
