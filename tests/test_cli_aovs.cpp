@@ -260,6 +260,37 @@ TEST_F(CliAovTest, PosesFileHoldsEachInstancesPlacementInTheWorldAndTheCamera) {
   EXPECT_EQ(fileText(path("f/frame_0001.poses.json")), fileText(path("a.poses.json")));
 }
 
+// A spot or directional light's pose is a rotation whose third column is where it shines.
+TEST_F(CliAovTest, PosesOfAimedLightsTurnTheirModelsZToWhereTheyShine) {
+  dir_.write("aimed.json", R"({
+    "camera": {"width": 8, "height": 6, "fov": 50, "position": [0, 0, 6]},
+    "lights": [{"type": "spot", "position": [1, 2, 3], "look_at": [1, -1, 7], "intensity": 10},
+               {"type": "directional", "direction": [0, 0, -2], "intensity": 1}]})");
+  ASSERT_EQ(run("render aimed.json -q --spp 1 -o a.png --aov poses"), 0);
+  const nlohmann::json poses = nlohmann::json::parse(fileText(path("a.poses.json")));
+  const double axes[2][3] = {{0, -0.6, 0.8}, {0, 0, -1}};
+  const double places[2][3] = {{1, 2, 3}, {0, 0, 0}};
+  for (int n = 0; n < 2; ++n) {
+    const nlohmann::json& m = poses[std::to_string(n + 1)]["object_to_world"];
+    double a[3][3];
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) a[i][j] = m[i][j].get<double>();
+      EXPECT_NEAR(a[i][2], axes[n][i], 1e-6) << n;
+      EXPECT_EQ(m[i][3].get<double>(), places[n][i]) << n;
+    }
+    const double det = a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) -
+                       a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
+                       a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
+    EXPECT_NEAR(det, 1.0, 1e-6) << n;  // a rotation, right-handed
+    for (int j = 0; j < 3; ++j)
+      for (int k = 0; k < 3; ++k) {
+        double dotjk = 0;
+        for (int i = 0; i < 3; ++i) dotjk += a[i][j] * a[i][k];
+        EXPECT_NEAR(dotjk, j == k ? 1.0 : 0.0, 1e-6) << n;
+      }
+  }
+}
+
 TEST_F(CliAovTest, SiblingFilesNeverOverwriteAnInput) {
   std::ofstream(path("out.depth.pfm")) << kScene;  // a scene file named like a pass file
   std::string err;

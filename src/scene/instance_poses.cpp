@@ -2,10 +2,26 @@
 
 #include <utility>
 
+#include "core/frame.h"
 #include "core/rotation.h"
 #include "scene/flatten.h"
+#include "scene/light_emission_desc.h"
 
 namespace candela {
+namespace {
+
+// A light's model: a sphere light's unit sphere scaled by its radius; for a spot or directional
+// light, a rotation whose third column (the model's +z) is where it shines, the first two
+// completing a right-handed frame (core/frame.h); a point light's, nothing.
+Mat3 lightModel(const LightDesc& l) {
+  if (l.type == LightType::Sphere) return Mat3::diagonal(Vec3(l.radius));
+  if (!l.spot && l.type != LightType::Directional) return Mat3();
+  const Vec3 axis = l.spot ? spotCone(l).axis : normalize(l.direction);
+  const Frame frame(axis);
+  return Mat3::fromColumns(frame.s, frame.t, frame.n);
+}
+
+}  // namespace
 
 std::vector<InstancePose> instancePoses(const SceneDesc& desc) {
   std::vector<InstancePose> poses;
@@ -25,8 +41,8 @@ std::vector<InstancePose> instancePoses(const SceneDesc& desc) {
     poses[i++].position = o.position;
   }
   for (const LightDesc& l : desc.lights) {
-    poses[i].linear = Mat3::diagonal(Vec3(l.type == LightType::Sphere ? l.radius : 1.0f));
-    poses[i++].position = l.position;
+    poses[i].linear = lightModel(l);
+    poses[i++].position = l.position;  // a directional light's: the origin
   }
   for (InstancePose& pose : poses)  // -0 as 0, for the files
     for (auto& row : pose.linear.m)
