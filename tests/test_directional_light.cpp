@@ -320,9 +320,14 @@ TEST(DirectionalLight, TheSceneFormatRefusesWhatItCannotBe) {
   EXPECT_EQ(
       errorOf("{" + sun + R"(, "direction": [0, 0, 0]})"),
       "s.json: lights[0].direction: expected a direction of non-zero length, got an array [0,0,0]");
-  EXPECT_EQ(errorOf("{" + sun + R"(, "direction": [1e-30, 0, 0]})"),
-            "s.json: lights[0].direction: expected a direction of non-zero length, got an array "
-            "[1e-30,0,0]");
+  // Any other vector has a direction, however short or long.
+  for (const char* direction :
+       {"[1e-30, 0, 0]", "[0, 1e-44, 0]", "[0, 0, 3e38]", "[3e38, 3e38, 0]"}) {
+    const std::string scene = R"({"camera": {"width": 4, "height": 4}, "lights": [{)" + sun +
+                              R"(, "direction": )" + direction + "}]}";
+    const SceneData data = flattenScene(parseSceneText(scene, "s.json", "."));
+    EXPECT_NEAR(length(data.lights[0].direction), 1.0f, 1e-6f) << direction;
+  }
   EXPECT_EQ(errorOf("{" + sun + R"(, "direction": [0, -1, 0], "position": [0, 5, 0]})"),
             "s.json: lights[0].position: not used by a directional light (it shines from "
             "infinitely far along its \"direction\")");
@@ -374,7 +379,7 @@ TEST(DirectionalLight, TheSceneFormatRefusesWhatItCannotBe) {
 }
 
 // A direction track turns a directional light (and a spot light's aim) from frame to frame,
-// linearly between its keys; the kernel's light gets the unit direction.
+// linearly between its keys' unit vectors; the kernel's light gets the unit direction.
 TEST(DirectionalLight, AnAnimatedDirectionTurnsTheLight) {
   const SceneDesc desc = parseSceneText(R"({"camera": {"width": 4, "height": 4},
     "lights": [{"type": "directional", "id": "sun", "direction": [1, -1, 0], "intensity": 2},
@@ -391,7 +396,9 @@ TEST(DirectionalLight, AnAnimatedDirectionTurnsTheLight) {
   const SceneData last = flattenScene(sceneAtFrame(desc, 2));
   EXPECT_NEAR(last.lights[0].direction.x, -std::sqrt(0.5f), 1e-6f);
   EXPECT_NEAR(last.lights[1].spot.axis.z, 2.0f / std::sqrt(5.0f), 1e-6f);
-  EXPECT_NEAR(middle.lights[1].spot.axis.z, std::sqrt(0.5f), 1e-6f);
+  // Between the keys' unit vectors (0, -1, 0) and (0, -1, 2) / sqrt 5, halfway, made unit.
+  const double y = (-1 - 1 / std::sqrt(5.0)) / 2, z = (2 / std::sqrt(5.0)) / 2;
+  EXPECT_NEAR(middle.lights[1].spot.axis.z, z / std::sqrt(y * y + z * z), 1e-6);
 }
 
 }  // namespace

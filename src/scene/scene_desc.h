@@ -82,7 +82,7 @@ struct LightDesc {
   LightType type = LightType::Point;  // a spot light is a point light with a cone
   Vec3 position;                      // all but directional lights
   // Where a directional light's light travels, or where a spot light points (unless it has a
-  // look_at); not of unit length.
+  // look_at): a unit vector, but between an animation's keys.
   Vec3 direction;
   float radius = 0;  // sphere lights
   // Directional lights: the apparent diameter of the disc they shine from, in degrees (0: a

@@ -1,6 +1,7 @@
 // Reading spheres, objects and lights; see entity_reader.h.
 #include "scene/read/entity_reader.h"
 
+#include <cmath>
 #include <filesystem>
 #include <sstream>
 
@@ -82,12 +83,13 @@ Vec3 readScale(const JsonValue& value) {
 }
 
 // A vector whose unit vector single precision can make: not zero, nor one whose squared length
-// underflows or overflows.
+// The unit vector of a non-zero vector, normalised in double: float's squares of its components
+// would overflow beyond 1.8e19 and vanish below 1e-19.
 Vec3 readDirection(const JsonValue& value) {
-  const Vec3 direction = value.vec3();
-  const float unit = lengthSquared(normalize(direction));
-  if (!(unit > 0.5f && unit < 2.0f)) value.failExpected("a direction of non-zero length");
-  return direction;
+  const Vec3 v = value.vec3();
+  const double x = v.x, y = v.y, z = v.z, length = std::sqrt(x * x + y * y + z * z);
+  if (!(length > 0)) value.failExpected("a direction of non-zero length");
+  return Vec3(float(x / length), float(y / length), float(z / length));
 }
 
 SphereDesc readSphere(const JsonValue& value, const MaterialLibrary& library,

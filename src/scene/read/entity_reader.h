@@ -23,7 +23,7 @@ LightDesc readLight(const JsonValue& value);
 // mesh; a negative factor mirrors it). Also read by animation tracks on "scale".
 Vec3 readScale(const JsonValue& value);
 
-// A light's "direction": any vector that has a direction in single precision.
+// A light's "direction": any vector but zero, as its unit vector.
 Vec3 readDirection(const JsonValue& value);
 
 }  // namespace candela
