@@ -39,11 +39,4 @@ CANDELA_HDI Vec3 sampleConeDirection(const SpotCone& c, float u1, float u2) {
   return normalize(Frame(c.axis).toWorld(sampleUniformCone(u1, u2, coneOneMinusCos(c))));
 }
 
-// The share of a point light's power that the cone lets out: the falloff's mean over the sphere,
-// (1 + (sin beam - sin cutoff) / (cutoff - beam)) / 2, or (1 - cos cutoff) / 2 for a hard edge.
-inline double coneFluxShare(double beam, double cutoff) {
-  if (!(cutoff > beam)) return 0.5 * (1.0 - std::cos(cutoff));
-  return 0.5 * (1.0 + (std::sin(beam) - std::sin(cutoff)) / (cutoff - beam));
-}
-
 }  // namespace candela

@@ -9,6 +9,7 @@
 #include "render/light_emission.h"
 #include "scene/content_hash.h"
 #include "scene/flatten_environment.h"
+#include "scene/light_emission_desc.h"
 #include "scene/light_tree_build.h"
 
 namespace candela {

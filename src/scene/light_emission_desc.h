@@ -4,6 +4,7 @@
 // a directional light its disc.
 #pragma once
 
+#include <cmath>
 #include <string>
 
 #include "core/constants.h"
@@ -27,6 +28,13 @@ std::string lightEmissionProblem(const LightDesc& d);
 // A directional light's 1 - cos of its disc's angular radius, 2 sin^2(radius / 2) in double (0:
 // a delta light, as is a disc too small for single precision).
 float sunOneMinusCos(const LightDesc& d);
+
+// The share of a point light's power that the cone lets out: the falloff's mean over the sphere,
+// (1 + (sin beam - sin cutoff) / (cutoff - beam)) / 2, or (1 - cos cutoff) / 2 for a hard edge.
+inline double coneFluxShare(double beam, double cutoff) {
+  if (!(cutoff > beam)) return 0.5 * (1.0 - std::cos(cutoff));
+  return 0.5 * (1.0 + (std::sin(beam) - std::sin(cutoff)) / (cutoff - beam));
+}
 
 // The kernel's cone of a spot light (none for other lights), aimed from d.position.
 SpotCone spotCone(const LightDesc& d);
