@@ -401,5 +401,33 @@ TEST(DirectionalLight, AnAnimatedDirectionTurnsTheLight) {
   EXPECT_NEAR(middle.lights[1].spot.axis.z, z / std::sqrt(y * y + z * z), 1e-6);
 }
 
+// An angle track widens a sun's disc from frame to frame: at 0 it is a delta light again.
+TEST(DirectionalLight, AnAnimatedAngleWidensTheDisc) {
+  const SceneDesc desc = parseSceneText(R"({"camera": {"width": 4, "height": 4},
+    "lights": [{"type": "directional", "id": "sun", "direction": [0, -1, 0], "intensity": 2}],
+    "animation": {"frames": 3, "tracks": [
+      {"target": "sun", "property": "angle", "keys": [[0, 0], [2, 10]]}]}})",
+                                        "s.json", ".");
+  const SceneData first = flattenScene(sceneAtFrame(desc, 0));
+  EXPECT_TRUE(first.view().loneDeltaLight);
+  EXPECT_EQ(first.lights[0].sunOneMinusCos, 0.0f);
+  const SceneData middle = flattenScene(sceneAtFrame(desc, 1));
+  EXPECT_FALSE(middle.view().loneDeltaLight);
+  EXPECT_NEAR(middle.lights[0].sunOneMinusCos, 1 - std::cos(2.5 * kPi / 180), 1e-9);
+  const std::string sun = R"({"type": "directional", "id": "sun", "direction": [0, -1, 0],
+                              "intensity": 1e30})";
+  EXPECT_EQ(errorOf(sun, animated("angle", "[[0, 1], [2, 1e-15]]")),
+            "s.json: lights[0]: at frame 2, its disc's radiance, intensity 1e+30 times color [1, "
+            "1, 1] over a disc 1e-15 degrees across, is beyond single precision; expected a larger "
+            "angle or a smaller intensity");
+  EXPECT_EQ(errorOf(sun, animated("angle", "[[0, 180]]")),
+            "s.json: animation.tracks[0].keys[0][1]: expected an apparent diameter in degrees from "
+            "0, below 180, got 180");
+  EXPECT_EQ(errorOf(R"({"id": "sun", "position": [0, 2, 0], "intensity": 10})",
+                    animated("angle", "[[0, 1]]")),
+            "s.json: animation.tracks[0].property: \"angle\" is not used by a point light (only "
+            "\"directional\" lights have a disc's angle)");
+}
+
 }  // namespace
 }  // namespace candela

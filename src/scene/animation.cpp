@@ -50,6 +50,9 @@ void applyToLight(LightDesc& light, AnimProperty property, const Vec3& v) {
     case AnimProperty::Direction:
       light.direction = v;
       break;
+    case AnimProperty::Angle:
+      light.angleDegrees = v.x;
+      break;
     case AnimProperty::LookAt:
       if (light.spot) light.spot->lookAt = v;
       break;

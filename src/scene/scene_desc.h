@@ -126,19 +126,12 @@ struct EnvironmentDesc {
 };
 
 enum class AnimTarget { Camera, Sphere, Object, Light };
+// The camera's, then the entities'.
 enum class AnimProperty {
-  Position,
-  Rotation,
-  LookAt,
-  Up,
-  Fov,
-  ApertureRadius,
-  FocusDistance,  // camera
-  Radius,
-  Color,
-  Scale,
-  Intensity,
-  Direction  // entities
+  // clang-format off
+  Position, Rotation, LookAt, Up, Fov, ApertureRadius, FocusDistance,
+  Radius, Color, Scale, Intensity, Direction, Angle
+  // clang-format on
 };
 
 // One key: the value at `frame`. Scalars are stored in all three components, so that per-component

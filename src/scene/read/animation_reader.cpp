@@ -34,7 +34,8 @@ const std::vector<PropertyName>& propertiesOf(AnimTarget target) {
   static const std::vector<PropertyName> light = {
       {"position", AnimProperty::Position},   {"intensity", AnimProperty::Intensity},
       {"color", AnimProperty::Color},         {"radius", AnimProperty::Radius},
-      {"direction", AnimProperty::Direction}, {"look_at", AnimProperty::LookAt}};
+      {"direction", AnimProperty::Direction}, {"look_at", AnimProperty::LookAt},
+      {"angle", AnimProperty::Angle}};
   switch (target) {
     case AnimTarget::Camera: return camera;
     case AnimTarget::Sphere: return sphere;
@@ -131,6 +132,8 @@ Vec3 readValue(const JsonValue& value, AnimProperty property) {
     case AnimProperty::Scale: return readScale(value);
     case AnimProperty::Direction:
       return readDirection(value);
+    case AnimProperty::Angle:
+      return Vec3(readSunAngle(value));
   }
   return Vec3(0.0f);
 }
@@ -205,6 +208,9 @@ void checkUsed(const JsonValue& property, const AnimTrack& track, const SceneDes
         if (!directional && !light.spot)
           unused(name + " (only \"spot\" and \"directional\" lights have a direction)");
         if (light.spot && light.spot->lookAt) unused("a spot light aimed with \"look_at\"");
+        break;
+      case AnimProperty::Angle:
+        if (!directional) unused(name + " (only \"directional\" lights have a disc's angle)");
         break;
       case AnimProperty::LookAt:
         if (!light.spot || !light.spot->lookAt)

@@ -83,6 +83,13 @@ Vec3 readScale(const JsonValue& value) {
 }
 
 // A vector whose unit vector single precision can make: not zero, nor one whose squared length
+float readSunAngle(const JsonValue& value) {
+  const std::string range = "an apparent diameter in degrees from 0, below 180";
+  const float degrees = value.number(range);
+  if (!(degrees >= 0 && degrees < 180)) value.failExpected(range);
+  return degrees;
+}
+
 // The unit vector of a non-zero vector, normalised in double: float's squares of its components
 // would overflow beyond 1.8e19 and vanish below 1e-19.
 Vec3 readDirection(const JsonValue& value) {
@@ -165,11 +172,8 @@ LightDesc readLight(const JsonValue& value) {
   } else {
     if (kind == kDirectional) {
       light.direction = readDirection(fields.require("direction"));
-      if (std::optional<JsonValue> angle = fields.get("angle")) {
-        const std::string range = "an apparent diameter in degrees from 0, below 180";
-        light.angleDegrees = angle->number(range);
-        if (!(light.angleDegrees >= 0 && light.angleDegrees < 180)) angle->failExpected(range);
-      }
+      if (std::optional<JsonValue> angle = fields.get("angle"))
+        light.angleDegrees = readSunAngle(*angle);
     } else {
       fields.reject("direction",
                     notUsed + " (only \"spot\" and \"directional\" lights have a direction)");

@@ -26,4 +26,7 @@ Vec3 readScale(const JsonValue& value);
 // A light's "direction": any vector but zero, as its unit vector.
 Vec3 readDirection(const JsonValue& value);
 
+// A directional light's "angle": the apparent diameter of its disc, 0 up to 180 degrees.
+float readSunAngle(const JsonValue& value);
+
 }  // namespace candela

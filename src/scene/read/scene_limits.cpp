@@ -70,6 +70,7 @@ void checkLightEmission(const SceneDesc& scene) {
       at.intensity = propertyAt(tracks, AnimProperty::Intensity, frame, Vec3(light.intensity)).x;
       at.color = propertyAt(tracks, AnimProperty::Color, frame, light.color);
       at.radius = propertyAt(tracks, AnimProperty::Radius, frame, Vec3(light.radius)).x;
+      at.angleDegrees = propertyAt(tracks, AnimProperty::Angle, frame, Vec3(light.angleDegrees)).x;
       const std::string problem = lightEmissionProblem(at);
       if (!problem.empty()) failAt(scene.file, light.where, atFrame(tracks, frame) + problem);
     });
