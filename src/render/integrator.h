@@ -72,10 +72,10 @@ CANDELA_HDI void sampleOneLight(const SceneView& scene, uint32_t index, float se
   const float weight =
       !ls.isDelta ? misWeight3(lightPdf, bsdfPdf,
                                lightSubpathSolidAnglePdf(scene, index, sp.ng, ls.wi, arrivalPdf),
-                               startsLightSubpaths(light))
+                               connectsLightSubpaths(scene, light))
       : arrivalPdf > 0.0f
           ? misWeight3(arrivalPdf * selectPmf, lightVertexPdf(scene, index, sp.p, sp.ng), 0.0f,
-                       startsLightSubpaths(light))
+                       connectsLightSubpaths(scene, light))
           : 1.0f;
   shadow->contribution = throughput * (f * ls.radiance * (weight / lightPdf));
   shadow->active = true;
@@ -250,8 +250,8 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
         const float subpathPdf =
             lightSubpathSolidAnglePdf(scene, uint32_t(light), st.bounceNormal, st.ray.direction,
                                       st.bounceArrivalPdf);
-        weight =
-            misWeight3(st.bsdfPdf, neePdf, subpathPdf, startsLightSubpaths(scene.lights[light]));
+        weight = misWeight3(st.bsdfPdf, neePdf, subpathPdf,
+                            connectsLightSubpaths(scene, scene.lights[light]));
       }
       const Vec3 seen = st.throughput * surfaceRadiance(scene, m, hit, sp) * weight;
       if constexpr (kAovs) {

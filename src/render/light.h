@@ -73,9 +73,8 @@ CANDELA_HDI bool hasSunDisc(const Light& l) {
   return l.type == LightType::Directional && l.sunOneMinusCos > 0.0f;
 }
 
-// Whether samples' light subpaths start at light `l` (render/light_path.h): those lights'
-// connections are among the strategies that reach them, which decides their MIS heuristic
-// (misWeight3).
+// Whether samples' light subpaths start at light `l` (render/light_path.h), where the render
+// traces them (connectsLightSubpaths, which decides the light's MIS heuristic).
 CANDELA_HDI bool startsLightSubpaths(const Light& l) { return l.pathPmf > 0.0f; }
 
 // Whether the `count` lights are one point or directional light, which next-event estimation

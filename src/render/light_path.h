@@ -111,13 +111,21 @@ CANDELA_HDI float lightSubpathSolidAnglePdf(const SceneView& scene, uint32_t ind
   return start * fabsf(dot(ng, wi)) * kInvPi / arrivalPdf;
 }
 
-// The weight of the strategy of density `a` among three (c = 0: between two): for a light that
-// starts light subpaths, whose connections are among the strategies, the balance heuristic; for
-// any other, the power heuristic (to the bit powerHeuristic(a, b) for c = 0). Where connections
-// take part the balance heuristic leaves less noise (the bench scenes, up to 6%); between
-// next-event estimation and a BSDF sample alone the power heuristic does, on glossy surfaces
-// above all (docs/performance.md). The choice is the light's, not the densities', so every site
-// that weighs a path makes the same one.
+// Whether this render connects its paths to light subpaths from light `l`: the light starts
+// them, and the render traces them (SceneView::lightPathLights, 0 where the integrator, the
+// depth, the scene's light_paths or the pilot leave them out).
+CANDELA_HDI bool connectsLightSubpaths(const SceneView& scene, const Light& l) {
+  return scene.lightPathLights > 0 && startsLightSubpaths(l);
+}
+
+// The weight of the strategy of density `a` among three (c = 0: between two): for a light whose
+// light subpaths this render connects to (connectsLightSubpaths), whose connections are then
+// among the strategies, the balance heuristic; for any other, the power heuristic (to the bit
+// powerHeuristic(a, b) for c = 0). Where connections take part the balance heuristic leaves less
+// noise (the bench scenes, up to 6%); between next-event estimation and a BSDF sample alone the
+// power heuristic does, on glossy surfaces above all, and on lights that subtend a small cone
+// (docs/performance.md). The choice is the light's and the render's, not the densities', so every
+// site that weighs a path makes the same one.
 CANDELA_HDI float misWeight3(float a, float b, float c, bool lightStartsSubpaths) {
   if (lightStartsSubpaths) return a / (a + b + c);
   const float a2 = a * a;
