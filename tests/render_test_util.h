@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <string>
 #include <utility>
@@ -12,8 +13,29 @@
 #include "backends/cpu/cpu_renderer.h"
 #include "scene/flatten.h"
 #include "scene/read/scene_loader.h"
+#include "scene/scene_error.h"
 
 namespace candela::test {
+
+// A number as JSON text, to 9 significant digits: a float's value exactly.
+inline std::string num(double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.9g", v);
+  return buf;
+}
+
+// The error that a 4 x 4 scene of the lights `lights` (JSON objects, comma-separated) and the
+// top-level members `more` (",\"animation\": {...}") is refused with, or "(no error)".
+inline std::string lightsError(const std::string& lights, const std::string& more = "") {
+  try {
+    parseSceneText(
+        R"({"camera": {"width": 4, "height": 4}, "lights": [)" + lights + "]" + more + "}",
+        "s.json", ".");
+  } catch (const SceneError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
 
 inline SceneData loadTestScene(const std::string& json, const std::string& baseDir = ".") {
   return flattenScene(parseSceneText(json, "test.json", baseDir));

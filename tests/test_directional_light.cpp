@@ -7,7 +7,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstdio>
 #include <string>
 
 #include "core/constants.h"
@@ -21,11 +20,8 @@ namespace {
 
 constexpr double kZ = 5.0;
 
-std::string num(double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.9g", v);
-  return buf;
-}
+using test::lightsError;
+using test::num;
 
 // Where the ray through the centre of pixel (x, y) meets the plane y = 0, in double.
 struct PlaneHit {
@@ -321,17 +317,6 @@ TEST(DirectionalLight, ItsCausticThroughGlassIsThatOfAFarSphereLight) {
   test::expectSameImage(r.discs, r.spheres, 8);
 }
 
-std::string errorOf(const std::string& light, const std::string& animation = "") {
-  try {
-    parseSceneText(
-        R"({"camera": {"width": 4, "height": 4}, "lights": [)" + light + "]" + animation + "}",
-        "s.json", ".");
-  } catch (const SceneError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
-
 std::string animated(const std::string& property, const std::string& keys) {
   return R"(, "animation": {"frames": 3, "tracks": [{"target": "sun", "property": ")" + property +
          R"(", "keys": )" + keys + "}]}";
@@ -339,9 +324,9 @@ std::string animated(const std::string& property, const std::string& keys) {
 
 TEST(DirectionalLight, TheSceneFormatRefusesWhatItCannotBe) {
   const std::string sun = R"("type": "directional", "intensity": 2)";
-  EXPECT_EQ(errorOf("{" + sun + "}"), "s.json: lights[0]: missing required key \"direction\"");
+  EXPECT_EQ(lightsError("{" + sun + "}"), "s.json: lights[0]: missing required key \"direction\"");
   EXPECT_EQ(
-      errorOf("{" + sun + R"(, "direction": [0, 0, 0]})"),
+      lightsError("{" + sun + R"(, "direction": [0, 0, 0]})"),
       "s.json: lights[0].direction: expected a direction of non-zero length, got an array [0,0,0]");
   // Any other vector has a direction, however short or long.
   for (const char* direction :
@@ -351,53 +336,53 @@ TEST(DirectionalLight, TheSceneFormatRefusesWhatItCannotBe) {
     const SceneData data = flattenScene(parseSceneText(scene, "s.json", "."));
     EXPECT_NEAR(length(data.lights[0].direction), 1.0f, 1e-6f) << direction;
   }
-  EXPECT_EQ(errorOf("{" + sun + R"(, "direction": [0, -1, 0], "position": [0, 5, 0]})"),
+  EXPECT_EQ(lightsError("{" + sun + R"(, "direction": [0, -1, 0], "position": [0, 5, 0]})"),
             "s.json: lights[0].position: not used by a directional light (it shines from "
             "infinitely far along its \"direction\")");
-  EXPECT_EQ(errorOf("{" + sun + R"(, "direction": [0, -1, 0], "cutoff_angle": 10})"),
+  EXPECT_EQ(lightsError("{" + sun + R"(, "direction": [0, -1, 0], "cutoff_angle": 10})"),
             "s.json: lights[0].cutoff_angle: not used by a directional light (only \"spot\" "
             "lights have a cone)");
-  EXPECT_EQ(errorOf("{" + sun + R"(, "direction": [0, -1, 0], "radius": 1})"),
+  EXPECT_EQ(lightsError("{" + sun + R"(, "direction": [0, -1, 0], "radius": 1})"),
             "s.json: lights[0].radius: not used by a directional light (only \"sphere\" lights "
             "have a radius)");
-  EXPECT_EQ(errorOf(R"({"type": "directional", "direction": [0, -1, 0], "intensity": 1e30,
+  EXPECT_EQ(lightsError(R"({"type": "directional", "direction": [0, -1, 0], "intensity": 1e30,
                       "color": [1e30, 1, 1]})"),
             "s.json: lights[0]: its irradiance, intensity 1e+30 times color [1e+30, 1, 1], is "
             "beyond single precision; expected a smaller intensity or color");
-  EXPECT_EQ(errorOf("{" + sun + R"(, "direction": [0, -1, 0], "angle": 180})"),
+  EXPECT_EQ(lightsError("{" + sun + R"(, "direction": [0, -1, 0], "angle": 180})"),
             "s.json: lights[0].angle: expected an apparent diameter in degrees from 0, below 180, "
             "got 180");
-  EXPECT_EQ(errorOf(R"({"type": "directional", "direction": [0, -1, 0], "intensity": 1e30,
+  EXPECT_EQ(lightsError(R"({"type": "directional", "direction": [0, -1, 0], "intensity": 1e30,
                       "angle": 1e-15})"),
             "s.json: lights[0]: its disc's radiance, intensity 1e+30 times color [1, 1, 1] over a "
             "disc 1e-15 degrees across, is beyond single precision; expected a larger angle or a "
             "smaller intensity");
-  EXPECT_EQ(errorOf(R"({"type": "spot", "position": [0, 2, 0], "intensity": 10,
+  EXPECT_EQ(lightsError(R"({"type": "spot", "position": [0, 2, 0], "intensity": 10,
                       "direction": [0, -1, 0], "angle": 10})"),
             "s.json: lights[0].angle: not used by a spot light (only \"directional\" lights have "
             "a disc's angle)");
-  EXPECT_EQ(errorOf(R"({"position": [0, 2, 0], "intensity": 10, "direction": [0, -1, 0]})"),
+  EXPECT_EQ(lightsError(R"({"position": [0, 2, 0], "intensity": 10, "direction": [0, -1, 0]})"),
             "s.json: lights[0].direction: not used by a point light (only \"spot\" and "
             "\"directional\" lights have a direction)");
 
   const std::string named = "{" + sun + R"(, "id": "sun", "direction": [0, -1, 0]})";
-  EXPECT_EQ(errorOf(named, animated("direction", "[[0, [1, -1, 0]], [2, [-1, 1, 0]]]")),
+  EXPECT_EQ(lightsError(named, animated("direction", "[[0, [1, -1, 0]], [2, [-1, 1, 0]]]")),
             "s.json: animation.tracks[0]: at frame 1 the light's direction is zero");
-  EXPECT_EQ(errorOf(named, animated("direction", "[[0, [0, 0, 0]]]")),
+  EXPECT_EQ(lightsError(named, animated("direction", "[[0, [0, 0, 0]]]")),
             "s.json: animation.tracks[0].keys[0][1]: expected a direction of non-zero length, got "
             "an array [0,0,0]");
-  EXPECT_EQ(errorOf(named, animated("position", "[[0, [0, 1, 0]]]")),
+  EXPECT_EQ(lightsError(named, animated("position", "[[0, [0, 1, 0]]]")),
             "s.json: animation.tracks[0].property: \"position\" is not used by a directional "
             "light (it shines from infinitely far)");
-  EXPECT_EQ(errorOf(named, animated("look_at", "[[0, [0, 1, 0]]]")),
+  EXPECT_EQ(lightsError(named, animated("look_at", "[[0, [0, 1, 0]]]")),
             "s.json: animation.tracks[0].property: \"look_at\" is not used by a directional "
             "light (only a spot light aimed with \"look_at\" has one)");
   const std::string spot =
       R"({"type": "spot", "id": "sun", "position": [0, 2, 0], "intensity": 10, "look_at": [0, 0, 0]})";
-  EXPECT_EQ(errorOf(spot, animated("direction", "[[0, [0, -1, 0]]]")),
+  EXPECT_EQ(lightsError(spot, animated("direction", "[[0, [0, -1, 0]]]")),
             "s.json: animation.tracks[0].property: \"direction\" is not used by a spot light aimed "
             "with \"look_at\"");
-  EXPECT_EQ(errorOf(spot, animated("look_at", "[[0, [0, 0, 0]], [2, [0, 4, 0]]]")),
+  EXPECT_EQ(lightsError(spot, animated("look_at", "[[0, [0, 0, 0]], [2, [0, 4, 0]]]")),
             "s.json: animation.tracks[0]: at frame 1 the spot light looks at its own position");
 }
 
@@ -439,15 +424,15 @@ TEST(DirectionalLight, AnAnimatedAngleWidensTheDisc) {
   EXPECT_NEAR(middle.lights[0].sunOneMinusCos, 1 - std::cos(2.5 * kPi / 180), 1e-9);
   const std::string sun = R"({"type": "directional", "id": "sun", "direction": [0, -1, 0],
                               "intensity": 1e30})";
-  EXPECT_EQ(errorOf(sun, animated("angle", "[[0, 1], [2, 1e-15]]")),
+  EXPECT_EQ(lightsError(sun, animated("angle", "[[0, 1], [2, 1e-15]]")),
             "s.json: lights[0]: at frame 2, its disc's radiance, intensity 1e+30 times color [1, "
             "1, 1] over a disc 1e-15 degrees across, is beyond single precision; expected a larger "
             "angle or a smaller intensity");
-  EXPECT_EQ(errorOf(sun, animated("angle", "[[0, 180]]")),
+  EXPECT_EQ(lightsError(sun, animated("angle", "[[0, 180]]")),
             "s.json: animation.tracks[0].keys[0][1]: expected an apparent diameter in degrees from "
             "0, below 180, got 180");
-  EXPECT_EQ(errorOf(R"({"id": "sun", "position": [0, 2, 0], "intensity": 10})",
-                    animated("angle", "[[0, 1]]")),
+  EXPECT_EQ(lightsError(R"({"id": "sun", "position": [0, 2, 0], "intensity": 10})",
+                        animated("angle", "[[0, 1]]")),
             "s.json: animation.tracks[0].property: \"angle\" is not used by a point light (only "
             "\"directional\" lights have a disc's angle)");
 }

@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -16,6 +15,7 @@
 namespace candela {
 namespace {
 
+using test::num;
 using test::regionStats;
 using test::renderTestScene;
 
@@ -40,12 +40,6 @@ double sphereLightOnPlane(double rho, double L, double r, double lx, double ly, 
                           const PlanePoint& at) {
   const double dx = lx - at.x, dz = lz - at.z, d2 = dx * dx + ly * ly + dz * dz;
   return rho * L * r * r / d2 * (ly / std::sqrt(d2));
-}
-
-std::string num(double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.9g", v);
-  return buf;
 }
 
 // A point light above the plane y = 0 (y > 0): its JSON, and the radiance that a diffuse plane

@@ -6,7 +6,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstdio>
 #include <string>
 #include <utility>
 
@@ -21,11 +20,8 @@ namespace {
 
 constexpr double kZ = 5.0;
 
-std::string num(double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.9g", v);
-  return buf;
-}
+using test::lightsError;
+using test::num;
 
 // Where the ray through the centre of pixel (x, y) meets the plane y = 0.
 Vec3 planePointAt(const Camera& cam, uint32_t x, uint32_t y) {
@@ -172,48 +168,37 @@ TEST(SpotLight, ItsFluxShareIsTheFalloffsMeanOverTheSphere) {
   }
 }
 
-std::string errorOf(const std::string& light, const std::string& animation = "") {
-  try {
-    parseSceneText(
-        R"({"camera": {"width": 4, "height": 4}, "lights": [)" + light + "]" + animation + "}",
-        "s.json", ".");
-  } catch (const SceneError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
-
 TEST(SpotLight, TheSceneFormatRefusesWhatASpotCannotBe) {
   const std::string at = R"("type": "spot", "position": [0, 2, 0], "intensity": 10)";
   EXPECT_EQ(
-      errorOf("{" + at + "}"),
+      lightsError("{" + at + "}"),
       "s.json: lights[0]: missing \"direction\" or \"look_at\" (where the spot light points)");
-  EXPECT_EQ(errorOf("{" + at + R"(, "direction": [0, -1, 0], "look_at": [0, 0, 0]})"),
+  EXPECT_EQ(lightsError("{" + at + R"(, "direction": [0, -1, 0], "look_at": [0, 0, 0]})"),
             "s.json: lights[0]: expected either \"direction\" or \"look_at\", got both");
   EXPECT_EQ(
-      errorOf("{" + at + R"(, "direction": [0, 0, 0]})"),
+      lightsError("{" + at + R"(, "direction": [0, 0, 0]})"),
       "s.json: lights[0].direction: expected a direction of non-zero length, got an array [0,0,0]");
-  EXPECT_EQ(errorOf("{" + at + R"(, "look_at": [0, 2, 0]})"),
+  EXPECT_EQ(lightsError("{" + at + R"(, "look_at": [0, 2, 0]})"),
             "s.json: lights[0].look_at: the spot light looks at its own position");
   EXPECT_EQ(
-      errorOf("{" + at + R"(, "direction": [0, -1, 0], "cutoff_angle": 0})"),
+      lightsError("{" + at + R"(, "direction": [0, -1, 0], "cutoff_angle": 0})"),
       "s.json: lights[0].cutoff_angle: expected an angle in degrees above 0, up to 180, got 0");
   EXPECT_EQ(
-      errorOf("{" + at + R"(, "direction": [0, -1, 0], "cutoff_angle": 30, "beam_width": 45})"),
+      lightsError("{" + at + R"(, "direction": [0, -1, 0], "cutoff_angle": 30, "beam_width": 45})"),
       "s.json: lights[0].beam_width: expected an angle in degrees from 0 to the "
       "cutoff_angle, 30, got 45");
   EXPECT_EQ(
-      errorOf("{" + at + R"(, "direction": [0, -1, 0], "radius": 1})"),
+      lightsError("{" + at + R"(, "direction": [0, -1, 0], "radius": 1})"),
       "s.json: lights[0].radius: not used by a spot light (only \"sphere\" lights have a radius)");
-  EXPECT_EQ(errorOf(R"({"position": [0, 2, 0], "intensity": 10, "cutoff_angle": 30})"),
+  EXPECT_EQ(lightsError(R"({"position": [0, 2, 0], "intensity": 10, "cutoff_angle": 30})"),
             "s.json: lights[0].cutoff_angle: not used by a point light (only \"spot\" lights have "
             "a cone)");
-  EXPECT_EQ(errorOf("{" + at + R"(, "id": "lamp", "look_at": [0, 0, 0]})",
-                    R"(, "animation": {"frames": 3, "tracks": [{"target": "lamp",
+  EXPECT_EQ(lightsError("{" + at + R"(, "id": "lamp", "look_at": [0, 0, 0]})",
+                        R"(, "animation": {"frames": 3, "tracks": [{"target": "lamp",
                        "property": "position", "keys": [[0, [0, 2, 0]], [2, [0, -2, 0]]]}]})"),
             "s.json: animation.tracks[0]: at frame 1 the spot light looks at its own position");
-  EXPECT_EQ(errorOf("{" + at + R"(, "id": "lamp", "direction": [0, -1, 0]})",
-                    R"(, "animation": {"frames": 3, "tracks": [{"target": "lamp",
+  EXPECT_EQ(lightsError("{" + at + R"(, "id": "lamp", "direction": [0, -1, 0]})",
+                        R"(, "animation": {"frames": 3, "tracks": [{"target": "lamp",
                        "property": "radius", "keys": [[0, 1]]}]})"),
             "s.json: animation.tracks[0].property: \"radius\" is not used by a spot light (only "
             "\"sphere\" lights have a radius)");
