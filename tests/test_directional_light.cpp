@@ -13,7 +13,6 @@
 #include "render/light_selection.h"
 #include "render_test_util.h"
 #include "scene/animation.h"
-#include "scene/scene_error.h"
 
 namespace candela {
 namespace {

@@ -13,7 +13,6 @@
 #include "render/spot_cone.h"
 #include "render_test_util.h"
 #include "scene/light_emission_desc.h"
-#include "scene/scene_error.h"
 
 namespace candela {
 namespace {
