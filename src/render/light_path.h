@@ -126,8 +126,8 @@ CANDELA_HDI bool connectsLightSubpaths(const SceneView& scene, const Light& l) {
 // power heuristic does, on glossy surfaces above all, and on lights that subtend a small cone
 // (docs/performance.md). The choice is the light's and the render's, not the densities', so every
 // site that weighs a path makes the same one.
-CANDELA_HDI float misWeight3(float a, float b, float c, bool lightStartsSubpaths) {
-  if (lightStartsSubpaths) return a / (a + b + c);
+CANDELA_HDI float misWeight3(float a, float b, float c, bool connectsSubpaths) {
+  if (connectsSubpaths) return a / (a + b + c);
   const float a2 = a * a;
   return a2 / (a2 + b * b + c * c);
 }
