@@ -78,6 +78,19 @@ def busy_threads(scene_path, **options):
     return sum(ns >= 20e6 for ns in json.loads(run.stdout).values())
 
 
+def most_busy_threads(scene_path, tries=3, **options):
+    """busy_threads with all cores, the most of up to `tries` runs, stopping at the first with two
+    or more: that several threads *can* share the work needs one run that shows it, and on a
+    shared virtual machine whose other core the host lends elsewhere for a moment, one run in CI
+    saw only one busy thread (the same commit showed two in five runs after it)."""
+    most = 0
+    for _ in range(tries):
+        most = max(most, busy_threads(scene_path, **options))
+        if most >= 2:
+            break
+    return most
+
+
 pytestmark = [
     pytest.mark.skipif(not os.path.exists(f'/proc/self/task/{os.getpid()}/schedstat'),
                        reason="needs Linux's /proc/self/task/*/schedstat to see threads' CPU time"),
@@ -88,7 +101,7 @@ pytestmark = [
 
 def test_a_render_given_one_thread_builds_on_one(tmp_path):
     scene = write_grid_scene(tmp_path, 500)
-    one, all_cores = busy_threads(scene, threads=1), busy_threads(scene)
+    one, all_cores = busy_threads(scene, threads=1), most_busy_threads(scene)
     assert one <= 1 and all_cores > one, (
         f'busy threads: {one} with threads=1, {all_cores} with all cores')
 
@@ -99,6 +112,6 @@ def test_a_denoised_render_given_one_thread_denoises_on_one(tmp_path):
     path = tmp_path / 'tiny.json'
     path.write_text(json.dumps(tiny_scene(spp=1, size=256)))
     one = busy_threads(path, threads=1, denoise=True)
-    all_cores = busy_threads(path, denoise=True)
+    all_cores = most_busy_threads(path, denoise=True)
     assert one <= 1 and all_cores > one, (
         f'busy threads: {one} with threads=1, {all_cores} with all cores')
