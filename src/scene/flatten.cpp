@@ -137,9 +137,7 @@ void addLight(SceneData& s, const LightDesc& d) {
     light.power = lightPower(d);
     light.spot = spotCone(d);
   } else if (d.type == LightType::Directional) {
-    light.direction = normalize(d.direction);
-    light.power = lightPower(d);  // the irradiance
-    light.sunOneMinusCos = sunOneMinusCos(d);
+    light = directionalLight(d);
   } else {
     Material emitter;
     emitter.type = MaterialType::Emissive;

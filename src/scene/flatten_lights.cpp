@@ -158,7 +158,7 @@ void setLightPathPicks(SceneData& s, const std::vector<LightBounds>& bounds) {
 // bounding sphere grows with the square of the scene's size, and a ground sphere of radius 1000
 // once made the environment's a million times a lamp's.
 void setInfiniteLightPicks(SceneData& s) {
-  for (uint32_t i = 0; i < s.lights.size(); ++i) {
+  for (uint32_t i = 0; i < s.firstTriangleLight; ++i) {  // none of the triangle lights after
     const Light& l = s.lights[i];
     const bool sends = l.type == LightType::Environment ? environmentMeanRadiance(s) > 0.0
                                                         : componentSum(l.power) > 0.0;

@@ -1,4 +1,4 @@
-// lightEmissionProblem, sunOneMinusCos and spotCone; see light_emission_desc.h.
+// lightEmissionProblem, sunOneMinusCos, directionalLight and spotCone; see light_emission_desc.h.
 #include "scene/light_emission_desc.h"
 
 #include <cmath>
@@ -17,10 +17,7 @@ std::string lightEmissionProblem(const LightDesc& d) {
            ", is beyond single precision; expected a smaller intensity "
            "or color";
   if (d.type == LightType::Directional && d.angleDegrees > 0) {
-    Light l;
-    l.type = LightType::Directional;
-    l.power = lightPower(d);
-    l.sunOneMinusCos = sunOneMinusCos(d);
+    const Light l = directionalLight(d);
     // A disc too small for single precision (omc 0) is a delta light, whose irradiance is checked
     // above.
     if (l.sunOneMinusCos > 0.0f && !isFinite(sunRadiance(l)))
@@ -40,6 +37,15 @@ float sunOneMinusCos(const LightDesc& d) {
   const double halfRadius = double(d.angleDegrees) * (kPi / 180.0) / 4.0;
   const double s = std::sin(halfRadius);
   return float(2.0 * s * s);
+}
+
+Light directionalLight(const LightDesc& d) {
+  Light light;
+  light.type = LightType::Directional;
+  light.direction = normalize(d.direction);
+  light.power = lightPower(d);  // the irradiance
+  light.sunOneMinusCos = sunOneMinusCos(d);
+  return light;
 }
 
 SpotCone spotCone(const LightDesc& d) {

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "core/constants.h"
+#include "render/light.h"
 #include "render/spot_cone.h"
 #include "scene/scene_desc.h"
 
@@ -28,6 +29,9 @@ std::string lightEmissionProblem(const LightDesc& d);
 // A directional light's 1 - cos of its disc's angular radius, 2 sin^2(radius / 2) in double (0:
 // a delta light, as is a disc too small for single precision).
 float sunOneMinusCos(const LightDesc& d);
+
+// The kernel's directional light of description d: its direction, irradiance and disc.
+Light directionalLight(const LightDesc& d);
 
 // The share of a point light's power that the cone lets out: the falloff's mean over the sphere,
 // (1 + (sin beam - sin cutoff) / (cutoff - beam)) / 2, or (1 - cos cutoff) / 2 for a hard edge.
