@@ -167,6 +167,19 @@ TEST(SpotLight, ItsFluxShareIsTheFalloffsMeanOverTheSphere) {
   }
 }
 
+// A look_at a hair from the spot (1e-30 along x) still aims it, along x: its axis is taken in
+// double, where float's square of the offset would vanish and leave a NaN axis (a dark spot, and
+// null in the poses file).
+TEST(SpotLight, ALookAtAHairFromTheSpotStillAimsIt) {
+  const SceneData data = test::loadTestScene(R"({"camera": {"width": 4, "height": 4},
+    "lights": [{"type": "spot", "position": [0, 3, 0], "look_at": [1e-30, 3, 0],
+                "intensity": 10}]})");
+  const SpotCone& cone = data.lights[0].spot;
+  EXPECT_EQ(cone.axis.x, 1.0f);
+  EXPECT_EQ(cone.axis.y, 0.0f);
+  EXPECT_EQ(cone.axis.z, 0.0f);
+}
+
 TEST(SpotLight, TheSceneFormatRefusesWhatASpotCannotBe) {
   const std::string at = R"("type": "spot", "position": [0, 2, 0], "intensity": 10)";
   EXPECT_EQ(

@@ -16,7 +16,7 @@ namespace {
 Mat3 lightModel(const LightDesc& l) {
   if (l.type == LightType::Sphere) return Mat3::diagonal(Vec3(l.radius));
   if (!l.spot && l.type != LightType::Directional) return Mat3();
-  const Vec3 axis = l.spot ? spotCone(l).axis : normalize(l.direction);
+  const Vec3 axis = l.spot ? spotCone(l).axis : unitVector(l.direction);
   const Frame frame(axis);
   return Mat3::fromColumns(frame.s, frame.t, frame.n);
 }

@@ -42,7 +42,7 @@ float sunOneMinusCos(const LightDesc& d) {
 Light directionalLight(const LightDesc& d) {
   Light light;
   light.type = LightType::Directional;
-  light.direction = normalize(d.direction);
+  light.direction = unitVector(d.direction);
   light.power = lightPower(d);  // the irradiance
   light.sunOneMinusCos = sunOneMinusCos(d);
   return light;
@@ -52,7 +52,7 @@ SpotCone spotCone(const LightDesc& d) {
   SpotCone cone;
   if (!d.spot) return cone;
   const SpotDesc& spot = *d.spot;
-  cone.axis = normalize(spot.lookAt ? *spot.lookAt - d.position : d.direction);
+  cone.axis = unitVector(spot.lookAt ? *spot.lookAt - d.position : d.direction);
   const double cutoff = double(spot.cutoffDegrees) * (kPi / 180.0);
   const double beam = double(spot.beamDegrees) * (kPi / 180.0);
   cone.cosCutoff = float(std::cos(cutoff));

@@ -26,6 +26,14 @@ inline Vec3 sphereLightRadiance(const LightDesc& d) {
 // samples that are not finite).
 std::string lightEmissionProblem(const LightDesc& d);
 
+// The unit vector along v, normalised in double: float's squares of its components would
+// overflow beyond 1.8e19 and vanish below 1e-19, so any non-zero v has one; zero for zero.
+inline Vec3 unitVector(const Vec3& v) {
+  const double x = v.x, y = v.y, z = v.z, length = std::sqrt(x * x + y * y + z * z);
+  if (!(length > 0)) return Vec3(0.0f);
+  return Vec3(float(x / length), float(y / length), float(z / length));
+}
+
 // A directional light's 1 - cos of its disc's angular radius, 2 sin^2(radius / 2) in double (0:
 // a delta light, as is a disc too small for single precision).
 float sunOneMinusCos(const LightDesc& d);

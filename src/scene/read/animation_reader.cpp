@@ -295,7 +295,7 @@ void checkAimsAtEveryFrame(const AnimationDesc& animation, const SceneDesc& scen
       if (at.spot && at.spot->lookAt) {
         if (isBlack(*at.spot->lookAt - at.position))
           failAt(file, aim->where, when + " the spot light looks at its own position");
-      } else if (!(lengthSquared(normalize(at.direction)) > 0.5f)) {
+      } else if (isBlack(at.direction)) {  // any other has a unitVector
         failAt(file, aim->where, when + " the light's direction is zero");
       }
     }

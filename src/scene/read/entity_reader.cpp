@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <sstream>
 
+#include "scene/light_emission_desc.h"
+
 namespace candela {
 namespace {
 
@@ -90,13 +92,10 @@ float readSunAngle(const JsonValue& value) {
   return degrees;
 }
 
-// The unit vector of a non-zero vector, normalised in double: float's squares of its components
-// would overflow beyond 1.8e19 and vanish below 1e-19.
 Vec3 readDirection(const JsonValue& value) {
   const Vec3 v = value.vec3();
-  const double x = v.x, y = v.y, z = v.z, length = std::sqrt(x * x + y * y + z * z);
-  if (!(length > 0)) value.failExpected("a direction of non-zero length");
-  return Vec3(float(x / length), float(y / length), float(z / length));
+  if (isBlack(v)) value.failExpected("a direction of non-zero length");
+  return unitVector(v);
 }
 
 SphereDesc readSphere(const JsonValue& value, const MaterialLibrary& library,
