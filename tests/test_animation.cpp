@@ -98,7 +98,7 @@ TEST(AnimationErrors, UnknownProperty) {
   EXPECT_EQ(trackError(R"({"target": "lamp", "property": "scale", "keys": [[0, 1]]})"),
             "s.json: animation.tracks[0].property: light \"lamp\" has no animatable property "
             "\"scale\", expected one of \"position\", \"intensity\", \"color\", "
-            "\"radius\", \"direction\", \"look_at\", \"angle\"");
+            "\"radius\", \"direction\", \"look_at\", \"angle\", \"size\", \"up\"");
 }
 
 TEST(AnimationErrors, PropertyTheTargetDoesNotUse) {

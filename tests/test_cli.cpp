@@ -258,8 +258,9 @@ TEST_F(CliTest, UnwritableOutputExitsOne) {
 }
 
 TEST_F(CliTest, InfoPrintsTheSceneCounts) {
-  // One quad (two triangles, emissive: two lights), one sphere, a point and a spot light and the
-  // environment (each light type once: a count by type once wrote past its array for the last).
+  // One quad (two triangles, emissive: two lights), one sphere, a point, a spot, a directional and
+  // a rectangle light (two triangles more, one light to the user) and the environment (each light
+  // type once: a count by type once wrote past its array for the last).
   writeFile("quad.obj", "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nf 1 2 3 4\n");
   writeFile("mesh.json", R"({
     "camera": {"width": 32, "height": 24, "spp": 8, "position": [0, 0, 5]},
@@ -267,16 +268,19 @@ TEST_F(CliTest, InfoPrintsTheSceneCounts) {
     "objects": [{"file": "quad.obj", "material": {"type": "emissive", "radiance": 1}}],
     "lights": [{"position": [0, 3, 3], "intensity": 100},
                {"type": "spot", "position": [0, 3, 3], "direction": [0, -1, 0], "intensity": 9},
-               {"type": "directional", "direction": [1, -1, 0], "intensity": 2}],
+               {"type": "directional", "direction": [1, -1, 0], "intensity": 2},
+               {"type": "rectangle", "position": [0, 3, 0], "direction": [0, -1, 0], "size": 1,
+                "intensity": 5}],
     "environment": {"color": 0.1}
   })");
   const RunResult r = run("info mesh.json");
   ASSERT_EQ(r.exitCode, 0) << r.err;
-  EXPECT_NE(r.out.find("triangles:  2\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("triangles:  4\n"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("spheres:    1\n"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("objects:    1\n"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("lights:     6 (1 point, 1 spot, 1 directional, 0 emissive spheres, 2 "
-                       "emissive faces, the environment)\n"),
+  EXPECT_NE(r.out.find(
+                "lights:     7 (1 point, 1 spot, 1 directional, 1 rectangle, 0 emissive spheres, 2 "
+                "emissive faces, the environment)\n"),
             std::string::npos)
       << r.out;
   EXPECT_NE(r.out.find("image:      32x24, 8 spp\n"), std::string::npos) << r.out;

@@ -361,8 +361,8 @@ TEST(DirectionalLight, TheSceneFormatRefusesWhatItCannotBe) {
             "s.json: lights[0].angle: not used by a spot light (only \"directional\" lights have "
             "a disc's angle)");
   EXPECT_EQ(lightsError(R"({"position": [0, 2, 0], "intensity": 10, "direction": [0, -1, 0]})"),
-            "s.json: lights[0].direction: not used by a point light (only \"spot\" and "
-            "\"directional\" lights have a direction)");
+            "s.json: lights[0].direction: not used by a point light (only \"spot\", "
+            "\"rectangle\" and \"directional\" lights have a direction)");
 
   const std::string named = "{" + sun + R"(, "id": "sun", "direction": [0, -1, 0]})";
   EXPECT_EQ(lightsError(named, animated("direction", "[[0, [1, -1, 0]], [2, [-1, 1, 0]]]")),
@@ -375,7 +375,7 @@ TEST(DirectionalLight, TheSceneFormatRefusesWhatItCannotBe) {
             "light (it shines from infinitely far)");
   EXPECT_EQ(lightsError(named, animated("look_at", "[[0, [0, 1, 0]]]")),
             "s.json: animation.tracks[0].property: \"look_at\" is not used by a directional "
-            "light (only a spot light aimed with \"look_at\" has one)");
+            "light (only a spot or rectangle light aimed with \"look_at\" has one)");
   const std::string spot =
       R"({"type": "spot", "id": "sun", "position": [0, 2, 0], "intensity": 10, "look_at": [0, 0, 0]})";
   EXPECT_EQ(lightsError(spot, animated("direction", "[[0, [0, -1, 0]]]")),

@@ -259,8 +259,7 @@ TEST_F(SceneLoader, BadRoughMaterialsAreRefused) {
 TEST_F(SceneLoader, UnknownLightType) {
   EXPECT_EQ(errorWith(R"("lights": [{"type": "area", "position": [0, 0, 0], "intensity": 1}])"),
             "s.json: lights[0].type: expected one of \"point\", \"sphere\", \"spot\", "
-            "\"directional\", got a "
-            "string \"area\"");
+            "\"directional\", \"rectangle\", got a string \"area\"");
 }
 
 TEST_F(SceneLoader, UnknownNamedMaterial) {

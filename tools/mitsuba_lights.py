@@ -1,9 +1,10 @@
 #!/usr/bin/env python3
-"""Renders a candela scene with spot or directional lights with Mitsuba 3, for reference images.
+"""Renders a candela scene with spot, directional or rectangle lights with Mitsuba 3, for reference
+images.
 
 The shared harness (../shared/reference/mitsuba_ref.py) maps the original scene contract, whose
-lights are point and sphere lights; this adds spot and directional lights (and an environment
-map, as tools/mitsuba_envmap.py maps it) and hands everything else to it.
+lights are point and sphere lights; this adds spot, directional and rectangle lights (and an
+environment map, as tools/mitsuba_envmap.py maps it) and hands everything else to it.
 
     /tmp/mi/bin/python tools/mitsuba_lights.py SCENE.json OUT.exr [--spp N] [--seed S]
                                                [--threads T]
@@ -17,6 +18,10 @@ light (docs/scene-format.md, Lights) is Mitsuba's `spot` with the same
 `intensity` the radiant intensity of the point light it limits, color * intensity / (4 pi), as the
 harness maps a point light, and its `to_world` a look-at from its position along its direction (or
 to its look_at point); the up vector only turns the spot about its axis, which changes nothing.
+A rectangle light is Mitsuba's `rectangle` shape ([-1, 1]^2 in its xy plane, shining along +z)
+placed by a to_world whose columns are candela's width, height and normal axes scaled by half
+the width and height, with an `area` emitter of radiance color * intensity / (pi width height)
+and a black `diffuse` BSDF (candela's emitters reflect nothing; Mitsuba's default BSDF would).
 """
 import argparse
 import json
@@ -40,14 +45,18 @@ SPOT_KEYS = ('direction', 'look_at', 'cutoff_angle', 'beam_width')
 
 
 def split_lights(scene):
-    """The scene for the harness, with its spot lights made point lights and its directional
-    lights taken out; the spots by index, and the directional lights' Mitsuba emitters."""
+    """The scene for the harness, with its spot lights made point lights and its directional and
+    rectangle lights taken out; the spots by index, and the others' Mitsuba emitters (or
+    emitting shapes)."""
     spots = {}
-    directional = []
+    emitters = []
     harness_lights = []
     for i, light in enumerate(scene.get('lights', [])):
         if light.get('type') == 'directional':
-            directional.append(directional_emitter(light))
+            emitters.append(directional_emitter(light))
+            continue
+        if light.get('type') == 'rectangle':
+            emitters.append(rectangle_emitter(light))
             continue
         if light.get('type') == 'spot':
             spots[len(harness_lights)] = {k: light[k] for k in SPOT_KEYS if k in light}
@@ -59,7 +68,7 @@ def split_lights(scene):
                 light.pop(k, None)
         harness_lights.append(light)
     scene['lights'] = harness_lights
-    return scene, spots, directional
+    return scene, spots, emitters
 
 
 def rgb_of(color):
@@ -69,6 +78,41 @@ def rgb_of(color):
 def directional_emitter(light):
     return {'type': 'directional', 'direction': [float(x) for x in light['direction']],
             'irradiance': mr.rgb(rgb_of(light.get('color', 1.0)) * light['intensity'])}
+
+
+def unit(v):
+    v = np.array(v, dtype=np.float64)
+    return v / np.linalg.norm(v)
+
+
+def rectangle_axes(light):
+    """candela's width, height and normal axes (scene/light_emission_desc.h, rectangleAxes)."""
+    position = np.array(light['position'], dtype=np.float64)
+    if 'look_at' in light:
+        n = unit(np.array(light['look_at'], dtype=np.float64) - position)
+    else:
+        n = unit(light['direction'])
+    if 'up' in light:
+        up = np.array(light['up'], dtype=np.float64)
+    else:
+        up = np.array([0.0, 0.0, 1.0] if np.linalg.norm(np.cross(n, [0, 1, 0])) < 1e-6
+                      else [0.0, 1.0, 0.0])
+    height = unit(up - np.dot(up, n) * n)
+    return np.cross(height, n), height, n
+
+
+def rectangle_emitter(light):
+    size = light['size'] if isinstance(light['size'], list) else [light['size']] * 2
+    width, height, normal = rectangle_axes(light)
+    m = np.eye(4)
+    m[:3, 0] = width * size[0] / 2
+    m[:3, 1] = height * size[1] / 2
+    m[:3, 2] = normal
+    m[:3, 3] = light['position']
+    radiance = rgb_of(light.get('color', 1.0)) * light['intensity'] / (math.pi * size[0] * size[1])
+    return {'type': 'rectangle', 'to_world': mi.ScalarTransform4f(m.tolist()),
+            'emitter': {'type': 'area', 'radiance': mr.rgb(radiance)},
+            'bsdf': {'type': 'diffuse', 'reflectance': mr.rgb(np.zeros(3))}}
 
 
 def spot_emitter(spot):
@@ -104,14 +148,14 @@ def main(argv=None):
     if env is None:
         with open(a.scene) as f:
             scene = json.load(f)
-    scene, spots, directional = split_lights(scene)
+    scene, spots, emitters = split_lights(scene)
     t0 = time.perf_counter()
     sc = mitsuba_envmap.parse_beside(scene, a.scene, 'lights')
     d = mr.scene_dict(sc, spp=a.spp)
     for i, spot in spots.items():
         d[f'light{i}'] = spot_emitter(spot)
-    for i, emitter in enumerate(directional):
-        d[f'directional{i}'] = emitter
+    for i, emitter in enumerate(emitters):
+        d[f'emitter{i}'] = emitter
     if env is not None:
         d['envmap'] = mitsuba_envmap.envmap_emitter(env, os.path.dirname(os.path.abspath(a.scene)))
     loaded = mi.load_dict(d)

@@ -152,7 +152,8 @@ class Scene:
         {number: {"name", "object_to_world", "object_to_camera"}}, each matrix a (4, 4) float64
         array [A p; 0 0 0 1] taking the instance's model (an object's mesh as its file has it,
         the unit sphere for a sphere or sphere light, the origin for a point light, a rotation
-        turning +z to where it shines for a spot or directional light) to world space, and to
+        turning +z to where it shines for a spot or directional light, the unit square of the xy
+        plane for a rectangle light, which shines along +z) to world space, and to
         OpenCV's camera axes (the camera's extrinsics times the first)."""
         return {number: {"name": name,
                          "object_to_world": np.array(world, dtype=np.float64),

@@ -54,7 +54,13 @@ void applyToLight(LightDesc& light, AnimProperty property, const Vec3& v) {
       light.angleDegrees = v.x;
       break;
     case AnimProperty::LookAt:
-      if (light.spot) light.spot->lookAt = v;
+      light.lookAt = v;
+      break;
+    case AnimProperty::Up:
+      if (light.rectangle) light.rectangle->up = v;
+      break;
+    case AnimProperty::Size:
+      if (light.rectangle) light.rectangle->size = Vec2(v.x, v.y);
       break;
     default: break;
   }

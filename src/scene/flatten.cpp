@@ -48,13 +48,18 @@ class MeshLayouts {
   std::map<Key, MeshLayout> layouts_;
 };
 
-// Room in s's vertex and triangle arrays for the objects' meshes, so that each array is written
-// once: grown object by object, the scale scene's 8.5 M triangles spent most of their flattening
-// copying and paging in the arrays' earlier sizes (docs/performance.md).
-void reserveMeshes(SceneData& s, const std::vector<ObjectDesc>& objects, MeshLayouts& layouts) {
+// Room in s's vertex and triangle arrays for the objects' meshes and the rectangle lights, so that
+// each array is written once: grown object by object, the scale scene's 8.5 M triangles spent most
+// of their flattening copying and paging in the arrays' earlier sizes (docs/performance.md).
+void reserveMeshes(SceneData& s, const SceneDesc& desc, MeshLayouts& layouts) {
   size_t vertices = s.positions.size(), triangles = s.triangles.size();
+  for (const LightDesc& light : desc.lights)
+    if (light.rectangle) {
+      vertices += 4;
+      triangles += 2;
+    }
   bool normals = false, uvs = false;
-  for (const ObjectDesc& obj : objects) {
+  for (const ObjectDesc& obj : desc.objects) {
     const MeshLayout& layout = layouts.of(obj);
     vertices += layout.vertexCount(*obj.mesh);
     triangles += layout.triangles.size();
@@ -127,9 +132,23 @@ void addObject(SceneData& s, const ObjectDesc& obj, bool geometry, MeshLayouts& 
   }
 }
 
+Material emitterOf(const Vec3& radiance) {
+  Material emitter;
+  emitter.type = MaterialType::Emissive;
+  emitter.color = Vec3(0.0f);
+  emitter.radiance = radiance;
+  return emitter;
+}
+
 // A point light (a spot light: with a cone), a directional light, or a sphere light: an
 // emissive sphere (of sphereLightRadiance) that names the light, which in turn names the sphere.
+// A rectangle light appends only its material here: its triangles are geometry
+// (addRectangleLight), made lights with every emissive triangle (addEmitterLights).
 void addLight(SceneData& s, const LightDesc& d) {
+  if (d.rectangle) {
+    addMaterial(s, emitterOf(rectangleLightRadiance(d)));
+    return;
+  }
   Light light;
   light.type = d.type;
   if (d.type == LightType::Point) {
@@ -139,15 +158,22 @@ void addLight(SceneData& s, const LightDesc& d) {
   } else if (d.type == LightType::Directional) {
     light = directionalLight(d);
   } else {
-    Material emitter;
-    emitter.type = MaterialType::Emissive;
-    emitter.color = Vec3(0.0f);
-    emitter.radiance = sphereLightRadiance(d);
     light.shape = uint32_t(s.spheres.size());
-    s.spheres.push_back(
-        Sphere{d.position, d.radius, addMaterial(s, emitter), int32_t(s.lights.size())});
+    s.spheres.push_back(Sphere{d.position, d.radius,
+                               addMaterial(s, emitterOf(sphereLightRadiance(d))),
+                               int32_t(s.lights.size())});
   }
   s.lights.push_back(light);
+}
+
+// A rectangle light's two triangles, of its material (`material`, as addLight appended it).
+void addRectangleLight(SceneData& s, const LightDesc& d, uint32_t material) {
+  const uint32_t base = uint32_t(s.positions.size());
+  Vec3 corners[4];
+  rectangleCorners(d, corners);
+  s.positions.insert(s.positions.end(), corners, corners + 4);
+  s.triangles.push_back(Triangle{{base, base + 1, base + 2}, material});
+  s.triangles.push_back(Triangle{{base, base + 2, base + 3}, material});
 }
 
 // The texture pool and its sRGB table (only when used).
@@ -217,17 +243,22 @@ void addInstances(SceneData& s, const SceneDesc& desc, bool geometry) {
     tagInstance(s, number.firstSphere + i);
   }
   // Lights after plain spheres: sphere lights append their own emissive spheres.
+  std::vector<uint32_t> lightMaterials;  // of each light, where it has one
   for (uint32_t i = 0; i < desc.lights.size(); ++i) {
+    lightMaterials.push_back(uint32_t(s.materials.size()));
     addLight(s, desc.lights[i]);
     tagInstance(s, number.firstLight + i);
   }
   std::vector<FlattenedObject> flattened(desc.objects.size());
   MeshLayouts layouts;  // kept until the repeats are found: `flattened` points into it
-  if (geometry) reserveMeshes(s, desc.objects, layouts);
+  if (geometry) reserveMeshes(s, desc, layouts);
   for (uint32_t i = 0; i < desc.objects.size(); ++i) {
     addObject(s, desc.objects[i], geometry, layouts, &flattened[i]);
     tagInstance(s, number.firstObject + i);
   }
+  if (geometry)  // after the objects', which the objects' places (s.meshInstances) count from
+    for (uint32_t i = 0; i < desc.lights.size(); ++i)
+      if (desc.lights[i].rectangle) addRectangleLight(s, desc.lights[i], lightMaterials[i]);
   // Only where no own BVH will reorder the triangles (which voids the objects' places): an
   // engine of its own traces the scene.
   if (geometry) {

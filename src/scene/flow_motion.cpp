@@ -5,6 +5,7 @@
 
 #include "core/rotation.h"
 #include "scene/camera_resolve.h"
+#include "scene/instance_poses.h"
 #include "scene/scene_error.h"
 
 namespace candela {
@@ -42,6 +43,18 @@ InstanceMotion objectMotion(const ObjectDesc& now, const ObjectDesc& next) {
   return m;
 }
 
+// A rectangle light maps a point q of its model to position + A q (A its lightModel); the motion
+// takes a world point of it back to q and forward with the next frame's placement.
+InstanceMotion rectangleMotion(const LightDesc& now, const LightDesc& next) {
+  InstanceMotion m;
+  const Mat3 a = lightModel(now), aNext = lightModel(next);
+  Mat3 inverse;
+  if (!invert(a, &inverse)) return m;  // a rectangle's axes are never degenerate
+  m.linear = aNext * inverse;
+  m.offset = next.position - m.linear * now.position;
+  return m;
+}
+
 FlowCamera flowCamera(const CameraDesc& desc, const std::string& label) {
   const Camera camera = resolveCamera(desc, label);
   FlowCamera f;
@@ -67,8 +80,10 @@ FlowMotion flowMotion(const SceneDesc& now, const SceneDesc& next) {
   for (size_t k = 0; k < now.objects.size(); ++k, ++i)
     f.instances[i] = objectMotion(now.objects[k], next.objects[k]);
   for (size_t k = 0; k < now.lights.size(); ++k, ++i)
-    f.instances[i] = sphereMotion(now.lights[k].position, now.lights[k].radius,
-                                  next.lights[k].position, next.lights[k].radius);
+    f.instances[i] = now.lights[k].rectangle
+                         ? rectangleMotion(now.lights[k], next.lights[k])
+                         : sphereMotion(now.lights[k].position, now.lights[k].radius,
+                                        next.lights[k].position, next.lights[k].radius);
   f.frames.now = flowCamera(now.camera, now.file);
   f.frames.next = flowCamera(next.camera, next.file);
   f.frames.enabled = true;

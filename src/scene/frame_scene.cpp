@@ -10,6 +10,7 @@
 #include "scene/content_hash.h"
 #include "scene/flatten.h"
 #include "scene/key_writer.h"
+#include "scene/light_emission_desc.h"
 #include "scene/mesh_layout.h"
 
 namespace candela {
@@ -35,6 +36,11 @@ void writeKeys(const SceneDesc& desc, std::string* geometry, std::string* struct
     if (l.type == LightType::Sphere) {  // sphere lights are spheres of the BVH
       full.add(l.position);
       full.add(l.radius);
+    }
+    if (l.rectangle) {  // and rectangle lights two of its triangles
+      Vec3 corners[4];
+      rectangleCorners(l, corners);
+      for (const Vec3& corner : corners) full.add(corner);
     }
   }
   both(desc.objects.size());

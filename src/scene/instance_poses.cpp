@@ -8,20 +8,19 @@
 #include "scene/light_emission_desc.h"
 
 namespace candela {
-namespace {
 
-// A light's model: a sphere light's unit sphere scaled by its radius; for a spot or directional
-// light, a rotation whose third column (the model's +z) is where it shines, the first two
-// completing a right-handed frame (core/frame.h); a point light's, nothing.
 Mat3 lightModel(const LightDesc& l) {
   if (l.type == LightType::Sphere) return Mat3::diagonal(Vec3(l.radius));
+  if (l.rectangle) {
+    const RectangleAxes axes = rectangleAxes(l);
+    return Mat3::fromColumns(axes.width * l.rectangle->size.x, axes.height * l.rectangle->size.y,
+                             axes.normal);
+  }
   if (!l.spot && l.type != LightType::Directional) return Mat3();
   const Vec3 axis = l.spot ? spotCone(l).axis : unitVector(l.direction);
   const Frame frame(axis);
   return Mat3::fromColumns(frame.s, frame.t, frame.n);
 }
-
-}  // namespace
 
 std::vector<InstancePose> instancePoses(const SceneDesc& desc) {
   std::vector<InstancePose> poses;

@@ -1,9 +1,10 @@
-// lightEmissionProblem, sunOneMinusCos, directionalLight and spotCone; see light_emission_desc.h.
+// What lights emit, and where: see light_emission_desc.h.
 #include "scene/light_emission_desc.h"
 
 #include <cmath>
 
 #include "render/light_sample.h"
+#include "scene/along_up.h"
 #include "scene/scene_error.h"
 
 namespace candela {
@@ -30,7 +31,54 @@ std::string lightEmissionProblem(const LightDesc& d) {
            formatNumber(d.radius) +
            ", is beyond single precision; expected a larger radius or a "
            "smaller intensity";
+  if (d.rectangle && !isFinite(rectangleLightRadiance(d)))
+    return "its surface's radiance, " + factors + " over a rectangle of " +
+           formatNumber(d.rectangle->size.x) + " by " + formatNumber(d.rectangle->size.y) +
+           ", is beyond single precision; expected a larger size or a smaller intensity";
   return "";
+}
+
+namespace {
+
+struct Dvec {
+  double x, y, z;
+};
+Dvec dvec(const Vec3& v) { return {v.x, v.y, v.z}; }
+double dot(const Dvec& a, const Dvec& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+Dvec cross(const Dvec& a, const Dvec& b) {
+  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+// v less its part along the unit vector n.
+Dvec perpendicular(const Dvec& v, const Dvec& n) {
+  const double along = dot(v, n);
+  return {v.x - along * n.x, v.y - along * n.y, v.z - along * n.z};
+}
+Dvec unit(const Dvec& v) {
+  const double length = std::sqrt(dot(v, v));
+  return {v.x / length, v.y / length, v.z / length};
+}
+Vec3 vec3(const Dvec& v) { return Vec3(float(v.x), float(v.y), float(v.z)); }
+
+}  // namespace
+
+RectangleAxes rectangleAxes(const LightDesc& d) {
+  const Dvec n = dvec(lightAxis(d));
+  const Vec3 up = d.rectangle->up                        ? *d.rectangle->up
+                  : alongUp(lightAxis(d), Vec3(0, 1, 0)) ? Vec3(0, 0, 1)
+                                                         : Vec3(0, 1, 0);
+  const Dvec height = unit(perpendicular(dvec(up), n));
+  return {vec3(cross(height, n)), vec3(height), vec3(n)};
+}
+
+void rectangleCorners(const LightDesc& d, Vec3 corners[4]) {
+  const RectangleAxes axes = rectangleAxes(d);
+  const double w = 0.5 * double(d.rectangle->size.x), h = 0.5 * double(d.rectangle->size.y);
+  const Dvec c = dvec(d.position), u = dvec(axes.width), v = dvec(axes.height);
+  const double signs[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+  for (int k = 0; k < 4; ++k) {
+    const double a = signs[k][0] * w, b = signs[k][1] * h;
+    corners[k] = vec3({c.x + a * u.x + b * v.x, c.y + a * u.y + b * v.y, c.z + a * u.z + b * v.z});
+  }
 }
 
 float sunOneMinusCos(const LightDesc& d) {
@@ -52,7 +100,7 @@ SpotCone spotCone(const LightDesc& d) {
   SpotCone cone;
   if (!d.spot) return cone;
   const SpotDesc& spot = *d.spot;
-  cone.axis = unitVector(spot.lookAt ? *spot.lookAt - d.position : d.direction);
+  cone.axis = lightAxis(d);
   const double cutoff = double(spot.cutoffDegrees) * (kPi / 180.0);
   const double beam = double(spot.beamDegrees) * (kPi / 180.0);
   cone.cosCutoff = float(std::cos(cutoff));

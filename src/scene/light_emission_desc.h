@@ -20,6 +20,12 @@ inline Vec3 sphereLightRadiance(const LightDesc& d) {
   return lightPower(d) / (4.0f * kPi * kPi * d.radius * d.radius);
 }
 
+// A rectangle light's power spread over its area, from one side, with a Lambertian emitter's pi.
+inline Vec3 rectangleLightRadiance(const LightDesc& d) {
+  const RectangleDesc& r = *d.rectangle;
+  return lightPower(d) / float(kPi * double(r.size.x) * double(r.size.y));
+}
+
 // Why a light's power or surface radiance is beyond single precision, as "its power, ... ,
 // is ...", or "" when both are finite. Each factor is finite (the reader sees to that); their
 // product need not be, and a light of infinite radiance would light nothing (the renderer drops
@@ -33,6 +39,21 @@ inline Vec3 unitVector(const Vec3& v) {
   if (!(length > 0)) return Vec3(0.0f);
   return Vec3(float(x / length), float(y / length), float(z / length));
 }
+
+// Where a spot or rectangle light points: at its look_at, else along its direction (unit).
+inline Vec3 lightAxis(const LightDesc& d) {
+  return unitVector(d.lookAt ? *d.lookAt - d.position : d.direction);
+}
+
+// The axes of a rectangle light, unit vectors of a right-handed frame: its width's, its height's
+// (up, or the default's, made perpendicular to the axis), and where it shines.
+struct RectangleAxes {
+  Vec3 width, height, normal;
+};
+RectangleAxes rectangleAxes(const LightDesc& d);
+
+// A rectangle light's corners, counter-clockwise seen from where it shines.
+void rectangleCorners(const LightDesc& d, Vec3 corners[4]);
 
 // A directional light's 1 - cos of its disc's angular radius, 2 sin^2(radius / 2) in double (0:
 // a delta light, as is a disc too small for single precision).

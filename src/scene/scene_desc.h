@@ -68,22 +68,30 @@ struct ObjectDesc {
   std::shared_ptr<const MeshDesc> mesh = std::make_shared<const MeshDesc>();
 };
 
-// A spot light's cone (render/spot_cone.h), angles in degrees from its axis, and its aim when
-// that is a point (else LightDesc::direction).
+// A spot light's cone (render/spot_cone.h), angles in degrees from its axis.
 struct SpotDesc {
-  std::optional<Vec3> lookAt;  // the point it points at, from wherever it is at a frame
   float cutoffDegrees = 20;
   float beamDegrees = 15;
+};
+
+// A rectangle light's shape: flattening makes it two emissive triangles centred on its position,
+// facing where it shines (scene/light_emission_desc.h, rectangleCorners).
+struct RectangleDesc {
+  Vec2 size{1.0f, 1.0f};   // along its width and its height
+  std::optional<Vec3> up;  // which way its height runs; absent: y, or z where it shines along y
 };
 
 struct LightDesc {
   std::string id;
   std::string where;
-  LightType type = LightType::Point;  // a spot light is a point light with a cone
-  Vec3 position;                      // all but directional lights
-  // Where a directional light's light travels, or where a spot light points (unless it has a
-  // look_at): a unit vector, but between an animation's keys.
+  // A spot light is a point light with a cone, a rectangle light two emissive triangles.
+  LightType type = LightType::Point;
+  Vec3 position;  // all but directional lights
+  // Where a directional light's light travels, or where a spot or rectangle light points (unless
+  // it has a look_at): a unit vector, but between an animation's keys.
   Vec3 direction;
+  // The point a spot or rectangle light points at, from wherever it is at a frame.
+  std::optional<Vec3> lookAt;
   float radius = 0;  // sphere lights
   // Directional lights: the apparent diameter of the disc they shine from, in degrees (0: a
   // delta light, of one direction).
@@ -93,6 +101,7 @@ struct LightDesc {
   float intensity = 0;
   Vec3 color{1.0f};
   std::optional<SpotDesc> spot;
+  std::optional<RectangleDesc> rectangle;
 };
 
 struct CameraDesc {
@@ -130,7 +139,7 @@ enum class AnimTarget { Camera, Sphere, Object, Light };
 enum class AnimProperty {
   // clang-format off
   Position, Rotation, LookAt, Up, Fov, ApertureRadius, FocusDistance,
-  Radius, Color, Scale, Intensity, Direction, Angle
+  Radius, Color, Scale, Intensity, Direction, Angle, Size
   // clang-format on
 };
 
@@ -192,10 +201,11 @@ struct SceneDesc {
   std::vector<std::string> warnings;
 };
 
-// The triangles of all the scene's meshes.
-inline uint64_t meshTriangleCount(const SceneDesc& desc) {
+// The scene's triangles: all its meshes', and each rectangle light's two.
+inline uint64_t triangleCount(const SceneDesc& desc) {
   uint64_t count = 0;
   for (const ObjectDesc& object : desc.objects) count += object.mesh->triangles.size();
+  for (const LightDesc& light : desc.lights) count += light.rectangle ? 2 : 0;
   return count;
 }
 

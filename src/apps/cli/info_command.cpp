@@ -6,6 +6,7 @@
 
 #include "apps/cli/scene_warnings.h"
 #include "scene/flatten.h"
+#include "scene/light_emission_desc.h"
 #include "scene/read/scene_loader.h"
 
 namespace candela::cli {
@@ -50,10 +51,15 @@ int runInfo(const InfoOptions& options) {
         break;
     }
   }
+  // A rectangle light is two emissive faces of the flattened scene, one light to its author.
+  size_t rectangles = 0;
+  for (const LightDesc& l : desc.lights)
+    rectangles += l.rectangle && !isBlack(rectangleLightRadiance(l)) ? 1 : 0;
+  faces -= 2 * rectangles;
   std::printf(
-      "lights:     %zu (%zu point, %zu spot, %zu directional, %zu emissive spheres, %zu emissive "
-      "faces%s)\n",
-      scene.lights.size(), points, spots, directional, spheres, faces,
+      "lights:     %zu (%zu point, %zu spot, %zu directional, %zu rectangle, %zu emissive spheres, "
+      "%zu emissive faces%s)\n",
+      scene.lights.size() - rectangles, points, spots, directional, rectangles, spheres, faces,
       environment ? ", the environment" : "");
   std::printf("materials:  %zu\n", scene.materials.size());
 

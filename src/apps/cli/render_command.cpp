@@ -228,7 +228,7 @@ int renderStill(const RenderCommandOptions& options, SceneDesc desc, double load
   checkOutputFiles(outputs, inputFiles({desc}));
   std::string backendNote;
   const Backend backend = chooseBackend(options.backend, &backendNote);
-  const CpuEngine engine = chooseCpuEngine(options, meshTriangleCount(desc), sphereCount(desc));
+  const CpuEngine engine = chooseCpuEngine(options, triangleCount(desc), sphereCount(desc));
 
   const std::unique_ptr<OidnDenoiser> denoiser = loadDenoiser(options);
   applyOverrides(options, backend, engine, &desc);

@@ -219,7 +219,7 @@ int runSequence(const RenderCommandOptions& options, std::vector<SceneDesc> scen
   const Backend backend = chooseBackend(options.backend, &backendNote);
   uint64_t triangles = 0, spheres = 0;
   for (const SceneDesc& scene : scenes) {
-    triangles = std::max(triangles, meshTriangleCount(scene));
+    triangles = std::max(triangles, triangleCount(scene));
     spheres = std::max(spheres, sphereCount(scene));
   }
   const CpuEngine engine = chooseCpuEngine(options, triangles, spheres);

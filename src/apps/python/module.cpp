@@ -186,7 +186,7 @@ nb::dict passSumMerges() {
 const SceneData& prepareRenderer(RenderCache& cache, SceneDesc& desc, Backend chosen,
                                  const FlowMotion* flow) {
   const CpuEngine engine =
-      resolveCpuEngine(CpuEngine::Auto, false, meshTriangleCount(desc), sphereCount(desc));
+      resolveCpuEngine(CpuEngine::Auto, false, triangleCount(desc), sphereCount(desc));
   if (!needsOwnBvh(chosen, engine)) desc.ownBvh = OwnBvh::None;
   const SceneData& data = cache.frames.prepare(desc, flow);
   SceneChange change = cache.frames.change();

@@ -5,8 +5,10 @@
 #include <cstdint>
 #include <map>
 
+#include "scene/along_up.h"
 #include "scene/animation.h"
 #include "scene/camera_resolve.h"
+#include "scene/light_emission_desc.h"
 #include "scene/read/did_you_mean.h"
 #include "scene/read/entity_reader.h"
 
@@ -31,11 +33,15 @@ const std::vector<PropertyName>& propertiesOf(AnimTarget target) {
                                                    {"rotation", AnimProperty::Rotation},
                                                    {"scale", AnimProperty::Scale},
                                                    {"color", AnimProperty::Color}};
-  static const std::vector<PropertyName> light = {
-      {"position", AnimProperty::Position},   {"intensity", AnimProperty::Intensity},
-      {"color", AnimProperty::Color},         {"radius", AnimProperty::Radius},
-      {"direction", AnimProperty::Direction}, {"look_at", AnimProperty::LookAt},
-      {"angle", AnimProperty::Angle}};
+  static const std::vector<PropertyName> light = {{"position", AnimProperty::Position},
+                                                  {"intensity", AnimProperty::Intensity},
+                                                  {"color", AnimProperty::Color},
+                                                  {"radius", AnimProperty::Radius},
+                                                  {"direction", AnimProperty::Direction},
+                                                  {"look_at", AnimProperty::LookAt},
+                                                  {"angle", AnimProperty::Angle},
+                                                  {"size", AnimProperty::Size},
+                                                  {"up", AnimProperty::Up}};
   switch (target) {
     case AnimTarget::Camera: return camera;
     case AnimTarget::Sphere: return sphere;
@@ -134,6 +140,10 @@ Vec3 readValue(const JsonValue& value, AnimProperty property) {
       return readDirection(value);
     case AnimProperty::Angle:
       return Vec3(readSunAngle(value));
+    case AnimProperty::Size: {
+      const Vec2 size = readRectangleSize(value);
+      return Vec3(size.x, size.y, 0.0f);
+    }
   }
   return Vec3(0.0f);
 }
@@ -192,9 +202,11 @@ void checkUsed(const JsonValue& property, const AnimTrack& track, const SceneDes
   } else if (track.target == AnimTarget::Light) {
     const LightDesc& light = scene.lights[track.index];
     const bool directional = light.type == LightType::Directional;
+    const bool aimed = light.spot || light.rectangle;
     const std::string name = light.type == LightType::Sphere ? "a sphere light"
                              : directional                   ? "a directional light"
                              : light.spot                    ? "a spot light"
+                             : light.rectangle               ? "a rectangle light"
                                                              : "a point light";
     switch (track.property) {
       case AnimProperty::Radius:
@@ -205,16 +217,21 @@ void checkUsed(const JsonValue& property, const AnimTrack& track, const SceneDes
         if (directional) unused(name + " (it shines from infinitely far)");
         break;
       case AnimProperty::Direction:
-        if (!directional && !light.spot)
-          unused(name + " (only \"spot\" and \"directional\" lights have a direction)");
-        if (light.spot && light.spot->lookAt) unused("a spot light aimed with \"look_at\"");
+        if (!directional && !aimed)
+          unused(name +
+                 " (only \"spot\", \"rectangle\" and \"directional\" lights have a direction)");
+        if (light.lookAt) unused(name + " aimed with \"look_at\"");
         break;
       case AnimProperty::Angle:
         if (!directional) unused(name + " (only \"directional\" lights have a disc's angle)");
         break;
       case AnimProperty::LookAt:
-        if (!light.spot || !light.spot->lookAt)
-          unused(name + " (only a spot light aimed with \"look_at\" has one)");
+        if (!light.lookAt)
+          unused(name + " (only a spot or rectangle light aimed with \"look_at\" has one)");
+        break;
+      case AnimProperty::Size:
+      case AnimProperty::Up:
+        if (!light.rectangle) unused(name + " (only \"rectangle\" lights have a size and an up)");
         break;
       default:
         break;
@@ -263,41 +280,42 @@ void checkCameraAtEveryFrame(const JsonValue& value, const AnimationDesc& animat
     if (c.lookAt) {
       const Vec3 f = *c.lookAt - c.position;
       if (isBlack(f)) value.fail(at + "the camera looks at its own position");
-      const double fx = f.x, fy = f.y, fz = f.z, ux = c.up.x, uy = c.up.y, uz = c.up.z;
-      const double cx = fy * uz - fz * uy, cy = fz * ux - fx * uz, cz = fx * uy - fy * ux;
-      const double norm2 = (fx * fx + fy * fy + fz * fz) * (ux * ux + uy * uy + uz * uz);
-      if (!((cx * cx + cy * cy + cz * cz) / norm2 > 1e-12))
-        value.fail(at + "the camera looks along its up direction");
+      if (alongUp(f, c.up)) value.fail(at + "the camera looks along its up direction");
     }
     if (const std::optional<CameraProblem> problem = cameraProblem(c))
       value.fail(at + problem->path + " " + problem->message);
   }
 }
 
-// A light's aim must make a direction at every frame: a spot light aimed with look_at must not
-// reach that point as either moves, and an animated direction must not pass through zero between
-// its keys. The fault is put on the light's last track of position, look_at or direction.
+// A light's aim must make a direction at every frame: a spot or rectangle light aimed with
+// look_at must not reach that point as either moves, an animated direction must not pass through
+// zero between its keys, and a rectangle light's up must not run along its aim. The fault is put
+// on the light's last track of position, look_at, direction or up.
 void checkAimsAtEveryFrame(const AnimationDesc& animation, const SceneDesc& scene,
                            const std::string& file) {
   for (uint32_t i = 0; i < scene.lights.size(); ++i) {
     const LightDesc& light = scene.lights[i];
-    if (!light.spot && light.type != LightType::Directional) continue;
+    if (!light.spot && !light.rectangle && light.type != LightType::Directional) continue;
     const AnimTrack* aim = nullptr;
     for (const AnimTrack& t : animation.tracks)
       if (t.target == AnimTarget::Light && t.index == i &&
           (t.property == AnimProperty::Position || t.property == AnimProperty::LookAt ||
-           t.property == AnimProperty::Direction))
+           t.property == AnimProperty::Direction || t.property == AnimProperty::Up))
         aim = &t;
     if (!aim) continue;
     for (uint32_t frame = 0; frame < animation.frames; ++frame) {
       const LightDesc at = lightAtFrame(light, i, animation, frame);
       const std::string when = "at frame " + std::to_string(frame);
-      if (at.spot && at.spot->lookAt) {
-        if (isBlack(*at.spot->lookAt - at.position))
-          failAt(file, aim->where, when + " the spot light looks at its own position");
+      if (at.lookAt) {
+        if (isBlack(*at.lookAt - at.position))
+          failAt(file, aim->where,
+                 when + " the " + (at.spot ? "spot" : "rectangle") +
+                     " light looks at its own position");
       } else if (isBlack(at.direction)) {  // any other has a unitVector
         failAt(file, aim->where, when + " the light's direction is zero");
       }
+      if (at.rectangle && at.rectangle->up && alongUp(lightAxis(at), *at.rectangle->up))
+        failAt(file, aim->where, when + " the rectangle light points along its up");
     }
   }
 }

@@ -1,10 +1,11 @@
 // Reading the camera; see camera_reader.h.
 #include "scene/read/camera_reader.h"
 
-#include <cstdio>
-
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
+
+#include "scene/along_up.h"
 
 namespace candela {
 namespace {
@@ -77,16 +78,7 @@ void readPose(JsonObject& fields, CameraDesc& camera) {
 
   const Vec3 forward = *camera.lookAt - camera.position;
   if (isBlack(forward)) lookAt->failExpected("a point other than the camera position");
-  // Parallel when the sine of the angle between them is negligible (or up is zero); in double,
-  // so that large coordinates cannot overflow.
-  const double f[3] = {forward.x, forward.y, forward.z};
-  const double u[3] = {camera.up.x, camera.up.y, camera.up.z};
-  const double c[3] = {f[1] * u[2] - f[2] * u[1], f[2] * u[0] - f[0] * u[2],
-                       f[0] * u[1] - f[1] * u[0]};
-  const double norm2 =
-      (f[0] * f[0] + f[1] * f[1] + f[2] * f[2]) * (u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
-  const double sine2 = (c[0] * c[0] + c[1] * c[1] + c[2] * c[2]) / norm2;
-  if (!(sine2 > 1e-12)) {
+  if (alongUp(forward, camera.up)) {
     if (up) up->failExpected("a direction that is not parallel to the viewing direction");
     fields.fail("missing required key \"up\" (the view is parallel to the default up [0, 1, 0])");
   }

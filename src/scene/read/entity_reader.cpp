@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <sstream>
 
+#include "scene/along_up.h"
 #include "scene/light_emission_desc.h"
 
 namespace candela {
@@ -34,19 +35,23 @@ void readSmooth(const JsonValue& smooth, ObjectDesc& object) {
   object.creaseDegrees = float(degrees);
 }
 
-// A spot light's aim ("direction", into *direction, or "look_at") and cone ("cutoff_angle",
-// "beam_width").
-SpotDesc readSpot(JsonObject& fields, const Vec3& position, Vec3* direction) {
-  SpotDesc spot;
+// A spot or rectangle light's aim: "direction" (into light.direction) or "look_at".
+void readAim(JsonObject& fields, const std::string& name, LightDesc& light) {
   fields.exclusive("direction", "look_at");
   if (std::optional<JsonValue> aim = fields.get("direction")) {
-    *direction = readDirection(*aim);
+    light.direction = readDirection(*aim);
   } else if (std::optional<JsonValue> lookAt = fields.get("look_at")) {
-    spot.lookAt = lookAt->vec3();
-    if (isBlack(*spot.lookAt - position)) lookAt->fail("the spot light looks at its own position");
+    light.lookAt = lookAt->vec3();
+    if (isBlack(*light.lookAt - light.position))
+      lookAt->fail("the " + name + " looks at its own position");
   } else {
-    fields.fail("missing \"direction\" or \"look_at\" (where the spot light points)");
+    fields.fail("missing \"direction\" or \"look_at\" (where the " + name + " points)");
   }
+}
+
+// A spot light's cone ("cutoff_angle", "beam_width").
+SpotDesc readSpot(JsonObject& fields) {
+  SpotDesc spot;
   const std::string cutoffRange = "an angle in degrees above 0, up to 180";
   if (std::optional<JsonValue> cutoff = fields.get("cutoff_angle")) {
     spot.cutoffDegrees = cutoff->number(cutoffRange);
@@ -84,7 +89,6 @@ Vec3 readScale(const JsonValue& value) {
   return scale;
 }
 
-// A vector whose unit vector single precision can make: not zero, nor one whose squared length
 float readSunAngle(const JsonValue& value) {
   const std::string range = "an apparent diameter in degrees from 0, below 180";
   const float degrees = value.number(range);
@@ -138,21 +142,51 @@ ObjectDesc readObject(const JsonValue& value, const MaterialLibrary& library,
   return object;
 }
 
+namespace {
+
+// A rectangle light's "size" (a number for a square, or [width, height]) and "up" (any vector not
+// along its axis).
+RectangleDesc readRectangle(JsonObject& fields, const LightDesc& light) {
+  RectangleDesc rectangle;
+  const JsonValue size = fields.require("size");
+  rectangle.size = readRectangleSize(size);
+  if (std::optional<JsonValue> up = fields.get("up")) {
+    rectangle.up = up->vec3();
+    if (alongUp(lightAxis(light), *rectangle.up))
+      up->failExpected("a direction that is not parallel to where the light points");
+  }
+  return rectangle;
+}
+
+}  // namespace
+
+Vec2 readRectangleSize(const JsonValue& value) {
+  const std::string expectation = "a positive number or [width, height], each positive";
+  if (value.json().is_number()) {
+    const float side = value.positiveNumber();
+    return Vec2(side, side);
+  }
+  if (!value.json().is_array() || value.json().size() != 2) value.failExpected(expectation);
+  const std::vector<JsonValue> elements = value.elements();
+  return Vec2(elements[0].positiveNumber(), elements[1].positiveNumber());
+}
+
 LightDesc readLight(const JsonValue& value) {
   JsonObject fields(value, {"id", "type", "position", "intensity", "color", "radius", "direction",
-                            "look_at", "cutoff_angle", "beam_width", "angle"});
+                            "look_at", "cutoff_angle", "beam_width", "angle", "size", "up"});
   LightDesc light;
   light.where = value.path();
   light.id = readId(fields);
-  enum Kind { kPoint, kSphere, kSpot, kDirectional };
+  enum Kind { kPoint, kSphere, kSpot, kDirectional, kRectangle };
   size_t kind = kPoint;
   if (std::optional<JsonValue> type = fields.get("type"))
-    kind = type->choice({"point", "sphere", "spot", "directional"});
-  static const char* const names[] = {"a point light", "a sphere light", "a spot light",
-                                      "a directional light"};
-  const std::string notUsed = std::string("not used by ") + names[kind];
+    kind = type->choice({"point", "sphere", "spot", "directional", "rectangle"});
+  static const char* const names[] = {"point light", "sphere light", "spot light",
+                                      "directional light", "rectangle light"};
+  const std::string notUsed = std::string("not used by a ") + names[kind];
   light.type = kind == kSphere        ? LightType::Sphere
                : kind == kDirectional ? LightType::Directional
+               : kind == kRectangle   ? LightType::Triangle
                                       : LightType::Point;
   if (kind == kDirectional)
     fields.reject("position", notUsed + " (it shines from infinitely far along its \"direction\")");
@@ -166,19 +200,31 @@ LightDesc readLight(const JsonValue& value) {
     fields.reject("radius", notUsed + " (only \"sphere\" lights have a radius)");
   if (kind != kDirectional)
     fields.reject("angle", notUsed + " (only \"directional\" lights have a disc's angle)");
-  if (kind == kSpot) {
-    light.spot = readSpot(fields, light.position, &light.direction);
+  if (kind == kSpot || kind == kRectangle) {
+    readAim(fields, names[kind], light);
+  } else if (kind == kDirectional) {
+    fields.reject("look_at", notUsed + " (it shines along its \"direction\", from infinitely far)");
+    light.direction = readDirection(fields.require("direction"));
+    if (std::optional<JsonValue> angle = fields.get("angle"))
+      light.angleDegrees = readSunAngle(*angle);
   } else {
-    if (kind == kDirectional) {
-      light.direction = readDirection(fields.require("direction"));
-      if (std::optional<JsonValue> angle = fields.get("angle"))
-        light.angleDegrees = readSunAngle(*angle);
-    } else {
-      fields.reject("direction",
-                    notUsed + " (only \"spot\" and \"directional\" lights have a direction)");
-    }
-    for (const char* key : {"look_at", "cutoff_angle", "beam_width"})
+    fields.reject("direction", notUsed +
+                                   " (only \"spot\", \"rectangle\" and \"directional\" lights "
+                                   "have a direction)");
+    fields.reject("look_at",
+                  notUsed + " (only \"spot\" and \"rectangle\" lights point at a place)");
+  }
+  if (kind == kSpot) {
+    light.spot = readSpot(fields);
+  } else {
+    for (const char* key : {"cutoff_angle", "beam_width"})
       fields.reject(key, notUsed + " (only \"spot\" lights have a cone)");
+  }
+  if (kind == kRectangle) {
+    light.rectangle = readRectangle(fields, light);
+  } else {
+    for (const char* key : {"size", "up"})
+      fields.reject(key, notUsed + " (only \"rectangle\" lights have a size and an up)");
   }
   fields.finish();
   return light;

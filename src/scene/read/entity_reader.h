@@ -26,6 +26,10 @@ Vec3 readScale(const JsonValue& value);
 // A light's "direction": any vector but zero, as its unit vector.
 Vec3 readDirection(const JsonValue& value);
 
+// A rectangle light's "size": a positive number (a square's side) or [width, height], each
+// positive. Also read by animation tracks on "size".
+Vec2 readRectangleSize(const JsonValue& value);
+
 // A directional light's "angle": the apparent diameter of its disc, 0 up to 180 degrees.
 float readSunAngle(const JsonValue& value);
 

@@ -65,13 +65,8 @@ void checkLightEmission(const SceneDesc& scene) {
   for (uint32_t i = 0; i < scene.lights.size(); ++i) {
     const LightDesc& light = scene.lights[i];
     const AnimationDesc tracks = tracksOf(scene, AnimTarget::Light, i);
-    LightDesc at = light;  // what it emits at the frame
     atEveryFrame(scene, tracks, [&](uint32_t frame) {
-      at.intensity = propertyAt(tracks, AnimProperty::Intensity, frame, Vec3(light.intensity)).x;
-      at.color = propertyAt(tracks, AnimProperty::Color, frame, light.color);
-      at.radius = propertyAt(tracks, AnimProperty::Radius, frame, Vec3(light.radius)).x;
-      at.angleDegrees = propertyAt(tracks, AnimProperty::Angle, frame, Vec3(light.angleDegrees)).x;
-      const std::string problem = lightEmissionProblem(at);
+      const std::string problem = lightEmissionProblem(lightAtFrame(light, i, tracks, frame));
       if (!problem.empty()) failAt(scene.file, light.where, atFrame(tracks, frame) + problem);
     });
   }
@@ -87,6 +82,20 @@ void checkWorldExtent(const SceneDesc& scene) {
       const double reach = maxAbs(position) + radius;
       if (!(reach <= kMaxWorldCoordinate))
         failBeyond(scene, sphere.where, atFrame(tracks, frame), "the sphere", reach);
+    });
+  }
+  // Sphere and rectangle lights are geometry too: a sphere, two triangles.
+  for (uint32_t i = 0; i < scene.lights.size(); ++i) {
+    const LightDesc& light = scene.lights[i];
+    if (light.type != LightType::Sphere && !light.rectangle) continue;
+    const AnimationDesc tracks = tracksOf(scene, AnimTarget::Light, i);
+    atEveryFrame(scene, tracks, [&](uint32_t frame) {
+      const LightDesc at = lightAtFrame(light, i, tracks, frame);
+      const double halfDiagonal =
+          at.rectangle ? 0.5 * std::hypot(double(at.rectangle->size.x), at.rectangle->size.y) : 0;
+      const double reach = maxAbs(at.position) + double(at.radius) + halfDiagonal;
+      if (!(reach <= kMaxWorldCoordinate))
+        failBeyond(scene, light.where, atFrame(tracks, frame), "the light", reach);
     });
   }
   // Rotation keeps lengths: a mesh's farthest vertex from its origin bounds every turn. Objects
