@@ -196,7 +196,7 @@ TEST(TextureHash, FollowsTheContentNotTheFile) {
   const uint64_t a = hash("a.png", TextureUse::Color);
   EXPECT_EQ(hash("b.png", TextureUse::Color), a);
   EXPECT_NE(hash("c.png", TextureUse::Color), a);
-  EXPECT_NE(hash("a.png", TextureUse::Mask), a);  // the same bytes read as linear values
+  EXPECT_NE(hash("a.png", TextureUse::Linear), a);  // the same bytes read as linear values
 }
 
 // A quad of four positions with a seam (vertex 1's second uv) and a crease (its second normal),
@@ -478,8 +478,8 @@ TEST(TextureLoading, SixteenBitPngKeepsItsPrecision) {
   SceneDesc desc;
   TextureLoader loader(desc.textures, dir.path());
   const LoadedTexture colour = loader.load(dir.file("t16.png"), TextureUse::Color);
-  const LoadedTexture mask = loader.load(dir.file("t16.png"), TextureUse::Mask);
-  const LoadedTexture grey = loader.load(dir.file("g16.png"), TextureUse::Mask);
+  const LoadedTexture mask = loader.load(dir.file("t16.png"), TextureUse::Linear);
+  const LoadedTexture grey = loader.load(dir.file("g16.png"), TextureUse::Linear);
   EXPECT_TRUE(colour.hasAlpha);
   EXPECT_FALSE(grey.hasAlpha);
   const TextureDesc& c = *desc.textures[size_t(colour.index)];

@@ -22,6 +22,7 @@
 #include "render/light_path.h"
 #include "render/light_sample.h"
 #include "render/light_selection.h"
+#include "render/normal_map.h"
 #include "render/path_branch.h"
 #include "render/ray_counters.h"
 #include "render/ray_kind.h"
@@ -217,9 +218,10 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
     st.radiance += seen;
     return false;
   }
-  const SurfacePoint sp = surfaceAt(scene, st.ray, hit);
+  SurfacePoint sp = surfaceAt(scene, st.ray, hit);
   CANDELA_DCHECK(sp.material < scene.materialCount);
   const Material& m = scene.materials[sp.material];
+  sp.ns = mappedNormal(scene, m, hit, sp);
   const Vec3 wo = -st.ray.direction;
   [[maybe_unused]] bool albedoHere = false;  // the albedo pass takes this surface's colour
   if constexpr (kAovs) {

@@ -30,6 +30,7 @@
 #include "render/light_emission.h"
 #include "render/light_sample.h"
 #include "render/light_selection.h"
+#include "render/normal_map.h"
 #include "render/ray_counters.h"
 #include "render/ray_kind.h"
 #include "render/shadow_query.h"
@@ -181,9 +182,10 @@ CANDELA_HDI void traceLightVertex(const SceneView& scene, const Tracer& tracer, 
   Hit hit;
   ++counters.bounce;
   if (!tracer.closest(ray, &hit)) return;
-  const SurfacePoint sp = surfaceAt(scene, ray, hit);
+  SurfacePoint sp = surfaceAt(scene, ray, hit);
   const Material& m = scene.materials[sp.material];
   if (isEmissive(m) || !hasSmoothLobe(m)) return;
+  sp.ns = mappedNormal(scene, m, hit, sp);
   lv->sp = sp;
   lv->color = surfaceColor(scene, m, hit, sp);
   lv->toLight = -ray.direction;

@@ -37,6 +37,7 @@ struct Material {
   Vec3 radiance{0.0f};  // emissive: emitted radiance from the front side
   TextureRef colorTexture;     // a texture that `color` tints (render/surface_color.h)
   TextureRef emissionTexture;  // emissive: a texture that `radiance` tints (MTL map_Ke)
+  TextureRef normalMap;        // tangent-space normals that tilt the shading normal
   AlphaMask alpha;          // how much of the surface is there (geometry/alpha_mask.h)
 
   // Plastic, derived (prepareMaterial): the diffuse light's chance to be reflected back down by

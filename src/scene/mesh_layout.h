@@ -37,7 +37,7 @@ struct MeshLayout {
 
 MeshLayout layOutMesh(const MeshDesc& mesh, bool withNormals, bool withUvs);
 
-// Whether a material looks anything up by uv: a texture, or an alpha mask's.
+// Whether a material looks anything up by uv: a texture, an alpha mask's or a normal map.
 bool readsUvs(const Material& m);
 // Whether an object uses its mesh's normals: it is smooth and the file has them.
 bool usesNormals(const ObjectDesc& obj);

@@ -18,14 +18,15 @@ constexpr size_t kShorthandCount = 3;
 enum TypeIndex : size_t { kDiffuse, kMirror, kGlass, kEmissive, kConductor, kPlastic };
 
 // Every field a material may have, and which of them each type reads.
-const std::vector<std::string> kFields = {"color", "ior", "roughness", "metal", "radiance"};
+const std::vector<std::string> kFields = {"color", "ior",      "roughness",
+                                          "metal", "radiance", "normal_map"};
 const std::vector<std::vector<std::string>> kFieldsOf = {
-    {"color"},                      // diffuse
-    {"color"},                      // mirror
-    {"color", "ior", "roughness"},  // glass
-    {"radiance"},                   // emissive
-    {"color", "roughness", "metal"},
-    {"color", "ior", "roughness"},  // plastic
+    {"color", "normal_map"},                      // diffuse
+    {"color", "normal_map"},                      // mirror
+    {"color", "ior", "roughness", "normal_map"},  // glass
+    {"radiance"},                                 // emissive
+    {"color", "roughness", "metal", "normal_map"},
+    {"color", "ior", "roughness", "normal_map"},  // plastic
 };
 
 std::string notUsedBy(size_t type) {
@@ -71,6 +72,8 @@ Material readFields(JsonObject& fields, size_t type, TextureLoader& textures) {
     material.color = readTexturedColour(*color, textures, &material.colorTexture);
   else
     material.color = color ? color->colour() : Vec3(defaultColor[type]);
+  if (std::optional<JsonValue> normalMap = fields.get("normal_map"))
+    material.normalMap = readNormalMap(*normalMap, textures);
   switch (type) {
     case kDiffuse:
       material.type = MaterialType::Diffuse;

@@ -42,6 +42,8 @@ static void collectStatements(const std::string& text, const std::string& label,
       own.mapKe = keep(6);
     else if (isKeyword("map_d", 5))
       own.mapD = keep(5);
+    else if (isKeyword("norm", 4))
+      own.norm = keep(4);
     else if (isKeyword("d", 1))
       own.d = keep(1);
     else if (isKeyword("Tr", 2))

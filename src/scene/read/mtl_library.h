@@ -26,7 +26,7 @@ struct MtlStatement {
 
 // The statements of one material that candela reads itself; the last of each kind counts.
 struct MtlTextures {
-  std::optional<MtlStatement> mapKd, mapKe, d, tr, mapD;
+  std::optional<MtlStatement> mapKd, mapKe, d, tr, mapD, norm;
 };
 
 struct MtlLibrary {

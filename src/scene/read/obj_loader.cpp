@@ -113,7 +113,7 @@ float roughnessOfPhongExponent(float ns) {
 // black a plastic (colour Kd or map_Kd, index Ni) or, without a diffuse colour, a conductor of
 // reflectance Ks, rough as Ns says; else diffuse with colour Kd (0.8 where the material sets none),
 // times map_Kd when it has one. Alpha is d (or 1 - Tr; d wins when both are given) times map_d's
-// alpha channel (or, for an image without one, its first channel).
+// alpha channel (or, for an image without one, its first channel). `norm` is a normal map.
 std::vector<Material> mtlMaterials(const std::vector<tinyobj::material_t>& materials,
                                    const MtlLibrary& library, const std::string& label,
                                    TextureLoader& textures) {
@@ -150,9 +150,11 @@ std::vector<Material> mtlMaterials(const std::vector<tinyobj::material_t>& mater
         desc.alpha.constant = 1.0f - unitNumber(*s.tr, "Tr");
       if (s.mapD) {
         bool hasAlpha = false;
-        desc.alpha.texture = mtlTexture(*s.mapD, "map_d", TextureUse::Mask, textures, &hasAlpha);
+        desc.alpha.texture = mtlTexture(*s.mapD, "map_d", TextureUse::Linear, textures, &hasAlpha);
         desc.alpha.channel = hasAlpha ? 3 : 0;
       }
+      if (s.norm)
+        desc.normalMap = mtlTexture(*s.norm, "norm", TextureUse::Linear, textures, nullptr);
     }
     const Vec3 specular = mtlColour(material.specular, "Ks", material.name, label);
     if (desc.type == MaterialType::Diffuse && !isBlack(specular)) {

@@ -89,9 +89,12 @@ LoadedTexture TextureLoader::load(const std::string& path, TextureUse use) {
   return result;
 }
 
-Vec3 readTexturedColour(const JsonValue& value, TextureLoader& textures, TextureRef* texture) {
-  if (!value.json().is_object()) return value.colour();
-  JsonObject fields(value, {"texture", "scale"}, "a colour or a texture object");
+namespace {
+
+// A texture object {"texture": file, "scale": [su, sv]}, its file read for `use`.
+TextureRef readTextureObject(const JsonValue& value, TextureLoader& textures, TextureUse use,
+                             const std::string& expected) {
+  JsonObject fields(value, {"texture", "scale"}, expected);
   const JsonValue file = fields.require("texture");
   const std::string written = file.string();
   if (written.empty()) file.failExpected("the path of an image file");
@@ -110,12 +113,25 @@ Vec3 readTexturedColour(const JsonValue& value, TextureLoader& textures, Texture
   }
   fields.finish();
   try {
-    ref.index = textures.load(resolved, TextureUse::Color).index;
+    ref.index = textures.load(resolved, use).index;
   } catch (const SceneError& e) {
     file.fail(e.what());
   }
-  *texture = ref;
+  return ref;
+}
+
+}  // namespace
+
+Vec3 readTexturedColour(const JsonValue& value, TextureLoader& textures, TextureRef* texture) {
+  if (!value.json().is_object()) return value.colour();
+  *texture = readTextureObject(value, textures, TextureUse::Color, "a colour or a texture object");
   return Vec3(1.0f);
+}
+
+TextureRef readNormalMap(const JsonValue& value, TextureLoader& textures) {
+  if (!value.json().is_object())
+    value.failExpected("a texture object {\"texture\": file, \"scale\": [su, sv]}");
+  return readTextureObject(value, textures, TextureUse::Linear, "a texture object");
 }
 
 }  // namespace candela

@@ -18,8 +18,9 @@
 
 namespace candela {
 
-// What a texture is read for: a colour (8-bit files decoded from sRGB) or a mask (linear).
-enum class TextureUse { Color, Mask };
+// What a texture is read for: a colour (8-bit files decoded from sRGB), or values read linearly
+// (an alpha mask, a normal map).
+enum class TextureUse { Color, Linear };
 
 struct LoadedTexture {
   int32_t index = -1;     // into the scene's textures
@@ -49,5 +50,8 @@ class TextureLoader {
 // A colour that may be textured: returns the colour (1 for a texture: the texture alone) and sets
 // `*texture` when `value` is a texture object. Errors name the JSON path.
 Vec3 readTexturedColour(const JsonValue& value, TextureLoader& textures, TextureRef* texture);
+
+// A material's "normal_map": a texture object, its file read linearly.
+TextureRef readNormalMap(const JsonValue& value, TextureLoader& textures);
 
 }  // namespace candela
