@@ -1,8 +1,8 @@
 // Normal maps: a texture of tangent-space normals tilts the shading normal (render/normal_map.h).
 // Against closed forms: a plane under a directional light shades as its mapped normal says, with
-// the bitangent following v (mirrored uvs mirror the map); the normal pass of a plane and of a
-// sphere is the mapped normal of its frame of uvs; a flat map changes nothing; MTL `norm` and
-// the scene format's refusals.
+// the bitangent following v (mirrored uvs mirror the map) and a normal that turns its back on the
+// viewer mirrored; the normal pass of a plane and of a sphere is the mapped normal of its frame of
+// uvs; a flat map changes nothing; MTL `norm` and the scene format's refusals.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -126,6 +126,48 @@ TEST(NormalMap, AConstantMapShadesAPlaneAsItsTiltedNormal) { expectTiltedPlane(f
 
 TEST(NormalMap, MirroredUvsMirrorTheMap) { expectTiltedPlane(true); }
 
+// Seen from low on the side its normals tilt away from, the mapped normal turns its back on the
+// camera and has its tilt mirrored (Mitsuba 3's flip_invalid_normals, whose renders of this scene
+// match candela's to float precision): every pixel is rho E max(0, n . l) / pi of the mirrored
+// normal, which the normal pass shows, where it would otherwise be black.
+TEST(NormalMap, ANormalFacingAwayFromTheViewerHasItsTiltMirrored) {
+  const fs::path dir = folder("normal_map_flip");
+  writePlane(dir / "plane.obj", false);
+  const D3 t = writeFlatMap(dir / "n.png", 230, 128, 170);
+  const double rho = 0.6, irradiance = 2;
+  const D3 sun{0.2, -1.0, 0.4};
+  const Rendered r = render(R"({
+    "camera": {"width": 24, "height": 16, "fov": 50, "position": [-5, 2.5, 0],
+               "look_at": [0, 0, 0], "spp": 1},
+    "render": {"antialiasing": false, "max_depth": 1},
+    "objects": [{"file": "plane.obj", "material": {"type": "diffuse", "color": )" +
+                                num(rho) + R"(, "normal_map": {"texture": "n.png"}}}],
+    "lights": [{"type": "directional", "direction": [0.2, -1, 0.4], "intensity": 2}]})",
+                            dir);
+  const D3 mapped = unit(t.x * D3{1, 0, 0} + t.y * D3{0, 0, -1} + t.z * D3{0, 1, 0});
+  const D3 up{0, 1, 0};
+  const Camera& c = r.data.camera;
+  int checked = 0;
+  for (uint32_t y = 0; y < 16; ++y)
+    for (uint32_t x = 0; x < 24; ++x) {
+      const Vec3 d = c.cameraToWorld * (c.inverseK * Vec3(x + 0.5f, y + 0.5f, 1.0f));
+      if (!(d.y < 0)) continue;
+      const D3 eye{c.position.x, c.position.y, c.position.z};
+      const D3 hit = eye + (-eye.y / d.y) * D3{d.x, d.y, d.z};
+      const D3 wo = unit(eye - hit);
+      ASSERT_LT(dot(wo, mapped), 0.0);  // the map's normal turns its back on the camera
+      const D3 n = unit(2 * dot(mapped, up) * up - mapped);
+      const double expected = rho * irradiance * std::max(0.0, dot(n, unit(-1.0 * sun))) / kPi;
+      EXPECT_NEAR(r.result.image.at(x, y).x, expected, 2e-6 * expected) << x << "," << y;
+      const float* normal = &r.layers[0].pixels[3 * (size_t(y) * 24 + x)];
+      EXPECT_NEAR(normal[0], n.x, 2e-6);
+      EXPECT_NEAR(normal[1], n.y, 2e-6);
+      EXPECT_NEAR(normal[2], n.z, 2e-6);
+      ++checked;
+    }
+  EXPECT_GT(checked, 150);
+}
+
 // A map of the normal straight out, (0.5, 0.5, 1) exactly in a float (PFM) map, renders the plane
 // as without it (up to the rounding of normalising the normal again).
 TEST(NormalMap, AFlatMapChangesNothing) {
@@ -153,7 +195,8 @@ TEST(NormalMap, AFlatMapChangesNothing) {
 
 // A sphere's frame follows its equirectangular uvs: the tangent along the azimuth u grows with,
 // the bitangent towards +y (v grows towards the top pole). The normal pass at each pixel that
-// sees the sphere is the map's normal in that frame, at the point the pixel's ray meets.
+// sees the sphere is the map's normal in that frame, at the point the pixel's ray meets (its tilt
+// mirrored where it turns its back on the camera, near the sphere's rim).
 TEST(NormalMap, ASphereTiltsItsNormalsInTheFrameOfItsUvs) {
   const fs::path dir = folder("normal_map_sphere");
   const D3 t = writeFlatMap(dir / "n.png", 170, 60, 220);
@@ -179,7 +222,9 @@ TEST(NormalMap, ASphereTiltsItsNormalsInTheFrameOfItsUvs) {
       const D3 tangent = unit(D3{-p.z, 0, p.x});
       D3 bitangent = cross(p, tangent);
       if (dot(bitangent, D3{0, 1, 0} - p.y * p) < 0) bitangent = -1.0 * bitangent;
-      const D3 n = unit(t.x * tangent + t.y * bitangent + t.z * p);
+      D3 n = unit(t.x * tangent + t.y * bitangent + t.z * p);
+      const D3 wo = unit(o - p);
+      if (dot(wo, p) * dot(wo, n) <= 0) n = unit(2 * dot(n, p) * p - n);  // turned from the eye
       const float* normal = &r.layers[0].pixels[3 * (size_t(y) * 24 + x)];
       EXPECT_NEAR(normal[0], n.x, 2e-5) << x << "," << y;
       EXPECT_NEAR(normal[1], n.y, 2e-5) << x << "," << y;

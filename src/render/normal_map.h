@@ -45,11 +45,13 @@ CANDELA_HDI bool uvDirections(const SceneView& scene, const Hit& hit, const Surf
   return true;
 }
 
-// The shading normal at `sp` (of material m, at `hit`) that m's normal map gives: sp.ns where m
-// has none or the surface no frame of uvs. A normal the map tilts below the surface is mirrored
-// above it, as ns always lies in ng's hemisphere (geometry/surface.h).
+// The shading normal at `sp` (of material m, at `hit`, seen from direction wo) that m's normal
+// map gives: sp.ns where m has none or the surface no frame of uvs. A mapped normal that turns its
+// back on wo, which would leave the surface black from there, has its tilt mirrored about sp.ns
+// (Mitsuba 3's flip_invalid_normals, after Schuessler et al. 2017); one the map tilts below the
+// surface is mirrored above it, as ns always lies in ng's hemisphere (geometry/surface.h).
 CANDELA_HDI Vec3 mappedNormal(const SceneView& scene, const Material& m, const Hit& hit,
-                              const SurfacePoint& sp) {
+                              const SurfacePoint& sp, const Vec3& wo) {
   if (m.normalMap.index < 0) return sp.ns;
   Vec3 dpdu, dpdv;
   if (!uvDirections(scene, hit, sp, &dpdu, &dpdv)) return sp.ns;
@@ -62,6 +64,7 @@ CANDELA_HDI Vec3 mappedNormal(const SceneView& scene, const Material& m, const H
   const Vec3 c = lookupTexture(scene.texturePool(), m.normalMap, uv.x, uv.y).rgb;
   Vec3 n =
       (2.0f * c.x - 1.0f) * tangent + (2.0f * c.y - 1.0f) * bitangent + (2.0f * c.z - 1.0f) * sp.ns;
+  if (dot(wo, sp.ns) * dot(wo, n) <= 0.0f) n = 2.0f * dot(n, sp.ns) * sp.ns - n;
   const float below = dot(n, sp.ng);
   if (below < 0.0f) n = n - 2.0f * below * sp.ng;
   if (!(lengthSquared(n) > 0.0f)) return sp.ns;
