@@ -185,7 +185,7 @@ CANDELA_HDI void traceLightVertex(const SceneView& scene, const Tracer& tracer, 
   SurfacePoint sp = surfaceAt(scene, ray, hit);
   const Material& m = scene.materials[sp.material];
   if (isEmissive(m) || !hasSmoothLobe(m)) return;
-  sp.ns = mappedNormal(scene, m, hit, sp, -ray.direction);
+  if (m.normalMap.index >= 0) sp.ns = mappedNormal(scene, m, hit, sp, -ray.direction);
   lv->sp = sp;
   lv->color = surfaceColor(scene, m, hit, sp);
   lv->toLight = -ray.direction;

@@ -45,14 +45,16 @@ CANDELA_HDI bool uvDirections(const SceneView& scene, const Hit& hit, const Surf
   return true;
 }
 
-// The shading normal at `sp` (of material m, at `hit`, seen from direction wo) that m's normal
-// map gives: sp.ns where m has none or the surface no frame of uvs. A mapped normal that turns its
-// back on wo, which would leave the surface black from there, has its tilt mirrored about sp.ns
-// (Mitsuba 3's flip_invalid_normals, after Schuessler et al. 2017); one the map tilts below the
-// surface is mirrored above it, as ns always lies in ng's hemisphere (geometry/surface.h).
-CANDELA_HDI Vec3 mappedNormal(const SceneView& scene, const Material& m, const Hit& hit,
-                              const SurfacePoint& sp, const Vec3& wo) {
-  if (m.normalMap.index < 0) return sp.ns;
+// The shading normal at `sp` (of material m, which has a normal map, at `hit`, seen from direction
+// wo) that m's normal map gives: sp.ns where the surface has no frame of uvs. Out of line: the
+// integrator calls it only for normal-mapped materials, and the rest of its loop stays as tight. A
+// mapped normal that turns its back on wo, which would leave the surface black from there, has its
+// tilt mirrored about sp.ns (Mitsuba 3's flip_invalid_normals, after Schuessler et al. 2017); one
+// the map tilts below the surface is mirrored above it, as ns always lies in ng's hemisphere
+// (geometry/surface.h).
+CANDELA_HD_NOINLINE inline Vec3 mappedNormal(const SceneView& scene, const Material& m,
+                                             const Hit& hit, const SurfacePoint& sp,
+                                             const Vec3& wo) {
   Vec3 dpdu, dpdv;
   if (!uvDirections(scene, hit, sp, &dpdu, &dpdv)) return sp.ns;
   const Vec3 along = dpdu - dot(dpdu, sp.ns) * sp.ns;
