@@ -234,6 +234,43 @@ TEST(NormalMap, ASphereTiltsItsNormalsInTheFrameOfItsUvs) {
   EXPECT_GT(checked, 100);
 }
 
+// The mapped normal is the shading normal of light-vertex connections too (render/light_path.h):
+// in the small room of test::kSmallRoomWalls, a spot light lights a patch of a floor whose normals
+// all tilt one way, and the camera sees only what that patch throws onto the ceiling and walls,
+// most of it through light vertices on the patch. The image is the same with the connections as
+// without them, over two seeds each (with the patch's light vertices left unmapped, 23 of the 24
+// blocks differ, by up to 10 standard errors).
+TEST(NormalMap, LightVertexConnectionsSeeTheMappedNormal) {
+  const fs::path dir = folder("normal_map_room");
+  writePlane(dir / "plane.obj", false);
+  writeFlatMap(dir / "tilt.png", 220, 150, 190);
+  const auto room = [&](int seed) {
+    return R"({
+      "camera": {"fov": 70, "position": [0, 2, 9], "look_at": [0, 5, 0], "width": 48,
+                 "height": 32, "spp": 16},
+      "render": {"max_depth": 3, "seed": )" +
+           std::to_string(seed) + R"(},
+      "spheres": [)" +
+           std::string(test::kSmallRoomWalls) + R"(],
+      "objects": [{"file": "plane.obj", "position": [0, 0.01, 0],
+                   "material": {"type": "diffuse", "color": 0.8,
+                                "normal_map": {"texture": "tilt.png"}}}],
+      "lights": [{"type": "spot", "position": [0, 2, 0], "direction": [0, -1, 0],
+                  "intensity": 400, "cutoff_angle": 40}]})";
+  };
+  const auto renderPair = [&](bool connections) {
+    test::SeedPair p;
+    for (int seed : {1, 2}) {
+      SceneData data = test::loadTestScene(room(seed), dir.string());
+      if (!connections) data.lightsStartingPaths = 0;
+      EXPECT_EQ(data.view().lightPathLights, connections ? 1u : 0u);
+      (seed == 1 ? p.a : p.b) = renderCpu(data.view(), RenderOptions{});
+    }
+    return p;
+  };
+  test::expectSameImage(renderPair(true), renderPair(false));
+}
+
 // MTL `norm` names a normal map, with `-s` as the other maps; other options are refused.
 TEST(NormalMap, MtlNormReadsANormalMap) {
   const fs::path dir = folder("normal_map_mtl");
