@@ -37,6 +37,14 @@ inline std::string lightsError(const std::string& lights, const std::string& mor
   return "(no error)";
 }
 
+// The top-level member lightsError takes for an animation of 3 frames with one track: `property`
+// of `target` keyed by `keys` (JSON text).
+inline std::string oneTrack(const std::string& target, const std::string& property,
+                            const std::string& keys) {
+  return R"(, "animation": {"frames": 3, "tracks": [{"target": ")" + target +
+         R"(", "property": ")" + property + R"(", "keys": )" + keys + "}]}";
+}
+
 inline SceneData loadTestScene(const std::string& json, const std::string& baseDir = ".") {
   return flattenScene(parseSceneText(json, "test.json", baseDir));
 }

@@ -317,8 +317,7 @@ TEST(DirectionalLight, ItsCausticThroughGlassIsThatOfAFarSphereLight) {
 }
 
 std::string animated(const std::string& property, const std::string& keys) {
-  return R"(, "animation": {"frames": 3, "tracks": [{"target": "sun", "property": ")" + property +
-         R"(", "keys": )" + keys + "}]}";
+  return test::oneTrack("sun", property, keys);
 }
 
 TEST(DirectionalLight, TheSceneFormatRefusesWhatItCannotBe) {

@@ -347,8 +347,7 @@ TEST(RectangleLight, TheSceneFormatRefusesWhatItCannotBe) {
 
   const std::string panel = "{" + at + R"(, "id": "panel", "direction": [0, -1, 0], "size": 1})";
   const auto animated = [](const std::string& property, const std::string& keys) {
-    return R"(, "animation": {"frames": 3, "tracks": [{"target": "panel", "property": ")" +
-           property + R"(", "keys": )" + keys + "}]}";
+    return test::oneTrack("panel", property, keys);
   };
   EXPECT_EQ(lightsError(panel, animated("up", "[[0, [1, 0, 0]], [2, [-1, -2, 0]]]")),
             "s.json: animation.tracks[0]: at frame 1 the rectangle light points along its up");
