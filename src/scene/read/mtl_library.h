@@ -27,6 +27,10 @@ struct MtlStatement {
 // The statements of one material that candela reads itself; the last of each kind counts.
 struct MtlTextures {
   std::optional<MtlStatement> mapKd, mapKe, d, tr, mapD, norm;
+  // A bump map (`bump`, `map_Bump` or `map_bump`, as written in bumpKeyword), which candela does
+  // not read: kept to say so.
+  std::optional<MtlStatement> bump;
+  std::string bumpKeyword;
 };
 
 struct MtlLibrary {

@@ -265,6 +265,22 @@ std::vector<std::string> materialWarnings(const ObjScan& scan, const MtlLibrary&
   return warnings;
 }
 
+// The bump maps that the MTL files name and candela does not read (docs/scene-format.md, MTL
+// materials): exporters write tangent-space normal maps there as well as height maps, and either
+// left out silently would look like a flat material for no reason.
+std::vector<std::string> bumpWarnings(const MtlLibrary& library) {
+  std::vector<std::string> warnings;
+  for (const auto& [name, statements] : library.statements) {
+    if (!statements.bump || statements.norm) continue;
+    const MtlStatement& s = *statements.bump;
+    warnings.push_back(s.file + ":" + std::to_string(s.line) + ": \"" + statements.bumpKeyword +
+                       "\" is not read (normal maps are read from \"norm\", height maps not at "
+                       "all); material \"" +
+                       name + "\" renders without it");
+  }
+  return warnings;
+}
+
 }  // namespace
 
 MeshDesc loadObjFile(const std::string& path, const std::string& label, TextureLoader& textures) {
@@ -285,6 +301,7 @@ MeshDesc loadObjFile(const std::string& path, const std::string& label, TextureL
   if (mesh.triangles.empty()) throw SceneError(label + ": expected at least one face, got none");
   mesh.materialFiles = library.files;
   mesh.warnings = materialWarnings(scan, library, reader.GetMaterials(), label);
+  for (std::string& warning : bumpWarnings(library)) mesh.warnings.push_back(std::move(warning));
   return mesh;
 }
 
