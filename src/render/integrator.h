@@ -221,8 +221,8 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
   SurfacePoint sp = surfaceAt(scene, st.ray, hit);
   CANDELA_DCHECK(sp.material < scene.materialCount);
   const Material& m = scene.materials[sp.material];
-  if (m.normalMap.index >= 0) sp.ns = mappedNormal(scene, m, hit, sp, -st.ray.direction);
   const Vec3 wo = -st.ray.direction;
+  if (m.normalMap.index >= 0) sp.ns = mappedNormal(scene, m, hit, sp, wo);
   [[maybe_unused]] bool albedoHere = false;  // the albedo pass takes this surface's colour
   if constexpr (kAovs) {
     if (depth == 1) {

@@ -3,18 +3,15 @@
 #pragma once
 
 #include "core/vec3.h"
+#include "scene/dvec3.h"
 
 namespace candela {
 
 // Whether the sine of the angle between `axis` and `up` is below a millionth (or either is zero);
 // in double, so that large coordinates cannot overflow.
 inline bool alongUp(const Vec3& axis, const Vec3& up) {
-  const double a[3] = {axis.x, axis.y, axis.z}, u[3] = {up.x, up.y, up.z};
-  const double c[3] = {a[1] * u[2] - a[2] * u[1], a[2] * u[0] - a[0] * u[2],
-                       a[0] * u[1] - a[1] * u[0]};
-  const double norm2 =
-      (a[0] * a[0] + a[1] * a[1] + a[2] * a[2]) * (u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
-  return !((c[0] * c[0] + c[1] * c[1] + c[2] * c[2]) > 1e-12 * norm2);
+  const DVec3 a = dvec3(axis), u = dvec3(up), c = cross(a, u);
+  return !(dot(c, c) > 1e-12 * (dot(a, a) * dot(u, u)));
 }
 
 }  // namespace candela

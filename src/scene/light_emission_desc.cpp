@@ -5,6 +5,7 @@
 
 #include "render/light_sample.h"
 #include "scene/along_up.h"
+#include "scene/dvec3.h"
 #include "scene/scene_error.h"
 
 namespace candela {
@@ -38,47 +39,22 @@ std::string lightEmissionProblem(const LightDesc& d) {
   return "";
 }
 
-namespace {
-
-struct Dvec {
-  double x, y, z;
-};
-Dvec dvec(const Vec3& v) { return {v.x, v.y, v.z}; }
-double dot(const Dvec& a, const Dvec& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-Dvec cross(const Dvec& a, const Dvec& b) {
-  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
-// v less its part along the unit vector n.
-Dvec perpendicular(const Dvec& v, const Dvec& n) {
-  const double along = dot(v, n);
-  return {v.x - along * n.x, v.y - along * n.y, v.z - along * n.z};
-}
-Dvec unit(const Dvec& v) {
-  const double length = std::sqrt(dot(v, v));
-  return {v.x / length, v.y / length, v.z / length};
-}
-Vec3 vec3(const Dvec& v) { return Vec3(float(v.x), float(v.y), float(v.z)); }
-
-}  // namespace
-
 RectangleAxes rectangleAxes(const LightDesc& d) {
-  const Dvec n = dvec(lightAxis(d));
+  const DVec3 n = dvec3(lightAxis(d));
   const Vec3 up = d.rectangle->up                        ? *d.rectangle->up
                   : alongUp(lightAxis(d), Vec3(0, 1, 0)) ? Vec3(0, 0, 1)
                                                          : Vec3(0, 1, 0);
-  const Dvec height = unit(perpendicular(dvec(up), n));
-  return {vec3(cross(height, n)), vec3(height), vec3(n)};
+  const DVec3 height = unit(dvec3(up) - dot(dvec3(up), n) * n);  // up made perpendicular to n
+  return {toVec3(cross(height, n)), toVec3(height), toVec3(n)};
 }
 
 void rectangleCorners(const LightDesc& d, Vec3 corners[4]) {
   const RectangleAxes axes = rectangleAxes(d);
   const double w = 0.5 * double(d.rectangle->size.x), h = 0.5 * double(d.rectangle->size.y);
-  const Dvec c = dvec(d.position), u = dvec(axes.width), v = dvec(axes.height);
+  const DVec3 c = dvec3(d.position), u = dvec3(axes.width), v = dvec3(axes.height);
   const double signs[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
-  for (int k = 0; k < 4; ++k) {
-    const double a = signs[k][0] * w, b = signs[k][1] * h;
-    corners[k] = vec3({c.x + a * u.x + b * v.x, c.y + a * u.y + b * v.y, c.z + a * u.z + b * v.z});
-  }
+  for (int k = 0; k < 4; ++k)
+    corners[k] = toVec3(c + (signs[k][0] * w) * u + (signs[k][1] * h) * v);
 }
 
 float sunOneMinusCos(const LightDesc& d) {

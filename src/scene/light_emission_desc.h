@@ -10,6 +10,7 @@
 #include "core/constants.h"
 #include "render/light.h"
 #include "render/spot_cone.h"
+#include "scene/dvec3.h"
 #include "scene/scene_desc.h"
 
 namespace candela {
@@ -35,9 +36,9 @@ std::string lightEmissionProblem(const LightDesc& d);
 // The unit vector along v, normalised in double: float's squares of its components would
 // overflow beyond 1.8e19 and vanish below 1e-19, so any non-zero v has one; zero for zero.
 inline Vec3 unitVector(const Vec3& v) {
-  const double x = v.x, y = v.y, z = v.z, length = std::sqrt(x * x + y * y + z * z);
-  if (!(length > 0)) return Vec3(0.0f);
-  return Vec3(float(x / length), float(y / length), float(z / length));
+  const DVec3 d = dvec3(v);
+  if (!(dot(d, d) > 0)) return Vec3(0.0f);
+  return toVec3(unit(d));
 }
 
 // Where a spot or rectangle light points: at its look_at, else along its direction (unit).

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/constants.h"
+#include "scene/dvec3.h"
 
 namespace candela {
 namespace {
@@ -51,22 +52,13 @@ struct FaceShape {
   bool hasArea = false;
 };
 
-struct Dir {
-  double x, y, z;
-};
-
-Dir sub(const Vec3& a, const Vec3& b) {
-  return {double(a.x) - b.x, double(a.y) - b.y, double(a.z) - b.z};
-}
-double dot(const Dir& a, const Dir& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-
 FaceShape faceShape(const MeshDesc& mesh, const MeshTriangle& t) {
   FaceShape s;
   const Vec3 &p0 = mesh.positions[t.v[0]], &p1 = mesh.positions[t.v[1]],
              &p2 = mesh.positions[t.v[2]];
-  const Dir edge[3] = {sub(p1, p0), sub(p2, p1), sub(p0, p2)};  // edge k leaves corner k
-  const Dir &a = edge[0], &b = edge[2];
-  const Dir n = {b.y * a.z - b.z * a.y, b.z * a.x - b.x * a.z, b.x * a.y - b.y * a.x};  // a x -b
+  // Edge k leaves corner k.
+  const DVec3 edge[3] = {dvec3(p1) - dvec3(p0), dvec3(p2) - dvec3(p1), dvec3(p0) - dvec3(p2)};
+  const DVec3 n = cross(edge[2], edge[0]);  // edge 0 x -edge 2
   const double length = std::sqrt(dot(n, n));
   if (!(length > 0 && length <= 1e300)) return s;
   s.normal = Vec3(float(n.x / length), float(n.y / length), float(n.z / length));
@@ -124,7 +116,7 @@ MeshDesc withComputedNormals(const MeshDesc& mesh, float creaseDegrees) {
   // The angle-weighted sum of the unit normals of the faces at corners [first, end), those within
   // the crease of `own` only where one is given.
   const auto weighedSum = [&](uint32_t first, uint32_t end, const Vec3* own) {
-    Dir sum{0, 0, 0};
+    DVec3 sum{0, 0, 0};
     for (uint32_t o = first; o < end; ++o) {
       const FaceShape& other = shapes[corners[o].face];
       if (own && double(dot(*own, other.normal)) < minCos) continue;
@@ -141,7 +133,7 @@ MeshDesc withComputedNormals(const MeshDesc& mesh, float creaseDegrees) {
     // normal lies within the crease less the spread of the axis has every face within the crease,
     // and takes the sum over all of them, which weighedSum adds in the same order either way. So
     // a smooth vertex costs its faces, not their square, however many meet there.
-    Dir m{0, 0, 0};
+    DVec3 m{0, 0, 0};
     for (uint32_t o = first; o < end; ++o) {
       const Vec3& n = shapes[corners[o].face].normal;
       m = {m.x + n.x, m.y + n.y, m.z + n.z};
@@ -151,7 +143,7 @@ MeshDesc withComputedNormals(const MeshDesc& mesh, float creaseDegrees) {
     for (uint32_t o = first; o < end && spread < crease; ++o)
       spread = std::max(spread, std::acos(std::clamp(
                                     double(dot(axis, shapes[corners[o].face].normal)), -1.0, 1.0)));
-    const Dir all = weighedSum(first, end, nullptr);
+    const DVec3 all = weighedSum(first, end, nullptr);
     for (uint32_t c = first; c < end; ++c) {
       const Vec3& own = shapes[corners[c].face].normal;
       const double fromAxis = std::acos(std::clamp(double(dot(own, axis)), -1.0, 1.0));
@@ -162,7 +154,7 @@ MeshDesc withComputedNormals(const MeshDesc& mesh, float creaseDegrees) {
         cornerNormals[c] = own;
         continue;
       }
-      const Dir sum = allWithin ? all : weighedSum(first, end, &own);
+      const DVec3 sum = allWithin ? all : weighedSum(first, end, &own);
       cornerNormals[c] = unit(sum.x, sum.y, sum.z, own);
     }
   });
