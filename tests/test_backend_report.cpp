@@ -29,7 +29,7 @@ TEST(BackendReport, TheCpuWithItsThreadsAndEnginesThenTheGpu) {
   if (!reports[1].usable) {
     EXPECT_EQ(reports[1].summary, "not usable: " + reason);
   }
-  const Backend picked = chooseBackend(Backend::Auto, nullptr);
+  const Backend picked = chooseBackend(Backend::Auto);
   EXPECT_EQ(reports[0].autoPicks, picked == Backend::Cpu);
   EXPECT_EQ(reports[1].autoPicks, picked == Backend::Cuda);
 }

@@ -224,32 +224,27 @@ TEST_F(CliTest, DevicesSaysWhatEachBackendRendersOn) {
   const std::string cuda =
       candela::cudaUsable(&reason) ? "\ncuda: " : "\ncuda: not usable: " + reason + "\n";
   EXPECT_NE(r.out.find(cuda), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("\nauto: renders on the cpu\n"), std::string::npos) << r.out;
+  const std::string picked = candela::cudaUsable(&reason) ? "cuda" : "cpu";
+  EXPECT_NE(r.out.find("\nauto: renders on the " + picked + "\n"), std::string::npos) << r.out;
   EXPECT_EQ(run("devices --threads 0").exitCode, 2);
 }
 
-// `auto` renders on the CPU (the GPU is not yet the default): silently where there is no GPU,
-// with a one-line note where one would be left unused.
-TEST_F(CliTest, AutoRendersOnTheCpu) {
+// `auto` renders on the GPU where one is usable, else on the CPU, and says nothing of it.
+TEST_F(CliTest, AutoRendersOnTheGpuWhereOneIsUsable) {
   writeFile("tiny.json", kTinyScene);
   const RunResult r = run("render tiny.json -o x.png --stats x.json");
   EXPECT_EQ(r.exitCode, 0) << r.err;
   std::ifstream stats(path("x.json"));
   const std::string text((std::istreambuf_iterator<char>(stats)), std::istreambuf_iterator<char>());
-  EXPECT_NE(text.find(R"("backend": "cpu")"), std::string::npos) << text;
   std::string reason;
-  if (candela::cudaUsable(&reason)) {
-    EXPECT_EQ(r.err.rfind("candela: note: a GPU is present but `auto` renders on the CPU", 0), 0u)
-        << r.err;
-  } else {
-    EXPECT_TRUE(r.err.empty()) << r.err;
-  }
+  const std::string picked = candela::cudaUsable(&reason) ? "cuda" : "cpu";
+  EXPECT_NE(text.find(R"("backend": ")" + picked + "\""), std::string::npos) << text;
+  EXPECT_TRUE(r.err.empty()) << r.err;
 }
 
 TEST_F(CliTest, UnwritableOutputExitsOne) {
   writeFile("tiny.json", kTinyScene);
   writeFile("plain", "a file where the output's folder should be");
-  // --backend cpu: `auto` may add a one-line note that a GPU is left unused.
   const RunResult r = run("render tiny.json --backend cpu -o plain/x.png");
   EXPECT_EQ(r.exitCode, 1);
   EXPECT_EQ(r.err.rfind("candela: error: plain/x.png: ", 0), 0u) << r.err;

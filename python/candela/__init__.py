@@ -179,9 +179,9 @@ class Scene:
         pass name raises ValueError.
 
         spp, seed and max_depth (the most surface interactions along a path) override the
-        scene's, as the CLI's --spp, --seed and --max-depth do. backend: "auto" (the CPU for
-        now), "cpu" or "cuda" (an NVIDIA GPU, not yet the default; RuntimeError where it cannot
-        run).
+        scene's, as the CLI's --spp, --seed and --max-depth do. backend: "auto" (the GPU
+        where one is usable, else the CPU), "cpu" or "cuda" (an NVIDIA GPU; RuntimeError where
+        it cannot run).
         sample_range=(first, count) renders only samples [first, first + count) of the spp and
         returns their mean; the count-weighted mean of disjoint slices equals the full render to
         rounding. threads: CPU threads, 0 for all cores; it holds all of the call's work, the BVH

@@ -34,9 +34,16 @@ def _connect(address: Optional[str]):
     return ray
 
 
+def _task_backend(ray, backend: str) -> str:
+    # "auto" across a cluster means its GPUs where it has any, as on one machine; the tasks are
+    # then given "cuda" by name, since a task that asked Ray for no GPU must not take one.
+    if backend != "auto":
+        return backend
+    return "cuda" if ray.cluster_resources().get("GPU", 0) >= 1 else "cpu"
+
+
 def _task_options(ray, cpus_per_task: int, max_retries: int, backend: str) -> dict:
-    # Only the cuda backend renders on a GPU ("auto" means the CPU for now), so only its tasks
-    # ask for one.
+    # Only tasks on the cuda backend (_task_backend's) render on a GPU, so only they ask for one.
     gpus = ray.cluster_resources().get("GPU", 0)
     options = {"max_retries": max_retries, "retry_exceptions": False, "scheduling_strategy": "SPREAD"}
     if backend == "cuda" and gpus >= 1:
@@ -147,6 +154,7 @@ def render_frames(scenes_or_animation: Union[Scene, str, Sequence[Union[Scene, s
         return results
 
     ray = _connect(address)
+    backend = _task_backend(ray, backend)
     options = _task_options(ray, cpus_per_task, max_retries, backend)
     threads = 0 if "num_gpus" in options else cpus_per_task
     task = ray.remote(_render_frame).options(**options)
@@ -187,6 +195,7 @@ def render_image(scene: Union[Scene, str], spp: Optional[int] = None, chunks: in
     spp, seed, max_depth = _render_counts(spp, seed, max_depth)
     spp = scene.spp if spp is None else spp
     ray = _connect(address)
+    backend = _task_backend(ray, backend)
     options = _task_options(ray, cpus_per_task, max_retries, backend)
     threads = 0 if "num_gpus" in options else cpus_per_task
     task = ray.remote(_render_slice).options(**options)

@@ -76,7 +76,7 @@ std::string cudaSummary(bool* usable) {
 std::vector<BackendReport> reportBackends(int threads) {
   bool cudaReady = false;
   std::string cuda = cudaSummary(&cudaReady);
-  const Backend picked = chooseBackend(Backend::Auto, nullptr);
+  const Backend picked = chooseBackend(Backend::Auto);
   return {{backendName(Backend::Cpu), true, cpuSummary(threads), picked == Backend::Cpu},
           {backendName(Backend::Cuda), cudaReady, std::move(cuda), picked == Backend::Cuda}};
 }

@@ -50,14 +50,11 @@ bool cudaUsable(std::string* reason) {
 #endif
 }
 
-Backend chooseBackend(Backend requested, std::string* note) {
+Backend chooseBackend(Backend requested) {
   std::string reason;
   switch (requested) {
     case Backend::Auto:
-      if (note && cudaUsable(&reason))
-        *note =
-            "a GPU is present but `auto` renders on the CPU; ask for the cuda backend to use it";
-      return Backend::Cpu;
+      return cudaUsable(&reason) ? Backend::Cuda : Backend::Cpu;
     case Backend::Cpu:
       return Backend::Cpu;
     case Backend::Cuda:

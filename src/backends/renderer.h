@@ -29,10 +29,10 @@ bool backendFromName(const std::string& name, Backend* backend);
 // Whether this build has the CUDA backend and a usable GPU is present; `reason` says why not.
 bool cudaUsable(std::string* reason);
 
-// Resolves Auto to the CPU, with a one-line `note` when a GPU is present but left unused (the
-// GPU is not yet the default: docs/performance.md, CUDA backend), and checks that the backend
-// can run here: BackendError otherwise.
-Backend chooseBackend(Backend requested, std::string* note);
+// Resolves Auto to the GPU where cudaUsable, else to the CPU (the CUDA backend passed its parity
+// check on a GPU: docs/performance.md, CUDA backend), and checks that the backend can run here:
+// BackendError otherwise.
+Backend chooseBackend(Backend requested);
 
 // The ray engine a renderer traces with and what its own acceleration structure cost.
 struct AccelerationStats {

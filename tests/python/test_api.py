@@ -273,4 +273,5 @@ def test_devices_name_the_cpu_and_say_where_auto_renders():
     assert cpu["usable"] and ", 1 thread, " in cpu["summary"]
     assert gpu["usable"] == candela.cuda_available()
     assert gpu["usable"] or gpu["summary"].startswith("not usable: ")
-    assert [r["backend"] for r in reports if r["auto"]] == ["cpu"]  # auto: the CPU for now
+    # auto: the GPU where one is usable, else the CPU
+    assert [r["backend"] for r in reports if r["auto"]] == ["cuda" if gpu["usable"] else "cpu"]

@@ -122,3 +122,25 @@ def test_worker_killed_mid_frame_leaves_no_partial_file_and_retries(local_ray, t
     assert not thread.is_alive()
     assert os.listdir(out) == ["frame_0000.png"]  # the retry wrote it; no temporary left behind
     assert results["r"][0]["node"]
+
+
+class _Cluster:
+    """Stands for `ray` where only the cluster's resources are read."""
+
+    def __init__(self, gpus):
+        self.gpus = gpus
+
+    def cluster_resources(self):
+        return {"CPU": 16.0, "GPU": float(self.gpus)} if self.gpus else {"CPU": 16.0}
+
+
+def test_auto_tasks_take_the_clusters_gpus_where_it_has_any():
+    # A task on "auto" must not render on a GPU it did not ask Ray for: auto is resolved once,
+    # for the cluster, and the GPU tasks ask for one GPU each.
+    with_gpus, without = _Cluster(2), _Cluster(0)
+    assert distributed._task_backend(with_gpus, "auto") == "cuda"
+    assert distributed._task_backend(without, "auto") == "cpu"
+    assert distributed._task_backend(with_gpus, "cpu") == "cpu"
+    assert distributed._task_options(with_gpus, 3, 1, "cuda")["num_gpus"] == 1
+    assert "num_gpus" not in distributed._task_options(with_gpus, 3, 1, "cpu")
+    assert distributed._task_options(without, 3, 1, "cpu")["num_cpus"] == 3

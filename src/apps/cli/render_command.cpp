@@ -226,8 +226,7 @@ int renderStill(const RenderCommandOptions& options, SceneDesc desc, double load
   for (const std::string& pass : passFilePaths(output, passes)) outputs.push_back({"--aov", pass});
   if (!options.stats.empty()) outputs.push_back({"--stats", options.stats});
   checkOutputFiles(outputs, inputFiles({desc}));
-  std::string backendNote;
-  const Backend backend = chooseBackend(options.backend, &backendNote);
+  const Backend backend = chooseBackend(options.backend);
   const CpuEngine engine = chooseCpuEngine(options, triangleCount(desc), sphereCount(desc));
 
   const std::unique_ptr<OidnDenoiser> denoiser = loadDenoiser(options);
@@ -239,8 +238,6 @@ int renderStill(const RenderCommandOptions& options, SceneDesc desc, double load
   SceneData scene = flattenScene(std::move(desc));  // it keeps all but the meshes, for the files
   if (flow) applyFlowMotion(scene, *flow);
   const double flattenSeconds = secondsSince(flattenStart);
-  if (!backendNote.empty() && !options.quiet)
-    std::fprintf(stderr, "candela: note: %s\n", backendNote.c_str());
 
   // Also covers the write: a late Ctrl-C must not leave a temporary file behind.
   InterruptGuard interrupt;

@@ -215,8 +215,7 @@ int runSequence(const RenderCommandOptions& options, std::vector<SceneDesc> scen
                    "several scene files has none (render them one by one, or as one animation)");
   const std::vector<std::string> suffixes = frameSuffixes(format, passes);
   const std::unique_ptr<OidnDenoiser> denoiser = loadDenoiser(options);
-  std::string backendNote;
-  const Backend backend = chooseBackend(options.backend, &backendNote);
+  const Backend backend = chooseBackend(options.backend);
   uint64_t triangles = 0, spheres = 0;
   for (const SceneDesc& scene : scenes) {
     triangles = std::max(triangles, triangleCount(scene));
@@ -243,7 +242,6 @@ int runSequence(const RenderCommandOptions& options, std::vector<SceneDesc> scen
   }
   const uint32_t kept = range.end - range.begin - uint32_t(todo.size());
   if (!options.quiet) {
-    if (!backendNote.empty()) std::fprintf(stderr, "candela: note: %s\n", backendNote.c_str());
     if (kept > 0)
       std::printf("%s: %u of %u frames exist and are kept (--overwrite renders them again)\n",
                   dir.c_str(), kept, range.end - range.begin);

@@ -78,7 +78,7 @@ Backend backendNamed(const std::string& name) {
   Backend backend;
   if (!backendFromName(name, &backend))
     throw std::invalid_argument("backend must be 'auto', 'cpu' or 'cuda', got '" + name + "'");
-  return chooseBackend(backend, nullptr);
+  return chooseBackend(backend);
 }
 
 // `values` moved to the heap, with the capsule that frees them once no array views them.
