@@ -31,6 +31,18 @@
 #define CANDELA_HD_NOINLINE __attribute__((noinline))
 #endif
 
+// For a query that the GPU's kernel reaches from several places (the BVH traversal): one copy of
+// its code there rather than one per call site, each with its own traversal stack. Inlined, the
+// kernel's stalls were mostly instruction fetch; out of line it renders the mesh scenes 1.4-1.8x
+// as fast on an H200 (docs/performance.md, CUDA backend). The CPU inlines it.
+#if defined(__CUDA_ARCH__)
+#define CANDELA_HD_GPU_CALL __host__ __device__ __noinline__
+#elif defined(__CUDACC__)
+#define CANDELA_HD_GPU_CALL __host__ __device__ inline
+#else
+#define CANDELA_HD_GPU_CALL inline
+#endif
+
 // For the rare branch of a hot loop (an alpha test in traversal): kept out of line, so that the
 // code every ray runs stays small.
 #if defined(__CUDACC__)

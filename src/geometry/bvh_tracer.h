@@ -20,10 +20,10 @@ struct BvhTracer {
   static constexpr uint32_t kPacketWidth = 1;  // every ray alone
   const GeometryView* geometry;
 
-  CANDELA_HDI bool closest(const Ray& ray, Hit* hit) const {
+  CANDELA_HD_GPU_CALL bool closest(const Ray& ray, Hit* hit) const {
     return intersectClosest(*geometry, ray, hit);
   }
-  CANDELA_HDI bool occluded(const Ray& ray, uint32_t skipPrim) const {
+  CANDELA_HD_GPU_CALL bool occluded(const Ray& ray, uint32_t skipPrim) const {
     return intersectAny(*geometry, ray, skipPrim);
   }
 };
