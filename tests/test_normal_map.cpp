@@ -299,24 +299,6 @@ TEST(NormalMap, MtlNormReadsANormalMap) {
   }
 }
 
-// A bump map (`bump`, `map_Bump`), which exporters fill with heights or with normals, is not read;
-// the scene loads with a warning naming the MTL line, unless the material has a `norm` too.
-TEST(NormalMap, MtlBumpMapsAreNotReadAndSaySo) {
-  const fs::path dir = folder("normal_map_bump");
-  std::ofstream(dir / "m.obj") << "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\n"
-                                  "vt 0 1\nusemtl a\nf 1/1 2/2 3/3\nusemtl b\nf 1/1 2/2 3/3\n";
-  std::ofstream(dir / "m.mtl") << "newmtl a\nKd 0.5 0.5 0.5\nmap_Bump -bm 1.0 n.png\n"
-                                  "newmtl b\nbump h.png\nnorm n.png\n";
-  writeFlatMap(dir / "n.png", 128, 128, 255);
-  const SceneDesc desc =
-      parseSceneText(R"({"camera": {"width": 4, "height": 4}, "objects": [{"file": "m.obj"}]})",
-                     "s.json", dir.string());
-  EXPECT_EQ(desc.warnings,
-            std::vector<std::string>{
-                "s.json: objects[0].file: m.mtl:3: \"map_Bump\" is not read (normal maps are read "
-                "from \"norm\", height maps not at all); material \"a\" renders without it"});
-}
-
 TEST(NormalMap, TheSceneFormatRefusesWhatItCannotBe) {
   const fs::path dir = folder("normal_map_errors");
   writeFlatMap(dir / "n.png", 128, 128, 255);

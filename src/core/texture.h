@@ -72,29 +72,66 @@ CANDELA_HDI float wrapUnit(float a) {
   return f >= 0.0f && f < 1.0f ? f : 0.0f;
 }
 
-}  // namespace detail
+// The four texels around (u, v) that a bilinear lookup of `ref` blends, and the weights' fractions
+// (fx towards x1, fy towards y1; x right, y down the image).
+struct TexelQuad {
+  uint32_t x0, y0, x1, y1;
+  float fx, fy;
+};
 
-// The texture `ref` at (u, v), scaled by (scaleU, scaleV) first: bilinear, repeating.
-CANDELA_HDI TextureSample lookupTexture(const TexturePool& pool, const TextureRef& ref, float u,
-                                        float v) {
-  const Texture& t = pool.textures[ref.index];
+CANDELA_HDI TexelQuad texelQuad(const Texture& t, const TextureRef& ref, float u, float v) {
   // Continuous texel coordinates with texel centres at integers, x right and y down.
-  const float x = detail::wrapUnit(u * ref.scaleU) * float(t.width) - 0.5f;
-  const float y = (1.0f - detail::wrapUnit(v * ref.scaleV)) * float(t.height) - 0.5f;
+  const float x = wrapUnit(u * ref.scaleU) * float(t.width) - 0.5f;
+  const float y = (1.0f - wrapUnit(v * ref.scaleV)) * float(t.height) - 0.5f;
   const float x0f = floorf(x), y0f = floorf(y);
-  const float fx = x - x0f, fy = y - y0f;
   // x0f and y0f lie in [-1, W - 1] and [-1, H - 1]: one wrap suffices.
   const int32_t w = int32_t(t.width), h = int32_t(t.height);
   int32_t x0 = int32_t(x0f), y0 = int32_t(y0f);
   x0 = x0 < 0 ? x0 + w : (x0 >= w ? x0 - w : x0);
   y0 = y0 < 0 ? y0 + h : (y0 >= h ? y0 - h : y0);
   const int32_t x1 = x0 + 1 == w ? 0 : x0 + 1, y1 = y0 + 1 == h ? 0 : y0 + 1;
+  return {uint32_t(x0), uint32_t(y0), uint32_t(x1), uint32_t(y1), x - x0f, y - y0f};
+}
+
+// Texel (x, y) of `t` as linear RGB's luminance (Rec. 709 weights, as Mitsuba 3's).
+CANDELA_HDI float texelLuminance(const TexturePool& pool, const Texture& t, uint32_t x,
+                                 uint32_t y) {
+  float c[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+  addTexel(pool, t, x, y, 1.0f, c);
+  return 0.212671f * c[0] + 0.715160f * c[1] + 0.072169f * c[2];
+}
+
+}  // namespace detail
+
+// The texture `ref` at (u, v), scaled by (scaleU, scaleV) first: bilinear, repeating.
+CANDELA_HDI TextureSample lookupTexture(const TexturePool& pool, const TextureRef& ref, float u,
+                                        float v) {
+  const Texture& t = pool.textures[ref.index];
+  const detail::TexelQuad q = detail::texelQuad(t, ref, u, v);
+  const float fx = q.fx, fy = q.fy;
   float sum[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-  detail::addTexel(pool, t, uint32_t(x0), uint32_t(y0), (1.0f - fx) * (1.0f - fy), sum);
-  detail::addTexel(pool, t, uint32_t(x1), uint32_t(y0), fx * (1.0f - fy), sum);
-  detail::addTexel(pool, t, uint32_t(x0), uint32_t(y1), (1.0f - fx) * fy, sum);
-  detail::addTexel(pool, t, uint32_t(x1), uint32_t(y1), fx * fy, sum);
+  detail::addTexel(pool, t, q.x0, q.y0, (1.0f - fx) * (1.0f - fy), sum);
+  detail::addTexel(pool, t, q.x1, q.y0, fx * (1.0f - fy), sum);
+  detail::addTexel(pool, t, q.x0, q.y1, (1.0f - fx) * fy, sum);
+  detail::addTexel(pool, t, q.x1, q.y1, fx * fy, sum);
   return {Vec3(sum[0], sum[1], sum[2]), sum[3]};
+}
+
+// The derivatives with respect to u and v of the luminance of `ref`'s bilinear lookup at (u, v)
+// (that of the cell of texels around it; Mitsuba 3's eval_1_grad): a height map's slopes.
+CANDELA_HDI void textureLuminanceGradient(const TexturePool& pool, const TextureRef& ref, float u,
+                                          float v, float* ddu, float* ddv) {
+  const Texture& t = pool.textures[ref.index];
+  const detail::TexelQuad q = detail::texelQuad(t, ref, u, v);
+  const float f00 = detail::texelLuminance(pool, t, q.x0, q.y0);
+  const float f10 = detail::texelLuminance(pool, t, q.x1, q.y0);
+  const float f01 = detail::texelLuminance(pool, t, q.x0, q.y1);
+  const float f11 = detail::texelLuminance(pool, t, q.x1, q.y1);
+  const float ddx = (1.0f - q.fy) * (f10 - f00) + q.fy * (f11 - f01);
+  const float ddy = (1.0f - q.fx) * (f01 - f00) + q.fx * (f11 - f10);
+  // x = u su W and y = (1 - v sv) H within a repeat.
+  *ddu = ddx * ref.scaleU * float(t.width);
+  *ddv = -ddy * ref.scaleV * float(t.height);
 }
 
 // sRGB's decoding curve (IEC 61966-2-1), for the host to fill TexturePool::srgbToLinear.

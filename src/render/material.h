@@ -37,7 +37,8 @@ struct Material {
   Vec3 radiance{0.0f};  // emissive: emitted radiance from the front side
   TextureRef colorTexture;     // a texture that `color` tints (render/surface_color.h)
   TextureRef emissionTexture;  // emissive: a texture that `radiance` tints (MTL map_Ke)
-  TextureRef normalMap;        // tangent-space normals that tilt the shading normal
+  TextureRef normalMap;        // tangent-space normals that tilt the shading normal, or heights
+  float bumpHeight = 0.0f;     // != 0: normalMap is a bump map, heights this many units a unit
   AlphaMask alpha;          // how much of the surface is there (geometry/alpha_mask.h)
 
   // Plastic, derived (prepareMaterial): the diffuse light's chance to be reflected back down by

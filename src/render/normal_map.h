@@ -1,13 +1,14 @@
-// Normal maps: a material's texture of tangent-space normals tilts the shading normal
-// (docs/scene-format.md, *Normal maps*). A texel c encodes the normal 2 c - 1 in the frame of the
-// surface's tangent (along which u grows), bitangent (v) and shading normal, the convention of
-// glTF, Blender and MikkTSpace (OpenGL's: green is +v). The tangent is made perpendicular to the
-// shading normal and the bitangent completes the frame on the side of v's growth, so a mesh whose
-// uvs are mirrored reads its map mirrored too.
+// Normal and bump maps: a material's texture of tangent-space normals, or of heights, tilts the
+// shading normal (docs/scene-format.md, *Normal maps* and *Bump maps*). A texel c encodes the
+// normal 2 c - 1 in the frame of the surface's tangent (along which u grows), bitangent (v) and
+// shading normal, the convention of glTF, Blender and MikkTSpace (OpenGL's: green is +v). The
+// tangent is made perpendicular to the shading normal and the bitangent completes the frame on the
+// side of v's growth, so a mesh whose uvs are mirrored reads its map mirrored too.
 #pragma once
 
 #include <cmath>
 
+#include "core/constants.h"
 #include "core/texture.h"
 #include "core/vec2.h"
 #include "core/vec3.h"
@@ -17,17 +18,26 @@
 
 namespace candela {
 
-// The directions in which u and v grow across the surface at `hit`, up to scale: a face's from
-// its vertices' uvs (false where they make no frame), a sphere's from its equirectangular mapping
-// (false at its poles).
-CANDELA_HDI bool uvDirections(const SceneView& scene, const Hit& hit, const SurfacePoint& sp,
-                              Vec3* dpdu, Vec3* dpdv) {
+// The surface's derivatives dp/du and dp/dv at `hit` with respect to its uvs, or with `exact`
+// false only their directions, up to a positive scale each: a face's from its vertices' uvs
+// (false where they make no frame), a sphere's from its equirectangular mapping (false at its
+// poles).
+CANDELA_HDI bool uvDerivatives(const SceneView& scene, const Hit& hit, const SurfacePoint& sp,
+                               bool exact, Vec3* dpdu, Vec3* dpdv) {
   if (hit.prim < scene.sphereCount) {
-    // u grows with the azimuth atan2(d.x, -d.z), v towards +y (geometry/surface_uv.h).
+    // u grows with the azimuth atan2(d.x, -d.z), v towards +y (geometry/surface_uv.h):
+    // dp/du = 2 pi r (-d.z, 0, d.x), dp/dv = pi r (y - d.y d) / sin(theta).
     const Vec3& d = sp.ng;
     *dpdu = Vec3(-d.z, 0.0f, d.x);
     *dpdv = Vec3(0.0f, 1.0f, 0.0f) - d.y * d;
-    return lengthSquared(*dpdu) > 0.0f;
+    const float sinTheta = length(*dpdu);
+    if (!(sinTheta > 0.0f)) return false;
+    if (exact) {
+      const float r = scene.spheres[hit.prim].radius;
+      *dpdu = (2.0f * kPi * r) * *dpdu;
+      *dpdv = (kPi * r / sinTheta) * *dpdv;
+    }
+    return true;
   }
   if (scene.uvCount == 0) return false;
   const Triangle& tri = scene.triangles[hit.prim - scene.sphereCount];
@@ -37,35 +47,57 @@ CANDELA_HDI bool uvDirections(const SceneView& scene, const Hit& hit, const Surf
   const Vec2 d1(t1.x - t0.x, t1.y - t0.y), d2(t2.x - t0.x, t2.y - t0.y);
   const float det = d1.x * d2.y - d1.y * d2.x;
   if (!(fabsf(det) > 0.0f)) return false;
-  // Solving e1 = d1.x dpdu + d1.y dpdv and e2 likewise; only the directions matter, so the
-  // common factor 1 / det is kept to its sign.
-  const float sign = det > 0.0f ? 1.0f : -1.0f;
-  *dpdu = sign * (d2.y * e1 - d1.y * e2);
-  *dpdv = sign * (d1.x * e2 - d2.x * e1);
+  // Solving e1 = d1.x dpdu + d1.y dpdv and e2 likewise; for directions alone the common factor
+  // 1 / det is kept to its sign.
+  const float scale = exact ? 1.0f / det : (det > 0.0f ? 1.0f : -1.0f);
+  *dpdu = scale * (d2.y * e1 - d1.y * e2);
+  *dpdv = scale * (d1.x * e2 - d2.x * e1);
   return true;
 }
 
-// The shading normal at `sp` (of material m, which has a normal map, at `hit`, seen from direction
-// wo) that m's normal map gives: sp.ns where the surface has no frame of uvs. Out of line: the
-// integrator calls it only for normal-mapped materials, and the rest of its loop stays as tight. A
-// mapped normal that turns its back on wo, which would leave the surface black from there, has its
-// tilt mirrored about sp.ns (Mitsuba 3's flip_invalid_normals, after Schuessler et al. 2017); one
-// the map tilts below the surface is mirrored above it, as ns always lies in ng's hemisphere
-// (geometry/surface.h).
-CANDELA_HD_NOINLINE inline Vec3 mappedNormal(const SceneView& scene, const Material& m,
-                                             const Hit& hit, const SurfacePoint& sp,
-                                             const Vec3& wo) {
-  Vec3 dpdu, dpdv;
-  if (!uvDirections(scene, hit, sp, &dpdu, &dpdv)) return sp.ns;
+// A bump map's normal (m.normalMap heights of amplitude m.bumpHeight) from the surface's exact
+// derivatives at uv, as Mitsuba 3's bumpmap: each derivative turned into the shading plane and
+// raised along the shading normal by the height's slope; the normal of the two, on ng's side.
+CANDELA_HDI Vec3 bumpedNormal(const SceneView& scene, const Material& m, const SurfacePoint& sp,
+                              const Vec2& uv, const Vec3& dpdu, const Vec3& dpdv) {
+  float slopeU, slopeV;
+  textureLuminanceGradient(scene.texturePool(), m.normalMap, uv.x, uv.y, &slopeU, &slopeV);
+  const Vec3 du = dpdu + (m.bumpHeight * slopeU - dot(sp.ns, dpdu)) * sp.ns;
+  const Vec3 dv = dpdv + (m.bumpHeight * slopeV - dot(sp.ns, dpdv)) * sp.ns;
+  const Vec3 n = cross(du, dv);
+  return dot(n, sp.ng) < 0.0f ? -n : n;
+}
+
+// The tangent-space normal that a normal map holds at uv, in the world: sp.ns where the surface
+// has no frame there.
+CANDELA_HDI Vec3 normalFromMap(const SceneView& scene, const Material& m, const SurfacePoint& sp,
+                               const Vec2& uv, const Vec3& dpdu, const Vec3& dpdv) {
   const Vec3 along = dpdu - dot(dpdu, sp.ns) * sp.ns;
   if (!(lengthSquared(along) > 0.0f)) return sp.ns;
   const Vec3 tangent = normalize(along);
   Vec3 bitangent = cross(sp.ns, tangent);
   if (dot(bitangent, dpdv) < 0.0f) bitangent = -bitangent;
-  const Vec2 uv = surfaceUv(scene, hit, sp);
   const Vec3 c = lookupTexture(scene.texturePool(), m.normalMap, uv.x, uv.y).rgb;
-  Vec3 n =
-      (2.0f * c.x - 1.0f) * tangent + (2.0f * c.y - 1.0f) * bitangent + (2.0f * c.z - 1.0f) * sp.ns;
+  return (2.0f * c.x - 1.0f) * tangent + (2.0f * c.y - 1.0f) * bitangent +
+         (2.0f * c.z - 1.0f) * sp.ns;
+}
+
+// The shading normal at `sp` (of material m, which has a normal or bump map, at `hit`, seen from
+// direction wo) that m's map gives: sp.ns where the surface has no frame of uvs. Out of line: the
+// integrator calls it only for such materials, and the rest of its loop stays as tight. A mapped
+// normal that turns its back on wo, which would leave the surface black from there, has its tilt
+// mirrored about sp.ns (Mitsuba 3's flip_invalid_normals of its normalmap, after Schuessler et al.
+// 2017); one the map tilts below the surface is mirrored above it, as ns always lies in ng's
+// hemisphere (geometry/surface.h).
+CANDELA_HD_NOINLINE inline Vec3 mappedNormal(const SceneView& scene, const Material& m,
+                                             const Hit& hit, const SurfacePoint& sp,
+                                             const Vec3& wo) {
+  const bool bump = m.bumpHeight != 0.0f;
+  Vec3 dpdu, dpdv;
+  if (!uvDerivatives(scene, hit, sp, bump, &dpdu, &dpdv)) return sp.ns;
+  const Vec2 uv = surfaceUv(scene, hit, sp);
+  Vec3 n = bump ? bumpedNormal(scene, m, sp, uv, dpdu, dpdv)
+                : normalFromMap(scene, m, sp, uv, dpdu, dpdv);
   if (dot(wo, sp.ns) * dot(wo, n) <= 0.0f) n = 2.0f * dot(n, sp.ns) * sp.ns - n;
   const float below = dot(n, sp.ng);
   if (below < 0.0f) n = n - 2.0f * below * sp.ng;

@@ -18,15 +18,15 @@ constexpr size_t kShorthandCount = 3;
 enum TypeIndex : size_t { kDiffuse, kMirror, kGlass, kEmissive, kConductor, kPlastic };
 
 // Every field a material may have, and which of them each type reads.
-const std::vector<std::string> kFields = {"color", "ior",      "roughness",
-                                          "metal", "radiance", "normal_map"};
+const std::vector<std::string> kFields = {"color",    "ior",        "roughness", "metal",
+                                          "radiance", "normal_map", "bump_map"};
 const std::vector<std::vector<std::string>> kFieldsOf = {
-    {"color", "normal_map"},                      // diffuse
-    {"color", "normal_map"},                      // mirror
-    {"color", "ior", "roughness", "normal_map"},  // glass
-    {"radiance"},                                 // emissive
-    {"color", "roughness", "metal", "normal_map"},
-    {"color", "ior", "roughness", "normal_map"},  // plastic
+    {"color", "normal_map", "bump_map"},                      // diffuse
+    {"color", "normal_map", "bump_map"},                      // mirror
+    {"color", "ior", "roughness", "normal_map", "bump_map"},  // glass
+    {"radiance"},                                             // emissive
+    {"color", "roughness", "metal", "normal_map", "bump_map"},
+    {"color", "ior", "roughness", "normal_map", "bump_map"},  // plastic
 };
 
 std::string notUsedBy(size_t type) {
@@ -72,8 +72,12 @@ Material readFields(JsonObject& fields, size_t type, TextureLoader& textures) {
     material.color = readTexturedColour(*color, textures, &material.colorTexture);
   else
     material.color = color ? color->colour() : Vec3(defaultColor[type]);
-  if (std::optional<JsonValue> normalMap = fields.get("normal_map"))
-    material.normalMap = readNormalMap(*normalMap, textures);
+  const std::optional<JsonValue> normalMap = fields.get("normal_map");
+  const std::optional<JsonValue> bumpMap = fields.get("bump_map");
+  if (normalMap && bumpMap)
+    fields.fail("give a material a \"normal_map\" or a \"bump_map\", not both");
+  if (normalMap) material.normalMap = readNormalMap(*normalMap, textures);
+  if (bumpMap) material.normalMap = readBumpMap(*bumpMap, textures, &material.bumpHeight);
   switch (type) {
     case kDiffuse:
       material.type = MaterialType::Diffuse;

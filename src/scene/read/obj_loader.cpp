@@ -54,18 +54,35 @@ float unitNumber(const MtlStatement& statement, const char* keyword) {
 }
 
 // A texture statement "map_Kd [-s u v [w]] file": its texture, loaded for `use`. The -s scale
-// is honoured (w ignored); other options are refused.
+// is honoured (w ignored); with `bumpMultiplier`, a bump map's, so is -bm (into it); other
+// options are refused.
 TextureRef mtlTexture(const MtlStatement& statement, const char* keyword, TextureUse use,
-                      TextureLoader& textures, bool* hasAlpha) {
+                      TextureLoader& textures, bool* hasAlpha, float* bumpMultiplier = nullptr) {
   TextureRef ref;
   std::string rest = statement.arguments;
   while (!rest.empty() && rest[0] == '-') {
     std::istringstream in(rest);
     std::string option;
     in >> option;
+    if (option == "-bm" && bumpMultiplier) {
+      std::string word;
+      in >> word;
+      char* end = nullptr;
+      const float value = std::strtof(word.c_str(), &end);
+      if (word.empty() || end != word.c_str() + word.size() ||
+          !(std::isfinite(value) && value != 0.0f))
+        failAt(statement, std::string(keyword) +
+                              " -bm: expected a finite, non-zero multiplier, got \"" + word + "\"");
+      *bumpMultiplier = value;
+      std::string remaining;
+      std::getline(in, remaining);
+      const size_t first = remaining.find_first_not_of(" \t");
+      rest = first == std::string::npos ? "" : remaining.substr(first);
+      continue;
+    }
     if (option != "-s")
       failAt(statement, std::string(keyword) + " option \"" + option +
-                            "\" is not supported (only -s)");
+                            "\" is not supported (only -s" + (bumpMultiplier ? " and -bm)" : ")"));
     float scale[3] = {1.0f, 1.0f, 1.0f};
     int count = 0;
     for (std::string word; count < 3 && in >> word; ++count) {
@@ -113,7 +130,8 @@ float roughnessOfPhongExponent(float ns) {
 // black a plastic (colour Kd or map_Kd, index Ni) or, without a diffuse colour, a conductor of
 // reflectance Ks, rough as Ns says; else diffuse with colour Kd (0.8 where the material sets none),
 // times map_Kd when it has one. Alpha is d (or 1 - Tr; d wins when both are given) times map_d's
-// alpha channel (or, for an image without one, its first channel). `norm` is a normal map.
+// alpha channel (or, for an image without one, its first channel). `norm` is a normal map, and
+// where there is none `bump` (or `map_Bump`) a bump map of heights, -bm its height.
 std::vector<Material> mtlMaterials(const std::vector<tinyobj::material_t>& materials,
                                    const MtlLibrary& library, const std::string& label,
                                    TextureLoader& textures) {
@@ -153,8 +171,13 @@ std::vector<Material> mtlMaterials(const std::vector<tinyobj::material_t>& mater
         desc.alpha.texture = mtlTexture(*s.mapD, "map_d", TextureUse::Linear, textures, &hasAlpha);
         desc.alpha.channel = hasAlpha ? 3 : 0;
       }
-      if (s.norm)
+      if (s.norm) {
         desc.normalMap = mtlTexture(*s.norm, "norm", TextureUse::Linear, textures, nullptr);
+      } else if (s.bump) {
+        desc.bumpHeight = 1.0f;
+        desc.normalMap = mtlTexture(*s.bump, s.bumpKeyword.c_str(), TextureUse::Linear, textures,
+                                    nullptr, &desc.bumpHeight);
+      }
     }
     const Vec3 specular = mtlColour(material.specular, "Ks", material.name, label);
     if (desc.type == MaterialType::Diffuse && !isBlack(specular)) {
@@ -265,18 +288,17 @@ std::vector<std::string> materialWarnings(const ObjScan& scan, const MtlLibrary&
   return warnings;
 }
 
-// The bump maps that the MTL files name and candela does not read (docs/scene-format.md, MTL
-// materials): exporters write tangent-space normal maps there as well as height maps, and either
-// left out silently would look like a flat material for no reason.
+// The bump maps that the MTL files name beside a normal map (`norm`), which candela reads
+// instead (docs/scene-format.md, MTL materials): one left out silently would look like a
+// mistake.
 std::vector<std::string> bumpWarnings(const MtlLibrary& library) {
   std::vector<std::string> warnings;
   for (const auto& [name, statements] : library.statements) {
-    if (!statements.bump || statements.norm) continue;
+    if (!statements.bump || !statements.norm) continue;
     const MtlStatement& s = *statements.bump;
     warnings.push_back(s.file + ":" + std::to_string(s.line) + ": \"" + statements.bumpKeyword +
-                       "\" is not read (normal maps are read from \"norm\", height maps not at "
-                       "all); material \"" +
-                       name + "\" renders without it");
+                       "\" is not read: material \"" + name +
+                       "\" has a normal map (\"norm\"), which it renders with instead");
   }
   return warnings;
 }

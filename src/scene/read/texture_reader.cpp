@@ -91,10 +91,13 @@ LoadedTexture TextureLoader::load(const std::string& path, TextureUse use) {
 
 namespace {
 
-// A texture object {"texture": file, "scale": [su, sv]}, its file read for `use`.
+// A texture object {"texture": file, "scale": [su, sv]}, its file read for `use`; with `height`,
+// a bump map's, which may also give "height" (default 1, not 0) into *height.
 TextureRef readTextureObject(const JsonValue& value, TextureLoader& textures, TextureUse use,
-                             const std::string& expected) {
-  JsonObject fields(value, {"texture", "scale"}, expected);
+                             const std::string& expected, float* height = nullptr) {
+  std::vector<std::string> known = {"texture", "scale"};
+  if (height) known.push_back("height");
+  JsonObject fields(value, std::move(known), expected);
   const JsonValue file = fields.require("texture");
   const std::string written = file.string();
   if (written.empty()) file.failExpected("the path of an image file");
@@ -110,6 +113,13 @@ TextureRef readTextureObject(const JsonValue& value, TextureLoader& textures, Te
     ref.scaleV = e[1].number("a finite, non-zero number");
     if (ref.scaleU == 0) e[0].failExpected("a finite, non-zero number");
     if (ref.scaleV == 0) e[1].failExpected("a finite, non-zero number");
+  }
+  if (height) {
+    *height = 1.0f;
+    if (std::optional<JsonValue> given = fields.get("height")) {
+      *height = given->number("a finite, non-zero number");
+      if (*height == 0.0f) given->failExpected("a finite, non-zero number");
+    }
   }
   fields.finish();
   try {
@@ -132,6 +142,13 @@ TextureRef readNormalMap(const JsonValue& value, TextureLoader& textures) {
   if (!value.json().is_object())
     value.failExpected("a texture object {\"texture\": file, \"scale\": [su, sv]}");
   return readTextureObject(value, textures, TextureUse::Linear, "a texture object");
+}
+
+TextureRef readBumpMap(const JsonValue& value, TextureLoader& textures, float* height) {
+  const std::string expected =
+      "a texture object {\"texture\": file, \"scale\": [su, sv], \"height\": h}";
+  if (!value.json().is_object()) value.failExpected(expected);
+  return readTextureObject(value, textures, TextureUse::Linear, expected, height);
 }
 
 }  // namespace candela

@@ -54,4 +54,8 @@ Vec3 readTexturedColour(const JsonValue& value, TextureLoader& textures, Texture
 // A material's "normal_map": a texture object, its file read linearly.
 TextureRef readNormalMap(const JsonValue& value, TextureLoader& textures);
 
+// A bump map {"texture": file, "scale": [su, sv], "height": h}: its heights read linearly (their
+// luminance), and h, the height of a texel of value 1 in scene units (default 1), into *height.
+TextureRef readBumpMap(const JsonValue& value, TextureLoader& textures, float* height);
+
 }  // namespace candela
