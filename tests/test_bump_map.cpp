@@ -12,29 +12,16 @@
 #include <vector>
 
 #include "core/constants.h"
-#include "render/aov_layers.h"
 #include "render_test_util.h"
 #include "scene/dvec3.h"
 #include "scene/read/obj_loader.h"
+#include "shading_normal_test_util.h"
 
 namespace candela {
 namespace {
 
 namespace fs = std::filesystem;
 using test::num;
-
-fs::path folder(const std::string& name) {
-  const fs::path dir = fs::path(::testing::TempDir()) / name;
-  fs::create_directories(dir);
-  return dir;
-}
-
-// A square of half-side 100 in the plane y = 0 facing +y, u growing along +x and v along -z:
-// dp/du = (200, 0, 0), dp/dv = (0, 0, -200).
-void writePlane(const fs::path& path) {
-  std::ofstream(path) << "v -100 0 -100\nv 100 0 -100\nv 100 0 100\nv -100 0 100\n"
-                      << "vt 0 1\nvt 1 1\nvt 1 0\nvt 0 0\nf 1/1 4/4 3/3\nf 1/1 3/3 2/2\n";
-}
 
 // A 4 x 4 grey PFM map whose value rises by `perTexelU` a texel to the right and `perTexelV` a
 // texel up: within the map (away from where it repeats) its slopes are 4 perTexelU per unit u
@@ -50,60 +37,36 @@ void writeRampMap(const fs::path& path, float perTexelU, float perTexelV) {
     }
 }
 
-struct Rendered {
-  SceneData data;
-  RenderResult result;
-  std::vector<ImageLayer> layers;  // the normal pass
-};
-
-Rendered render(const std::string& json, const fs::path& dir) {
-  Rendered r{test::loadTestScene(json, dir.string()), {}, {}};
-  RenderOptions options;
-  options.aovs = true;
-  r.result = renderCpu(r.data.view(), options);
-  r.layers = makeAovLayers(r.data, parseAovList("normal"), r.result.aovs);
-  return r;
-}
-
-// The plane under a directional light, seen from above through pixel centres (u and v within
-// 0.015 of 0.5), one bounce.
-std::string planeScene(const std::string& material) {
-  return R"({
-    "camera": {"width": 24, "height": 16, "fov": 60, "position": [0, 5, 0],
-               "look_at": [0, 0, 0.001], "up": [0, 0, -1], "spp": 2},
-    "render": {"antialiasing": false, "max_depth": 1},
-    "objects": [{"file": "plane.obj", "material": )" +
-         material + R"(}],
-    "lights": [{"type": "directional", "direction": [0.3, -1, 0.5], "intensity": 2}]})";
-}
+const DVec3 kSun{0.3, -1, 0.5};
 
 // Heights h = height f(su u, sv v) raise the surface p(u, v) + h n: its derivatives are
 // dp/du + dh/du n and dp/dv + dh/dv n, and its normal their cross product, here
 // (-200 dh/du, 40000, 200 dh/dv) up to scale. Every pixel is rho E max(0, n . l) / pi.
 TEST(BumpMap, HeightsThatRiseSteadilyShadeAPlaneAsTheRaisedSurfacesNormal) {
-  const fs::path dir = folder("bump_map_ramp");
-  writePlane(dir / "plane.obj");
+  const fs::path dir = test::mapTestFolder("bump_map_ramp");
+  test::writeMappedPlane(dir / "plane.obj");
   writeRampMap(dir / "h.pfm", 0.1f, -0.05f);
-  const double height = 40, su = 3, sv = 3, rho = 0.6, irradiance = 2;
-  const Rendered r =
-      render(planeScene(R"({"type": "diffuse", "color": )" + num(rho) +
-                        R"(, "bump_map": {"texture": "h.pfm", "scale": [3, 3], "height": 40}})"),
-             dir);
+  const double height = 120, su = 3, sv = 3, rho = 0.6, irradiance = 2;
+  const test::RenderedWithNormals r = test::renderWithNormals(
+      test::planeUnderSun(
+          R"({"type": "diffuse", "color": )" + num(rho) +
+              R"(, "bump_map": {"texture": "h.pfm", "scale": [3, 3], "height": 120}})",
+          kSun, irradiance),
+      dir);
   const double slopeU = height * su * 4 * 0.1, slopeV = height * sv * 4 * -0.05;
-  const double n[3] = {-200 * slopeU, 40000, 200 * slopeV};
-  const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-  const double sun[3] = {0.3, -1, 0.5};
-  const double sunLength = std::sqrt(0.09 + 1 + 0.25);
-  const double cosine = -(n[0] * sun[0] + n[1] * sun[1] + n[2] * sun[2]) / (length * sunLength);
+  const DVec3 n = unit(DVec3{-200 * slopeU, 40000, 200 * slopeV});
+  const double cosine = -dot(n, unit(kSun));
   ASSERT_GT(cosine, 0.0);
-  ASSERT_GT(cosine - 1 / sunLength, 0.05);  // the tilt shows (flat, the cosine is 0.864)
+  ASSERT_GT(cosine + unit(kSun).y, 0.05);  // the tilt shows (flat, the cosine is 0.864)
   const double expected = rho * irradiance * cosine / kPi;
   ASSERT_EQ(r.layers.size(), 1u);
   for (uint32_t y = 0; y < 16; ++y)
     for (uint32_t x = 0; x < 24; ++x) {
       EXPECT_NEAR(r.result.image.at(x, y).x, expected, 1e-5 * expected) << x << "," << y;
       const float* normal = &r.layers[0].pixels[3 * (size_t(y) * 24 + x)];
-      for (int c = 0; c < 3; ++c) EXPECT_NEAR(normal[c], n[c] / length, 1e-5) << x << "," << y;
+      EXPECT_NEAR(normal[0], n.x, 1e-5) << x << "," << y;
+      EXPECT_NEAR(normal[1], n.y, 1e-5) << x << "," << y;
+      EXPECT_NEAR(normal[2], n.z, 1e-5) << x << "," << y;
     }
 }
 
@@ -113,65 +76,56 @@ TEST(BumpMap, HeightsThatRiseSteadilyShadeAPlaneAsTheRaisedSurfacesNormal) {
 // the normal pass at each pixel's analytic hit is the raised surface's normal (its tilt mirrored
 // where it turns from the eye).
 TEST(BumpMap, ASphereRaisesItsOwnDerivatives) {
-  const fs::path dir = folder("bump_map_sphere");
+  const fs::path dir = test::mapTestFolder("bump_map_sphere");
   writeRampMap(dir / "h.pfm", 0.1f, 0.07f);
   const double radius = 2, height = 3;
-  const Rendered r = render(R"({
+  const test::RenderedWithNormals r = test::renderWithNormals(R"({
     "camera": {"width": 24, "height": 24, "fov": 40, "position": [0, 0, -10], "look_at": [0, 0, 0],
                "spp": 1},
     "render": {"antialiasing": false, "max_depth": 1},
     "spheres": [{"position": [0, 0, 0], "radius": 2,
                  "material": {"type": "diffuse", "bump_map": {"texture": "h.pfm", "height": 3}}}],
     "environment": {"color": 1}})",
-                            dir);
+                                                              dir);
   const double slopeU = height * 4 * 0.1, slopeV = height * 4 * 0.07;
-  const Camera& c = r.data.camera;
-  const DVec3 o = dvec3(c.position);
-  int checked = 0;
-  for (uint32_t y = 0; y < 24; ++y)
-    for (uint32_t x = 0; x < 24; ++x) {
-      const DVec3 ray =
-          unit(dvec3(c.cameraToWorld * (c.inverseK * Vec3(x + 0.5f, y + 0.5f, 1.0f))));
-      const double b = dot(o, ray), disc = b * b - (dot(o, o) - radius * radius);
-      if (disc < 0.2) continue;  // misses, or grazes the silhouette
-      const DVec3 d = (1 / radius) * (o + (-b - std::sqrt(disc)) * ray);
-      const double sinTheta = std::sqrt(d.x * d.x + d.z * d.z);
-      if (sinTheta < 0.1) continue;  // near a pole, where u has no direction
-      const DVec3 dpdu = (2 * kPi * radius) * DVec3{-d.z, 0, d.x};
-      const DVec3 dpdv = (kPi * radius / sinTheta) * (DVec3{0, 1, 0} - d.y * d);
-      DVec3 n = unit(cross(dpdu + slopeU * d, dpdv + slopeV * d));
-      if (dot(n, d) < 0) n = -1.0 * n;
-      const DVec3 wo = unit(o - radius * d);
-      if (dot(wo, d) * dot(wo, n) <= 0) n = unit(2 * dot(n, d) * d - n);  // turned from the eye
-      const float* normal = &r.layers[0].pixels[3 * (size_t(y) * 24 + x)];
-      EXPECT_NEAR(normal[0], n.x, 1e-4) << x << "," << y;
-      EXPECT_NEAR(normal[1], n.y, 1e-4) << x << "," << y;
-      EXPECT_NEAR(normal[2], n.z, 1e-4) << x << "," << y;
-      ++checked;
-    }
+  const DVec3 o = dvec3(r.data.camera.position);
+  const int checked =
+      test::forEachSphereHit(r.data.camera, radius, [&](uint32_t x, uint32_t y, const DVec3& d) {
+        const double sinTheta = std::sqrt(d.x * d.x + d.z * d.z);
+        const DVec3 dpdu = (2 * kPi * radius) * DVec3{-d.z, 0, d.x};
+        const DVec3 dpdv = (kPi * radius / sinTheta) * (DVec3{0, 1, 0} - d.y * d);
+        DVec3 n = unit(cross(dpdu + slopeU * d, dpdv + slopeV * d));
+        if (dot(n, d) < 0) n = -1.0 * n;
+        test::expectMappedNormal(r, x, y, n, d, unit(o - radius * d), 1e-4);
+      });
   EXPECT_GT(checked, 100);
 }
 
 // Level heights tilt nothing: the image and normal pass are the plain plane's, whatever the
 // height's scale.
 TEST(BumpMap, LevelHeightsChangeNothing) {
-  const fs::path dir = folder("bump_map_level");
-  writePlane(dir / "plane.obj");
+  const fs::path dir = test::mapTestFolder("bump_map_level");
+  test::writeMappedPlane(dir / "plane.obj");
   writeRampMap(dir / "h.pfm", 0.0f, 0.0f);
-  const Rendered plain = render(planeScene(R"({"type": "diffuse", "color": 0.6})"), dir);
-  const Rendered bumped =
-      render(planeScene(R"({"type": "diffuse", "color": 0.6, "bump_map": {"texture": "h.pfm",
-                                                                    "height": -1000}})"),
-             dir);
+  const test::RenderedWithNormals plain = test::renderWithNormals(
+      test::planeUnderSun(R"({"type": "diffuse", "color": 0.6})", kSun, 2), dir);
+  const test::RenderedWithNormals bumped =
+      test::renderWithNormals(test::planeUnderSun(R"({"type": "diffuse", "color": 0.6,
+                              "bump_map": {"texture": "h.pfm", "height": -1000}})",
+                                                  kSun, 2),
+                              dir);
   for (uint32_t y = 0; y < 16; ++y)
     for (uint32_t x = 0; x < 24; ++x)
       EXPECT_NEAR(bumped.result.image.at(x, y).x, plain.result.image.at(x, y).x, 1e-6);
+  ASSERT_EQ(bumped.layers[0].pixels.size(), plain.layers[0].pixels.size());
+  for (size_t i = 0; i < plain.layers[0].pixels.size(); ++i)
+    EXPECT_NEAR(bumped.layers[0].pixels[i], plain.layers[0].pixels[i], 1e-6);
 }
 
 // MTL `bump` (or `map_Bump`) names a bump map where the material has no `norm`, -bm its height
 // (default 1) and -s its scale; beside a `norm` it is not read, and the scene says so.
 TEST(BumpMap, MtlBumpReadsHeightsWithItsMultiplier) {
-  const fs::path dir = folder("bump_map_mtl");
+  const fs::path dir = test::mapTestFolder("bump_map_mtl");
   writeRampMap(dir / "h.pfm", 0.1f, 0.0f);
   std::ofstream(dir / "m.obj") << "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\n"
                                   "vt 0 1\nusemtl a\nf 1/1 2/2 3/3\nusemtl b\nf 1/1 2/2 3/3\n"
@@ -215,17 +169,10 @@ TEST(BumpMap, MtlBumpReadsHeightsWithItsMultiplier) {
 }
 
 TEST(BumpMap, TheSceneFormatRefusesWhatItCannotBe) {
-  const fs::path dir = folder("bump_map_errors");
+  const fs::path dir = test::mapTestFolder("bump_map_errors");
   writeRampMap(dir / "h.pfm", 0.1f, 0.0f);
   const auto error = [&](const std::string& material) {
-    try {
-      parseSceneText(
-          R"({"camera": {"width": 4, "height": 4}, "materials": {"m": )" + material + "}}",
-          "s.json", dir.string());
-    } catch (const SceneError& e) {
-      return std::string(e.what());
-    }
-    return std::string("(no error)");
+    return test::materialError(dir, material);
   };
   EXPECT_EQ(error(R"({"type": "plastic", "bump_map": {"texture": "h.pfm", "height": 0.01}})"),
             "(no error)");

@@ -53,6 +53,14 @@ float unitNumber(const MtlStatement& statement, const char* keyword) {
   return value;
 }
 
+// What `in` has left of its line, without the blanks it starts with.
+std::string restOfLine(std::istringstream& in) {
+  std::string remaining;
+  std::getline(in, remaining);
+  const size_t first = remaining.find_first_not_of(" \t");
+  return first == std::string::npos ? "" : remaining.substr(first);
+}
+
 // A texture statement "map_Kd [-s u v [w]] file": its texture, loaded for `use`. The -s scale
 // is honoured (w ignored); with `bumpMultiplier`, a bump map's, so is -bm (into it); other
 // options are refused.
@@ -74,10 +82,7 @@ TextureRef mtlTexture(const MtlStatement& statement, const char* keyword, Textur
         failAt(statement, std::string(keyword) +
                               " -bm: expected a finite, non-zero multiplier, got \"" + word + "\"");
       *bumpMultiplier = value;
-      std::string remaining;
-      std::getline(in, remaining);
-      const size_t first = remaining.find_first_not_of(" \t");
-      rest = first == std::string::npos ? "" : remaining.substr(first);
+      rest = restOfLine(in);
       continue;
     }
     if (option != "-s")
@@ -100,10 +105,7 @@ TextureRef mtlTexture(const MtlStatement& statement, const char* keyword, Textur
     if (count == 0) failAt(statement, std::string(keyword) + " -s: expected a scale");
     ref.scaleU = scale[0];
     ref.scaleV = count > 1 ? scale[1] : scale[0];
-    std::string remaining;
-    std::getline(in, remaining);
-    const size_t first = remaining.find_first_not_of(" \t");
-    rest = first == std::string::npos ? "" : remaining.substr(first);
+    rest = restOfLine(in);
   }
   if (rest.empty()) failAt(statement, std::string("expected a file name after ") + keyword);
   const std::filesystem::path name(rest);
