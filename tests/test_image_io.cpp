@@ -8,6 +8,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -151,6 +152,33 @@ TEST(Encode8bit, Srgb) {
   EXPECT_EQ(encode8bit(0.002f, out), 7);   // linear segment: 0.02584 * 255 = 6.59
   EXPECT_EQ(encode8bit(0.18f, out), 118);  // mid grey
   EXPECT_EQ(encode8bit(2.0f, out), 255);
+}
+
+// Tone maps bring every exposed value into [0, 1] by their curves, before the display curve:
+// Reinhard's v / (1 + v), and the ACES fit, which passes 1 at v = 7.24 (2.51 / 2.43 > 1, so it is
+// clamped).
+TEST(Encode8bit, ToneMaps) {
+  OutputDesc out;
+  out.toneMap = ToneMap::Reinhard;
+  for (float l : kSamples) EXPECT_EQ(encode8bit(l, out), expectedPower(l / (1.0 + l), 2.2, 0)) << l;
+  EXPECT_EQ(encode8bit(1.0f, out), expectedPower(0.5, 2.2, 0));
+  EXPECT_LT(encode8bit(30.0f, out), 255);  // 30 / 31 = 0.968: still below white
+  out.exposure = 1.0f;                     // the exposure comes first: 0.5 is 1, which maps to 0.5
+  EXPECT_EQ(encode8bit(0.5f, out), expectedPower(0.5, 2.2, 0));
+
+  out = OutputDesc{};
+  out.toneMap = ToneMap::Aces;
+  out.curve = GammaCurve::Srgb;
+  const auto aces = [](double v) {
+    return std::min(1.0, v * (2.51 * v + 0.03) / (v * (2.43 * v + 0.59) + 0.14));
+  };
+  for (float l : kSamples) EXPECT_EQ(encode8bit(l, out), expectedSrgb(aces(l))) << l;
+  EXPECT_EQ(encode8bit(0.18f, out), 141);  // aces 0.2669, in sRGB 0.5531: 141.04
+  EXPECT_EQ(encode8bit(5.0f, out), 253);   // aces 0.9853
+  EXPECT_EQ(encode8bit(10.0f, out), 255);  // aces 1.009, clamped
+  EXPECT_EQ(encode8bit(1e30f, out), 255);
+  EXPECT_EQ(encode8bit(std::numeric_limits<float>::infinity(), out), 255);
+  EXPECT_EQ(encode8bit(std::nanf(""), out), 0);
 }
 
 TEST(Encode8bit, Exposure) {

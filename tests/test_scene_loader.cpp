@@ -511,6 +511,9 @@ TEST_F(SceneLoader, InvalidRenderSettings) {
             "did you mean \"srgb\"?");
   EXPECT_EQ(errorWith(R"("render": {"gamma": 0})"),
             "s.json: render.gamma: expected a positive number or \"srgb\", got 0");
+  EXPECT_EQ(errorWith(R"("render": {"tone_map": "filmic"})"),
+            "s.json: render.tone_map: expected one of \"clamp\", \"reinhard\", \"aces\", got a "
+            "string \"filmic\"");
 }
 
 TEST_F(SceneLoader, InvalidObjectKeys) {
@@ -599,6 +602,11 @@ TEST_F(SceneLoader, RenderSettings) {
   EXPECT_EQ(scene.output.curve, GammaCurve::Srgb);
   EXPECT_FLOAT_EQ(scene.output.exposure, -17.59f);
   EXPECT_FLOAT_EQ(parse(R"({"camera": {}, "render": {"gamma": 1.8}})").output.gamma, 1.8f);
+  EXPECT_EQ(scene.output.toneMap, ToneMap::Clamp);
+  EXPECT_EQ(parse(R"({"camera": {}, "render": {"tone_map": "reinhard"}})").output.toneMap,
+            ToneMap::Reinhard);
+  EXPECT_EQ(parse(R"({"camera": {}, "render": {"tone_map": "aces"}})").output.toneMap,
+            ToneMap::Aces);
   EXPECT_EQ(parse(R"({"camera": {}, "render": {"light_paths": "on"}})").render.lightPaths,
             LightPaths::On);
   EXPECT_EQ(parse(R"({"camera": {}, "render": {"light_paths": "off"}})").render.lightPaths,

@@ -120,9 +120,11 @@ class Scene:
 
     @property
     def output(self) -> dict:
-        """The scene's output encoding as write_image arguments: gamma (or "srgb"), exposure."""
-        srgb, gamma, exposure = self._core.output
-        return {"gamma": "srgb" if srgb else gamma, "exposure": exposure}
+        """The scene's output encoding as write_image arguments: gamma (or "srgb"), exposure,
+        tone_map."""
+        srgb, gamma, exposure, tone_map = self._core.output
+        return {"gamma": "srgb" if srgb else gamma, "exposure": exposure,
+                "tone_map": TONE_MAPS[tone_map]}
 
     @property
     def instances(self) -> Dict[int, str]:
@@ -315,20 +317,26 @@ def devices(threads: int = 0) -> List[Dict[str, Any]]:
     return _candela.devices(int(threads))
 
 
+TONE_MAPS = ("clamp", "reinhard", "aces")  # as the scene's render.tone_map names them
+
+
 def write_image(path: str | os.PathLike, img: Any, gamma: float | str = 2.2,
-                exposure: float = 0.0) -> None:
-    """Writes a linear (H, W, 3) image as the CLI does: .png (exposure in stops, then gamma, or
-    gamma="srgb"), .exr or .pfm (linear float), creating the folders it goes in. The file is
-    replaced atomically."""
+                exposure: float = 0.0, tone_map: str = "clamp") -> None:
+    """Writes a linear (H, W, 3) image as the CLI does: .png (exposure in stops, then the tone map,
+    "clamp", "reinhard" or "aces", then gamma, or gamma="srgb"), .exr or .pfm (linear float),
+    creating the folders it goes in. The file is replaced atomically."""
     arr = np.ascontiguousarray(img, dtype=np.float32)
     if arr.ndim != 3 or arr.shape[2] != 3:
         raise ValueError(f"expected an image of shape (H, W, 3), got {arr.shape}")
     srgb = isinstance(gamma, str)
     if srgb and gamma.lower() != "srgb":
         raise ValueError(f"gamma must be a number or 'srgb', got {gamma!r}")
+    if tone_map not in TONE_MAPS:
+        raise ValueError(f"tone_map must be one of {', '.join(TONE_MAPS)}, got {tone_map!r}")
     path = os.fspath(path)
     try:
         os.makedirs(os.path.dirname(path) or ".", exist_ok=True)
     except OSError:
         pass  # a file where a folder should be: the writer below names it
-    _candela.write_image(path, arr, srgb, 2.2 if srgb else float(gamma), float(exposure))
+    _candela.write_image(path, arr, srgb, 2.2 if srgb else float(gamma), float(exposure),
+                         TONE_MAPS.index(tone_map))

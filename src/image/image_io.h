@@ -58,7 +58,8 @@ ImageRgba readImageRgba(const std::string& path);
 // implies, EXR's magic number. What a resumed sequence counts as a finished frame.
 bool isCompleteImageFile(const std::string& path);
 
-// 8-bit encoding of one linear value: exposure, clamp to [0,1], then the gamma or sRGB curve.
+// 8-bit encoding of one linear value: exposure, the tone map into [0, 1], then the gamma or sRGB
+// curve.
 uint8_t encode8bit(float linear, const OutputDesc& output);
 
 }  // namespace candela

@@ -220,6 +220,24 @@ def test_write_image_formats(tmp_path, scene_dict):
         candela.write_image(tmp_path / "file" / "d.png", img)
 
 
+def test_scene_output_and_tone_maps(tmp_path, scene_dict):
+    scene_dict["render"].update(gamma="srgb", exposure=1.5, tone_map="aces")
+    scene = candela.Scene.from_dict(scene_dict)
+    assert scene.output == {"gamma": "srgb", "exposure": 1.5, "tone_map": "aces"}
+    assert candela.Scene.from_dict(tiny_scene()).output["tone_map"] == "clamp"
+    # Values above 1: clamped they are all white, tone-mapped they keep their differences.
+    img = np.repeat(np.linspace(0.5, 8, 16, dtype=np.float32)[None, :, None], 3, axis=2)
+    for tone_map in ("clamp", "reinhard", "aces"):
+        candela.write_image(tmp_path / f"{tone_map}.png", img, tone_map=tone_map)
+    files = {t: (tmp_path / f"{t}.png").read_bytes() for t in ("clamp", "reinhard", "aces")}
+    assert len(set(files.values())) == 3
+    with pytest.raises(ValueError, match="tone_map must be one of clamp, reinhard, aces"):
+        candela.write_image(tmp_path / "x.png", img, tone_map="filmic")
+    scene_dict["render"]["tone_map"] = "filmic"
+    with pytest.raises(candela.SceneError, match=r"render\.tone_map"):
+        candela.Scene.from_dict(scene_dict)
+
+
 def test_render_releases_the_gil(scene_dict):
     scene_dict["camera"].update(width=64, height=64)
     scene = candela.Scene.from_dict(scene_dict)

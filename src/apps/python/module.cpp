@@ -310,7 +310,7 @@ nb::dict passesFromSums(const Scene& scene, const nb::dict& sums,
 }
 
 void writeImageArray(const std::string& path, const ImageInput& img, bool srgb, float gamma,
-                     float exposure) {
+                     float exposure, int toneMap) {
   if (!isSupportedImagePath(path))
     throw std::invalid_argument(path + ": unsupported image format, expected .png, .exr or .pfm");
   ImageRGB image(uint32_t(img.shape(1)), uint32_t(img.shape(0)));
@@ -319,6 +319,7 @@ void writeImageArray(const std::string& path, const ImageInput& img, bool srgb, 
   output.curve = srgb ? GammaCurve::Srgb : GammaCurve::Power;
   output.gamma = gamma;
   output.exposure = exposure;
+  output.toneMap = ToneMap(toneMap);
   nb::gil_scoped_release release;
   writeImage(path, image, output);
 }
@@ -396,7 +397,7 @@ NB_MODULE(_candela, m) {
       .def_prop_ro("seed", [](const Scene& s) { return s.still().render.seed; })
       .def_prop_ro("output", [](const Scene& s) {
         const OutputDesc& o = s.desc->output;
-        return std::make_tuple(o.curve == GammaCurve::Srgb, o.gamma, o.exposure);
+        return std::make_tuple(o.curve == GammaCurve::Srgb, o.gamma, o.exposure, int(o.toneMap));
       })
       .def_prop_ro("instances", [](const Scene& s) {
         nb::dict names;
@@ -459,7 +460,8 @@ NB_MODULE(_candela, m) {
   m.attr("PASS_SUM_MERGES") = passSumMerges();
   m.def("check_aovs", [](const std::vector<std::string>& names) { aovsFromNames(names); },
         "names"_a);
-  m.def("write_image", &writeImageArray, "path"_a, "img"_a, "srgb"_a, "gamma"_a, "exposure"_a);
+  m.def("write_image", &writeImageArray, "path"_a, "img"_a, "srgb"_a, "gamma"_a, "exposure"_a,
+        "tone_map"_a);
   m.def("denoise", &denoiseArrays, "library"_a, "image"_a, "albedo"_a, "normal"_a,
         "direct"_a = nb::none(), "emission"_a = nb::none(), "seen_emission"_a = nb::none(),
         "threads"_a = 0);

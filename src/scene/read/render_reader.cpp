@@ -9,7 +9,7 @@ namespace candela {
 
 void readRender(const JsonValue& value, RenderSettings& render, OutputDesc& output) {
   JsonObject fields(value, {"max_depth", "integrator", "light_paths", "antialiasing", "seed",
-                            "gamma", "exposure"});
+                            "gamma", "exposure", "tone_map"});
   if (std::optional<JsonValue> depth = fields.get("max_depth"))
     render.maxDepth = static_cast<uint32_t>(depth->integer(1, UINT32_MAX, "a positive integer"));
   if (std::optional<JsonValue> integrator = fields.get("integrator"))
@@ -39,6 +39,8 @@ void readRender(const JsonValue& value, RenderSettings& render, OutputDesc& outp
   }
   if (std::optional<JsonValue> exposure = fields.get("exposure"))
     output.exposure = exposure->number();
+  if (std::optional<JsonValue> toneMap = fields.get("tone_map"))
+    output.toneMap = ToneMap(toneMap->choice({"clamp", "reinhard", "aces"}));
   fields.finish();
 }
 
