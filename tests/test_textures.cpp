@@ -392,6 +392,13 @@ TEST(TextureErrors, JsonMessagesNameThePath) {
             0u)
       << missing;
   EXPECT_NE(missing.find("wood.png"), std::string::npos) << missing;
+  // A file of another kind is named with every format a texture may be.
+  EXPECT_EQ(
+      loadError(scene(R"({"type": "diffuse", "color": {"texture": "wood.json"}})"), dir.path()),
+      "scene.json: spheres[0].material.color.texture: cannot read the texture: " +
+          dir.file("wood.json") +
+          ": unsupported image format '.json', expected .png, .jpg, .jpeg, .exr, .pfm or "
+          ".hdr");
   EXPECT_EQ(loadError(scene(R"({"type": "diffuse", "color": {"texture": "ok.png", "scale": [1, 0]}})"),
                       dir.path()),
             "scene.json: spheres[0].material.color.scale[1]: expected a finite, non-zero number, "

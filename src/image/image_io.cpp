@@ -53,6 +53,12 @@ bool isFloatImagePath(const std::string& path) {
   return format == ImageFormat::Exr || format == ImageFormat::Pfm || format == ImageFormat::Hdr;
 }
 
+void requireTextureImagePath(const std::string& path) {
+  const std::string ext = lowercaseExtension(path);
+  if (!isFloatImagePath(path) && ext != ".png" && ext != ".jpg" && ext != ".jpeg")
+    unsupported(path, ".png, .jpg, .jpeg, .exr, .pfm or .hdr");
+}
+
 void writeImage(const std::string& path, const ImageRGB& image, const OutputDesc& output) {
   writeFileAtomically(path, encodeImage(path, image, output));
 }

@@ -27,6 +27,10 @@ bool isSupportedImagePath(const std::string& path);
 bool isExrPath(const std::string& path);
 bool isFloatImagePath(const std::string& path);
 
+// Throws ImageWriteError naming `path` and the formats textures are read from (.png, .jpg, .jpeg,
+// .exr, .pfm, .hdr) unless its extension is one of them.
+void requireTextureImagePath(const std::string& path);
+
 // Throws ImageWriteError (naming the path and the reason) on failure; leaves no partial file.
 void writeImage(const std::string& path, const ImageRGB& image, const OutputDesc& output);
 

@@ -21,6 +21,7 @@ constexpr uint64_t kMaxTexels = uint64_t(1) << 28;
 TextureDesc decode(const std::string& path, TextureUse use, bool* hasAlpha) {
   TextureDesc t;
   t.file = path;
+  requireTextureImagePath(path);
   if (isFloatImagePath(path)) {
     const ImageRGB image = readImage(path);
     const std::string bad = firstBadTexel(image);
