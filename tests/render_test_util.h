@@ -2,6 +2,7 @@
 #pragma once
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <cstdio>
@@ -58,12 +59,18 @@ inline RenderResult renderTestScene(const std::string& json, int threads = 0,
 }
 
 // Writes a square of half-side `half` in the plane y = 0 (two triangles facing +y) as an OBJ file
-// `name` in the test's temporary folder; returns its path.
+// `name` in the test's temporary folder; returns its path. Tests that share a name run in
+// processes of their own at once (ctest -j): each writes its own file and renames it into place,
+// so that none reads another's half written.
 inline std::string writePlaneObj(const std::string& name, double half) {
   const std::string path = ::testing::TempDir() + name;
-  std::ofstream f(path);
-  f << "v " << -half << " 0 " << -half << "\nv " << half << " 0 " << -half << "\nv " << half
-    << " 0 " << half << "\nv " << -half << " 0 " << half << "\nf 1 3 2\nf 1 4 3\n";
+  const std::string own = path + "." + std::to_string(getpid()) + ".tmp";
+  {
+    std::ofstream f(own);
+    f << "v " << -half << " 0 " << -half << "\nv " << half << " 0 " << -half << "\nv " << half
+      << " 0 " << half << "\nv " << -half << " 0 " << half << "\nf 1 3 2\nf 1 4 3\n";
+  }
+  std::rename(own.c_str(), path.c_str());
   return path;
 }
 
