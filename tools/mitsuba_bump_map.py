@@ -12,7 +12,6 @@ then a curved field, 0.5 + 0.25 sin(2 pi u) + 0.25 cos(4 pi v).
 Prints, per map and view, the median and the 5th and 95th percentiles of candela / Mitsuba over
 the pixels both see the plane in.
 """
-import argparse
 import os
 import tempfile
 
@@ -41,12 +40,7 @@ def heights(size=64):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__,
-                                 formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument('--candela', default=os.path.join(os.path.dirname(__file__), '..', 'build',
-                                                      'candela'))
-    a = ap.parse_args()
-    mi.set_variant('scalar_rgb')
+    a = plane.parse_args(__doc__)
     with tempfile.TemporaryDirectory() as work:
         plane.write_obj(work)
         candela_map, mitsuba_map = os.path.join(work, 'h.exr'), os.path.join(work, 'h_mi.exr')

@@ -12,7 +12,6 @@ Prints, per view, the median and the 5th and 95th percentiles of candela / Mitsu
 both see the plane in (the plane's edge pixels differ: candela samples pixel centres here, Mitsuba
 its box filter's whole pixel).
 """
-import argparse
 import os
 import tempfile
 
@@ -46,12 +45,7 @@ def diffuse(reflectance):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__,
-                                 formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument('--candela', default=os.path.join(os.path.dirname(__file__), '..', 'build',
-                                                      'candela'))
-    a = ap.parse_args()
-    mi.set_variant('scalar_rgb')
+    a = plane.parse_args(__doc__)
     with tempfile.TemporaryDirectory() as work:
         plane.write_obj(work)
         write_png(os.path.join(work, 'n.png'), TEXEL)

@@ -2,6 +2,7 @@
 renderers: a diffuse square of side 8 in y = 0 under a directional light, its uvs running along +x
 and -z, seen by a 48 x 32 camera. In Mitsuba 3 it is a `rectangle`, turned so that its uvs run the
 same way, with a box pixel filter."""
+import argparse
 import json
 import os
 import subprocess
@@ -11,6 +12,16 @@ import numpy as np
 
 SIZE = (48, 32)
 FOV = 50
+
+
+def parse_args(doc):
+    """The tools' one option, --candela (the binary; default build/candela), with `doc` as their
+    help; also sets Mitsuba's variant (scalar_rgb: no JIT, as the tools' scenes are small)."""
+    ap = argparse.ArgumentParser(description=doc, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument('--candela', default=os.path.join(os.path.dirname(__file__), '..', 'build',
+                                                      'candela'))
+    mi.set_variant('scalar_rgb')
+    return ap.parse_args()
 
 
 def write_obj(work):
