@@ -39,6 +39,12 @@ ImageFormat formatOf(const std::string& path) {
                         ", expected " + expected);
 }
 
+// The files readImageRgba reads: .png, .jpg, .jpeg.
+bool isRgbaImagePath(const std::string& path) {
+  const std::string ext = lowercaseExtension(path);
+  return ext == ".png" || ext == ".jpg" || ext == ".jpeg";
+}
+
 }  // namespace
 
 bool isSupportedImagePath(const std::string& path) {
@@ -54,8 +60,7 @@ bool isFloatImagePath(const std::string& path) {
 }
 
 void requireTextureImagePath(const std::string& path) {
-  const std::string ext = lowercaseExtension(path);
-  if (!isFloatImagePath(path) && ext != ".png" && ext != ".jpg" && ext != ".jpeg")
+  if (!isFloatImagePath(path) && !isRgbaImagePath(path))
     unsupported(path, ".png, .jpg, .jpeg, .exr, .pfm or .hdr");
 }
 
@@ -177,8 +182,7 @@ ImageRGB readImage(const std::string& path) {
 }
 
 ImageRgba readImageRgba(const std::string& path) {
-  const std::string ext = lowercaseExtension(path);
-  if (ext != ".png" && ext != ".jpg" && ext != ".jpeg") unsupported(path, ".png, .jpg or .jpeg");
+  if (!isRgbaImagePath(path)) unsupported(path, ".png, .jpg or .jpeg");
   const std::string bytes = readFileBytes(path);
   try {
     return decodeImageRgba(bytes);

@@ -42,12 +42,18 @@ Vec3 mtlColour(const tinyobj::real_t* values, const char* key, const std::string
   throw SceneError(statement.file + ":" + std::to_string(statement.line) + ": " + reason);
 }
 
+// Whether `word` is a number, all of it (strtof's), into *value.
+bool readNumber(const std::string& word, float* value) {
+  char* end = nullptr;
+  *value = std::strtof(word.c_str(), &end);
+  return !word.empty() && end == word.c_str() + word.size();
+}
+
 // A number in [0, 1] from `d` or `Tr` (its only argument).
 float unitNumber(const MtlStatement& statement, const char* keyword) {
   const std::string& text = statement.arguments;
-  char* end = nullptr;
-  const float value = std::strtof(text.c_str(), &end);
-  if (text.empty() || end != text.c_str() + text.size() || !(value >= 0.0f && value <= 1.0f))
+  float value = 0.0f;
+  if (!readNumber(text, &value) || !(value >= 0.0f && value <= 1.0f))
     failAt(statement, std::string("expected ") + keyword + " between 0 and 1, got \"" + text +
                           "\"");
   return value;
@@ -75,10 +81,8 @@ TextureRef mtlTexture(const MtlStatement& statement, const char* keyword, Textur
     if (option == "-bm" && bumpMultiplier) {
       std::string word;
       in >> word;
-      char* end = nullptr;
-      const float value = std::strtof(word.c_str(), &end);
-      if (word.empty() || end != word.c_str() + word.size() ||
-          !(std::isfinite(value) && value != 0.0f))
+      float value = 0.0f;
+      if (!readNumber(word, &value) || !(std::isfinite(value) && value != 0.0f))
         failAt(statement, std::string(keyword) +
                               " -bm: expected a finite, non-zero multiplier, got \"" + word + "\"");
       *bumpMultiplier = value;
@@ -91,9 +95,8 @@ TextureRef mtlTexture(const MtlStatement& statement, const char* keyword, Textur
     float scale[3] = {1.0f, 1.0f, 1.0f};
     int count = 0;
     for (std::string word; count < 3 && in >> word; ++count) {
-      char* end = nullptr;
-      const float value = std::strtof(word.c_str(), &end);
-      if (end != word.c_str() + word.size()) {
+      float value = 0.0f;
+      if (!readNumber(word, &value)) {
         in.seekg(-std::streamoff(word.size()), std::ios::cur);  // the file name
         break;
       }
