@@ -117,6 +117,13 @@ CANDELA_HDI TextureSample lookupTexture(const TexturePool& pool, const TextureRe
   return {Vec3(sum[0], sum[1], sum[2]), sum[3]};
 }
 
+// The luminance of lookupTexture's colour (a grey image's value), with the bump map's weights.
+CANDELA_HDI float lookupTextureLuminance(const TexturePool& pool, const TextureRef& ref, float u,
+                                         float v) {
+  const Vec3 c = lookupTexture(pool, ref, u, v).rgb;
+  return 0.212671f * c.x + 0.715160f * c.y + 0.072169f * c.z;
+}
+
 // The derivatives with respect to u and v of the luminance of `ref`'s bilinear lookup at (u, v)
 // (that of the cell of texels around it; Mitsuba 3's eval_1_grad): a height map's slopes.
 CANDELA_HDI void textureLuminanceGradient(const TexturePool& pool, const TextureRef& ref, float u,

@@ -24,6 +24,12 @@ enum class MaterialType : uint32_t {
 // Samples of the rough plastic's coating transmittance over cos(theta) in [0, 1] (Mitsuba 3's
 // MTS_ROUGH_TRANSMITTANCE_RES is 64 for the same table).
 constexpr uint32_t kPlasticTableSize = 64;
+// A plastic whose roughness is textured has a table per roughness level instead (SceneView::
+// plasticCoats): kPlasticCoatLevels rows from the smoothest rough surface (alpha kSmoothAlpha) to
+// roughness 1, evenly in roughness, each its transmittance table and then its internal
+// reflectance.
+constexpr uint32_t kPlasticCoatLevels = 16;
+constexpr uint32_t kPlasticCoatRow = kPlasticTableSize + 1;
 
 struct Material {
   MaterialType type = MaterialType::Diffuse;
@@ -32,6 +38,9 @@ struct Material {
   Vec3 color{0.8f};
   float ior = 1.5f;        // glass and plastic: relative index, outside -> inside
   float roughness = 0.0f;  // conductor, glass, plastic: in [0, 1], alpha = roughness^2
+  // Conductor, glass, plastic: a texture whose value (luminance, read linearly) is the roughness
+  // in place of `roughness`; the material is then rough everywhere (render/microfacet.h).
+  TextureRef roughnessTexture;
   bool metal = false;      // conductor: Fresnel of the complex index metalEta + i metalK
   Vec3 metalEta{0.0f}, metalK{0.0f};
   Vec3 radiance{0.0f};  // emissive: emitted radiance from the front side
@@ -45,6 +54,9 @@ struct Material {
   // the coating from inside, and the coating's transmittance from outside by cos(theta).
   float plasticInternalReflectance = 0.0f;
   float plasticTransmittance[kPlasticTableSize] = {};
+  // Plastic with a roughnessTexture: where its coat rows begin in SceneView::plasticCoats (set
+  // when the scene is flattened; -1: none).
+  int32_t plasticCoatTable = -1;
 };
 
 }  // namespace candela

@@ -22,10 +22,21 @@ constexpr float kSmoothAlpha = 1e-3f;
 // alpha = roughness^2 (the Disney, glTF and Blender convention).
 CANDELA_HDI float roughnessToAlpha(float roughness) { return roughness * roughness; }
 
-// Whether m's roughness makes it perfectly smooth: a delta lobe.
+// Whether m's roughness makes it perfectly smooth: a delta lobe. A textured roughness never does.
 CANDELA_HDI bool isSmooth(const Material& m) {
-  return roughnessToAlpha(m.roughness) < kSmoothAlpha;
+  return m.roughnessTexture.index < 0 && roughnessToAlpha(m.roughness) < kSmoothAlpha;
 }
+
+// The alpha of m at a point of roughness `roughness` (its texture's value there). A textured
+// material is rough everywhere, its smoothest texels as rough as kSmoothAlpha, so that what is
+// decided per material (isSmooth, hasSmoothLobe) holds at every point.
+CANDELA_HDI float pointAlpha(const Material& m, float roughness) {
+  const float alpha = roughnessToAlpha(roughness);
+  return m.roughnessTexture.index >= 0 && alpha < kSmoothAlpha ? kSmoothAlpha : alpha;
+}
+
+// The roughness of the smoothest rough surface, where a textured plastic's coat table begins.
+CANDELA_HDI float smoothestRoughRoughness() { return sqrtf(kSmoothAlpha); }
 
 // Density of microfacet normal m (m.z > 0) per unit projected area.
 CANDELA_HDI float ggxD(const Vec3& m, float alpha) {

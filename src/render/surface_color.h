@@ -1,5 +1,6 @@
 // The colour of a material at a surface point: `color` alone, or its texture times `color` (a
-// tint, 1 unless the scene or the MTL's Kd sets another); likewise an emitter's radiance.
+// tint, 1 unless the scene or the MTL's Kd sets another); likewise an emitter's radiance, and
+// the roughness, which a texture replaces.
 #pragma once
 
 #include "core/texture.h"
@@ -14,6 +15,14 @@ CANDELA_HDI Vec3 surfaceColor(const SceneView& scene, const Material& m, const H
   if (m.colorTexture.index < 0) return m.color;
   const Vec2 uv = surfaceUv(scene, hit, sp);
   return m.color * lookupTexture(scene.texturePool(), m.colorTexture, uv.x, uv.y).rgb;
+}
+
+// The roughness of m at the point: `roughness`, or its texture's luminance there (at most 1).
+CANDELA_HDI float surfaceRoughness(const SceneView& scene, const Material& m, const Hit& hit,
+                                   const SurfacePoint& sp) {
+  if (m.roughnessTexture.index < 0) return m.roughness;
+  const Vec2 uv = surfaceUv(scene, hit, sp);
+  return minf(lookupTextureLuminance(scene.texturePool(), m.roughnessTexture, uv.x, uv.y), 1.0f);
 }
 
 // The radiance an emissive material with an emission texture emits at texture coordinates uv.
