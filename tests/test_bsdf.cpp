@@ -11,6 +11,7 @@
 
 #include "render/bsdf.h"
 #include "render/material_prepare.h"
+#include "untextured_bsdf.h"
 
 namespace candela {
 namespace {
@@ -84,7 +85,7 @@ std::vector<Case> cases() {
   };
 }
 
-Bsdf bsdfOf(const Case& c) { return makeBsdf(c.material, c.material.color, c.wo, c.ng, c.ng); }
+Bsdf bsdfOf(const Case& c) { return untexturedBsdf(c.material, c.wo, c.ng, c.ng); }
 
 // The chi-square statistic's tail as a standard normal deviate (Wilson-Hilferty).
 double chiSquareZ(double chi2, int dof) {
@@ -165,11 +166,9 @@ TEST(Bsdf, IsReciprocal) {
       const Vec3 wi = direction(transmit ? -uniform(rng) : uniform(rng), 2.0f * kPi * uniform(rng));
       float pdf;
       const Vec3 forward =
-          evalBsdf(makeBsdf(c.material, c.material.color, wo, kUp, kUp), wi, &pdf) /
-          std::fabs(wi.z);
+          evalBsdf(untexturedBsdf(c.material, wo, kUp, kUp), wi, &pdf) / std::fabs(wi.z);
       const Vec3 backward =
-          evalBsdf(makeBsdf(c.material, c.material.color, wi, kUp, kUp), wo, &pdf) /
-          std::fabs(wo.z);
+          evalBsdf(untexturedBsdf(c.material, wi, kUp, kUp), wo, &pdf) / std::fabs(wo.z);
       // wo outside (index 1), wi inside (index ior) when transmitting.
       const float scale = transmit ? c.material.ior * c.material.ior : 1.0f;
       for (int a = 0; a < 3; ++a)
@@ -182,7 +181,7 @@ TEST(Bsdf, IsReciprocal) {
 
 // Albedo: the mean sample weight, with the 1 / eta^2 of transmissions taken out.
 Vec3 albedo(const Material& m, const Vec3& wo, int samples) {
-  const Bsdf b = makeBsdf(m, m.color, wo, kUp, kUp);
+  const Bsdf b = untexturedBsdf(m, wo, kUp, kUp);
   std::mt19937 rng(9);
   std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
   Vec3 sum(0.0f);
@@ -228,7 +227,7 @@ TEST(Bsdf, RoughGlassOfIndexOneIsPreparedSmooth) {
   EXPECT_FALSE(hasSmoothLobe(clear));
   const Vec3 wo = direction(0.6f, 0.7f);
   BsdfSample s;
-  ASSERT_TRUE(sampleBsdf(makeBsdf(clear, clear.color, wo, kUp, kUp), 0.5f, 0.5f, 0.5f, &s));
+  ASSERT_TRUE(sampleBsdf(untexturedBsdf(clear, wo, kUp, kUp), 0.5f, 0.5f, 0.5f, &s));
   EXPECT_NEAR(s.wi.x, -wo.x, 1e-6f);
   EXPECT_NEAR(s.wi.z, -wo.z, 1e-6f);
   EXPECT_NEAR(s.weight.x, 1.0f, 1e-6f);

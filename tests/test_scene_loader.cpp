@@ -238,9 +238,11 @@ TEST_F(SceneLoader, BadRoughMaterialsAreRefused) {
             "s.json: materials.m.roughness: expected a roughness in [0, 1], got 1.5");
   EXPECT_EQ(errorWith(R"("materials": {"m": {"type": "glass", "roughness": -0.1}})"),
             "s.json: materials.m.roughness: expected a roughness in [0, 1], got -0.1");
-  EXPECT_EQ(errorWith(R"("materials": {"m": {"type": "plastic", "roughness": "rough"}})"),
-            "s.json: materials.m.roughness: expected a roughness in [0, 1], got a string "
-            "\"rough\"");
+  EXPECT_EQ(
+      errorWith(R"("materials": {"m": {"type": "plastic", "roughness": "rough"}})"),
+      "s.json: materials.m.roughness: expected a roughness in [0, 1] or a texture object, got a "
+      "string "
+      "\"rough\"");
   EXPECT_EQ(errorWith(R"("materials": {"m": {"type": "conductor", "metal": "Gold"}})"),
             "s.json: materials.m.metal: expected one of \"Ag\", \"Al\", \"Au\", \"Cr\", "
             "\"Cu\", got a string \"Gold\"");

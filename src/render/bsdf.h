@@ -18,6 +18,7 @@
 #include "render/bsdf_plastic.h"
 #include "render/bsdf_sample.h"
 #include "render/material.h"
+#include "render/scene_view.h"
 
 namespace candela {
 
@@ -34,6 +35,8 @@ CANDELA_HDI Vec3 facingNormal(const Vec3& wo, const Vec3& ng, const Vec3& ns) {
 struct Bsdf {
   const Material* material;
   Vec3 color;   // the material's colour at this point (textures resolved)
+  float alpha;  // conductor, glass, plastic: the microfacets' alpha at this point
+  PlasticCoat coat;  // plastic: its coat at this point
   Frame frame;  // +z: the shading normal on wo's side
   Vec3 ng;
   float side;  // +1 when wo lies on ng's side (outside), else -1
@@ -41,13 +44,27 @@ struct Bsdf {
   float eta;   // glass: eta_t / eta_i for light leaving towards wo's side
 };
 
-CANDELA_HDI Bsdf makeBsdf(const Material& m, const Vec3& color, const Vec3& wo, const Vec3& ng,
-                          const Vec3& ns) {
+// The BSDF of material m at a point of colour `color` and roughness `roughness` (its textures'
+// there: render/surface_color.h), seen from wo.
+CANDELA_HDI Bsdf makeBsdf(const SceneView& scene, const Material& m, const Vec3& color,
+                          float roughness, const Vec3& wo, const Vec3& ng, const Vec3& ns) {
   const float side = sideOf(wo, ng);
   const Frame frame(facingNormal(wo, ng, ns));
   // A diffuse surface, the most common, never reads wo.
-  const Vec3 woLocal = m.type == MaterialType::Diffuse ? Vec3(0.0f) : frame.toLocal(wo);
-  return {&m, color, frame, ng, side, woLocal, side > 0.0f ? m.ior : 1.0f / m.ior};
+  if (m.type == MaterialType::Diffuse)
+    return {&m, color, 0.0f, PlasticCoat(), frame, ng, side, Vec3(0.0f), 1.0f};
+  const PlasticCoat coat = m.type == MaterialType::Plastic
+                               ? plasticCoatAt(m, scene.plasticCoats, roughness)
+                               : PlasticCoat();
+  return {&m,
+          color,
+          pointAlpha(m, roughness),
+          coat,
+          frame,
+          ng,
+          side,
+          frame.toLocal(wo),
+          side > 0.0f ? m.ior : 1.0f / m.ior};
 }
 
 // Whether some lobe has a density (next-event estimation and MIS apply), rather than only mirror
@@ -98,11 +115,11 @@ CANDELA_HD_NOINLINE inline Vec3 evalNonDiffuse(const Bsdf& b, const Vec3& wi, fl
   const Material& m = *b.material;
   switch (m.type) {
     case MaterialType::Conductor:
-      return conductorEvalPdf(m, b.color, b.wo, wi, pdf);
+      return conductorEvalPdf(m, b.color, b.alpha, b.wo, wi, pdf);
     case MaterialType::Glass:
-      return dielectricEvalPdf(m, b.color, b.eta, b.wo, wi, pdf);
+      return dielectricEvalPdf(b.color, b.alpha, b.eta, b.wo, wi, pdf);
     case MaterialType::Plastic:
-      return plasticEvalPdf(m, b.color, b.wo, wi, pdf);
+      return plasticEvalPdf(m, b.coat, b.alpha, b.color, b.wo, wi, pdf);
     case MaterialType::Diffuse:
     case MaterialType::Emissive:
       break;
@@ -149,11 +166,11 @@ CANDELA_HD_NOINLINE inline bool sampleNonDiffuse(const Bsdf& b, float uc, float 
   const Material& m = *b.material;
   switch (m.type) {
     case MaterialType::Conductor:
-      return conductorSample(m, b.color, b.wo, u1, u2, s);
+      return conductorSample(m, b.color, b.alpha, b.wo, u1, u2, s);
     case MaterialType::Glass:
-      return dielectricSample(m, b.color, b.eta, b.wo, uc, u1, u2, s);
+      return dielectricSample(b.color, b.alpha, b.eta, b.wo, uc, u1, u2, s);
     case MaterialType::Plastic:
-      return plasticSample(m, b.color, b.wo, uc, u1, u2, s);
+      return plasticSample(m, b.coat, b.alpha, b.color, b.wo, uc, u1, u2, s);
     case MaterialType::Diffuse:
     case MaterialType::Emissive:
       break;

@@ -28,10 +28,9 @@ CANDELA_HDI bool dielectricHalfVector(const Vec3& wo, const Vec3& wi, float eta,
 }
 
 // f |cos(wi)| and the pdf of sampling wi, together (they share the half vector).
-CANDELA_HDI Vec3 dielectricEvalPdf(const Material& m, const Vec3& color, float eta, const Vec3& wo,
+CANDELA_HDI Vec3 dielectricEvalPdf(const Vec3& color, float alpha, float eta, const Vec3& wo,
                                    const Vec3& wi, float* pdf) {
   *pdf = 0.0f;
-  const float alpha = roughnessToAlpha(m.roughness);
   Vec3 wm;
   float etap;
   if (alpha < kSmoothAlpha || !dielectricHalfVector(wo, wi, eta, &wm, &etap)) return Vec3(0.0f);
@@ -74,10 +73,9 @@ CANDELA_HDI bool smoothDielectricBothLobes(const Vec3& color, float eta, const V
 }
 
 // uc picks reflection or refraction of a rough surface; a smooth one picks with u1.
-CANDELA_HDI bool dielectricSample(const Material& m, const Vec3& color, float eta, const Vec3& wo,
+CANDELA_HDI bool dielectricSample(const Vec3& color, float alpha, float eta, const Vec3& wo,
                                   float uc, float u1, float u2, BsdfSample* s) {
   if (wo.z <= 0.0f) return false;
-  const float alpha = roughnessToAlpha(m.roughness);
   if (alpha < kSmoothAlpha) {
     const float reflectance = fresnelDielectric(wo.z, eta);
     s->pdf = 0.0f;
@@ -104,7 +102,7 @@ CANDELA_HDI bool dielectricSample(const Material& m, const Vec3& color, float et
     if (!refract(wo, wm, eta, &s->wi) || s->wi.z >= 0.0f) return false;
     s->eta = eta;
   }
-  const Vec3 f = dielectricEvalPdf(m, color, eta, wo, s->wi, &s->pdf);
+  const Vec3 f = dielectricEvalPdf(color, alpha, eta, wo, s->wi, &s->pdf);
   if (!(s->pdf > 0.0f)) return false;
   s->weight = f / s->pdf;
   s->delta = false;

@@ -3,7 +3,8 @@
 // nonlinear = false. Light that enters the coat, scatters diffusely and leaves again is weighted
 // by the coat's transmittance on both ways, 1 / eta^2 for the change of solid angle, and
 // 1 / (1 - R_int) for its repeated internal reflections (render/material_prepare.h computes R_int
-// and the rough coat's transmittance table). Local shading frame of render/bsdf.h, wo.z > 0.
+// and the rough coat's transmittance table, a table per roughness level where a texture gives
+// the roughness). Local shading frame of render/bsdf.h, wo.z > 0.
 #pragma once
 
 #include "core/sampling.h"
@@ -14,14 +15,60 @@
 
 namespace candela {
 
-// The coat's transmittance at cos(theta): 1 - F for a smooth coat; for a rough one the table
-// of what its BTDF transmits (masking takes some of it, so it is less than 1 - reflectance).
-CANDELA_HDI float plasticTransmittance(const Material& m, float cosTheta) {
-  if (isSmooth(m)) return 1.0f - fresnelDielectric(cosTheta, m.ior);
+// The coat at one point: its transmittance by cos(theta) (a table of kPlasticTableSize, blended
+// with the row after it by `blend` where the roughness is textured) and its internal
+// reflectance.
+struct PlasticCoat {
+  const float* transmittance = nullptr;
+  float blend = 0.0f;
+  float internalReflectance = 0.0f;
+};
+
+// The roughness of level `level` of a textured plastic's coat table: from the smoothest rough
+// surface to 1, denser at the smooth end, where a grazing ray's transmittance changes fastest.
+CANDELA_HDI float plasticCoatLevelRoughness(uint32_t level) {
+  const float lowest = smoothestRoughRoughness();
+  const float t = float(level) / float(kPlasticCoatLevels - 1);
+  return lowest + (1.0f - lowest) * t * t;
+}
+
+// m's coat at a point of roughness `roughness` (render/surface_color.h); coatTables is
+// SceneView::plasticCoats, which a textured roughness reads between its two nearest levels.
+CANDELA_HDI PlasticCoat plasticCoatAt(const Material& m, const float* coatTables, float roughness) {
+  PlasticCoat coat;
+  if (m.plasticCoatTable < 0) {
+    coat.transmittance = m.plasticTransmittance;
+    coat.internalReflectance = m.plasticInternalReflectance;
+    return coat;
+  }
+  const float lowest = smoothestRoughRoughness();
+  const float x = sqrtf((minf(maxf(roughness, lowest), 1.0f) - lowest) / (1.0f - lowest)) *
+                  float(kPlasticCoatLevels - 1);
+  const uint32_t level = x < float(kPlasticCoatLevels - 2) ? uint32_t(x) : kPlasticCoatLevels - 2;
+  coat.blend = x - float(level);
+  coat.transmittance = coatTables + m.plasticCoatTable + level * kPlasticCoatRow;
+  const float* internal = coat.transmittance + kPlasticTableSize;
+  coat.internalReflectance =
+      (1.0f - coat.blend) * internal[0] + coat.blend * internal[kPlasticCoatRow];
+  return coat;
+}
+
+// Linear interpolation in a transmittance table at cos(theta).
+CANDELA_HDI float coatTableAt(const float* table, float cosTheta) {
   const float x = minf(maxf(cosTheta, 0.0f), 1.0f) * float(kPlasticTableSize - 1);
   const uint32_t i = x < float(kPlasticTableSize - 2) ? uint32_t(x) : kPlasticTableSize - 2;
   const float w = x - float(i);
-  return (1.0f - w) * m.plasticTransmittance[i] + w * m.plasticTransmittance[i + 1];
+  return (1.0f - w) * table[i] + w * table[i + 1];
+}
+
+// The coat's transmittance at cos(theta): 1 - F for a smooth coat; for a rough one the table
+// of what its BTDF transmits (masking takes some of it, so it is less than 1 - reflectance).
+CANDELA_HDI float plasticTransmittance(const Material& m, const PlasticCoat& coat, float cosTheta) {
+  if (isSmooth(m)) return 1.0f - fresnelDielectric(cosTheta, m.ior);
+  const float t = coatTableAt(coat.transmittance, cosTheta);
+  if (coat.blend == 0.0f) return t;
+  return (1.0f - coat.blend) * t +
+         coat.blend * coatTableAt(coat.transmittance + kPlasticCoatRow, cosTheta);
 }
 
 // Probability of sampling the coat's reflection rather than the base (Mitsuba's choice: the
@@ -34,36 +81,37 @@ CANDELA_HDI float plasticCoatProbability(const Vec3& color, float transmittanceO
 }
 
 // plasticEvalPdf given wo's transmittance `to` and the coat's sampling probability.
-CANDELA_HDI Vec3 plasticEvalPdfAt(const Material& m, const Vec3& color, const Vec3& wo,
-                                  const Vec3& wi, float to, float coatProbability, float* pdf) {
+CANDELA_HDI Vec3 plasticEvalPdfAt(const Material& m, const PlasticCoat& coat, float alpha,
+                                  const Vec3& color, const Vec3& wo, const Vec3& wi, float to,
+                                  float coatProbability, float* pdf) {
   *pdf = 0.0f;
   if (wo.z <= 0.0f || wi.z <= 0.0f) return Vec3(0.0f);
-  const float ti = plasticTransmittance(m, wi.z);
+  const float ti = plasticTransmittance(m, coat, wi.z);
   const Vec3 base =
-      color * (kInvPi * wi.z * to * ti / (m.ior * m.ior * (1.0f - m.plasticInternalReflectance)));
+      color * (kInvPi * wi.z * to * ti / (m.ior * m.ior * (1.0f - coat.internalReflectance)));
   *pdf = (1.0f - coatProbability) * cosineHemispherePdf(wi.z);
-  const float alpha = roughnessToAlpha(m.roughness);
   if (alpha < kSmoothAlpha) return base;
   const Vec3 h = normalize(wo + wi);
   const float d = ggxD(h, alpha), g1o = ggxG1(wo, h, alpha);
   *pdf += coatProbability * g1o * d / (4.0f * wo.z);
-  const float coat =
+  const float reflected =
       fresnelDielectric(dot(wo, h), m.ior) * d * (g1o * ggxG1(wi, h, alpha)) / (4.0f * wo.z);
-  return base + Vec3(coat);
+  return base + Vec3(reflected);
 }
 
 // The smooth part (base, and a rough coat's reflection): f |cos(wi)| and its pdf.
-CANDELA_HDI Vec3 plasticEvalPdf(const Material& m, const Vec3& color, const Vec3& wo,
-                                const Vec3& wi, float* pdf) {
-  const float to = wo.z > 0.0f ? plasticTransmittance(m, wo.z) : 0.0f;
-  return plasticEvalPdfAt(m, color, wo, wi, to, plasticCoatProbability(color, to), pdf);
+CANDELA_HDI Vec3 plasticEvalPdf(const Material& m, const PlasticCoat& coat, float alpha,
+                                const Vec3& color, const Vec3& wo, const Vec3& wi, float* pdf) {
+  const float to = wo.z > 0.0f ? plasticTransmittance(m, coat, wo.z) : 0.0f;
+  return plasticEvalPdfAt(m, coat, alpha, color, wo, wi, to, plasticCoatProbability(color, to),
+                          pdf);
 }
 
-CANDELA_HDI bool plasticSample(const Material& m, const Vec3& color, const Vec3& wo, float uc,
-                               float u1, float u2, BsdfSample* s) {
+CANDELA_HDI bool plasticSample(const Material& m, const PlasticCoat& coat, float alpha,
+                               const Vec3& color, const Vec3& wo, float uc, float u1, float u2,
+                               BsdfSample* s) {
   if (wo.z <= 0.0f) return false;
-  const float alpha = roughnessToAlpha(m.roughness);
-  const float to = plasticTransmittance(m, wo.z);
+  const float to = plasticTransmittance(m, coat, wo.z);
   const float coatProbability = plasticCoatProbability(color, to);
   if (uc < coatProbability) {
     if (alpha < kSmoothAlpha) {
@@ -77,7 +125,7 @@ CANDELA_HDI bool plasticSample(const Material& m, const Vec3& color, const Vec3&
   } else {
     s->wi = sampleCosineHemisphere(u1, u2);
   }
-  const Vec3 f = plasticEvalPdfAt(m, color, wo, s->wi, to, coatProbability, &s->pdf);
+  const Vec3 f = plasticEvalPdfAt(m, coat, alpha, color, wo, s->wi, to, coatProbability, &s->pdf);
   if (!(s->pdf > 0.0f)) return false;
   s->weight = f / s->pdf;
   s->delta = false;

@@ -273,7 +273,8 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
   const Vec3 color = surfaceColor(scene, m, hit, sp);
   if constexpr (kAovs)
     if (albedoHere) first->albedo = aovAlbedo(m, color);
-  const Bsdf bsdf = makeBsdf(m, color, wo, sp.ng, sp.ns);
+  const Bsdf bsdf =
+      makeBsdf(scene, m, color, surfaceRoughness(scene, m, hit, sp), wo, sp.ng, sp.ns);
   const Vec3 hemisphere = reflectingHemisphere(bsdf);
   const bool smooth = hasSmoothLobe(m);
   float arrivalPdf = 0.0f;

@@ -43,6 +43,7 @@ namespace candela {
 struct LightVertex {
   SurfacePoint sp;
   Vec3 color;    // the surface's colour there (textures included)
+  float roughness = 0.0f;  // and its roughness
   Vec3 toLight;  // unit direction from sp.p to the light (its point L where it has a surface)
   // What the light sends to the vertex over the density of the subpath up to it, less the
   // geometry term between the two: a point light's power over its pick; a surface's radiance at
@@ -188,6 +189,7 @@ CANDELA_HDI void traceLightVertex(const SceneView& scene, const Tracer& tracer, 
   if (m.normalMap.index >= 0) sp.ns = mappedNormal(scene, m, hit, sp, -ray.direction);
   lv->sp = sp;
   lv->color = surfaceColor(scene, m, hit, sp);
+  lv->roughness = surfaceRoughness(scene, m, hit, sp);
   lv->toLight = -ray.direction;
   lv->light = index;
   lv->area = area;
@@ -232,7 +234,7 @@ CANDELA_HDI void connectLightVertex(const SceneView& scene, LightVertex* vertex,
   const Vec3 fHere = evalBsdf(bsdf, wi, &pdfHere);
   if (isBlack(fHere)) return;
   const Material& m = scene.materials[lv.sp.material];
-  const Bsdf there = makeBsdf(m, lv.color, -wi, lv.sp.ng, lv.sp.ns);
+  const Bsdf there = makeBsdf(scene, m, lv.color, lv.roughness, -wi, lv.sp.ng, lv.sp.ns);
   float pdfThere;
   const Vec3 fThere = evalBsdf(there, lv.toLight, &pdfThere);
   const float cosIn = fabsf(dot(lv.sp.ng, lv.toLight)), cosOut = fabsf(dot(lv.sp.ng, wi));

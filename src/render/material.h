@@ -26,9 +26,9 @@ enum class MaterialType : uint32_t {
 constexpr uint32_t kPlasticTableSize = 64;
 // A plastic whose roughness is textured has a table per roughness level instead (SceneView::
 // plasticCoats): kPlasticCoatLevels rows from the smoothest rough surface (alpha kSmoothAlpha) to
-// roughness 1, evenly in roughness, each its transmittance table and then its internal
-// reflectance.
-constexpr uint32_t kPlasticCoatLevels = 16;
+// roughness 1 (render/bsdf_plastic.h, plasticCoatLevelRoughness), each its transmittance table
+// and then its internal reflectance.
+constexpr uint32_t kPlasticCoatLevels = 32;
 constexpr uint32_t kPlasticCoatRow = kPlasticTableSize + 1;
 
 struct Material {

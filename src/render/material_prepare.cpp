@@ -6,7 +6,9 @@
 #include <map>
 #include <mutex>
 #include <utility>
+#include <vector>
 
+#include "render/bsdf_plastic.h"
 #include "render/fresnel.h"
 #include "render/microfacet.h"
 
@@ -73,13 +75,28 @@ RoughCoat roughCoat(float eta, float alpha) {
   return coat;
 }
 
+// roughCoat, computed once per (eta, alpha): a tenth of a second each, and an MTL file of many
+// glossy materials shares a few coatings.
+RoughCoat sharedRoughCoat(float eta, float alpha) {
+  static std::mutex mutex;
+  static std::map<std::pair<float, float>, RoughCoat> coats;
+  std::lock_guard<std::mutex> lock(mutex);
+  auto found = coats.find({eta, alpha});
+  if (found == coats.end())
+    found = coats.emplace(std::make_pair(eta, alpha), roughCoat(eta, alpha)).first;
+  return found->second;
+}
+
 }  // namespace
 
 void prepareMaterial(Material* m) {
   // Glass of index 1 bends no ray, whatever its facets: each refracts wo to -wo with F = 0, a
   // delta transmission that the microfacet lobe cannot hold (its half vector wo + wi vanishes,
   // so every path through it ended black). As pbrt-v4's DielectricBxDF, it is smooth glass.
-  if (m->type == MaterialType::Glass && m->ior == 1.0f) m->roughness = 0.0f;
+  if (m->type == MaterialType::Glass && m->ior == 1.0f) {
+    m->roughness = 0.0f;
+    m->roughnessTexture = TextureRef();
+  }
   if (m->type != MaterialType::Plastic) return;
   const float alpha = roughnessToAlpha(m->roughness);
   const float eta = m->ior;
@@ -95,16 +112,22 @@ void prepareMaterial(Material* m) {
     m->plasticInternalReflectance = float(sum / kIntervals);
     return;
   }
-  // A tenth of a second each: an MTL file of many glossy materials shares a few coatings.
-  static std::mutex mutex;
-  static std::map<std::pair<float, float>, RoughCoat> coats;
-  std::lock_guard<std::mutex> lock(mutex);
-  auto found = coats.find({eta, alpha});
-  if (found == coats.end())
-    found = coats.emplace(std::make_pair(eta, alpha), roughCoat(eta, alpha)).first;
-  std::copy(found->second.transmittance, found->second.transmittance + kPlasticTableSize,
-            m->plasticTransmittance);
-  m->plasticInternalReflectance = found->second.internalReflectance;
+  const RoughCoat coat = sharedRoughCoat(eta, alpha);
+  std::copy(coat.transmittance, coat.transmittance + kPlasticTableSize, m->plasticTransmittance);
+  m->plasticInternalReflectance = coat.internalReflectance;
+}
+
+std::vector<float> plasticCoatTable(float eta) {
+  std::vector<float> table(kPlasticCoatLevels * kPlasticCoatRow);
+  for (uint32_t level = 0; level < kPlasticCoatLevels; ++level) {
+    const float roughness = plasticCoatLevelRoughness(level);
+    const RoughCoat coat =
+        sharedRoughCoat(eta, std::max(roughnessToAlpha(roughness), kSmoothAlpha));
+    float* row = table.data() + level * kPlasticCoatRow;
+    std::copy(coat.transmittance, coat.transmittance + kPlasticTableSize, row);
+    row[kPlasticTableSize] = coat.internalReflectance;
+  }
+  return table;
 }
 
 }  // namespace candela

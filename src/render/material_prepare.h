@@ -3,12 +3,19 @@
 // in place of rough glass of index 1.
 #pragma once
 
+#include <vector>
+
 #include "render/material.h"
 
 namespace candela {
 
 // Fills m's derived fields from its type, ior and roughness. Idempotent.
 void prepareMaterial(Material* m);
+
+// The coat rows of a plastic of index eta whose roughness is textured (Material::
+// plasticCoatTable): for each of kPlasticCoatLevels roughness levels (plasticCoatLevelRoughness),
+// its transmittance table and its internal reflectance.
+std::vector<float> plasticCoatTable(float eta);
 
 // The share of light arriving at cos(theta) = mu that a GGX dielectric coating (relative index
 // eta, alpha >= kSmoothAlpha) reflects, and the share it transmits, in single scattering (the

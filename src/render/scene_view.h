@@ -32,6 +32,8 @@ namespace candela {
 // lightPathOrder lists the lights in the order their light-subpath picks are laid out over
 // [0, 1) (render/light_path.h, pickLightPathLight). infiniteLights lists the lights at infinity
 // that next-event estimation picks, each in a share of its own (render/light_selection.h).
+// plasticCoats holds the coat tables of the plastics whose roughness is textured
+// (render/bsdf_plastic.h, Material::plasticCoatTable).
 #define CANDELA_SHADING_ARRAYS(X)                                            \
   X(Material, materials, materialCount, Values)                              \
   X(Light, lights, lightCount, Values)                                       \
@@ -44,7 +46,8 @@ namespace candela {
   X(float, envCellCorners, envCellCornerCount, EnvironmentMap)               \
   X(InstanceMotion, materialMotions, materialMotionCount, Values)            \
   X(uint32_t, lightPathOrder, lightPathOrderCount, Values)                   \
-  X(uint32_t, infiniteLights, infiniteLightCount, Values)
+  X(uint32_t, infiniteLights, infiniteLightCount, Values)                    \
+  X(float, plasticCoats, plasticCoatCount, Values)
 
 // Every array of the kernel's scene: SceneData, SceneData::view and the CUDA upload expand
 // this.

@@ -7,6 +7,7 @@
 
 #include "core/rotation.h"
 #include "geometry/bvh_build.h"
+#include "render/material_prepare.h"
 #include "render/scene_change.h"
 #include "scene/camera_resolve.h"
 #include "scene/content_hash.h"
@@ -272,10 +273,26 @@ void addInstances(SceneData& s, const SceneDesc& desc, bool geometry) {
   if (geometry && !s.uvs.empty()) s.uvs.resize(s.positions.size(), Vec2());
 }
 
+// The coat tables of the plastics whose roughness is textured, one per index of refraction.
+void addPlasticCoats(SceneData& s) {
+  std::map<float, int32_t> offsets;
+  for (Material& m : s.materials) {
+    if (m.type != MaterialType::Plastic || m.roughnessTexture.index < 0) continue;
+    auto found = offsets.find(m.ior);
+    if (found == offsets.end()) {
+      found = offsets.emplace(m.ior, int32_t(s.plasticCoats.size())).first;
+      const std::vector<float> table = plasticCoatTable(m.ior);
+      s.plasticCoats.insert(s.plasticCoats.end(), table.begin(), table.end());
+    }
+    m.plasticCoatTable = found->second;
+  }
+}
+
 // Everything but the BVH; mesh vertices and triangles only with `geometry`, the texture pool
 // only with `texturePool`.
 void addContents(SceneData& s, const SceneDesc& desc, bool geometry, bool texturePool) {
   addInstances(s, desc, geometry);
+  addPlasticCoats(s);
   if (texturePool) addTexturePool(s, desc);
   addTextureUses(s);
 
@@ -321,6 +338,7 @@ void refreshSceneValues(SceneData& s, const SceneDesc& desc) {
   PreviousLights previous = takeLights(s);
   s.materials.clear();
   s.materialInstances.clear();
+  s.plasticCoats.clear();
   s.spheres.clear();
   s.alphaMasks.clear();
   addContents(s, desc, false, false);  // the frame's textures are the last frame's (equal keys)

@@ -34,12 +34,17 @@ std::string notUsedBy(size_t type) {
          quoted(kTypeNames[type]) + " material";
 }
 
-float readRoughness(JsonObject& fields) {
+// "roughness" into material->roughness, or its texture into material->roughnessTexture.
+void readRoughness(JsonObject& fields, TextureLoader& textures, Material* material) {
   const std::optional<JsonValue> value = fields.get("roughness");
-  if (!value) return 0.0f;
-  const float roughness = value->number("a roughness in [0, 1]");
+  if (!value) return;
+  if (value->json().is_object()) {
+    material->roughnessTexture = readRoughnessTexture(*value, textures);
+    return;
+  }
+  const float roughness = value->number("a roughness in [0, 1] or a texture object");
   if (!(roughness >= 0.0f && roughness <= 1.0f)) value->failExpected("a roughness in [0, 1]");
-  return roughness;
+  material->roughness = roughness;
 }
 
 void readMetal(const JsonValue& value, Material* material) {
@@ -87,7 +92,7 @@ Material readFields(JsonObject& fields, size_t type, TextureLoader& textures) {
       break;
     case kConductor:
       material.type = MaterialType::Conductor;
-      material.roughness = readRoughness(fields);
+      readRoughness(fields, textures, &material);
       if (std::optional<JsonValue> metal = fields.get("metal")) {
         if (color) fields.fail("give a conductor either \"color\" or \"metal\", not both");
         readMetal(*metal, &material);
@@ -96,7 +101,7 @@ Material readFields(JsonObject& fields, size_t type, TextureLoader& textures) {
     case kGlass:
     case kPlastic:
       material.type = type == kGlass ? MaterialType::Glass : MaterialType::Plastic;
-      material.roughness = readRoughness(fields);
+      readRoughness(fields, textures, &material);
       if (std::optional<JsonValue> ior = fields.get("ior")) material.ior = ior->positiveNumber();
       break;
   }

@@ -27,6 +27,8 @@ struct MtlStatement {
 // The statements of one material that candela reads itself; the last of each kind counts.
 struct MtlTextures {
   std::optional<MtlStatement> mapKd, mapKe, d, tr, mapD, norm;
+  // The PBR extension's roughness: a number, or a texture of them.
+  std::optional<MtlStatement> pr, mapPr;
   // A bump map (`bump`, `map_Bump` or `map_bump`, as written in bumpKeyword): heights, read
   // where the material has no `norm`.
   std::optional<MtlStatement> bump;

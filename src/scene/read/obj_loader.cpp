@@ -134,7 +134,8 @@ float roughnessOfPhongExponent(float ns) {
 // (times map_Ke, Ke 1 where only map_Ke is given) where either is set; else with a Ks that is not
 // black a plastic (colour Kd or map_Kd, index Ni) or, without a diffuse colour, a conductor of
 // reflectance Ks, rough as Ns says; else diffuse with colour Kd (0.8 where the material sets none),
-// times map_Kd when it has one. Alpha is d (or 1 - Tr; d wins when both are given) times map_d's
+// times map_Kd when it has one. A glossy material's roughness is Pr where given, or a texture of
+// them (map_Pr). Alpha is d (or 1 - Tr; d wins when both are given) times map_d's
 // alpha channel (or, for an image without one, its first channel). `norm` is a normal map, and
 // where there is none `bump` (or `map_Bump`) a bump map of heights, -bm its height.
 std::vector<Material> mtlMaterials(const std::vector<tinyobj::material_t>& materials,
@@ -191,6 +192,13 @@ std::vector<Material> mtlMaterials(const std::vector<tinyobj::material_t>& mater
                          "\": expected a finite, non-negative Ns, got " +
                          formatNumber(material.shininess));
       desc.roughness = roughnessOfPhongExponent(material.shininess);
+      if (found != library.statements.end()) {
+        const MtlTextures& s = found->second;
+        if (s.pr) desc.roughness = unitNumber(*s.pr, "Pr");
+        if (s.mapPr)
+          desc.roughnessTexture =
+              mtlTexture(*s.mapPr, "map_Pr", TextureUse::Linear, textures, nullptr);
+      }
       if (isBlack(desc.color) && desc.colorTexture.index < 0) {
         desc.type = MaterialType::Conductor;
         desc.color = specular;

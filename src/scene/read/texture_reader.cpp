@@ -152,4 +152,9 @@ TextureRef readBumpMap(const JsonValue& value, TextureLoader& textures, float* h
   return readTextureObject(value, textures, TextureUse::Linear, expected, height);
 }
 
+TextureRef readRoughnessTexture(const JsonValue& value, TextureLoader& textures) {
+  return readTextureObject(value, textures, TextureUse::Linear,
+                           "a roughness in [0, 1] or a texture object");
+}
+
 }  // namespace candela

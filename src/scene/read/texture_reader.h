@@ -58,4 +58,7 @@ TextureRef readNormalMap(const JsonValue& value, TextureLoader& textures);
 // luminance), and h, the height of a texel of value 1 in scene units (default 1), into *height.
 TextureRef readBumpMap(const JsonValue& value, TextureLoader& textures, float* height);
 
+// A material's "roughness" given as a texture object: its values read linearly (their luminance).
+TextureRef readRoughnessTexture(const JsonValue& value, TextureLoader& textures);
+
 }  // namespace candela
