@@ -40,18 +40,23 @@ def png16(width, height_, rows):
             chunk(b'IDAT', zlib.compress(raw, 9)) + chunk(b'IEND', b''))
 
 
+def write_map(path, size, value):
+    """A size x size 16-bit grey PNG of value(u, v) in [0, 1] at each texel's centre."""
+    rows = []
+    for j in range(size):  # from the image's top row, where v = 1
+        v = 1.0 - (j + 0.5) / size
+        rows.append([round(65535 * value((i + 0.5) / size, v)) for i in range(size)])
+    with open(path, 'wb') as f:
+        f.write(png16(size, size, rows))
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument('out')
     ap.add_argument('--size', type=int, default=256)
     a = ap.parse_args()
-    rows = []
-    for j in range(a.size):  # from the image's top row, where v = 1
-        v = 1.0 - (j + 0.5) / a.size
-        rows.append([round(65535 * height((i + 0.5) / a.size, v)) for i in range(a.size)])
-    with open(a.out, 'wb') as f:
-        f.write(png16(a.size, a.size, rows))
+    write_map(a.out, a.size, height)
     return 0
 
 

@@ -8,12 +8,12 @@ tiles, each polished tile crossed by a wiped smear, as a 16-bit grey PNG (docs/s
 One repeat of the map holds 2 x 2 tiles. Roughness: 0.06 on a polished tile, 0.5 on a honed one,
 blended over a twentieth of a tile at their edges; a smear of roughness 0.3 runs diagonally
 across each polished tile, fading out over its width. Standard library only, like
-make_height_map.py, whose PNG writer it shares.
+make_height_map.py, whose map writer it shares.
 """
 import argparse
 import math
 
-from make_height_map import png16
+from make_height_map import write_map
 
 TILES = 2
 POLISHED, HONED, SMEAR = 0.06, 0.5, 0.3
@@ -49,12 +49,7 @@ def main():
     ap.add_argument('out')
     ap.add_argument('--size', type=int, default=128)
     a = ap.parse_args()
-    rows = []
-    for j in range(a.size):  # from the image's top row, where v = 1
-        v = 1.0 - (j + 0.5) / a.size
-        rows.append([round(65535 * roughness((i + 0.5) / a.size, v)) for i in range(a.size)])
-    with open(a.out, 'wb') as f:
-        f.write(png16(a.size, a.size, rows))
+    write_map(a.out, a.size, roughness)
     return 0
 
 

@@ -20,11 +20,8 @@ import numpy as np
 
 import mitsuba_plane as plane
 
-SUN = [0.2, -1.0, 0.4]
 HEIGHT = 2.0
 SPP = 1024
-VIEWS = {'above': ([0, 5, 0.001], [0, 0, 0], [0, 0, -1]),
-         'from the side': ([-4, 3, 1], [0, 0, 0], [0, 1, 0])}
 
 
 def heights(size=64):
@@ -54,9 +51,7 @@ def main():
             rgb = np.repeat(h[:, :, None], 3, axis=2).astype(np.float32)
             mi.Bitmap(rgb).write(candela_map)
             mi.Bitmap(np.ascontiguousarray(rgb[::-1])).write(mitsuba_map)
-            for name, view in VIEWS.items():
-                c = plane.candela(a.candela, work, view, material, SUN, SPP, True)
-                print(plane.report(f'{map_name}, {name}', c, plane.mitsuba(view, bsdf, SUN, SPP)))
+            plane.compare_views(a.candela, work, map_name, material, bsdf, SPP)
     return 0
 
 

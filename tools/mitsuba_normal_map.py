@@ -21,7 +21,7 @@ import numpy as np
 import mitsuba_plane as plane
 
 TEXEL = [230, 128, 170]  # the map's normal tilts 67 degrees towards +u
-SUN = [0.2, -1.0, 0.4]
+SUN = plane.SUN
 VIEWS = {'above': ([0, 5, 0.001], [0, 0, 0], [0, 0, -1]),
          'low, tilted away': ([-5, 2.5, 0], [0, 0, 0], [0, 1, 0])}
 

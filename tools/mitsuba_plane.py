@@ -12,6 +12,10 @@ import numpy as np
 
 SIZE = (48, 32)
 FOV = 50
+SUN = [0.2, -1.0, 0.4]
+# (origin, target, up) of each view the tools render the plane from.
+VIEWS = {'above': ([0, 5, 0.001], [0, 0, 0], [0, 0, -1]),
+         'from the side': ([-4, 3, 1], [0, 0, 0], [0, 1, 0])}
 
 
 def parse_args(doc):
@@ -72,3 +76,11 @@ def report(name, c, m):
     ratio = c[both] / m[both]
     return (f'{name}: {both.sum()} pixels, candela / Mitsuba median {np.median(ratio):.7f}, '
             f'5th-95th percentile {np.percentile(ratio, 5):.7f}-{np.percentile(ratio, 95):.7f}')
+
+
+def compare_views(binary, work, label, material, bsdf, spp):
+    """Renders the plane of `material` (candela) and `bsdf` (Mitsuba) under SUN from each of VIEWS
+    at spp samples a pixel, antialiased, and prints a report line for each."""
+    for name, view in VIEWS.items():
+        c = candela(binary, work, view, material, SUN, spp, True)
+        print(report(f'{label}, {name}', c, mitsuba(view, bsdf, SUN, spp)), flush=True)

@@ -23,10 +23,7 @@ import numpy as np
 
 import mitsuba_plane as plane
 
-SUN = [0.2, -1.0, 0.4]
 SPP = 1024
-VIEWS = {'above': ([0, 5, 0.001], [0, 0, 0], [0, 0, -1]),
-         'from the side': ([-4, 3, 1], [0, 0, 0], [0, 1, 0])}
 
 
 def roughness_maps(size=64):
@@ -61,10 +58,7 @@ def main():
             mi.Bitmap(rgb).write(candela_map)
             mi.Bitmap(np.ascontiguousarray((rgb * rgb)[::-1])).write(mitsuba_map)
             for name, material, bsdf in materials(candela_map, mitsuba_map):
-                for view_name, view in VIEWS.items():
-                    c = plane.candela(a.candela, work, view, material, SUN, SPP, True)
-                    m = plane.mitsuba(view, bsdf, SUN, SPP)
-                    print(plane.report(f'{name}, {map_name}, {view_name}', c, m), flush=True)
+                plane.compare_views(a.candela, work, f'{name}, {map_name}', material, bsdf, SPP)
     return 0
 
 
