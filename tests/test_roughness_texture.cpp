@@ -169,8 +169,41 @@ TEST(RoughnessTexture, ThePlasticsCoatTablesInterpolateTheQuadrature) {
   }
 }
 
+// A colour map's roughness is its luminance, or the channel "channel" names (glTF packs roughness
+// into G): a map whose channels hold three roughnesses renders as each.
+TEST(RoughnessTexture, AChannelOfAColourMapIsTheRoughness) {
+  const fs::path dir = test::mapTestFolder("roughness_channel");
+  test::writeMappedPlane(dir / "plane.obj");
+  {
+    std::ofstream pfm(dir / "rgb.pfm", std::ios::binary);
+    pfm << "PF\n2 1\n-1\n";
+    const float texel[3] = {0.1f, 0.45f, 0.8f};
+    for (int i = 0; i < 2; ++i) pfm.write(reinterpret_cast<const char*>(texel), sizeof texel);
+  }
+  const std::string metal = R"({"type": "conductor", "metal": "Ag", "roughness": )";
+  const float luminance = 0.212671f * 0.1f + 0.715160f * 0.45f + 0.072169f * 0.8f;
+  for (const auto& [channel, roughness] : {std::pair<std::string, float>{"", luminance},
+                                           {R"(, "channel": "luminance")", luminance},
+                                           {R"(, "channel": "r")", 0.1f},
+                                           {R"(, "channel": "g")", 0.45f},
+                                           {R"(, "channel": "b")", 0.8f}}) {
+    SCOPED_TRACE(channel);
+    const std::vector<float> plain = planeImage(dir, metal + num(roughness) + "}");
+    const std::vector<float> mapped =
+        planeImage(dir, metal + R"({"texture": "rgb.pfm")" + channel + "}}");
+    for (size_t i = 0; i < plain.size(); ++i)
+      ASSERT_NEAR(mapped[i], plain[i], 1e-5f * plain[i] + 1e-7f) << "pixel " << i;
+  }
+  EXPECT_EQ(
+      test::materialError(
+          dir, R"({"type": "conductor", "roughness": {"texture": "rgb.pfm", "channel": "G"}})"),
+      "s.json: materials.m.roughness.channel: expected one of \"r\", \"g\", \"b\", \"a\", "
+      "\"luminance\", got a string \"G\", did you mean \"g\"?");
+}
+
 // MTL: Pr is a glossy material's roughness (in place of Ns's), map_Pr a texture of them, read
-// linearly; a Pr outside [0, 1] is refused with its line.
+// linearly, -imfchan its channel; a Pr outside [0, 1] is refused with its line, and so are
+// channels and options map_Pr cannot have.
 TEST(RoughnessTexture, MtlPrAndMapPrSetTheRoughness) {
   const fs::path dir = test::mapTestFolder("roughness_mtl");
   writeRowMap(dir / "r.pfm", {0.3f, 0.3f});
@@ -178,7 +211,8 @@ TEST(RoughnessTexture, MtlPrAndMapPrSetTheRoughness) {
                                   "vt 0 1\nusemtl a\nf 1/1 2/2 3/3\nusemtl b\nf 1/1 2/2 3/3\n"
                                   "usemtl c\nf 1/1 2/2 3/3\n";
   std::ofstream(dir / "m.mtl") << "newmtl a\nKd 0 0 0\nKs 0.9 0.9 0.9\nNs 100\nPr 0.35\n"
-                                  "newmtl b\nKd 0.5 0.5 0.5\nKs 1 1 1\nmap_Pr -s 2 2 r.pfm\n"
+                                  "newmtl b\nKd 0.5 0.5 0.5\nKs 1 1 1\n"
+                                  "map_Pr -imfchan g -s 2 2 r.pfm\n"
                                   "newmtl c\nKd 0.5 0.5 0.5\nPr 0.5\n";
   const std::string json =
       R"({"camera": {"width": 4, "height": 4}, "objects": [{"file": "m.obj"}]})";
@@ -190,18 +224,29 @@ TEST(RoughnessTexture, MtlPrAndMapPrSetTheRoughness) {
   EXPECT_EQ(data.materials[1].type, MaterialType::Plastic);
   EXPECT_GE(data.materials[1].roughnessTexture.index, 0);
   EXPECT_EQ(data.materials[1].roughnessTexture.scaleU, 2.0f);
+  EXPECT_EQ(data.materials[1].roughnessChannel, 1u);
   EXPECT_EQ(data.materials[1].plasticCoatTable, 0);
   EXPECT_EQ(data.plasticCoats.size(), size_t(kPlasticCoatLevels * kPlasticCoatRow));
   EXPECT_EQ(data.materials[2].type, MaterialType::Diffuse);  // no Ks: not glossy
 
-  std::ofstream(dir / "m.mtl") << "newmtl a\nKs 1 1 1\nPr 1.5\n";
-  try {
-    test::loadTestScene(json, dir.string());
-    ADD_FAILURE() << "Pr 1.5 was read";
-  } catch (const SceneError& e) {
-    EXPECT_EQ(std::string(e.what()),
-              "test.json: objects[0].file: m.mtl:3: expected Pr between 0 and 1, got \"1.5\"");
-  }
+  const auto error = [&](const std::string& statement) {
+    std::ofstream(dir / "m.mtl") << "newmtl a\nKs 1 1 1\n" << statement << "\n";
+    try {
+      test::loadTestScene(json, dir.string());
+    } catch (const SceneError& e) {
+      return std::string(e.what());
+    }
+    return std::string("(no error)");
+  };
+  EXPECT_EQ(error("Pr 1.5"),
+            "test.json: objects[0].file: m.mtl:3: expected Pr between 0 and 1, got \"1.5\"");
+  EXPECT_EQ(error("map_Pr -imfchan z r.pfm"),
+            "test.json: objects[0].file: m.mtl:3: map_Pr -imfchan: expected r, g, b, m or l, got "
+            "\"z\"");
+  EXPECT_EQ(error("map_Pr -imfchan l r.pfm"), "(no error)");
+  EXPECT_EQ(error("map_Pr -bm 2 r.pfm"),
+            "test.json: objects[0].file: m.mtl:3: map_Pr option \"-bm\" is not supported (only -s "
+            "and -imfchan)");
 }
 
 TEST(RoughnessTexture, TheSceneFormatRefusesWhatItCannotBe) {
@@ -219,7 +264,7 @@ TEST(RoughnessTexture, TheSceneFormatRefusesWhatItCannotBe) {
                 (dir / "missing.pfm").string() + ": cannot open: No such file or directory");
   EXPECT_EQ(error(R"({"type": "plastic", "roughness": {"texture": "r.pfm", "height": 1}})"),
             "s.json: materials.m.roughness.height: unknown key, expected one of \"texture\", "
-            "\"scale\"");
+            "\"scale\", \"channel\"");
   EXPECT_EQ(error(R"({"type": "plastic", "roughness": [0.1, 0.2]})"),
             "s.json: materials.m.roughness: expected a roughness in [0, 1] or a texture object, "
             "got an array [0.1,0.2]");

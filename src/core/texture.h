@@ -47,6 +47,11 @@ struct TextureSample {
   float alpha = 1;
 };
 
+// The luminance of a texture's colour (a grey image's value), with the bump map's weights.
+CANDELA_HDI float textureLuminance(const Vec3& c) {
+  return 0.212671f * c.x + 0.715160f * c.y + 0.072169f * c.z;
+}
+
 namespace detail {
 
 // Texel (x, y) of `t` (x, y within the image) as linear RGBA, accumulated with weight w.
@@ -98,7 +103,7 @@ CANDELA_HDI float texelLuminance(const TexturePool& pool, const Texture& t, uint
                                  uint32_t y) {
   float c[4] = {0.0f, 0.0f, 0.0f, 0.0f};
   addTexel(pool, t, x, y, 1.0f, c);
-  return 0.212671f * c[0] + 0.715160f * c[1] + 0.072169f * c[2];
+  return textureLuminance(Vec3(c[0], c[1], c[2]));
 }
 
 }  // namespace detail
@@ -115,13 +120,6 @@ CANDELA_HDI TextureSample lookupTexture(const TexturePool& pool, const TextureRe
   detail::addTexel(pool, t, q.x0, q.y1, (1.0f - fx) * fy, sum);
   detail::addTexel(pool, t, q.x1, q.y1, fx * fy, sum);
   return {Vec3(sum[0], sum[1], sum[2]), sum[3]};
-}
-
-// The luminance of lookupTexture's colour (a grey image's value), with the bump map's weights.
-CANDELA_HDI float lookupTextureLuminance(const TexturePool& pool, const TextureRef& ref, float u,
-                                         float v) {
-  const Vec3 c = lookupTexture(pool, ref, u, v).rgb;
-  return 0.212671f * c.x + 0.715160f * c.y + 0.072169f * c.z;
 }
 
 // The derivatives with respect to u and v of the luminance of `ref`'s bilinear lookup at (u, v)

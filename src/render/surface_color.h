@@ -17,12 +17,16 @@ CANDELA_HDI Vec3 surfaceColor(const SceneView& scene, const Material& m, const H
   return m.color * lookupTexture(scene.texturePool(), m.colorTexture, uv.x, uv.y).rgb;
 }
 
-// The roughness of m at the point: `roughness`, or its texture's luminance there (at most 1).
+// The roughness of m at the point: `roughness`, or its texture's luminance or chosen channel
+// there (at most 1).
 CANDELA_HDI float surfaceRoughness(const SceneView& scene, const Material& m, const Hit& hit,
                                    const SurfacePoint& sp) {
   if (m.roughnessTexture.index < 0) return m.roughness;
   const Vec2 uv = surfaceUv(scene, hit, sp);
-  return minf(lookupTextureLuminance(scene.texturePool(), m.roughnessTexture, uv.x, uv.y), 1.0f);
+  const TextureSample t = lookupTexture(scene.texturePool(), m.roughnessTexture, uv.x, uv.y);
+  const uint32_t c = m.roughnessChannel;
+  const float value = c == kLuminanceChannel ? textureLuminance(t.rgb) : c < 3 ? t.rgb[c] : t.alpha;
+  return minf(value, 1.0f);
 }
 
 // The radiance an emissive material with an emission texture emits at texture coordinates uv.

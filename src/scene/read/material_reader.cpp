@@ -39,7 +39,8 @@ void readRoughness(JsonObject& fields, TextureLoader& textures, Material* materi
   const std::optional<JsonValue> value = fields.get("roughness");
   if (!value) return;
   if (value->json().is_object()) {
-    material->roughnessTexture = readRoughnessTexture(*value, textures);
+    material->roughnessTexture =
+        readRoughnessTexture(*value, textures, &material->roughnessChannel);
     return;
   }
   const float roughness = value->number("a roughness in [0, 1] or a texture object");

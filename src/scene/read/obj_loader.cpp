@@ -68,16 +68,32 @@ std::string restOfLine(std::istringstream& in) {
 }
 
 // A texture statement "map_Kd [-s u v [w]] file": its texture, loaded for `use`. The -s scale
-// is honoured (w ignored); with `bumpMultiplier`, a bump map's, so is -bm (into it); other
-// options are refused.
+// is honoured (w ignored); with `bumpMultiplier`, a bump map's, so is -bm (into it); with
+// `channel`, a scalar texture's, so is -imfchan (r, g, b, m for the alpha channel, l for the
+// luminance: Material::roughnessChannel's values, into it); other options are refused.
 TextureRef mtlTexture(const MtlStatement& statement, const char* keyword, TextureUse use,
-                      TextureLoader& textures, bool* hasAlpha, float* bumpMultiplier = nullptr) {
+                      TextureLoader& textures, bool* hasAlpha, float* bumpMultiplier = nullptr,
+                      uint32_t* channel = nullptr) {
   TextureRef ref;
   std::string rest = statement.arguments;
   while (!rest.empty() && rest[0] == '-') {
     std::istringstream in(rest);
     std::string option;
     in >> option;
+    if (option == "-imfchan" && channel) {
+      std::string word;
+      in >> word;
+      const std::string channels = "rgbm";
+      if (word.size() == 1 && channels.find(word[0]) != std::string::npos)
+        *channel = uint32_t(channels.find(word[0]));
+      else if (word == "l")
+        *channel = kLuminanceChannel;
+      else
+        failAt(statement,
+               std::string(keyword) + " -imfchan: expected r, g, b, m or l, got \"" + word + "\"");
+      rest = restOfLine(in);
+      continue;
+    }
     if (option == "-bm" && bumpMultiplier) {
       std::string word;
       in >> word;
@@ -91,7 +107,10 @@ TextureRef mtlTexture(const MtlStatement& statement, const char* keyword, Textur
     }
     if (option != "-s")
       failAt(statement, std::string(keyword) + " option \"" + option +
-                            "\" is not supported (only -s" + (bumpMultiplier ? " and -bm)" : ")"));
+                            "\" is not supported (only -s" +
+                            (bumpMultiplier ? " and -bm)"
+                             : channel      ? " and -imfchan)"
+                                            : ")"));
     float scale[3] = {1.0f, 1.0f, 1.0f};
     int count = 0;
     for (std::string word; count < 3 && in >> word; ++count) {
@@ -196,8 +215,8 @@ std::vector<Material> mtlMaterials(const std::vector<tinyobj::material_t>& mater
         const MtlTextures& s = found->second;
         if (s.pr) desc.roughness = unitNumber(*s.pr, "Pr");
         if (s.mapPr)
-          desc.roughnessTexture =
-              mtlTexture(*s.mapPr, "map_Pr", TextureUse::Linear, textures, nullptr);
+          desc.roughnessTexture = mtlTexture(*s.mapPr, "map_Pr", TextureUse::Linear, textures,
+                                             nullptr, nullptr, &desc.roughnessChannel);
       }
       if (isBlack(desc.color) && desc.colorTexture.index < 0) {
         desc.type = MaterialType::Conductor;

@@ -93,11 +93,14 @@ LoadedTexture TextureLoader::load(const std::string& path, TextureUse use) {
 namespace {
 
 // A texture object {"texture": file, "scale": [su, sv]}, its file read for `use`; with `height`,
-// a bump map's, which may also give "height" (default 1, not 0) into *height.
+// a bump map's, which may also give "height" (default 1, not 0) into *height; with `channel`, a
+// scalar texture's, which may name the channel it is read from ("channel", into *channel).
 TextureRef readTextureObject(const JsonValue& value, TextureLoader& textures, TextureUse use,
-                             const std::string& expected, float* height = nullptr) {
+                             const std::string& expected, float* height = nullptr,
+                             uint32_t* channel = nullptr) {
   std::vector<std::string> known = {"texture", "scale"};
   if (height) known.push_back("height");
+  if (channel) known.push_back("channel");
   JsonObject fields(value, std::move(known), expected);
   const JsonValue file = fields.require("texture");
   const std::string written = file.string();
@@ -121,6 +124,12 @@ TextureRef readTextureObject(const JsonValue& value, TextureLoader& textures, Te
       *height = given->number("a finite, non-zero number");
       if (*height == 0.0f) given->failExpected("a finite, non-zero number");
     }
+  }
+  if (channel) {
+    // In the order of Material::roughnessChannel's values.
+    *channel = kLuminanceChannel;
+    if (std::optional<JsonValue> given = fields.get("channel"))
+      *channel = uint32_t(given->choice({"r", "g", "b", "a", "luminance"}));
   }
   fields.finish();
   try {
@@ -152,9 +161,10 @@ TextureRef readBumpMap(const JsonValue& value, TextureLoader& textures, float* h
   return readTextureObject(value, textures, TextureUse::Linear, expected, height);
 }
 
-TextureRef readRoughnessTexture(const JsonValue& value, TextureLoader& textures) {
+TextureRef readRoughnessTexture(const JsonValue& value, TextureLoader& textures,
+                                uint32_t* channel) {
   return readTextureObject(value, textures, TextureUse::Linear,
-                           "a roughness in [0, 1] or a texture object");
+                           "a roughness in [0, 1] or a texture object", nullptr, channel);
 }
 
 }  // namespace candela

@@ -58,7 +58,9 @@ TextureRef readNormalMap(const JsonValue& value, TextureLoader& textures);
 // luminance), and h, the height of a texel of value 1 in scene units (default 1), into *height.
 TextureRef readBumpMap(const JsonValue& value, TextureLoader& textures, float* height);
 
-// A material's "roughness" given as a texture object: its values read linearly (their luminance).
-TextureRef readRoughnessTexture(const JsonValue& value, TextureLoader& textures);
+// A material's "roughness" given as a texture object: its values read linearly, their luminance
+// or the channel that "channel" names ("r", "g", "b", "a" or "luminance") into *channel
+// (Material::roughnessChannel).
+TextureRef readRoughnessTexture(const JsonValue& value, TextureLoader& textures, uint32_t* channel);
 
 }  // namespace candela
