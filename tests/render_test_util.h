@@ -50,6 +50,16 @@ inline SceneData loadTestScene(const std::string& json, const std::string& baseD
   return flattenScene(parseSceneText(json, "test.json", baseDir));
 }
 
+// The error loading scene `json` from `baseDir` gives (as loadTestScene does), or "(no error)".
+inline std::string loadError(const std::string& json, const std::string& baseDir) {
+  try {
+    loadTestScene(json, baseDir);
+  } catch (const SceneError& e) {
+    return std::string(e.what());
+  }
+  return std::string("(no error)");
+}
+
 inline RenderResult renderTestScene(const std::string& json, int threads = 0,
                                     const std::string& baseDir = ".") {
   const SceneData data = loadTestScene(json, baseDir);

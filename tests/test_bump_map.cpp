@@ -150,12 +150,7 @@ TEST(BumpMap, MtlBumpReadsHeightsWithItsMultiplier) {
 
   const auto error = [&](const std::string& statement) {
     std::ofstream(dir / "m.mtl") << "newmtl a\n" << statement << "\n";
-    try {
-      test::loadTestScene(json, dir.string());
-    } catch (const SceneError& e) {
-      return std::string(e.what());
-    }
-    return std::string("(no error)");
+    return test::loadError(json, dir.string());
   };
   EXPECT_EQ(error("bump -bm 0 h.pfm"),
             "test.json: objects[0].file: m.mtl:2: bump -bm: expected a finite, non-zero "

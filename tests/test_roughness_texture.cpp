@@ -231,12 +231,7 @@ TEST(RoughnessTexture, MtlPrAndMapPrSetTheRoughness) {
 
   const auto error = [&](const std::string& statement) {
     std::ofstream(dir / "m.mtl") << "newmtl a\nKs 1 1 1\n" << statement << "\n";
-    try {
-      test::loadTestScene(json, dir.string());
-    } catch (const SceneError& e) {
-      return std::string(e.what());
-    }
-    return std::string("(no error)");
+    return test::loadError(json, dir.string());
   };
   EXPECT_EQ(error("Pr 1.5"),
             "test.json: objects[0].file: m.mtl:3: expected Pr between 0 and 1, got \"1.5\"");

@@ -50,14 +50,20 @@ def write_map(path, size, value):
         f.write(png16(size, size, rows))
 
 
-def main():
-    ap = argparse.ArgumentParser(description=__doc__,
+def command_line(doc, value, default_size):
+    """A map maker's command line (`doc` its help): writes value's map to the file it names, at
+    --size texels square."""
+    ap = argparse.ArgumentParser(description=doc,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument('out')
-    ap.add_argument('--size', type=int, default=256)
+    ap.add_argument('--size', type=int, default=default_size)
     a = ap.parse_args()
-    write_map(a.out, a.size, height)
+    write_map(a.out, a.size, value)
     return 0
+
+
+def main():
+    return command_line(__doc__, height, 256)
 
 
 if __name__ == '__main__':

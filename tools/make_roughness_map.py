@@ -10,10 +10,9 @@ blended over a twentieth of a tile at their edges; a smear of roughness 0.3 runs
 across each polished tile, fading out over its width. Standard library only, like
 make_height_map.py, whose map writer it shares.
 """
-import argparse
 import math
 
-from make_height_map import write_map
+from make_height_map import command_line
 
 TILES = 2
 POLISHED, HONED, SMEAR = 0.06, 0.5, 0.3
@@ -44,13 +43,7 @@ def roughness(u, v):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__,
-                                 formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument('out')
-    ap.add_argument('--size', type=int, default=128)
-    a = ap.parse_args()
-    write_map(a.out, a.size, roughness)
-    return 0
+    return command_line(__doc__, roughness, 128)
 
 
 if __name__ == '__main__':

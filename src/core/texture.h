@@ -52,6 +52,14 @@ CANDELA_HDI float textureLuminance(const Vec3& c) {
   return 0.212671f * c.x + 0.715160f * c.y + 0.072169f * c.z;
 }
 
+// A scalar read from a texture: channel 0 (R), 1 (G), 2 (B), 3 (A), or kLuminanceChannel.
+constexpr uint32_t kLuminanceChannel = 4;
+
+CANDELA_HDI float textureChannel(const TextureSample& s, uint32_t channel) {
+  if (channel == kLuminanceChannel) return textureLuminance(s.rgb);
+  return channel < 3 ? s.rgb[int(channel)] : s.alpha;
+}
+
 namespace detail {
 
 // Texel (x, y) of `t` (x, y within the image) as linear RGBA, accumulated with weight w.

@@ -16,7 +16,7 @@ namespace candela {
 struct AlphaMask {
   float constant = 1.0f;  // in [0, 1]
   TextureRef texture;     // index -1: none
-  uint32_t channel = 3;   // of the texture: 0 (R) or 3 (A)
+  uint32_t channel = 3;   // of the texture (core/texture.h, textureChannel): 0 (R) or 3 (A)
 };
 
 // Whether a material with this mask is ever anything but opaque.

@@ -39,7 +39,7 @@ CANDELA_HDI float triangleAlpha(const GeometryView& scene, const Triangle& tri, 
   if (mask.texture.index >= 0) {
     const Vec2 uv = triangleUv(scene, tri, b1, b2);
     const TextureSample s = lookupTexture(scene.texturePool(), mask.texture, uv.x, uv.y);
-    alpha *= mask.channel == 3 ? s.alpha : s.rgb.x;
+    alpha *= textureChannel(s, mask.channel);
   }
   return alpha;
 }

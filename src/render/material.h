@@ -31,9 +31,6 @@ constexpr uint32_t kPlasticTableSize = 64;
 constexpr uint32_t kPlasticCoatLevels = 32;
 constexpr uint32_t kPlasticCoatRow = kPlasticTableSize + 1;
 
-// A scalar texture read as its luminance rather than one of its channels.
-constexpr uint32_t kLuminanceChannel = 4;
-
 struct Material {
   MaterialType type = MaterialType::Diffuse;
   // Diffuse albedo, conductor reflectance (tinting the metal's Fresnel when `metal`), glass
@@ -44,8 +41,8 @@ struct Material {
   // Conductor, glass, plastic: a texture whose value (luminance, read linearly) is the roughness
   // in place of `roughness`; the material is then rough everywhere (render/microfacet.h).
   TextureRef roughnessTexture;
-  // Which of the roughness texture's channels is the roughness: 0 R, 1 G, 2 B, 3 A, or
-  // kLuminanceChannel (glTF packs roughness into G, with metalness in B).
+  // Which of the roughness texture's channels is the roughness (core/texture.h, textureChannel;
+  // glTF packs roughness into G, with metalness in B).
   uint32_t roughnessChannel = kLuminanceChannel;
   bool metal = false;      // conductor: Fresnel of the complex index metalEta + i metalK
   Vec3 metalEta{0.0f}, metalK{0.0f};

@@ -75,8 +75,8 @@ RoughCoat roughCoat(float eta, float alpha) {
   return coat;
 }
 
-// roughCoat, computed once per (eta, alpha): a tenth of a second each, and an MTL file of many
-// glossy materials shares a few coatings.
+// roughCoat, computed once per (eta, alpha): an MTL file of many glossy materials shares a few
+// coatings, and a textured plastic's levels serve every textured plastic of its index.
 RoughCoat sharedRoughCoat(float eta, float alpha) {
   static std::mutex mutex;
   static std::map<std::pair<float, float>, RoughCoat> coats;

@@ -24,9 +24,7 @@ CANDELA_HDI float surfaceRoughness(const SceneView& scene, const Material& m, co
   if (m.roughnessTexture.index < 0) return m.roughness;
   const Vec2 uv = surfaceUv(scene, hit, sp);
   const TextureSample t = lookupTexture(scene.texturePool(), m.roughnessTexture, uv.x, uv.y);
-  const uint32_t c = m.roughnessChannel;
-  const float value = c == kLuminanceChannel ? textureLuminance(t.rgb) : c < 3 ? t.rgb[c] : t.alpha;
-  return minf(value, 1.0f);
+  return minf(textureChannel(t, m.roughnessChannel), 1.0f);
 }
 
 // The radiance an emissive material with an emission texture emits at texture coordinates uv.
