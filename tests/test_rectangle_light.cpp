@@ -1,8 +1,10 @@
 // Rectangle lights: a rectangle of uniform radiance P / (pi w h) that shines along its direction
 // (Mitsuba 3's `rectangle` shape with an `area` emitter; Blender's and Kubric's rectangle area
-// lights). Against closed forms: the plane under one, pixel for pixel, is Lambert's irradiance of
-// a polygon; seen from the front it is its radiance, from behind black; its corners follow its
-// aim, up and size. Its pose and flow, its frames' changes, and the scene format's refusals.
+// lights), or P / (2 pi w h) from both sides (pbrt-v4's two-sided diffuse area light). Against
+// closed forms: the plane under one, pixel for pixel, is Lambert's irradiance of a polygon, also
+// from a two-sided one's back; seen from the front it is its radiance, from behind black (or its
+// radiance, two-sided); its corners follow its aim, up and size. Its pose and flow, its frames'
+// changes, and the scene format's refusals.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -41,14 +43,16 @@ D3 d3(const Vec3& v) { return {v.x, v.y, v.z}; }
 struct Rect {
   D3 centre, direction, up;
   double width, height, power;
+  bool twoSided = false;
   std::string json() const {
     return R"({"type": "rectangle", "position": [)" + num(centre.x) + ", " + num(centre.y) + ", " +
            num(centre.z) + R"(], "direction": [)" + num(direction.x) + ", " + num(direction.y) +
            ", " + num(direction.z) + R"(], "up": [)" + num(up.x) + ", " + num(up.y) + ", " +
            num(up.z) + R"(], "size": [)" + num(width) + ", " + num(height) + R"(], "intensity": )" +
-           num(power) + "}";
+           num(power) + (twoSided ? R"(, "two_sided": true})" : "}");
   }
-  double radiance() const { return power / (kPi * width * height); }
+  // Its power spread over one side, or over both.
+  double radiance() const { return power / ((twoSided ? 2 : 1) * kPi * width * height); }
   void corners(D3 out[4]) const {
     const D3 n = unit(direction);
     const D3 v = unit(up - dot(up, n) * n), u = cross(v, n);
@@ -71,13 +75,15 @@ struct Rect {
   }
 };
 
-// The plane y = 0 seen from above through pixel centres, lit only by a slanted rectangle of
-// unequal sides above it, one bounce: every pixel is rho E / pi, E by Lambert's formula, within
-// the noise of two seeds (light paths on or off: the estimate is the same, only its noise differs).
-void expectPlaneUnderTheRectangle(const std::string& lightPaths) {
+// The slanted rectangle of unequal sides that lights the plane below it.
+const Rect kOverThePlane{{0.3, 1.4, -0.2}, {0.3, -1, 0.2}, {1, 0.2, 0.4}, 2.4, 0.5, 40};
+
+// The plane y = 0 seen from above through pixel centres, lit only by `rect` above it, one bounce:
+// every pixel is rho E / pi, E by Lambert's formula, within the noise of two seeds (light paths
+// on or off: the estimate is the same, only its noise differs).
+void expectPlaneUnderTheRectangle(const std::string& lightPaths, const Rect& rect = kOverThePlane) {
   const std::string obj = test::writePlaneObj("rectangle_plane.obj", 100);
   const double rho = 0.7;
-  const Rect rect{{0.3, 1.4, -0.2}, {0.3, -1, 0.2}, {1, 0.2, 0.4}, 2.4, 0.5, 40};
   const std::string scene = R"({
     "camera": {"width": 48, "height": 32, "fov": 100, "position": [0, 1, 0],
                "look_at": [0, 0, 0.001], "up": [0, 0, -1], "spp": 64},
@@ -124,13 +130,26 @@ TEST(RectangleLight, ThePlaneUnderItIsLambertsIrradianceOfAPolygon) {
 
 TEST(RectangleLight, ThePlaneUnderItIsTheSameWithLightPaths) { expectPlaneUnderTheRectangle("on"); }
 
+// Turned to shine up, away from the plane, a two-sided rectangle lights the plane from its back
+// with half its power: every pixel is rho E / pi for the radiance P / (2 pi w h), with and without
+// light subpaths (which start from either side).
+TEST(RectangleLight, TwoSidedItLightsThePlaneFromItsBackWithHalfItsPower) {
+  Rect turned = kOverThePlane;
+  turned.direction = -1.0 * turned.direction;
+  turned.twoSided = true;
+  expectPlaneUnderTheRectangle("off", turned);
+  expectPlaneUnderTheRectangle("on", turned);
+}
+
 // A camera facing a rectangle 2 wide and 1 high at the origin, through pixel centres: from its
 // front (it shines along +z) every pixel within it is its radiance and of its instance, every
-// pixel beside it black; from behind it is black before a grey environment.
-TEST(RectangleLight, SeenFromTheFrontItIsItsRadianceFromBehindBlack) {
+// pixel beside it black; from behind it is black before a grey environment, or, two-sided, its
+// radiance (half the one-sided one's) again.
+void expectRectangleSeenFromBothSides(bool twoSided) {
   const double power = 30;
   const std::string light = R"({"type": "rectangle", "position": [0, 0, 0], "direction": [0, 0, 1],
-                                "size": [2, 1], "intensity": )" +
+                                "size": [2, 1], "two_sided": )" +
+                            std::string(twoSided ? "true" : "false") + R"(, "intensity": )" +
                             num(power) + "}";
   const auto scene = [&](double cameraZ) {
     return R"({"camera": {"width": 40, "height": 30, "fov": 40, "position": [0, 0, )" +
@@ -141,8 +160,9 @@ TEST(RectangleLight, SeenFromTheFrontItIsItsRadianceFromBehindBlack) {
                "lights": [)" +
            light + "]}";
   };
-  const double radiance = power / (kPi * 2 * 1);
+  const double radiance = power / ((twoSided ? 2 : 1) * kPi * 2 * 1);
   for (const double cameraZ : {5.0, -5.0}) {
+    const bool seen = cameraZ > 0 || twoSided;
     const SceneData data = test::loadTestScene(scene(cameraZ));
     RenderOptions options;
     options.aovs = true;
@@ -162,7 +182,7 @@ TEST(RectangleLight, SeenFromTheFrontItIsItsRadianceFromBehindBlack) {
         const float instance = layers[0].pixels[size_t(y) * 40 + x];
         if (margin > 0) {
           ++inside;
-          EXPECT_NEAR(value, cameraZ > 0 ? radiance : 0.0, 1e-6 * radiance) << x << "," << y;
+          EXPECT_NEAR(value, seen ? radiance : 0.0, 1e-6 * radiance) << x << "," << y;
           EXPECT_EQ(instance, 1.0f) << x << "," << y;  // lights[0], the scene's only instance
         } else {
           ++outside;
@@ -173,6 +193,14 @@ TEST(RectangleLight, SeenFromTheFrontItIsItsRadianceFromBehindBlack) {
     EXPECT_GT(inside, 200);
     EXPECT_GT(outside, 200);
   }
+}
+
+TEST(RectangleLight, SeenFromTheFrontItIsItsRadianceFromBehindBlack) {
+  expectRectangleSeenFromBothSides(false);
+}
+
+TEST(RectangleLight, TwoSidedItIsItsRadianceSeenFromEitherSide) {
+  expectRectangleSeenFromBothSides(true);
 }
 
 // Its corners as flattening places them: the width across and the height along up made
@@ -329,6 +357,11 @@ TEST(RectangleLight, TheSceneFormatRefusesWhatItCannotBe) {
   EXPECT_EQ(lightsError(R"({"position": [0, 2, 0], "intensity": 10, "size": 1})"),
             "s.json: lights[0].size: not used by a point light (only \"rectangle\" lights have a "
             "size and an up)");
+  EXPECT_EQ(lightsError("{" + at + R"(, "direction": [0, -1, 0], "size": 1, "two_sided": 1})"),
+            "s.json: lights[0].two_sided: expected true or false, got 1");
+  EXPECT_EQ(lightsError(R"({"position": [0, 2, 0], "intensity": 10, "two_sided": true})"),
+            "s.json: lights[0].two_sided: not used by a point light (only \"rectangle\" lights "
+            "have two sides)");
   EXPECT_EQ(lightsError(R"({"position": [0, 2, 0], "intensity": 10, "look_at": [0, 0, 0]})"),
             "s.json: lights[0].look_at: not used by a point light (only \"spot\" and "
             "\"rectangle\" lights point at a place)");

@@ -22,6 +22,9 @@ A rectangle light is Mitsuba's `rectangle` shape ([-1, 1]^2 in its xy plane, shi
 placed by a to_world whose columns are candela's width, height and normal axes scaled by half
 the width and height, with an `area` emitter of radiance color * intensity / (pi width height)
 and a black `diffuse` BSDF (candela's emitters reflect nothing; Mitsuba's default BSDF would).
+A two-sided rectangle light (Mitsuba's area emitter has one side) is two such rectangles back to
+back, each of half the power, the second with `flip_normals` and moved BACK_OFFSET behind the
+first so that a ray from either side meets the one facing it first.
 """
 import argparse
 import json
@@ -42,6 +45,8 @@ import mitsuba_ref as mr  # noqa: E402  (the harness sets up mitsuba and drjit)
 mi, dr, np = mr.mi, mr.dr, mr.np
 
 SPOT_KEYS = ('direction', 'look_at', 'cutoff_angle', 'beam_width')
+# How far behind a two-sided rectangle light its back's rectangle lies, in scene units.
+BACK_OFFSET = 1e-4
 
 
 def split_lights(scene):
@@ -56,7 +61,7 @@ def split_lights(scene):
             emitters.append(directional_emitter(light))
             continue
         if light.get('type') == 'rectangle':
-            emitters.append(rectangle_emitter(light))
+            emitters.extend(rectangle_emitters(light))
             continue
         if light.get('type') == 'spot':
             spots[len(harness_lights)] = {k: light[k] for k in SPOT_KEYS if k in light}
@@ -101,7 +106,8 @@ def rectangle_axes(light):
     return np.cross(height, n), height, n
 
 
-def rectangle_emitter(light):
+def rectangle_emitters(light):
+    """The rectangle light's emitting shapes: one, or two back to back where it is two-sided."""
     size = light['size'] if isinstance(light['size'], list) else [light['size']] * 2
     width, height, normal = rectangle_axes(light)
     m = np.eye(4)
@@ -109,10 +115,18 @@ def rectangle_emitter(light):
     m[:3, 1] = height * size[1] / 2
     m[:3, 2] = normal
     m[:3, 3] = light['position']
-    radiance = rgb_of(light.get('color', 1.0)) * light['intensity'] / (math.pi * size[0] * size[1])
-    return {'type': 'rectangle', 'to_world': mi.ScalarTransform4f(m.tolist()),
-            'emitter': {'type': 'area', 'radiance': mr.rgb(radiance)},
-            'bsdf': {'type': 'diffuse', 'reflectance': mr.rgb(np.zeros(3))}}
+    sides = 2 if light.get('two_sided', False) else 1
+    radiance = (rgb_of(light.get('color', 1.0)) * light['intensity'] /
+                (math.pi * sides * size[0] * size[1]))
+    shapes = []
+    for side in range(sides):
+        if side == 1:
+            m[:3, 3] = np.array(light['position'], dtype=np.float64) - BACK_OFFSET * normal
+        shapes.append({'type': 'rectangle', 'to_world': mi.ScalarTransform4f(m.tolist()),
+                       'flip_normals': side == 1,
+                       'emitter': {'type': 'area', 'radiance': mr.rgb(radiance)},
+                       'bsdf': {'type': 'diffuse', 'reflectance': mr.rgb(np.zeros(3))}})
+    return shapes
 
 
 def spot_emitter(spot):

@@ -92,6 +92,13 @@ CANDELA_HDI bool usesLobeChoice(const Material& m) {
 
 CANDELA_HDI bool isEmissive(const Material& m) { return m.type == MaterialType::Emissive; }
 
+// Whether emissive material m, on a surface of geometric normal ng, sends light towards wo: from
+// its outside, or from either side where it is two-sided.
+CANDELA_HDI bool emitsTowards(const Material& m, const Vec3& wo, const Vec3& ng) {
+  const float side = dot(wo, ng);
+  return side > 0.0f || (m.twoSided && side < 0.0f);
+}
+
 // The normal of the hemisphere outside which the BSDF scatters nothing (leavesOnItsSide): the
 // geometric normal on wo's side for the surfaces that only reflect; zero for glass, which also
 // transmits.

@@ -234,14 +234,14 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
     if (!first->albedoDone && (isEmissive(m) || hasSmoothLobe(m))) {
       first->albedoDone = true;
       if (isEmissive(m))
-        first->albedo = dot(wo, sp.ng) > 0.0f ? clampUnit(m.radiance) : Vec3(0.0f);
+        first->albedo = emitsTowards(m, wo, sp.ng) ? clampUnit(m.radiance) : Vec3(0.0f);
       else
         albedoHere = true;  // from the surface colour below, looked up once
     }
   }
 
   if (isEmissive(m)) {
-    if (dot(wo, sp.ng) > 0.0f) {  // emitters emit from their outside only
+    if (emitsTowards(m, wo, sp.ng)) {
       float weight = 1.0f;
       const int32_t light = st.specularBounce ? -1 : lightOfPrimitive(scene, hit.prim);
       if (light >= 0) {

@@ -173,17 +173,25 @@ CANDELA_HDI bool sampledBySolidAngle(const Vec3& p0, const Vec3& p1, const Vec3&
 // A point on triangle light `l`: uniform over the solid angle it subtends at p where
 // sampledBySolidAngle says so (pdf 1 / solid angle), else uniform by area (pdf
 // d^2 / (cos_light area)). The
-// triangle emits from its outside only (render/bsdf.h's convention for ng).
+// triangle emits from its outside (render/bsdf.h's convention for ng), and from its back too
+// where its material is two-sided.
 CANDELA_HDI bool sampleTriangleLight(const SceneView& scene, const Light& l, const Vec3& p, float u1,
                                      float u2, LightSample* s) {
   CANDELA_DCHECK(l.shape < scene.triangleCount);
   const Triangle& tri = scene.triangles[l.shape];
+  const Material& m = scene.materials[tri.material];
   const Vec3& p0 = scene.positions[tri.v[0]];
   const Vec3& p1 = scene.positions[tri.v[1]];
   const Vec3& p2 = scene.positions[tri.v[2]];
-  const Vec3 n = cross(p1 - p0, p2 - p0);
-  // p behind the triangle's plane sees only its back, which emits nothing: no point to sample.
-  if (!(dot(n, p - p0) > 0.0f)) return false;
+  Vec3 n = cross(p1 - p0, p2 - p0);
+  const float side = dot(n, p - p0);
+  // p behind the plane sees the triangle's back: a two-sided one's emits (n then turned towards
+  // p), a one-sided one's nothing.
+  if (m.twoSided && side < 0.0f) {
+    n = -n;
+  } else if (!(side > 0.0f)) {
+    return false;
+  }
   const float twiceArea = length(n);
   if (!(twiceArea > 0.0f)) return false;
   float solidAngle = 0.0f;
@@ -202,7 +210,7 @@ CANDELA_HDI bool sampleTriangleLight(const SceneView& scene, const Light& l, con
   s->wi = toLight / s->distance;
   const float cosLight = -dot(s->wi, n) / twiceArea;
   if (!(cosLight > 0.0f)) return false;
-  s->radiance = triangleRadiance(scene, scene.materials[tri.material], tri, b[1], b[2]);
+  s->radiance = triangleRadiance(scene, m, tri, b[1], b[2]);
   s->pdf = spherical ? 1.0f / solidAngle : dist2 / (cosLight * 0.5f * twiceArea);
   s->isDelta = false;
   return true;

@@ -147,7 +147,9 @@ Material emitterOf(const Vec3& radiance) {
 // (addRectangleLight), made lights with every emissive triangle (addEmitterLights).
 void addLight(SceneData& s, const LightDesc& d) {
   if (d.rectangle) {
-    addMaterial(s, emitterOf(rectangleLightRadiance(d)));
+    Material emitter = emitterOf(rectangleLightRadiance(d));
+    emitter.twoSided = d.rectangle->twoSided;
+    addMaterial(s, emitter);
     return;
   }
   Light light;

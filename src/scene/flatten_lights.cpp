@@ -18,7 +18,8 @@ namespace {
 
 // What the light tree knows of light l: its box, the cone of its emitting normals, and the power
 // it weighs the light by, the sum of its RGB power (a surface of radiance L and area A emits
-// pi A L, from one side of a triangle, from all of a sphere). The lights at infinity, picked
+// pi A L, from one side of a triangle, from all of a sphere; a two-sided triangle twice that, its
+// cone every direction). The lights at infinity, picked
 // apart from the tree (SceneView::infiniteLightShare), have no power there.
 LightBounds lightBounds(const SceneData& s, const Light& l) {
   LightBounds b;
@@ -51,11 +52,12 @@ LightBounds lightBounds(const SceneData& s, const Light& l) {
       const Vec3& p0 = s.positions[t.v[0]];
       b.axis = cross(s.positions[t.v[1]] - p0, s.positions[t.v[2]] - p0);  // the emitting side
       b.anchor = (p0 + s.positions[t.v[1]] + s.positions[t.v[2]]) / 3.0f;
-      b.cosThetaO = 1.0;
       const Material& m = s.materials[t.material];
+      b.cosThetaO = m.twoSided ? -1.0 : 1.0;
       const Vec3 tint =
           m.emissionTexture.index >= 0 ? s.textureMeans[m.emissionTexture.index] : Vec3(1.0f);
-      b.power = kPi * 0.5 * double(length(b.axis)) * componentSum(m.radiance * tint);
+      const double sides = m.twoSided ? 2.0 : 1.0;
+      b.power = kPi * 0.5 * sides * double(length(b.axis)) * componentSum(m.radiance * tint);
       break;
     }
     case LightType::Environment:

@@ -21,10 +21,12 @@ inline Vec3 sphereLightRadiance(const LightDesc& d) {
   return lightPower(d) / (4.0f * kPi * kPi * d.radius * d.radius);
 }
 
-// A rectangle light's power spread over its area, from one side, with a Lambertian emitter's pi.
+// A rectangle light's power spread over its area, from one side (or both, where it is two-sided),
+// with a Lambertian emitter's pi.
 inline Vec3 rectangleLightRadiance(const LightDesc& d) {
   const RectangleDesc& r = *d.rectangle;
-  return lightPower(d) / float(kPi * double(r.size.x) * double(r.size.y));
+  const double sides = r.twoSided ? 2.0 : 1.0;
+  return lightPower(d) / float(kPi * sides * double(r.size.x) * double(r.size.y));
 }
 
 // Why a light's power or surface radiance is beyond single precision, as "its power, ... ,

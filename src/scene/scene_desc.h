@@ -79,6 +79,7 @@ struct SpotDesc {
 struct RectangleDesc {
   Vec2 size{1.0f, 1.0f};   // along its width and its height
   std::optional<Vec3> up;  // which way its height runs; absent: y, or z where it shines along y
+  bool twoSided = false;   // emits from its back too, half its power each way
 };
 
 struct LightDesc {

@@ -115,6 +115,14 @@ SphereDesc readSphere(const JsonValue& value, const MaterialLibrary& library,
   sphere.position = position->vec3();
   sphere.radius = fields.require("radius").positiveNumber();
   sphere.material = readMaterialReference(fields, library, textures).value_or(Material{});
+  // Its inside would need a light sampled from within (render/light_sample.h samples the cone a
+  // sphere subtends from outside).
+  if (sphere.material.twoSided)
+    fields.require("material")
+        .fail(
+            "a two-sided emitter on a sphere, which emits outwards only; expected a material "
+            "without "
+            "\"two_sided\" (two-sided emitters are mesh faces and rectangle lights)");
   fields.finish();
   return sphere;
 }
@@ -155,6 +163,8 @@ RectangleDesc readRectangle(JsonObject& fields, const LightDesc& light) {
     if (alongUp(lightAxis(light), *rectangle.up))
       up->failExpected("a direction that is not parallel to where the light points");
   }
+  if (std::optional<JsonValue> twoSided = fields.get("two_sided"))
+    rectangle.twoSided = twoSided->boolean();
   return rectangle;
 }
 
@@ -172,8 +182,9 @@ Vec2 readRectangleSize(const JsonValue& value) {
 }
 
 LightDesc readLight(const JsonValue& value) {
-  JsonObject fields(value, {"id", "type", "position", "intensity", "color", "radius", "direction",
-                            "look_at", "cutoff_angle", "beam_width", "angle", "size", "up"});
+  JsonObject fields(
+      value, {"id", "type", "position", "intensity", "color", "radius", "direction", "look_at",
+              "cutoff_angle", "beam_width", "angle", "size", "up", "two_sided"});
   LightDesc light;
   light.where = value.path();
   light.id = readId(fields);
@@ -225,6 +236,7 @@ LightDesc readLight(const JsonValue& value) {
   } else {
     for (const char* key : {"size", "up"})
       fields.reject(key, notUsed + " (only \"rectangle\" lights have a size and an up)");
+    fields.reject("two_sided", notUsed + " (only \"rectangle\" lights have two sides)");
   }
   fields.finish();
   return light;

@@ -18,13 +18,13 @@ constexpr size_t kShorthandCount = 3;
 enum TypeIndex : size_t { kDiffuse, kMirror, kGlass, kEmissive, kConductor, kPlastic };
 
 // Every field a material may have, and which of them each type reads.
-const std::vector<std::string> kFields = {"color",    "ior",        "roughness", "metal",
-                                          "radiance", "normal_map", "bump_map"};
+const std::vector<std::string> kFields = {"color",    "ior",       "roughness",  "metal",
+                                          "radiance", "two_sided", "normal_map", "bump_map"};
 const std::vector<std::vector<std::string>> kFieldsOf = {
     {"color", "normal_map", "bump_map"},                      // diffuse
     {"color", "normal_map", "bump_map"},                      // mirror
     {"color", "ior", "roughness", "normal_map", "bump_map"},  // glass
-    {"radiance"},                                             // emissive
+    {"radiance", "two_sided"},                                // emissive
     {"color", "roughness", "metal", "normal_map", "bump_map"},
     {"color", "ior", "roughness", "normal_map", "bump_map"},  // plastic
 };
@@ -69,6 +69,8 @@ Material readFields(JsonObject& fields, size_t type, TextureLoader& textures) {
   if (type == kEmissive) {
     material.type = MaterialType::Emissive;
     material.radiance = fields.require("radiance").colour();
+    if (std::optional<JsonValue> twoSided = fields.get("two_sided"))
+      material.twoSided = twoSided->boolean();
     return material;
   }
   const float defaultColor[] = {0.8f, 1.0f, 1.0f, 0.0f, 1.0f, 0.5f};
