@@ -410,10 +410,10 @@ TEST(TextureErrors, JsonMessagesNameThePath) {
   EXPECT_EQ(loadError(scene(R"({"type": "glass", "color": {"texture": "ok.png"}})"), dir.path()),
             "scene.json: spheres[0].material.color: a texture on a field that takes none (expected "
             "a number or an array of 3 numbers)");
-  EXPECT_EQ(loadError(scene(R"({"type": "emissive", "radiance": {"texture": "ok.png"}})"),
+  EXPECT_EQ(loadError(scene(R"({"type": "emissive", "radiance": {"texture": "ok.png", "a": 1}})"),
                       dir.path()),
-            "scene.json: spheres[0].material.radiance: a texture on a field that takes none "
-            "(expected a number or an array of 3 numbers)");
+            "scene.json: spheres[0].material.radiance.a: unknown key, expected one of \"texture\", "
+            "\"scale\"");
   EXPECT_EQ(loadError(scene(R"({"type": "diffuse", "color": {"texture": "ok.png", "wrap": 1}})"),
                       dir.path()),
             "scene.json: spheres[0].material.color.wrap: unknown key, expected one of \"texture\", "

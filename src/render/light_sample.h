@@ -131,6 +131,8 @@ CANDELA_HDI bool sampleDirectionalLight(const Light& l, float u1, float u2, Ligh
   return true;
 }
 
+// A point on sphere light `l` seen from p, uniform over the cone the sphere subtends there, with
+// the radiance of its texture (if any) at that point.
 CANDELA_HDI bool sampleSphereLight(const SceneView& scene, const Light& l, const Vec3& p, float u1,
                                    float u2, LightSample* s) {
   CANDELA_DCHECK(l.shape < scene.sphereCount);
@@ -150,7 +152,10 @@ CANDELA_HDI bool sampleSphereLight(const SceneView& scene, const Light& l, const
   const float b = dc * cosTheta;
   const float disc = maxf(0.0f, r2 - dc * dc * sin2Theta);
   s->distance = b - sqrtf(disc);
-  s->radiance = scene.materials[sphere.material].radiance;
+  const Material& m = scene.materials[sphere.material];
+  s->radiance = m.emissionTexture.index < 0
+                    ? m.radiance
+                    : sphereRadiance(scene, m, normalize(p + s->wi * s->distance - sphere.center));
   s->pdf = uniformConePdf(oneMinusCosMax);
   s->isDelta = false;
   return s->distance > 0.0f;

@@ -5,6 +5,7 @@
 
 #include "core/texture.h"
 #include "geometry/surface.h"
+#include "geometry/surface_uv.h"
 #include "render/material.h"
 #include "render/scene_view.h"
 
@@ -37,6 +38,13 @@ CANDELA_HDI Vec3 triangleRadiance(const SceneView& scene, const Material& m, con
                                   float b1, float b2) {
   if (m.emissionTexture.index < 0) return m.radiance;
   return texturedRadiance(scene, m, triangleUv(scene, tri, b1, b2));
+}
+
+// The radiance of an emissive sphere of material m at the point of its surface whose outward
+// normal is n.
+CANDELA_HDI Vec3 sphereRadiance(const SceneView& scene, const Material& m, const Vec3& n) {
+  if (m.emissionTexture.index < 0) return m.radiance;
+  return texturedRadiance(scene, m, sphereUv(n));
 }
 
 CANDELA_HDI Vec3 surfaceRadiance(const SceneView& scene, const Material& m, const Hit& hit,

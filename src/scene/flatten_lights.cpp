@@ -16,6 +16,15 @@ namespace candela {
 
 namespace {
 
+// The radiance material `material` emits, its texture's mean where it has one (the power the light
+// tree and the light subpaths' picks weigh, which need not be exact: a bound's error costs noise,
+// not bias).
+Vec3 emittedRadiance(const SceneData& s, uint32_t material) {
+  const Material& m = s.materials[material];
+  return m.emissionTexture.index < 0 ? m.radiance
+                                     : m.radiance * s.textureMeans[m.emissionTexture.index];
+}
+
 // What the light tree knows of light l: its box, the cone of its emitting normals, and the power
 // it weighs the light by, the sum of its RGB power (a surface of radiance L and area A emits
 // pi A L, from one side of a triangle, from all of a sphere; a two-sided triangle twice that, its
@@ -41,7 +50,7 @@ LightBounds lightBounds(const SceneData& s, const Light& l) {
       b.anchor = sphere.center;
       b.cosThetaO = -1.0;
       const double r = sphere.radius;
-      b.power = 4.0 * kPi * kPi * r * r * componentSum(s.materials[sphere.material].radiance);
+      b.power = 4.0 * kPi * kPi * r * r * componentSum(emittedRadiance(s, sphere.material));
       break;
     }
     case LightType::Triangle: {
@@ -52,12 +61,11 @@ LightBounds lightBounds(const SceneData& s, const Light& l) {
       const Vec3& p0 = s.positions[t.v[0]];
       b.axis = cross(s.positions[t.v[1]] - p0, s.positions[t.v[2]] - p0);  // the emitting side
       b.anchor = (p0 + s.positions[t.v[1]] + s.positions[t.v[2]]) / 3.0f;
-      const Material& m = s.materials[t.material];
-      b.cosThetaO = m.twoSided ? -1.0 : 1.0;
-      const Vec3 tint =
-          m.emissionTexture.index >= 0 ? s.textureMeans[m.emissionTexture.index] : Vec3(1.0f);
-      const double sides = m.twoSided ? 2.0 : 1.0;
-      b.power = kPi * 0.5 * sides * double(length(b.axis)) * componentSum(m.radiance * tint);
+      const bool twoSided = s.materials[t.material].twoSided;
+      b.cosThetaO = twoSided ? -1.0 : 1.0;
+      const double sides = twoSided ? 2.0 : 1.0;
+      b.power =
+          kPi * 0.5 * sides * double(length(b.axis)) * componentSum(emittedRadiance(s, t.material));
       break;
     }
     case LightType::Environment:

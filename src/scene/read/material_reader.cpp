@@ -7,6 +7,7 @@
 #include "render/material_prepare.h"
 #include "scene/read/did_you_mean.h"
 #include "scene/read/metal_table.h"
+#include "scene/scene_error.h"
 
 namespace candela {
 namespace {
@@ -18,13 +19,14 @@ constexpr size_t kShorthandCount = 3;
 enum TypeIndex : size_t { kDiffuse, kMirror, kGlass, kEmissive, kConductor, kPlastic };
 
 // Every field a material may have, and which of them each type reads.
-const std::vector<std::string> kFields = {"color",    "ior",       "roughness",  "metal",
-                                          "radiance", "two_sided", "normal_map", "bump_map"};
+const std::vector<std::string> kFields = {"color",     "ior",        "roughness",
+                                          "metal",     "radiance",   "strength",
+                                          "two_sided", "normal_map", "bump_map"};
 const std::vector<std::vector<std::string>> kFieldsOf = {
     {"color", "normal_map", "bump_map"},                      // diffuse
     {"color", "normal_map", "bump_map"},                      // mirror
     {"color", "ior", "roughness", "normal_map", "bump_map"},  // glass
-    {"radiance", "two_sided"},                                // emissive
+    {"radiance", "strength", "two_sided"},                    // emissive
     {"color", "roughness", "metal", "normal_map", "bump_map"},
     {"color", "ior", "roughness", "normal_map", "bump_map"},  // plastic
 };
@@ -48,6 +50,24 @@ void readRoughness(JsonObject& fields, TextureLoader& textures, Material* materi
   material->roughness = roughness;
 }
 
+// An emissive material's "radiance" (a colour, or a texture: material->emissionTexture) times its
+// "strength", and "two_sided".
+void readEmission(JsonObject& fields, TextureLoader& textures, Material* material) {
+  material->type = MaterialType::Emissive;
+  material->radiance =
+      readTexturedColour(fields.require("radiance"), textures, &material->emissionTexture);
+  if (std::optional<JsonValue> strength = fields.get("strength")) {
+    const float k = strength->nonNegativeNumber();
+    const Vec3 scaled = material->radiance * k;
+    if (!isFinite(scaled))
+      strength->fail("the radiance " + formatVec3(material->radiance) + " times strength " +
+                     formatNumber(k) + " is beyond single precision; expected a smaller strength");
+    material->radiance = scaled;
+  }
+  if (std::optional<JsonValue> twoSided = fields.get("two_sided"))
+    material->twoSided = twoSided->boolean();
+}
+
 void readMetal(const JsonValue& value, Material* material) {
   std::vector<std::string> names;
   for (const NamedMetal& metal : namedMetals()) names.push_back(metal.name);
@@ -67,10 +87,7 @@ Material readFields(JsonObject& fields, size_t type, TextureLoader& textures) {
   }
   Material material;
   if (type == kEmissive) {
-    material.type = MaterialType::Emissive;
-    material.radiance = fields.require("radiance").colour();
-    if (std::optional<JsonValue> twoSided = fields.get("two_sided"))
-      material.twoSided = twoSided->boolean();
+    readEmission(fields, textures, &material);
     return material;
   }
   const float defaultColor[] = {0.8f, 1.0f, 1.0f, 0.0f, 1.0f, 0.5f};
