@@ -117,12 +117,12 @@ SphereDesc readSphere(const JsonValue& value, const MaterialLibrary& library,
   sphere.material = readMaterialReference(fields, library, textures).value_or(Material{});
   // Its inside would need a light sampled from within (render/light_sample.h samples the cone a
   // sphere subtends from outside).
-  if (sphere.material.twoSided)
-    fields.require("material")
-        .fail(
-            "a two-sided emitter on a sphere, which emits outwards only; expected a material "
-            "without "
-            "\"two_sided\" (two-sided emitters are mesh faces and rectangle lights)");
+  if (sphere.material.twoSided) {
+    const std::string why =
+        "a two-sided emitter on a sphere, which emits outwards only; expected a material without "
+        "\"two_sided\" (two-sided emitters are mesh faces and rectangle lights)";
+    fields.require("material").fail(why);
+  }
   fields.finish();
   return sphere;
 }
