@@ -89,6 +89,22 @@ inline void expectMappedNormal(const RenderedWithNormals& r, uint32_t x, uint32_
   EXPECT_NEAR(normal[2], n.z, tolerance) << x << "," << y;
 }
 
+// Expects every pixel of r, a render of planeUnderSun, to be `expected` in its first channel
+// (within tolerance * expected) and to hold the unit normal n in its normal pass (within
+// tolerance).
+inline void expectUniformPlane(const RenderedWithNormals& r, double expected, const DVec3& n,
+                               double tolerance) {
+  ASSERT_EQ(r.layers.size(), 1u);
+  for (uint32_t y = 0; y < 16; ++y)
+    for (uint32_t x = 0; x < 24; ++x) {
+      EXPECT_NEAR(r.result.image.at(x, y).x, expected, tolerance * expected) << x << "," << y;
+      const float* normal = &r.layers[0].pixels[3 * (size_t(y) * 24 + x)];
+      EXPECT_NEAR(normal[0], n.x, tolerance) << x << "," << y;
+      EXPECT_NEAR(normal[1], n.y, tolerance) << x << "," << y;
+      EXPECT_NEAR(normal[2], n.z, tolerance) << x << "," << y;
+    }
+}
+
 // Calls visit(x, y, d) for each pixel of `camera` whose centre's ray meets the sphere of `radius`
 // at the origin, with d the unit direction of the point it meets first, but for the pixels that
 // graze its silhouette and those near its poles (where u has no direction); returns how many.

@@ -58,16 +58,7 @@ TEST(BumpMap, HeightsThatRiseSteadilyShadeAPlaneAsTheRaisedSurfacesNormal) {
   const double cosine = -dot(n, unit(kSun));
   ASSERT_GT(cosine, 0.0);
   ASSERT_GT(cosine + unit(kSun).y, 0.05);  // the tilt shows (flat, the cosine is 0.864)
-  const double expected = rho * irradiance * cosine / kPi;
-  ASSERT_EQ(r.layers.size(), 1u);
-  for (uint32_t y = 0; y < 16; ++y)
-    for (uint32_t x = 0; x < 24; ++x) {
-      EXPECT_NEAR(r.result.image.at(x, y).x, expected, 1e-5 * expected) << x << "," << y;
-      const float* normal = &r.layers[0].pixels[3 * (size_t(y) * 24 + x)];
-      EXPECT_NEAR(normal[0], n.x, 1e-5) << x << "," << y;
-      EXPECT_NEAR(normal[1], n.y, 1e-5) << x << "," << y;
-      EXPECT_NEAR(normal[2], n.z, 1e-5) << x << "," << y;
-    }
+  test::expectUniformPlane(r, rho * irradiance * cosine / kPi, n, 1e-5);
 }
 
 // A sphere of radius R raised by heights h: its derivatives dp/du = 2 pi R (-d.z, 0, d.x) and

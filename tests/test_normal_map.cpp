@@ -55,16 +55,7 @@ void expectTiltedPlane(bool mirrored) {
   const DVec3 n = unit(t.x * DVec3{1, 0, 0} + t.y * bitangent + t.z * DVec3{0, 1, 0});
   const double cosine = dot(n, unit(-1.0 * sun));
   ASSERT_GT(cosine, 0.0);
-  const double expected = rho * irradiance * cosine / kPi;
-  ASSERT_EQ(r.layers.size(), 1u);
-  for (uint32_t y = 0; y < 16; ++y)
-    for (uint32_t x = 0; x < 24; ++x) {
-      EXPECT_NEAR(r.result.image.at(x, y).x, expected, 2e-6 * expected) << x << "," << y;
-      const float* normal = &r.layers[0].pixels[3 * (size_t(y) * 24 + x)];
-      EXPECT_NEAR(normal[0], n.x, 2e-6);
-      EXPECT_NEAR(normal[1], n.y, 2e-6);
-      EXPECT_NEAR(normal[2], n.z, 2e-6);
-    }
+  test::expectUniformPlane(r, rho * irradiance * cosine / kPi, n, 2e-6);
 }
 
 TEST(NormalMap, AConstantMapShadesAPlaneAsItsTiltedNormal) { expectTiltedPlane(false); }

@@ -26,9 +26,7 @@ SPP = 1024
 
 def heights(size=64):
     """Each map as its rows from the top (candela's v = 1)."""
-    u = (np.arange(size) + 0.5) / size
-    v = 1 - (np.arange(size) + 0.5) / size
-    zero = np.zeros((size, size))
+    u, v, zero = plane.texel_grid(size)
     return {'gentle rise along u': zero + 0.3 + 0.3 * u[None, :],
             'steep rise along u': zero + 0.3 + 3.0 * u[None, :],
             'steep rise along v': zero + 0.3 + 3.0 * v[:, None],

@@ -18,6 +18,14 @@ VIEWS = {'above': ([0, 5, 0.001], [0, 0, 0], [0, 0, -1]),
          'from the side': ([-4, 3, 1], [0, 0, 0], [0, 1, 0])}
 
 
+def texel_grid(size):
+    """The u of a size x size map's texel centres along a row, the v down a column (rows from the
+    top: candela's v = 1), and a map of zeros, for maps made of them."""
+    u = (np.arange(size) + 0.5) / size
+    v = 1 - (np.arange(size) + 0.5) / size
+    return u, v, np.zeros((size, size))
+
+
 def parse_args(doc):
     """The tools' one option, --candela (the binary; default build/candela), with `doc` as their
     help; also sets Mitsuba's variant (scalar_rgb: no JIT, as the tools' scenes are small)."""

@@ -28,9 +28,7 @@ SPP = 1024
 
 def roughness_maps(size=64):
     """Each map as its rows from the top (candela's v = 1)."""
-    u = (np.arange(size) + 0.5) / size
-    v = 1 - (np.arange(size) + 0.5) / size
-    zero = np.zeros((size, size))
+    u, v, zero = plane.texel_grid(size)
     return {'rise along u': zero + 0.1 + 0.6 * u[None, :],
             'curved': 0.35 + 0.15 * np.sin(2 * np.pi * u)[None, :] +
                       0.15 * np.cos(4 * np.pi * v)[:, None]}

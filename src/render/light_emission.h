@@ -45,7 +45,7 @@ CANDELA_HDI EmissionPoint sampleEmissionPoint(const SceneView& scene, const Ligh
     const Sphere& s = scene.spheres[l.shape];
     e.n = sampleUniformCone(u1, u2, 2.0f);  // the whole sphere of directions
     e.p = spherePoint(s, e.n * s.radius, &e.error);
-    e.radiance = sphereRadiance(scene, scene.materials[s.material], e.n);
+    e.radiance = sphereRadiance(scene, scene.materials[s.material], s, e.p);
     return e;
   }
   const Triangle& tri = scene.triangles[l.shape];

@@ -152,10 +152,8 @@ CANDELA_HDI bool sampleSphereLight(const SceneView& scene, const Light& l, const
   const float b = dc * cosTheta;
   const float disc = maxf(0.0f, r2 - dc * dc * sin2Theta);
   s->distance = b - sqrtf(disc);
-  const Material& m = scene.materials[sphere.material];
-  s->radiance = m.emissionTexture.index < 0
-                    ? m.radiance
-                    : sphereRadiance(scene, m, normalize(p + s->wi * s->distance - sphere.center));
+  s->radiance =
+      sphereRadiance(scene, scene.materials[sphere.material], sphere, p + s->wi * s->distance);
   s->pdf = uniformConePdf(oneMinusCosMax);
   s->isDelta = false;
   return s->distance > 0.0f;

@@ -40,11 +40,12 @@ CANDELA_HDI Vec3 triangleRadiance(const SceneView& scene, const Material& m, con
   return texturedRadiance(scene, m, triangleUv(scene, tri, b1, b2));
 }
 
-// The radiance of an emissive sphere of material m at the point of its surface whose outward
-// normal is n.
-CANDELA_HDI Vec3 sphereRadiance(const SceneView& scene, const Material& m, const Vec3& n) {
+// The radiance of emissive sphere s, of material m, at point p of its surface (whose direction
+// from the centre only a texture needs).
+CANDELA_HDI Vec3 sphereRadiance(const SceneView& scene, const Material& m, const Sphere& s,
+                                const Vec3& p) {
   if (m.emissionTexture.index < 0) return m.radiance;
-  return texturedRadiance(scene, m, sphereUv(n));
+  return texturedRadiance(scene, m, sphereUv(normalize(p - s.center)));
 }
 
 CANDELA_HDI Vec3 surfaceRadiance(const SceneView& scene, const Material& m, const Hit& hit,
