@@ -13,6 +13,7 @@
 
 #include "core/constants.h"
 #include "render_test_util.h"
+#include "temp_dir.h"
 
 namespace candela {
 namespace {
@@ -180,6 +181,42 @@ TEST(EmissionTexture, TheSceneFormatRefusesWhatItCannotBe) {
   EXPECT_EQ(error(R"({"type": "emissive", "radiance": {"texture": "nowhere.png"}})"),
             "test.json: spheres[0].material.radiance.texture: cannot read the texture: "
             "./nowhere.png: cannot open: No such file or directory");
+}
+
+// A float texture's texels times the strength (an MTL's: times Ke) must stay within single
+// precision, as a plain radiance times its strength must: else the light's power is infinite.
+TEST(EmissionTexture, TexelsThatTheStrengthCarriesBeyondSinglePrecisionAreRefused) {
+  // The bright row is the file's first, which PFM stores at the bottom: the image's row 1.
+  const std::string hot = writeHemispheresMap("emission_hot.pfm", 2, 1e30f, 1.0f);
+  const auto error = [&](float strength) {
+    const std::string material = R"({"type": "emissive", "radiance": {"texture": ")" + hot +
+                                 R"("}, "strength": )" + num(strength) + "}";
+    return test::loadError(R"({"camera": {"width": 8, "height": 8, "fov": 40},
+        "spheres": [{"position": [0, 0, -5], "radius": 1, "material": )" +
+                               material + "}]}",
+                           ".");
+  };
+  EXPECT_EQ(error(1.0f), "(no error)");
+  EXPECT_EQ(error(1e20f),
+            "test.json: spheres[0].material.strength: the radiance texture's texel (0, 1), "
+            "[1e+30, 1e+30, 1e+30] times strength 1e+20 is beyond single precision; expected a "
+            "smaller strength");
+
+  test::TempDir dir;
+  dir.write("quad.obj",
+            "mtllib lamp.mtl\nv 0 0 -5\nv 1 0 -5\nv 0 1 -5\nvt 0 0\nvt 1 0\nvt 0 1\n"
+            "usemtl lamp\nf 1/1 2/2 3/3\n");
+  const auto mtlError = [&](const std::string& ke) {
+    dir.write("lamp.mtl", "newmtl lamp\nKe " + ke + "\nmap_Ke " + hot + "\n");
+    return test::loadError(R"({"camera": {"width": 8, "height": 8, "fov": 40},
+        "objects": [{"file": "quad.obj"}]})",
+                           dir.path());
+  };
+  EXPECT_EQ(mtlError("1 1 1"), "(no error)");
+  EXPECT_EQ(mtlError("1e20 1 1"),
+            "test.json: objects[0].file: lamp.mtl:3: map_Ke: the texture's texel (0, 1), [1e+30, "
+            "1e+30, 1e+30] times Ke [1e+20, 1, 1] is beyond single precision; expected a smaller "
+            "Ke");
 }
 
 }  // namespace

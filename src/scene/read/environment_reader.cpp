@@ -12,21 +12,6 @@
 #include "scene/scene_error.h"
 
 namespace candela {
-namespace {
-
-// The first texel whose radiance times `scale` (the map's tint times its strength, as the
-// renderer holds it) is not finite in single precision, as "texel (x, y), [r, g, b]", or "".
-std::string texelBeyondFloat(const ImageRGB& image, const Vec3& scale) {
-  for (uint32_t y = 0; y < image.height; ++y)
-    for (uint32_t x = 0; x < image.width; ++x) {
-      const Vec3 t = image.at(x, y);
-      if (!isFinite(t * scale))
-        return "texel (" + std::to_string(x) + ", " + std::to_string(y) + "), " + formatVec3(t);
-    }
-  return "";
-}
-
-}  // namespace
 
 EnvironmentDesc readEnvironment(const JsonValue& value, const std::string& baseDir) {
   JsonObject fields(value, {"color", "map", "strength", "rotation"});
@@ -60,7 +45,8 @@ EnvironmentDesc readEnvironment(const JsonValue& value, const std::string& baseD
   const std::string bad = firstBadTexel(image);
   if (!bad.empty())
     map->fail(written + ": " + bad + "; expected finite, non-negative radiance in every texel");
-  const std::string overflow = texelBeyondFloat(image, environment.color * environment.strength);
+  const std::string overflow =
+      firstTexelBeyondFloat(image, environment.color * environment.strength);
   if (!overflow.empty())
     value.fail("the map's " + overflow + ", times color " + formatVec3(environment.color) +
                " and strength " + formatNumber(environment.strength) +

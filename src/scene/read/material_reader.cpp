@@ -7,6 +7,7 @@
 #include "render/material_prepare.h"
 #include "scene/read/did_you_mean.h"
 #include "scene/read/metal_table.h"
+#include "scene/read/texel_check.h"
 #include "scene/scene_error.h"
 
 namespace candela {
@@ -62,6 +63,13 @@ void readEmission(JsonObject& fields, TextureLoader& textures, Material* materia
     if (!isFinite(scaled))
       strength->fail("the radiance " + formatVec3(material->radiance) + " times strength " +
                      formatNumber(k) + " is beyond single precision; expected a smaller strength");
+    if (material->emissionTexture.index >= 0) {  // its tint is 1: the texels times k
+      const std::string beyond =
+          firstTexelBeyondFloat(textures.texture(material->emissionTexture.index), scaled);
+      if (!beyond.empty())
+        strength->fail("the radiance texture's " + beyond + " times strength " + formatNumber(k) +
+                       " is beyond single precision; expected a smaller strength");
+    }
     material->radiance = scaled;
   }
   if (std::optional<JsonValue> twoSided = fields.get("two_sided"))

@@ -14,8 +14,9 @@
 #include "render/material_prepare.h"
 #include "scene/read/mtl_library.h"
 #include "scene/read/obj_scanner.h"
-#include "scene/scene_error.h"
+#include "scene/read/texel_check.h"
 #include "scene/read/text_file.h"
+#include "scene/scene_error.h"
 
 namespace candela {
 namespace {
@@ -175,6 +176,12 @@ std::vector<Material> mtlMaterials(const std::vector<tinyobj::material_t>& mater
       desc.emissionTexture =
           mtlTexture(*found->second.mapKe, "map_Ke", TextureUse::Color, textures, nullptr);
       if (isBlack(emission)) emission = Vec3(1.0f);  // map_Ke alone: the texture is the radiance
+      const std::string beyond =
+          firstTexelBeyondFloat(textures.texture(desc.emissionTexture.index), emission);
+      if (!beyond.empty())
+        failAt(*found->second.mapKe, "map_Ke: the texture's " + beyond + " times Ke " +
+                                         formatVec3(emission) +
+                                         " is beyond single precision; expected a smaller Ke");
     }
     if (!isBlack(emission)) {
       desc.type = MaterialType::Emissive;

@@ -41,6 +41,9 @@ class TextureLoader {
   // non-negative.
   LoadedTexture load(const std::string& path, TextureUse use);
 
+  // The texture that load() returned `index` for.
+  const TextureDesc& texture(int32_t index) const { return *textures_[size_t(index)]; }
+
  private:
   std::vector<std::shared_ptr<const TextureDesc>>& textures_;
   std::string baseDir_;
