@@ -11,12 +11,17 @@
 namespace candela {
 
 // A sample's camera ray through pixel (x, y), from the first dimensions of its stream `rng`,
-// and in *jx, *jy its place within the pixel.
+// and in *jx, *jy its place relative to the pixel (within it for the box filter, around its
+// centre for the wider ones: render/pixel_filter.h).
 CANDELA_HDI Ray cameraSample(const SceneView& scene, uint32_t x, uint32_t y, SampleStream& rng,
                              float* jx, float* jy) {
   float lensU = 0.5f, lensV = 0.5f;
   *jx = *jy = 0.5f;
-  if (scene.settings.antialiasing) rng.next2D(jx, jy);
+  if (scene.settings.antialiasing) {
+    rng.next2D(jx, jy);
+    *jx = sampleFilter(scene.settings.filter, *jx);
+    *jy = sampleFilter(scene.settings.filter, *jy);
+  }
   // A pinhole camera passes over the lens dimension, as a point light does over its own.
   rng.next2DIfUsed(scene.camera.apertureRadius > 0.0f, &lensU, &lensV);
   const uint32_t stride = scene.camera.pixelStride, offset = stride / 2;

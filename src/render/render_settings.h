@@ -3,6 +3,8 @@
 
 #include <cstdint>
 
+#include "render/pixel_filter.h"
+
 namespace candela {
 
 enum class IntegratorType : uint32_t { Path = 0, Direct = 1 };
@@ -20,7 +22,8 @@ struct RenderSettings {
   uint32_t spp = 64;  // samples per pixel (the scene's camera.spp)
   uint32_t maxDepth = 8;
   IntegratorType integrator = IntegratorType::Path;
-  bool antialiasing = true;
+  bool antialiasing = true;  // false: every sample through the pixel centre, whatever the filter
+  PixelFilter filter;
   LightPaths lightPaths = LightPaths::Auto;
   uint64_t seed = 0;
 };

@@ -2,14 +2,56 @@
 #include "scene/read/render_reader.h"
 
 #include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
 
 #include "scene/read/did_you_mean.h"
 
 namespace candela {
+namespace {
+
+// The widest filter a scene may ask for, in pixels from the centre: beyond it a filter blurs the
+// image rather than reconstructs it.
+constexpr float kMaxFilterRadius = 16.0f;
+
+// "filter": a name ("box", "tent" or "gaussian", each with its default width: the tent's radius
+// 1 pixel, the Gaussian's standard deviation 0.5, as Mitsuba 3's defaults), or an object of the
+// type and its width, {"type": "tent", "radius": r} or {"type": "gaussian", "stddev": s}.
+PixelFilter readFilter(const JsonValue& value) {
+  const std::vector<std::string> names = {"box", "tent", "gaussian"};
+  const float defaultWidth[] = {0.5f, 1.0f, 0.5f};
+  PixelFilter filter;
+  if (!value.json().is_object()) {
+    filter.type = FilterType(value.choice(names));
+    filter.width = defaultWidth[size_t(filter.type)];
+    return filter;
+  }
+  JsonObject fields(value, {"type", "radius", "stddev"},
+                    "a filter name or an object {\"type\": name, ...}");
+  filter.type = FilterType(fields.require("type").choice(names));
+  filter.width = defaultWidth[size_t(filter.type)];
+  if (filter.type != FilterType::Tent) fields.reject("radius", "only a \"tent\" filter has one");
+  if (filter.type != FilterType::Gaussian)
+    fields.reject("stddev", "only a \"gaussian\" filter has one");
+  if (std::optional<JsonValue> width =
+          fields.get(filter.type == FilterType::Tent ? "radius" : "stddev")) {
+    filter.width = width->positiveNumber();
+    if (!(filterRadius(filter) <= kMaxFilterRadius))
+      width->failExpected(filter.type == FilterType::Tent
+                              ? "a radius of at most 16 pixels"
+                              : "a standard deviation of at most 4 pixels (the filter reaches 4 "
+                                "of them from the centre)");
+  }
+  fields.finish();
+  return filter;
+}
+
+}  // namespace
 
 void readRender(const JsonValue& value, RenderSettings& render, OutputDesc& output) {
-  JsonObject fields(value, {"max_depth", "integrator", "light_paths", "antialiasing", "seed",
-                            "gamma", "exposure", "tone_map"});
+  JsonObject fields(value, {"max_depth", "integrator", "light_paths", "antialiasing", "filter",
+                            "seed", "gamma", "exposure", "tone_map"});
   if (std::optional<JsonValue> depth = fields.get("max_depth"))
     render.maxDepth = static_cast<uint32_t>(depth->integer(1, UINT32_MAX, "a positive integer"));
   if (std::optional<JsonValue> integrator = fields.get("integrator"))
@@ -19,6 +61,13 @@ void readRender(const JsonValue& value, RenderSettings& render, OutputDesc& outp
     render.lightPaths = LightPaths(lightPaths->choice({"auto", "on", "off"}));
   if (std::optional<JsonValue> antialiasing = fields.get("antialiasing"))
     render.antialiasing = antialiasing->boolean();
+  if (std::optional<JsonValue> filter = fields.get("filter")) {
+    if (!render.antialiasing)
+      filter->fail(
+          "not used with \"antialiasing\": false (every sample goes through the pixel "
+          "centre)");
+    render.filter = readFilter(*filter);
+  }
   if (std::optional<JsonValue> seed = fields.get("seed"))
     render.seed = seed->integer(0, UINT64_MAX, "a non-negative integer");
 
