@@ -4,7 +4,8 @@ images.
 
 The shared harness (../shared/reference/mitsuba_ref.py) maps the original scene contract, whose
 lights are point and sphere lights; this adds spot, directional and rectangle lights (and an
-environment map, as tools/mitsuba_envmap.py maps it) and hands everything else to it.
+environment map, as tools/mitsuba_envmap.py maps it, and a pixel filter, as tools/mitsuba_filter.py
+maps it) and hands everything else to it.
 
     /tmp/mi/bin/python tools/mitsuba_lights.py SCENE.json OUT.exr [--spp N] [--seed S]
                                                [--threads T]
@@ -40,6 +41,7 @@ sys.path.insert(0, REFERENCE)
 sys.path.insert(0, HERE)
 
 import mitsuba_envmap  # noqa: E402  (environment_map, parse_beside, render_and_report)
+import mitsuba_filter  # noqa: E402  (take_filter, apply_filter)
 import mitsuba_ref as mr  # noqa: E402  (the harness sets up mitsuba and drjit)
 
 mi, dr, np = mr.mi, mr.dr, mr.np
@@ -163,9 +165,11 @@ def main(argv=None):
         with open(a.scene) as f:
             scene = json.load(f)
     scene, spots, emitters = split_lights(scene)
+    rfilter = mitsuba_filter.take_filter(scene)
     t0 = time.perf_counter()
     sc = mitsuba_envmap.parse_beside(scene, a.scene, 'lights')
     d = mr.scene_dict(sc, spp=a.spp)
+    mitsuba_filter.apply_filter(d, rfilter)
     for i, spot in spots.items():
         d[f'light{i}'] = spot_emitter(spot)
     for i, emitter in enumerate(emitters):
