@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "scene/read/did_you_mean.h"
+#include "scene/scene_error.h"
 
 namespace candela {
 namespace {
@@ -39,9 +40,11 @@ PixelFilter readFilter(const JsonValue& value) {
     filter.width = width->positiveNumber();
     if (!(filterRadius(filter) <= kMaxFilterRadius))
       width->failExpected(filter.type == FilterType::Tent
-                              ? "a radius of at most 16 pixels"
-                              : "a standard deviation of at most 4 pixels (the filter reaches 4 "
-                                "of them from the centre)");
+                              ? "a radius of at most " + formatNumber(kMaxFilterRadius) + " pixels"
+                              : "a standard deviation of at most " +
+                                    formatNumber(kMaxFilterRadius / kGaussianCutoff) +
+                                    " pixels (the filter reaches " + formatNumber(kGaussianCutoff) +
+                                    " of them from the centre)");
   }
   fields.finish();
   return filter;
