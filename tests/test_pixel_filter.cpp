@@ -165,5 +165,22 @@ TEST(PixelFilter, TheSceneFormatRefusesWhatItCannotBe) {
             "through the pixel centre)");
 }
 
+// The intrinsics' x axis maps the image's right edge, pixel 16, to a direction of length 1.5e19,
+// whose square is still a float; a filter's samples beyond the edge go further, past that.
+TEST(PixelFilter, TheCameraMustGiveFiniteRaysWhereTheFilterReaches) {
+  const auto error = [](const std::string& filter) {
+    return test::loadError(R"({"camera": {"width": 16, "height": 16, "intrinsics": )"
+                           R"({"fx": 1.0666667e-18, "fy": 16, "cx": 0, "cy": 8}},)"
+                           R"( "render": {"filter": )" +
+                               filter + "}}",
+                           ".");
+  };
+  EXPECT_EQ(error(R"("box")"), "(no error)");
+  EXPECT_EQ(error(R"("tent")"), "(no error)");
+  EXPECT_EQ(error(R"({"type": "gaussian", "stddev": 4})"),
+            "test.json: render.filter: reaches pixel (31.5, -15.5) beyond the image, where "
+            "camera.intrinsics gives rays that are not finite; expected a narrower filter");
+}
+
 }  // namespace
 }  // namespace candela

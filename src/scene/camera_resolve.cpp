@@ -1,5 +1,6 @@
 #include "scene/camera_resolve.h"
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <optional>
@@ -42,11 +43,20 @@ bool traceable(const Ray& ray) {
          std::fabs(length(ray.direction) - 1.0f) < 1e-3f;
 }
 
+// The corners and the centre of the image widened by `beyondEdge` pixels each way.
+using RegionCorners = std::array<std::array<float, 2>, 5>;
+RegionCorners regionCorners(const Camera& cam, float beyondEdge) {
+  const float lo = 0.0f - beyondEdge, w = float(cam.width) + beyondEdge;  // 0 - 0 is +0
+  const float h = float(cam.height) + beyondEdge;
+  return {{{lo, lo}, {w, lo}, {lo, h}, {w, h}, {0.5f * (lo + w), 0.5f * (lo + h)}}};
+}
+
 // Every ray the camera can make must be traceable: a non-finite direction would send traversal
-// into every box. The pose must be a rotation; the rays through the image's corners (K^-1 is
-// affine in the pixel, so they bound the rest) and, with a lens, from the lens's rim must be
-// finite.
-std::optional<CameraProblem> rayProblem(const Camera& cam, const CameraDesc& desc) {
+// into every box. The pose must be a rotation; the rays through the corners of the region samples
+// can land in (K^-1 is affine in the pixel, so they bound the rest) and, with a lens, from the
+// lens's rim must be finite. That region is the image widened by `beyondEdge` pixels each way.
+std::optional<CameraProblem> rayProblem(const Camera& cam, const CameraDesc& desc,
+                                        float beyondEdge) {
   bool pose = isFinite(cam.position);
   for (int c = 0; c < 3; ++c) {
     const Vec3 axis = cam.cameraToWorld.column(c);
@@ -55,20 +65,26 @@ std::optional<CameraProblem> rayProblem(const Camera& cam, const CameraDesc& des
   if (!pose)
     return CameraProblem{posePath(desc),
                          "gives the camera no valid orientation (its rays would not be finite)"};
-  const float w = float(cam.width), h = float(cam.height);
-  const float corners[5][2] = {{0, 0}, {w, 0}, {0, h}, {w, h}, {0.5f * w, 0.5f * h}};
   Camera pinhole = cam;
   pinhole.apertureRadius = 0.0f;
-  for (const auto& p : corners)
-    if (!traceable(generateCameraRay(pinhole, p[0], p[1], 0.5f, 0.5f)))
-      return CameraProblem{intrinsicsPath(desc),
-                           "gives rays that are not finite (at pixel (" + formatNumber(p[0]) +
-                               ", " + formatNumber(p[1]) +
-                               ")); expected intrinsics whose inverse maps every pixel to a "
-                               "finite direction"};
+  const RegionCorners image = regionCorners(cam, 0.0f), reached = regionCorners(cam, beyondEdge);
+  for (const RegionCorners* region : {&image, &reached})
+    for (const auto& p : *region)
+      if (!traceable(generateCameraRay(pinhole, p[0], p[1], 0.5f, 0.5f))) {
+        const std::string at = "(" + formatNumber(p[0]) + ", " + formatNumber(p[1]) + ")";
+        if (region == &reached)
+          return CameraProblem{"render.filter",
+                               "reaches pixel " + at + " beyond the image, where " +
+                                   intrinsicsPath(desc) +
+                                   " gives rays that are not finite; expected a narrower filter"};
+        return CameraProblem{intrinsicsPath(desc),
+                             "gives rays that are not finite (at pixel " + at +
+                                 "); expected intrinsics whose inverse maps every pixel to a "
+                                 "finite direction"};
+      }
   if (cam.apertureRadius <= 0.0f) return std::nullopt;
   const float rim[5][2] = {{0, 0.5f}, {1, 0.5f}, {0.5f, 0}, {0.5f, 1}, {0.5f, 0.5f}};
-  for (const auto& p : corners)
+  for (const auto& p : reached)
     for (const auto& lens : rim)
       if (!traceable(generateCameraRay(cam, p[0], p[1], lens[0], lens[1])))
         return CameraProblem{
@@ -94,7 +110,7 @@ Mat3 lookAtBasis(const Vec3& eye, const Vec3& target, const Vec3& up) {
 
 namespace {
 
-std::optional<CameraProblem> makeCamera(const CameraDesc& desc, Camera* out) {
+std::optional<CameraProblem> makeCamera(const CameraDesc& desc, float beyondEdge, Camera* out) {
   Camera& cam = *out;
   cam.width = desc.width;
   cam.height = desc.height;
@@ -120,19 +136,21 @@ std::optional<CameraProblem> makeCamera(const CameraDesc& desc, Camera* out) {
     // Distance to look_at measured along the viewing axis (the focus plane is perpendicular).
     cam.focusDistance = dot(*desc.lookAt - cam.position, cam.cameraToWorld.column(2));
   }
-  return rayProblem(cam, desc);
+  return rayProblem(cam, desc, beyondEdge);
 }
 
 }  // namespace
 
-std::optional<CameraProblem> cameraProblem(const CameraDesc& desc) {
+float samplesBeyondEdge(const PixelFilter& filter) { return filterRadius(filter) - 0.5f; }
+
+std::optional<CameraProblem> cameraProblem(const CameraDesc& desc, float beyondEdge) {
   Camera unused;
-  return makeCamera(desc, &unused);
+  return makeCamera(desc, beyondEdge, &unused);
 }
 
 Camera resolveCamera(const CameraDesc& desc, const std::string& fileLabel) {
   Camera cam;
-  if (const std::optional<CameraProblem> problem = makeCamera(desc, &cam))
+  if (const std::optional<CameraProblem> problem = makeCamera(desc, 0.0f, &cam))
     throw SceneError(fileLabel + ": " + problem->path + ": " + problem->message);
   return cam;
 }

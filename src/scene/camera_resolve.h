@@ -9,6 +9,7 @@
 #include <string>
 
 #include "render/camera.h"
+#include "render/pixel_filter.h"
 #include "scene/scene_desc.h"
 
 namespace candela {
@@ -20,11 +21,16 @@ struct CameraProblem {
   std::string message;
 };
 
-// Why `desc` makes no usable camera (K not invertible; a pose that is no rotation; pixels or lens
-// points whose rays are not finite), or nullopt when it makes one.
-std::optional<CameraProblem> cameraProblem(const CameraDesc& desc);
+// How far beyond the image's edge, in pixels, the samples of its edge pixels land with `filter`.
+float samplesBeyondEdge(const PixelFilter& filter);
 
-// The camera of `desc`; throws SceneError "file: path: message" for a cameraProblem.
+// Why `desc` makes no usable camera (K not invertible; a pose that is no rotation; image points,
+// the image widened by `beyondEdge` pixels each way, or lens points whose rays are not finite),
+// or nullopt when it makes one.
+std::optional<CameraProblem> cameraProblem(const CameraDesc& desc, float beyondEdge);
+
+// The camera of `desc`; throws SceneError "file: path: message" for a cameraProblem (the image
+// not widened: a loaded scene's camera was checked with its filter's reach).
 Camera resolveCamera(const CameraDesc& desc, const std::string& fileLabel);
 
 // The intrinsic matrix K of a camera description (from fov or as given).

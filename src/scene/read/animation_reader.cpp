@@ -282,7 +282,8 @@ void checkCameraAtEveryFrame(const JsonValue& value, const AnimationDesc& animat
       if (isBlack(f)) value.fail(at + "the camera looks at its own position");
       if (alongUp(f, c.up)) value.fail(at + "the camera looks along its up direction");
     }
-    if (const std::optional<CameraProblem> problem = cameraProblem(c))
+    if (const std::optional<CameraProblem> problem =
+            cameraProblem(c, samplesBeyondEdge(scene.render.filter)))
       value.fail(at + problem->path + " " + problem->message);
   }
 }

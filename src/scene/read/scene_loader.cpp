@@ -167,7 +167,8 @@ SceneDesc parseSceneText(const std::string& text, const std::string& fileLabel,
       scene.animation && std::any_of(scene.animation->tracks.begin(), scene.animation->tracks.end(),
                                      [](const AnimTrack& t) { return t.target == AnimTarget::Camera; });
   if (!cameraAnimated)
-    if (const std::optional<CameraProblem> problem = cameraProblem(scene.camera))
+    if (const std::optional<CameraProblem> problem =
+            cameraProblem(scene.camera, samplesBeyondEdge(scene.render.filter)))
       failAt(fileLabel, problem->path, problem->message);
   checkLightEmission(scene);
   top.finish();
