@@ -117,6 +117,7 @@ TEST_P(CliStatsEngineTest, WritesEveryKeyWithSaneNumbers) {
                           "max_depth",
                           "integrator",
                           "antialiasing",
+                          "filter",
                           "light_paths",
                           "use_bvh",
                           "engine",
@@ -149,6 +150,7 @@ TEST_P(CliStatsEngineTest, WritesEveryKeyWithSaneNumbers) {
   EXPECT_EQ(s["max_depth"], 3);
   EXPECT_EQ(s["integrator"], "path");
   EXPECT_EQ(s["antialiasing"], true);
+  EXPECT_EQ(s["filter"], json({{"type", "box"}}));
   EXPECT_EQ(s["use_bvh"], true);
   EXPECT_EQ(s["denoise_seconds"], 0.0);  // no --denoise
   // Too small a render for the light-path pilot (backends/light_path_pilot.h): they stay on.
@@ -212,6 +214,20 @@ TEST_F(CliStatsTest, NoBvhIsReportedAndTracesTheSameRays) {
   EXPECT_EQ(b["use_bvh"], false);
   // Same closest hits either way, so the same paths and the same ray counts.
   EXPECT_EQ(a["rays"], b["rays"]);
+}
+
+TEST_F(CliStatsTest, ReportsThePixelFilterAsTheSceneWritesIt) {
+  for (const auto& [filter, expected] :
+       {std::pair{R"("tent")", json({{"type", "tent"}, {"radius", 1.0}})},
+        std::pair{R"({"type": "gaussian", "stddev": 0.75})",
+                  json({{"type", "gaussian"}, {"stddev", 0.75}})}}) {
+    std::string scene = kScene;
+    scene.replace(scene.find(R"("max_depth": 3)"), 14,
+                  std::string(R"("max_depth": 3, "filter": )") + filter);
+    std::ofstream(dir_ / "filtered.json") << scene;
+    ASSERT_EQ(run("filtered.json -o out.pfm -q --stats stats.json"), 0) << stderrText();
+    EXPECT_EQ(readJson("stats.json")["filter"], expected) << filter;
+  }
 }
 
 // Large enough a render for the light-path pilot, of a scene where it turns them off (a lamp high

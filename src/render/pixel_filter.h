@@ -23,6 +23,14 @@ enum class FilterType : uint32_t {
   Gaussian = 2,  // exp(-x^2 / (2 stddev^2)), cut off at 4 stddev (Mitsuba 3's window)
 };
 
+// The filter's name and its width's, as the scene format spells them (the box has no width).
+constexpr const char* filterName(FilterType type) {
+  return type == FilterType::Box ? "box" : type == FilterType::Tent ? "tent" : "gaussian";
+}
+constexpr const char* filterWidthName(FilterType type) {
+  return type == FilterType::Box ? nullptr : type == FilterType::Tent ? "radius" : "stddev";
+}
+
 struct PixelFilter {
   FilterType type = FilterType::Box;
   float width = 0.5f;  // the tent's radius, the Gaussian's standard deviation, in pixels

@@ -54,6 +54,8 @@ std::string renderStatsJson(const RenderStats& info, const SceneData& scene,
   o["max_depth"] = s.maxDepth;
   o["integrator"] = s.integrator == IntegratorType::Direct ? "direct" : "path";
   o["antialiasing"] = s.antialiasing;
+  o["filter"] = {{"type", filterName(s.filter.type)}};
+  if (const char* width = filterWidthName(s.filter.type)) o["filter"][width] = s.filter.width;
   o["use_bvh"] = info.useBvh;
   o["load_seconds"] = finiteOrZero(info.loadSeconds);
   o["flatten_seconds"] = finiteOrZero(info.flattenSeconds);

@@ -20,7 +20,8 @@ constexpr float kMaxFilterRadius = 16.0f;
 // 1 pixel, the Gaussian's standard deviation 0.5, as Mitsuba 3's defaults), or an object of the
 // type and its width, {"type": "tent", "radius": r} or {"type": "gaussian", "stddev": s}.
 PixelFilter readFilter(const JsonValue& value) {
-  const std::vector<std::string> names = {"box", "tent", "gaussian"};
+  const std::vector<std::string> names = {filterName(FilterType::Box), filterName(FilterType::Tent),
+                                          filterName(FilterType::Gaussian)};
   const float defaultWidth[] = {0.5f, 1.0f, 0.5f};
   PixelFilter filter;
   if (!value.json().is_object()) {
@@ -35,8 +36,8 @@ PixelFilter readFilter(const JsonValue& value) {
   if (filter.type != FilterType::Tent) fields.reject("radius", "only a \"tent\" filter has one");
   if (filter.type != FilterType::Gaussian)
     fields.reject("stddev", "only a \"gaussian\" filter has one");
-  if (std::optional<JsonValue> width =
-          fields.get(filter.type == FilterType::Tent ? "radius" : "stddev")) {
+  const char* widthName = filterWidthName(filter.type);
+  if (std::optional<JsonValue> width = widthName ? fields.get(widthName) : std::nullopt) {
     filter.width = width->positiveNumber();
     if (!(filterRadius(filter) <= kMaxFilterRadius))
       width->failExpected(filter.type == FilterType::Tent
