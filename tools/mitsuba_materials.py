@@ -17,6 +17,8 @@ harness does for diffuse, since candela's reflect on both sides:
   plastic, roughness 0       -> plastic, int_ior = ior, ext_ior 1, diffuse_reflectance = color,
                                 nonlinear false
   plastic, roughness r       -> roughplastic, ggx, alpha = r^2, the same
+  thin_glass                 -> thindielectric, int_ior = ior, ext_ior 1 (Mitsuba's shadow rays stop
+                                at it where candela's pass: the same image, Mitsuba's noisier)
   (a roughness r > 0 whose alpha = r^2 is below 0.001 is smooth in candela, docs/scene-format.md's
   Roughness, so it maps as roughness 0)
   {"texture": T, "scale": [su, sv]} as a colour on a sphere (tools/mitsuba_mtl.py maps it on
@@ -90,6 +92,9 @@ def make_mat(ctx, t, fields, path):
         return dict(type='plastic', roughness=roughness,
                     color=colour(ctx, fields, 0.5, path),
                     ior=ctx.number(fields.get('ior', 1.5), path + '.ior', positive=True))
+    if t == 'thin_glass':
+        return dict(type='thin_glass',
+                    ior=ctx.number(fields.get('ior', 1.5), path + '.ior', positive=True))
     mat = harness_make_mat(ctx, t, fields, path)
     if t == 'glass':
         mat['roughness'] = roughness
@@ -115,6 +120,8 @@ def bsdf_dict(mat):
         if rough:
             d.update(type='roughplastic', distribution='ggx', alpha=alpha)
         return {'type': 'twosided', 'bsdf': d}
+    if t == 'thin_glass':
+        return {'type': 'thindielectric', 'int_ior': float(mat['ior']), 'ext_ior': 1.0}
     if t == 'glass' and rough:
         return {'type': 'roughdielectric', 'distribution': 'ggx', 'alpha': alpha,
                 'int_ior': float(mat['ior']), 'ext_ior': 1.0,

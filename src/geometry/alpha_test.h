@@ -3,6 +3,7 @@
 
 #include <cstdint>
 
+#include "core/dielectric_fresnel.h"
 #include "core/float_error.h"
 #include "core/rng.h"
 #include "core/texture.h"
@@ -31,15 +32,22 @@ CANDELA_HDI float alphaThreshold(const GeometryView& scene, const Triangle& tri,
   return toUnitFloat(mix64(corners ^ ray.alphaKey));
 }
 
-// The alpha of triangle `tri` at barycentrics (b1, b2), in [0, 1]; the scene must have masks.
-CANDELA_HDI float triangleAlpha(const GeometryView& scene, const Triangle& tri, float b1,
-                                float b2) {
+// The alpha of triangle `tri` at barycentrics (b1, b2) for a ray along `direction`, in [0, 1];
+// the scene must have masks.
+CANDELA_HDI float triangleAlpha(const GeometryView& scene, const Triangle& tri, float b1, float b2,
+                                const Vec3& direction) {
   const AlphaMask& mask = scene.alphaMasks[tri.material];
   float alpha = mask.constant;
   if (mask.texture.index >= 0) {
     const Vec2 uv = triangleUv(scene, tri, b1, b2);
     const TextureSample s = lookupTexture(scene.texturePool(), mask.texture, uv.x, uv.y);
     alpha *= textureChannel(s, mask.channel);
+  }
+  if (mask.thinSheetIor > 0.0f) {
+    const Vec3 p0 = scene.positions[tri.v[0]];
+    const Vec3 normal = cross(scene.positions[tri.v[1]] - p0, scene.positions[tri.v[2]] - p0);
+    const float cosTheta = fabsf(dot(normal, direction)) / (length(normal) * length(direction));
+    alpha *= thinSheetReflectance(minf(cosTheta, 1.0f), mask.thinSheetIor);
   }
   return alpha;
 }
@@ -48,7 +56,7 @@ CANDELA_HDI float triangleAlpha(const GeometryView& scene, const Triangle& tri, 
 // Out of line: inlined into traversal, it slowed scenes without any mask by a tenth.
 CANDELA_HD_COLD inline bool maskedAlphaKeepsHit(const GeometryView& scene, const Triangle& tri,
                                                 float b1, float b2, const Ray& ray) {
-  const float alpha = triangleAlpha(scene, tri, b1, b2);
+  const float alpha = triangleAlpha(scene, tri, b1, b2, ray.direction);
   if (alpha >= 1.0f) return true;
   if (!(alpha > 0.0f)) return false;
   return alphaThreshold(scene, tri, ray) < alpha;

@@ -5,19 +5,10 @@
 
 #include <cmath>
 
+#include "core/dielectric_fresnel.h"
 #include "core/vec3.h"
 
 namespace candela {
-
-// cosThetaI >= 0 is measured on the incident side; eta = eta_transmitted / eta_incident.
-CANDELA_HDI float fresnelDielectric(float cosThetaI, float eta) {
-  const float sin2ThetaT = maxf(0.0f, 1.0f - cosThetaI * cosThetaI) / (eta * eta);
-  if (sin2ThetaT >= 1.0f) return 1.0f;  // total internal reflection
-  const float cosThetaT = sqrtf(1.0f - sin2ThetaT);
-  const float rParallel = (eta * cosThetaI - cosThetaT) / (eta * cosThetaI + cosThetaT);
-  const float rPerpendicular = (cosThetaI - eta * cosThetaT) / (cosThetaI + eta * cosThetaT);
-  return 0.5f * (rParallel * rParallel + rPerpendicular * rPerpendicular);
-}
 
 // A conductor of complex relative index eta + i k, per colour channel ("Optics", K. D. Moeller,
 // 1988, as in Mitsuba 3's fresnel_conductor); cosThetaI in [0, 1].

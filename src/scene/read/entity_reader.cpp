@@ -123,6 +123,13 @@ SphereDesc readSphere(const JsonValue& value, const MaterialLibrary& library,
         "\"two_sided\" (two-sided emitters are mesh faces and rectangle lights)";
     fields.require("material").fail(why);
   }
+  // Traversal lets rays through mesh faces alone (geometry/alpha_mask.h).
+  if (sphere.material.alpha.thinSheetIor > 0.0f)
+    fields.require("material")
+        .fail(
+            "a \"thin_glass\" material on a sphere; expected it on mesh faces (a thin sheet, such "
+            "as "
+            "a window pane), or \"glass\" for a solid sphere");
   fields.finish();
   return sphere;
 }

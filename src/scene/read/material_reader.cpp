@@ -13,11 +13,11 @@
 namespace candela {
 namespace {
 
-const std::vector<std::string> kTypeNames = {"diffuse", "mirror",    "glass",
-                                             "emissive", "conductor", "plastic"};
+const std::vector<std::string> kTypeNames = {"diffuse",   "mirror",  "glass",     "emissive",
+                                             "conductor", "plastic", "thin_glass"};
 // The types the seed shorthand may name: the first three.
 constexpr size_t kShorthandCount = 3;
-enum TypeIndex : size_t { kDiffuse, kMirror, kGlass, kEmissive, kConductor, kPlastic };
+enum TypeIndex : size_t { kDiffuse, kMirror, kGlass, kEmissive, kConductor, kPlastic, kThinGlass };
 
 // Every field a material may have, and which of them each type reads.
 const std::vector<std::string> kFields = {"color",     "ior",        "roughness",
@@ -30,6 +30,7 @@ const std::vector<std::vector<std::string>> kFieldsOf = {
     {"radiance", "strength", "two_sided"},                    // emissive
     {"color", "roughness", "metal", "normal_map", "bump_map"},
     {"color", "ior", "roughness", "normal_map", "bump_map"},  // plastic
+    {"ior"},                                                  // thin_glass
 };
 
 std::string notUsedBy(size_t type) {
@@ -98,7 +99,7 @@ Material readFields(JsonObject& fields, size_t type, TextureLoader& textures) {
     readEmission(fields, textures, &material);
     return material;
   }
-  const float defaultColor[] = {0.8f, 1.0f, 1.0f, 0.0f, 1.0f, 0.5f};
+  const float defaultColor[] = {0.8f, 1.0f, 1.0f, 0.0f, 1.0f, 0.5f, 1.0f};
   const std::optional<JsonValue> color = fields.get("color");
   // Glass alone takes no texture: its colour tints what passes through, not a surface.
   if (color && type != kGlass)
@@ -131,6 +132,13 @@ Material readFields(JsonObject& fields, size_t type, TextureLoader& textures) {
       material.type = type == kGlass ? MaterialType::Glass : MaterialType::Plastic;
       readRoughness(fields, textures, &material);
       if (std::optional<JsonValue> ior = fields.get("ior")) material.ior = ior->positiveNumber();
+      break;
+    case kThinGlass:
+      // What the sheet transmits passes the alpha test (geometry/alpha_mask.h); a face that
+      // stays reflects all that reaches it, as a white mirror.
+      material.type = MaterialType::Conductor;
+      if (std::optional<JsonValue> ior = fields.get("ior")) material.ior = ior->positiveNumber();
+      material.alpha.thinSheetIor = material.ior;
       break;
   }
   prepareMaterial(&material);
