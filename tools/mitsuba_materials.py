@@ -17,6 +17,11 @@ harness does for diffuse, since candela's reflect on both sides:
   plastic, roughness 0       -> plastic, int_ior = ior, ext_ior 1, diffuse_reflectance = color,
                                 nonlinear false
   plastic, roughness r       -> roughplastic, ggx, alpha = r^2, the same
+  glass with transmission_depth d and color c
+                             -> the same dielectric, white, with an `interior` homogeneous
+                                medium of sigma_t = -ln(c) / d (its largest as `scale`) and
+                                albedo 0 (spheres), rendered by
+                                `volpath` instead of `path`
   thin_glass                 -> thindielectric, int_ior = ior, ext_ior 1 (Mitsuba's shadow rays stop
                                 at it where candela's pass: the same image, Mitsuba's noisier)
   (a roughness r > 0 whose alpha = r^2 is below 0.001 is smooth in candela, docs/scene-format.md's
@@ -29,6 +34,7 @@ harness does for diffuse, since candela's reflect on both sides:
   only: the mirroring and the turn agree with candela's lookup up to whole repeats.
 """
 import atexit
+import math
 import os
 import shutil
 import sys
@@ -41,7 +47,7 @@ import mitsuba_envmap  # noqa: E402  (sets up the shared harness's path)
 import candela_scene as cs  # noqa: E402
 import mitsuba_ref as mr  # noqa: E402
 
-cs.KNOWN['material'] |= {'roughness', 'metal'}
+cs.KNOWN['material'] |= {'roughness', 'metal', 'transmission_depth'}
 harness_make_mat = cs._make_mat
 harness_bsdf_dict = mr.bsdf_dict
 
@@ -98,6 +104,11 @@ def make_mat(ctx, t, fields, path):
     mat = harness_make_mat(ctx, t, fields, path)
     if t == 'glass':
         mat['roughness'] = roughness
+        if 'transmission_depth' in fields:
+            depth = ctx.number(fields['transmission_depth'], path + '.transmission_depth',
+                               positive=True)
+            mat['sigma'] = [-math.log(c) / depth for c in mat['color']]
+            mat['color'] = ctx.color(1.0, path + '.color')
     return mat
 
 
@@ -138,6 +149,13 @@ SPHERE_TO_WORLD = [[0, 1, 0], [0, 0, 1], [1, 0, 0]]
 
 def scene_dict(sc, *args, **kwargs):
     d = harness_scene_dict(sc, *args, **kwargs)
+    for i, s in enumerate(sc['spheres']):
+        if 'sigma' in s['mat']:
+            top = max(s['mat']['sigma'])  # Mitsuba's RGB values must lie in [0, 1]: scale them
+            d[f'sphere{i}']['interior'] = {
+                'type': 'homogeneous', 'sigma_t': mr.rgb([c / top for c in s['mat']['sigma']]),
+                'scale': top, 'albedo': 0.0}
+            d['integrator']['type'] = 'volpath'
     for i, s in enumerate(sc['spheres']):
         if textured(s['mat']):
             sphere = d[f'sphere{i}']

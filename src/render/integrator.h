@@ -17,6 +17,7 @@
 #include "core/float_error.h"
 #include "core/sobol_sampler.h"
 #include "geometry/surface.h"
+#include "render/absorption.h"
 #include "render/aov.h"
 #include "render/bsdf.h"
 #include "render/light_path.h"
@@ -143,6 +144,10 @@ struct PathState {
   // The product of eta^2 over the transmissions so far: Russian roulette judges the throughput
   // without the 1 / eta^2 radiance scaling, which says nothing about the path's worth.
   float etaScale = 1.0f;
+  // The absorption coefficient of the medium the ray travels in: the inside of glass with a
+  // transmission_depth, entered and left by the transmissions through its surface; 0 outside
+  // (the camera and the lights are outside every absorbing glass).
+  Vec3 absorption = Vec3(0.0f);
   Vec3 bouncePoint = Vec3(0.0f), bounceHemisphere = Vec3(0.0f);  // the last bounce's
   // The last bounce's geometric normal, and the density by area with which the bounce before
   // found its point where a light vertex could have been connected to instead (0 where not):
@@ -194,6 +199,9 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
   lights->count = 0;  // the slots may hold the last interaction's queries
   PathState& st = *path;
   const uint32_t depth = st.depth++;
+  // Rays are unit length, so the hit's t is the distance travelled through the medium.
+  if (!isBlack(st.absorption))
+    st.throughput *= beerTransmittance(st.absorption, found ? hit.t : kInfinity);
   if (!found) {
     const int32_t light = st.specularBounce ? -1 : scene.environment.light;
     const float weight =
@@ -322,6 +330,7 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
     b.depth = st.depth;
     b.maxDepth = st.maxDepth;
     b.etaScale = st.etaScale * reflected.eta * reflected.eta;
+    b.absorption = st.absorption;
     b.rng = rng.branch();
     ++counters.bounce;
   } else if (!sampleBsdf(bsdf, uc, u1, u2, &bs)) {
@@ -329,6 +338,10 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
   }
   st.throughput *= bs.weight;
   st.etaScale *= bs.eta * bs.eta;
+  // A transmission enters the surface's inside, against its outward normal, or leaves it.
+  const float outward = dot(bs.wi, sp.ng);
+  if (transmits(bsdf) && outward * dot(wo, sp.ng) < 0.0f)
+    st.absorption = outward < 0.0f ? m.absorption : Vec3(0.0f);
   st.specularBounce = bs.delta;
   st.bsdfPdf = bs.pdf;
   st.bouncePoint = sp.p;
@@ -356,6 +369,7 @@ CANDELA_HDI bool resumeBranch(PathState* path, SampleStream* rng) {
   path->depth = b.depth;
   path->maxDepth = b.maxDepth;
   path->etaScale = b.etaScale;
+  path->absorption = b.absorption;
   path->specularBounce = true;  // a delta lobe: what it finds counts fully
   path->bsdfPdf = 0.0f;
   path->bounceArrivalPdf = 0.0f;

@@ -37,6 +37,9 @@ struct Material {
   // transmission tint or plastic base colour.
   Vec3 color{0.8f};
   float ior = 1.5f;        // glass and plastic: relative index, outside -> inside
+  // Glass: the absorption coefficient of its inside, per unit length and colour channel (Beer's
+  // law, from "transmission_depth"); 0 where its `color` tints each crossing instead.
+  Vec3 absorption{0.0f};
   float roughness = 0.0f;  // conductor, glass, plastic: in [0, 1], alpha = roughness^2
   // Conductor, glass, plastic: a texture whose value (luminance, read linearly) is the roughness
   // in place of `roughness`; the material is then rough everywhere (render/microfacet.h).

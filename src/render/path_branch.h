@@ -33,6 +33,7 @@ struct PathBranch {
   uint32_t depth;  // of its next interaction
   uint32_t maxDepth;
   float etaScale;
+  Vec3 absorption;  // of the medium it starts in (PathState::absorption)
   SampleStream rng;
 };
 

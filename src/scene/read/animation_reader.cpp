@@ -243,6 +243,9 @@ void checkUsed(const JsonValue& property, const AnimTrack& track, const SceneDes
                                        ? &*scene.objects[track.index].material
                                        : nullptr);
     if (m && m->type == MaterialType::Emissive) unused("an emissive material");
+    if (m && m->alpha.thinSheetIor > 0.0f) unused("a \"thin_glass\" material");
+    if (m && !isBlack(m->absorption))
+      unused("glass with a \"transmission_depth\" (its colour sets what it absorbs, once)");
   }
 }
 
