@@ -16,6 +16,7 @@
 #include "render_test_util.h"
 #include "scene/flatten.h"
 #include "scene/read/scene_loader.h"
+#include "temp_dir.h"
 #include "texture_test_util.h"
 
 namespace candela {
@@ -117,6 +118,71 @@ TEST_P(Alpha, MaskTextures) {
   EXPECT_EQ(renderMean("map_d white.png\n", GetParam(), dir), 0.0);
   // The constant and the texture multiply.
   EXPECT_NEAR(renderMean("d 0\nmap_d white.png\n", GetParam(), dir), kL0, 2e-3 * kL0);
+}
+
+// The view of renderView with the blocker an object of its own whose JSON material is `blocker`
+// (a black diffuse surface with an "alpha").
+double renderJsonMean(const std::string& blocker, CpuEngine engine, const test::TempDir& dir) {
+  dir.write("floor.obj", "v -10 0 -10\nv 10 0 -10\nv 10 0 10\nv -10 0 10\nf 4 3 2 1\n");
+  dir.write("blocker.obj",
+            "v -3 5 -3\nv 3 5 -3\nv 3 5 3\nv -3 5 3\n"
+            "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nf 4/4 3/3 2/2 1/1\n");
+  const std::string json = R"({
+    "camera": {"width": 32, "height": 32, "fov": 1, "spp": 4, "position": [0, 20, 0],
+               "look_at": [0, 0, 0], "up": [0, 0, -1]},
+    "render": {"max_depth": 1},
+    "objects": [{"file": "floor.obj", "color": 0.5},
+                {"file": "blocker.obj", "material": )" +
+                           blocker + R"(}],
+    "lights": [{"position": [0, 10, 0], "intensity": 7896}]
+  })";
+  SceneDesc desc = parseSceneText(json, "alpha.json", dir.path());
+  if (engine == CpuEngine::Embree) desc.ownBvh = OwnBvh::None;
+  const SceneData data = flattenScene(desc);
+  CpuRenderer renderer(engine);
+  renderer.setScene(data, SceneChange::Structure);
+  return test::regionStats(renderer.render(RenderOptions{}).image, 0, 0, 32, 32, 0).mean;
+}
+
+// A JSON material's "alpha" masks as MTL's d and map_d do: a number, or a texture read from its
+// alpha channel where it has one, else from its luminance, or from the channel it names.
+TEST_P(Alpha, JsonMaterialsTakeAnAlpha) {
+  ASSERT_TRUE(test::writeTestPng(dir.file("clear.png"), 1, 1, 4, {255, 255, 255, 0}));
+  ASSERT_TRUE(test::writeTestPng(dir.file("white.png"), 1, 1, 1, {255}));
+  ASSERT_TRUE(test::writeTestPng(dir.file("black.png"), 1, 1, 1, {0}));
+  const auto mean = [&](const std::string& alpha) {
+    return renderJsonMean(R"({"type": "diffuse", "color": 0, "alpha": )" + alpha + "}", GetParam(),
+                          dir);
+  };
+  EXPECT_NEAR(mean("0"), kL0, 2e-3 * kL0);
+  EXPECT_EQ(mean("1"), 0.0);
+  EXPECT_NEAR(mean("0.5") / kL0, 0.25, 4 * 0.0068);  // as HalfPassesHalfTheRays
+  EXPECT_NEAR(mean(R"({"texture": "clear.png"})"), kL0, 2e-3 * kL0);
+  EXPECT_NEAR(mean(R"({"texture": "black.png"})"), kL0, 2e-3 * kL0);
+  EXPECT_EQ(mean(R"({"texture": "white.png"})"), 0.0);
+  EXPECT_EQ(mean(R"({"texture": "clear.png", "channel": "r"})"), 0.0);  // its red is 1
+  EXPECT_NEAR(renderJsonMean(R"({"type": "conductor", "color": 0, "alpha": 0})", GetParam(), dir),
+              kL0, 2e-3 * kL0);
+}
+
+TEST(AlphaErrors, JsonAlphaIsRefusedWhereItCannotBe) {
+  const auto error = [](const std::string& sphere) {
+    return test::loadError(R"({"camera": {}, "spheres": [)" + sphere + "]}", ".");
+  };
+  EXPECT_EQ(error(R"({"position": [0, 0, 0], "radius": 1,
+                      "material": {"type": "diffuse", "alpha": 0.5}})"),
+            "test.json: spheres[0].material: a material with an \"alpha\" on a sphere; expected "
+            "it on mesh faces (spheres are not masked)");
+  EXPECT_EQ(error(R"({"position": [0, 0, 0], "radius": 1,
+                      "material": {"type": "diffuse", "alpha": 1.5}})"),
+            "test.json: spheres[0].material.alpha: expected an alpha in [0, 1], got 1.5");
+  EXPECT_EQ(error(R"({"position": [0, 0, 0], "radius": 1,
+                      "material": {"type": "emissive", "radiance": 1, "alpha": 0.5}})"),
+            "test.json: spheres[0].material.alpha: not used by an \"emissive\" material");
+  EXPECT_EQ(error(R"({"position": [0, 0, 0], "radius": 1,
+                      "material": {"type": "diffuse", "alpha": {"texture": "x.png", "height": 2}}})"),
+            "test.json: spheres[0].material.alpha.height: unknown key, expected one of "
+            "\"texture\", \"scale\", \"channel\"");
 }
 
 INSTANTIATE_TEST_SUITE_P(Engines, Alpha, ::testing::ValuesIn(engines()),

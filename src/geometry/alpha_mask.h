@@ -19,7 +19,7 @@ namespace candela {
 struct AlphaMask {
   float constant = 1.0f;  // in [0, 1]
   TextureRef texture;     // index -1: none
-  uint32_t channel = 3;   // of the texture (core/texture.h, textureChannel): 0 (R) or 3 (A)
+  uint32_t channel = 3;   // of the texture (core/texture.h, textureChannel): R, A or luminance
   float thinSheetIor = 0.0f;  // above 0: a thin sheet of this relative index (the face reflects)
 };
 

@@ -124,12 +124,15 @@ SphereDesc readSphere(const JsonValue& value, const MaterialLibrary& library,
     fields.require("material").fail(why);
   }
   // Traversal lets rays through mesh faces alone (geometry/alpha_mask.h).
-  if (sphere.material.alpha.thinSheetIor > 0.0f)
-    fields.require("material")
-        .fail(
-            "a \"thin_glass\" material on a sphere; expected it on mesh faces (a thin sheet, such "
-            "as "
-            "a window pane), or \"glass\" for a solid sphere");
+  if (isMasked(sphere.material.alpha)) {
+    const std::string why =
+        sphere.material.alpha.thinSheetIor > 0.0f
+            ? "a \"thin_glass\" material on a sphere; expected it on mesh faces (a thin sheet, "
+              "such as a window pane), or \"glass\" for a solid sphere"
+            : "a material with an \"alpha\" on a sphere; expected it on mesh faces (spheres are "
+              "not masked)";
+    fields.require("material").fail(why);
+  }
   fields.finish();
   return sphere;
 }

@@ -21,17 +21,17 @@ constexpr size_t kShorthandCount = 3;
 enum TypeIndex : size_t { kDiffuse, kMirror, kGlass, kEmissive, kConductor, kPlastic, kThinGlass };
 
 // Every field a material may have, and which of them each type reads.
-const std::vector<std::string> kFields = {
-    "color",    "ior",       "roughness",  "metal",    "radiance",
-    "strength", "two_sided", "normal_map", "bump_map", "transmission_depth"};
+const std::vector<std::string> kFields = {"color",    "ior",      "roughness",         "metal",
+                                          "radiance", "strength", "two_sided",         "normal_map",
+                                          "bump_map", "alpha",    "transmission_depth"};
 const std::vector<std::vector<std::string>> kFieldsOf = {
-    {"color", "normal_map", "bump_map"},                                            // diffuse
-    {"color", "normal_map", "bump_map"},                                            // mirror
-    {"color", "ior", "roughness", "normal_map", "bump_map", "transmission_depth"},  // glass
-    {"radiance", "strength", "two_sided"},                                          // emissive
-    {"color", "roughness", "metal", "normal_map", "bump_map"},
-    {"color", "ior", "roughness", "normal_map", "bump_map"},  // plastic
-    {"ior"},                                                  // thin_glass
+    {"color", "normal_map", "bump_map", "alpha"},  // diffuse
+    {"color", "normal_map", "bump_map", "alpha"},  // mirror
+    {"color", "ior", "roughness", "normal_map", "bump_map", "alpha", "transmission_depth"},
+    {"radiance", "strength", "two_sided"},  // emissive
+    {"color", "roughness", "metal", "normal_map", "bump_map", "alpha"},
+    {"color", "ior", "roughness", "normal_map", "bump_map", "alpha"},  // plastic
+    {"ior"},                                                           // thin_glass
 };
 
 std::string notUsedBy(size_t type) {
@@ -133,6 +133,8 @@ Material readFields(JsonObject& fields, size_t type, TextureLoader& textures) {
     fields.fail("give a material a \"normal_map\" or a \"bump_map\", not both");
   if (normalMap) material.normalMap = readNormalMap(*normalMap, textures);
   if (bumpMap) material.normalMap = readBumpMap(*bumpMap, textures, &material.bumpHeight);
+  if (std::optional<JsonValue> alpha = fields.get("alpha"))
+    material.alpha = readAlpha(*alpha, textures);
   switch (type) {
     case kDiffuse:
       material.type = MaterialType::Diffuse;

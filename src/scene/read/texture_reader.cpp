@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <exception>
 #include <filesystem>
+#include <optional>
 #include <vector>
 
 #include "core/texture.h"
@@ -92,15 +93,24 @@ LoadedTexture TextureLoader::load(const std::string& path, TextureUse use) {
 
 namespace {
 
-// A texture object {"texture": file, "scale": [su, sv]}, its file read for `use`; with `height`,
-// a bump map's, which may also give "height" (default 1, not 0) into *height; with `channel`, a
-// scalar texture's, which may name the channel it is read from ("channel", into *channel).
-TextureRef readTextureObject(const JsonValue& value, TextureLoader& textures, TextureUse use,
-                             const std::string& expected, float* height = nullptr,
-                             uint32_t* channel = nullptr) {
+// The keys a texture object may have beside "texture" and "scale".
+enum TextureKeys : unsigned { kNoMoreKeys = 0, kHeightKey = 1, kChannelKey = 2 };
+
+// What a texture object gives: the texture, and the keys it was allowed to have.
+struct TextureObject {
+  TextureRef ref;
+  float height = 1.0f;              // "height" (bump maps): a texel of value 1's, in scene units
+  std::optional<uint32_t> channel;  // "channel" (scalar textures) where given: core/texture.h's
+  bool hasAlpha = false;            // whether the image has an alpha channel
+};
+
+// A texture object {"texture": file, "scale": [su, sv], ...}, its file read for `use`, with the
+// further keys that `keys` allows.
+TextureObject readTextureObject(const JsonValue& value, TextureLoader& textures, TextureUse use,
+                                const std::string& expected, unsigned keys = kNoMoreKeys) {
   std::vector<std::string> known = {"texture", "scale"};
-  if (height) known.push_back("height");
-  if (channel) known.push_back("channel");
+  if (keys & kHeightKey) known.push_back("height");
+  if (keys & kChannelKey) known.push_back("channel");
   JsonObject fields(value, std::move(known), expected);
   const JsonValue file = fields.require("texture");
   const std::string written = file.string();
@@ -108,7 +118,8 @@ TextureRef readTextureObject(const JsonValue& value, TextureLoader& textures, Te
   const std::filesystem::path path(written);
   const std::string resolved =
       path.is_absolute() ? written : (std::filesystem::path(textures.baseDir()) / path).string();
-  TextureRef ref;
+  TextureObject object;
+  TextureRef& ref = object.ref;
   if (std::optional<JsonValue> scale = fields.get("scale")) {
     const std::string expectation = "an array of 2 finite, non-zero numbers";
     if (!scale->json().is_array() || scale->json().size() != 2) scale->failExpected(expectation);
@@ -118,53 +129,70 @@ TextureRef readTextureObject(const JsonValue& value, TextureLoader& textures, Te
     if (ref.scaleU == 0) e[0].failExpected("a finite, non-zero number");
     if (ref.scaleV == 0) e[1].failExpected("a finite, non-zero number");
   }
-  if (height) {
-    *height = 1.0f;
-    if (std::optional<JsonValue> given = fields.get("height")) {
-      *height = given->number("a finite, non-zero number");
-      if (*height == 0.0f) given->failExpected("a finite, non-zero number");
-    }
+  if (std::optional<JsonValue> given = fields.get("height")) {
+    object.height = given->number("a finite, non-zero number");
+    if (object.height == 0.0f) given->failExpected("a finite, non-zero number");
   }
-  if (channel) {
-    // In the order of Material::roughnessChannel's values.
-    *channel = kLuminanceChannel;
-    if (std::optional<JsonValue> given = fields.get("channel"))
-      *channel = uint32_t(given->choice({"r", "g", "b", "a", "luminance"}));
-  }
+  // In the order of core/texture.h's channel numbers.
+  if (std::optional<JsonValue> given = fields.get("channel"))
+    object.channel = uint32_t(given->choice({"r", "g", "b", "a", "luminance"}));
   fields.finish();
   try {
-    ref.index = textures.load(resolved, use).index;
+    const LoadedTexture loaded = textures.load(resolved, use);
+    ref.index = loaded.index;
+    object.hasAlpha = loaded.hasAlpha;
   } catch (const SceneError& e) {
     file.fail(e.what());
   }
-  return ref;
+  return object;
 }
 
 }  // namespace
 
 Vec3 readTexturedColour(const JsonValue& value, TextureLoader& textures, TextureRef* texture) {
   if (!value.json().is_object()) return value.colour();
-  *texture = readTextureObject(value, textures, TextureUse::Color, "a colour or a texture object");
+  *texture =
+      readTextureObject(value, textures, TextureUse::Color, "a colour or a texture object").ref;
   return Vec3(1.0f);
 }
 
 TextureRef readNormalMap(const JsonValue& value, TextureLoader& textures) {
   if (!value.json().is_object())
     value.failExpected("a texture object {\"texture\": file, \"scale\": [su, sv]}");
-  return readTextureObject(value, textures, TextureUse::Linear, "a texture object");
+  return readTextureObject(value, textures, TextureUse::Linear, "a texture object").ref;
 }
 
 TextureRef readBumpMap(const JsonValue& value, TextureLoader& textures, float* height) {
   const std::string expected =
       "a texture object {\"texture\": file, \"scale\": [su, sv], \"height\": h}";
   if (!value.json().is_object()) value.failExpected(expected);
-  return readTextureObject(value, textures, TextureUse::Linear, expected, height);
+  const TextureObject map =
+      readTextureObject(value, textures, TextureUse::Linear, expected, kHeightKey);
+  *height = map.height;
+  return map.ref;
 }
 
 TextureRef readRoughnessTexture(const JsonValue& value, TextureLoader& textures,
                                 uint32_t* channel) {
-  return readTextureObject(value, textures, TextureUse::Linear,
-                           "a roughness in [0, 1] or a texture object", nullptr, channel);
+  const TextureObject map =
+      readTextureObject(value, textures, TextureUse::Linear,
+                        "a roughness in [0, 1] or a texture object", kChannelKey);
+  *channel = map.channel.value_or(kLuminanceChannel);
+  return map.ref;
+}
+
+AlphaMask readAlpha(const JsonValue& value, TextureLoader& textures) {
+  AlphaMask mask;
+  if (!value.json().is_object()) {
+    mask.constant = value.number("an alpha in [0, 1] or a texture object");
+    if (!(mask.constant >= 0.0f && mask.constant <= 1.0f)) value.failExpected("an alpha in [0, 1]");
+    return mask;
+  }
+  const TextureObject map = readTextureObject(
+      value, textures, TextureUse::Linear, "an alpha in [0, 1] or a texture object", kChannelKey);
+  mask.texture = map.ref;
+  mask.channel = map.channel.value_or(map.hasAlpha ? 3u : kLuminanceChannel);
+  return mask;
 }
 
 }  // namespace candela

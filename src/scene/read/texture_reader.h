@@ -66,4 +66,9 @@ TextureRef readBumpMap(const JsonValue& value, TextureLoader& textures, float* h
 // (Material::roughnessChannel).
 TextureRef readRoughnessTexture(const JsonValue& value, TextureLoader& textures, uint32_t* channel);
 
+// A material's "alpha": a number in [0, 1], or a texture object whose values are read linearly
+// from the channel that "channel" names, by default the image's alpha channel where it has one
+// and its luminance where it has none (a grey mask).
+AlphaMask readAlpha(const JsonValue& value, TextureLoader& textures);
+
 }  // namespace candela
