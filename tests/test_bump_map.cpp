@@ -16,6 +16,7 @@
 #include "scene/dvec3.h"
 #include "scene/read/obj_loader.h"
 #include "shading_normal_test_util.h"
+#include "texture_test_util.h"
 
 namespace candela {
 namespace {
@@ -152,6 +153,38 @@ TEST(BumpMap, MtlBumpReadsHeightsWithItsMultiplier) {
   EXPECT_EQ(error("bump -clamp on h.pfm"),
             "test.json: objects[0].file: m.mtl:2: bump option \"-clamp\" is not supported (only "
             "-s and -bm)");
+}
+
+// Blender's exporter writes tangent-space normal maps as `map_Bump`: a bump map whose texels are
+// unit normals, not grey, is read as the normal map it is (the same material as `norm` makes),
+// and the scene says so; grey heights, even ones whose texels happen to decode to unit length,
+// stay heights.
+TEST(BumpMap, MtlBumpOfUnitNormalsIsReadAsANormalMap) {
+  const fs::path dir = test::mapTestFolder("bump_map_normals");
+  // 2 x 2 normals tilted every way by 30 degrees, and a flat one: (0.5 n + 0.5) in 8 bits.
+  ASSERT_TRUE(test::writeTestPng((dir / "n.png").string(), 2, 2, 3,
+                                 {191, 128, 238, 64, 128, 238, 128, 191, 238, 128, 128, 255}));
+  ASSERT_TRUE(test::writeTestPng((dir / "grey.png").string(), 1, 1, 3, {204, 204, 204}));
+  std::ofstream(dir / "m.obj") << "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\n"
+                                  "vt 0 1\nusemtl a\nf 1/1 2/2 3/3\nusemtl b\nf 1/1 2/2 3/3\n"
+                                  "usemtl c\nf 1/1 2/2 3/3\n";
+  std::ofstream(dir / "m.mtl") << "newmtl a\nmap_Bump -bm 0.5 n.png\nnewmtl b\nnorm n.png\n"
+                                  "newmtl c\nbump grey.png\n";
+  const std::string json =
+      R"({"camera": {"width": 4, "height": 4}, "objects": [{"file": "m.obj"}]})";
+  const SceneDesc desc = parseSceneText(json, "s.json", dir.string());
+  EXPECT_EQ(desc.warnings,
+            std::vector<std::string>{
+                "s.json: objects[0].file: m.mtl:2: \"map_Bump\" names n.png, whose texels are "
+                "unit normals: read as a tangent-space normal map (as Blender writes them there), "
+                "its -bm not used; write it as \"norm\" to say so"});
+  const SceneData data = test::loadTestScene(json, dir.string());
+  ASSERT_EQ(data.materials.size(), 3u);
+  EXPECT_EQ(data.materials[0].bumpHeight, 0.0f);
+  EXPECT_EQ(data.materials[0].normalMap.index, data.materials[1].normalMap.index);
+  EXPECT_GE(data.materials[0].normalMap.index, 0);
+  EXPECT_EQ(data.materials[1].bumpHeight, 0.0f);
+  EXPECT_EQ(data.materials[2].bumpHeight, 1.0f);  // grey 0.8 decodes to length 1.04, yet is grey
 }
 
 TEST(BumpMap, TheSceneFormatRefusesWhatItCannotBe) {

@@ -13,6 +13,7 @@
 
 #include "render/material_prepare.h"
 #include "scene/read/mtl_library.h"
+#include "scene/read/normal_map_guess.h"
 #include "scene/read/obj_scanner.h"
 #include "scene/read/texel_check.h"
 #include "scene/read/text_file.h"
@@ -160,7 +161,7 @@ float roughnessOfPhongExponent(float ns) {
 // where there is none `bump` (or `map_Bump`) a bump map of heights, -bm its height.
 std::vector<Material> mtlMaterials(const std::vector<tinyobj::material_t>& materials,
                                    const MtlLibrary& library, const std::string& label,
-                                   TextureLoader& textures) {
+                                   TextureLoader& textures, std::vector<std::string>* warnings) {
   std::vector<Material> result;
   for (size_t i = 0; i < materials.size(); ++i) {
     const tinyobj::material_t& material = materials[i];
@@ -209,6 +210,17 @@ std::vector<Material> mtlMaterials(const std::vector<tinyobj::material_t>& mater
         desc.bumpHeight = 1.0f;
         desc.normalMap = mtlTexture(*s.bump, s.bumpKeyword.c_str(), TextureUse::Linear, textures,
                                     nullptr, &desc.bumpHeight);
+        const TextureDesc& map = textures.texture(desc.normalMap.index);
+        if (holdsUnitNormals(map)) {
+          warnings->push_back(
+              s.bump->file + ":" + std::to_string(s.bump->line) + ": \"" + s.bumpKeyword +
+              "\" names " + std::filesystem::path(map.file).filename().string() +
+              ", whose texels are unit normals: read as a tangent-space normal map (as Blender "
+              "writes them there)" +
+              (desc.bumpHeight != 1.0f ? ", its -bm not used" : "") +
+              "; write it as \"norm\" to say so");
+          desc.bumpHeight = 0.0f;
+        }
       }
     }
     const Vec3 specular = mtlColour(material.specular, "Ks", material.name, label);
@@ -253,7 +265,7 @@ MeshDesc buildMesh(const tinyobj::ObjReader& reader, const MtlLibrary& library,
   mesh.uvs.reserve(attrib.texcoords.size() / 2);
   for (size_t i = 0; i < attrib.texcoords.size() / 2; ++i)
     mesh.uvs.push_back(Vec2(attrib.texcoords[2 * i], attrib.texcoords[2 * i + 1]));
-  mesh.materials = mtlMaterials(reader.GetMaterials(), library, label, textures);
+  mesh.materials = mtlMaterials(reader.GetMaterials(), library, label, textures, &mesh.warnings);
 
   const auto mtlCount = static_cast<int>(mesh.materials.size());
   const auto fallback = static_cast<uint32_t>(mesh.materials.size());
@@ -361,8 +373,11 @@ MeshDesc loadObjFile(const std::string& path, const std::string& label, TextureL
   MeshDesc mesh = buildMesh(reader, library, label, textures);
   if (mesh.triangles.empty()) throw SceneError(label + ": expected at least one face, got none");
   mesh.materialFiles = library.files;
-  mesh.warnings = materialWarnings(scan, library, reader.GetMaterials(), label);
-  for (std::string& warning : bumpWarnings(library)) mesh.warnings.push_back(std::move(warning));
+  std::vector<std::string> warnings = materialWarnings(scan, library, reader.GetMaterials(), label);
+  for (std::string& warning : bumpWarnings(library)) warnings.push_back(std::move(warning));
+  // Then those of the materials (normal maps written as bump maps).
+  warnings.insert(warnings.end(), mesh.warnings.begin(), mesh.warnings.end());
+  mesh.warnings = std::move(warnings);
   return mesh;
 }
 
