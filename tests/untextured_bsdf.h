@@ -6,7 +6,7 @@
 namespace candela {
 
 inline Bsdf untexturedBsdf(const Material& m, const Vec3& wo, const Vec3& ng, const Vec3& ns) {
-  return makeBsdf(SceneView(), m, m.color, m.roughness, wo, ng, ns);
+  return makeBsdf(SceneView(), m, m.color, m.roughness, wo, ng, ns, kAllChannels);
 }
 
 }  // namespace candela

@@ -17,6 +17,7 @@
 #include "render/bsdf_diffuse.h"
 #include "render/bsdf_plastic.h"
 #include "render/bsdf_sample.h"
+#include "render/dispersion.h"
 #include "render/material.h"
 #include "render/scene_view.h"
 
@@ -45,9 +46,11 @@ struct Bsdf {
 };
 
 // The BSDF of material m at a point of colour `color` and roughness `roughness` (its textures'
-// there: render/surface_color.h), seen from wo.
+// there: render/surface_color.h), seen from wo, for a path that carries `channel`
+// (render/dispersion.h).
 CANDELA_HDI Bsdf makeBsdf(const SceneView& scene, const Material& m, const Vec3& color,
-                          float roughness, const Vec3& wo, const Vec3& ng, const Vec3& ns) {
+                          float roughness, const Vec3& wo, const Vec3& ng, const Vec3& ns,
+                          int32_t channel) {
   const float side = sideOf(wo, ng);
   const Frame frame(facingNormal(wo, ng, ns));
   // A diffuse surface, the most common, never reads wo.
@@ -64,7 +67,7 @@ CANDELA_HDI Bsdf makeBsdf(const SceneView& scene, const Material& m, const Vec3&
           ng,
           side,
           frame.toLocal(wo),
-          side > 0.0f ? m.ior : 1.0f / m.ior};
+          side > 0.0f ? iorFor(m, channel) : 1.0f / iorFor(m, channel)};
 }
 
 // Whether some lobe has a density (next-event estimation and MIS apply), rather than only mirror

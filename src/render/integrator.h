@@ -148,6 +148,9 @@ struct PathState {
   // transmission_depth, entered and left by the transmissions through its surface; 0 outside
   // (the camera and the lights are outside every absorbing glass).
   Vec3 absorption = Vec3(0.0f);
+  // The one colour channel the path carries since it met dispersive glass (render/dispersion.h),
+  // or kAllChannels.
+  int32_t channel = kAllChannels;
   Vec3 bouncePoint = Vec3(0.0f), bounceHemisphere = Vec3(0.0f);  // the last bounce's
   // The last bounce's geometric normal, and the density by area with which the bounce before
   // found its point where a light vertex could have been connected to instead (0 where not):
@@ -281,13 +284,19 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
   const Vec3 color = surfaceColor(scene, m, hit, sp);
   if constexpr (kAovs)
     if (albedoHere) first->albedo = aovAlbedo(m, color);
+  if (isDispersive(m) && st.channel == kAllChannels) {
+    st.channel = int32_t(minf(rng.next1D() * 3.0f, 2.0f));
+    Vec3 kept(0.0f);
+    kept[st.channel] = 3.0f;
+    st.throughput *= kept;
+  }
   const Bsdf bsdf =
-      makeBsdf(scene, m, color, surfaceRoughness(scene, m, hit, sp), wo, sp.ng, sp.ns);
+      makeBsdf(scene, m, color, surfaceRoughness(scene, m, hit, sp), wo, sp.ng, sp.ns, st.channel);
   const Vec3 hemisphere = reflectingHemisphere(bsdf);
   const bool smooth = hasSmoothLobe(m);
   float arrivalPdf = 0.0f;
   if (smooth) {
-    if (st.connectable && !st.specularBounce) {
+    if (st.connectable && !st.specularBounce && holdsLightVertex(m)) {
       const Vec3 back = st.bouncePoint - sp.p;
       const float dist2 = dot(back, back);
       arrivalPdf = st.bsdfPdf * fabsf(dot(sp.ng, back)) / (dist2 * sqrtf(dist2));
@@ -331,6 +340,7 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
     b.maxDepth = st.maxDepth;
     b.etaScale = st.etaScale * reflected.eta * reflected.eta;
     b.absorption = st.absorption;
+    b.channel = st.channel;
     b.rng = rng.branch();
     ++counters.bounce;
   } else if (!sampleBsdf(bsdf, uc, u1, u2, &bs)) {
@@ -370,6 +380,7 @@ CANDELA_HDI bool resumeBranch(PathState* path, SampleStream* rng) {
   path->maxDepth = b.maxDepth;
   path->etaScale = b.etaScale;
   path->absorption = b.absorption;
+  path->channel = b.channel;
   path->specularBounce = true;  // a delta lobe: what it finds counts fully
   path->bsdfPdf = 0.0f;
   path->bounceArrivalPdf = 0.0f;

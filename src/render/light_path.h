@@ -38,8 +38,14 @@
 
 namespace candela {
 
-// The first surface a light subpath reaches, where it can be connected: a surface with a smooth
-// lobe that does not emit.
+// Whether a light subpath's first hit on material m is a light vertex: a surface with a smooth
+// lobe that does not emit, and not dispersive glass, whose lobe depends on the colour channel
+// that the camera path chooses after the subpath is traced (render/dispersion.h).
+CANDELA_HDI bool holdsLightVertex(const Material& m) {
+  return !isEmissive(m) && hasSmoothLobe(m) && !isDispersive(m);
+}
+
+// The first surface a light subpath reaches, where it can be connected (holdsLightVertex).
 struct LightVertex {
   SurfacePoint sp;
   Vec3 color;    // the surface's colour there (textures included)
@@ -185,7 +191,7 @@ CANDELA_HDI void traceLightVertex(const SceneView& scene, const Tracer& tracer, 
   if (!tracer.closest(ray, &hit)) return;
   SurfacePoint sp = surfaceAt(scene, ray, hit);
   const Material& m = scene.materials[sp.material];
-  if (isEmissive(m) || !hasSmoothLobe(m)) return;
+  if (!holdsLightVertex(m)) return;
   if (m.normalMap.index >= 0) sp.ns = mappedNormal(scene, m, hit, sp, -ray.direction);
   lv->sp = sp;
   lv->color = surfaceColor(scene, m, hit, sp);
@@ -234,7 +240,8 @@ CANDELA_HDI void connectLightVertex(const SceneView& scene, LightVertex* vertex,
   const Vec3 fHere = evalBsdf(bsdf, wi, &pdfHere);
   if (isBlack(fHere)) return;
   const Material& m = scene.materials[lv.sp.material];
-  const Bsdf there = makeBsdf(scene, m, lv.color, lv.roughness, -wi, lv.sp.ng, lv.sp.ns);
+  const Bsdf there =
+      makeBsdf(scene, m, lv.color, lv.roughness, -wi, lv.sp.ng, lv.sp.ns, kAllChannels);
   float pdfThere;
   const Vec3 fThere = evalBsdf(there, lv.toLight, &pdfThere);
   const float cosIn = fabsf(dot(lv.sp.ng, lv.toLight)), cosOut = fabsf(dot(lv.sp.ng, wi));

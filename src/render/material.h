@@ -40,6 +40,9 @@ struct Material {
   // Glass: the absorption coefficient of its inside, per unit length and colour channel (Beer's
   // law, from "transmission_depth"); 0 where its `color` tints each crossing instead.
   Vec3 absorption{0.0f};
+  // Glass with an Abbe number: its index in each colour channel (render/dispersion.h); 0 where
+  // it has the one index `ior`.
+  Vec3 channelIor{0.0f};
   float roughness = 0.0f;  // conductor, glass, plastic: in [0, 1], alpha = roughness^2
   // Conductor, glass, plastic: a texture whose value (luminance, read linearly) is the roughness
   // in place of `roughness`; the material is then rough everywhere (render/microfacet.h).

@@ -34,6 +34,7 @@ struct PathBranch {
   uint32_t maxDepth;
   float etaScale;
   Vec3 absorption;  // of the medium it starts in (PathState::absorption)
+  int32_t channel;  // the colour channel it carries (PathState::channel)
   SampleStream rng;
 };
 

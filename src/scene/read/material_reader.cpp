@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "render/material_prepare.h"
+#include "scene/cauchy_index.h"
 #include "scene/read/did_you_mean.h"
 #include "scene/read/metal_table.h"
 #include "scene/read/texel_check.h"
@@ -21,13 +22,13 @@ constexpr size_t kShorthandCount = 3;
 enum TypeIndex : size_t { kDiffuse, kMirror, kGlass, kEmissive, kConductor, kPlastic, kThinGlass };
 
 // Every field a material may have, and which of them each type reads.
-const std::vector<std::string> kFields = {"color",    "ior",      "roughness",         "metal",
-                                          "radiance", "strength", "two_sided",         "normal_map",
-                                          "bump_map", "alpha",    "transmission_depth"};
+const std::vector<std::string> kFields = {
+    "color",     "ior",        "roughness", "metal", "radiance",           "strength",
+    "two_sided", "normal_map", "bump_map",  "alpha", "transmission_depth", "abbe"};
 const std::vector<std::vector<std::string>> kFieldsOf = {
     {"color", "normal_map", "bump_map", "alpha"},  // diffuse
     {"color", "normal_map", "bump_map", "alpha"},  // mirror
-    {"color", "ior", "roughness", "normal_map", "bump_map", "alpha", "transmission_depth"},
+    {"color", "ior", "roughness", "normal_map", "bump_map", "alpha", "transmission_depth", "abbe"},
     {"radiance", "strength", "two_sided"},  // emissive
     {"color", "roughness", "metal", "normal_map", "bump_map", "alpha"},
     {"color", "ior", "roughness", "normal_map", "bump_map", "alpha"},  // plastic
@@ -98,6 +99,20 @@ void readAbsorption(const JsonValue& depth, const std::optional<JsonValue>& colo
   material->color = Vec3(1.0f);
 }
 
+// Glass's "abbe": its Abbe number, which with its ior (at the d line) gives its index in each
+// colour channel (scene/cauchy_index.h).
+void readDispersion(const JsonValue& abbe, Material* material) {
+  const float v = abbe.positiveNumber();
+  // Below an Abbe number of 1 Cauchy's law bends blue light past sense (its index can fall
+  // below 1); real glasses lie between about 15 and 100.
+  if (!(v >= 1.0f)) abbe.failExpected("an Abbe number of at least 1 (glasses have 15 to 100)");
+  if (!(material->ior > 1.0f))
+    abbe.fail("needs an \"ior\" above 1 (a glass denser than what surrounds it), got " +
+              formatNumber(material->ior));
+  for (int c = 0; c < 3; ++c)
+    material->channelIor[c] = float(cauchyIndex(material->ior, v, kChannelLambda[c]));
+}
+
 void readMetal(const JsonValue& value, Material* material) {
   std::vector<std::string> names;
   for (const NamedMetal& metal : namedMetals()) names.push_back(metal.name);
@@ -157,6 +172,7 @@ Material readFields(JsonObject& fields, size_t type, TextureLoader& textures) {
       if (std::optional<JsonValue> ior = fields.get("ior")) material.ior = ior->positiveNumber();
       if (std::optional<JsonValue> depth = fields.get("transmission_depth"))
         readAbsorption(*depth, color, &material);
+      if (std::optional<JsonValue> abbe = fields.get("abbe")) readDispersion(*abbe, &material);
       break;
     case kThinGlass:
       // What the sheet transmits passes the alpha test (geometry/alpha_mask.h); a face that
