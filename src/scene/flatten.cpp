@@ -149,6 +149,7 @@ void addLight(SceneData& s, const LightDesc& d) {
   if (d.rectangle) {
     Material emitter = emitterOf(rectangleLightRadiance(d));
     emitter.twoSided = d.rectangle->twoSided;
+    emitter.emissionTexture = d.rectangle->texture;
     addMaterial(s, emitter);
     return;
   }
@@ -175,6 +176,12 @@ void addRectangleLight(SceneData& s, const LightDesc& d, uint32_t material) {
   Vec3 corners[4];
   rectangleCorners(d, corners);
   s.positions.insert(s.positions.end(), corners, corners + 4);
+  // Corners from the bottom left of its front, counter-clockwise (rectangleCorners).
+  if (d.rectangle->texture.index >= 0 || !s.uvs.empty()) {
+    s.uvs.resize(base, Vec2());  // earlier vertices without uvs
+    s.uvs.insert(s.uvs.end(),
+                 {Vec2(0.0f, 0.0f), Vec2(1.0f, 0.0f), Vec2(1.0f, 1.0f), Vec2(0.0f, 1.0f)});
+  }
   s.triangles.push_back(Triangle{{base, base + 1, base + 2}, material});
   s.triangles.push_back(Triangle{{base, base + 2, base + 3}, material});
 }

@@ -80,6 +80,9 @@ struct RectangleDesc {
   Vec2 size{1.0f, 1.0f};   // along its width and its height
   std::optional<Vec3> up;  // which way its height runs; absent: y, or z where it shines along y
   bool twoSided = false;   // emits from its back too, half its power each way
+  // A texture that its radiance tints (its "color" given as one), u across its width and v up
+  // its height, seen upright from in front (-1: none).
+  TextureRef texture;
 };
 
 struct LightDesc {

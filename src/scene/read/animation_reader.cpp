@@ -209,6 +209,10 @@ void checkUsed(const JsonValue& property, const AnimTrack& track, const SceneDes
                              : light.rectangle               ? "a rectangle light"
                                                              : "a point light";
     switch (track.property) {
+      case AnimProperty::Color:
+        if (light.rectangle && light.rectangle->texture.index >= 0)
+          unused(name + " whose \"color\" is a texture");
+        break;
       case AnimProperty::Radius:
         if (light.type != LightType::Sphere)
           unused(name + " (only \"sphere\" lights have a radius)");

@@ -7,6 +7,9 @@
 
 #include "scene/along_up.h"
 #include "scene/light_emission_desc.h"
+#include "scene/read/texel_check.h"
+#include "scene/read/texture_reader.h"
+#include "scene/scene_error.h"
 
 namespace candela {
 namespace {
@@ -191,7 +194,7 @@ Vec2 readRectangleSize(const JsonValue& value) {
   return Vec2(elements[0].positiveNumber(), elements[1].positiveNumber());
 }
 
-LightDesc readLight(const JsonValue& value) {
+LightDesc readLight(const JsonValue& value, TextureLoader& textures) {
   JsonObject fields(
       value, {"id", "type", "position", "intensity", "color", "radius", "direction", "look_at",
               "cutoff_angle", "beam_width", "angle", "size", "up", "two_sided"});
@@ -214,7 +217,11 @@ LightDesc readLight(const JsonValue& value) {
   else
     light.position = fields.require("position").vec3();
   light.intensity = fields.require("intensity").nonNegativeNumber();
-  if (std::optional<JsonValue> color = fields.get("color")) light.color = color->colour();
+  const std::optional<JsonValue> color = fields.get("color");
+  if (color && color->json().is_object() && kind != kRectangle)
+    color->fail("a texture, which only \"rectangle\" lights take; expected a colour");
+  TextureRef texture;
+  if (color) light.color = readTexturedColour(*color, textures, &texture);
   if (kind == kSphere)
     light.radius = fields.require("radius").positiveNumber();
   else
@@ -243,6 +250,15 @@ LightDesc readLight(const JsonValue& value) {
   }
   if (kind == kRectangle) {
     light.rectangle = readRectangle(fields, light);
+    light.rectangle->texture = texture;
+    if (texture.index >= 0) {
+      const std::string beyond =
+          firstTexelBeyondFloat(textures.texture(texture.index), rectangleLightRadiance(light));
+      if (!beyond.empty())
+        color->fail("the texture's " + beyond + " times the light's radiance " +
+                    formatVec3(rectangleLightRadiance(light)) +
+                    " is beyond single precision; expected a smaller intensity");
+    }
   } else {
     for (const char* key : {"size", "up"})
       fields.reject(key, notUsed + " (only \"rectangle\" lights have a size and an up)");

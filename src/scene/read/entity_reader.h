@@ -17,7 +17,7 @@ SphereDesc readSphere(const JsonValue& value, const MaterialLibrary& library,
                       TextureLoader& textures);
 ObjectDesc readObject(const JsonValue& value, const MaterialLibrary& library,
                       const std::string& baseDir, TextureLoader& textures);
-LightDesc readLight(const JsonValue& value);
+LightDesc readLight(const JsonValue& value, TextureLoader& textures);
 
 // An object's scale: a number or [sx, sy, sz], every factor non-zero (zero would flatten the
 // mesh; a negative factor mirrors it). Also read by animation tracks on "scale".

@@ -153,7 +153,7 @@ SceneDesc parseSceneText(const std::string& text, const std::string& fileLabel,
     writtenNames.push_back(element.json().at("file").get<std::string>());
   });
   forEachElement(top, "lights", [&](const JsonValue& element) {
-    scene.lights.push_back(readLight(element));
+    scene.lights.push_back(readLight(element, textures));
     ids.add(scene.lights.back().id, scene.lights.back().where, fileLabel);
   });
 
