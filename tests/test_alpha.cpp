@@ -10,12 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "backends/cpu/cpu_engine.h"
-#include "backends/cpu/cpu_renderer.h"
 #include "core/constants.h"
+#include "cpu_engines.h"
 #include "render_test_util.h"
-#include "scene/flatten.h"
-#include "scene/read/scene_loader.h"
 #include "temp_dir.h"
 #include "texture_test_util.h"
 
@@ -25,10 +22,17 @@ namespace {
 constexpr float kRho = 0.5f, kIntensity = 7896.0f, kDistance = 10.0f;
 const double kL0 = kRho * kIntensity / (4.0 * kPi * kPi * kDistance * kDistance);
 
-std::vector<CpuEngine> engines() {
-  std::vector<CpuEngine> list = {CpuEngine::Bvh};
-  if (embreeAvailable()) list.push_back(CpuEngine::Embree);
-  return list;
+// The scene of `objects` (JSON, comma-separated) seen by the camera over the patch of floor and
+// lit by the lamp over the blocker, with `render` added to the render settings.
+std::string viewOf(const std::string& objects, const std::string& render = "") {
+  return R"({
+    "camera": {"width": 32, "height": 32, "fov": 1, "spp": 4, "position": [0, 20, 0],
+               "look_at": [0, 0, 0], "up": [0, 0, -1]},
+    "render": {"max_depth": 1)" +
+         render + R"(},
+    "objects": [)" +
+         objects + R"(],
+    "lights": [{"position": [0, 10, 0], "intensity": 7896}]})";
 }
 
 // The view's image, with the blocker's MTL statements `blocker`; with `sheets` 2 a second
@@ -45,19 +49,7 @@ ImageRGB renderView(const std::string& blocker, CpuEngine engine, const test::Te
             "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
             "usemtl floor\nf 4 3 2 1\nusemtl blocker\nf 8/4 7/3 6/2 5/1\n" +
                 std::string(sheets == 2 ? "f 12/4 11/3 10/2 9/1\n" : ""));
-  const std::string json = R"({
-    "camera": {"width": 32, "height": 32, "fov": 1, "spp": 4, "position": [0, 20, 0],
-               "look_at": [0, 0, 0], "up": [0, 0, -1]},
-    "render": {"max_depth": 1)" + render + R"(},
-    "objects": [{"file": "scene.obj"}],
-    "lights": [{"position": [0, 10, 0], "intensity": 7896}]
-  })";
-  SceneDesc desc = parseSceneText(json, "alpha.json", dir.path());
-  if (engine == CpuEngine::Embree) desc.ownBvh = OwnBvh::None;
-  const SceneData data = flattenScene(desc);
-  CpuRenderer renderer(engine);
-  renderer.setScene(data, SceneChange::Structure);
-  return renderer.render(RenderOptions{}).image;
+  return test::renderWithEngine(viewOf(R"({"file": "scene.obj"})", render), engine, dir.path());
 }
 
 // The mean radiance (channel 0) of the view (renderView).
@@ -127,21 +119,12 @@ double renderJsonMean(const std::string& blocker, CpuEngine engine, const test::
   dir.write("blocker.obj",
             "v -3 5 -3\nv 3 5 -3\nv 3 5 3\nv -3 5 3\n"
             "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nf 4/4 3/3 2/2 1/1\n");
-  const std::string json = R"({
-    "camera": {"width": 32, "height": 32, "fov": 1, "spp": 4, "position": [0, 20, 0],
-               "look_at": [0, 0, 0], "up": [0, 0, -1]},
-    "render": {"max_depth": 1},
-    "objects": [{"file": "floor.obj", "color": 0.5},
-                {"file": "blocker.obj", "material": )" +
-                           blocker + R"(}],
-    "lights": [{"position": [0, 10, 0], "intensity": 7896}]
-  })";
-  SceneDesc desc = parseSceneText(json, "alpha.json", dir.path());
-  if (engine == CpuEngine::Embree) desc.ownBvh = OwnBvh::None;
-  const SceneData data = flattenScene(desc);
-  CpuRenderer renderer(engine);
-  renderer.setScene(data, SceneChange::Structure);
-  return test::regionStats(renderer.render(RenderOptions{}).image, 0, 0, 32, 32, 0).mean;
+  const std::string objects =
+      R"({"file": "floor.obj", "color": 0.5}, {"file": "blocker.obj", "material": )" + blocker +
+      "}";
+  return test::regionStats(test::renderWithEngine(viewOf(objects), engine, dir.path()), 0, 0, 32,
+                           32, 0)
+      .mean;
 }
 
 // A JSON material's "alpha" masks as MTL's d and map_d do: a number, or a texture read from its
@@ -185,10 +168,8 @@ TEST(AlphaErrors, JsonAlphaIsRefusedWhereItCannotBe) {
             "\"texture\", \"scale\", \"channel\"");
 }
 
-INSTANTIATE_TEST_SUITE_P(Engines, Alpha, ::testing::ValuesIn(engines()),
-                         [](const ::testing::TestParamInfo<CpuEngine>& engine) {
-                           return std::string(engine.param == CpuEngine::Embree ? "Embree" : "Bvh");
-                         });
+INSTANTIATE_TEST_SUITE_P(Engines, Alpha, ::testing::ValuesIn(test::builtCpuEngines()),
+                         test::cpuEngineName);
 
 }  // namespace
 }  // namespace candela

@@ -8,11 +8,9 @@
 
 #include <cmath>
 #include <string>
-#include <vector>
 
-#include "backends/cpu/cpu_engine.h"
-#include "backends/cpu/cpu_renderer.h"
 #include "core/dielectric_fresnel.h"
+#include "cpu_engines.h"
 #include "render_test_util.h"
 #include "temp_dir.h"
 
@@ -57,12 +55,7 @@ class ThinGlass : public ::testing::TestWithParam<CpuEngine> {
   ImageRGB render(const std::string& json) const {
     dir.write("quad.obj",  // faces +z: counter-clockwise seen from there
               "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nf 1 2 3\nf 1 3 4\n");
-    SceneDesc desc = parseSceneText(json, "thin_glass.json", dir.path());
-    if (GetParam() == CpuEngine::Embree) desc.ownBvh = OwnBvh::None;
-    const SceneData data = flattenScene(desc);
-    CpuRenderer renderer(GetParam());
-    renderer.setScene(data, SceneChange::Structure);
-    return renderer.render(RenderOptions{}).image;
+    return test::renderWithEngine(json, GetParam(), dir.path());
   }
 };
 
@@ -121,16 +114,8 @@ TEST_P(ThinGlass, ShadowRaysPassThePaneAsOftenAsTheLightDoes) {
   }
 }
 
-std::vector<CpuEngine> engines() {
-  std::vector<CpuEngine> list = {CpuEngine::Bvh};
-  if (embreeAvailable()) list.push_back(CpuEngine::Embree);
-  return list;
-}
-
-INSTANTIATE_TEST_SUITE_P(Engines, ThinGlass, ::testing::ValuesIn(engines()),
-                         [](const auto& engine) {
-                           return std::string(engine.param == CpuEngine::Bvh ? "Bvh" : "Embree");
-                         });
+INSTANTIATE_TEST_SUITE_P(Engines, ThinGlass, ::testing::ValuesIn(test::builtCpuEngines()),
+                         test::cpuEngineName);
 
 TEST(ThinGlass, TheSceneFormatRefusesWhatItCannotBe) {
   const auto error = [](const std::string& entity) {
