@@ -25,13 +25,20 @@ the width and height, with an `area` emitter of radiance color * intensity / (pi
 and a black `diffuse` BSDF (candela's emitters reflect nothing; Mitsuba's default BSDF would).
 A two-sided rectangle light (Mitsuba's area emitter has one side) is two such rectangles back to
 back, each of half the power, the second with `flip_normals` and moved BACK_OFFSET behind the
-first so that a ray from either side meets the one facing it first.
+first so that a ray from either side meets the one facing it first. A rectangle light whose
+`color` is a texture gets a `bitmap` radiance: the image decoded to linear, times
+intensity / (pi width height), written as an EXR, its v turned over (Mitsuba's rectangle has
+uv = (x + 1, y + 1) / 2 in its plane and its bitmaps put v = 0 on the top row; candela puts
+v = 0 on the bottom row, up the light's height).
 """
 import argparse
+import atexit
 import json
 import math
 import os
+import shutil
 import sys
+import tempfile
 import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -51,7 +58,11 @@ SPOT_KEYS = ('direction', 'look_at', 'cutoff_angle', 'beam_width')
 BACK_OFFSET = 1e-4
 
 
-def split_lights(scene):
+WORK = tempfile.mkdtemp(prefix='candela_mitsuba_lights_')
+atexit.register(shutil.rmtree, WORK, True)
+
+
+def split_lights(scene, folder='.'):
     """The scene for the harness, with its spot lights made point lights and its directional and
     rectangle lights taken out; the spots by index, and the others' Mitsuba emitters (or
     emitting shapes)."""
@@ -63,7 +74,7 @@ def split_lights(scene):
             emitters.append(directional_emitter(light))
             continue
         if light.get('type') == 'rectangle':
-            emitters.extend(rectangle_emitters(light))
+            emitters.extend(rectangle_emitters(light, folder))
             continue
         if light.get('type') == 'spot':
             spots[len(harness_lights)] = {k: light[k] for k in SPOT_KEYS if k in light}
@@ -108,7 +119,21 @@ def rectangle_axes(light):
     return np.cross(height, n), height, n
 
 
-def rectangle_emitters(light):
+def textured_radiance(texture, scale, folder):
+    """A `bitmap` of the texture object `texture` (relative to `folder`) times `scale`."""
+    if 'scale' in texture:
+        raise SystemExit('mitsuba_lights.py: a textured light\'s "scale" is not mapped')
+    name = os.path.join(folder, texture['texture'])
+    linear = mi.Bitmap(name).convert(mi.Bitmap.PixelFormat.RGB, mi.Struct.Type.Float32,
+                                     srgb_gamma=False)
+    out = os.path.join(WORK, f'{len(os.listdir(WORK))}.exr')
+    mi.Bitmap(np.array(linear) * scale).write(out)
+    return {'type': 'bitmap', 'filename': out, 'raw': True, 'filter_type': 'bilinear',
+            'wrap_mode': 'repeat',
+            'to_uv': mi.ScalarTransform4f().translate([0, 1, 0]).scale([1, -1, 1])}
+
+
+def rectangle_emitters(light, folder='.'):
     """The rectangle light's emitting shapes: one, or two back to back where it is two-sided."""
     size = light['size'] if isinstance(light['size'], list) else [light['size']] * 2
     width, height, normal = rectangle_axes(light)
@@ -118,15 +143,17 @@ def rectangle_emitters(light):
     m[:3, 2] = normal
     m[:3, 3] = light['position']
     sides = 2 if light.get('two_sided', False) else 1
-    radiance = (rgb_of(light.get('color', 1.0)) * light['intensity'] /
-                (math.pi * sides * size[0] * size[1]))
+    color = light.get('color', 1.0)
+    scale = light['intensity'] / (math.pi * sides * size[0] * size[1])
+    radiance = (textured_radiance(color, scale, folder) if isinstance(color, dict)
+                else mr.rgb(rgb_of(color) * scale))
     shapes = []
     for side in range(sides):
         if side == 1:
             m[:3, 3] = np.array(light['position'], dtype=np.float64) - BACK_OFFSET * normal
         shapes.append({'type': 'rectangle', 'to_world': mi.ScalarTransform4f(m.tolist()),
                        'flip_normals': side == 1,
-                       'emitter': {'type': 'area', 'radiance': mr.rgb(radiance)},
+                       'emitter': {'type': 'area', 'radiance': radiance},
                        'bsdf': {'type': 'diffuse', 'reflectance': mr.rgb(np.zeros(3))}})
     return shapes
 
@@ -164,7 +191,7 @@ def main(argv=None):
     if env is None:
         with open(a.scene) as f:
             scene = json.load(f)
-    scene, spots, emitters = split_lights(scene)
+    scene, spots, emitters = split_lights(scene, os.path.dirname(os.path.abspath(a.scene)))
     rfilter = mitsuba_filter.take_filter(scene)
     t0 = time.perf_counter()
     sc = mitsuba_envmap.parse_beside(scene, a.scene, 'lights')
