@@ -232,6 +232,12 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
   SurfacePoint sp = surfaceAt(scene, st.ray, hit);
   CANDELA_DCHECK(sp.material < scene.materialCount);
   const Material& m = scene.materials[sp.material];
+  if (depth == 1 && m.hiddenFromCamera) {  // the camera ray goes on as if it were not there
+    st.depth = depth;
+    st.ray = spawnRay(sp, st.ray.direction, rayKeyFor(scene, rng, kCameraRay));
+    ++counters.camera;
+    return true;
+  }
   const Vec3 wo = -st.ray.direction;
   if (m.normalMap.index >= 0) sp.ns = mappedNormal(scene, m, hit, sp, wo);
   [[maybe_unused]] bool albedoHere = false;  // the albedo pass takes this surface's colour

@@ -54,6 +54,7 @@ struct Material {
   Vec3 metalEta{0.0f}, metalK{0.0f};
   Vec3 radiance{0.0f};  // emissive: emitted radiance from the front side
   bool twoSided = false;       // emissive: emits `radiance` from its back as well (mesh faces only)
+  bool hiddenFromCamera = false;  // emissive: camera rays pass it by (a light's "visible": false)
   TextureRef colorTexture;     // a texture that `color` tints (render/surface_color.h)
   TextureRef emissionTexture;  // emissive: a texture that `radiance` tints (MTL map_Ke)
   TextureRef normalMap;        // tangent-space normals that tilt the shading normal, or heights

@@ -150,6 +150,7 @@ void addLight(SceneData& s, const LightDesc& d) {
     Material emitter = emitterOf(rectangleLightRadiance(d));
     emitter.twoSided = d.rectangle->twoSided;
     emitter.emissionTexture = d.rectangle->texture;
+    emitter.hiddenFromCamera = !d.visible;
     addMaterial(s, emitter);
     return;
   }
@@ -163,9 +164,10 @@ void addLight(SceneData& s, const LightDesc& d) {
     light = directionalLight(d);
   } else {
     light.shape = uint32_t(s.spheres.size());
-    s.spheres.push_back(Sphere{d.position, d.radius,
-                               addMaterial(s, emitterOf(sphereLightRadiance(d))),
-                               int32_t(s.lights.size())});
+    Material emitter = emitterOf(sphereLightRadiance(d));
+    emitter.hiddenFromCamera = !d.visible;
+    s.spheres.push_back(
+        Sphere{d.position, d.radius, addMaterial(s, emitter), int32_t(s.lights.size())});
   }
   s.lights.push_back(light);
 }

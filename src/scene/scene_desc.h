@@ -106,6 +106,9 @@ struct LightDesc {
   Vec3 color{1.0f};
   std::optional<SpotDesc> spot;
   std::optional<RectangleDesc> rectangle;
+  // A sphere or rectangle light: whether the camera sees it (false: its rays pass it by, while
+  // its light, its reflections and what is seen through glass stay).
+  bool visible = true;
 };
 
 struct CameraDesc {

@@ -197,7 +197,7 @@ Vec2 readRectangleSize(const JsonValue& value) {
 LightDesc readLight(const JsonValue& value, TextureLoader& textures) {
   JsonObject fields(
       value, {"id", "type", "position", "intensity", "color", "radius", "direction", "look_at",
-              "cutoff_angle", "beam_width", "angle", "size", "up", "two_sided"});
+              "cutoff_angle", "beam_width", "angle", "size", "up", "two_sided", "visible"});
   LightDesc light;
   light.where = value.path();
   light.id = readId(fields);
@@ -241,6 +241,12 @@ LightDesc readLight(const JsonValue& value, TextureLoader& textures) {
                                    "have a direction)");
     fields.reject("look_at",
                   notUsed + " (only \"spot\" and \"rectangle\" lights point at a place)");
+  }
+  if (kind == kSphere || kind == kRectangle) {
+    if (std::optional<JsonValue> visible = fields.get("visible"))
+      light.visible = visible->boolean();
+  } else {
+    fields.reject("visible", notUsed + " (only \"sphere\" and \"rectangle\" lights are seen)");
   }
   if (kind == kSpot) {
     light.spot = readSpot(fields);
