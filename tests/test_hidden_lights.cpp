@@ -5,6 +5,7 @@
 // rest of the image unchanged, pixel for pixel.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 
 #include "render_test_util.h"
@@ -77,14 +78,138 @@ TEST(HiddenLights, ASphereLightIsPassedByCameraRaysAlone) {
       8.0 / (4.0 * pi * pi * 0.25));
 }
 
-TEST(HiddenLights, OnlySphereAndRectangleLightsAreSeen) {
+// Pixels of `hidden` that differ from `seen` are those where `seen` shows what was hidden (as
+// `isHidden` tells from the pixel and its value), and there `hidden` is `behind` (a number, or a
+// function of the pixel and its value in `seen`); returns how many they are.
+double valueOf(double behind, uint32_t, uint32_t, const Vec3&) { return behind; }
+template <class F>
+double valueOf(const F& behind, uint32_t x, uint32_t y, const Vec3& seen) {
+  return behind(x, y, seen);
+}
+
+template <class IsHidden, class Behind>
+int expectOnlyTheHiddenChanged(const ImageRGB& seen, const ImageRGB& hidden, IsHidden isHidden,
+                               const Behind& behind) {
+  int count = 0;
+  for (uint32_t y = 0; y < seen.height; ++y)
+    for (uint32_t x = 0; x < seen.width; ++x) {
+      const Vec3 a = seen.at(x, y), b = hidden.at(x, y);
+      if (isHidden(x, y, a)) {
+        ++count;
+        const double expected = valueOf(behind, x, y, a);
+        EXPECT_NEAR(b.x, expected, 1e-6 * (1.0 + expected)) << "pixel (" << x << ", " << y << ")";
+      } else {
+        EXPECT_EQ(a.x, b.x) << "pixel (" << x << ", " << y << ")";
+        EXPECT_EQ(a.z, b.z) << "pixel (" << x << ", " << y << ")";
+      }
+    }
+  return count;
+}
+
+// An emissive material with "visible": false, on a sphere before the glow, hides as a light does.
+TEST(HiddenLights, AnEmissiveMaterialMayBeHidden) {
+  test::TempDir dir;
+  const auto render = [&](const char* visible) {
+    dir.write("quad.obj", "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nf 1 2 3\nf 1 3 4\n");
+    return test::renderTestScene(R"({
+      "camera": {"width": 24, "height": 16, "fov": 40, "position": [0, 0, 6], "spp": 4},
+      "render": {"antialiasing": false, "max_depth": 3},
+      "spheres": [{"position": [0, 0, 0], "radius": 0.6,
+                   "material": {"type": "emissive", "radiance": 3, "visible": )" +
+                                     std::string(visible) + R"(}},
+                  {"position": [0, -1001.2, 0], "radius": 1000, "color": 0.5}],
+      "objects": [{"file": "quad.obj", "position": [0, 0, -5], "scale": 50,
+                   "material": {"type": "emissive", "radiance": 0.25}}]})",
+                                 0, dir.path())
+        .image;
+  };
+  const auto isLamp = [](uint32_t, uint32_t, const Vec3& v) {
+    return std::abs(v.x - 3.0f) < 1e-4f;
+  };
+  EXPECT_GT(expectOnlyTheHiddenChanged(render("true"), render("false"), isLamp, 0.25), 4);
+}
+
+// The camera's ray through pixel (x, y) of a 32 x 24 image at 40 degrees across, from (0, 0, 6)
+// looking along -z: a unit direction.
+void cameraDirection(uint32_t x, uint32_t y, double d[3]) {
+  const double f = 32.0 / (2.0 * std::tan(20.0 * 3.14159265358979323846 / 180.0));
+  d[0] = (x + 0.5 - 16.0) / f;
+  d[1] = -(y + 0.5 - 12.0) / f;
+  d[2] = -1.0;
+  const double n = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+  for (int k = 0; k < 3; ++k) d[k] /= n;
+}
+
+// Whether that ray meets the ball of centre (cx, 0, 0) and radius 0.8.
+bool meetsBall(const double d[3], double cx) {
+  const double o[3] = {-cx, 0.0, 6.0};  // the camera from the centre
+  const double b = o[0] * d[0] + o[1] * d[1] + o[2] * d[2];
+  return b * b - (o[0] * o[0] + o[1] * o[1] + o[2] * o[2] - 0.64) > 0.0;
+}
+
+// A hidden environment shows black to camera rays that leave the scene, and lights the ball and
+// shows through the glass ball as before; a sun's hidden disc likewise.
+TEST(HiddenLights, TheEnvironmentAndASunsDiscMayBeHidden) {
+  // The sun shines along -sun: its disc, 4 degrees across, is seen ahead, a little right and down.
+  const double sun[3] = {0.05 / std::sqrt(1.005), -0.05 / std::sqrt(1.005),
+                         -1.0 / std::sqrt(1.005)};
+  const auto render = [&](const char* environment, const char* visible) {
+    return test::renderTestScene(R"({
+      "camera": {"width": 32, "height": 24, "fov": 40, "position": [0, 0, 6], "spp": 4},
+      "render": {"antialiasing": false, "max_depth": 4},
+      "environment": {"color": 0.5, "visible": )" +
+                                 std::string(environment) + R"(},
+      "spheres": [{"position": [-1.2, 0, 0], "radius": 0.8, "color": 0.6},
+                  {"position": [1.2, 0, 0], "radius": 0.8,
+                   "material": {"type": "glass", "ior": 1.5}}],
+      "lights": [{"type": "directional", "direction": [)" +
+                                 test::num(-sun[0]) + ", " + test::num(-sun[1]) + ", " +
+                                 test::num(-sun[2]) + R"(], "angle": 4, "intensity": 2,
+                  "visible": )" + visible +
+                                 "}]}")
+        .image;
+  };
+  const auto leaves = [](uint32_t x, uint32_t y) {
+    double d[3];
+    cameraDirection(x, y, d);
+    return !meetsBall(d, -1.2) && !meetsBall(d, 1.2);
+  };
+  const auto inDisc = [&](uint32_t x, uint32_t y) {
+    double d[3];
+    cameraDirection(x, y, d);
+    return d[0] * sun[0] + d[1] * sun[1] + d[2] * sun[2] >
+           std::cos(2.0 * 3.14159265358979323846 / 180.0);
+  };
+  const ImageRGB seen = render("true", "true");
+  const auto isSky = [&](uint32_t x, uint32_t y, const Vec3&) { return leaves(x, y); };
+  EXPECT_GT(expectOnlyTheHiddenChanged(seen, render("false", "false"), isSky, 0.0), 300);
+  // The sun's disc alone: the sky behind it stays; the sky alone: the disc stays, less the sky.
+  const auto isSun = [&](uint32_t x, uint32_t y, const Vec3&) {
+    return leaves(x, y) && inDisc(x, y);
+  };
+  EXPECT_GT(expectOnlyTheHiddenChanged(seen, render("true", "false"), isSun, 0.5), 0);
+  const auto skyGone = [&](uint32_t x, uint32_t y, const Vec3& v) {
+    return inDisc(x, y) ? v.x - 0.5 : 0.0;
+  };
+  EXPECT_GT(expectOnlyTheHiddenChanged(seen, render("false", "true"), isSky, skyGone), 300);
+}
+
+TEST(HiddenLights, OnlyWhatIsSeenMayBeHidden) {
   EXPECT_EQ(test::lightsError(R"({"position": [0, 1, 0], "intensity": 1, "visible": false})"),
-            "s.json: lights[0].visible: not used by a point light (only \"sphere\" and "
-            "\"rectangle\" lights are seen)");
+            "s.json: lights[0].visible: not used by a point light (only \"sphere\", "
+            "\"rectangle\" and \"directional\" lights with a disc are seen)");
+  EXPECT_EQ(test::lightsError(R"({"type": "directional", "direction": [0, -1, 0], "intensity": 1,
+                                  "visible": false})"),
+            "s.json: lights[0].visible: not used by a directional light without an \"angle\" (a "
+            "sun of no disc is never seen)");
   EXPECT_EQ(test::lightsError(
                 R"({"type": "sphere", "position": [0, 1, 0], "radius": 1, "intensity": 1,
                     "visible": 0})"),
             "s.json: lights[0].visible: expected true or false, got 0");
+  EXPECT_EQ(test::loadError(R"({"camera": {}, "materials": {"m": {"type": "diffuse",
+                                "visible": false}}})",
+                            "."),
+            "test.json: materials.m.visible: not used by a \"diffuse\" material");
 }
 
 }  // namespace

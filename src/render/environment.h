@@ -39,6 +39,7 @@ struct Environment {
   uint32_t width = 0, height = 0;  // of the map; 0: a constant environment
   EnvironmentGrid grid;            // of its sampling distribution
   int32_t light = -1;              // its index among the lights; -1: black, not a light
+  bool hiddenFromCamera = false;   // camera rays that leave the scene see black ("visible")
 };
 
 // The map coordinates of a unit direction in the map's frame. theta comes from atan2, not acos,

@@ -170,12 +170,13 @@ struct PathState {
 
 // The radiance of the suns' discs (directional lights with an angle) that a ray leaving the scene
 // along `st.ray` sees, each weighted against next-event estimation's sample of it as the
-// environment is.
-CANDELA_HDI Vec3 sunDiscsSeen(const SceneView& scene, const PathState& st) {
+// environment is; a camera ray (`fromCamera`) does not see those hidden from the camera.
+CANDELA_HDI Vec3 sunDiscsSeen(const SceneView& scene, const PathState& st, bool fromCamera) {
   Vec3 sum(0.0f);
   for (uint32_t k = 0; k < scene.infiniteLightCount; ++k) {
     const Light& l = scene.lights[scene.infiniteLights[k]];
     if (!hasSunDisc(l) || !inSunDisc(l, st.ray.direction)) continue;
+    if (fromCamera && l.hiddenFromCamera) continue;
     const float weight = st.specularBounce
                              ? 1.0f
                              : powerHeuristic(st.bsdfPdf, scene.infiniteLightShare *
@@ -212,10 +213,13 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
                   : powerHeuristic(st.bsdfPdf, lightSelectPmf(scene, uint32_t(light),
                                                               st.bouncePoint, st.bounceHemisphere) *
                                                    environmentPdf(scene, st.ray.direction));
-    Vec3 background = environmentRadiance(scene, st.ray.direction);
+    const bool fromCamera = depth == 1;  // a camera ray, which hidden emitters do not show
+    Vec3 background = fromCamera && scene.environment.hiddenFromCamera
+                          ? Vec3(0.0f)
+                          : environmentRadiance(scene, st.ray.direction);
     Vec3 seen = st.throughput * background * weight;
     if (scene.sunDiscs) {
-      const Vec3 suns = sunDiscsSeen(scene, st);
+      const Vec3 suns = sunDiscsSeen(scene, st, fromCamera);
       background += suns;
       seen += st.throughput * suns;
     }

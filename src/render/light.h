@@ -45,6 +45,7 @@ struct Light {
   // Directional lights: 1 - cos of the angular radius of the sun's disc, whose every direction
   // sends the same radiance; 0 for a delta light, of one direction.
   float sunOneMinusCos = 0.0f;
+  bool hiddenFromCamera = false;  // directional lights: camera rays do not see its disc
   // A spot light is a point light limited to a cone; its power is the point light's it would be
   // without one (its intensity within the beam is that light's).
   SpotCone spot;

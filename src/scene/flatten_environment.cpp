@@ -92,6 +92,7 @@ std::vector<float> environmentCornerBrightness(const Vec3* texels, uint32_t w, u
 
 void flattenEnvironment(const EnvironmentDesc& desc, SceneData& s) {
   Environment e;
+  e.hiddenFromCamera = !desc.visible;
   if (!desc.image) {
     e.radiance = desc.color;
     s.environment = e;

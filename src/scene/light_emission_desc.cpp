@@ -69,6 +69,7 @@ Light directionalLight(const LightDesc& d) {
   light.direction = unitVector(d.direction);
   light.power = lightPower(d);  // the irradiance
   light.sunOneMinusCos = sunOneMinusCos(d);
+  light.hiddenFromCamera = !d.visible;
   return light;
 }
 

@@ -139,6 +139,7 @@ struct EnvironmentDesc {
   uint64_t mapHash = 0;
   float strength = 1;
   Vec3 rotation;     // degrees, map frame -> world, R = Rz * Ry * Rx
+  bool visible = true;  // false: camera rays that leave the scene see black; it still lights
 };
 
 enum class AnimTarget { Camera, Sphere, Object, Light };

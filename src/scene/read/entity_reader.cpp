@@ -242,11 +242,17 @@ LightDesc readLight(const JsonValue& value, TextureLoader& textures) {
     fields.reject("look_at",
                   notUsed + " (only \"spot\" and \"rectangle\" lights point at a place)");
   }
-  if (kind == kSphere || kind == kRectangle) {
+  const bool seen =
+      kind == kSphere || kind == kRectangle || (kind == kDirectional && light.angleDegrees > 0.0f);
+  if (seen) {
     if (std::optional<JsonValue> visible = fields.get("visible"))
       light.visible = visible->boolean();
   } else {
-    fields.reject("visible", notUsed + " (only \"sphere\" and \"rectangle\" lights are seen)");
+    fields.reject("visible", notUsed + (kind == kDirectional
+                                            ? " without an \"angle\" (a sun of no disc is "
+                                              "never seen)"
+                                            : " (only \"sphere\", \"rectangle\" and "
+                                              "\"directional\" lights with a disc are seen)"));
   }
   if (kind == kSpot) {
     light.spot = readSpot(fields);

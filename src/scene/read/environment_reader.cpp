@@ -14,8 +14,10 @@
 namespace candela {
 
 EnvironmentDesc readEnvironment(const JsonValue& value, const std::string& baseDir) {
-  JsonObject fields(value, {"color", "map", "strength", "rotation"});
+  JsonObject fields(value, {"color", "map", "strength", "rotation", "visible"});
   EnvironmentDesc environment;
+  if (std::optional<JsonValue> visible = fields.get("visible"))
+    environment.visible = visible->boolean();
   std::optional<JsonValue> map = fields.get("map");
   if (!map) {
     fields.reject("strength", "not used by a constant environment (only with a \"map\")");

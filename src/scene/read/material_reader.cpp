@@ -24,12 +24,13 @@ enum TypeIndex : size_t { kDiffuse, kMirror, kGlass, kEmissive, kConductor, kPla
 // Every field a material may have, and which of them each type reads.
 const std::vector<std::string> kFields = {
     "color",     "ior",        "roughness", "metal", "radiance",           "strength",
-    "two_sided", "normal_map", "bump_map",  "alpha", "transmission_depth", "abbe"};
+    "two_sided", "normal_map", "bump_map",  "alpha", "transmission_depth", "abbe",
+    "visible"};
 const std::vector<std::vector<std::string>> kFieldsOf = {
     {"color", "normal_map", "bump_map", "alpha"},  // diffuse
     {"color", "normal_map", "bump_map", "alpha"},  // mirror
     {"color", "ior", "roughness", "normal_map", "bump_map", "alpha", "transmission_depth", "abbe"},
-    {"radiance", "strength", "two_sided"},  // emissive
+    {"radiance", "strength", "two_sided", "visible"},  // emissive
     {"color", "roughness", "metal", "normal_map", "bump_map", "alpha"},
     {"color", "ior", "roughness", "normal_map", "bump_map", "alpha"},  // plastic
     {"ior"},                                                           // thin_glass
@@ -77,6 +78,8 @@ void readEmission(JsonObject& fields, TextureLoader& textures, Material* materia
   }
   if (std::optional<JsonValue> twoSided = fields.get("two_sided"))
     material->twoSided = twoSided->boolean();
+  if (std::optional<JsonValue> visible = fields.get("visible"))
+    material->hiddenFromCamera = !visible->boolean();
 }
 
 // Glass's "transmission_depth" d: its `color` c is then what white light keeps of each channel
