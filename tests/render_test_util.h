@@ -60,6 +60,15 @@ inline std::string loadError(const std::string& json, const std::string& baseDir
   return std::string("(no error)");
 }
 
+// The error a scene of one unit sphere whose material is `material` (JSON) is refused with, or
+// "(no error)".
+inline std::string sphereMaterialError(const std::string& material) {
+  return loadError(
+      R"({"camera": {}, "spheres": [{"position": [0, 0, 0], "radius": 1, "material": )" + material +
+          "}]}",
+      ".");
+}
+
 inline RenderResult renderTestScene(const std::string& json, int threads = 0,
                                     const std::string& baseDir = ".") {
   const SceneData data = loadTestScene(json, baseDir);

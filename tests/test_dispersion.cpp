@@ -123,12 +123,7 @@ TEST(Dispersion, LightSubpathsLeaveTheImageAsItIs) {
 }
 
 TEST(Dispersion, TheSceneFormatRefusesWhatItCannotBe) {
-  const auto error = [](const std::string& material) {
-    return test::loadError(
-        R"({"camera": {}, "spheres": [{"position": [0, 0, 0], "radius": 1, "material": )" +
-            material + "}]}",
-        ".");
-  };
+  const auto error = test::sphereMaterialError;
   EXPECT_EQ(error(R"({"type": "glass", "abbe": 40})"), "(no error)");
   EXPECT_EQ(error(R"({"type": "glass", "abbe": 0.5})"),
             "test.json: spheres[0].material.abbe: expected an Abbe number of at least 1 (glasses "

@@ -107,12 +107,7 @@ TEST(GlassAbsorption, ASlabKeepsItsMediumThroughReflectionsInside) {
 }
 
 TEST(GlassAbsorption, TheSceneFormatRefusesWhatItCannotBe) {
-  const auto error = [](const std::string& material) {
-    return test::loadError(
-        R"({"camera": {}, "spheres": [{"position": [0, 0, 0], "radius": 1, "material": )" +
-            material + "}]}",
-        ".");
-  };
+  const auto error = test::sphereMaterialError;
   EXPECT_EQ(error(R"({"type": "glass", "color": [0.5, 0.2, 1], "transmission_depth": 2})"),
             "(no error)");
   EXPECT_EQ(error(R"({"type": "glass", "color": [0.5, 0, 1], "transmission_depth": 2})"),
