@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -58,6 +59,29 @@ inline std::string loadError(const std::string& json, const std::string& baseDir
     return std::string(e.what());
   }
   return std::string("(no error)");
+}
+
+// The unit direction, in double precision, of the ray through the centre of pixel (x, y) of a
+// camera `width` x `height` pixels, `fovDegrees` across, looking along -z with +y up (the
+// contract's camera without a rotation): the tests' own reference for where rays go.
+inline std::array<double, 3> pixelCentreDirection(uint32_t width, uint32_t height,
+                                                  double fovDegrees, uint32_t x, uint32_t y) {
+  const double f = width / (2.0 * std::tan(fovDegrees * 3.14159265358979323846 / 360.0));
+  const double d[3] = {(x + 0.5 - width / 2.0) / f, -(y + 0.5 - height / 2.0) / f, -1.0};
+  const double n = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+  return {d[0] / n, d[1] / n, d[2] / n};
+}
+
+// The length of the chord that the line from `origin` along the unit direction `d` cuts through
+// the ball of `centre` and `radius` (0 where it misses), in double precision.
+inline double chordThroughBall(const std::array<double, 3>& origin, const std::array<double, 3>& d,
+                               const std::array<double, 3>& centre, double radius) {
+  double b = 0.0, c = -radius * radius;
+  for (int k = 0; k < 3; ++k) {
+    b += (origin[k] - centre[k]) * d[k];
+    c += (origin[k] - centre[k]) * (origin[k] - centre[k]);
+  }
+  return b * b > c ? 2.0 * std::sqrt(b * b - c) : 0.0;
 }
 
 // The error a scene of one unit sphere whose material is `material` (JSON) is refused with, or

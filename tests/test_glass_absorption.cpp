@@ -16,8 +16,6 @@ namespace {
 
 using test::num;
 
-constexpr double kPiDouble = 3.14159265358979323846;
-
 TEST(GlassAbsorption, BeerTransmittanceIsExponentialAndSafeAtInfinity) {
   const Vec3 t = beerTransmittance(Vec3(0.0f, 0.5f, 2.0f), 3.0f);
   EXPECT_EQ(t.x, 1.0f);
@@ -37,7 +35,7 @@ TEST(GlassAbsorption, ABallOfIndexOneKeepsTheColourToThePowerOfItsChordOverTheDe
   test::TempDir dir;
   dir.write("quad.obj", "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nf 1 2 3\nf 1 3 4\n");
   const double color[3] = {0.5, 0.25, 0.8}, depth = 0.7, radius = 1.0, distance = 6.0;
-  const int size = 15;
+  const uint32_t size = 15;
   const double fov = 22.0;
   for (const char* roughness : {"0", "0.3"}) {
     const SceneData data = flattenScene(parseSceneText(
@@ -52,21 +50,18 @@ TEST(GlassAbsorption, ABallOfIndexOneKeepsTheColourToThePowerOfItsChordOverTheDe
                        "material": {"type": "emissive", "radiance": 1}}]})",
         "absorption.json", dir.path()));
     const ImageRGB image = renderCpu(data.view(), RenderOptions{}).image;
-    const double f = size / (2.0 * std::tan(fov * kPiDouble / 360.0));
     int through = 0;
-    for (int y = 0; y < size; ++y)
-      for (int x = 0; x < size; ++x) {
-        double d[3] = {(x + 0.5 - size / 2.0) / f, -(y + 0.5 - size / 2.0) / f, -1.0};
-        const double n = std::sqrt(d[0] * d[0] + d[1] * d[1] + 1.0);
-        // |o + t d|^2 = r^2 with o = (0, 0, distance): the chord is 2 sqrt(b^2 - c).
-        const double b = distance * d[2] / n, c = distance * distance - radius * radius;
-        const double chord = b * b > c ? 2.0 * std::sqrt(b * b - c) : 0.0;
+    for (uint32_t y = 0; y < size; ++y)
+      for (uint32_t x = 0; x < size; ++x) {
+        const double chord = test::chordThroughBall(
+            {0.0, 0.0, distance}, test::pixelCentreDirection(size, size, fov, x, y),
+            {0.0, 0.0, 0.0}, radius);
         through += chord > 0.0;
         for (int k = 0; k < 3; ++k)
           EXPECT_NEAR(image.at(x, y)[k], std::pow(color[k], chord / depth), 2e-5)
               << "pixel (" << x << ", " << y << "), channel " << k << ", roughness " << roughness;
       }
-    EXPECT_GT(through, size * size / 4);  // the ball fills much of the view
+    EXPECT_GT(through, int(size * size / 4));  // the ball fills much of the view
   }
 }
 

@@ -5,6 +5,7 @@
 // rest of the image unchanged, pixel for pixel.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <string>
 
@@ -129,22 +130,14 @@ TEST(HiddenLights, AnEmissiveMaterialMayBeHidden) {
   EXPECT_GT(expectOnlyTheHiddenChanged(render("true"), render("false"), isLamp, 0.25), 4);
 }
 
-// The camera's ray through pixel (x, y) of a 32 x 24 image at 40 degrees across, from (0, 0, 6)
-// looking along -z: a unit direction.
-void cameraDirection(uint32_t x, uint32_t y, double d[3]) {
-  const double f = 32.0 / (2.0 * std::tan(20.0 * 3.14159265358979323846 / 180.0));
-  d[0] = (x + 0.5 - 16.0) / f;
-  d[1] = -(y + 0.5 - 12.0) / f;
-  d[2] = -1.0;
-  const double n = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-  for (int k = 0; k < 3; ++k) d[k] /= n;
+// The camera's ray through pixel (x, y) of the 32 x 24 image 40 degrees across below.
+std::array<double, 3> cameraDirection(uint32_t x, uint32_t y) {
+  return test::pixelCentreDirection(32, 24, 40.0, x, y);
 }
 
-// Whether that ray meets the ball of centre (cx, 0, 0) and radius 0.8.
-bool meetsBall(const double d[3], double cx) {
-  const double o[3] = {-cx, 0.0, 6.0};  // the camera from the centre
-  const double b = o[0] * d[0] + o[1] * d[1] + o[2] * d[2];
-  return b * b - (o[0] * o[0] + o[1] * o[1] + o[2] * o[2] - 0.64) > 0.0;
+// Whether that ray, from (0, 0, 6), meets the ball of centre (cx, 0, 0) and radius 0.8.
+bool meetsBall(const std::array<double, 3>& d, double cx) {
+  return test::chordThroughBall({0.0, 0.0, 6.0}, d, {cx, 0.0, 0.0}, 0.8) > 0.0;
 }
 
 // A hidden environment shows black to camera rays that leave the scene, and lights the ball and
@@ -170,13 +163,11 @@ TEST(HiddenLights, TheEnvironmentAndASunsDiscMayBeHidden) {
         .image;
   };
   const auto leaves = [](uint32_t x, uint32_t y) {
-    double d[3];
-    cameraDirection(x, y, d);
+    const std::array<double, 3> d = cameraDirection(x, y);
     return !meetsBall(d, -1.2) && !meetsBall(d, 1.2);
   };
   const auto inDisc = [&](uint32_t x, uint32_t y) {
-    double d[3];
-    cameraDirection(x, y, d);
+    const std::array<double, 3> d = cameraDirection(x, y);
     return d[0] * sun[0] + d[1] * sun[1] + d[2] * sun[2] >
            std::cos(2.0 * 3.14159265358979323846 / 180.0);
   };

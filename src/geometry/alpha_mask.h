@@ -4,7 +4,7 @@
 // direction (pbrt-v4's GeometricPrimitive::Intersect): a = 0 is never a surface, a = 1 always, and
 // in between the surface lets a fraction 1 - a of rays through, camera, bounce and shadow rays
 // alike. Alpha is the product of `constant` and, when `texture` names one, the texture's channel
-// `channel` (3: alpha; 0: red, for masks without an alpha channel), and for a thin dielectric
+// `channel` (3: alpha; 0: red or the luminance, for masks without one), and for a thin dielectric
 // sheet (the "thin_glass" material) of the sheet's reflectance at the ray's angle: a sheet sends
 // straight on what it does not reflect, so passing the rays it transmits is exact, and shadow
 // rays see through it as the light does. Only triangles are masked.

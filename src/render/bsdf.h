@@ -102,20 +102,20 @@ CANDELA_HDI bool emitsTowards(const Material& m, const Vec3& wo, const Vec3& ng)
   return side > 0.0f || (m.twoSided && side < 0.0f);
 }
 
-// Whether the BSDF sends light through its surface as well as back (glass), rather than only
+// Whether material m sends light through its surface as well as back (glass), rather than only
 // back (every other material).
-CANDELA_HDI bool transmits(const Bsdf& b) { return b.material->type == MaterialType::Glass; }
+CANDELA_HDI bool transmits(const Material& m) { return m.type == MaterialType::Glass; }
 
 // The normal of the hemisphere outside which the BSDF scatters nothing (leavesOnItsSide): the
 // geometric normal on wo's side for the surfaces that only reflect; zero for glass, which also
 // transmits.
 CANDELA_HDI Vec3 reflectingHemisphere(const Bsdf& b) {
-  return transmits(b) ? Vec3(0.0f) : b.ng * b.side;
+  return transmits(*b.material) ? Vec3(0.0f) : b.ng * b.side;
 }
 
 // reflectingHemisphere of the BSDF that makeBsdf would build for material m with wo and ng.
 CANDELA_HDI Vec3 reflectingHemisphere(const Material& m, const Vec3& wo, const Vec3& ng) {
-  return m.type == MaterialType::Glass ? Vec3(0.0f) : ng * sideOf(wo, ng);
+  return transmits(m) ? Vec3(0.0f) : ng * sideOf(wo, ng);
 }
 
 // Whether wi, local z of sign wiLocalZ, leaves on the side of the geometry the lobe implies.

@@ -203,6 +203,7 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
   lights->count = 0;  // the slots may hold the last interaction's queries
   PathState& st = *path;
   const uint32_t depth = st.depth++;
+  const bool fromCamera = depth == 1;  // a camera ray, which emitters hidden from it do not show
   // Rays are unit length, so the hit's t is the distance travelled through the medium.
   if (!isBlack(st.absorption))
     st.throughput *= beerTransmittance(st.absorption, found ? hit.t : kInfinity);
@@ -213,7 +214,6 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
                   : powerHeuristic(st.bsdfPdf, lightSelectPmf(scene, uint32_t(light),
                                                               st.bouncePoint, st.bounceHemisphere) *
                                                    environmentPdf(scene, st.ray.direction));
-    const bool fromCamera = depth == 1;  // a camera ray, which hidden emitters do not show
     Vec3 background = fromCamera && scene.environment.hiddenFromCamera
                           ? Vec3(0.0f)
                           : environmentRadiance(scene, st.ray.direction);
@@ -236,7 +236,7 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
   SurfacePoint sp = surfaceAt(scene, st.ray, hit);
   CANDELA_DCHECK(sp.material < scene.materialCount);
   const Material& m = scene.materials[sp.material];
-  if (depth == 1 && m.hiddenFromCamera) {  // the camera ray goes on as if it were not there
+  if (fromCamera && m.hiddenFromCamera) {  // the camera ray goes on as if it were not there
     st.depth = depth;
     st.ray = spawnRay(sp, st.ray.direction, rayKeyFor(scene, rng, kCameraRay));
     ++counters.camera;
@@ -360,7 +360,7 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
   st.etaScale *= bs.eta * bs.eta;
   // A transmission enters the surface's inside, against its outward normal, or leaves it.
   const float outward = dot(bs.wi, sp.ng);
-  if (transmits(bsdf) && outward * dot(wo, sp.ng) < 0.0f)
+  if (transmits(m) && outward * dot(wo, sp.ng) < 0.0f)
     st.absorption = outward < 0.0f ? m.absorption : Vec3(0.0f);
   st.specularBounce = bs.delta;
   st.bsdfPdf = bs.pdf;

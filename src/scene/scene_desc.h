@@ -106,8 +106,8 @@ struct LightDesc {
   Vec3 color{1.0f};
   std::optional<SpotDesc> spot;
   std::optional<RectangleDesc> rectangle;
-  // A sphere or rectangle light: whether the camera sees it (false: its rays pass it by, while
-  // its light, its reflections and what is seen through glass stay).
+  // A sphere or rectangle light, or a sun with a disc: whether the camera sees it (false: its
+  // rays pass it by, while its light, its reflections and what is seen through glass stay).
   bool visible = true;
 };
 
