@@ -45,6 +45,11 @@ Material glass(float roughness, float ior) {
   return m;
 }
 
+Material anisotropic(Material m, float anisotropy) {
+  m.anisotropy = anisotropy;
+  return m;
+}
+
 Material plastic(float roughness, const Vec3& color) {
   Material m;
   m.type = MaterialType::Plastic;
@@ -65,6 +70,7 @@ struct Case {
   Material material;
   Vec3 wo;
   Vec3 ng = kUp;  // wo below it: the inside of glass
+  Vec3 tangent = Vec3(0.0f);
 };
 
 std::vector<Case> cases() {
@@ -82,10 +88,16 @@ std::vector<Case> cases() {
       {"smooth plastic", plastic(0.0f, Vec3(0.6f, 0.3f, 0.2f)), steep},
       {"rough plastic 0.3", plastic(0.3f, Vec3(0.5f)), steep},
       {"rough plastic 0.8 grazing", plastic(0.8f, Vec3(0.9f)), grazing},
+      {"anisotropic conductor 0.5", anisotropic(conductor(0.5f, false), 0.8f), steep, kUp,
+       Vec3(1.0f, 2.0f, 0.5f)},
+      {"anisotropic gold 0.4 grazing", anisotropic(conductor(0.4f, true), 0.9f), grazing},
+      {"anisotropic glass 0.5 outside", anisotropic(glass(0.5f, 1.5f), 0.6f), steep, kUp,
+       Vec3(0.0f, 1.0f, 0.0f)},
+      {"anisotropic glass 0.6 inside", anisotropic(glass(0.6f, 1.5f), 0.9f), -steep},
   };
 }
 
-Bsdf bsdfOf(const Case& c) { return untexturedBsdf(c.material, c.wo, c.ng, c.ng); }
+Bsdf bsdfOf(const Case& c) { return untexturedBsdf(c.material, c.wo, c.ng, c.ng, c.tangent); }
 
 // The chi-square statistic's tail as a standard normal deviate (Wilson-Hilferty).
 double chiSquareZ(double chi2, int dof) {
@@ -166,9 +178,9 @@ TEST(Bsdf, IsReciprocal) {
       const Vec3 wi = direction(transmit ? -uniform(rng) : uniform(rng), 2.0f * kPi * uniform(rng));
       float pdf;
       const Vec3 forward =
-          evalBsdf(untexturedBsdf(c.material, wo, kUp, kUp), wi, &pdf) / std::fabs(wi.z);
+          evalBsdf(untexturedBsdf(c.material, wo, kUp, kUp, c.tangent), wi, &pdf) / std::fabs(wi.z);
       const Vec3 backward =
-          evalBsdf(untexturedBsdf(c.material, wi, kUp, kUp), wo, &pdf) / std::fabs(wo.z);
+          evalBsdf(untexturedBsdf(c.material, wi, kUp, kUp, c.tangent), wo, &pdf) / std::fabs(wo.z);
       // wo outside (index 1), wi inside (index ior) when transmitting.
       const float scale = transmit ? c.material.ior * c.material.ior : 1.0f;
       for (int a = 0; a < 3; ++a)
@@ -214,7 +226,66 @@ TEST(Bsdf, WhiteFurnaceNeverGainsEnergy) {
       }
       EXPECT_LE(albedo(glass(r, 1.5f), wo, kSamples).x, 1.0f + 0.01f);
       EXPECT_LE(albedo(plastic(r, Vec3(1.0f)), wo, kSamples).x, 1.0f + 0.01f);
+      EXPECT_LE(albedo(anisotropic(conductor(r, false), 0.8f), wo, kSamples).x, 1.0f + 1e-4f);
+      EXPECT_LE(albedo(anisotropic(glass(r, 1.5f), 0.8f), wo, kSamples).x, 1.0f + 0.01f);
     }
+  }
+}
+
+// OpenPBR's anisotropy: the tangent's alpha grows and the bitangent's shrinks, (1 - a) times it,
+// keeping the mean of their squares r^4; none is plain GGX of alpha r^2.
+TEST(Bsdf, AnisotropySplitsAlphaAsOpenPbr) {
+  Material m = conductor(0.6f, false);
+  const GgxAlpha plain = pointAlpha(m, m.roughness);
+  EXPECT_EQ(plain.x, 0.36f);
+  EXPECT_EQ(plain.y, 0.36f);
+  m.anisotropy = 0.7f;
+  const GgxAlpha split = pointAlpha(m, m.roughness);
+  EXPECT_NEAR(split.y / split.x, 0.3f, 1e-6f);
+  EXPECT_NEAR(split.x * split.x + split.y * split.y, 2.0f * 0.36f * 0.36f, 1e-6f);
+  // Full anisotropy keeps a lobe across the tangent; no roughness stays a mirror.
+  m.anisotropy = 1.0f;
+  EXPECT_EQ(pointAlpha(m, m.roughness).y, kSmoothAlpha);
+  EXPECT_FALSE(isSmooth(m));
+  m.roughness = 0.0f;
+  EXPECT_TRUE(isSmooth(m));
+  EXPECT_FALSE(hasSmoothLobe(m));
+}
+
+// Seen from above, an anisotropic conductor reflects more towards a direction tilted along its
+// tangent than across it (its highlight stretches along the tangent); the tangent turns the lobe
+// with it, and only its part in the surface's plane counts (+y as +y tilted up).
+TEST(Bsdf, AnisotropicLobeFollowsTheTangent) {
+  const Material m = anisotropic(conductor(0.4f, false), 0.8f);
+  const Vec3 tangent(0.0f, 1.0f, 0.0f);
+  const Bsdf b = untexturedBsdf(m, kUp, kUp, kUp, tangent);
+  const float tilt = 0.35f;
+  const Vec3 alongTangent(0.0f, std::sin(tilt), std::cos(tilt));
+  const Vec3 acrossTangent(std::sin(tilt), 0.0f, std::cos(tilt));
+  float pdf;
+  const float along = evalBsdf(b, alongTangent, &pdf).x;
+  const float across = evalBsdf(b, acrossTangent, &pdf).x;
+  EXPECT_GT(along, 5.0f * across);
+  const Bsdf isotropic = untexturedBsdf(conductor(0.4f, false), kUp, kUp, kUp, tangent);
+  EXPECT_FLOAT_EQ(evalBsdf(isotropic, alongTangent, &pdf).x,
+                  evalBsdf(isotropic, acrossTangent, &pdf).x);
+
+  // With tangent +y the local frame is (y, -x, z): the same as no tangent (tangent +x) with
+  // every direction turned so.
+  const auto turn = [](const Vec3& v) { return Vec3(v.y, -v.x, v.z); };
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
+  for (int i = 0; i < 200; ++i) {
+    const Vec3 wo = direction(uniform(rng), 2.0f * kPi * uniform(rng));
+    const Vec3 wi = direction(uniform(rng), 2.0f * kPi * uniform(rng));
+    float pdfTangent, pdfTurned, pdfTilted;
+    const float f = evalBsdf(untexturedBsdf(m, wo, kUp, kUp, tangent), wi, &pdfTangent).x;
+    const float turned = evalBsdf(untexturedBsdf(m, turn(wo), kUp, kUp), turn(wi), &pdfTurned).x;
+    const float fromTilted =
+        evalBsdf(untexturedBsdf(m, wo, kUp, kUp, Vec3(0.0f, 1.0f, 3.0f)), wi, &pdfTilted).x;
+    ASSERT_NEAR(f, turned, 1e-4f * f + 1e-7f);
+    ASSERT_NEAR(pdfTangent, pdfTurned, 1e-4f * pdfTangent + 1e-7f);
+    ASSERT_NEAR(f, fromTilted, 1e-4f * f + 1e-7f);
   }
 }
 

@@ -1,9 +1,11 @@
 // evalBsdf and its pdf against Mitsuba 3.9.1 (scalar_rgb) on the same materials and directions:
 // roughconductor (GGX, material "none" with a reflectance, and "Au"), roughdielectric (GGX,
-// int_ior 1.5: reflection and transmission from both sides), plastic and roughplastic (int_ior
-// 1.5, nonlinear false). The numbers are Mitsuba's BSDF::eval (f times the cosine, as evalBsdf)
-// and BSDF::pdf, printed by a script that loads each material with mi.load_dict; Mitsuba's
-// incident direction si.wi is candela's wo. The shading frame is the geometric one, +z up.
+// int_ior 1.5: reflection and transmission from both sides), both also anisotropic (alpha_u and
+// alpha_v from candela's roughness and anisotropy, render/microfacet.h), plastic and roughplastic
+// (int_ior 1.5, nonlinear false). The numbers are Mitsuba's BSDF::eval (f times the cosine, as
+// evalBsdf) and BSDF::pdf, printed by a script that loads each material with mi.load_dict;
+// Mitsuba's incident direction si.wi is candela's wo. The shading frame is the geometric one, +z
+// up.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -30,6 +32,9 @@ const Vec3 kPairs[][2] = {
     {direction(0.9f, 0.3f), direction(-0.7f, 3.5f)},
     {direction(-0.8f, 0.3f), direction(0.6f, 3.0f)},
     {direction(0.7f, 0.1f), direction(-0.9f, 3.0f)},
+    // Mirror pairs across the bitangent and across the tangent, for the anisotropic lobes.
+    {direction(0.6f, 1.4f), direction(0.7f, 4.6f)},
+    {direction(0.6f, 0.2f), direction(0.7f, 3.2f)},
 };
 
 Material material(const std::string& name) {
@@ -45,6 +50,16 @@ Material material(const std::string& name) {
     m.metal = true;
     m.metalEta = Vec3(0.143036f, 0.375307f, 1.44205f);  // Mitsuba's RGB gold
     m.metalK = Vec3(3.983f, 2.38556f, 1.60336f);
+  } else if (name == "acond") {  // Mitsuba's alpha_u 0.338643, alpha_v 0.101593
+    m.type = MaterialType::Conductor;
+    m.roughness = 0.5f;
+    m.anisotropy = 0.7f;
+    m.color = Vec3(0.9f, 0.8f, 0.7f);
+  } else if (name == "aglass") {  // alpha_u 0.328266, alpha_v 0.131306
+    m.type = MaterialType::Glass;
+    m.roughness = 0.5f;
+    m.anisotropy = 0.6f;
+    m.color = Vec3(1.0f);
   } else if (name == "glass04" || name == "glass07") {
     m.type = MaterialType::Glass;
     m.roughness = name == "glass04" ? 0.4f : 0.7f;
@@ -84,6 +99,19 @@ TEST(BsdfAgainstMitsuba, EvalAndPdfMatch) {
       {"glass07", 3, {0.101402f, 0.101402f, 0.101402f}, 0.241614f},
       {"glass07", 4, {0.687252f, 0.687252f, 0.687252f}, 0.335151f},
       {"glass07", 5, {1.22902f, 1.22902f, 1.22902f}, 2.80369f},
+      {"acond", 0, {1.80401f, 1.60357f, 1.40312f}, 2.03557f},
+      {"acond", 1, {0.811682f, 0.721495f, 0.631308f}, 0.923366f},
+      {"acond", 2, {0.129453f, 0.115069f, 0.100686f}, 0.143947f},
+      {"acond", 6, {1.84869f, 1.64328f, 1.43787f}, 2.06029f},
+      {"acond", 7, {1.00047f, 0.889307f, 0.778143f}, 1.14377f},
+      {"aglass", 0, {0.0681715f, 0.0681715f, 0.0681715f}, 0.0691684f},
+      {"aglass", 1, {0.0869237f, 0.0869237f, 0.0869237f}, 0.0890327f},
+      {"aglass", 2, {0.00793106f, 0.00793106f, 0.00793106f}, 0.0079381f},
+      {"aglass", 3, {0.0377342f, 0.0377342f, 0.0377342f}, 0.0869853f},
+      {"aglass", 4, {0.0512992f, 0.0512992f, 0.0512992f}, 0.023827f},
+      {"aglass", 5, {0.533026f, 0.533026f, 0.533026f}, 1.20671f},
+      {"aglass", 6, {0.114526f, 0.114526f, 0.114526f}, 0.115071f},
+      {"aglass", 7, {0.0732801f, 0.0732801f, 0.0732801f}, 0.0752746f},
       {"plastic0", 0, {0.154461f, 0.0772305f, 0.051487f}, 0.228183f},
       {"plastic0", 1, {0.107627f, 0.0538137f, 0.0358758f}, 0.150732f},
       {"plastic0", 2, {0.152084f, 0.0760419f, 0.0506946f}, 0.176303f},

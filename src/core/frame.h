@@ -29,6 +29,16 @@ struct Frame {
     t = Vec3(b, sign + n.y * n.y * a, -n.y);
   }
 
+  // The frame whose s is `tangent` made perpendicular to the normal (t = n x s); Frame(normal)'s
+  // where the tangent has no part in the normal's plane.
+  CANDELA_HDI Frame(const Vec3& normal, const Vec3& tangent) : Frame(normal) {
+    const Vec3 along = tangent - dot(tangent, normal) * normal;
+    const float length2 = dot(along, along);
+    if (!(length2 > 0.0f)) return;
+    s = along * (1.0f / sqrtf(length2));
+    t = cross(normal, s);
+  }
+
   CANDELA_HDI Vec3 toLocal(const Vec3& v) const { return {dot(v, s), dot(v, t), dot(v, n)}; }
   CANDELA_HDI Vec3 toWorld(const Vec3& v) const { return s * v.x + t * v.y + n * v.z; }
 };

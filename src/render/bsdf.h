@@ -36,9 +36,9 @@ CANDELA_HDI Vec3 facingNormal(const Vec3& wo, const Vec3& ng, const Vec3& ns) {
 struct Bsdf {
   const Material* material;
   Vec3 color;   // the material's colour at this point (textures resolved)
-  float alpha;  // conductor, glass, plastic: the microfacets' alpha at this point
+  GgxAlpha alpha;    // conductor, glass, plastic: the microfacets' alphas at this point
   PlasticCoat coat;  // plastic: its coat at this point
-  Frame frame;  // +z: the shading normal on wo's side
+  Frame frame;  // +z: the shading normal on wo's side; +x: the tangent of an anisotropic material
   Vec3 ng;
   float side;  // +1 when wo lies on ng's side (outside), else -1
   Vec3 wo;     // local (zero for a diffuse surface)
@@ -46,16 +46,18 @@ struct Bsdf {
 };
 
 // The BSDF of material m at a point of colour `color` and roughness `roughness` (its textures'
-// there: render/surface_color.h), seen from wo, for a path that carries `channel`
-// (render/dispersion.h).
+// there: render/surface_color.h) and tangent `tangent` (render/surface_tangent.h: zero for an
+// isotropic material), seen from wo, for a path that carries `channel` (render/dispersion.h).
 CANDELA_HDI Bsdf makeBsdf(const SceneView& scene, const Material& m, const Vec3& color,
-                          float roughness, const Vec3& wo, const Vec3& ng, const Vec3& ns,
-                          int32_t channel) {
+                          float roughness, const Vec3& tangent, const Vec3& wo, const Vec3& ng,
+                          const Vec3& ns, int32_t channel) {
   const float side = sideOf(wo, ng);
-  const Frame frame(facingNormal(wo, ng, ns));
+  const Vec3 n = facingNormal(wo, ng, ns);
+  const Frame frame =
+      tangent.x == 0.0f && tangent.y == 0.0f && tangent.z == 0.0f ? Frame(n) : Frame(n, tangent);
   // A diffuse surface, the most common, never reads wo.
   if (m.type == MaterialType::Diffuse)
-    return {&m, color, 0.0f, PlasticCoat(), frame, ng, side, Vec3(0.0f), 1.0f};
+    return {&m, color, GgxAlpha::isotropic(0.0f), PlasticCoat(), frame, ng, side, Vec3(0.0f), 1.0f};
   const PlasticCoat coat = m.type == MaterialType::Plastic
                                ? plasticCoatAt(m, scene.plasticCoats, roughness)
                                : PlasticCoat();

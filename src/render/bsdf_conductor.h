@@ -16,10 +16,10 @@ CANDELA_HDI Vec3 conductorFresnel(const Material& m, const Vec3& color, float co
 }
 
 // f |cos(wi)| and the pdf of sampling wi, together (they share D and G1(wo)).
-CANDELA_HDI Vec3 conductorEvalPdf(const Material& m, const Vec3& color, float alpha, const Vec3& wo,
-                                  const Vec3& wi, float* pdf) {
+CANDELA_HDI Vec3 conductorEvalPdf(const Material& m, const Vec3& color, GgxAlpha alpha,
+                                  const Vec3& wo, const Vec3& wi, float* pdf) {
   *pdf = 0.0f;
-  if (alpha < kSmoothAlpha || wo.z <= 0.0f || wi.z <= 0.0f) return Vec3(0.0f);
+  if (alpha.smooth() || wo.z <= 0.0f || wi.z <= 0.0f) return Vec3(0.0f);
   const Vec3 h = normalize(wo + wi);
   const float d = ggxD(h, alpha), g1o = ggxG1(wo, h, alpha);
   *pdf = g1o * d / (4.0f * wo.z);
@@ -27,10 +27,10 @@ CANDELA_HDI Vec3 conductorEvalPdf(const Material& m, const Vec3& color, float al
   return conductorFresnel(m, color, dot(wo, h)) * (dg / (4.0f * wo.z));
 }
 
-CANDELA_HDI bool conductorSample(const Material& m, const Vec3& color, float alpha, const Vec3& wo,
-                                 float u1, float u2, BsdfSample* s) {
+CANDELA_HDI bool conductorSample(const Material& m, const Vec3& color, GgxAlpha alpha,
+                                 const Vec3& wo, float u1, float u2, BsdfSample* s) {
   if (wo.z <= 0.0f) return false;
-  if (alpha < kSmoothAlpha) {
+  if (alpha.smooth()) {
     s->wi = Vec3(-wo.x, -wo.y, wo.z);
     s->weight = conductorFresnel(m, color, wo.z);
     s->pdf = 0.0f;

@@ -28,12 +28,12 @@ CANDELA_HDI bool dielectricHalfVector(const Vec3& wo, const Vec3& wi, float eta,
 }
 
 // f |cos(wi)| and the pdf of sampling wi, together (they share the half vector).
-CANDELA_HDI Vec3 dielectricEvalPdf(const Vec3& color, float alpha, float eta, const Vec3& wo,
+CANDELA_HDI Vec3 dielectricEvalPdf(const Vec3& color, GgxAlpha alpha, float eta, const Vec3& wo,
                                    const Vec3& wi, float* pdf) {
   *pdf = 0.0f;
   Vec3 wm;
   float etap;
-  if (alpha < kSmoothAlpha || !dielectricHalfVector(wo, wi, eta, &wm, &etap)) return Vec3(0.0f);
+  if (alpha.smooth() || !dielectricHalfVector(wo, wi, eta, &wm, &etap)) return Vec3(0.0f);
   const float F = fresnelDielectric(dot(wo, wm), eta);
   const float d = ggxD(wm, alpha), g1o = ggxG1(wo, wm, alpha);
   const float visible = ggxVisiblePdf(wo, wm, g1o, d);
@@ -73,10 +73,10 @@ CANDELA_HDI bool smoothDielectricBothLobes(const Vec3& color, float eta, const V
 }
 
 // uc picks reflection or refraction of a rough surface; a smooth one picks with u1.
-CANDELA_HDI bool dielectricSample(const Vec3& color, float alpha, float eta, const Vec3& wo,
+CANDELA_HDI bool dielectricSample(const Vec3& color, GgxAlpha alpha, float eta, const Vec3& wo,
                                   float uc, float u1, float u2, BsdfSample* s) {
   if (wo.z <= 0.0f) return false;
-  if (alpha < kSmoothAlpha) {
+  if (alpha.smooth()) {
     const float reflectance = fresnelDielectric(wo.z, eta);
     s->pdf = 0.0f;
     s->delta = true;

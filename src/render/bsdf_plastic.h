@@ -81,7 +81,7 @@ CANDELA_HDI float plasticCoatProbability(const Vec3& color, float transmittanceO
 }
 
 // plasticEvalPdf given wo's transmittance `to` and the coat's sampling probability.
-CANDELA_HDI Vec3 plasticEvalPdfAt(const Material& m, const PlasticCoat& coat, float alpha,
+CANDELA_HDI Vec3 plasticEvalPdfAt(const Material& m, const PlasticCoat& coat, GgxAlpha alpha,
                                   const Vec3& color, const Vec3& wo, const Vec3& wi, float to,
                                   float coatProbability, float* pdf) {
   *pdf = 0.0f;
@@ -90,7 +90,7 @@ CANDELA_HDI Vec3 plasticEvalPdfAt(const Material& m, const PlasticCoat& coat, fl
   const Vec3 base =
       color * (kInvPi * wi.z * to * ti / (m.ior * m.ior * (1.0f - coat.internalReflectance)));
   *pdf = (1.0f - coatProbability) * cosineHemispherePdf(wi.z);
-  if (alpha < kSmoothAlpha) return base;
+  if (alpha.smooth()) return base;
   const Vec3 h = normalize(wo + wi);
   const float d = ggxD(h, alpha), g1o = ggxG1(wo, h, alpha);
   *pdf += coatProbability * g1o * d / (4.0f * wo.z);
@@ -100,21 +100,21 @@ CANDELA_HDI Vec3 plasticEvalPdfAt(const Material& m, const PlasticCoat& coat, fl
 }
 
 // The smooth part (base, and a rough coat's reflection): f |cos(wi)| and its pdf.
-CANDELA_HDI Vec3 plasticEvalPdf(const Material& m, const PlasticCoat& coat, float alpha,
+CANDELA_HDI Vec3 plasticEvalPdf(const Material& m, const PlasticCoat& coat, GgxAlpha alpha,
                                 const Vec3& color, const Vec3& wo, const Vec3& wi, float* pdf) {
   const float to = wo.z > 0.0f ? plasticTransmittance(m, coat, wo.z) : 0.0f;
   return plasticEvalPdfAt(m, coat, alpha, color, wo, wi, to, plasticCoatProbability(color, to),
                           pdf);
 }
 
-CANDELA_HDI bool plasticSample(const Material& m, const PlasticCoat& coat, float alpha,
+CANDELA_HDI bool plasticSample(const Material& m, const PlasticCoat& coat, GgxAlpha alpha,
                                const Vec3& color, const Vec3& wo, float uc, float u1, float u2,
                                BsdfSample* s) {
   if (wo.z <= 0.0f) return false;
   const float to = plasticTransmittance(m, coat, wo.z);
   const float coatProbability = plasticCoatProbability(color, to);
   if (uc < coatProbability) {
-    if (alpha < kSmoothAlpha) {
+    if (alpha.smooth()) {
       s->wi = Vec3(-wo.x, -wo.y, wo.z);
       s->weight = Vec3(fresnelDielectric(wo.z, m.ior) / coatProbability);
       s->pdf = 0.0f;

@@ -29,6 +29,7 @@
 #include "render/ray_kind.h"
 #include "render/shadow_query.h"
 #include "render/surface_color.h"
+#include "render/surface_tangent.h"
 
 namespace candela {
 
@@ -300,8 +301,8 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
     kept[st.channel] = 3.0f;
     st.throughput *= kept;
   }
-  const Bsdf bsdf =
-      makeBsdf(scene, m, color, surfaceRoughness(scene, m, hit, sp), wo, sp.ng, sp.ns, st.channel);
+  const Bsdf bsdf = makeBsdf(scene, m, color, surfaceRoughness(scene, m, hit, sp),
+                             surfaceTangent(scene, m, hit, sp), wo, sp.ng, sp.ns, st.channel);
   const Vec3 hemisphere = reflectingHemisphere(bsdf);
   const bool smooth = hasSmoothLobe(m);
   float arrivalPdf = 0.0f;

@@ -35,6 +35,7 @@
 #include "render/ray_kind.h"
 #include "render/shadow_query.h"
 #include "render/surface_color.h"
+#include "render/surface_tangent.h"
 
 namespace candela {
 
@@ -50,6 +51,7 @@ struct LightVertex {
   SurfacePoint sp;
   Vec3 color;    // the surface's colour there (textures included)
   float roughness = 0.0f;  // and its roughness
+  Vec3 tangent = Vec3(0.0f);  // and its tangent (render/surface_tangent.h)
   Vec3 toLight;  // unit direction from sp.p to the light (its point L where it has a surface)
   // What the light sends to the vertex over the density of the subpath up to it, less the
   // geometry term between the two: a point light's power over its pick; a surface's radiance at
@@ -196,6 +198,7 @@ CANDELA_HDI void traceLightVertex(const SceneView& scene, const Tracer& tracer, 
   lv->sp = sp;
   lv->color = surfaceColor(scene, m, hit, sp);
   lv->roughness = surfaceRoughness(scene, m, hit, sp);
+  lv->tangent = surfaceTangent(scene, m, hit, sp);
   lv->toLight = -ray.direction;
   lv->light = index;
   lv->area = area;
@@ -241,7 +244,7 @@ CANDELA_HDI void connectLightVertex(const SceneView& scene, LightVertex* vertex,
   if (isBlack(fHere)) return;
   const Material& m = scene.materials[lv.sp.material];
   const Bsdf there =
-      makeBsdf(scene, m, lv.color, lv.roughness, -wi, lv.sp.ng, lv.sp.ns, kAllChannels);
+      makeBsdf(scene, m, lv.color, lv.roughness, lv.tangent, -wi, lv.sp.ng, lv.sp.ns, kAllChannels);
   float pdfThere;
   const Vec3 fThere = evalBsdf(there, lv.toLight, &pdfThere);
   const float cosIn = fabsf(dot(lv.sp.ng, lv.toLight)), cosOut = fabsf(dot(lv.sp.ng, wi));

@@ -44,6 +44,11 @@ struct Material {
   // it has the one index `ior`.
   Vec3 channelIor{0.0f};
   float roughness = 0.0f;  // conductor, glass, plastic: in [0, 1], alpha = roughness^2
+  // Conductor, glass: in [0, 1], how much rougher the surface is along its tangent (where u grows)
+  // than across it (render/microfacet.h, tangentAlpha); the tangent turned about the normal by
+  // anisotropyRotation radians.
+  float anisotropy = 0.0f;
+  float anisotropyRotation = 0.0f;
   // Conductor, glass, plastic: a texture whose value (luminance, read linearly) is the roughness
   // in place of `roughness`; the material is then rough everywhere (render/microfacet.h).
   TextureRef roughnessTexture;

@@ -25,7 +25,7 @@ double overVisibleNormals(double mu, float alpha, int points, Term term) {
   for (int j = 0; j < points; ++j)
     for (int i = 0; i < points; ++i) {
       const float u1 = (i + 0.5f) / points, u2 = (j + 0.5f) / points;
-      sum += term(wo, sampleGgxVisible(wo, alpha, u1, u2));
+      sum += term(wo, sampleGgxVisible(wo, GgxAlpha::isotropic(alpha), u1, u2));
     }
   return sum / (double(points) * points);
 }
@@ -40,7 +40,9 @@ int quadraturePoints(float eta) { return eta > 1.0f ? 64 : 128; }
 double roughCoatReflectance(double mu, float eta, float alpha) {
   return overVisibleNormals(mu, alpha, quadraturePoints(eta), [&](const Vec3& wo, const Vec3& m) {
     const Vec3 wi = reflect(wo, m);
-    return wi.z > 0.0f ? double(fresnelDielectric(dot(wo, m), eta) * ggxG1(wi, m, alpha)) : 0.0;
+    return wi.z > 0.0f ? double(fresnelDielectric(dot(wo, m), eta) *
+                                ggxG1(wi, m, GgxAlpha::isotropic(alpha)))
+                       : 0.0;
   });
 }
 
@@ -49,7 +51,8 @@ double roughCoatTransmittance(double mu, float eta, float alpha) {
   return overVisibleNormals(mu, alpha, quadraturePoints(eta), [&](const Vec3& wo, const Vec3& m) {
     Vec3 wt;
     if (!refract(wo, m, eta, &wt) || wt.z >= 0.0f) return 0.0;
-    return double((1.0f - fresnelDielectric(dot(wo, m), eta)) * ggxG1(wt, m, alpha));
+    return double((1.0f - fresnelDielectric(dot(wo, m), eta)) *
+                  ggxG1(wt, m, GgxAlpha::isotropic(alpha)));
   });
 }
 

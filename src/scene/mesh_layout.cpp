@@ -6,10 +6,12 @@
 
 namespace candela {
 
-bool readsUvs(const Material& m) {
+bool readsTextures(const Material& m) {
   return m.colorTexture.index >= 0 || m.emissionTexture.index >= 0 || m.alpha.texture.index >= 0 ||
          m.normalMap.index >= 0 || m.roughnessTexture.index >= 0;
 }
+
+bool readsUvs(const Material& m) { return readsTextures(m) || m.anisotropy != 0.0f; }
 
 bool usesNormals(const ObjectDesc& obj) { return obj.smooth && !obj.mesh->normals.empty(); }
 

@@ -38,6 +38,8 @@ struct MeshLayout {
 MeshLayout layOutMesh(const MeshDesc& mesh, bool withNormals, bool withUvs);
 
 // Whether a material looks anything up by uv: a texture, an alpha mask's or a normal map.
+bool readsTextures(const Material& m);
+// Whether a material needs uvs: it reads textures or orients its anisotropy by them.
 bool readsUvs(const Material& m);
 // Whether an object uses its mesh's normals: it is smooth and the file has them.
 bool usesNormals(const ObjectDesc& obj);

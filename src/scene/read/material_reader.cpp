@@ -5,6 +5,7 @@
 #include <cmath>
 #include <vector>
 
+#include "core/constants.h"
 #include "render/material_prepare.h"
 #include "scene/cauchy_index.h"
 #include "scene/read/did_you_mean.h"
@@ -23,15 +24,17 @@ enum TypeIndex : size_t { kDiffuse, kMirror, kGlass, kEmissive, kConductor, kPla
 
 // Every field a material may have, and which of them each type reads.
 const std::vector<std::string> kFields = {
-    "color",     "ior",        "roughness", "metal", "radiance",           "strength",
-    "two_sided", "normal_map", "bump_map",  "alpha", "transmission_depth", "abbe",
-    "visible"};
+    "color",     "ior",        "roughness",          "metal", "radiance",           "strength",
+    "two_sided", "normal_map", "bump_map",           "alpha", "transmission_depth", "abbe",
+    "visible",   "anisotropy", "anisotropy_rotation"};
 const std::vector<std::vector<std::string>> kFieldsOf = {
     {"color", "normal_map", "bump_map", "alpha"},  // diffuse
     {"color", "normal_map", "bump_map", "alpha"},  // mirror
-    {"color", "ior", "roughness", "normal_map", "bump_map", "alpha", "transmission_depth", "abbe"},
+    {"color", "ior", "roughness", "anisotropy", "anisotropy_rotation", "normal_map", "bump_map",
+     "alpha", "transmission_depth", "abbe"},           // glass
     {"radiance", "strength", "two_sided", "visible"},  // emissive
-    {"color", "roughness", "metal", "normal_map", "bump_map", "alpha"},
+    {"color", "roughness", "anisotropy", "anisotropy_rotation", "metal", "normal_map", "bump_map",
+     "alpha"},                                                         // conductor
     {"color", "ior", "roughness", "normal_map", "bump_map", "alpha"},  // plastic
     {"ior"},                                                           // thin_glass
 };
@@ -53,6 +56,24 @@ void readRoughness(JsonObject& fields, TextureLoader& textures, Material* materi
   const float roughness = value->number("a roughness in [0, 1] or a texture object");
   if (!(roughness >= 0.0f && roughness <= 1.0f)) value->failExpected("a roughness in [0, 1]");
   material->roughness = roughness;
+}
+
+// "anisotropy" a in [0, 1] and "anisotropy_rotation" (degrees) into the material: the roughness
+// along the surface's tangent and across it (render/microfacet.h, tangentAlpha).
+void readAnisotropy(JsonObject& fields, Material* material) {
+  if (std::optional<JsonValue> value = fields.get("anisotropy")) {
+    const float a = value->number("an anisotropy in [0, 1]");
+    if (!(a >= 0.0f && a <= 1.0f)) value->failExpected("an anisotropy in [0, 1]");
+    material->anisotropy = a;
+  }
+  if (std::optional<JsonValue> rotation = fields.get("anisotropy_rotation")) {
+    const float degrees = rotation->number("an angle in degrees");
+    if (material->anisotropy == 0.0f)
+      rotation->fail(
+          "turns the tangent of an anisotropic material; expected an \"anisotropy\" "
+          "above 0 beside it");
+    material->anisotropyRotation = float(std::fmod(double(degrees), 360.0) * kPi / 180.0);
+  }
 }
 
 // An emissive material's "radiance" (a colour, or a texture: material->emissionTexture) times its
@@ -163,6 +184,7 @@ Material readFields(JsonObject& fields, size_t type, TextureLoader& textures) {
     case kConductor:
       material.type = MaterialType::Conductor;
       readRoughness(fields, textures, &material);
+      readAnisotropy(fields, &material);
       if (std::optional<JsonValue> metal = fields.get("metal")) {
         if (color) fields.fail("give a conductor either \"color\" or \"metal\", not both");
         readMetal(*metal, &material);
@@ -172,6 +194,7 @@ Material readFields(JsonObject& fields, size_t type, TextureLoader& textures) {
     case kPlastic:
       material.type = type == kGlass ? MaterialType::Glass : MaterialType::Plastic;
       readRoughness(fields, textures, &material);
+      if (type == kGlass) readAnisotropy(fields, &material);
       if (std::optional<JsonValue> ior = fields.get("ior")) material.ior = ior->positiveNumber();
       if (std::optional<JsonValue> depth = fields.get("transmission_depth"))
         readAbsorption(*depth, color, &material);

@@ -100,22 +100,27 @@ void loadMeshes(SceneDesc& scene, const std::vector<std::string>& writtenNames,
                                warning);
   }
   // A texture on a mesh without texture coordinates reads one texel everywhere: a flat colour,
-  // surely not what was meant (a file exported without `vt`). Once per file for its own
-  // materials, as above, and per object for a material the scene gives it.
+  // surely not what was meant (a file exported without `vt`); an anisotropic material has no
+  // tangent to follow. Once per file for its own materials, as above, and per object for a
+  // material the scene gives it.
   std::set<const MeshDesc*> flat;
   for (size_t i = 0; i < scene.objects.size(); ++i) {
     const ObjectDesc& object = scene.objects[i];
     const MeshDesc& mesh = *object.mesh;
     if (!mesh.uvs.empty()) continue;
-    const bool textured = object.material
-                              ? readsUvs(*object.material)
-                              : std::any_of(mesh.materials.begin(), mesh.materials.end(), readsUvs);
-    if (!textured || (!object.material && !flat.insert(&mesh).second)) continue;
+    const auto any = [&](bool (*reads)(const Material&)) {
+      return object.material ? reads(*object.material)
+                             : std::any_of(mesh.materials.begin(), mesh.materials.end(), reads);
+    };
+    const bool textured = any(readsTextures);
+    if (!any(readsUvs) || (!object.material && !flat.insert(&mesh).second)) continue;
     scene.warnings.push_back(
         scene.file + ": " + object.where + ": " +
         (object.material ? "its material" : "a material of " + writtenNames[i]) +
-        " has a texture, but " + writtenNames[i] +
-        " has no texture coordinates (\"vt\"): the texel at uv (0, 0) covers the whole surface");
+        (textured ? " has a texture, but " : " is anisotropic, but ") + writtenNames[i] +
+        " has no texture coordinates (\"vt\"): " +
+        (textured ? "the texel at uv (0, 0) covers the whole surface"
+                  : "its roughness follows a tangent that the normal alone gives"));
   }
   shadeFacesWithoutNormals(scene);
 }
