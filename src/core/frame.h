@@ -21,7 +21,7 @@ struct Frame {
 
   // Duff et al. 2017, "Building an Orthonormal Basis, Revisited": branch-free and continuous
   // but where it turns over (kFrameTurnZ).
-  CANDELA_HDI explicit Frame(const Vec3& normal) : n(normal) {
+  CANDELA_HDI_ALWAYS explicit Frame(const Vec3& normal) : n(normal) {
     const float sign = n.z >= kFrameTurnZ ? 1.0f : -1.0f;
     const float a = -1.0f / (sign + n.z);
     const float b = n.x * n.y * a;

@@ -33,6 +33,11 @@ CANDELA_HDI Vec3 facingNormal(const Vec3& wo, const Vec3& ng, const Vec3& ns) {
   return sideOf(wo, ng) > 0.0f ? ns : -ns;
 }
 
+// Frame(n, tangent), out of line: only anisotropic materials have a tangent.
+CANDELA_HD_NOINLINE inline Frame tangentFrame(const Vec3& n, const Vec3& tangent) {
+  return Frame(n, tangent);
+}
+
 struct Bsdf {
   const Material* material;
   Vec3 color;   // the material's colour at this point (textures resolved)
@@ -48,13 +53,14 @@ struct Bsdf {
 // The BSDF of material m at a point of colour `color` and roughness `roughness` (its textures'
 // there: render/surface_color.h) and tangent `tangent` (render/surface_tangent.h: zero for an
 // isotropic material), seen from wo, for a path that carries `channel` (render/dispersion.h).
-CANDELA_HDI Bsdf makeBsdf(const SceneView& scene, const Material& m, const Vec3& color,
-                          float roughness, const Vec3& tangent, const Vec3& wo, const Vec3& ng,
-                          const Vec3& ns, int32_t channel) {
+CANDELA_HDI_ALWAYS Bsdf makeBsdf(const SceneView& scene, const Material& m, const Vec3& color,
+                                 float roughness, const Vec3& tangent, const Vec3& wo,
+                                 const Vec3& ng, const Vec3& ns, int32_t channel) {
   const float side = sideOf(wo, ng);
   const Vec3 n = facingNormal(wo, ng, ns);
-  const Frame frame =
-      tangent.x == 0.0f && tangent.y == 0.0f && tangent.z == 0.0f ? Frame(n) : Frame(n, tangent);
+  const Frame frame = tangent.x == 0.0f && tangent.y == 0.0f && tangent.z == 0.0f
+                          ? Frame(n)
+                          : tangentFrame(n, tangent);
   // A diffuse surface, the most common, never reads wo.
   if (m.type == MaterialType::Diffuse)
     return {&m, color, GgxAlpha::isotropic(0.0f), PlasticCoat(), frame, ng, side, Vec3(0.0f), 1.0f};

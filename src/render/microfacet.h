@@ -49,6 +49,10 @@ CANDELA_HDI bool isSmooth(const Material& m) {
 // its smoothest texels as rough as kSmoothAlpha, so that what is decided per material (isSmooth,
 // hasSmoothLobe) holds at every point, and full anisotropy keeps a lobe along the bitangent.
 CANDELA_HDI GgxAlpha pointAlpha(const Material& m, float roughness) {
+  if (m.anisotropy == 0.0f) {  // the common case, without tangentAlpha's square root
+    const float alpha = roughnessToAlpha(roughness);
+    return GgxAlpha::isotropic(m.roughnessTexture.index >= 0 ? maxf(alpha, kSmoothAlpha) : alpha);
+  }
   const float along = tangentAlpha(roughness, m.anisotropy);
   if (m.roughnessTexture.index < 0 && along < kSmoothAlpha) return GgxAlpha::isotropic(along);
   return {maxf(along, kSmoothAlpha), maxf((1.0f - m.anisotropy) * along, kSmoothAlpha)};
