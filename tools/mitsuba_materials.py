@@ -24,6 +24,11 @@ harness does for diffuse, since candela's reflect on both sides:
                                 `volpath` instead of `path`
   thin_glass                 -> thindielectric, int_ior = ior, ext_ior 1 (Mitsuba's shadow rays stop
                                 at it where candela's pass: the same image, Mitsuba's noisier)
+  conductor or glass with anisotropy a
+                             -> the same, with alpha_u = r^2 sqrt(2 / (1 + (1 - a)^2)) and
+                                alpha_v = (1 - a) alpha_u (at least 0.001), on a sphere turned as
+                                a textured one below, so that Mitsuba's tangent dp/du runs along
+                                candela's azimuth about +y (anisotropy_rotation is not mapped)
   (a roughness r > 0 whose alpha = r^2 is below 0.001 is smooth in candela, docs/scene-format.md's
   Roughness, so it maps as roughness 0)
   {"texture": T, "scale": [su, sv]} as a colour on a sphere (tools/mitsuba_mtl.py maps it on
@@ -47,7 +52,7 @@ import mitsuba_envmap  # noqa: E402  (sets up the shared harness's path)
 import candela_scene as cs  # noqa: E402
 import mitsuba_ref as mr  # noqa: E402
 
-cs.KNOWN['material'] |= {'roughness', 'metal', 'transmission_depth'}
+cs.KNOWN['material'] |= {'roughness', 'metal', 'transmission_depth', 'anisotropy'}
 harness_make_mat = cs._make_mat
 harness_bsdf_dict = mr.bsdf_dict
 
@@ -88,6 +93,13 @@ def textured(mat):
 
 
 def make_mat(ctx, t, fields, path):
+    mat = make_isotropic_mat(ctx, t, fields, path)
+    if 'anisotropy' in fields:
+        mat['anisotropy'] = ctx.number(fields['anisotropy'], path + '.anisotropy')
+    return mat
+
+
+def make_isotropic_mat(ctx, t, fields, path):
     roughness = float(fields.get('roughness', 0.0))
     if t == 'diffuse' and isinstance(fields.get('color'), dict):
         return dict(type='diffuse', color=colour(ctx, fields, 0.8, path))
@@ -112,10 +124,22 @@ def make_mat(ctx, t, fields, path):
     return mat
 
 
+def alphas(mat):
+    """Mitsuba's alpha, or alpha_u and alpha_v (render/microfacet.h, pointAlpha)."""
+    r, a = mat.get('roughness', 0.0), mat.get('anisotropy', 0.0)
+    along = r * r * math.sqrt(2 / (1 + (1 - a) ** 2))
+    if a == 0:
+        return {'alpha': along}
+    return {'alpha_u': max(along, SMOOTH_ALPHA), 'alpha_v': max((1 - a) * along, SMOOTH_ALPHA)}
+
+
+def anisotropic(mat):
+    return mat.get('anisotropy', 0.0) > 0
+
+
 def bsdf_dict(mat):
-    t, r = mat['type'], mat.get('roughness', 0.0)
-    alpha = r * r
-    rough = alpha >= SMOOTH_ALPHA
+    t = mat['type']
+    rough = max(alphas(mat).values()) >= SMOOTH_ALPHA
     if t == 'conductor':
         if mat['metal']:
             d = {'material': mat['metal']}
@@ -123,18 +147,18 @@ def bsdf_dict(mat):
             d = {'material': 'none', 'specular_reflectance': spectrum(mat['color'])}
         d['type'] = 'conductor'
         if rough:
-            d.update(type='roughconductor', distribution='ggx', alpha=alpha)
+            d.update(type='roughconductor', distribution='ggx', **alphas(mat))
         return {'type': 'twosided', 'bsdf': d}
     if t == 'plastic':
         d = {'type': 'plastic', 'int_ior': float(mat['ior']), 'ext_ior': 1.0,
              'diffuse_reflectance': spectrum(mat['color']), 'nonlinear': False}
         if rough:
-            d.update(type='roughplastic', distribution='ggx', alpha=alpha)
+            d.update(type='roughplastic', distribution='ggx', **alphas(mat))
         return {'type': 'twosided', 'bsdf': d}
     if t == 'thin_glass':
         return {'type': 'thindielectric', 'int_ior': float(mat['ior']), 'ext_ior': 1.0}
     if t == 'glass' and rough:
-        return {'type': 'roughdielectric', 'distribution': 'ggx', 'alpha': alpha,
+        return {'type': 'roughdielectric', 'distribution': 'ggx', **alphas(mat),
                 'int_ior': float(mat['ior']), 'ext_ior': 1.0,
                 'specular_transmittance': mr.rgb(mat['color'])}
     if t == 'diffuse' and textured(mat):
@@ -157,7 +181,7 @@ def scene_dict(sc, *args, **kwargs):
                 'scale': top, 'albedo': 0.0}
             d['integrator']['type'] = 'volpath'
     for i, s in enumerate(sc['spheres']):
-        if textured(s['mat']):
+        if textured(s['mat']) or anisotropic(s['mat']):
             sphere = d[f'sphere{i}']
             c, r = sphere.pop('center'), sphere.pop('radius')
             M = mr.np.eye(4)
