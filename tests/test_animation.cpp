@@ -9,6 +9,7 @@
 #include <random>
 #include <string>
 
+#include "backends/cpu/cpu_renderer.h"
 #include "geometry/bvh_traverse.h"
 #include "scene/animation.h"
 #include "scene/content_hash.h"
@@ -279,6 +280,63 @@ TEST(SceneAtFrame, ColourTrackOnAnObjectWithoutMaterialMakesItDiffuse) {
   ASSERT_TRUE(still.objects[0].material);
   EXPECT_EQ(still.objects[0].material->type, MaterialType::Diffuse);
   EXPECT_EQ(still.objects[0].material->color.x, 0.25f);
+}
+
+// A roughness track sets the material's roughness at each frame and what the material derives
+// from it: a plastic's coat tables are those of a plastic of that roughness. Frame 2 of the
+// animation renders, to the bit, as the still scene with that roughness and the frame's seed.
+TEST(SceneAtFrame, RoughnessTrackRendersAsTheStillOfThatRoughness) {
+  const auto shells = [](const std::string& plastic, const std::string& animation) {
+    return R"({"camera": {"width": 12, "height": 8, "position": [0, 0, 5], "spp": 4},
+      "spheres": [{"id": "shell", "position": [0, 0, 0], "radius": 1,
+                   "material": {"type": "plastic", "color": 0.4, "roughness": )" +
+           plastic + R"(}},
+                  {"id": "metal", "position": [2.5, 0, 0], "radius": 1,
+                   "material": {"type": "conductor", "metal": "Au", "roughness": )" +
+           plastic + R"(, "anisotropy": 0.5}}],
+      "lights": [{"position": [0, 5, 5], "intensity": 100}])" +
+           animation + "}";
+  };
+  const SceneDesc animated = parse(shells("0.25", R"(, "animation": {"frames": 5, "tracks": [
+      {"target": "shell", "property": "roughness", "keys": [[0, 0.25], [4, 0.75]]},
+      {"target": "metal", "property": "roughness", "keys": [[0, 0.25], [4, 0.75]]}]})"));
+  SceneDesc still = parse(shells("0.5", ""));
+  still.render.seed += 2;
+  const SceneDesc frame = sceneAtFrame(animated, 2);
+  const Material& shell = frame.spheres[0].material;
+  EXPECT_EQ(shell.roughness, 0.5f);
+  EXPECT_EQ(frame.spheres[1].material.roughness, 0.5f);
+  const Material& reference = still.spheres[0].material;
+  EXPECT_EQ(shell.plasticInternalReflectance, reference.plasticInternalReflectance);
+  for (uint32_t i = 0; i < kPlasticTableSize; ++i)
+    EXPECT_EQ(shell.plasticTransmittance[i], reference.plasticTransmittance[i]) << i;
+  const SceneData frameData = flattenScene(frame), stillData = flattenScene(still);
+  const RenderResult a = renderCpu(frameData.view(), RenderOptions{});
+  const RenderResult b = renderCpu(stillData.view(), RenderOptions{});
+  for (uint32_t y = 0; y < 8; ++y)
+    for (uint32_t x = 0; x < 12; ++x)
+      for (int c = 0; c < 3; ++c) EXPECT_EQ(a.image.at(x, y)[c], b.image.at(x, y)[c]);
+}
+
+TEST(AnimationErrors, RoughnessOfWhatHasNone) {
+  EXPECT_EQ(trackError(R"({"target": "ball", "property": "roughness", "keys": [[0, 0.5]]})"),
+            "s.json: animation.tracks[0].property: \"roughness\" is not used by a \"diffuse\" "
+            "material");
+  EXPECT_EQ(trackError(R"({"target": "sun", "property": "roughness", "keys": [[0, 0.5]]})"),
+            "s.json: animation.tracks[0].property: \"roughness\" is not used by an emissive "
+            "material");
+  const std::string metal = R"({"camera": {},
+    "spheres": [{"id": "ball", "radius": 1, "position": [0, 0, 0],
+                 "material": {"type": "conductor", "roughness": 0.3}}],
+    "animation": {"frames": 3, "tracks": [
+      {"target": "ball", "property": "roughness", "keys": [[0, 0.3], [2, 1.5]]}]}})";
+  try {
+    parse(metal);
+    ADD_FAILURE() << "no error";
+  } catch (const SceneError& e) {
+    EXPECT_STREQ(e.what(),
+                 "s.json: animation.tracks[0].keys[1][1]: expected a roughness in [0, 1], got 1.5");
+  }
 }
 
 TEST(SceneAtFrame, OrbitExampleLoopsSeamlessly) {

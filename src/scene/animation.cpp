@@ -3,6 +3,8 @@
 
 #include <algorithm>
 
+#include "render/material_prepare.h"
+
 namespace candela {
 namespace {
 
@@ -19,11 +21,20 @@ void applyToCamera(CameraDesc& camera, AnimProperty property, const Vec3& v) {
   }
 }
 
+// A material's roughness at a frame, with what it derives from it (a plastic's coat tables).
+void setRoughness(Material& material, float roughness) {
+  material.roughness = roughness;
+  prepareMaterial(&material);
+}
+
 void applyToSphere(SphereDesc& sphere, AnimProperty property, const Vec3& v) {
   switch (property) {
     case AnimProperty::Position: sphere.position = v; break;
     case AnimProperty::Radius: sphere.radius = v.x; break;
     case AnimProperty::Color: sphere.material.color = v; break;
+    case AnimProperty::Roughness:
+      setRoughness(sphere.material, v.x);
+      break;
     default: break;
   }
 }
@@ -36,6 +47,9 @@ void applyToObject(ObjectDesc& object, AnimProperty property, const Vec3& v) {
     case AnimProperty::Color:
       if (!object.material) object.material = Material{};  // diffuse, as a static "color"
       object.material->color = v;
+      break;
+    case AnimProperty::Roughness:
+      if (object.material) setRoughness(*object.material, v.x);  // the loader refuses none
       break;
     default: break;
   }

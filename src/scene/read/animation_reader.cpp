@@ -28,11 +28,13 @@ const std::vector<PropertyName>& propertiesOf(AnimTarget target) {
       {"focus_distance", AnimProperty::FocusDistance}};
   static const std::vector<PropertyName> sphere = {{"position", AnimProperty::Position},
                                                    {"radius", AnimProperty::Radius},
-                                                   {"color", AnimProperty::Color}};
+                                                   {"color", AnimProperty::Color},
+                                                   {"roughness", AnimProperty::Roughness}};
   static const std::vector<PropertyName> object = {{"position", AnimProperty::Position},
                                                    {"rotation", AnimProperty::Rotation},
                                                    {"scale", AnimProperty::Scale},
-                                                   {"color", AnimProperty::Color}};
+                                                   {"color", AnimProperty::Color},
+                                                   {"roughness", AnimProperty::Roughness}};
   static const std::vector<PropertyName> light = {{"position", AnimProperty::Position},
                                                   {"intensity", AnimProperty::Intensity},
                                                   {"color", AnimProperty::Color},
@@ -135,6 +137,12 @@ Vec3 readValue(const JsonValue& value, AnimProperty property) {
     case AnimProperty::FocusDistance:
     case AnimProperty::Radius: return Vec3(value.positiveNumber());
     case AnimProperty::Color: return value.colour();
+    case AnimProperty::Roughness: {
+      const std::string expectation = "a roughness in [0, 1]";
+      const float roughness = value.number(expectation);
+      if (!(roughness >= 0.0f && roughness <= 1.0f)) value.failExpected(expectation);
+      return Vec3(roughness);
+    }
     case AnimProperty::Scale: return readScale(value);
     case AnimProperty::Direction:
       return readDirection(value);
@@ -240,7 +248,7 @@ void checkUsed(const JsonValue& property, const AnimTrack& track, const SceneDes
       default:
         break;
     }
-  } else if (track.property == AnimProperty::Color) {
+  } else if (track.property == AnimProperty::Color || track.property == AnimProperty::Roughness) {
     const Material* m = track.target == AnimTarget::Sphere
                                 ? &scene.spheres[track.index].material
                                 : (scene.objects[track.index].material
@@ -248,8 +256,14 @@ void checkUsed(const JsonValue& property, const AnimTrack& track, const SceneDes
                                        : nullptr);
     if (m && m->type == MaterialType::Emissive) unused("an emissive material");
     if (m && m->alpha.thinSheetIor > 0.0f) unused("a \"thin_glass\" material");
-    if (m && !isBlack(m->absorption))
-      unused("glass with a \"transmission_depth\" (its colour sets what it absorbs, once)");
+    if (track.property == AnimProperty::Color) {
+      if (m && !isBlack(m->absorption))
+        unused("glass with a \"transmission_depth\" (its colour sets what it absorbs, once)");
+      return;
+    }
+    if (!m) unused("an object whose materials are its file's (give it a \"material\")");
+    if (m->type == MaterialType::Diffuse) unused("a \"diffuse\" material");
+    if (m->roughnessTexture.index >= 0) unused("a material whose roughness is a texture");
   }
 }
 
