@@ -185,5 +185,45 @@ TEST(Anisotropy, AMeshWithoutUvsIsWarnedOf) {
             "coordinates (\"vt\"): its roughness follows a tangent that the normal alone gives");
 }
 
+// MTL's PBR extension, as Blender writes it: `aniso` is a metal's (Kd 0: docs/scene-format.md,
+// MTL materials) anisotropy and `anisor` its
+// rotation as a fraction of a full turn; a plastic (a material with a Kd) keeps an isotropic
+// coat, with a warning, and a value outside [0, 1] is refused at its line.
+TEST(Anisotropy, MtlAnisoMakesABrushedMetal) {
+  const fs::path dir = test::mapTestFolder("anisotropy_mtl");
+  std::ofstream(dir / "quad.obj") << "mtllib quad.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
+                                  << "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
+                                  << "usemtl steel\nf 1/1 2/2 3/3\nusemtl paint\nf 1/1 3/3 4/4\n";
+  const auto load = [&](const std::string& steelAniso) {
+    std::ofstream(dir / "quad.mtl") << "newmtl steel\nKd 0 0 0\nKs 0.8 0.8 0.8\nPr 0.4\naniso "
+                                    << steelAniso << "\nanisor 0.25\n"
+                                    << "newmtl paint\nKd 0.5 0.1 0.1\nKs 0.5 0.5 0.5\naniso 0.5\n";
+    return parseSceneText(R"({"camera": {"width": 4, "height": 4},
+                              "objects": [{"file": "quad.obj"}]})",
+                          "s.json", dir.string());
+  };
+  const SceneDesc scene = load("0.6");
+  const std::vector<Material>& materials = scene.objects[0].mesh->materials;
+  ASSERT_EQ(materials.size(), 2u);
+  EXPECT_EQ(materials[0].type, MaterialType::Conductor);
+  EXPECT_FLOAT_EQ(materials[0].roughness, 0.4f);
+  EXPECT_FLOAT_EQ(materials[0].anisotropy, 0.6f);
+  EXPECT_FLOAT_EQ(materials[0].anisotropyRotation, kPi / 2);
+  EXPECT_EQ(materials[1].type, MaterialType::Plastic);
+  EXPECT_EQ(materials[1].anisotropy, 0.0f);
+  ASSERT_EQ(scene.warnings.size(), 1u);
+  EXPECT_EQ(scene.warnings[0],
+            "s.json: objects[0].file: quad.mtl:10: \"aniso\" not used: material \"paint\" has a "
+            "diffuse colour, so it is a plastic, whose coat is isotropic");
+  try {
+    load("1.5");
+    ADD_FAILURE() << "no error";
+  } catch (const SceneError& e) {
+    EXPECT_STREQ(
+        e.what(),
+        "s.json: objects[0].file: quad.mtl:5: expected aniso between 0 and 1, got \"1.5\"");
+  }
+}
+
 }  // namespace
 }  // namespace candela

@@ -48,6 +48,10 @@ static void collectStatements(const std::string& text, const std::string& label,
       own.mapPr = keep(6);
     else if (isKeyword("Pr", 2))
       own.pr = keep(2);
+    else if (isKeyword("anisor", 6))
+      own.anisor = keep(6);
+    else if (isKeyword("aniso", 5))
+      own.aniso = keep(5);
     else if (isKeyword("map_Bump", 8) || isKeyword("map_bump", 8) || isKeyword("bump", 4)) {
       own.bumpKeyword = statement.substr(0, statement.find_first_of(" \t"));
       own.bump = keep(own.bumpKeyword.size());

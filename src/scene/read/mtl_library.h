@@ -29,6 +29,9 @@ struct MtlTextures {
   std::optional<MtlStatement> mapKd, mapKe, d, tr, mapD, norm;
   // The PBR extension's roughness: a number, or a texture of them.
   std::optional<MtlStatement> pr, mapPr;
+  // The PBR extension's anisotropy and its rotation (a fraction of a full turn), as Blender's
+  // exporter writes them.
+  std::optional<MtlStatement> aniso, anisor;
   // A bump map (`bump`, `map_Bump` or `map_bump`, as written in bumpKeyword): heights, read
   // where the material has no `norm`.
   std::optional<MtlStatement> bump;

@@ -11,6 +11,7 @@
 #include <sstream>
 #include <unordered_set>
 
+#include "core/constants.h"
 #include "render/material_prepare.h"
 #include "scene/read/mtl_library.h"
 #include "scene/read/normal_map_guess.h"
@@ -151,6 +152,14 @@ float roughnessOfPhongExponent(float ns) {
   return std::min(1.0f, std::sqrt(std::sqrt(2.0f / (std::max(ns, 0.0f) + 2.0f))));
 }
 
+// A metal's anisotropy (`aniso`, in [0, 1]) and its rotation (`anisor`, a fraction of a full turn
+// counter-clockwise, as Blender's Anisotropic Rotation), read as the JSON anisotropy's.
+void readMtlAnisotropy(const MtlTextures& s, Material* desc) {
+  if (s.aniso) desc->anisotropy = unitNumber(*s.aniso, "aniso");
+  if (s.anisor && desc->anisotropy > 0.0f)
+    desc->anisotropyRotation = unitNumber(*s.anisor, "anisor") * 2.0f * kPi;
+}
+
 // One material per MTL material (docs/scene-format.md, MTL materials): emissive with radiance Ke
 // (times map_Ke, Ke 1 where only map_Ke is given) where either is set; else with a Ks that is not
 // black a plastic (colour Kd or map_Kd, index Ni) or, without a diffuse colour, a conductor of
@@ -240,7 +249,15 @@ std::vector<Material> mtlMaterials(const std::vector<tinyobj::material_t>& mater
       if (isBlack(desc.color) && desc.colorTexture.index < 0) {
         desc.type = MaterialType::Conductor;
         desc.color = specular;
+        if (found != library.statements.end()) readMtlAnisotropy(found->second, &desc);
       } else {
+        if (found != library.statements.end() && found->second.aniso) {
+          const MtlStatement& aniso = *found->second.aniso;
+          warnings->push_back(aniso.file + ":" + std::to_string(aniso.line) +
+                              ": \"aniso\" not used: material \"" + material.name +
+                              "\" has a diffuse colour, so it is a plastic, whose coat is "
+                              "isotropic");
+        }
         desc.type = MaterialType::Plastic;
         // tinyobjloader's default Ni is 1, which exporters also write for "not set".
         if (std::isfinite(material.ior) && material.ior > 1.0f) desc.ior = material.ior;
