@@ -283,29 +283,34 @@ TEST(SceneAtFrame, ColourTrackOnAnObjectWithoutMaterialMakesItDiffuse) {
 }
 
 // A roughness track sets the material's roughness at each frame and what the material derives
-// from it: a plastic's coat tables are those of a plastic of that roughness. Frame 2 of the
-// animation renders, to the bit, as the still scene with that roughness and the frame's seed.
+// from it: a plastic's coat tables are those of a plastic of that roughness; an anisotropy track
+// likewise. Frame 2 of the animation renders, to the bit, as the still scene with those values
+// and the frame's seed.
 TEST(SceneAtFrame, RoughnessTrackRendersAsTheStillOfThatRoughness) {
-  const auto shells = [](const std::string& plastic, const std::string& animation) {
+  const auto shells = [](const std::string& plastic, const std::string& animation,
+                         const std::string& anisotropy = "0.5") {
     return R"({"camera": {"width": 12, "height": 8, "position": [0, 0, 5], "spp": 4},
       "spheres": [{"id": "shell", "position": [0, 0, 0], "radius": 1,
                    "material": {"type": "plastic", "color": 0.4, "roughness": )" +
            plastic + R"(}},
                   {"id": "metal", "position": [2.5, 0, 0], "radius": 1,
                    "material": {"type": "conductor", "metal": "Au", "roughness": )" +
-           plastic + R"(, "anisotropy": 0.5}}],
+           plastic + R"(, "anisotropy": )" + anisotropy + R"(}}],
       "lights": [{"position": [0, 5, 5], "intensity": 100}])" +
            animation + "}";
   };
   const SceneDesc animated = parse(shells("0.25", R"(, "animation": {"frames": 5, "tracks": [
       {"target": "shell", "property": "roughness", "keys": [[0, 0.25], [4, 0.75]]},
-      {"target": "metal", "property": "roughness", "keys": [[0, 0.25], [4, 0.75]]}]})"));
+      {"target": "metal", "property": "roughness", "keys": [[0, 0.25], [4, 0.75]]},
+      {"target": "metal", "property": "anisotropy", "keys": [[0, 0.25], [4, 0.75]]}]})",
+                                          "0.25"));
   SceneDesc still = parse(shells("0.5", ""));
   still.render.seed += 2;
   const SceneDesc frame = sceneAtFrame(animated, 2);
   const Material& shell = frame.spheres[0].material;
   EXPECT_EQ(shell.roughness, 0.5f);
   EXPECT_EQ(frame.spheres[1].material.roughness, 0.5f);
+  EXPECT_EQ(frame.spheres[1].material.anisotropy, 0.5f);
   const Material& reference = still.spheres[0].material;
   EXPECT_EQ(shell.plasticInternalReflectance, reference.plasticInternalReflectance);
   for (uint32_t i = 0; i < kPlasticTableSize; ++i)
@@ -324,6 +329,9 @@ TEST(AnimationErrors, RoughnessOfWhatHasNone) {
             "material");
   EXPECT_EQ(trackError(R"({"target": "sun", "property": "roughness", "keys": [[0, 0.5]]})"),
             "s.json: animation.tracks[0].property: \"roughness\" is not used by an emissive "
+            "material");
+  EXPECT_EQ(trackError(R"({"target": "ball", "property": "anisotropy", "keys": [[0, 0.5]]})"),
+            "s.json: animation.tracks[0].property: \"anisotropy\" is not used by a \"diffuse\" "
             "material");
   const std::string metal = R"({"camera": {},
     "spheres": [{"id": "ball", "radius": 1, "position": [0, 0, 0],

@@ -35,6 +35,9 @@ void applyToSphere(SphereDesc& sphere, AnimProperty property, const Vec3& v) {
     case AnimProperty::Roughness:
       setRoughness(sphere.material, v.x);
       break;
+    case AnimProperty::Anisotropy:
+      sphere.material.anisotropy = v.x;
+      break;
     default: break;
   }
 }
@@ -50,6 +53,9 @@ void applyToObject(ObjectDesc& object, AnimProperty property, const Vec3& v) {
       break;
     case AnimProperty::Roughness:
       if (object.material) setRoughness(*object.material, v.x);  // the loader refuses none
+      break;
+    case AnimProperty::Anisotropy:
+      if (object.material) object.material->anisotropy = v.x;
       break;
     default: break;
   }

@@ -29,12 +29,12 @@ const std::vector<PropertyName>& propertiesOf(AnimTarget target) {
   static const std::vector<PropertyName> sphere = {{"position", AnimProperty::Position},
                                                    {"radius", AnimProperty::Radius},
                                                    {"color", AnimProperty::Color},
-                                                   {"roughness", AnimProperty::Roughness}};
-  static const std::vector<PropertyName> object = {{"position", AnimProperty::Position},
-                                                   {"rotation", AnimProperty::Rotation},
-                                                   {"scale", AnimProperty::Scale},
-                                                   {"color", AnimProperty::Color},
-                                                   {"roughness", AnimProperty::Roughness}};
+                                                   {"roughness", AnimProperty::Roughness},
+                                                   {"anisotropy", AnimProperty::Anisotropy}};
+  static const std::vector<PropertyName> object = {
+      {"position", AnimProperty::Position},   {"rotation", AnimProperty::Rotation},
+      {"scale", AnimProperty::Scale},         {"color", AnimProperty::Color},
+      {"roughness", AnimProperty::Roughness}, {"anisotropy", AnimProperty::Anisotropy}};
   static const std::vector<PropertyName> light = {{"position", AnimProperty::Position},
                                                   {"intensity", AnimProperty::Intensity},
                                                   {"color", AnimProperty::Color},
@@ -137,11 +137,13 @@ Vec3 readValue(const JsonValue& value, AnimProperty property) {
     case AnimProperty::FocusDistance:
     case AnimProperty::Radius: return Vec3(value.positiveNumber());
     case AnimProperty::Color: return value.colour();
-    case AnimProperty::Roughness: {
-      const std::string expectation = "a roughness in [0, 1]";
-      const float roughness = value.number(expectation);
-      if (!(roughness >= 0.0f && roughness <= 1.0f)) value.failExpected(expectation);
-      return Vec3(roughness);
+    case AnimProperty::Roughness:
+    case AnimProperty::Anisotropy: {
+      const std::string expectation =
+          property == AnimProperty::Roughness ? "a roughness in [0, 1]" : "an anisotropy in [0, 1]";
+      const float v = value.number(expectation);
+      if (!(v >= 0.0f && v <= 1.0f)) value.failExpected(expectation);
+      return Vec3(v);
     }
     case AnimProperty::Scale: return readScale(value);
     case AnimProperty::Direction:
@@ -248,7 +250,8 @@ void checkUsed(const JsonValue& property, const AnimTrack& track, const SceneDes
       default:
         break;
     }
-  } else if (track.property == AnimProperty::Color || track.property == AnimProperty::Roughness) {
+  } else if (track.property == AnimProperty::Color || track.property == AnimProperty::Roughness ||
+             track.property == AnimProperty::Anisotropy) {
     const Material* m = track.target == AnimTarget::Sphere
                                 ? &scene.spheres[track.index].material
                                 : (scene.objects[track.index].material
@@ -263,6 +266,10 @@ void checkUsed(const JsonValue& property, const AnimTrack& track, const SceneDes
     }
     if (!m) unused("an object whose materials are its file's (give it a \"material\")");
     if (m->type == MaterialType::Diffuse) unused("a \"diffuse\" material");
+    if (track.property == AnimProperty::Anisotropy) {
+      if (m->type == MaterialType::Plastic) unused("a \"plastic\" material");
+      return;
+    }
     if (m->roughnessTexture.index >= 0) unused("a material whose roughness is a texture");
   }
 }
