@@ -26,8 +26,23 @@ struct SurfacePoint {
   Vec3 error;  // absolute bound on the error of p, per axis
   Vec3 ng;     // unit geometric normal, towards the primitive's outside
   Vec3 ns;     // unit shading normal, dot(ns, ng) >= 0
+  // A face shaded by its vertex normals: the step from p out to the smooth surface that they
+  // describe (terminatorLift), on the side they face; zero elsewhere.
+  Vec3 lift = Vec3(0.0f);
   uint32_t material;
 };
+
+// Hanika 2021, "Hacking the Shadow Terminator": p (barycentrics b of the face with vertices v
+// and unit vertex normals n, all on one side of it) raised along each vertex normal by as far as
+// it lies below that vertex's tangent plane, weighted by its barycentric. Where a coarse mesh
+// curves outwards, the point lands near the smooth surface its normals describe; where it is
+// flat or curves inwards, the step is zero.
+CANDELA_HDI Vec3 terminatorLift(const Vec3& p, const Vec3 (&v)[3], const Vec3 (&n)[3],
+                                const float (&b)[3]) {
+  Vec3 lift(0.0f);
+  for (int i = 0; i < 3; ++i) lift -= (b[i] * minf(0.0f, dot(p - v[i], n[i]))) * n[i];
+  return lift;
+}
 
 // The point of sphere s at `local` from its centre (|local| the radius, up to rounding), within
 // *error per axis: the point lies within gamma(5) |local| of the surface (pbrt-v4), and adding the
@@ -78,10 +93,14 @@ CANDELA_HDI SurfacePoint triangleSurfaceAt(const GeometryView& scene, const Tria
     const OctNormal n1 = scene.normals[tri.v[1]];
     const OctNormal n2 = scene.normals[tri.v[2]];
     if (!n0.isNone() && !n1.isNone() && !n2.isNone()) {
-      const Vec3 n =
-          b0 * decodeOctNormal(n0) + b1 * decodeOctNormal(n1) + b2 * decodeOctNormal(n2);
+      const Vec3 d0 = decodeOctNormal(n0), d1 = decodeOctNormal(n1), d2 = decodeOctNormal(n2);
+      const Vec3 n = b0 * d0 + b1 * d1 + b2 * d2;
       // Opposite vertex normals can cancel; the face normal is the only sensible fallback.
       if (lengthSquared(n) > 0.0f) sp.ns = faceForward(normalize(n), sp.ng);
+      // Normals on both sides of the face describe no surface to raise the point to.
+      const float s0 = dot(d0, sp.ng), s1 = dot(d1, sp.ng), s2 = dot(d2, sp.ng);
+      if ((s0 > 0.0f && s1 > 0.0f && s2 > 0.0f) || (s0 < 0.0f && s1 < 0.0f && s2 < 0.0f))
+        sp.lift = terminatorLift(sp.p, {p0, p1, p2}, {d0, d1, d2}, {b0, b1, b2});
     }
   }
   sp.material = tri.material;

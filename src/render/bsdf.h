@@ -163,6 +163,26 @@ CANDELA_HDI Vec3 evalBsdf(const Bsdf& b, const Vec3& wi, float* pdf) {
   return evalNonDiffuse(b, local, pdf);
 }
 
+// evalBsdf for a shadow ray from a raised point (render/shadow_ray_origin.h): a surface that only
+// reflects takes wi wherever its shading frame puts it above, also behind the face's plane, where
+// no BSDF sample goes (the density there is 0: next-event estimation alone reaches it). Out of
+// line: only smooth-shaded faces near the terminator need it.
+CANDELA_HD_NOINLINE inline Vec3 evalBsdfAcrossFace(const Bsdf& b, const Vec3& wi, float* pdf) {
+  if (transmits(*b.material)) return evalBsdf(b, wi, pdf);
+  *pdf = 0.0f;
+  const Vec3 local = b.frame.toLocal(wi);
+  if (!(local.z > 0.0f)) return Vec3(0.0f);
+  Vec3 f;
+  if (b.material->type == MaterialType::Diffuse) {
+    *pdf = cosineHemispherePdf(local.z);
+    f = diffuseEval(b.color, local);
+  } else {
+    f = evalNonDiffuse(b, local, pdf);
+  }
+  if (!leavesOnItsSide(b, wi, local.z)) *pdf = 0.0f;
+  return f;
+}
+
 // Whether a path may follow both lobes of the material at once (sampleBothDeltaLobes): smooth
 // glass, whose random choice between reflection and refraction is otherwise most of the noise
 // of what it shows.

@@ -28,6 +28,7 @@
 #include "render/ray_counters.h"
 #include "render/ray_kind.h"
 #include "render/shadow_query.h"
+#include "render/shadow_ray_origin.h"
 #include "render/surface_color.h"
 #include "render/surface_tangent.h"
 
@@ -60,14 +61,20 @@ CANDELA_HDI void sampleOneLight(const SceneView& scene, uint32_t index, float se
   const Light& light = scene.lights[index];
   LightSample ls;
   if (!sampleLight(scene, light, sp.p, u1, u2, &ls)) return;
+  const bool raised = raisesShadowRay(scene, sp, bsdf.frame.n, ls.wi);
   float bsdfPdf;
-  const Vec3 f = evalBsdf(bsdf, ls.wi, &bsdfPdf);
+  const Vec3 f =
+      raised ? evalBsdfAcrossFace(bsdf, ls.wi, &bsdfPdf) : evalBsdf(bsdf, ls.wi, &bsdfPdf);
   if (isBlack(f)) return;
-  shadow->ray = spawnRay(sp, ls.wi, key);
-  // The environment lies beyond everything: nothing short of infinity may block it.
-  if (ls.distance < kInfinity) {
-    const Vec3 target = sp.p + ls.wi * ls.distance;
-    shadow->ray.tMax = length(target - shadow->ray.origin) * (1.0f - kShadowEpsilon);
+  if (raised) {
+    shadow->ray = raisedShadowRay(sp, ls.wi, ls.distance, key);
+  } else {
+    shadow->ray = spawnRay(sp, ls.wi, key);
+    // The environment lies beyond everything: nothing short of infinity may block it.
+    if (ls.distance < kInfinity) {
+      const Vec3 target = sp.p + ls.wi * ls.distance;
+      shadow->ray.tMax = length(target - shadow->ray.origin) * (1.0f - kShadowEpsilon);
+    }
   }
   shadow->skipPrim = lightPrimitive(scene, light);
   const float lightPdf = selectPmf * ls.pdf;

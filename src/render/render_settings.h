@@ -25,6 +25,9 @@ struct RenderSettings {
   bool antialiasing = true;  // false: every sample through the pixel centre, whatever the filter
   PixelFilter filter;
   LightPaths lightPaths = LightPaths::Auto;
+  // Next-event estimation at smooth-shaded faces follows their smooth surface near the shadow
+  // terminator (render/shadow_ray_origin.h).
+  bool smoothTerminator = true;
   uint64_t seed = 0;
 };
 

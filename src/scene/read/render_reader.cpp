@@ -55,7 +55,7 @@ PixelFilter readFilter(const JsonValue& value) {
 
 void readRender(const JsonValue& value, RenderSettings& render, OutputDesc& output) {
   JsonObject fields(value, {"max_depth", "integrator", "light_paths", "antialiasing", "filter",
-                            "seed", "gamma", "exposure", "tone_map"});
+                            "smooth_terminator", "seed", "gamma", "exposure", "tone_map"});
   if (std::optional<JsonValue> depth = fields.get("max_depth"))
     render.maxDepth = static_cast<uint32_t>(depth->integer(1, UINT32_MAX, "a positive integer"));
   if (std::optional<JsonValue> integrator = fields.get("integrator"))
@@ -72,6 +72,8 @@ void readRender(const JsonValue& value, RenderSettings& render, OutputDesc& outp
           "centre)");
     render.filter = readFilter(*filter);
   }
+  if (std::optional<JsonValue> smooth = fields.get("smooth_terminator"))
+    render.smoothTerminator = smooth->boolean();
   if (std::optional<JsonValue> seed = fields.get("seed"))
     render.seed = seed->integer(0, UINT64_MAX, "a non-negative integer");
 
