@@ -29,12 +29,15 @@ struct Frame {
     t = Vec3(b, sign + n.y * n.y * a, -n.y);
   }
 
-  // The frame whose s is `tangent` made perpendicular to the normal (t = n x s); Frame(normal)'s
+  // The frame whose s is `tangent` made perpendicular to the normal (t = n x s); Frame(normal)
   // where the tangent has no part in the normal's plane.
-  CANDELA_HDI Frame(const Vec3& normal, const Vec3& tangent) : Frame(normal) {
+  CANDELA_HDI Frame(const Vec3& normal, const Vec3& tangent) : n(normal) {
     const Vec3 along = tangent - dot(tangent, normal) * normal;
     const float length2 = dot(along, along);
-    if (!(length2 > 0.0f)) return;
+    if (!(length2 > 0.0f)) {
+      *this = Frame(normal);
+      return;
+    }
     s = along * (1.0f / sqrtf(length2));
     t = cross(normal, s);
   }

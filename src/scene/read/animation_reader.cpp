@@ -138,13 +138,10 @@ Vec3 readValue(const JsonValue& value, AnimProperty property) {
     case AnimProperty::Radius: return Vec3(value.positiveNumber());
     case AnimProperty::Color: return value.colour();
     case AnimProperty::Roughness:
-    case AnimProperty::Anisotropy: {
-      const std::string expectation =
-          property == AnimProperty::Roughness ? "a roughness in [0, 1]" : "an anisotropy in [0, 1]";
-      const float v = value.number(expectation);
-      if (!(v >= 0.0f && v <= 1.0f)) value.failExpected(expectation);
-      return Vec3(v);
-    }
+    case AnimProperty::Anisotropy:
+      return Vec3(value.unitNumber(property == AnimProperty::Roughness
+                                       ? "a roughness in [0, 1]"
+                                       : "an anisotropy in [0, 1]"));
     case AnimProperty::Scale: return readScale(value);
     case AnimProperty::Direction:
       return readDirection(value);

@@ -85,6 +85,12 @@ float JsonValue::nonNegativeNumber() const {
   return value;
 }
 
+float JsonValue::unitNumber(const std::string& expectation, const std::string& orElse) const {
+  const float value = number(expectation + orElse);
+  if (!(value >= 0.0f && value <= 1.0f)) failExpected(expectation);
+  return value;
+}
+
 uint64_t JsonValue::integer(uint64_t min, uint64_t max, const std::string& expectation) const {
   uint64_t value = 0;
   if (json().is_number_unsigned()) {

@@ -54,6 +54,9 @@ class JsonValue {
   float number(const std::string& expectation = "a number") const;
   float positiveNumber() const;     // > 0
   float nonNegativeNumber() const;  // >= 0
+  // A number in [0, 1], worded by `expectation` ("a roughness in [0, 1]"); `orElse` (" or a
+  // texture object") joins it where the value is not a number at all.
+  float unitNumber(const std::string& expectation, const std::string& orElse = "") const;
   // An integer in [min, max] (integral floats such as 4.0 count); `expectation` words the range.
   uint64_t integer(uint64_t min, uint64_t max, const std::string& expectation) const;
   bool boolean() const;

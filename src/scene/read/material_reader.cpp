@@ -53,19 +53,14 @@ void readRoughness(JsonObject& fields, TextureLoader& textures, Material* materi
         readRoughnessTexture(*value, textures, &material->roughnessChannel);
     return;
   }
-  const float roughness = value->number("a roughness in [0, 1] or a texture object");
-  if (!(roughness >= 0.0f && roughness <= 1.0f)) value->failExpected("a roughness in [0, 1]");
-  material->roughness = roughness;
+  material->roughness = value->unitNumber("a roughness in [0, 1]", " or a texture object");
 }
 
 // "anisotropy" a in [0, 1] and "anisotropy_rotation" (degrees) into the material: the roughness
 // along the surface's tangent and across it (render/microfacet.h, tangentAlpha).
 void readAnisotropy(JsonObject& fields, Material* material) {
-  if (std::optional<JsonValue> value = fields.get("anisotropy")) {
-    const float a = value->number("an anisotropy in [0, 1]");
-    if (!(a >= 0.0f && a <= 1.0f)) value->failExpected("an anisotropy in [0, 1]");
-    material->anisotropy = a;
-  }
+  if (std::optional<JsonValue> value = fields.get("anisotropy"))
+    material->anisotropy = value->unitNumber("an anisotropy in [0, 1]");
   if (std::optional<JsonValue> rotation = fields.get("anisotropy_rotation")) {
     const float degrees = rotation->number("an angle in degrees");
     if (material->anisotropy == 0.0f)

@@ -184,8 +184,7 @@ TextureRef readRoughnessTexture(const JsonValue& value, TextureLoader& textures,
 AlphaMask readAlpha(const JsonValue& value, TextureLoader& textures) {
   AlphaMask mask;
   if (!value.json().is_object()) {
-    mask.constant = value.number("an alpha in [0, 1] or a texture object");
-    if (!(mask.constant >= 0.0f && mask.constant <= 1.0f)) value.failExpected("an alpha in [0, 1]");
+    mask.constant = value.unitNumber("an alpha in [0, 1]", " or a texture object");
     return mask;
   }
   const TextureObject map = readTextureObject(
