@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <limits>
 #include <memory>
@@ -22,8 +23,13 @@
 namespace candela {
 namespace {
 
+// The file `name` in a folder of the running test's own: ctest runs the tests in processes of
+// their own at once, and two writing one bad.ply would read each other's bytes.
 std::string writeFile(const std::string& name, const std::string& bytes) {
-  const std::string path = ::testing::TempDir() + name;
+  const std::string folder = ::testing::TempDir() + "ply_" +
+                             ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  std::filesystem::create_directories(folder);
+  const std::string path = folder + "/" + name;
   std::ofstream(path, std::ios::binary) << bytes;
   return path;
 }
