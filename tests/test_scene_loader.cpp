@@ -191,14 +191,14 @@ TEST_F(SceneLoader, ZeroSamplesPerPixel) {
 TEST_F(SceneLoader, UnknownMaterialType) {
   EXPECT_EQ(errorWith(R"("materials": {"m": {"type": "metal"}})"),
             "s.json: materials.m.type: expected one of \"diffuse\", \"mirror\", \"glass\", "
-            "\"emissive\", \"conductor\", \"plastic\", \"thin_glass\", got a string \"metal\"");
+            "\"emissive\", \"conductor\", \"plastic\", \"thin_glass\", \"mix\", got a string "
+            "\"metal\"");
   EXPECT_EQ(
       errorWith(
           R"("spheres": [{"position": [0, 0, 0], "radius": 1, "material": {"type": "glas"}}])"),
       "s.json: spheres[0].material.type: expected one of \"diffuse\", \"mirror\", \"glass\", "
-      "\"emissive\", \"conductor\", \"plastic\", \"thin_glass\", got a string \"glas\", did you "
-      "mean "
-      "\"glass\"?");
+      "\"emissive\", \"conductor\", \"plastic\", \"thin_glass\", \"mix\", got a string \"glas\", "
+      "did you mean \"glass\"?");
 }
 
 TEST_F(SceneLoader, RoughMaterialsAreRead) {

@@ -89,6 +89,7 @@ CANDELA_HDI bool hasSmoothLobe(const Material& m) {
     case MaterialType::Glass:
       return !isSmooth(m);
     case MaterialType::Emissive:
+    case MaterialType::Mix:  // never met: render/material_mix.h chooses a part
       return false;
   }
   return false;
@@ -144,6 +145,7 @@ CANDELA_HD_NOINLINE inline Vec3 evalNonDiffuse(const Bsdf& b, const Vec3& wi, fl
       return plasticEvalPdf(m, b.coat, b.alpha, b.color, b.wo, wi, pdf);
     case MaterialType::Diffuse:
     case MaterialType::Emissive:
+    case MaterialType::Mix:  // never met: render/material_mix.h chooses a part
       break;
   }
   return Vec3(0.0f);
@@ -215,6 +217,7 @@ CANDELA_HD_NOINLINE inline bool sampleNonDiffuse(const Bsdf& b, float uc, float 
       return plasticSample(m, b.coat, b.alpha, b.color, b.wo, uc, u1, u2, s);
     case MaterialType::Diffuse:
     case MaterialType::Emissive:
+    case MaterialType::Mix:  // never met: render/material_mix.h chooses a part
       break;
   }
   return false;

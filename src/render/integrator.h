@@ -23,6 +23,7 @@
 #include "render/light_path.h"
 #include "render/light_sample.h"
 #include "render/light_selection.h"
+#include "render/material_mix.h"
 #include "render/normal_map.h"
 #include "render/path_branch.h"
 #include "render/ray_counters.h"
@@ -243,7 +244,8 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
   }
   SurfacePoint sp = surfaceAt(scene, st.ray, hit);
   CANDELA_DCHECK(sp.material < scene.materialCount);
-  const Material& m = scene.materials[sp.material];
+  // sp.material stays the surface's (the material pass shows a mix as itself).
+  const Material& m = scene.materials[materialMet(scene, sp.material, hit, sp, rng)];
   if (fromCamera && m.hiddenFromCamera) {  // the camera ray goes on as if it were not there
     st.depth = depth;
     st.ray = spawnRay(sp, st.ray.direction, rayKeyFor(scene, rng, kCameraRay));

@@ -30,6 +30,7 @@
 #include "render/light_emission.h"
 #include "render/light_sample.h"
 #include "render/light_selection.h"
+#include "render/material_mix.h"
 #include "render/normal_map.h"
 #include "render/ray_counters.h"
 #include "render/ray_kind.h"
@@ -52,6 +53,7 @@ struct LightVertex {
   Vec3 color;    // the surface's colour there (textures included)
   float roughness = 0.0f;  // and its roughness
   Vec3 tangent = Vec3(0.0f);  // and its tangent (render/surface_tangent.h)
+  uint32_t material = 0;      // the material met there (a mix's part: render/material_mix.h)
   Vec3 toLight;  // unit direction from sp.p to the light (its point L where it has a surface)
   // What the light sends to the vertex over the density of the subpath up to it, less the
   // geometry term between the two: a point light's power over its pick; a surface's radiance at
@@ -76,7 +78,7 @@ struct LightVertex {
 // pick's hemisphere is that side's, as next-event estimation at lv would take it.
 CANDELA_HDI float lightVertexNeePdf(const SceneView& scene, LightVertex* lv) {
   if (lv->neePdf >= 0.0f) return lv->neePdf;
-  const Material& m = scene.materials[lv->sp.material];
+  const Material& m = scene.materials[lv->material];
   const float pick =
       lightSelectPmf(scene, lv->light, lv->sp.p, reflectingHemisphere(m, lv->toLight, lv->sp.ng));
   lv->neePdf = !lv->area ? pick
@@ -192,13 +194,15 @@ CANDELA_HDI void traceLightVertex(const SceneView& scene, const Tracer& tracer, 
   ++counters.bounce;
   if (!tracer.closest(ray, &hit)) return;
   SurfacePoint sp = surfaceAt(scene, ray, hit);
-  const Material& m = scene.materials[sp.material];
+  const uint32_t material = materialMet(scene, sp.material, hit, sp, rng);
+  const Material& m = scene.materials[material];
   if (!holdsLightVertex(m)) return;
   if (m.normalMap.index >= 0) sp.ns = mappedNormal(scene, m, hit, sp, -ray.direction);
   lv->sp = sp;
   lv->color = surfaceColor(scene, m, hit, sp);
   lv->roughness = surfaceRoughness(scene, m, hit, sp);
   lv->tangent = surfaceTangent(scene, m, hit, sp);
+  lv->material = material;
   lv->toLight = -ray.direction;
   lv->light = index;
   lv->area = area;
@@ -242,7 +246,7 @@ CANDELA_HDI void connectLightVertex(const SceneView& scene, LightVertex* vertex,
   float pdfHere;
   const Vec3 fHere = evalBsdf(bsdf, wi, &pdfHere);
   if (isBlack(fHere)) return;
-  const Material& m = scene.materials[lv.sp.material];
+  const Material& m = scene.materials[lv.material];
   const Bsdf there =
       makeBsdf(scene, m, lv.color, lv.roughness, lv.tangent, -wi, lv.sp.ng, lv.sp.ns, kAllChannels);
   float pdfThere;

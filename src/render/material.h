@@ -19,6 +19,9 @@ enum class MaterialType : uint32_t {
   Glass = 2,
   Emissive = 3,
   Plastic = 4,
+  // Two materials, one of which a path meets at each hit, chosen by the weight there
+  // (render/material_mix.h); never a part of what the BSDF or the lights see.
+  Mix = 5,
 };
 
 // Samples of the rough plastic's coating transmittance over cos(theta) in [0, 1] (Mitsuba 3's
@@ -65,6 +68,13 @@ struct Material {
   TextureRef normalMap;        // tangent-space normals that tilt the shading normal, or heights
   float bumpHeight = 0.0f;     // != 0: normalMap is a bump map, heights this many units a unit
   AlphaMask alpha;          // how much of the surface is there (geometry/alpha_mask.h)
+  // Mix: the materials it mixes (indices into the scene's materials, each after the mix's own)
+  // and the share of the second, `mixWeight` or its texture's value (luminance or the channel
+  // mixWeightChannel).
+  uint32_t mixParts[2] = {0, 0};
+  float mixWeight = 0.5f;
+  TextureRef mixWeightTexture;
+  uint32_t mixWeightChannel = kLuminanceChannel;
 
   // Plastic, derived (prepareMaterial): the diffuse light's chance to be reflected back down by
   // the coating from inside, and the coating's transmittance from outside by cos(theta).

@@ -25,6 +25,21 @@ uint32_t addMaterial(SceneData& s, const Material& m) {
   return uint32_t(s.materials.size() - 1);
 }
 
+// Appends `count` materials from `first`, then `parts`, what their mixes mix, each mix's part
+// indices moved to where the parts land (so that parts follow their mix: render/material_mix.h);
+// returns the index of the first.
+uint32_t addMaterials(SceneData& s, const Material* first, size_t count,
+                      const std::vector<Material>& parts) {
+  const uint32_t base = uint32_t(s.materials.size());
+  s.materials.insert(s.materials.end(), first, first + count);
+  const uint32_t partsBase = uint32_t(s.materials.size());
+  s.materials.insert(s.materials.end(), parts.begin(), parts.end());
+  for (size_t i = base; i < s.materials.size(); ++i)
+    if (s.materials[i].type == MaterialType::Mix)
+      for (uint32_t& p : s.materials[i].mixParts) p += partsBase;
+  return base;
+}
+
 // The layouts of the meshes that a scene's objects place (scene/mesh_layout.h), one per mesh and
 // use of its normals and uvs, made once however many objects place the mesh.
 class MeshLayouts {
@@ -85,13 +100,9 @@ void reserveMeshes(SceneData& s, const SceneDesc& desc, MeshLayouts& layouts) {
 void addObject(SceneData& s, const ObjectDesc& obj, bool geometry, MeshLayouts& layouts,
                FlattenedObject* flattened) {
   const MeshDesc& mesh = *obj.mesh;
-  uint32_t materialBase = 0;
-  if (obj.material) {
-    materialBase = addMaterial(s, *obj.material);
-  } else {
-    materialBase = uint32_t(s.materials.size());
-    s.materials.insert(s.materials.end(), mesh.materials.begin(), mesh.materials.end());
-  }
+  const uint32_t materialBase =
+      obj.material ? addMaterials(s, &*obj.material, 1, obj.mixParts)
+                   : addMaterials(s, mesh.materials.data(), mesh.materials.size(), mesh.mixParts);
   if (!geometry) return;
 
   const MeshLayout& layout = layouts.of(obj);
@@ -251,7 +262,8 @@ void addInstances(SceneData& s, const SceneDesc& desc, bool geometry) {
   const InstanceNumbering number = instanceNumbering(desc);
   for (uint32_t i = 0; i < desc.spheres.size(); ++i) {
     const SphereDesc& sd = desc.spheres[i];
-    s.spheres.push_back(Sphere{sd.position, sd.radius, addMaterial(s, sd.material)});
+    s.spheres.push_back(
+        Sphere{sd.position, sd.radius, addMaterials(s, &sd.material, 1, sd.mixParts)});
     tagInstance(s, number.firstSphere + i);
   }
   // Lights after plain spheres: sphere lights append their own emissive spheres.

@@ -29,6 +29,7 @@ void writeKeys(const SceneDesc& desc, std::string* geometry, std::string* struct
   for (const SphereDesc& s : desc.spheres) {
     full.add(s.position);
     full.add(s.radius);
+    both(s.mixParts.size());  // decides how many materials the sphere appends
   }
   both(desc.lights.size());
   for (const LightDesc& l : desc.lights) {
@@ -52,7 +53,9 @@ void writeKeys(const SceneDesc& desc, std::string* geometry, std::string* struct
     both(o.smooth);
     both(usesUvs(o));  // with the mesh, decides the object's vertices (scene/mesh_layout.h)
     both(o.material.has_value());  // decides how many materials the object appends
+    both(o.mixParts.size());
     both(o.mesh->materials.size());
+    both(o.mesh->mixParts.size());
     // Objects that name one file share its mesh: it is hashed once.
     const auto [hash, fresh] = meshHashes.try_emplace(o.mesh.get(), 0);
     if (fresh) {

@@ -8,17 +8,23 @@ namespace candela {
 
 bool readsTextures(const Material& m) {
   return m.colorTexture.index >= 0 || m.emissionTexture.index >= 0 || m.alpha.texture.index >= 0 ||
-         m.normalMap.index >= 0 || m.roughnessTexture.index >= 0;
+         m.normalMap.index >= 0 || m.roughnessTexture.index >= 0 || m.mixWeightTexture.index >= 0;
 }
 
 bool readsUvs(const Material& m) { return readsTextures(m) || m.anisotropy != 0.0f; }
 
 bool usesNormals(const ObjectDesc& obj) { return obj.smooth && !obj.mesh->normals.empty(); }
 
+bool anyMaterialOf(const ObjectDesc& obj, bool (*test)(const Material&)) {
+  const auto any = [test](const std::vector<Material>& v) {
+    return std::any_of(v.begin(), v.end(), test);
+  };
+  if (obj.material) return test(*obj.material) || any(obj.mixParts);
+  return any(obj.mesh->materials) || any(obj.mesh->mixParts);
+}
+
 bool usesUvs(const ObjectDesc& obj) {
-  if (obj.mesh->uvs.empty()) return false;
-  if (obj.material) return readsUvs(*obj.material);
-  return std::any_of(obj.mesh->materials.begin(), obj.mesh->materials.end(), readsUvs);
+  return !obj.mesh->uvs.empty() && anyMaterialOf(obj, readsUvs);
 }
 
 MeshLayout layOutMesh(const MeshDesc& mesh, bool withNormals, bool withUvs) {

@@ -41,6 +41,9 @@ MeshLayout layOutMesh(const MeshDesc& mesh, bool withNormals, bool withUvs);
 bool readsTextures(const Material& m);
 // Whether a material needs uvs: it reads textures or orients its anisotropy by them.
 bool readsUvs(const Material& m);
+// Whether `test` holds for a material that shades an object: its own or else its mesh's, or a
+// part of their mixes.
+bool anyMaterialOf(const ObjectDesc& obj, bool (*test)(const Material&));
 // Whether an object uses its mesh's normals: it is smooth and the file has them.
 bool usesNormals(const ObjectDesc& obj);
 // Whether an object uses its mesh's uvs: the file has them and one of the object's materials reads

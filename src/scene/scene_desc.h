@@ -29,6 +29,9 @@ struct SphereDesc {
   Vec3 position;
   float radius = 1;
   Material material;
+  // What its material mixes, where it is a mix (Material::mixParts index this; render/
+  // material_mix.h).
+  std::vector<Material> mixParts;
 };
 
 // A triangle as the OBJ file indexes it: positions, normals and uvs separately.
@@ -46,6 +49,7 @@ struct MeshDesc {
   std::vector<Vec2> uvs;                  // from the file's `vt` (u, v); may be empty
   std::vector<MeshTriangle> triangles;
   std::vector<Material> materials;  // from the MTL (obj_loader.h's mapping), else diffuse 0.8
+  std::vector<Material> mixParts;   // what its mixes mix (Material::mixParts index this)
   std::vector<std::string> materialFiles;  // the MTL files read, beside the OBJ file
   // What the file leaves to a default that its author may not have meant, "<file>:<line>: ..."
   // (an MTL file that cannot be read, a material that no MTL file defines).
@@ -64,6 +68,7 @@ struct ObjectDesc {
   // edges up to this angle (scene/vertex_normals.h); 0: such faces are flat.
   float creaseDegrees = 0;
   std::optional<Material> material;  // overrides the mesh's own materials when present
+  std::vector<Material> mixParts;    // what `material` mixes, where it is a mix
   // Read once per file: the objects that name one file share it (and so do frames).
   std::shared_ptr<const MeshDesc> mesh = std::make_shared<const MeshDesc>();
 };

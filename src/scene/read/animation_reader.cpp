@@ -255,6 +255,7 @@ void checkUsed(const JsonValue& property, const AnimTrack& track, const SceneDes
                                        ? &*scene.objects[track.index].material
                                        : nullptr);
     if (m && m->type == MaterialType::Emissive) unused("an emissive material");
+    if (m && m->type == MaterialType::Mix) unused("a \"mix\" material");
     if (m && m->alpha.thinSheetIor > 0.0f) unused("a \"thin_glass\" material");
     if (track.property == AnimProperty::Color) {
       if (m && !isBlack(m->absorption))

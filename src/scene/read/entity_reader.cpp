@@ -4,6 +4,7 @@
 #include <cmath>
 #include <filesystem>
 #include <sstream>
+#include <utility>
 
 #include "scene/along_up.h"
 #include "scene/light_emission_desc.h"
@@ -117,7 +118,10 @@ SphereDesc readSphere(const JsonValue& value, const MaterialLibrary& library,
   if (!position) fields.fail("missing required key \"position\"");
   sphere.position = position->vec3();
   sphere.radius = fields.require("radius").positiveNumber();
-  sphere.material = readMaterialReference(fields, library, textures).value_or(Material{});
+  if (std::optional<MaterialRead> read = readMaterialReference(fields, library, textures)) {
+    sphere.material = read->material;
+    sphere.mixParts = std::move(read->parts);
+  }
   // Its inside would need a light sampled from within (render/light_sample.h samples the cone a
   // sphere subtends from outside).
   if (sphere.material.twoSided) {
@@ -158,7 +162,10 @@ ObjectDesc readObject(const JsonValue& value, const MaterialLibrary& library,
     object.rotation = rotation->vec3();
   if (std::optional<JsonValue> scale = fields.get("scale")) object.scale = readScale(*scale);
   if (std::optional<JsonValue> smooth = fields.get("smooth")) readSmooth(*smooth, object);
-  object.material = readMaterialReference(fields, library, textures);
+  if (std::optional<MaterialRead> read = readMaterialReference(fields, library, textures)) {
+    object.material = read->material;
+    object.mixParts = std::move(read->parts);
+  }
   fields.finish();
   return object;
 }

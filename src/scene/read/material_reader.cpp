@@ -3,6 +3,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <set>
+#include <utility>
 #include <vector>
 
 #include "core/constants.h"
@@ -16,17 +19,28 @@
 namespace candela {
 namespace {
 
-const std::vector<std::string> kTypeNames = {"diffuse",   "mirror",  "glass",     "emissive",
-                                             "conductor", "plastic", "thin_glass"};
+const std::vector<std::string> kTypeNames = {"diffuse",   "mirror",  "glass",      "emissive",
+                                             "conductor", "plastic", "thin_glass", "mix"};
 // The types the seed shorthand may name: the first three.
 constexpr size_t kShorthandCount = 3;
-enum TypeIndex : size_t { kDiffuse, kMirror, kGlass, kEmissive, kConductor, kPlastic, kThinGlass };
+enum TypeIndex : size_t {
+  kDiffuse,
+  kMirror,
+  kGlass,
+  kEmissive,
+  kConductor,
+  kPlastic,
+  kThinGlass,
+  kMix
+};
 
 // Every field a material may have, and which of them each type reads.
 const std::vector<std::string> kFields = {
-    "color",     "ior",        "roughness",          "metal", "radiance",           "strength",
-    "two_sided", "normal_map", "bump_map",           "alpha", "transmission_depth", "abbe",
-    "visible",   "anisotropy", "anisotropy_rotation"};
+    "color",    "ior",        "roughness",           "metal",
+    "radiance", "strength",   "two_sided",           "normal_map",
+    "bump_map", "alpha",      "transmission_depth",  "abbe",
+    "visible",  "anisotropy", "anisotropy_rotation", "materials",
+    "weight"};
 const std::vector<std::vector<std::string>> kFieldsOf = {
     {"color", "normal_map", "bump_map", "alpha"},  // diffuse
     {"color", "normal_map", "bump_map", "alpha"},  // mirror
@@ -37,7 +51,11 @@ const std::vector<std::vector<std::string>> kFieldsOf = {
      "alpha"},                                                         // conductor
     {"color", "ior", "roughness", "normal_map", "bump_map", "alpha"},  // plastic
     {"ior"},                                                           // thin_glass
+    {"materials", "weight", "alpha"},                                  // mix
 };
+
+// The material a mix names for a part: one of the library's, or a shorthand type's defaults.
+using NamedMaterial = std::function<MaterialRead(const JsonValue& name)>;
 
 std::string notUsedBy(size_t type) {
   return std::string("not used by ") + (type == kEmissive ? "an " : "a ") +
@@ -49,8 +67,8 @@ void readRoughness(JsonObject& fields, TextureLoader& textures, Material* materi
   const std::optional<JsonValue> value = fields.get("roughness");
   if (!value) return;
   if (value->json().is_object()) {
-    material->roughnessTexture =
-        readRoughnessTexture(*value, textures, &material->roughnessChannel);
+    material->roughnessTexture = readUnitTexture(
+        *value, textures, "a roughness in [0, 1] or a texture object", &material->roughnessChannel);
     return;
   }
   material->roughness = value->unitNumber("a roughness in [0, 1]", " or a texture object");
@@ -141,20 +159,86 @@ void readMetal(const JsonValue& value, Material* material) {
   material->metalK = metal.k;
 }
 
+MaterialRead readMaterialObject(const JsonValue& value, TextureLoader& textures,
+                                const NamedMaterial& named);
+
+// A part of a mix may be any material that reflects or transmits: what emits is a light of its
+// own, and what lets rays through (alpha, thin glass) does so for the whole surface.
+void checkMixPart(const JsonValue& where, const Material& part) {
+  if (part.type == MaterialType::Emissive)
+    where.fail(
+        "an emissive material in a mix; expected a material that reflects or transmits (an "
+        "emitting surface is an \"emissive\" material of its own)");
+  if (part.alpha.thinSheetIor > 0.0f)
+    where.fail("a \"thin_glass\" material in a mix; expected it on a surface of its own");
+  if (isMasked(part.alpha))
+    where.fail(
+        "a material with an \"alpha\" in a mix; expected the \"alpha\" on the mix, which "
+        "masks the whole surface");
+}
+
+// Appends `part` and its own parts to `parts`, its mixes' indices moved to where they land;
+// returns the index of the part.
+uint32_t appendPart(std::vector<Material>* parts, const MaterialRead& part) {
+  const uint32_t index = uint32_t(parts->size());
+  parts->push_back(part.material);
+  parts->insert(parts->end(), part.parts.begin(), part.parts.end());
+  for (size_t i = index; i < parts->size(); ++i)
+    if ((*parts)[i].type == MaterialType::Mix)
+      for (uint32_t& p : (*parts)[i].mixParts) p += index + 1;
+  return index;
+}
+
+// A mix's "materials", two names or material objects, and its "weight", the share of the second:
+// a number in [0, 1] or a texture object of them.
+MaterialRead readMix(JsonObject& fields, TextureLoader& textures, const NamedMaterial& named) {
+  MaterialRead mix;
+  mix.material.type = MaterialType::Mix;
+  const JsonValue list = fields.require("materials");
+  const std::string expected = "an array of two materials, each a name or a material object";
+  if (!list.json().is_array() || list.json().size() != 2) list.failExpected(expected);
+  const std::vector<JsonValue> elements = list.elements();
+  for (size_t i = 0; i < 2; ++i) {
+    const JsonValue& element = elements[i];
+    MaterialRead part;
+    if (element.json().is_object())
+      part = readMaterialObject(element, textures, named);
+    else if (element.json().is_string())
+      part = named(element);
+    else
+      element.failExpected("a material name or a material object");
+    checkMixPart(element, part.material);
+    mix.material.mixParts[i] = appendPart(&mix.parts, part);
+  }
+  if (std::optional<JsonValue> weight = fields.get("weight")) {
+    const std::string orElse = " or a texture object";
+    if (weight->json().is_object())
+      mix.material.mixWeightTexture = readUnitTexture(
+          *weight, textures, "a weight in [0, 1]" + orElse, &mix.material.mixWeightChannel);
+    else
+      mix.material.mixWeight = weight->unitNumber("a weight in [0, 1]", orElse);
+  }
+  if (std::optional<JsonValue> alpha = fields.get("alpha"))
+    mix.material.alpha = readAlpha(*alpha, textures);
+  return mix;
+}
+
 // The fields of a material of type kTypeNames[type], read from `fields`: the material object
 // itself, or for the shorthand the sphere or object that carries them.
-Material readFields(JsonObject& fields, size_t type, TextureLoader& textures) {
+MaterialRead readFields(JsonObject& fields, size_t type, TextureLoader& textures,
+                        const NamedMaterial& named) {
   for (const std::string& field : kFields) {
     const std::vector<std::string>& used = kFieldsOf[type];
     if (std::find(used.begin(), used.end(), field) == used.end())
       fields.reject(field, notUsedBy(type));
   }
+  if (type == kMix) return readMix(fields, textures, named);
   Material material;
   if (type == kEmissive) {
     readEmission(fields, textures, &material);
-    return material;
+    return {material, {}};
   }
-  const float defaultColor[] = {0.8f, 1.0f, 1.0f, 0.0f, 1.0f, 0.5f, 1.0f};
+  const float defaultColor[] = {0.8f, 1.0f, 1.0f, 0.0f, 1.0f, 0.5f, 1.0f, 0.0f};
   const std::optional<JsonValue> color = fields.get("color");
   // Glass alone takes no texture: its colour tints what passes through, not a surface.
   if (color && type != kGlass)
@@ -204,13 +288,13 @@ Material readFields(JsonObject& fields, size_t type, TextureLoader& textures) {
       break;
   }
   prepareMaterial(&material);
-  return material;
+  return {material, {}};
 }
 
 [[noreturn]] void failUnknownMaterial(const JsonValue& value, const std::string& name,
-                                      const MaterialLibrary& library) {
+                                      const std::vector<std::string>& names) {
   std::vector<std::string> candidates(kTypeNames.begin(), kTypeNames.begin() + kShorthandCount);
-  for (const auto& entry : library) candidates.push_back(entry.first);
+  candidates.insert(candidates.end(), names.begin(), names.end());
   const std::string suggestion = closestMatch(name, candidates);
   if (!suggestion.empty())
     value.fail("unknown material " + quoted(name) + ", did you mean " + quoted(suggestion) + "?");
@@ -224,37 +308,100 @@ Material readFields(JsonObject& fields, size_t type, TextureLoader& textures) {
   value.fail("unknown material " + quoted(name) + ", " + hint);
 }
 
-}  // namespace
-
-MaterialLibrary readMaterialLibrary(const JsonValue& value, TextureLoader& textures) {
-  if (!value.json().is_object()) value.failExpected("an object (material name -> material)");
-  MaterialLibrary library;
-  for (const auto& item : value.json().items()) {
-    if (isCommentKey(item.key())) continue;
-    const JsonValue material(item.value(), value.file(), memberPath(value.path(), item.key()));
-    library[item.key()] = readMaterial(material, textures);
+// A shorthand type's material with every field at its default, as a mix may name it.
+MaterialRead shorthandMaterial(size_t type) {
+  Material material;
+  if (type != kDiffuse) {
+    material.type = type == kMirror ? MaterialType::Conductor : MaterialType::Glass;
+    material.color = Vec3(1.0f);
   }
-  return library;
+  prepareMaterial(&material);
+  return {material, {}};
 }
 
-Material readMaterial(const JsonValue& value, TextureLoader& textures) {
+MaterialRead readMaterialObject(const JsonValue& value, TextureLoader& textures,
+                                const NamedMaterial& named) {
   std::vector<std::string> known = {"type"};
   known.insert(known.end(), kFields.begin(), kFields.end());
   JsonObject fields(value, known, "a material object");
   const size_t type = fields.require("type").choice(kTypeNames);
-  Material material = readFields(fields, type, textures);
+  MaterialRead material = readFields(fields, type, textures, named);
   fields.finish();
   return material;
 }
 
-std::optional<Material> readMaterialReference(JsonObject& owner, const MaterialLibrary& library,
-                                              TextureLoader& textures) {
+// The names of a library's entries, for suggestions.
+template <class Map>
+std::vector<std::string> namesOf(const Map& map) {
+  std::vector<std::string> names;
+  for (const auto& entry : map) names.push_back(entry.first);
+  return names;
+}
+
+// Reads the top-level "materials" in whatever order its mixes name each other.
+class LibraryReader {
+ public:
+  LibraryReader(const JsonValue& value, TextureLoader& textures) : textures_(textures) {
+    for (const auto& item : value.json().items())
+      if (!isCommentKey(item.key()))
+        entries_.emplace(item.key(), JsonValue(item.value(), value.file(),
+                                               memberPath(value.path(), item.key())));
+  }
+
+  MaterialLibrary read() {
+    for (const auto& entry : entries_) named(entry.first, entry.second);
+    return std::move(library_);
+  }
+
+ private:
+  // The material named `name`, read on first use; `where` is what names it.
+  const MaterialRead& named(const std::string& name, const JsonValue& where) {
+    const auto done = library_.find(name);
+    if (done != library_.end()) return done->second;
+    if (!reading_.insert(name).second)
+      where.fail("the mix " + quoted(name) +
+                 " contains itself; expected parts that are other materials");
+    const NamedMaterial lookup = [this](const JsonValue& part) {
+      const std::string partName = part.string();
+      if (entries_.count(partName)) return named(partName, part);
+      for (size_t type = 0; type < kShorthandCount; ++type)
+        if (partName == kTypeNames[type]) return shorthandMaterial(type);
+      failUnknownMaterial(part, partName, namesOf(entries_));
+    };
+    MaterialRead material = readMaterialObject(entries_.at(name), textures_, lookup);
+    reading_.erase(name);
+    return library_[name] = std::move(material);
+  }
+
+  TextureLoader& textures_;
+  std::map<std::string, JsonValue> entries_;
+  MaterialLibrary library_;
+  std::set<std::string> reading_;  // the mixes being read, which a part may not name
+};
+
+}  // namespace
+
+MaterialLibrary readMaterialLibrary(const JsonValue& value, TextureLoader& textures) {
+  if (!value.json().is_object()) value.failExpected("an object (material name -> material)");
+  return LibraryReader(value, textures).read();
+}
+
+std::optional<MaterialRead> readMaterialReference(JsonObject& owner, const MaterialLibrary& library,
+                                                  TextureLoader& textures) {
+  const NamedMaterial named = [&library](const JsonValue& part) {
+    const std::string name = part.string();
+    const auto found = library.find(name);
+    if (found != library.end()) return found->second;
+    for (size_t type = 0; type < kShorthandCount; ++type)
+      if (name == kTypeNames[type]) return shorthandMaterial(type);
+    failUnknownMaterial(part, name, namesOf(library));
+  };
   const std::optional<JsonValue> reference = owner.get("material");
   if (!reference) {
     owner.reject("ior", "not used without a \"glass\" material");
     if (std::optional<JsonValue> color = owner.get("color")) {
-      Material diffuse;
-      diffuse.color = readTexturedColour(*color, textures, &diffuse.colorTexture);
+      MaterialRead diffuse;
+      diffuse.material.color = readTexturedColour(*color, textures, &diffuse.material.colorTexture);
       return diffuse;
     }
     return std::nullopt;
@@ -263,7 +410,7 @@ std::optional<Material> readMaterialReference(JsonObject& owner, const MaterialL
     const std::string reason = "not used beside an inline material (put it inside \"material\")";
     owner.reject("color", reason);
     owner.reject("ior", reason);
-    return readMaterial(*reference, textures);
+    return readMaterialObject(*reference, textures, named);
   }
   if (!reference->json().is_string())
     reference->failExpected("a material name or a material object");
@@ -271,16 +418,16 @@ std::optional<Material> readMaterialReference(JsonObject& owner, const MaterialL
   const std::string name = reference->string();
   // A named material wins over the shorthand of the same name: the scene's author defined it on
   // purpose, and a library entry called "glass" would otherwise be unreachable.
-  const auto named = library.find(name);
-  if (named != library.end()) {
+  const auto found = library.find(name);
+  if (found != library.end()) {
     const std::string reason = "not used with the named material " + quoted(name);
     owner.reject("color", reason);
     owner.reject("ior", reason);
-    return named->second;
+    return found->second;
   }
   for (size_t type = 0; type < kShorthandCount; ++type)
-    if (name == kTypeNames[type]) return readFields(owner, type, textures);
-  failUnknownMaterial(*reference, name, library);
+    if (name == kTypeNames[type]) return readFields(owner, type, textures, named);
+  failUnknownMaterial(*reference, name, namesOf(library));
 }
 
 }  // namespace candela

@@ -12,6 +12,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "scene/read/json_reader.h"
 #include "scene/read/texture_reader.h"
@@ -19,19 +20,23 @@
 
 namespace candela {
 
-using MaterialLibrary = std::map<std::string, Material>;
+// A material as read: the material and, where it is a mix, the materials it mixes
+// (Material::mixParts index `parts`; a part that is a mix has its own parts after it).
+struct MaterialRead {
+  Material material;
+  std::vector<Material> parts;
+};
 
-// The top-level "materials" object: name -> material object.
+using MaterialLibrary = std::map<std::string, MaterialRead>;
+
+// The top-level "materials" object: name -> material object. A mix may name any of them for a
+// part, in any order; one that contains itself is refused.
 MaterialLibrary readMaterialLibrary(const JsonValue& value, TextureLoader& textures);
 
-// A material object {"type": ..., fields of that type}.
-// A "color" (of any type but glass and emissive) may be a texture (texture_reader.h), loaded
-// through `textures`.
-Material readMaterial(const JsonValue& value, TextureLoader& textures);
-
 // The material that `owner` (a sphere or object) gives through its "material", "color" and "ior"
-// keys; nothing when it gives none.
-std::optional<Material> readMaterialReference(JsonObject& owner, const MaterialLibrary& library,
-                                              TextureLoader& textures);
+// keys; nothing when it gives none. A "color" (of any type but glass and emissive) may be a
+// texture (texture_reader.h), loaded through `textures`.
+std::optional<MaterialRead> readMaterialReference(JsonObject& owner, const MaterialLibrary& library,
+                                                  TextureLoader& textures);
 
 }  // namespace candela

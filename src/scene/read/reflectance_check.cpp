@@ -20,17 +20,26 @@ bool reflectsMoreThanItReceives(const Material& m) {
 
 void warnReflectanceAboveOne(SceneDesc& scene) {
   int count = 0;
-  const auto check = [&](const std::string& where, const Material& m) {
+  const auto check = [&](const std::string& where, const Material& m, const char* whose) {
     if (!reflectsMoreThanItReceives(m) || ++count > kNamed) return;
-    scene.warnings.push_back(scene.file + ": " + where + ": its material's color " +
+    scene.warnings.push_back(scene.file + ": " + where + ": " + whose + " color " +
                              formatVec3(m.color) +
                              " is above 1, a surface that reflects more light than it receives; "
                              "colours are linear reflectances in [0, 1] (8-bit values divided "
                              "by 255)");
   };
-  for (const SphereDesc& sphere : scene.spheres) check(sphere.where, sphere.material);
+  // A mix's parts are named by the surface that has them.
+  const auto checkAll = [&](const std::string& where, const Material& m,
+                            const std::vector<Material>& parts) {
+    const int before = count;
+    check(where, m, "its material's");
+    for (const Material& part : parts)
+      if (count == before) check(where, part, "a part of its mix material's");
+  };
+  for (const SphereDesc& sphere : scene.spheres)
+    checkAll(sphere.where, sphere.material, sphere.mixParts);
   for (const ObjectDesc& object : scene.objects)
-    if (object.material) check(object.where, *object.material);
+    if (object.material) checkAll(object.where, *object.material, object.mixParts);
   if (count > kNamed)
     scene.warnings.push_back(scene.file + ": " + std::to_string(count - kNamed) +
                              " more spheres or objects whose material's color is above 1");

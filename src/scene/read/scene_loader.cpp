@@ -108,12 +108,9 @@ void loadMeshes(SceneDesc& scene, const std::vector<std::string>& writtenNames,
     const ObjectDesc& object = scene.objects[i];
     const MeshDesc& mesh = *object.mesh;
     if (!mesh.uvs.empty()) continue;
-    const auto any = [&](bool (*reads)(const Material&)) {
-      return object.material ? reads(*object.material)
-                             : std::any_of(mesh.materials.begin(), mesh.materials.end(), reads);
-    };
-    const bool textured = any(readsTextures);
-    if (!any(readsUvs) || (!object.material && !flat.insert(&mesh).second)) continue;
+    const bool textured = anyMaterialOf(object, readsTextures);
+    if (!anyMaterialOf(object, readsUvs) || (!object.material && !flat.insert(&mesh).second))
+      continue;
     scene.warnings.push_back(
         scene.file + ": " + object.where + ": " +
         (object.material ? "its material" : "a material of " + writtenNames[i]) +

@@ -172,11 +172,10 @@ TextureRef readBumpMap(const JsonValue& value, TextureLoader& textures, float* h
   return map.ref;
 }
 
-TextureRef readRoughnessTexture(const JsonValue& value, TextureLoader& textures,
-                                uint32_t* channel) {
+TextureRef readUnitTexture(const JsonValue& value, TextureLoader& textures,
+                           const std::string& expected, uint32_t* channel) {
   const TextureObject map =
-      readTextureObject(value, textures, TextureUse::Linear,
-                        "a roughness in [0, 1] or a texture object", kChannelKey);
+      readTextureObject(value, textures, TextureUse::Linear, expected, kChannelKey);
   *channel = map.channel.value_or(kLuminanceChannel);
   return map.ref;
 }

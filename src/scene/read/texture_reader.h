@@ -61,10 +61,11 @@ TextureRef readNormalMap(const JsonValue& value, TextureLoader& textures);
 // luminance), and h, the height of a texel of value 1 in scene units (default 1), into *height.
 TextureRef readBumpMap(const JsonValue& value, TextureLoader& textures, float* height);
 
-// A material's "roughness" given as a texture object: its values read linearly, their luminance
-// or the channel that "channel" names ("r", "g", "b", "a" or "luminance") into *channel
-// (Material::roughnessChannel).
-TextureRef readRoughnessTexture(const JsonValue& value, TextureLoader& textures, uint32_t* channel);
+// A field of values in [0, 1] given as a texture object (a material's "roughness", a mix's
+// "weight"): its values read linearly, their luminance or the channel that "channel" names ("r",
+// "g", "b", "a" or "luminance") into *channel; `expected` what the field takes.
+TextureRef readUnitTexture(const JsonValue& value, TextureLoader& textures,
+                           const std::string& expected, uint32_t* channel);
 
 // A material's "alpha": a number in [0, 1], or a texture object whose values are read linearly
 // from the channel that "channel" names, by default the image's alpha channel where it has one
