@@ -303,5 +303,81 @@ TEST(MixMaterial, RefusesWhatCannotBeMixed) {
       "s.json: animation.tracks[0].property: \"color\" is not used by a \"mix\" material");
 }
 
+// MTL's PBR metalness, as Blender writes it: `Pm` 1 makes a material with a diffuse colour a
+// conductor of that colour (its roughness Pr's), 0 leaves it as it is, and between them it is a
+// mix of the two, the mix holding the alpha and both parts the bump map; `map_Pm` is a weight
+// texture in Pm's place (its channel by -imfchan). Flattened, the mesh's parts follow its
+// materials. A Pm outside [0, 1] is refused at its line.
+TEST(MixMaterial, MtlMetalnessMixesAMetalIn) {
+  const fs::path dir = test::mapTestFolder("mix_mtl");
+  writeRowTexture(dir / "metal.pfm", {Vec3(0, 0, 1), Vec3(0, 0, 0)});
+  writeRowTexture(dir / "bumps.pfm", {Vec3(0.2f), Vec3(0.7f)});
+  std::ofstream(dir / "quad.obj") << "mtllib quad.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
+                                  << "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
+                                  << "usemtl gold\nf 1/1 2/2 3/3\nusemtl paint\nf 1/1 3/3 4/4\n"
+                                  << "usemtl worn\nf 1/1 2/2 4/4\nusemtl matte\nf 2/2 3/3 4/4\n";
+  const auto load = [&](const std::string& paintPm) {
+    std::ofstream(dir / "quad.mtl")
+        << "newmtl gold\nKd 0.9 0.6 0.2\nKs 0.5 0.5 0.5\nPr 0.3\nPm 1\n"
+        << "newmtl paint\nKd 0.5 0.1 0.1\nKs 0.5 0.5 0.5\nPr 0.2\naniso 0.5\nd 0.5\n"
+        << "bump -bm 0.01 bumps.pfm\nPm " << paintPm << "\n"
+        << "newmtl worn\nKd 0.3 0.3 0.3\nNs 100\nmap_Pm -imfchan b metal.pfm\n"
+        << "newmtl matte\nKd 0.4 0.4 0.4\nPm 0\n";
+    return parseSceneText(R"({"camera": {"width": 4, "height": 4},
+                              "objects": [{"file": "quad.obj"}]})",
+                          "s.json", dir.string());
+  };
+  const SceneDesc scene = load("0.3");
+  EXPECT_TRUE(scene.warnings.empty());  // the paint's aniso is its metal's
+  const MeshDesc& mesh = *scene.objects[0].mesh;
+  ASSERT_EQ(mesh.materials.size(), 4u);
+  ASSERT_EQ(mesh.mixParts.size(), 4u);
+  const Material& gold = mesh.materials[0];
+  EXPECT_EQ(gold.type, MaterialType::Conductor);
+  EXPECT_FLOAT_EQ(gold.color.y, 0.6f);
+  EXPECT_FLOAT_EQ(gold.roughness, 0.3f);
+  const Material& paint = mesh.materials[1];
+  ASSERT_EQ(paint.type, MaterialType::Mix);
+  EXPECT_FLOAT_EQ(paint.mixWeight, 0.3f);
+  EXPECT_FLOAT_EQ(paint.alpha.constant, 0.5f);
+  const Material& plastic = mesh.mixParts[paint.mixParts[0]];
+  const Material& metal = mesh.mixParts[paint.mixParts[1]];
+  EXPECT_EQ(plastic.type, MaterialType::Plastic);
+  EXPECT_EQ(metal.type, MaterialType::Conductor);
+  for (const Material* part : {&plastic, &metal}) {
+    EXPECT_FLOAT_EQ(part->color.x, 0.5f);
+    EXPECT_FLOAT_EQ(part->roughness, 0.2f);
+    EXPECT_FLOAT_EQ(part->alpha.constant, 1.0f);
+    EXPECT_GE(part->normalMap.index, 0);
+    EXPECT_FLOAT_EQ(part->bumpHeight, 0.01f);
+  }
+  EXPECT_FLOAT_EQ(metal.anisotropy, 0.5f);
+  EXPECT_EQ(plastic.anisotropy, 0.0f);
+  const Material& worn = mesh.materials[2];
+  ASSERT_EQ(worn.type, MaterialType::Mix);
+  EXPECT_GE(worn.mixWeightTexture.index, 0);
+  EXPECT_EQ(worn.mixWeightChannel, 2u);
+  EXPECT_EQ(mesh.mixParts[worn.mixParts[0]].type, MaterialType::Diffuse);
+  EXPECT_EQ(mesh.mixParts[worn.mixParts[1]].type, MaterialType::Conductor);
+  EXPECT_FLOAT_EQ(mesh.mixParts[worn.mixParts[1]].roughness,
+                  std::sqrt(std::sqrt(2.0f / 102.0f)));  // Ns 100's
+  EXPECT_EQ(mesh.materials[3].type, MaterialType::Diffuse);
+
+  // Flattened: the four materials, then the parts, each mix's indices moved there.
+  const SceneData data = flattenScene(SceneDesc(scene));
+  ASSERT_EQ(data.materials.size(), 8u);
+  EXPECT_EQ(data.materials[1].mixParts[0], 4 + paint.mixParts[0]);
+  EXPECT_EQ(data.materials[2].mixParts[1], 4 + worn.mixParts[1]);
+  EXPECT_EQ(data.materials[4 + paint.mixParts[1]].type, MaterialType::Conductor);
+
+  try {
+    load("1.5");
+    ADD_FAILURE() << "no error";
+  } catch (const SceneError& e) {
+    EXPECT_STREQ(e.what(),
+                 "s.json: objects[0].file: quad.mtl:13: expected Pm between 0 and 1, got \"1.5\"");
+  }
+}
+
 }  // namespace
 }  // namespace candela

@@ -48,6 +48,10 @@ static void collectStatements(const std::string& text, const std::string& label,
       own.mapPr = keep(6);
     else if (isKeyword("Pr", 2))
       own.pr = keep(2);
+    else if (isKeyword("map_Pm", 6))
+      own.mapPm = keep(6);
+    else if (isKeyword("Pm", 2))
+      own.pm = keep(2);
     else if (isKeyword("anisor", 6))
       own.anisor = keep(6);
     else if (isKeyword("aniso", 5))

@@ -29,6 +29,8 @@ struct MtlTextures {
   std::optional<MtlStatement> mapKd, mapKe, d, tr, mapD, norm;
   // The PBR extension's roughness: a number, or a texture of them.
   std::optional<MtlStatement> pr, mapPr;
+  // The PBR extension's metalness: a number, or a texture of them.
+  std::optional<MtlStatement> pm, mapPm;
   // The PBR extension's anisotropy and its rotation (a fraction of a full turn), as Blender's
   // exporter writes them.
   std::optional<MtlStatement> aniso, anisor;

@@ -152,12 +152,72 @@ float roughnessOfPhongExponent(float ns) {
   return std::min(1.0f, std::sqrt(std::sqrt(2.0f / (std::max(ns, 0.0f) + 2.0f))));
 }
 
+// The roughness of a glossy MTL material's Phong exponent Ns (roughnessOfPhongExponent).
+float mtlPhongRoughness(const tinyobj::material_t& material, const std::string& label) {
+  if (!(std::isfinite(material.shininess) && material.shininess >= 0.0f))
+    throw SceneError(label + ": material \"" + material.name +
+                     "\": expected a finite, non-negative Ns, got " +
+                     formatNumber(material.shininess));
+  return roughnessOfPhongExponent(material.shininess);
+}
+
 // A metal's anisotropy (`aniso`, in [0, 1]) and its rotation (`anisor`, a fraction of a full turn
 // counter-clockwise, as Blender's Anisotropic Rotation), read as the JSON anisotropy's.
 void readMtlAnisotropy(const MtlTextures& s, Material* desc) {
   if (s.aniso) desc->anisotropy = unitNumber(*s.aniso, "aniso");
   if (s.anisor && desc->anisotropy > 0.0f)
     desc->anisotropyRotation = unitNumber(*s.anisor, "anisor") * 2.0f * kPi;
+}
+
+// The PBR extension's metalness m (`Pm`, or `map_Pm` in its place) on a material with a diffuse
+// colour, `desc` as it is without: where m is 1 the surface is a conductor of that colour (the
+// metallic workflow of glTF and Blender, whose base colour is a metal's reflectance), rough as
+// the material says (Pr, map_Pr or Ns) and anisotropic by aniso and anisor; where 0 it stays
+// `desc`; between, a mix of the two, its parts appended to `parts`. Normal and bump maps shade
+// both parts, and the alpha masks the mix.
+void applyMetalness(const MtlTextures& s, const tinyobj::material_t& material,
+                    const std::string& label, TextureLoader& textures, Material* desc,
+                    std::vector<Material>* parts) {
+  Material metal;
+  metal.type = MaterialType::Conductor;
+  metal.color = desc->color;
+  metal.colorTexture = desc->colorTexture;
+  metal.normalMap = desc->normalMap;
+  metal.bumpHeight = desc->bumpHeight;
+  if (desc->type == MaterialType::Plastic) {  // its roughness read as a glossy material's
+    metal.roughness = desc->roughness;
+    metal.roughnessTexture = desc->roughnessTexture;
+    metal.roughnessChannel = desc->roughnessChannel;
+  } else {
+    metal.roughness = s.pr ? 0.0f : mtlPhongRoughness(material, label);
+    if (s.pr) metal.roughness = unitNumber(*s.pr, "Pr");
+    if (s.mapPr)
+      metal.roughnessTexture = mtlTexture(*s.mapPr, "map_Pr", TextureUse::Linear, textures, nullptr,
+                                          nullptr, &metal.roughnessChannel);
+  }
+  readMtlAnisotropy(s, &metal);
+  prepareMaterial(&metal);
+  Material mix;
+  mix.type = MaterialType::Mix;
+  if (s.mapPm) {
+    mix.mixWeightTexture = mtlTexture(*s.mapPm, "map_Pm", TextureUse::Linear, textures, nullptr,
+                                      nullptr, &mix.mixWeightChannel);
+  } else {
+    mix.mixWeight = unitNumber(*s.pm, "Pm");
+    if (mix.mixWeight == 0.0f) return;
+    if (mix.mixWeight == 1.0f) {
+      metal.alpha = desc->alpha;
+      *desc = metal;
+      return;
+    }
+  }
+  mix.alpha = desc->alpha;
+  desc->alpha = AlphaMask();
+  mix.mixParts[0] = uint32_t(parts->size());
+  parts->push_back(*desc);
+  mix.mixParts[1] = uint32_t(parts->size());
+  parts->push_back(metal);
+  *desc = mix;
 }
 
 // One material per MTL material (docs/scene-format.md, MTL materials): emissive with radiance Ke
@@ -170,7 +230,8 @@ void readMtlAnisotropy(const MtlTextures& s, Material* desc) {
 // where there is none `bump` (or `map_Bump`) a bump map of heights, -bm its height.
 std::vector<Material> mtlMaterials(const std::vector<tinyobj::material_t>& materials,
                                    const MtlLibrary& library, const std::string& label,
-                                   TextureLoader& textures, std::vector<std::string>* warnings) {
+                                   TextureLoader& textures, std::vector<Material>* mixParts,
+                                   std::vector<std::string>* warnings) {
   std::vector<Material> result;
   for (size_t i = 0; i < materials.size(); ++i) {
     const tinyobj::material_t& material = materials[i];
@@ -234,11 +295,7 @@ std::vector<Material> mtlMaterials(const std::vector<tinyobj::material_t>& mater
     }
     const Vec3 specular = mtlColour(material.specular, "Ks", material.name, label);
     if (desc.type == MaterialType::Diffuse && !isBlack(specular)) {
-      if (!(std::isfinite(material.shininess) && material.shininess >= 0.0f))
-        throw SceneError(label + ": material \"" + material.name +
-                         "\": expected a finite, non-negative Ns, got " +
-                         formatNumber(material.shininess));
-      desc.roughness = roughnessOfPhongExponent(material.shininess);
+      desc.roughness = mtlPhongRoughness(material, label);
       if (found != library.statements.end()) {
         const MtlTextures& s = found->second;
         if (s.pr) desc.roughness = unitNumber(*s.pr, "Pr");
@@ -251,7 +308,8 @@ std::vector<Material> mtlMaterials(const std::vector<tinyobj::material_t>& mater
         desc.color = specular;
         if (found != library.statements.end()) readMtlAnisotropy(found->second, &desc);
       } else {
-        if (found != library.statements.end() && found->second.aniso) {
+        if (found != library.statements.end() && found->second.aniso && !found->second.pm &&
+            !found->second.mapPm) {
           const MtlStatement& aniso = *found->second.aniso;
           warnings->push_back(aniso.file + ":" + std::to_string(aniso.line) +
                               ": \"aniso\" not used: material \"" + material.name +
@@ -264,6 +322,11 @@ std::vector<Material> mtlMaterials(const std::vector<tinyobj::material_t>& mater
         prepareMaterial(&desc);
       }
     }
+    const bool diffuseColour =
+        desc.type == MaterialType::Diffuse || desc.type == MaterialType::Plastic;
+    if (found != library.statements.end() && diffuseColour &&
+        (found->second.pm || found->second.mapPm))
+      applyMetalness(found->second, material, label, textures, &desc, mixParts);
     result.push_back(desc);
   }
   return result;
@@ -282,7 +345,8 @@ MeshDesc buildMesh(const tinyobj::ObjReader& reader, const MtlLibrary& library,
   mesh.uvs.reserve(attrib.texcoords.size() / 2);
   for (size_t i = 0; i < attrib.texcoords.size() / 2; ++i)
     mesh.uvs.push_back(Vec2(attrib.texcoords[2 * i], attrib.texcoords[2 * i + 1]));
-  mesh.materials = mtlMaterials(reader.GetMaterials(), library, label, textures, &mesh.warnings);
+  mesh.materials =
+      mtlMaterials(reader.GetMaterials(), library, label, textures, &mesh.mixParts, &mesh.warnings);
 
   const auto mtlCount = static_cast<int>(mesh.materials.size());
   const auto fallback = static_cast<uint32_t>(mesh.materials.size());
