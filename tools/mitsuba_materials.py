@@ -29,6 +29,10 @@ harness does for diffuse, since candela's reflect on both sides:
                                 alpha_v = (1 - a) alpha_u (at least 0.001), on a sphere turned as
                                 a textured one below, so that Mitsuba's tangent dp/du runs along
                                 candela's azimuth about +y (anisotropy_rotation is not mapped)
+  mix (parts inline, shorthand or named)
+                             -> blendbsdf of the parts' mappings, weight a number or, for a
+                                texture, a `raw` bitmap mapped as a colour texture below (the
+                                average of what candela's choice of a part gives)
   (a roughness r > 0 whose alpha = r^2 is below 0.001 is smooth in candela, docs/scene-format.md's
   Roughness, so it maps as roughness 0)
   {"texture": T, "scale": [su, sv]} as a colour on a sphere (tools/mitsuba_mtl.py maps it on
@@ -52,7 +56,8 @@ import mitsuba_envmap  # noqa: E402  (sets up the shared harness's path)
 import candela_scene as cs  # noqa: E402
 import mitsuba_ref as mr  # noqa: E402
 
-cs.KNOWN['material'] |= {'roughness', 'metal', 'transmission_depth', 'anisotropy'}
+cs.KNOWN['material'] |= {'roughness', 'metal', 'transmission_depth', 'anisotropy', 'materials',
+                         'weight'}
 harness_make_mat = cs._make_mat
 harness_bsdf_dict = mr.bsdf_dict
 
@@ -63,9 +68,9 @@ mirrored = {}
 SMOOTH_ALPHA = 0.001  # candela: alpha below this (roughness < 0.032) is smooth (render/microfacet.h)
 
 
-def colour(ctx, fields, default, path):
+def colour(ctx, fields, default, path, key='color'):
     """The harness's colour, or a texture reference {'texture': absolute path, 'scale': [su, sv]}."""
-    value = fields.get('color', default)
+    value = fields.get(key, default)
     if isinstance(value, dict):
         name = value['texture']
         if not os.path.isabs(name):
@@ -74,8 +79,9 @@ def colour(ctx, fields, default, path):
     return ctx.color(value, path + '.color')
 
 
-def spectrum(c):
-    """A Mitsuba texture for a colour or a texture reference."""
+def spectrum(c, raw=False):
+    """A Mitsuba texture for a colour or a texture reference (`raw`: its 8-bit values read
+    linearly, as candela reads a weight)."""
     if not isinstance(c, dict):
         return mr.rgb(c)
     name = c['texture']
@@ -85,14 +91,35 @@ def spectrum(c):
         mr.mi.Bitmap(mr.np.ascontiguousarray(image[:, ::-1])).write(mirrored[name])
     su, sv = c['scale']
     return {'type': 'bitmap', 'filename': mirrored[name], 'filter_type': 'bilinear',
-            'wrap_mode': 'repeat', 'to_uv': mr.mi.ScalarTransform4f().scale([su, sv, 1])}
+            'wrap_mode': 'repeat', 'raw': raw,
+            'to_uv': mr.mi.ScalarTransform4f().scale([su, sv, 1])}
 
 
 def textured(mat):
+    if mat['type'] == 'mix':
+        return isinstance(mat['weight'], dict) or any(textured(p) for p in mat['parts'])
     return isinstance(mat.get('color'), dict)
 
 
+def mix_part(ctx, part, path):
+    """A part of a mix: a material object, a shorthand type, or a name under "materials"."""
+    if isinstance(part, dict):
+        return make_mat(ctx, part['type'], part, path)
+    if part in ('diffuse', 'mirror', 'glass'):
+        return make_mat(ctx, part, {}, path)
+    with open(ctx.fname) as f:
+        named = cs.json.load(f)['materials'][part]
+    return make_mat(ctx, named['type'], named, f'materials.{part}')
+
+
 def make_mat(ctx, t, fields, path):
+    if t == 'mix':
+        parts = [mix_part(ctx, p, f'{path}.materials[{k}]')
+                 for k, p in enumerate(fields['materials'])]
+        weight = fields.get('weight', 0.5)
+        if isinstance(weight, dict):
+            weight = colour(ctx, fields, 0.5, path, key='weight')
+        return dict(type='mix', parts=parts, weight=weight)
     mat = make_isotropic_mat(ctx, t, fields, path)
     if 'anisotropy' in fields:
         mat['anisotropy'] = ctx.number(fields['anisotropy'], path + '.anisotropy')
@@ -134,11 +161,18 @@ def alphas(mat):
 
 
 def anisotropic(mat):
+    if mat['type'] == 'mix':
+        return any(anisotropic(p) for p in mat['parts'])
     return mat.get('anisotropy', 0.0) > 0
 
 
 def bsdf_dict(mat):
     t = mat['type']
+    if t == 'mix':
+        w = mat['weight']
+        return {'type': 'blendbsdf',
+                'weight': spectrum(w, raw=True) if isinstance(w, dict) else float(w),
+                'bsdf_0': bsdf_dict(mat['parts'][0]), 'bsdf_1': bsdf_dict(mat['parts'][1])}
     rough = max(alphas(mat).values()) >= SMOOTH_ALPHA
     if t == 'conductor':
         if mat['metal']:
