@@ -361,7 +361,8 @@ TEST(DirectionalLight, TheSceneFormatRefusesWhatItCannotBe) {
             "a disc's angle)");
   EXPECT_EQ(lightsError(R"({"position": [0, 2, 0], "intensity": 10, "direction": [0, -1, 0]})"),
             "s.json: lights[0].direction: not used by a point light (only \"spot\", "
-            "\"rectangle\" and \"directional\" lights have a direction)");
+            "\"rectangle\" and \"directional\" lights, and point lights with a \"profile\", "
+            "have a direction)");
 
   const std::string named = "{" + sun + R"(, "id": "sun", "direction": [0, -1, 0]})";
   EXPECT_EQ(lightsError(named, animated("direction", "[[0, [1, -1, 0]], [2, [-1, 1, 0]]]")),

@@ -356,7 +356,7 @@ TEST(RectangleLight, TheSceneFormatRefusesWhatItCannotBe) {
             "have a cone)");
   EXPECT_EQ(lightsError(R"({"position": [0, 2, 0], "intensity": 10, "size": 1})"),
             "s.json: lights[0].size: not used by a point light (only \"rectangle\" lights have a "
-            "size and an up)");
+            "size)");
   EXPECT_EQ(lightsError("{" + at + R"(, "direction": [0, -1, 0], "size": 1, "two_sided": 1})"),
             "s.json: lights[0].two_sided: expected true or false, got 1");
   EXPECT_EQ(lightsError(R"({"position": [0, 2, 0], "intensity": 10, "two_sided": true})"),
@@ -364,7 +364,7 @@ TEST(RectangleLight, TheSceneFormatRefusesWhatItCannotBe) {
             "have two sides)");
   EXPECT_EQ(lightsError(R"({"position": [0, 2, 0], "intensity": 10, "look_at": [0, 0, 0]})"),
             "s.json: lights[0].look_at: not used by a point light (only \"spot\" and "
-            "\"rectangle\" lights point at a place)");
+            "\"rectangle\" lights, and point lights with a \"profile\", point at a place)");
   EXPECT_EQ(lightsError(R"({"type": "directional", "intensity": 10, "look_at": [0, 0, 0]})"),
             "s.json: lights[0].look_at: not used by a directional light (it shines along its "
             "\"direction\", from infinitely far)");

@@ -14,6 +14,7 @@
 #include <cstdint>
 
 #include "core/vec3.h"
+#include "render/light_profile.h"
 #include "render/spot_cone.h"
 
 namespace candela {
@@ -46,6 +47,8 @@ struct Light {
   // sends the same radiance; 0 for a delta light, of one direction.
   float sunOneMinusCos = 0.0f;
   bool hiddenFromCamera = false;  // directional lights: camera rays do not see its disc
+  // Named, so that no byte of a light is left unset (frames compare lights byte by byte).
+  uint8_t padding[3] = {};
   // A spot light is a point light limited to a cone; its power is the point light's it would be
   // without one (its intensity within the beam is that light's).
   SpotCone spot;
@@ -60,6 +63,8 @@ struct Light {
   // A light with a surface: pathPmf times the density by area of a subpath's point on it
   // (render/light_emission.h, emissionAreaPdf); 0 for the others.
   float pathAreaPdf = 0.0f;
+  // A point or spot light's intensity by direction, from an IES file (render/light_profile.h).
+  LightProfile profile;
 };
 
 // Whether light `l` lights from one point or along one direction, which no scattered ray finds:

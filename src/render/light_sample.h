@@ -76,15 +76,17 @@ CANDELA_HDI uint32_t lightPrimitive(const SceneView& scene, const Light& l) {
   return 0xffffffffu;
 }
 
-CANDELA_HDI bool samplePointLight(const Light& l, const Vec3& p, LightSample* s) {
+CANDELA_HDI bool samplePointLight(const SceneView& scene, const Light& l, const Vec3& p,
+                                  LightSample* s) {
   const Vec3 toLight = l.position - p;
   const float dist2 = lengthSquared(toLight);
   if (dist2 <= 0.0f) return false;
   s->distance = sqrtf(dist2);
   s->wi = toLight / s->distance;
   s->radiance = l.power * (kInv4Pi / dist2);
-  if (hasCone(l.spot)) {
-    const float share = coneFalloff(l.spot, -s->wi);
+  if (hasCone(l.spot) || l.profile.texture >= 0) {
+    const float share =
+        coneFalloff(l.spot, -s->wi) * profileFactor(scene.texturePool(), l.profile, -s->wi);
     if (!(share > 0.0f)) return false;
     s->radiance *= share;
   }
@@ -270,7 +272,7 @@ CANDELA_HDI bool sampleLight(const SceneView& scene, const Light& l, const Vec3&
                              float u2, LightSample* s) {
   switch (l.type) {
     case LightType::Point:
-      return samplePointLight(l, p, s);
+      return samplePointLight(scene, l, p, s);
     case LightType::Sphere:
       return sampleSphereLight(scene, l, p, u1, u2, s);
     case LightType::Triangle:

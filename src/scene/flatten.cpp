@@ -171,6 +171,7 @@ void addLight(SceneData& s, const LightDesc& d) {
     light.position = d.position;
     light.power = lightPower(d);
     light.spot = spotCone(d);
+    light.profile = lightProfile(d);
   } else if (d.type == LightType::Directional) {
     light = directionalLight(d);
   } else {

@@ -87,4 +87,23 @@ SpotCone spotCone(const LightDesc& d) {
   return cone;
 }
 
+LightProfile lightProfile(const LightDesc& d) {
+  LightProfile p;
+  if (!d.profile) return p;
+  const Vec3 axis = lightAxis(d);
+  const DVec3 n = dvec3(axis);
+  const Vec3 up = d.profile->up && !alongUp(axis, *d.profile->up) ? *d.profile->up
+                  : alongUp(axis, Vec3(0, 1, 0))                  ? Vec3(0, 0, 1)
+                                                                  : Vec3(0, 1, 0);
+  const DVec3 c0 = unit(dvec3(up) - dot(dvec3(up), n) * n);
+  p.texture = d.profile->texture;
+  p.scale = d.profile->scale;
+  p.cosFirst = float(std::cos(double(d.profile->firstDegrees) * kPi / 180));
+  p.cosLast = float(std::cos(double(d.profile->lastDegrees) * kPi / 180));
+  p.axis = axis;
+  p.c0 = toVec3(c0);
+  p.c90 = toVec3(cross(c0, n));
+  return p;
+}
+
 }  // namespace candela

@@ -75,4 +75,8 @@ inline double coneFluxShare(double beam, double cutoff) {
 // The kernel's cone of a spot light (none for other lights), aimed from d.position.
 SpotCone spotCone(const LightDesc& d);
 
+// A point or spot light's profile (render/light_profile.h) at its aim: the C0 direction its up
+// made perpendicular to its axis, C90 counter-clockwise from it seen from behind the axis.
+LightProfile lightProfile(const LightDesc& d);
+
 }  // namespace candela

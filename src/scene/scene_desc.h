@@ -90,6 +90,17 @@ struct RectangleDesc {
   TextureRef texture;
 };
 
+// A point or spot light's profile (render/light_profile.h), from an IES file.
+struct ProfileDesc {
+  int32_t texture = -1;  // into SceneDesc::textures
+  float scale = 1;       // 1 / the texture's mean over the sphere
+  // The vertical angles (degrees) the file's values span, outside which the light sends nothing.
+  float firstDegrees = 0, lastDegrees = 180;
+  // Made perpendicular to the light's axis, the direction of the profile's C0 plane; without one
+  // (or where an animated axis runs along it) +y, or +z where the axis runs along y.
+  std::optional<Vec3> up;
+};
+
 struct LightDesc {
   std::string id;
   std::string where;
@@ -111,6 +122,9 @@ struct LightDesc {
   Vec3 color{1.0f};
   std::optional<SpotDesc> spot;
   std::optional<RectangleDesc> rectangle;
+  // A point or spot light's profile: where it points (`direction` or `lookAt`, straight down by
+  // default for a point light) is the profile's axis.
+  std::optional<ProfileDesc> profile;
   // A sphere or rectangle light, or a sun with a disc: whether the camera sees it (false: its
   // rays pass it by, while its light, its reflections and what is seen through glass stay).
   bool visible = true;

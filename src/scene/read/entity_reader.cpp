@@ -8,6 +8,7 @@
 
 #include "scene/along_up.h"
 #include "scene/light_emission_desc.h"
+#include "scene/read/ies_profile.h"
 #include "scene/read/texel_check.h"
 #include "scene/read/texture_reader.h"
 #include "scene/scene_error.h"
@@ -201,10 +202,42 @@ Vec2 readRectangleSize(const JsonValue& value) {
   return Vec2(elements[0].positiveNumber(), elements[1].positiveNumber());
 }
 
+namespace {
+
+// A point or spot light's "profile", an IES file relative to the scene file's folder, and its
+// "up" (the direction of the profile's C0 plane), after the light's aim.
+ProfileDesc readProfile(const JsonValue& value, JsonObject& fields, TextureLoader& textures,
+                        const LightDesc& light) {
+  const std::string written = value.string();
+  if (written.empty()) value.failExpected("the path of an IES file");
+  const std::filesystem::path path(written);
+  const std::string resolved =
+      path.is_absolute() ? written : (std::filesystem::path(textures.baseDir()) / path).string();
+  ProfileDesc profile;
+  try {
+    const TextureLoader::LoadedProfile loaded = textures.loadProfile(resolved, written);
+    profile.texture = loaded.index;
+    profile.firstDegrees = float(loaded.first);
+    profile.lastDegrees = float(loaded.last);
+  } catch (const SceneError& e) {
+    value.fail(e.what());
+  }
+  profile.scale = float(1.0 / profileTextureMean(textures.texture(profile.texture),
+                                                 profile.firstDegrees, profile.lastDegrees));
+  if (std::optional<JsonValue> up = fields.get("up")) {
+    profile.up = up->vec3();
+    if (alongUp(lightAxis(light), *profile.up))
+      up->failExpected("a direction that is not parallel to where the light points");
+  }
+  return profile;
+}
+
+}  // namespace
+
 LightDesc readLight(const JsonValue& value, TextureLoader& textures) {
-  JsonObject fields(
-      value, {"id", "type", "position", "intensity", "color", "radius", "direction", "look_at",
-              "cutoff_angle", "beam_width", "angle", "size", "up", "two_sided", "visible"});
+  JsonObject fields(value, {"id", "type", "position", "intensity", "color", "radius", "direction",
+                            "look_at", "cutoff_angle", "beam_width", "angle", "size", "up",
+                            "two_sided", "visible", "profile"});
   LightDesc light;
   light.where = value.path();
   light.id = readId(fields);
@@ -242,12 +275,23 @@ LightDesc readLight(const JsonValue& value, TextureLoader& textures) {
     light.direction = readDirection(fields.require("direction"));
     if (std::optional<JsonValue> angle = fields.get("angle"))
       light.angleDegrees = readSunAngle(*angle);
+  } else if (kind == kPoint && fields.has("profile")) {
+    // A profile's axis: straight down unless it says otherwise.
+    light.direction = Vec3(0.0f, -1.0f, 0.0f);
+    if (fields.has("direction") || fields.has("look_at")) readAim(fields, names[kind], light);
   } else {
     fields.reject("direction", notUsed +
-                                   " (only \"spot\", \"rectangle\" and \"directional\" lights "
-                                   "have a direction)");
-    fields.reject("look_at",
-                  notUsed + " (only \"spot\" and \"rectangle\" lights point at a place)");
+                                   " (only \"spot\", \"rectangle\" and \"directional\" lights, "
+                                   "and point lights with a \"profile\", have a direction)");
+    fields.reject("look_at", notUsed +
+                                 " (only \"spot\" and \"rectangle\" lights, and point "
+                                 "lights with a \"profile\", point at a place)");
+  }
+  if (kind == kPoint || kind == kSpot) {
+    if (std::optional<JsonValue> profile = fields.get("profile"))
+      light.profile = readProfile(*profile, fields, textures, light);
+  } else {
+    fields.reject("profile", notUsed + " (only \"point\" and \"spot\" lights have a profile)");
   }
   const bool seen =
       kind == kSphere || kind == kRectangle || (kind == kDirectional && light.angleDegrees > 0.0f);
@@ -279,8 +323,11 @@ LightDesc readLight(const JsonValue& value, TextureLoader& textures) {
                     " is beyond single precision; expected a smaller intensity");
     }
   } else {
-    for (const char* key : {"size", "up"})
-      fields.reject(key, notUsed + " (only \"rectangle\" lights have a size and an up)");
+    fields.reject("size", notUsed + " (only \"rectangle\" lights have a size)");
+    if (!light.profile)
+      fields.reject("up", notUsed +
+                              " (only \"rectangle\" lights and lights with a \"profile\" "
+                              "have an up)");
     fields.reject("two_sided", notUsed + " (only \"rectangle\" lights have two sides)");
   }
   fields.finish();

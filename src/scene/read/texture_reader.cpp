@@ -10,6 +10,7 @@
 #include "core/texture.h"
 #include "image/image_io.h"
 #include "scene/content_hash.h"
+#include "scene/read/ies_profile.h"
 #include "scene/read/texel_check.h"
 #include "scene/scene_error.h"
 
@@ -88,6 +89,23 @@ LoadedTexture TextureLoader::load(const std::string& path, TextureUse use) {
   result.index = int32_t(textures_.size());
   textures_.push_back(std::make_shared<const TextureDesc>(std::move(texture)));
   loaded_.emplace(std::make_pair(key, use), result);
+  return result;
+}
+
+TextureLoader::LoadedProfile TextureLoader::loadProfile(const std::string& path,
+                                                        const std::string& written) {
+  std::error_code error;
+  std::filesystem::path canonical = std::filesystem::weakly_canonical(path, error);
+  const std::string key = error ? path : canonical.string();
+  const auto found = profiles_.find(key);
+  if (found != profiles_.end()) return found->second;
+  const IesProfile profile = readIesProfile(path, written);
+  LoadedProfile result;
+  result.index = int32_t(textures_.size());
+  result.first = profile.vertical.front();
+  result.last = profile.vertical.back();
+  textures_.push_back(std::make_shared<const TextureDesc>(profileTexture(profile, path)));
+  profiles_.emplace(key, result);
   return result;
 }
 

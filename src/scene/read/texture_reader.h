@@ -18,9 +18,9 @@
 
 namespace candela {
 
-// What a texture is read for: a colour (8-bit files decoded from sRGB), or values read linearly
-// (an alpha mask, a normal map).
-enum class TextureUse { Color, Linear };
+// What a texture is read for: a colour (8-bit files decoded from sRGB), values read linearly (an
+// alpha mask, a normal map), or a light's profile made from an IES file.
+enum class TextureUse { Color, Linear, Profile };
 
 struct LoadedTexture {
   int32_t index = -1;     // into the scene's textures
@@ -41,6 +41,15 @@ class TextureLoader {
   // non-negative.
   LoadedTexture load(const std::string& path, TextureUse use);
 
+  // The light profile (render/light_profile.h) of the IES file at `path`, read once: its texture
+  // and the vertical angles its values span. Throws SceneError "<file>:<line>: <reason>" (the
+  // file named as given).
+  struct LoadedProfile {
+    int32_t index = -1;
+    double first = 0, last = 180;  // degrees
+  };
+  LoadedProfile loadProfile(const std::string& path, const std::string& written);
+
   // The texture that load() returned `index` for.
   const TextureDesc& texture(int32_t index) const { return *textures_[size_t(index)]; }
 
@@ -48,6 +57,7 @@ class TextureLoader {
   std::vector<std::shared_ptr<const TextureDesc>>& textures_;
   std::string baseDir_;
   std::map<std::pair<std::string, TextureUse>, LoadedTexture> loaded_;
+  std::map<std::string, LoadedProfile> profiles_;
 };
 
 // A colour that may be textured: returns the colour (1 for a texture: the texture alone) and sets
