@@ -16,22 +16,13 @@
 
 #include "render_test_util.h"
 #include "shading_normal_test_util.h"
+#include "texture_test_util.h"
 
 namespace candela {
 namespace {
 
 namespace fs = std::filesystem;
 using test::num;
-
-// A PFM of `texels` ([r, g, b] each) in one row, left to right.
-void writeRowTexture(const fs::path& path, const std::vector<Vec3>& texels) {
-  std::ofstream pfm(path, std::ios::binary);
-  pfm << "PF\n" << texels.size() << " 1\n-1\n";
-  for (const Vec3& t : texels) {
-    const float texel[3] = {t.x, t.y, t.z};
-    pfm.write(reinterpret_cast<const char*>(texel), sizeof texel);
-  }
-}
 
 const DVec3 kSun{0.3, -1, 0.5};
 
@@ -59,7 +50,7 @@ TEST(MixMaterial, AWeightOfZeroOrOneIsThatPartAlone) {
   const fs::path dir = test::mapTestFolder("mix_stripes");
   test::writeMappedPlane(dir / "plane.obj");
   const Vec3 zero(1, 0, 1), one(0, 1, 0);
-  writeRowTexture(dir / "stripes.pfm", {zero, zero, zero, zero, one, one, one, one});
+  test::writeRowPfm(dir / "stripes.pfm", {zero, zero, zero, zero, one, one, one, one});
   const std::vector<float> first = planeImage(dir, kCopper);
   const std::vector<float> second = planeImage(dir, kRedPlastic);
   const std::vector<float> mixed = planeImage(
@@ -230,7 +221,7 @@ TEST(MixMaterial, PartsFollowTheirSurfacesMaterials) {
 TEST(MixMaterial, AnObjectsMixReadsItsUvs) {
   const fs::path dir = test::mapTestFolder("mix_object");
   test::writeMappedPlane(dir / "plane.obj");
-  writeRowTexture(dir / "w.pfm", {Vec3(0.0f), Vec3(1.0f)});
+  test::writeRowPfm(dir / "w.pfm", {Vec3(0.0f), Vec3(1.0f)});
   const SceneData data = test::loadTestScene(R"({
     "camera": {"width": 4, "height": 4},
     "objects": [{"file": "plane.obj", "material": {"type": "mix", "weight": {"texture": "w.pfm"},
@@ -310,8 +301,8 @@ TEST(MixMaterial, RefusesWhatCannotBeMixed) {
 // materials. A Pm outside [0, 1] is refused at its line.
 TEST(MixMaterial, MtlMetalnessMixesAMetalIn) {
   const fs::path dir = test::mapTestFolder("mix_mtl");
-  writeRowTexture(dir / "metal.pfm", {Vec3(0, 0, 1), Vec3(0, 0, 0)});
-  writeRowTexture(dir / "bumps.pfm", {Vec3(0.2f), Vec3(0.7f)});
+  test::writeRowPfm(dir / "metal.pfm", {Vec3(0, 0, 1), Vec3(0, 0, 0)});
+  test::writeRowPfm(dir / "bumps.pfm", {Vec3(0.2f), Vec3(0.7f)});
   std::ofstream(dir / "quad.obj") << "mtllib quad.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
                                   << "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
                                   << "usemtl gold\nf 1/1 2/2 3/3\nusemtl paint\nf 1/1 3/3 4/4\n"

@@ -18,6 +18,7 @@
 #include "render/material_prepare.h"
 #include "render_test_util.h"
 #include "shading_normal_test_util.h"
+#include "texture_test_util.h"
 
 namespace candela {
 namespace {
@@ -27,12 +28,9 @@ using test::num;
 
 // A grey PFM of `values.size()` x 1 texels, left to right.
 void writeRowMap(const fs::path& path, const std::vector<float>& values) {
-  std::ofstream pfm(path, std::ios::binary);
-  pfm << "PF\n" << values.size() << " 1\n-1\n";
-  for (float value : values) {
-    const float texel[3] = {value, value, value};
-    pfm.write(reinterpret_cast<const char*>(texel), sizeof texel);
-  }
+  std::vector<Vec3> texels;
+  for (float value : values) texels.push_back(Vec3(value));
+  test::writeRowPfm(path, texels);
 }
 
 const DVec3 kSun{0.3, -1, 0.5};

@@ -12,8 +12,8 @@ be made again anywhere.
 import argparse
 import math
 import random
-import struct
-import zlib
+
+from png8 import png8
 
 OCTAVES = 5
 COVER = 0.4   # the share of the surface the blotches cover
@@ -43,16 +43,6 @@ def smoothstep(a, b, v):
     return t * t * (3 - 2 * t)
 
 
-def png8_grey(width, height, rows):
-    def chunk(kind, data):
-        return (struct.pack('>I', len(data)) + kind + data +
-                struct.pack('>I', zlib.crc32(kind + data) & 0xffffffff))
-    raw = b''.join(b'\x00' + bytes(row) for row in rows)
-    return (b'\x89PNG\r\n\x1a\n' +
-            chunk(b'IHDR', struct.pack('>IIBBBBB', width, height, 8, 0, 0, 0, 0)) +
-            chunk(b'IDAT', zlib.compress(raw, 9)) + chunk(b'IEND', b''))
-
-
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument('output')
@@ -77,7 +67,7 @@ def main():
     rows = [[round(255 * smoothstep(threshold - EDGE, threshold + EDGE, values[y * size + x]))
              for x in range(size)] for y in range(size)]
     with open(args.output, 'wb') as f:
-        f.write(png8_grey(size, size, rows))
+        f.write(png8(size, size, rows, channels=1))
 
 
 if __name__ == '__main__':

@@ -9,8 +9,8 @@ The image is `size` texels wide and 4/3 of that high. Standard library only, so 
 be made again anywhere.
 """
 import argparse
-import struct
-import zlib
+
+from png8 import png8
 
 COLUMNS, ROWS = 3, 4
 CAME = 0.06  # the lead's width, in panes
@@ -28,16 +28,6 @@ def colour(x, y):
     if min(fx, 1.0 - fx, fy, 1.0 - fy) < CAME / 2:
         return LEAD
     return PANES[min(int(y), ROWS - 1)][min(int(x), COLUMNS - 1)]
-
-
-def png8(width, height, rows):
-    def chunk(kind, data):
-        return (struct.pack('>I', len(data)) + kind + data +
-                struct.pack('>I', zlib.crc32(kind + data) & 0xffffffff))
-    raw = b''.join(b'\x00' + bytes(row) for row in rows)
-    return (b'\x89PNG\r\n\x1a\n' +
-            chunk(b'IHDR', struct.pack('>IIBBBBB', width, height, 8, 2, 0, 0, 0)) +
-            chunk(b'IDAT', zlib.compress(raw, 9)) + chunk(b'IEND', b''))
 
 
 def main():

@@ -15,11 +15,10 @@
 #include "core/check.h"
 #include "core/constants.h"
 #include "core/sobol_sampler.h"
-#include "core/texture.h"
 #include "geometry/surface.h"
-#include "geometry/surface_uv.h"
 #include "render/material.h"
 #include "render/scene_view.h"
+#include "render/surface_color.h"
 
 namespace candela {
 
@@ -27,10 +26,7 @@ namespace candela {
 // most 1).
 CANDELA_HDI float mixWeightAt(const SceneView& scene, const Material& m, const Hit& hit,
                               const SurfacePoint& sp) {
-  if (m.mixWeightTexture.index < 0) return m.mixWeight;
-  const Vec2 uv = surfaceUv(scene, hit, sp);
-  const TextureSample t = lookupTexture(scene.texturePool(), m.mixWeightTexture, uv.x, uv.y);
-  return minf(textureChannel(t, m.mixWeightChannel), 1.0f);
+  return surfaceUnitValue(scene, m.mixWeight, m.mixWeightTexture, m.mixWeightChannel, hit, sp);
 }
 
 // The index of the material a path meets at the point of a surface of material `index`, given u

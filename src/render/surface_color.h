@@ -18,14 +18,19 @@ CANDELA_HDI Vec3 surfaceColor(const SceneView& scene, const Material& m, const H
   return m.color * lookupTexture(scene.texturePool(), m.colorTexture, uv.x, uv.y).rgb;
 }
 
-// The roughness of m at the point: `roughness`, or its texture's luminance or chosen channel
-// there (at most 1).
+// The value in [0, 1] of a field that may be a texture: `constant`, or texture `ref`'s luminance
+// or chosen channel at the point (at most 1).
+CANDELA_HDI float surfaceUnitValue(const SceneView& scene, float constant, const TextureRef& ref,
+                                   uint32_t channel, const Hit& hit, const SurfacePoint& sp) {
+  if (ref.index < 0) return constant;
+  const Vec2 uv = surfaceUv(scene, hit, sp);
+  return minf(textureChannel(lookupTexture(scene.texturePool(), ref, uv.x, uv.y), channel), 1.0f);
+}
+
+// The roughness of m at the point: `roughness`, or its texture's value there.
 CANDELA_HDI float surfaceRoughness(const SceneView& scene, const Material& m, const Hit& hit,
                                    const SurfacePoint& sp) {
-  if (m.roughnessTexture.index < 0) return m.roughness;
-  const Vec2 uv = surfaceUv(scene, hit, sp);
-  const TextureSample t = lookupTexture(scene.texturePool(), m.roughnessTexture, uv.x, uv.y);
-  return minf(textureChannel(t, m.roughnessChannel), 1.0f);
+  return surfaceUnitValue(scene, m.roughness, m.roughnessTexture, m.roughnessChannel, hit, sp);
 }
 
 // The radiance an emissive material with an emission texture emits at texture coordinates uv.

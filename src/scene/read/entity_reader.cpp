@@ -210,12 +210,10 @@ ProfileDesc readProfile(const JsonValue& value, JsonObject& fields, TextureLoade
                         const LightDesc& light) {
   const std::string written = value.string();
   if (written.empty()) value.failExpected("the path of an IES file");
-  const std::filesystem::path path(written);
-  const std::string resolved =
-      path.is_absolute() ? written : (std::filesystem::path(textures.baseDir()) / path).string();
   ProfileDesc profile;
   try {
-    const TextureLoader::LoadedProfile loaded = textures.loadProfile(resolved, written);
+    const TextureLoader::LoadedProfile loaded =
+        textures.loadProfile(textures.resolve(written), written);
     profile.texture = loaded.index;
     profile.firstDegrees = float(loaded.first);
     profile.lastDegrees = float(loaded.last);

@@ -92,6 +92,11 @@ LoadedTexture TextureLoader::load(const std::string& path, TextureUse use) {
   return result;
 }
 
+std::string TextureLoader::resolve(const std::string& written) const {
+  const std::filesystem::path path(written);
+  return path.is_absolute() ? written : (std::filesystem::path(baseDir_) / path).string();
+}
+
 TextureLoader::LoadedProfile TextureLoader::loadProfile(const std::string& path,
                                                         const std::string& written) {
   std::error_code error;
@@ -133,9 +138,7 @@ TextureObject readTextureObject(const JsonValue& value, TextureLoader& textures,
   const JsonValue file = fields.require("texture");
   const std::string written = file.string();
   if (written.empty()) file.failExpected("the path of an image file");
-  const std::filesystem::path path(written);
-  const std::string resolved =
-      path.is_absolute() ? written : (std::filesystem::path(textures.baseDir()) / path).string();
+  const std::string resolved = textures.resolve(written);
   TextureObject object;
   TextureRef& ref = object.ref;
   if (std::optional<JsonValue> scale = fields.get("scale")) {

@@ -35,6 +35,8 @@ class TextureLoader {
       : textures_(textures), baseDir_(std::move(baseDir)) {}
 
   const std::string& baseDir() const { return baseDir_; }
+  // A file as the scene names it, resolved against the scene file's folder unless absolute.
+  std::string resolve(const std::string& written) const;
 
   // The texture of the file at `path`; throws SceneError "<reason>" (naming the file as given)
   // when it cannot be read, is empty or too large, or holds a texel that is not finite and
