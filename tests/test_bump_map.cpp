@@ -152,7 +152,7 @@ TEST(BumpMap, MtlBumpReadsHeightsWithItsMultiplier) {
             "multiplier, got \"h.pfm\"");
   EXPECT_EQ(error("bump -clamp on h.pfm"),
             "test.json: objects[0].file: m.mtl:2: bump option \"-clamp\" is not supported (only "
-            "-s and -bm)");
+            "-s, -o and -bm)");
 }
 
 // Blender's exporter writes tangent-space normal maps as `map_Bump`: a bump map whose texels are
@@ -207,7 +207,7 @@ TEST(BumpMap, TheSceneFormatRefusesWhatItCannotBe) {
             "string \"1\"");
   EXPECT_EQ(error(R"({"type": "diffuse", "bump_map": {"texture": "h.pfm", "strength": 1}})"),
             "s.json: materials.m.bump_map.strength: unknown key, expected one of \"texture\", "
-            "\"scale\", \"height\"");
+            "\"scale\", \"offset\", \"height\"");
   EXPECT_EQ(error(R"({"type": "diffuse", "bump_map": "h.pfm"})"),
             "s.json: materials.m.bump_map: expected a texture object {\"texture\": file, "
             "\"scale\": [su, sv], \"height\": h}, got a string \"h.pfm\"");

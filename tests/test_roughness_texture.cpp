@@ -238,8 +238,8 @@ TEST(RoughnessTexture, MtlPrAndMapPrSetTheRoughness) {
             "\"z\"");
   EXPECT_EQ(error("map_Pr -imfchan l r.pfm"), "(no error)");
   EXPECT_EQ(error("map_Pr -bm 2 r.pfm"),
-            "test.json: objects[0].file: m.mtl:3: map_Pr option \"-bm\" is not supported (only -s "
-            "and -imfchan)");
+            "test.json: objects[0].file: m.mtl:3: map_Pr option \"-bm\" is not supported (only -s, "
+            "-o and -imfchan)");
 }
 
 TEST(RoughnessTexture, TheSceneFormatRefusesWhatItCannotBe) {
@@ -257,7 +257,7 @@ TEST(RoughnessTexture, TheSceneFormatRefusesWhatItCannotBe) {
                 (dir / "missing.pfm").string() + ": cannot open: No such file or directory");
   EXPECT_EQ(error(R"({"type": "plastic", "roughness": {"texture": "r.pfm", "height": 1}})"),
             "s.json: materials.m.roughness.height: unknown key, expected one of \"texture\", "
-            "\"scale\", \"channel\"");
+            "\"scale\", \"offset\", \"channel\"");
   EXPECT_EQ(error(R"({"type": "plastic", "roughness": [0.1, 0.2]})"),
             "s.json: materials.m.roughness: expected a roughness in [0, 1] or a texture object, "
             "got an array [0.1,0.2]");

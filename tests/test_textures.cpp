@@ -155,6 +155,15 @@ TEST_F(TextureLookup, ScaleMultipliesUvFirst) {
   expectNear(lookupTexture(pool, ref, 0.125f, 0.125f), Vec3(srgb(10), srgb(20), srgb(30)), 1.0f);
 }
 
+TEST_F(TextureLookup, OffsetAddsAfterTheScale) {
+  ref.scaleU = 2.0f;
+  ref.offsetU = 0.5f;
+  ref.offsetV = -0.5f;
+  // (0.375 * 2 + 0.5, 0.25 - 0.5) = (1.25, -0.25), which repeats to (0.25, 0.75): top-left.
+  expectNear(lookupTexture(pool, ref, 0.375f, 0.25f), Vec3(srgb(10), srgb(20), srgb(30)), 1.0f);
+  expectNear(lookupTexture(pool, ref, 0.125f, 0.25f), Vec3(srgb(200), srgb(100), srgb(50)), 0.0f);
+}
+
 TEST_F(TextureLookup, LinearAndFloatFormats) {
   texture.format = TextureFormat::Linear8;
   expectNear(lookupTexture(pool, ref, 0.25f, 0.75f), Vec3(10.0f, 20.0f, 30.0f) / 255.0f, 1.0f);
@@ -413,11 +422,11 @@ TEST(TextureErrors, JsonMessagesNameThePath) {
   EXPECT_EQ(loadError(scene(R"({"type": "emissive", "radiance": {"texture": "ok.png", "a": 1}})"),
                       dir.path()),
             "scene.json: spheres[0].material.radiance.a: unknown key, expected one of \"texture\", "
-            "\"scale\"");
+            "\"scale\", \"offset\"");
   EXPECT_EQ(loadError(scene(R"({"type": "diffuse", "color": {"texture": "ok.png", "wrap": 1}})"),
                       dir.path()),
             "scene.json: spheres[0].material.color.wrap: unknown key, expected one of \"texture\", "
-            "\"scale\"");
+            "\"scale\", \"offset\"");
 }
 
 TEST(TextureErrors, MtlMessagesNameFileAndLine) {
@@ -441,7 +450,7 @@ TEST(TextureErrors, MtlMessagesNameFileAndLine) {
   EXPECT_EQ(error("newmtl a\nd 1.5\n"), "meshes/m.mtl:2: expected d between 0 and 1, got \"1.5\"");
   EXPECT_EQ(error("newmtl a\n\nTr x\n"), "meshes/m.mtl:3: expected Tr between 0 and 1, got \"x\"");
   EXPECT_EQ(error("newmtl a\nmap_Kd -clamp on a.png\n"),
-            "meshes/m.mtl:2: map_Kd option \"-clamp\" is not supported (only -s)");
+            "meshes/m.mtl:2: map_Kd option \"-clamp\" is not supported (only -s and -o)");
   dir.write("bad.png", "not a png");
   const std::string unreadable = error("newmtl a\nmap_Kd bad.png\n");
   EXPECT_EQ(unreadable.rfind("meshes/m.mtl:2: cannot read the texture: ", 0), 0u) << unreadable;
@@ -474,6 +483,53 @@ TEST(TextureLoading, EachFileOnceWithScaleFromMtl) {
   EXPECT_EQ(desc.textures[size_t(a.alpha.texture.index)]->format, TextureFormat::Linear8);
   EXPECT_EQ(b.alpha.channel, 0u);  // g.png has none: its grey is the mask
   EXPECT_FLOAT_EQ(b.alpha.constant, 0.75f);
+}
+
+// JSON's "offset" and MTL's -o (u, then v, default 0; w not used) shift where the image starts,
+// after the scale; anything but finite numbers is refused.
+TEST(TextureLoading, OffsetsFromJsonAndMtl) {
+  test::TempDir dir;
+  ASSERT_TRUE(test::writeTestPng(dir.file("t.png"), 1, 1, 3, {1, 2, 3}));
+  const SceneData data = test::loadTestScene(R"({"camera": {}, "spheres": [{"position": [0, 0, 0],
+      "radius": 1, "material": {"type": "diffuse", "color": {"texture": "t.png",
+      "scale": [2, 3], "offset": [0.25, -1.5]}}}]})",
+                                             dir.path());
+  EXPECT_EQ(data.materials[0].colorTexture.offsetU, 0.25f);
+  EXPECT_EQ(data.materials[0].colorTexture.offsetV, -1.5f);
+  EXPECT_EQ(loadError(R"({"camera": {}, "spheres": [{"position": [0, 0, 0], "radius": 1,
+      "material": {"type": "diffuse", "color": {"texture": "t.png", "offset": [1]}}}]})",
+                      dir.path()),
+            "scene.json: spheres[0].material.color.offset: expected an array of 2 finite numbers, "
+            "got an array [1]");
+
+  dir.write("m.mtl",
+            "newmtl a\nmap_Kd -s 2 2 -o 0.25 0.5 1 t.png\nnewmtl b\nmap_Kd -o 0.75 t.png\n");
+  const std::string obj = dir.write(
+      "m.obj", "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl a\nf 1 2 3\nusemtl b\nf 1 3 2\n");
+  SceneDesc desc;
+  TextureLoader loader(desc.textures, dir.path());
+  const MeshDesc mesh = loadObjFile(obj, "m.obj", loader);
+  ASSERT_EQ(mesh.materials.size(), 2u);
+  const TextureRef& a = mesh.materials[0].colorTexture;
+  EXPECT_EQ(a.scaleU, 2.0f);
+  EXPECT_EQ(a.offsetU, 0.25f);
+  EXPECT_EQ(a.offsetV, 0.5f);
+  const TextureRef& b = mesh.materials[1].colorTexture;
+  EXPECT_EQ(b.scaleU, 1.0f);
+  EXPECT_EQ(b.offsetU, 0.75f);
+  EXPECT_EQ(b.offsetV, 0.0f);
+  const auto error = [&](const std::string& mtl) -> std::string {
+    dir.write("m.mtl", mtl);
+    try {
+      loadObjFile(obj, "m.obj", loader);
+    } catch (const SceneError& e) {
+      return e.what();
+    }
+    return "(no SceneError)";
+  };
+  EXPECT_EQ(error("newmtl a\nmap_Kd -o t.png\n"), "m.mtl:2: map_Kd -o: expected an offset");
+  EXPECT_EQ(error("newmtl a\nmap_Kd -o inf t.png\n"),
+            "m.mtl:2: map_Kd -o: expected finite offsets, got \"inf\"");
 }
 
 TEST(TextureLoading, SixteenBitPngKeepsItsPrecision) {

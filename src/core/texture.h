@@ -28,10 +28,12 @@ struct Texture {
   TextureFormat format = TextureFormat::Srgb8;
 };
 
-// A material's use of a texture: which one, and how many times it repeats across uv's [0, 1).
+// A material's use of a texture: which one, how many times it repeats across uv's [0, 1), and
+// where it starts: the lookup reads the image at (u scaleU + offsetU, v scaleV + offsetV).
 struct TextureRef {
   int32_t index = -1;  // into the scene's textures; -1: none
   float scaleU = 1, scaleV = 1;
+  float offsetU = 0, offsetV = 0;
 };
 
 // The scene's texture arrays, as the lookup reads them.
@@ -94,8 +96,8 @@ struct TexelQuad {
 
 CANDELA_HDI TexelQuad texelQuad(const Texture& t, const TextureRef& ref, float u, float v) {
   // Continuous texel coordinates with texel centres at integers, x right and y down.
-  const float x = wrapUnit(u * ref.scaleU) * float(t.width) - 0.5f;
-  const float y = (1.0f - wrapUnit(v * ref.scaleV)) * float(t.height) - 0.5f;
+  const float x = wrapUnit(u * ref.scaleU + ref.offsetU) * float(t.width) - 0.5f;
+  const float y = (1.0f - wrapUnit(v * ref.scaleV + ref.offsetV)) * float(t.height) - 0.5f;
   const float x0f = floorf(x), y0f = floorf(y);
   // x0f and y0f lie in [-1, W - 1] and [-1, H - 1]: one wrap suffices.
   const int32_t w = int32_t(t.width), h = int32_t(t.height);
@@ -116,7 +118,8 @@ CANDELA_HDI float texelLuminance(const TexturePool& pool, const Texture& t, uint
 
 }  // namespace detail
 
-// The texture `ref` at (u, v), scaled by (scaleU, scaleV) first: bilinear, repeating.
+// The texture `ref` at (u, v), scaled by (scaleU, scaleV) and offset by (offsetU, offsetV) first:
+// bilinear, repeating.
 CANDELA_HDI TextureSample lookupTexture(const TexturePool& pool, const TextureRef& ref, float u,
                                         float v) {
   const Texture& t = pool.textures[ref.index];

@@ -108,13 +108,16 @@ TextureRef mtlTexture(const MtlStatement& statement, const char* keyword, Textur
       rest = restOfLine(in);
       continue;
     }
-    if (option != "-s")
+    if (option != "-s" && option != "-o")
       failAt(statement, std::string(keyword) + " option \"" + option +
                             "\" is not supported (only -s" +
-                            (bumpMultiplier ? " and -bm)"
-                             : channel      ? " and -imfchan)"
-                                            : ")"));
-    float scale[3] = {1.0f, 1.0f, 1.0f};
+                            (bumpMultiplier ? ", -o and -bm)"
+                             : channel      ? ", -o and -imfchan)"
+                                            : " and -o)"));
+    // -s u [v [w]] scales (v defaults to u), -o u [v [w]] offsets (v defaults to 0); w, the third
+    // texture coordinate's, is read and not used.
+    const bool scaling = option == "-s";
+    float values[3] = {0.0f, 0.0f, 0.0f};
     int count = 0;
     for (std::string word; count < 3 && in >> word; ++count) {
       float value = 0.0f;
@@ -122,14 +125,22 @@ TextureRef mtlTexture(const MtlStatement& statement, const char* keyword, Textur
         in.seekg(-std::streamoff(word.size()), std::ios::cur);  // the file name
         break;
       }
-      if (!(std::isfinite(value) && value != 0.0f))
-        failAt(statement, std::string(keyword) + " -s: expected finite, non-zero scales, got \"" +
-                              word + "\"");
-      scale[count] = value;
+      if (!(std::isfinite(value) && (value != 0.0f || !scaling)))
+        failAt(statement, std::string(keyword) + " " + option + ": expected finite" +
+                              (scaling ? ", non-zero scales" : " offsets") + ", got \"" + word +
+                              "\"");
+      values[count] = value;
     }
-    if (count == 0) failAt(statement, std::string(keyword) + " -s: expected a scale");
-    ref.scaleU = scale[0];
-    ref.scaleV = count > 1 ? scale[1] : scale[0];
+    if (count == 0)
+      failAt(statement, std::string(keyword) + " " + option + ": expected " +
+                            (scaling ? "a scale" : "an offset"));
+    if (scaling) {
+      ref.scaleU = values[0];
+      ref.scaleV = count > 1 ? values[1] : values[0];
+    } else {
+      ref.offsetU = values[0];
+      ref.offsetV = values[1];
+    }
     rest = restOfLine(in);
   }
   if (rest.empty()) failAt(statement, std::string("expected a file name after ") + keyword);

@@ -116,7 +116,7 @@ TextureLoader::LoadedProfile TextureLoader::loadProfile(const std::string& path,
 
 namespace {
 
-// The keys a texture object may have beside "texture" and "scale".
+// The keys a texture object may have beside "texture", "scale" and "offset".
 enum TextureKeys : unsigned { kNoMoreKeys = 0, kHeightKey = 1, kChannelKey = 2 };
 
 // What a texture object gives: the texture, and the keys it was allowed to have.
@@ -127,11 +127,11 @@ struct TextureObject {
   bool hasAlpha = false;            // whether the image has an alpha channel
 };
 
-// A texture object {"texture": file, "scale": [su, sv], ...}, its file read for `use`, with the
-// further keys that `keys` allows.
+// A texture object {"texture": file, "scale": [su, sv], "offset": [ou, ov], ...}, its file read
+// for `use`, with the further keys that `keys` allows.
 TextureObject readTextureObject(const JsonValue& value, TextureLoader& textures, TextureUse use,
                                 const std::string& expected, unsigned keys = kNoMoreKeys) {
-  std::vector<std::string> known = {"texture", "scale"};
+  std::vector<std::string> known = {"texture", "scale", "offset"};
   if (keys & kHeightKey) known.push_back("height");
   if (keys & kChannelKey) known.push_back("channel");
   JsonObject fields(value, std::move(known), expected);
@@ -149,6 +149,13 @@ TextureObject readTextureObject(const JsonValue& value, TextureLoader& textures,
     ref.scaleV = e[1].number("a finite, non-zero number");
     if (ref.scaleU == 0) e[0].failExpected("a finite, non-zero number");
     if (ref.scaleV == 0) e[1].failExpected("a finite, non-zero number");
+  }
+  if (std::optional<JsonValue> offset = fields.get("offset")) {
+    if (!offset->json().is_array() || offset->json().size() != 2)
+      offset->failExpected("an array of 2 finite numbers");
+    const std::vector<JsonValue> e = offset->elements();
+    ref.offsetU = e[0].number("a finite number");
+    ref.offsetV = e[1].number("a finite number");
   }
   if (std::optional<JsonValue> given = fields.get("height")) {
     object.height = given->number("a finite, non-zero number");
