@@ -16,6 +16,7 @@
 
 #include "render/aov_layers.h"
 #include "render_test_util.h"
+#include "scene/animation.h"
 #include "scene/read/ies_profile.h"
 #include "shading_normal_test_util.h"
 
@@ -272,6 +273,32 @@ TEST(LightProfile, LightSubpathsCarryTheProfile) {
   const test::SeedPair with{render(true, 1), render(true, 2)};
   const test::SeedPair without{render(false, 1), render(false, 2)};
   test::expectSameImage(with, without);
+}
+
+// A profiled point light is aimed, so a direction track turns its profile's axis with it (its
+// C0 plane kept towards the default up); a plain point light's direction track is refused.
+TEST(LightProfile, ADirectionTrackTurnsTheProfile) {
+  const fs::path dir = test::mapTestFolder("profile_track");
+  writeIes(dir, "p.ies", iesText({0, 90}, {0}, {1, 1}));
+  const auto scene = [&](const std::string& profile) {
+    return R"({"camera": {"width": 4, "height": 4},
+      "lights": [{"id": "lamp", "position": [0, 2, 0], "intensity": 1)" +
+           profile + R"(}],
+      "animation": {"frames": 3, "tracks": [{"target": "lamp", "property": "direction",
+                                             "keys": [[0, [0, -1, 0]], [2, [2, 0, 0]]]}]}})";
+  };
+  const SceneDesc desc = parseSceneText(scene(R"(, "profile": "p.ies")"), "s.json", dir.string());
+  const LightProfile first = flattenScene(sceneAtFrame(desc, 0)).lights[0].profile;
+  const LightProfile last = flattenScene(sceneAtFrame(desc, 2)).lights[0].profile;
+  EXPECT_EQ(first.axis.y, -1.0f);
+  EXPECT_EQ(first.c0.z, 1.0f);  // +z, the axis running along the default up
+  EXPECT_EQ(last.axis.x, 1.0f);
+  EXPECT_EQ(last.c0.y, 1.0f);             // the default up itself
+  EXPECT_NEAR(last.c90.z, -1.0f, 1e-6f);  // C0 x axis = y x x
+  EXPECT_EQ(test::loadError(scene(""), dir.string()),
+            "test.json: animation.tracks[0].property: \"direction\" is not used by a point light "
+            "(only \"spot\", \"rectangle\" and \"directional\" lights, and point lights with a "
+            "\"profile\", have a direction)");
 }
 
 std::string lightError(const fs::path& dir, const std::string& light) {

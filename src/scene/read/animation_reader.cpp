@@ -209,7 +209,7 @@ void checkUsed(const JsonValue& property, const AnimTrack& track, const SceneDes
   } else if (track.target == AnimTarget::Light) {
     const LightDesc& light = scene.lights[track.index];
     const bool directional = light.type == LightType::Directional;
-    const bool aimed = light.spot || light.rectangle;
+    const bool aimed = light.spot || light.rectangle || light.profile;
     const std::string name = light.type == LightType::Sphere ? "a sphere light"
                              : directional                   ? "a directional light"
                              : light.spot                    ? "a spot light"
@@ -230,7 +230,8 @@ void checkUsed(const JsonValue& property, const AnimTrack& track, const SceneDes
       case AnimProperty::Direction:
         if (!directional && !aimed)
           unused(name +
-                 " (only \"spot\", \"rectangle\" and \"directional\" lights have a direction)");
+                 " (only \"spot\", \"rectangle\" and \"directional\" lights, and point lights "
+                 "with a \"profile\", have a direction)");
         if (light.lookAt) unused(name + " aimed with \"look_at\"");
         break;
       case AnimProperty::Angle:
