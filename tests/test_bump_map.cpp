@@ -62,6 +62,26 @@ TEST(BumpMap, HeightsThatRiseSteadilyShadeAPlaneAsTheRaisedSurfacesNormal) {
   test::expectUniformPlane(r, rho * irradiance * cosine / kPi, n, 1e-5);
 }
 
+// A map turned by 90 degrees reads heights f(s, t) at (s, t) = (sv v, -su u): dh/du = -su
+// height f_t and dh/dv = sv height f_s, so the ramp's slopes trade places on the plane.
+TEST(BumpMap, ATurnedMapTurnsItsSlopes) {
+  const fs::path dir = test::mapTestFolder("bump_map_turned");
+  test::writeMappedPlane(dir / "plane.obj");
+  writeRampMap(dir / "h.pfm", 0.1f, -0.05f);
+  const double height = 120, su = 3, sv = 3, rho = 0.6, irradiance = 2;
+  const test::RenderedWithNormals r = test::renderWithNormals(
+      test::planeUnderSun(R"({"type": "diffuse", "color": )" + num(rho) +
+                              R"(, "bump_map": {"texture": "h.pfm", "scale": [3, 3],
+                                                "rotation": 90, "height": 120}})",
+                          kSun, irradiance),
+      dir);
+  const double slopeU = -su * height * 4 * -0.05, slopeV = sv * height * 4 * 0.1;
+  const DVec3 n = unit(DVec3{-200 * slopeU, 40000, 200 * slopeV});
+  const double cosine = -dot(n, unit(kSun));
+  ASSERT_GT(cosine, 0.0);
+  test::expectUniformPlane(r, rho * irradiance * cosine / kPi, n, 1e-5);
+}
+
 // A sphere of radius R raised by heights h: its derivatives dp/du = 2 pi R (-d.z, 0, d.x) and
 // dp/dv = pi R (y - d.y d) / sin(theta) at the unit direction d of a point (u along the azimuth,
 // v towards +y), each raised by h's slope along d. Seen from -z (u near 0.5, away from the seam)
@@ -207,7 +227,7 @@ TEST(BumpMap, TheSceneFormatRefusesWhatItCannotBe) {
             "string \"1\"");
   EXPECT_EQ(error(R"({"type": "diffuse", "bump_map": {"texture": "h.pfm", "strength": 1}})"),
             "s.json: materials.m.bump_map.strength: unknown key, expected one of \"texture\", "
-            "\"scale\", \"offset\", \"height\"");
+            "\"scale\", \"offset\", \"rotation\", \"height\"");
   EXPECT_EQ(error(R"({"type": "diffuse", "bump_map": "h.pfm"})"),
             "s.json: materials.m.bump_map: expected a texture object {\"texture\": file, "
             "\"scale\": [su, sv], \"height\": h}, got a string \"h.pfm\"");

@@ -62,6 +62,36 @@ TEST(NormalMap, AConstantMapShadesAPlaneAsItsTiltedNormal) { expectTiltedPlane(f
 
 TEST(NormalMap, MirroredUvsMirrorTheMap) { expectTiltedPlane(true); }
 
+// A map turned or mirrored on the surface turns or mirrors its tangent frame with it: turned 90
+// degrees counter-clockwise, the image's x runs along +v (-z on the plane) and its y along -u;
+// mirrored by a scale of -1 in u, its x runs along -u.
+TEST(NormalMap, ATurnedOrMirroredMapTurnsItsFrame) {
+  const fs::path dir = test::mapTestFolder("normal_map_turned");
+  test::writeMappedPlane(dir / "plane.obj");
+  const DVec3 t = writeFlatMap(dir / "n.png", 200, 90, 230);
+  const double rho = 0.6, irradiance = 2;
+  const DVec3 sun{0.3, -1.0, 0.5};
+  const DVec3 u{1, 0, 0}, v{0, 0, -1}, up{0, 1, 0};
+  struct Case {
+    const char* transform;
+    DVec3 imageX, imageY;
+  };
+  for (const Case& c :
+       {Case{R"("rotation": 90)", v, -1.0 * u}, Case{R"("scale": [-1, 1])", -1.0 * u, v},
+        Case{R"("rotation": 180, "offset": [0.3, 0.2])", -1.0 * u, -1.0 * v}}) {
+    SCOPED_TRACE(c.transform);
+    const test::RenderedWithNormals r = test::renderWithNormals(
+        test::planeUnderSun(R"({"type": "diffuse", "color": )" + num(rho) +
+                                R"(, "normal_map": {"texture": "n.png", )" + c.transform + "}}",
+                            sun, irradiance),
+        dir);
+    const DVec3 n = unit(t.x * c.imageX + t.y * c.imageY + t.z * up);
+    const double cosine = dot(n, unit(-1.0 * sun));
+    ASSERT_GT(cosine, 0.0);
+    test::expectUniformPlane(r, rho * irradiance * cosine / kPi, n, 2e-6);
+  }
+}
+
 // Seen from low on the side its normals tilt away from, the mapped normal turns its back on the
 // camera and has its tilt mirrored (Mitsuba 3's flip_invalid_normals, whose renders of this scene
 // match candela's to float precision): every pixel is rho E max(0, n . l) / pi of the mirrored

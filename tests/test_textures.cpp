@@ -164,6 +164,16 @@ TEST_F(TextureLookup, OffsetAddsAfterTheScale) {
   expectNear(lookupTexture(pool, ref, 0.125f, 0.25f), Vec3(srgb(200), srgb(100), srgb(50)), 0.0f);
 }
 
+TEST_F(TextureLookup, RotationTurnsTheImageCounterClockwise) {
+  ref.rotationCos = 0.0f;  // 90 degrees
+  ref.rotationSin = 1.0f;
+  // Turned a quarter counter-clockwise, the image's top-right texel lies top-left, its top-left
+  // bottom-left: the lookup at (u, v) reads the image at (v, -u).
+  expectNear(lookupTexture(pool, ref, 0.25f, 0.75f), Vec3(srgb(200), srgb(100), srgb(50)), 0.0f);
+  expectNear(lookupTexture(pool, ref, 0.25f, 0.25f), Vec3(srgb(10), srgb(20), srgb(30)), 1.0f);
+  expectNear(lookupTexture(pool, ref, 0.75f, 0.25f), Vec3(0.0f), 1.0f);
+}
+
 TEST_F(TextureLookup, LinearAndFloatFormats) {
   texture.format = TextureFormat::Linear8;
   expectNear(lookupTexture(pool, ref, 0.25f, 0.75f), Vec3(10.0f, 20.0f, 30.0f) / 255.0f, 1.0f);
@@ -422,11 +432,11 @@ TEST(TextureErrors, JsonMessagesNameThePath) {
   EXPECT_EQ(loadError(scene(R"({"type": "emissive", "radiance": {"texture": "ok.png", "a": 1}})"),
                       dir.path()),
             "scene.json: spheres[0].material.radiance.a: unknown key, expected one of \"texture\", "
-            "\"scale\", \"offset\"");
+            "\"scale\", \"offset\", \"rotation\"");
   EXPECT_EQ(loadError(scene(R"({"type": "diffuse", "color": {"texture": "ok.png", "wrap": 1}})"),
                       dir.path()),
             "scene.json: spheres[0].material.color.wrap: unknown key, expected one of \"texture\", "
-            "\"scale\", \"offset\"");
+            "\"scale\", \"offset\", \"rotation\"");
 }
 
 TEST(TextureErrors, MtlMessagesNameFileAndLine) {

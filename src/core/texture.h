@@ -28,13 +28,34 @@ struct Texture {
   TextureFormat format = TextureFormat::Srgb8;
 };
 
-// A material's use of a texture: which one, how many times it repeats across uv's [0, 1), and
-// where it starts: the lookup reads the image at (u scaleU + offsetU, v scaleV + offsetV).
+// A material's use of a texture: which one, how many times it repeats across uv's [0, 1), how
+// far it is turned and where it starts (textureCoordinates).
 struct TextureRef {
   int32_t index = -1;  // into the scene's textures; -1: none
   float scaleU = 1, scaleV = 1;
   float offsetU = 0, offsetV = 0;
+  // The cosine and sine of the angle by which the image is turned counter-clockwise on the
+  // surface (u right, v up).
+  float rotationCos = 1, rotationSin = 0;
 };
+
+// The image coordinates that `ref` reads at texture coordinates (u, v): scaled, then turned by
+// the rotation (the point by its opposite, so that the image turns by it), then moved by the
+// offset.
+CANDELA_HDI void textureCoordinates(const TextureRef& ref, float u, float v, float* s, float* t) {
+  const float su = u * ref.scaleU, sv = v * ref.scaleV;
+  *s = ref.rotationCos * su + ref.rotationSin * sv + ref.offsetU;
+  *t = ref.rotationCos * sv - ref.rotationSin * su + ref.offsetV;
+}
+
+// The directions in (u, v) along which `ref`'s image coordinates s and t grow (the inverse of
+// textureCoordinates' linear part, up to positive factors): a normal map's tangent and bitangent.
+CANDELA_HDI void textureAxes(const TextureRef& ref, float* su, float* sv, float* tu, float* tv) {
+  *su = ref.rotationCos / ref.scaleU;
+  *sv = ref.rotationSin / ref.scaleV;
+  *tu = -ref.rotationSin / ref.scaleU;
+  *tv = ref.rotationCos / ref.scaleV;
+}
 
 // The scene's texture arrays, as the lookup reads them.
 struct TexturePool {
@@ -96,8 +117,10 @@ struct TexelQuad {
 
 CANDELA_HDI TexelQuad texelQuad(const Texture& t, const TextureRef& ref, float u, float v) {
   // Continuous texel coordinates with texel centres at integers, x right and y down.
-  const float x = wrapUnit(u * ref.scaleU + ref.offsetU) * float(t.width) - 0.5f;
-  const float y = (1.0f - wrapUnit(v * ref.scaleV + ref.offsetV)) * float(t.height) - 0.5f;
+  float s, tc;
+  textureCoordinates(ref, u, v, &s, &tc);
+  const float x = wrapUnit(s) * float(t.width) - 0.5f;
+  const float y = (1.0f - wrapUnit(tc)) * float(t.height) - 0.5f;
   const float x0f = floorf(x), y0f = floorf(y);
   // x0f and y0f lie in [-1, W - 1] and [-1, H - 1]: one wrap suffices.
   const int32_t w = int32_t(t.width), h = int32_t(t.height);
@@ -118,8 +141,7 @@ CANDELA_HDI float texelLuminance(const TexturePool& pool, const Texture& t, uint
 
 }  // namespace detail
 
-// The texture `ref` at (u, v), scaled by (scaleU, scaleV) and offset by (offsetU, offsetV) first:
-// bilinear, repeating.
+// The texture `ref` at texture coordinates (u, v) (textureCoordinates): bilinear, repeating.
 CANDELA_HDI TextureSample lookupTexture(const TexturePool& pool, const TextureRef& ref, float u,
                                         float v) {
   const Texture& t = pool.textures[ref.index];
@@ -145,9 +167,11 @@ CANDELA_HDI void textureLuminanceGradient(const TexturePool& pool, const Texture
   const float f11 = detail::texelLuminance(pool, t, q.x1, q.y1);
   const float ddx = (1.0f - q.fy) * (f10 - f00) + q.fy * (f11 - f01);
   const float ddy = (1.0f - q.fx) * (f01 - f00) + q.fx * (f11 - f10);
-  // x = u su W and y = (1 - v sv) H within a repeat.
-  *ddu = ddx * ref.scaleU * float(t.width);
-  *ddv = -ddy * ref.scaleV * float(t.height);
+  // x = s W and y = (1 - t) H within a repeat, (s, t) = R(-rotation) (u su, v sv) + offset: the
+  // gradient in (s, t), turned back by the rotation and scaled.
+  const float ds = ddx * float(t.width), dt = -ddy * float(t.height);
+  *ddu = (ref.rotationCos * ds - ref.rotationSin * dt) * ref.scaleU;
+  *ddv = (ref.rotationSin * ds + ref.rotationCos * dt) * ref.scaleV;
 }
 
 // sRGB's decoding curve (IEC 61966-2-1), for the host to fill TexturePool::srgbToLinear.

@@ -3,7 +3,8 @@
 // normal 2 c - 1 in the frame of the surface's tangent (along which u grows), bitangent (v) and
 // shading normal, the convention of glTF, Blender and MikkTSpace (OpenGL's: green is +v). The
 // tangent is made perpendicular to the shading normal and the bitangent completes the frame on the
-// side of v's growth, so a mesh whose uvs are mirrored reads its map mirrored too.
+// side of v's growth, so a mesh whose uvs are mirrored reads its map mirrored too (tangent and
+// bitangent follow the image's x and y where the texture is turned or mirrored by its scale).
 #pragma once
 
 #include <cmath>
@@ -35,11 +36,16 @@ CANDELA_HDI Vec3 bumpedNormal(const SceneView& scene, const Material& m, const S
 // has no frame there.
 CANDELA_HDI Vec3 normalFromMap(const SceneView& scene, const Material& m, const SurfacePoint& sp,
                                const Vec2& uv, const Vec3& dpdu, const Vec3& dpdv) {
-  const Vec3 along = dpdu - dot(dpdu, sp.ns) * sp.ns;
+  // The directions in which the image's x and y grow on the surface: along u and v unless the
+  // texture is turned or mirrored.
+  float su, sv, tu, tv;
+  textureAxes(m.normalMap, &su, &sv, &tu, &tv);
+  const Vec3 imageX = su * dpdu + sv * dpdv, imageY = tu * dpdu + tv * dpdv;
+  const Vec3 along = imageX - dot(imageX, sp.ns) * sp.ns;
   if (!(lengthSquared(along) > 0.0f)) return sp.ns;
   const Vec3 tangent = normalize(along);
   Vec3 bitangent = cross(sp.ns, tangent);
-  if (dot(bitangent, dpdv) < 0.0f) bitangent = -bitangent;
+  if (dot(bitangent, imageY) < 0.0f) bitangent = -bitangent;
   const Vec3 c = lookupTexture(scene.texturePool(), m.normalMap, uv.x, uv.y).rgb;
   return (2.0f * c.x - 1.0f) * tangent + (2.0f * c.y - 1.0f) * bitangent +
          (2.0f * c.z - 1.0f) * sp.ns;

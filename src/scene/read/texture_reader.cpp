@@ -1,6 +1,7 @@
 // Reading textures; see texture_reader.h.
 #include "scene/read/texture_reader.h"
 
+#include <cmath>
 #include <cstdint>
 #include <exception>
 #include <filesystem>
@@ -116,7 +117,7 @@ TextureLoader::LoadedProfile TextureLoader::loadProfile(const std::string& path,
 
 namespace {
 
-// The keys a texture object may have beside "texture", "scale" and "offset".
+// The keys a texture object may have beside "texture", "scale", "offset" and "rotation".
 enum TextureKeys : unsigned { kNoMoreKeys = 0, kHeightKey = 1, kChannelKey = 2 };
 
 // What a texture object gives: the texture, and the keys it was allowed to have.
@@ -127,11 +128,11 @@ struct TextureObject {
   bool hasAlpha = false;            // whether the image has an alpha channel
 };
 
-// A texture object {"texture": file, "scale": [su, sv], "offset": [ou, ov], ...}, its file read
-// for `use`, with the further keys that `keys` allows.
+// A texture object {"texture": file, "scale": [su, sv], "offset": [ou, ov], "rotation": degrees,
+// ...}, its file read for `use`, with the further keys that `keys` allows.
 TextureObject readTextureObject(const JsonValue& value, TextureLoader& textures, TextureUse use,
                                 const std::string& expected, unsigned keys = kNoMoreKeys) {
-  std::vector<std::string> known = {"texture", "scale", "offset"};
+  std::vector<std::string> known = {"texture", "scale", "offset", "rotation"};
   if (keys & kHeightKey) known.push_back("height");
   if (keys & kChannelKey) known.push_back("channel");
   JsonObject fields(value, std::move(known), expected);
@@ -156,6 +157,12 @@ TextureObject readTextureObject(const JsonValue& value, TextureLoader& textures,
     const std::vector<JsonValue> e = offset->elements();
     ref.offsetU = e[0].number("a finite number");
     ref.offsetV = e[1].number("a finite number");
+  }
+  if (std::optional<JsonValue> rotation = fields.get("rotation")) {
+    const double radians = std::fmod(double(rotation->number("an angle in degrees")), 360.0) *
+                           (3.14159265358979323846 / 180.0);
+    ref.rotationCos = float(std::cos(radians));
+    ref.rotationSin = float(std::sin(radians));
   }
   if (std::optional<JsonValue> given = fields.get("height")) {
     object.height = given->number("a finite, non-zero number");
