@@ -72,6 +72,9 @@ def colour(ctx, fields, default, path, key='color'):
     """The harness's colour, or a texture reference {'texture': absolute path, 'scale': [su, sv]}."""
     value = fields.get(key, default)
     if isinstance(value, dict):
+        for unmapped in ('offset', 'rotation'):
+            if unmapped in value:
+                ctx.err(f'{path}.{key}.{unmapped}', 'not mapped to Mitsuba by this tool')
         name = value['texture']
         if not os.path.isabs(name):
             name = os.path.join(os.path.dirname(os.path.abspath(ctx.fname)), name)
