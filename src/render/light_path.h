@@ -213,7 +213,8 @@ CANDELA_HDI void traceLightVertex(const SceneView& scene, const Tracer& tracer, 
     if (hasCone(light.spot))
       lv->power *= coneFalloff(light.spot, ray.direction) * 0.5f * coneOneMinusCos(light.spot);
     // A profile's directions are drawn uniformly (within the cone) and weighted by it.
-    lv->power *= profileFactor(scene.texturePool(), light.profile, ray.direction);
+    if (light.profile.texture >= 0)
+      lv->power *= profileLookup(scene.texturePool(), light.profile, ray.direction);
     lv->pdfArea = lightVertexPdf(scene, index, sp.p, sp.ng);
   } else {
     // The subpath's density: pick / area at L, cos_L / pi towards the vertex, carried to its

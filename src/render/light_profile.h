@@ -35,10 +35,9 @@ struct LightProfile {
   float cosFirst = 1.0f, cosLast = -1.0f;
 };
 
-// The profile's relative intensity towards unit direction d (from the light), mean 1 over all
-// directions; 1 without a profile.
-CANDELA_HDI float profileFactor(const TexturePool& pool, const LightProfile& p, const Vec3& d) {
-  if (p.texture < 0) return 1.0f;
+// profileFactor of a light that has a profile. Out of line: most lights have none.
+CANDELA_HD_NOINLINE inline float profileLookup(const TexturePool& pool, const LightProfile& p,
+                                               const Vec3& d) {
   const Texture& t = pool.textures[p.texture];
   const float* texels = pool.texelsF + t.offset;
   const float cosTheta = fminf(fmaxf(dot(d, p.axis), -1.0f), 1.0f);
@@ -61,6 +60,12 @@ CANDELA_HDI float profileFactor(const TexturePool& pool, const LightProfile& p, 
   const float top = row0[4 * x0] + fx * (row0[4 * x1] - row0[4 * x0]);
   const float bottom = row1[4 * x0] + fx * (row1[4 * x1] - row1[4 * x0]);
   return (top + fy * (bottom - top)) * p.scale;
+}
+
+// The profile's relative intensity towards unit direction d (from the light), mean 1 over all
+// directions; 1 without a profile.
+CANDELA_HDI float profileFactor(const TexturePool& pool, const LightProfile& p, const Vec3& d) {
+  return p.texture < 0 ? 1.0f : profileLookup(pool, p, d);
 }
 
 }  // namespace candela
