@@ -458,6 +458,9 @@ TEST(TextureErrors, MtlMessagesNameFileAndLine) {
   EXPECT_EQ(missing.rfind("meshes/m.mtl:3: cannot read the texture: ", 0), 0u) << missing;
   EXPECT_NE(missing.find("mask.png"), std::string::npos) << missing;
   EXPECT_EQ(error("newmtl a\nd 1.5\n"), "meshes/m.mtl:2: expected d between 0 and 1, got \"1.5\"");
+  EXPECT_EQ(error("newmtl a\nmap_Kd -o a.png\n"), "meshes/m.mtl:2: map_Kd -o: expected an offset");
+  EXPECT_EQ(error("newmtl a\nmap_Kd -o inf a.png\n"),
+            "meshes/m.mtl:2: map_Kd -o: expected finite offsets, got \"inf\"");
   EXPECT_EQ(error("newmtl a\n\nTr x\n"), "meshes/m.mtl:3: expected Tr between 0 and 1, got \"x\"");
   EXPECT_EQ(error("newmtl a\nmap_Kd -clamp on a.png\n"),
             "meshes/m.mtl:2: map_Kd option \"-clamp\" is not supported (only -s and -o)");
@@ -466,13 +469,15 @@ TEST(TextureErrors, MtlMessagesNameFileAndLine) {
   EXPECT_EQ(unreadable.rfind("meshes/m.mtl:2: cannot read the texture: ", 0), 0u) << unreadable;
 }
 
-TEST(TextureLoading, EachFileOnceWithScaleFromMtl) {
+// Each file is read once per use; -s scales (v as u where only u is given) and -o offsets (v 0
+// where only u is given; w not used).
+TEST(TextureLoading, EachFileOnceWithScaleAndOffsetFromMtl) {
   test::TempDir dir;
   ASSERT_TRUE(test::writeTestPng(dir.file("t.png"), 1, 1, 4, {1, 2, 3, 4}));
   ASSERT_TRUE(test::writeTestPng(dir.file("g.png"), 1, 1, 1, {7}));
   dir.write("m.mtl",
-            "newmtl a\nmap_Kd -s 2 3 1 t.png\nmap_d t.png\nnewmtl b\nKd 0.5 0.5 0.5\n"
-            "map_Kd ./t.png\nTr 0.25\nmap_d g.png\n");
+            "newmtl a\nmap_Kd -s 2 3 1 -o 0.25 0.5 1 t.png\nmap_d t.png\nnewmtl b\n"
+            "Kd 0.5 0.5 0.5\nmap_Kd -o 0.75 ./t.png\nTr 0.25\nmap_d g.png\n");
   const std::string obj = dir.write(
       "m.obj", "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl a\nf 1 2 3\nusemtl b\nf 1 3 2\n");
   SceneDesc desc;
@@ -487,6 +492,11 @@ TEST(TextureLoading, EachFileOnceWithScaleFromMtl) {
   EXPECT_EQ(desc.textures[size_t(a.colorTexture.index)]->format, TextureFormat::Srgb8);
   EXPECT_EQ(a.colorTexture.scaleU, 2.0f);
   EXPECT_EQ(a.colorTexture.scaleV, 3.0f);
+  EXPECT_EQ(a.colorTexture.offsetU, 0.25f);
+  EXPECT_EQ(a.colorTexture.offsetV, 0.5f);
+  EXPECT_EQ(b.colorTexture.scaleU, 1.0f);
+  EXPECT_EQ(b.colorTexture.offsetU, 0.75f);
+  EXPECT_EQ(b.colorTexture.offsetV, 0.0f);
   EXPECT_EQ(a.color.x, 1.0f);  // no Kd: the texture alone
   EXPECT_EQ(b.color.x, 0.5f);  // Kd tints the texture
   EXPECT_EQ(a.alpha.channel, 3u);  // t.png has an alpha channel
@@ -495,9 +505,8 @@ TEST(TextureLoading, EachFileOnceWithScaleFromMtl) {
   EXPECT_FLOAT_EQ(b.alpha.constant, 0.75f);
 }
 
-// JSON's "offset" and MTL's -o (u, then v, default 0; w not used) shift where the image starts,
-// after the scale; anything but finite numbers is refused.
-TEST(TextureLoading, OffsetsFromJsonAndMtl) {
+// JSON's "offset" shifts where the image starts, after the scale (MTL's -o: above).
+TEST(TextureLoading, OffsetsFromJson) {
   test::TempDir dir;
   ASSERT_TRUE(test::writeTestPng(dir.file("t.png"), 1, 1, 3, {1, 2, 3}));
   const SceneData data = test::loadTestScene(R"({"camera": {}, "spheres": [{"position": [0, 0, 0],
@@ -511,35 +520,6 @@ TEST(TextureLoading, OffsetsFromJsonAndMtl) {
                       dir.path()),
             "scene.json: spheres[0].material.color.offset: expected an array of 2 finite numbers, "
             "got an array [1]");
-
-  dir.write("m.mtl",
-            "newmtl a\nmap_Kd -s 2 2 -o 0.25 0.5 1 t.png\nnewmtl b\nmap_Kd -o 0.75 t.png\n");
-  const std::string obj = dir.write(
-      "m.obj", "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl a\nf 1 2 3\nusemtl b\nf 1 3 2\n");
-  SceneDesc desc;
-  TextureLoader loader(desc.textures, dir.path());
-  const MeshDesc mesh = loadObjFile(obj, "m.obj", loader);
-  ASSERT_EQ(mesh.materials.size(), 2u);
-  const TextureRef& a = mesh.materials[0].colorTexture;
-  EXPECT_EQ(a.scaleU, 2.0f);
-  EXPECT_EQ(a.offsetU, 0.25f);
-  EXPECT_EQ(a.offsetV, 0.5f);
-  const TextureRef& b = mesh.materials[1].colorTexture;
-  EXPECT_EQ(b.scaleU, 1.0f);
-  EXPECT_EQ(b.offsetU, 0.75f);
-  EXPECT_EQ(b.offsetV, 0.0f);
-  const auto error = [&](const std::string& mtl) -> std::string {
-    dir.write("m.mtl", mtl);
-    try {
-      loadObjFile(obj, "m.obj", loader);
-    } catch (const SceneError& e) {
-      return e.what();
-    }
-    return "(no SceneError)";
-  };
-  EXPECT_EQ(error("newmtl a\nmap_Kd -o t.png\n"), "m.mtl:2: map_Kd -o: expected an offset");
-  EXPECT_EQ(error("newmtl a\nmap_Kd -o inf t.png\n"),
-            "m.mtl:2: map_Kd -o: expected finite offsets, got \"inf\"");
 }
 
 TEST(TextureLoading, SixteenBitPngKeepsItsPrecision) {
