@@ -2,8 +2,11 @@
 #include "fuzz_scene.h"
 
 #include <tbb/global_control.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <cstdio>
+#include <cstdlib>
 #include <memory>
 
 #include "geometry/bvh_tracer.h"
@@ -28,7 +31,32 @@ void traceSomePixels(SceneData& scene) {
     renderPixelSamples(view, BvhTracer{&view}, p[0], p[1], 0, 1, counters);
 }
 
+// makeInputFolder's folder and files, removed at exit.
+std::string inputFolder;
+std::vector<std::string> inputNames;
+
+void removeInputFolder() {
+  for (const std::string& name : inputNames) std::remove((inputFolder + "/" + name).c_str());
+  rmdir(inputFolder.c_str());
+}
+
 }  // namespace
+
+std::string makeInputFolder(const std::string& target, const std::vector<std::string>& names) {
+  std::string pattern = "/tmp/candela-" + target + "-fuzz-XXXXXX";
+  if (!mkdtemp(pattern.data())) std::abort();
+  inputFolder = pattern;
+  inputNames = names;
+  std::atexit(removeInputFolder);
+  return inputFolder;
+}
+
+void writeInput(const std::string& path, const void* data, size_t size) {
+  std::FILE* file = std::fopen(path.c_str(), "wb");
+  if (!file) std::abort();
+  std::fwrite(data, 1, size, file);
+  std::fclose(file);
+}
 
 void limitToOneThread() {
   static const auto control =

@@ -1,12 +1,7 @@
-// libFuzzer target: the input is a IES file, the profile of a spot light in a fixed small scene.
+// libFuzzer target: the input is an IES file, the profile of a spot light in a fixed small scene.
 // See docs/fuzzing.md.
-#include <stdlib.h>
-#include <unistd.h>
-
 #include <cstddef>
 #include <cstdint>
-#include <cstdio>
-#include <cstdlib>
 #include <string>
 
 #include "fuzz_scene.h"
@@ -20,29 +15,18 @@ const char* const kScene = R"({
               "cutoff_angle": 170, "profile": "m.ies", "up": [1, 0, 0]}]
 })";
 
-std::string folder;  // this process's own, so that parallel jobs never share files
-
-void removeFolder() {
-  std::remove((folder + "/m.ies").c_str());
-  rmdir(folder.c_str());
-}
+std::string folder;  // makeInputFolder's
 
 }  // namespace
 
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
   candela::fuzz::limitToOneThread();
-  char pattern[] = "/tmp/candela-ies-fuzz-XXXXXX";
-  if (!mkdtemp(pattern)) std::abort();
-  folder = pattern;
-  std::atexit(removeFolder);
+  folder = candela::fuzz::makeInputFolder("ies", {"m.ies"});
   return 0;
 }
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  std::FILE* file = std::fopen((folder + "/m.ies").c_str(), "wb");
-  if (!file) std::abort();
-  std::fwrite(data, 1, size, file);
-  std::fclose(file);
+  candela::fuzz::writeInput(folder + "/m.ies", data, size);
   candela::fuzz::loadAndTrace(kScene, folder);
   return 0;
 }

@@ -1,11 +1,6 @@
 // libFuzzer target: the input is a PLY file, rendered by a fixed small scene. See docs/fuzzing.md.
-#include <stdlib.h>
-#include <unistd.h>
-
 #include <cstddef>
 #include <cstdint>
-#include <cstdio>
-#include <cstdlib>
 #include <string>
 
 #include "fuzz_scene.h"
@@ -18,29 +13,18 @@ const char* const kScene = R"({
   "objects": [{"file": "m.ply", "rotation": [10, 20, 30], "smooth": 60}]
 })";
 
-std::string folder;  // this process's own, so that parallel jobs never share files
-
-void removeFolder() {
-  std::remove((folder + "/m.ply").c_str());
-  rmdir(folder.c_str());
-}
+std::string folder;  // makeInputFolder's
 
 }  // namespace
 
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
   candela::fuzz::limitToOneThread();
-  char pattern[] = "/tmp/candela-ply-fuzz-XXXXXX";
-  if (!mkdtemp(pattern)) std::abort();
-  folder = pattern;
-  std::atexit(removeFolder);
+  folder = candela::fuzz::makeInputFolder("ply", {"m.ply"});
   return 0;
 }
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  std::FILE* file = std::fopen((folder + "/m.ply").c_str(), "wb");
-  if (!file) std::abort();
-  std::fwrite(data, 1, size, file);
-  std::fclose(file);
+  candela::fuzz::writeInput(folder + "/m.ply", data, size);
   candela::fuzz::loadAndTrace(kScene, folder);
   return 0;
 }
