@@ -102,20 +102,16 @@ IesProfile readIesProfile(const std::string& path, const std::string& label) {
     size_t end = text.find('\n', at);
     if (end == std::string::npos) end = text.size();
     std::string header = text.substr(at, end - at);
-    if (!header.empty() && header.back() == '\r') header.pop_back();
+    header.erase(header.find_last_not_of(" \t\r") + 1);  // CRLF files, trailing blanks
     at = std::min(end + 1, text.size());
-    if (header.rfind("TILT=", 0) == 0) {
-      const std::string value = header.substr(5);
-      if (value != "NONE" && value != "NONE ")
-        throw SceneError(label + ":" + std::to_string(line) +
-                         ": expected TILT=NONE (a lamp whose output does not change with its "
-                         "tilt), got \"" +
-                         header + "\"");
-      tilt = true;
-      ++line;
-      break;
-    }
+    tilt = header.rfind("TILT=", 0) == 0;
+    if (tilt && header != "TILT=NONE")
+      throw SceneError(label + ":" + std::to_string(line) +
+                       ": expected TILT=NONE (a lamp whose output does not change with its "
+                       "tilt), got \"" +
+                       header + "\"");
     ++line;
+    if (tilt) break;
   }
   if (!tilt) throw SceneError(label + ": no TILT line; expected an IES (LM-63) photometric file");
   Numbers in(text, at, line, label);
