@@ -30,7 +30,7 @@ RenderOptions seenOnlyRender(const RenderOptions& options, PixelWindow window, u
 
 uint32_t seenEmitterSamples(const SceneData& scene) {
   const bool emitters = std::any_of(scene.materials.begin(), scene.materials.end(),
-                                    [](const Material& m) { return isEmissive(m); });
+                                    [](const Material& m) { return hasEmission(m); });
   const bool spread = scene.settings.antialiasing || scene.camera.apertureRadius > 0.0f;
   const uint64_t spp = scene.settings.spp;
   const uint32_t samples =

@@ -102,9 +102,10 @@ CANDELA_HDI bool usesLobeChoice(const Material& m) {
          (m.type == MaterialType::Glass && !isSmooth(m));
 }
 
+// Whether m emits and reflects nothing (a path that meets it ends there).
 CANDELA_HDI bool isEmissive(const Material& m) { return m.type == MaterialType::Emissive; }
 
-// Whether emissive material m, on a surface of geometric normal ng, sends light towards wo: from
+// Whether emitting material m, on a surface of geometric normal ng, sends light towards wo: from
 // its outside, or from either side where it is two-sided.
 CANDELA_HDI bool emitsTowards(const Material& m, const Vec3& wo, const Vec3& ng) {
   const float side = dot(wo, ng);

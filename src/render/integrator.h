@@ -244,7 +244,9 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
   }
   SurfacePoint sp = surfaceAt(scene, st.ray, hit);
   CANDELA_DCHECK(sp.material < scene.materialCount);
-  // sp.material stays the surface's (the material pass shows a mix as itself).
+  // sp.material stays the surface's (the material pass shows a mix as itself), and so does what
+  // it emits: a mix's emission is its own, whichever part the path meets.
+  const Material& surface = scene.materials[sp.material];
   const Material& m = scene.materials[materialMet(scene, sp.material, hit, sp, rng)];
   if (fromCamera && m.hiddenFromCamera) {  // the camera ray goes on as if it were not there
     st.depth = depth;
@@ -271,30 +273,27 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
     }
   }
 
-  if (isEmissive(m)) {
-    if (emitsTowards(m, wo, sp.ng)) {
-      float weight = 1.0f;
-      const int32_t light = st.specularBounce ? -1 : lightOfPrimitive(scene, hit.prim);
-      if (light >= 0) {
-        const float selectPmf =
-            lightSelectPmf(scene, uint32_t(light), st.bouncePoint, st.bounceHemisphere);
-        const float neePdf = selectPmf * emitterPdf(scene, scene.lights[light], st.bouncePoint,
-                                                    st.ray.direction, hit.t, sp.ng);
-        const float subpathPdf =
-            lightSubpathSolidAnglePdf(scene, uint32_t(light), st.bounceNormal, st.ray.direction,
-                                      st.bounceArrivalPdf);
-        weight = misWeight3(st.bsdfPdf, neePdf, subpathPdf,
-                            connectsLightSubpaths(scene, scene.lights[light]));
-      }
-      const Vec3 seen = st.throughput * surfaceRadiance(scene, m, hit, sp) * weight;
-      if constexpr (kAovs) {
-        if (depth <= 2) first->direct += seen;
-        if (depth == 1) first->emission = seen;
-      }
-      st.radiance += seen;
+  if (hasEmission(surface) && emitsTowards(surface, wo, sp.ng)) {
+    float weight = 1.0f;
+    const int32_t light = st.specularBounce ? -1 : lightOfPrimitive(scene, hit.prim);
+    if (light >= 0) {
+      const float selectPmf =
+          lightSelectPmf(scene, uint32_t(light), st.bouncePoint, st.bounceHemisphere);
+      const float neePdf = selectPmf * emitterPdf(scene, scene.lights[light], st.bouncePoint,
+                                                  st.ray.direction, hit.t, sp.ng);
+      const float subpathPdf = lightSubpathSolidAnglePdf(scene, uint32_t(light), st.bounceNormal,
+                                                         st.ray.direction, st.bounceArrivalPdf);
+      weight = misWeight3(st.bsdfPdf, neePdf, subpathPdf,
+                          connectsLightSubpaths(scene, scene.lights[light]));
     }
-    return false;
+    const Vec3 seen = st.throughput * surfaceRadiance(scene, surface, hit, sp) * weight;
+    if constexpr (kAovs) {
+      if (depth <= 2) first->direct += seen;
+      if (depth == 1) first->emission = seen;
+    }
+    st.radiance += seen;
   }
+  if (isEmissive(m)) return false;
   if (depth > st.maxDepth) {
     if constexpr (kAovs)
       if (albedoHere) first->albedo = aovAlbedo(m, surfaceColor(scene, m, hit, sp));

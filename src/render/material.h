@@ -7,6 +7,7 @@
 
 #include <cstdint>
 
+#include "core/device.h"
 #include "core/texture.h"
 #include "core/vec3.h"
 #include "geometry/alpha_mask.h"
@@ -60,11 +61,13 @@ struct Material {
   uint32_t roughnessChannel = kLuminanceChannel;
   bool metal = false;      // conductor: Fresnel of the complex index metalEta + i metalK
   Vec3 metalEta{0.0f}, metalK{0.0f};
-  Vec3 radiance{0.0f};  // emissive: emitted radiance from the front side
+  // Radiance emitted from the front side: an emissive material's, or the "emission" of one that
+  // reflects too (never a mix's part: a mix's own is its surface's, render/integrator.h).
+  Vec3 radiance{0.0f};
   bool twoSided = false;       // emissive: emits `radiance` from its back as well (mesh faces only)
   bool hiddenFromCamera = false;  // emissive: camera rays pass it by (a light's "visible": false)
   TextureRef colorTexture;     // a texture that `color` tints (render/surface_color.h)
-  TextureRef emissionTexture;  // emissive: a texture that `radiance` tints (MTL map_Ke)
+  TextureRef emissionTexture;  // a texture that `radiance` tints (MTL map_Ke)
   TextureRef normalMap;        // tangent-space normals that tilt the shading normal, or heights
   float bumpHeight = 0.0f;     // != 0: normalMap is a bump map, heights this many units a unit
   AlphaMask alpha;          // how much of the surface is there (geometry/alpha_mask.h)
@@ -84,5 +87,9 @@ struct Material {
   // when the scene is flattened; -1: none).
   int32_t plasticCoatTable = -1;
 };
+
+// Whether a surface of material m emits light: an emissive material, or one that reflects and
+// emits as well (its "emission"). What emits is a light (scene/flatten_lights.cpp).
+CANDELA_HDI bool hasEmission(const Material& m) { return !isBlack(m.radiance); }
 
 }  // namespace candela

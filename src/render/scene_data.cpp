@@ -28,7 +28,7 @@ SceneView SceneData::view() const {
   v.sunDiscs = sunDiscs;
   v.environment = environment;
   v.emissionReachable = !isBlack(environment.radiance) || sunDiscs;
-  for (const Material& m : materials) v.emissionReachable |= m.type == MaterialType::Emissive;
+  for (const Material& m : materials) v.emissionReachable |= hasEmission(m);
   v.camera = camera;
   v.settings = settings;
   v.flow = flow;

@@ -75,7 +75,7 @@ LightBounds lightBounds(const SceneData& s, const Light& l) {
   return b;
 }
 
-bool emits(const Material& m) { return m.type == MaterialType::Emissive && !isBlack(m.radiance); }
+bool emits(const Material& m) { return hasEmission(m); }
 
 // A hash of the lights' bounds, field by field (LightBounds has padding): equal hashes give equal
 // trees, the build being a function of the bounds alone.

@@ -35,23 +35,37 @@ enum TypeIndex : size_t {
 };
 
 // Every field a material may have, and which of them each type reads.
-const std::vector<std::string> kFields = {
-    "color",    "ior",        "roughness",           "metal",
-    "radiance", "strength",   "two_sided",           "normal_map",
-    "bump_map", "alpha",      "transmission_depth",  "abbe",
-    "visible",  "anisotropy", "anisotropy_rotation", "materials",
-    "weight"};
+const std::vector<std::string> kFields = {"color",
+                                          "ior",
+                                          "roughness",
+                                          "metal",
+                                          "radiance",
+                                          "strength",
+                                          "two_sided",
+                                          "normal_map",
+                                          "bump_map",
+                                          "alpha",
+                                          "emission",
+                                          "emission_strength",
+                                          "transmission_depth",
+                                          "abbe",
+                                          "visible",
+                                          "anisotropy",
+                                          "anisotropy_rotation",
+                                          "materials",
+                                          "weight"};
 const std::vector<std::vector<std::string>> kFieldsOf = {
-    {"color", "normal_map", "bump_map", "alpha"},  // diffuse
-    {"color", "normal_map", "bump_map", "alpha"},  // mirror
+    {"color", "normal_map", "bump_map", "alpha", "emission", "emission_strength"},  // diffuse
+    {"color", "normal_map", "bump_map", "alpha", "emission", "emission_strength"},  // mirror
     {"color", "ior", "roughness", "anisotropy", "anisotropy_rotation", "normal_map", "bump_map",
-     "alpha", "transmission_depth", "abbe"},           // glass
-    {"radiance", "strength", "two_sided", "visible"},  // emissive
+     "alpha", "emission", "emission_strength", "transmission_depth", "abbe"},  // glass
+    {"radiance", "strength", "two_sided", "visible"},                          // emissive
     {"color", "roughness", "anisotropy", "anisotropy_rotation", "metal", "normal_map", "bump_map",
-     "alpha"},                                                         // conductor
-    {"color", "ior", "roughness", "normal_map", "bump_map", "alpha"},  // plastic
-    {"ior"},                                                           // thin_glass
-    {"materials", "weight", "alpha"},                                  // mix
+     "alpha", "emission", "emission_strength"},  // conductor
+    {"color", "ior", "roughness", "normal_map", "bump_map", "alpha", "emission",
+     "emission_strength"},                                              // plastic
+    {"ior"},                                                            // thin_glass
+    {"materials", "weight", "alpha", "emission", "emission_strength"},  // mix
 };
 
 // The material a mix names for a part: one of the library's, or a shorthand type's defaults.
@@ -89,31 +103,54 @@ void readAnisotropy(JsonObject& fields, Material* material) {
   }
 }
 
-// An emissive material's "radiance" (a colour, or a texture: material->emissionTexture) times its
-// "strength", and "two_sided".
-void readEmission(JsonObject& fields, TextureLoader& textures, Material* material) {
-  material->type = MaterialType::Emissive;
-  material->radiance =
-      readTexturedColour(fields.require("radiance"), textures, &material->emissionTexture);
-  if (std::optional<JsonValue> strength = fields.get("strength")) {
+// `radiance` (a colour, or a texture: material->emissionTexture) times the field `strengthKey`
+// (default 1) into material->radiance.
+void readRadiance(JsonObject& fields, const JsonValue& radiance, const std::string& strengthKey,
+                  TextureLoader& textures, Material* material) {
+  material->radiance = readTexturedColour(radiance, textures, &material->emissionTexture);
+  if (std::optional<JsonValue> strength = fields.get(strengthKey)) {
     const float k = strength->nonNegativeNumber();
     const Vec3 scaled = material->radiance * k;
     if (!isFinite(scaled))
-      strength->fail("the radiance " + formatVec3(material->radiance) + " times strength " +
-                     formatNumber(k) + " is beyond single precision; expected a smaller strength");
+      strength->fail("the radiance " + formatVec3(material->radiance) + " times " + strengthKey +
+                     " " + formatNumber(k) + " is beyond single precision; expected a smaller " +
+                     strengthKey);
     if (material->emissionTexture.index >= 0) {  // its tint is 1: the texels times k
       const std::string beyond =
           firstTexelBeyondFloat(textures.texture(material->emissionTexture.index), scaled);
       if (!beyond.empty())
-        strength->fail("the radiance texture's " + beyond + " times strength " + formatNumber(k) +
-                       " is beyond single precision; expected a smaller strength");
+        strength->fail("the radiance texture's " + beyond + " times " + strengthKey + " " +
+                       formatNumber(k) + " is beyond single precision; expected a smaller " +
+                       strengthKey);
     }
     material->radiance = scaled;
   }
+}
+
+// An emissive material's "radiance" times its "strength", "two_sided" and "visible".
+void readEmissive(JsonObject& fields, TextureLoader& textures, Material* material) {
+  material->type = MaterialType::Emissive;
+  readRadiance(fields, fields.require("radiance"), "strength", textures, material);
   if (std::optional<JsonValue> twoSided = fields.get("two_sided"))
     material->twoSided = twoSided->boolean();
   if (std::optional<JsonValue> visible = fields.get("visible"))
     material->hiddenFromCamera = !visible->boolean();
+}
+
+// The "emission" of a material that reflects (or transmits) as well, times its
+// "emission_strength": it emits as an emissive material of that radiance would, from its front
+// side, and is a light. An emitting surface is sampled over all its area, so it has no alpha.
+void readSurfaceEmission(JsonObject& fields, TextureLoader& textures, Material* material) {
+  const std::optional<JsonValue> emission = fields.get("emission");
+  if (!emission) {
+    fields.reject("emission_strength", "not used without an \"emission\" beside it");
+    return;
+  }
+  readRadiance(fields, *emission, "emission_strength", textures, material);
+  if (isMasked(material->alpha) && hasEmission(*material))
+    emission->fail(
+        "makes a light of a surface with an \"alpha\", which lights sample over all their "
+        "area; expected no \"alpha\" on an emitting material");
 }
 
 // Glass's "transmission_depth" d: its `color` c is then what white light keeps of each channel
@@ -169,6 +206,10 @@ void checkMixPart(const JsonValue& where, const Material& part) {
     where.fail(
         "an emissive material in a mix; expected a material that reflects or transmits (an "
         "emitting surface is an \"emissive\" material of its own)");
+  if (hasEmission(part))
+    where.fail(
+        "a material with an \"emission\" in a mix; expected the \"emission\" on the mix, "
+        "which emits from the whole surface");
   if (part.alpha.thinSheetIor > 0.0f)
     where.fail("a \"thin_glass\" material in a mix; expected it on a surface of its own");
   if (isMasked(part.alpha))
@@ -220,6 +261,7 @@ MaterialRead readMix(JsonObject& fields, TextureLoader& textures, const NamedMat
   }
   if (std::optional<JsonValue> alpha = fields.get("alpha"))
     mix.material.alpha = readAlpha(*alpha, textures);
+  readSurfaceEmission(fields, textures, &mix.material);
   return mix;
 }
 
@@ -235,7 +277,7 @@ MaterialRead readFields(JsonObject& fields, size_t type, TextureLoader& textures
   if (type == kMix) return readMix(fields, textures, named);
   Material material;
   if (type == kEmissive) {
-    readEmission(fields, textures, &material);
+    readEmissive(fields, textures, &material);
     return {material, {}};
   }
   const float defaultColor[] = {0.8f, 1.0f, 1.0f, 0.0f, 1.0f, 0.5f, 1.0f, 0.0f};
@@ -287,6 +329,7 @@ MaterialRead readFields(JsonObject& fields, size_t type, TextureLoader& textures
       material.alpha.thinSheetIor = material.ior;
       break;
   }
+  if (type != kThinGlass) readSurfaceEmission(fields, textures, &material);
   prepareMaterial(&material);
   return {material, {}};
 }

@@ -231,14 +231,31 @@ void applyMetalness(const MtlTextures& s, const tinyobj::material_t& material,
   *desc = mix;
 }
 
+// Ke (times map_Ke) as the emission of `desc`, a material that reflects too (a mix's own where
+// Pm made one). An emitting surface is sampled over all its area, so its alpha (set by one of
+// s's statements) is not used.
+void addMtlEmission(const MtlTextures* s, const Vec3& emission, const TextureRef& texture,
+                    Material* desc, std::vector<std::string>* warnings) {
+  desc->radiance = emission;
+  desc->emissionTexture = texture;
+  if (isMasked(desc->alpha)) {
+    const MtlStatement& alpha = s->mapD ? *s->mapD : s->d ? *s->d : *s->tr;
+    warnings->push_back(alpha.file + ":" + std::to_string(alpha.line) +
+                        ": the alpha is not used: the material emits (Ke), and an emitting "
+                        "surface is a light over all its area");
+  }
+  desc->alpha = AlphaMask();
+}
+
 // One material per MTL material (docs/scene-format.md, MTL materials): emissive with radiance Ke
-// (times map_Ke, Ke 1 where only map_Ke is given) where either is set; else with a Ks that is not
-// black a plastic (colour Kd or map_Kd, index Ni) or, without a diffuse colour, a conductor of
-// reflectance Ks, rough as Ns says; else diffuse with colour Kd (0.8 where the material sets none),
-// times map_Kd when it has one. A glossy material's roughness is Pr where given, or a texture of
-// them (map_Pr). Alpha is d (or 1 - Tr; d wins when both are given) times map_d's
-// alpha channel (or, for an image without one, its first channel). `norm` is a normal map, and
-// where there is none `bump` (or `map_Bump`) a bump map of heights, -bm its height.
+// (times map_Ke, Ke 1 where only map_Ke is given) where either is set and neither a Kd that is
+// not black, nor map_Kd, nor Ks is (with one, as below and with that emission); else with a Ks that
+// is not black a plastic (colour Kd or map_Kd, index Ni) or, without a diffuse colour, a conductor
+// of reflectance Ks, rough as Ns says; else diffuse with colour Kd (0.8 where the material sets
+// none), times map_Kd when it has one. A glossy material's roughness is Pr where given, or a
+// texture of them (map_Pr). Alpha is d (or 1 - Tr; d wins when both are given) times map_d's alpha
+// channel (or, for an image without one, its first channel). `norm` is a normal map, and where
+// there is none `bump` (or `map_Bump`) a bump map of heights, -bm its height.
 std::vector<Material> mtlMaterials(const std::vector<tinyobj::material_t>& materials,
                                    const MtlLibrary& library, const std::string& label,
                                    TextureLoader& textures, std::vector<Material>* mixParts,
@@ -253,22 +270,29 @@ std::vector<Material> mtlMaterials(const std::vector<tinyobj::material_t>& mater
     const bool hasKd = library.kdNames.count(material.name) != 0;
     if (hasKd) desc.color = mtlColour(material.diffuse, "Kd", material.name, label);
     Vec3 emission = mtlColour(material.emission, "Ke", material.name, label);
+    TextureRef emissionTexture;
     const auto found = library.statements.find(material.name);
     if (found != library.statements.end() && found->second.mapKe) {
-      desc.emissionTexture =
+      emissionTexture =
           mtlTexture(*found->second.mapKe, "map_Ke", TextureUse::Color, textures, nullptr);
       if (isBlack(emission)) emission = Vec3(1.0f);  // map_Ke alone: the texture is the radiance
       const std::string beyond =
-          firstTexelBeyondFloat(textures.texture(desc.emissionTexture.index), emission);
+          firstTexelBeyondFloat(textures.texture(emissionTexture.index), emission);
       if (!beyond.empty())
         failAt(*found->second.mapKe, "map_Ke: the texture's " + beyond + " times Ke " +
                                          formatVec3(emission) +
                                          " is beyond single precision; expected a smaller Ke");
     }
-    if (!isBlack(emission)) {
+    const Vec3 specular = mtlColour(material.specular, "Ks", material.name, label);
+    // An emitter that also sets how it reflects (Blender writes Kd, Ks and Ke for a material with
+    // an emission) reflects as it says and emits; one with Ke alone only emits.
+    const bool reflects = (hasKd && !isBlack(desc.color)) || !isBlack(specular) ||
+                          (found != library.statements.end() && found->second.mapKd);
+    if (!isBlack(emission) && !reflects) {
       desc.type = MaterialType::Emissive;
       desc.color = Vec3(0.0f);
       desc.radiance = emission;
+      desc.emissionTexture = emissionTexture;
     }
     if (found != library.statements.end() && desc.type == MaterialType::Diffuse) {
       const MtlTextures& s = found->second;
@@ -304,7 +328,6 @@ std::vector<Material> mtlMaterials(const std::vector<tinyobj::material_t>& mater
         }
       }
     }
-    const Vec3 specular = mtlColour(material.specular, "Ks", material.name, label);
     if (desc.type == MaterialType::Diffuse && !isBlack(specular)) {
       desc.roughness = mtlPhongRoughness(material, label);
       if (found != library.statements.end()) {
@@ -338,6 +361,9 @@ std::vector<Material> mtlMaterials(const std::vector<tinyobj::material_t>& mater
     if (found != library.statements.end() && diffuseColour &&
         (found->second.pm || found->second.mapPm))
       applyMetalness(found->second, material, label, textures, &desc, mixParts);
+    if (!isBlack(emission) && reflects)
+      addMtlEmission(found != library.statements.end() ? &found->second : nullptr, emission,
+                     emissionTexture, &desc, warnings);
     result.push_back(desc);
   }
   return result;
