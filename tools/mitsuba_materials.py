@@ -33,6 +33,9 @@ harness does for diffuse, since candela's reflect on both sides:
                              -> blendbsdf of the parts' mappings, weight a number or, for a
                                 texture, a `raw` bitmap mapped as a colour texture below (the
                                 average of what candela's choice of a part gives)
+  emission e (a colour) with emission_strength k, on any of these, on spheres
+                             -> the same BSDF with an `area` emitter of radiance k e (one-sided,
+                                outwards, as candela's)
   (a roughness r > 0 whose alpha = r^2 is below 0.001 is smooth in candela, docs/scene-format.md's
   Roughness, so it maps as roughness 0)
   {"texture": T, "scale": [su, sv]} as a colour on a sphere (tools/mitsuba_mtl.py maps it on
@@ -57,7 +60,7 @@ import candela_scene as cs  # noqa: E402
 import mitsuba_ref as mr  # noqa: E402
 
 cs.KNOWN['material'] |= {'roughness', 'metal', 'transmission_depth', 'anisotropy', 'materials',
-                         'weight'}
+                         'weight', 'emission', 'emission_strength'}
 harness_make_mat = cs._make_mat
 harness_bsdf_dict = mr.bsdf_dict
 
@@ -116,6 +119,17 @@ def mix_part(ctx, part, path):
 
 
 def make_mat(ctx, t, fields, path):
+    mat = make_reflecting_mat(ctx, t, fields, path)
+    if 'emission' in fields:
+        if isinstance(fields['emission'], dict):
+            ctx.err(path + '.emission', 'a texture: not mapped to Mitsuba by this tool')
+        strength = ctx.number(fields.get('emission_strength', 1.0), path + '.emission_strength',
+                              nonneg=True)
+        mat['emission'] = [c * strength for c in ctx.color(fields['emission'], path + '.emission')]
+    return mat
+
+
+def make_reflecting_mat(ctx, t, fields, path):
     if t == 'mix':
         parts = [mix_part(ctx, p, f'{path}.materials[{k}]')
                  for k, p in enumerate(fields['materials'])]
@@ -217,6 +231,11 @@ def scene_dict(sc, *args, **kwargs):
                 'type': 'homogeneous', 'sigma_t': mr.rgb([c / top for c in s['mat']['sigma']]),
                 'scale': top, 'albedo': 0.0}
             d['integrator']['type'] = 'volpath'
+    for i, s in enumerate(sc['spheres']):
+        if 'emission' in s['mat']:
+            d[f'sphere{i}']['emitter'] = {'type': 'area', 'radiance': mr.rgb(s['mat']['emission'])}
+    if any('emission' in m['mat'] for m in sc['meshes']):
+        raise mr.ConvertError('an "emission" on a mesh: not mapped by this tool (spheres only)')
     for i, s in enumerate(sc['spheres']):
         if textured(s['mat']) or anisotropic(s['mat']):
             sphere = d[f'sphere{i}']
