@@ -140,7 +140,8 @@ TEST(SurfaceEmission, RefusesWhatCannotEmit) {
   EXPECT_EQ(materialError(R"({"type": "thin_glass", "emission": 1})"),
             "test.json: materials.m.emission: not used by a \"thin_glass\" material");
   EXPECT_EQ(materialError(R"({"type": "emissive", "radiance": 1, "emission": 1})"),
-            "test.json: materials.m.emission: not used by an \"emissive\" material");
+            "test.json: materials.m.emission: not used by an \"emissive\" material (it emits "
+            "its \"radiance\" times its \"strength\")");
   EXPECT_EQ(materialError(R"({"type": "diffuse", "emission": 1e20, "emission_strength": 1e20})"),
             "test.json: materials.m.emission_strength: the radiance [1e+20, 1e+20, 1e+20] times "
             "emission_strength 1e+20 is beyond single precision; expected a smaller "

@@ -272,7 +272,10 @@ MaterialRead readFields(JsonObject& fields, size_t type, TextureLoader& textures
   for (const std::string& field : kFields) {
     const std::vector<std::string>& used = kFieldsOf[type];
     if (std::find(used.begin(), used.end(), field) == used.end())
-      fields.reject(field, notUsedBy(type));
+      fields.reject(field, notUsedBy(type) + (type == kEmissive && field.rfind("emission", 0) == 0
+                                                  ? " (it emits its \"radiance\" times its "
+                                                    "\"strength\")"
+                                                  : ""));
   }
   if (type == kMix) return readMix(fields, textures, named);
   Material material;
