@@ -201,6 +201,29 @@ TEST_F(CliAovTest, CameraFileIsACameraThatRendersTheSameImage) {
       candela::readImage(path("b.pfm").string()).pixels);
   EXPECT_LT(difference, 1e-9);
 
+  // A lens distortion is written as OpenCV's coefficients, and renders the same image again.
+  dir_.write("bent.json", R"({
+    "camera": {"width": 12, "height": 9, "fov": 50, "position": [1, 2, 6], "look_at": [0, 0, 0],
+               "distortion": [-0.2, 0.05, 0.001, 0, 0, 0.01, 0, 0]},
+    "spheres": [{"position": [0, 0, 0], "radius": 1, "color": 0.5}],
+    "lights": [{"position": [0, 3, 3], "intensity": 100}]})");
+  ASSERT_EQ(run("render bent.json -q --spp 2 -o c.pfm --aov camera"), 0);
+  const std::string bent = fileText(path("c.camera.json"));
+  EXPECT_NE(bent.find("\"distortion\": [-0.2, 0.05, 0.001, 0.0, 0.0, 0.01, 0.0, 0.0]"),
+            std::string::npos)
+      << bent;
+  dir_.write("given.json", R"({"camera": )" + bent + R"(,
+    "spheres": [{"position": [0, 0, 0], "radius": 1, "color": 0.5}],
+    "lights": [{"position": [0, 3, 3], "intensity": 100}]})");
+  ASSERT_EQ(run("render given.json -q --spp 2 -o d.pfm"), 0);
+  const std::vector<float> bentImage = candela::readImage(path("c.pfm").string()).pixels;
+  EXPECT_LT(
+      candela::test::relMseAgainst(bentImage, candela::readImage(path("d.pfm").string()).pixels),
+      1e-9);
+  EXPECT_GT(
+      candela::test::relMseAgainst(bentImage, candela::readImage(path("a.pfm").string()).pixels),
+      1e-6);  // the lens shows
+
   // A thin lens keeps its lens; an .exr gets the file too, and so does each frame of a sequence,
   // with that frame's camera.
   dir_.write("lens.json", R"({

@@ -1,4 +1,4 @@
-// The kernel's camera: a pinhole or thin lens given by K^-1 and its pose.
+// The kernel's camera: a pinhole or thin lens given by K^-1, its lens distortion and its pose.
 //
 // Camera space follows OpenCV: +x right, +y down, +z forward.
 #pragma once
@@ -8,12 +8,14 @@
 #include "core/device.h"
 #include "core/mat3.h"
 #include "core/vec3.h"
+#include "render/lens_distortion.h"
 
 namespace candela {
 
 struct Camera {
   uint32_t width = 512, height = 512;
-  Mat3 inverseK;       // pixel (u, v, 1) -> camera-space direction with z = 1
+  Mat3 inverseK;  // pixel (u, v, 1) -> camera-space direction with z = 1 (distorted)
+  LensDistortion distortion;
   Mat3 cameraToWorld;  // OpenCV camera axes -> world
   Vec3 position;       // camera centre in world space
   float apertureRadius = 0;

@@ -1,4 +1,5 @@
-// Camera rays: pixel position -> K^-1 -> camera space (OpenCV axes) -> world; optional thin lens.
+// Camera rays: pixel position -> K^-1 -> the lens's distortion undone -> camera space (OpenCV
+// axes) -> world; optional thin lens.
 #pragma once
 
 #include "core/sampling.h"
@@ -12,6 +13,10 @@ namespace candela {
 CANDELA_HDI Ray generateCameraRay(const Camera& cam, float px, float py, float lensU, float lensV) {
   Vec3 dir = cam.inverseK * Vec3(px, py, 1.0f);
   dir = dir / dir.z;  // a point on the plane z = 1 in front of the camera
+  if (cam.distortion.enabled) {
+    const Vec2 straight = undistortNormalized(cam.distortion, Vec2(dir.x, dir.y));
+    dir = Vec3(straight.x, straight.y, 1.0f);
+  }
   Vec3 origin(0.0f);
   if (cam.apertureRadius > 0.0f) {
     // Thin lens: every ray through the lens point converges on the plane z = focusDistance.

@@ -8,10 +8,16 @@
 
 namespace candela {
 
-// The pixel `c` (camera-space point or direction) falls on, when it lies in front of the camera.
-CANDELA_HDI bool projectToPixel(const Mat3& K, const Vec3& c, Vec2* pixel) {
+// The pixel `c` (camera-space point or direction) falls on through `camera`'s lens, when it
+// lies in front of the camera.
+CANDELA_HDI bool projectToPixel(const FlowCamera& camera, const Vec3& c, Vec2* pixel) {
   if (!(c.z > 0.0f)) return false;
-  const Vec3 h = K * (c / c.z);
+  Vec3 n = c / c.z;
+  if (camera.distortion.enabled) {
+    const Vec2 bent = distortNormalized(camera.distortion, n.x, n.y);
+    n = Vec3(bent.x, bent.y, 1.0f);
+  }
+  const Vec3 h = camera.K * n;
   *pixel = Vec2(h.x, h.y);
   return true;
 }
@@ -34,7 +40,7 @@ CANDELA_HDI bool sampleFlow(const SceneView& scene, const FirstHit& first, const
     fromNext = next.worldToCamera * rayDirection;
   }
   Vec2 a, b;
-  if (!projectToPixel(now.K, fromNow, &a) || !projectToPixel(next.K, fromNext, &b)) return false;
+  if (!projectToPixel(now, fromNow, &a) || !projectToPixel(next, fromNext, &b)) return false;
   *flow = Vec2(b.x - a.x, b.y - a.y);
   return true;
 }

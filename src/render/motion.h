@@ -4,6 +4,7 @@
 
 #include "core/mat3.h"
 #include "core/vec3.h"
+#include "render/lens_distortion.h"
 
 namespace candela {
 
@@ -13,10 +14,11 @@ struct InstanceMotion {
   Vec3 offset{0.0f};
 };
 
-// A pinhole projection: world point p -> pixel of K * worldToCamera * (p - position), divided
-// by its z (OpenCV camera axes; pixel (0, 0) is the image's top-left corner).
+// A camera's projection: world point p -> pixel of K * the distorted (x / z, y / z, 1) of
+// worldToCamera * (p - position) (OpenCV camera axes; pixel (0, 0) is the image's top-left corner).
 struct FlowCamera {
   Mat3 K;
+  LensDistortion distortion;
   Mat3 worldToCamera;
   Vec3 position{0.0f};
 };

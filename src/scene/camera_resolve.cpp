@@ -1,5 +1,6 @@
 #include "scene/camera_resolve.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -96,6 +97,68 @@ std::optional<CameraProblem> rayProblem(const Camera& cam, const CameraDesc& des
   return std::nullopt;
 }
 
+// Whether r R(r), the radial part of `d`, grows on [0, rMax] (with a positive denominator): the
+// lens keeps the order of radii out to rMax. Sampled finely in double; a fold between samples
+// would have to be narrower than a thousandth of the radius.
+bool radialGrows(const LensDistortion& d, double rMax) {
+  double last = 0;
+  for (int i = 1; i <= 1024; ++i) {
+    const double r = rMax * i / 1024, r2 = r * r;
+    const double num = 1 + r2 * (d.k1 + r2 * (d.k2 + r2 * d.k3));
+    const double den = 1 + r2 * (d.k4 + r2 * (d.k5 + r2 * d.k6));
+    const double radius = r * num / den;
+    if (!(den > 0) || !(radius > last)) return false;
+    last = radius;
+  }
+  return true;
+}
+
+// A distorted camera's rays undo its lens by Newton's method (render/lens_distortion.h), which
+// finds a pixel's one direction only where the lens maps directions onto the image one to one.
+// Checked over a grid of the region samples reach, the image widened by `beyondEdge` pixels: each
+// pixel's direction must project back onto it (to a hundredth of a pixel), with the distortion's
+// Jacobian positive there, and the radial part must grow out to the largest radius reached.
+std::optional<CameraProblem> distortionProblem(const Camera& cam, float beyondEdge) {
+  if (!cam.distortion.enabled) return std::nullopt;
+  const LensDistortion& d = cam.distortion;
+  Mat3 k;
+  invert(cam.inverseK, &k);
+  const std::string path = "camera.distortion";
+  constexpr int kSteps = 64;
+  const float lo = 0.0f - beyondEdge;
+  const float w = float(cam.width) + beyondEdge, h = float(cam.height) + beyondEdge;
+  double largestR2 = 0;
+  for (int j = 0; j <= kSteps; ++j)
+    for (int i = 0; i <= kSteps; ++i) {
+      const float px = lo + (w - lo) * float(i) / kSteps, py = lo + (h - lo) * float(j) / kSteps;
+      Vec3 n = cam.inverseK * Vec3(px, py, 1.0f);
+      n = n / n.z;
+      const Vec2 straight = undistortNormalized(d, Vec2(n.x, n.y));
+      float jacobian[4];
+      const Vec2 bent = distortNormalized(d, straight.x, straight.y, jacobian);
+      const Vec3 back = k * Vec3(bent.x, bent.y, 1.0f);
+      const float miss = std::fabs(back.x - px) + std::fabs(back.y - py);
+      const float det = jacobian[0] * jacobian[3] - jacobian[1] * jacobian[2];
+      if (!(miss < 0.01f) || !(det > 0.0f))
+        return CameraProblem{
+            path, "folds the image over itself near pixel (" + formatNumber(px) + ", " +
+                      formatNumber(py) +
+                      "), where no direction or more than one would reach a pixel; expected "
+                      "coefficients whose distortion grows steadily out to the image's corners"};
+      largestR2 =
+          std::max(largestR2, double(straight.x) * straight.x + double(straight.y) * straight.y);
+    }
+  const double rMax = std::sqrt(largestR2);
+  if (!radialGrows(d, rMax * 1.01))
+    return CameraProblem{path,
+                         "folds back within the image (its radial distortion stops growing "
+                         "before the corners' radius " +
+                             formatNumber(float(rMax)) +
+                             " of the focal length); expected coefficients whose "
+                             "distortion grows steadily out to the image's corners"};
+  return std::nullopt;
+}
+
 // The contract's "rotation" camera looks along -z with +y up; OpenCV axes flip y and z.
 const Mat3 kGlToOpenCv = Mat3::diagonal(Vec3(1.0f, -1.0f, -1.0f));
 
@@ -136,7 +199,10 @@ std::optional<CameraProblem> makeCamera(const CameraDesc& desc, float beyondEdge
     // Distance to look_at measured along the viewing axis (the focus plane is perpendicular).
     cam.focusDistance = dot(*desc.lookAt - cam.position, cam.cameraToWorld.column(2));
   }
-  return rayProblem(cam, desc, beyondEdge);
+  // The pinhole's rays first: the lens is undone on top of them, where it can be.
+  if (std::optional<CameraProblem> problem = rayProblem(cam, desc, beyondEdge)) return problem;
+  cam.distortion = desc.distortion;
+  return distortionProblem(cam, beyondEdge);
 }
 
 }  // namespace
@@ -182,6 +248,12 @@ CameraMatrices cameraMatrices(const CameraDesc& desc, const std::string& fileLab
   if (cam.apertureRadius > 0.0f) {
     out.apertureRadius = cam.apertureRadius;
     out.focusDistance = cam.focusDistance;
+  }
+  const LensDistortion& d = cam.distortion;
+  if (d.enabled) {
+    out.distortion = {d.k1, d.k2, d.p1, d.p2, d.k3};
+    if (d.k4 != 0.0f || d.k5 != 0.0f || d.k6 != 0.0f)
+      out.distortion.insert(out.distortion.end(), {d.k4, d.k5, d.k6});
   }
   return out;
 }

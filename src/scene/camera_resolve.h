@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "render/camera.h"
 #include "render/pixel_filter.h"
@@ -46,6 +47,9 @@ struct CameraMatrices {
   Vec3 translation;          // t: a world point p is at R p + t in camera space
   float apertureRadius = 0;  // a thin lens where above 0, focused at focusDistance along +z
   float focusDistance = 0;
+  // OpenCV's distortion coefficients, as many as say the lens (5, or 8 for the rational model);
+  // none without one.
+  std::vector<float> distortion;
 };
 
 // The matrices of the camera `desc` makes; throws SceneError as resolveCamera does.

@@ -59,6 +59,7 @@ FlowCamera flowCamera(const CameraDesc& desc, const std::string& label) {
   const Camera camera = resolveCamera(desc, label);
   FlowCamera f;
   f.K = intrinsicMatrix(desc);
+  f.distortion = camera.distortion;
   f.worldToCamera = camera.cameraToWorld.transposed();
   f.position = camera.position;
   return f;

@@ -17,6 +17,7 @@
 #include "core/vec3.h"
 #include "image/image.h"
 #include "image/output_desc.h"
+#include "render/lens_distortion.h"
 #include "render/light.h"
 #include "render/material.h"
 #include "render/render_settings.h"
@@ -142,6 +143,7 @@ struct CameraDesc {
   std::optional<Vec3> extrinsicsT;
   float apertureRadius = 0;
   std::optional<float> focusDistance;
+  LensDistortion distortion;  // OpenCV's distCoeffs (render/lens_distortion.h)
 };
 
 // What an animation track can change (docs/scene-format.md, *Animation*). Which properties a

@@ -174,6 +174,20 @@ def test_thin_lens_camera_reports_its_lens():
     assert camera["aperture_radius"] == pytest.approx(0.1) and camera["focus_distance"] == 5.5
 
 
+def test_distorted_camera_reports_its_lens_and_renders_the_same_image_given_back():
+    spec = tiny_scene(spp=2)
+    spec["camera"]["distortion"] = [-0.12, 0.03, 0.001, -0.0005, 0.002]
+    scene = candela.Scene.from_dict(spec)
+    camera = scene.camera
+    assert camera["distortion"] == pytest.approx(spec["camera"]["distortion"])
+    again = dict(spec, camera=dict(camera, spp=2))
+    image = scene.render(backend="cpu")
+    assert np.abs(candela.Scene.from_dict(again).render(backend="cpu") - image).max() <= 1e-5 * image.max()
+    # The lens changes the picture: without it the same camera renders another image.
+    del again["camera"]["distortion"]
+    assert np.abs(candela.Scene.from_dict(again).render(backend="cpu") - image).max() > 0.01 * image.max()
+
+
 def test_poses_map_what_each_pixel_sees_back_onto_its_instances_model(tmp_path):
     # An independent check of the poses (docs/aovs.md, Instance poses): the position pass of each
     # pixel, taken back through its instance's object_to_world, must lie on that instance's model

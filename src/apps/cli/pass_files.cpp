@@ -115,6 +115,12 @@ std::string encodeCamera(const SceneDesc& desc) {
   if (c.apertureRadius > 0.0f)
     text += ",\n  \"aperture_radius\": " + floatText(c.apertureRadius) +
             ",\n  \"focus_distance\": " + floatText(c.focusDistance);
+  if (!c.distortion.empty()) {
+    text += ",\n  \"distortion\": [";
+    for (size_t i = 0; i < c.distortion.size(); ++i)
+      text += (i > 0 ? ", " : "") + floatText(c.distortion[i]);
+    text += "]";
+  }
   return text + "\n}\n";
 }
 

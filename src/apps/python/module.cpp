@@ -421,6 +421,7 @@ NB_MODULE(_candela, m) {
           camera["aperture_radius"] = c.apertureRadius;
           camera["focus_distance"] = c.focusDistance;
         }
+        if (!c.distortion.empty()) camera["distortion"] = c.distortion;
         return camera;
       })
       .def_prop_ro("_poses", [](const Scene& s) {

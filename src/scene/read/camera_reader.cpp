@@ -59,6 +59,35 @@ void readExtrinsics(const JsonValue& value, CameraDesc& camera) {
   camera.extrinsicsT = Vec3(e[3], e[7], e[11]);
 }
 
+// OpenCV's distortion coefficients [k1, k2, p1, p2] with k3, or k3 to k6, after them (the
+// lengths cv::calibrateCamera's distCoeffs has for these models); whether the lens can be undone
+// over the image is the camera's check (scene/camera_resolve.cpp).
+LensDistortion readDistortion(const JsonValue& value) {
+  const std::string expected =
+      "OpenCV's distortion coefficients, an array [k1, k2, p1, p2], [k1, k2, p1, p2, k3] or [k1, "
+      "k2, p1, p2, k3, k4, k5, k6]";
+  const std::vector<JsonValue> elements = value.elements(expected);
+  if (elements.size() != 4 && elements.size() != 5 && elements.size() != 8)
+    value.failExpected(expected);
+  float k[8] = {};
+  bool any = false;
+  for (size_t i = 0; i < elements.size(); ++i) {
+    k[i] = elements[i].number();
+    any = any || k[i] != 0.0f;
+  }
+  LensDistortion d;
+  d.k1 = k[0];
+  d.k2 = k[1];
+  d.p1 = k[2];
+  d.p2 = k[3];
+  d.k3 = k[4];
+  d.k4 = k[5];
+  d.k5 = k[6];
+  d.k6 = k[7];
+  d.enabled = any;
+  return d;
+}
+
 void readPose(JsonObject& fields, CameraDesc& camera) {
   for (const char* key : {"position", "rotation", "look_at"}) fields.exclusive("extrinsics", key);
   fields.exclusive("rotation", "look_at");
@@ -103,7 +132,7 @@ void checkImageSize(JsonObject& fields, const CameraDesc& camera) {
 CameraDesc readCamera(const JsonValue& value, RenderSettings& render) {
   JsonObject fields(
       value, {"width", "height", "fov", "intrinsics", "position", "rotation", "look_at", "up",
-              "extrinsics", "spp", "rays", "aperture_radius", "focus_distance"});
+              "extrinsics", "spp", "rays", "aperture_radius", "focus_distance", "distortion"});
   CameraDesc camera;
   if (std::optional<JsonValue> width = fields.get("width"))
     camera.width = static_cast<uint32_t>(width->integer(1, kMaxUint32, "a positive integer"));
@@ -120,6 +149,8 @@ CameraDesc readCamera(const JsonValue& value, RenderSettings& render) {
   }
   if (std::optional<JsonValue> intrinsics = fields.get("intrinsics"))
     camera.intrinsics = readIntrinsics(*intrinsics);
+  if (std::optional<JsonValue> distortion = fields.get("distortion"))
+    camera.distortion = readDistortion(*distortion);
 
   readPose(fields, camera);
 
