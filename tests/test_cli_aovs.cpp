@@ -223,6 +223,23 @@ TEST_F(CliAovTest, CameraFileIsACameraThatRendersTheSameImage) {
   EXPECT_GT(
       candela::test::relMseAgainst(bentImage, candela::readImage(path("a.pfm").string()).pixels),
       1e-6);  // the lens shows
+  // An equirectangular camera names its projection in place of K, and comes back the same.
+  dir_.write("pano.json", R"({
+    "camera": {"width": 16, "height": 8, "projection": "equirectangular", "position": [1, 2, 6],
+               "look_at": [0, 0, 0]},
+    "spheres": [{"position": [0, 0, 0], "radius": 1, "color": 0.5}],
+    "lights": [{"position": [0, 3, 3], "intensity": 100}]})");
+  ASSERT_EQ(run("render pano.json -q --spp 2 -o e.pfm --aov camera"), 0);
+  const std::string pano = fileText(path("e.camera.json"));
+  EXPECT_NE(pano.find("\"projection\": \"equirectangular\""), std::string::npos) << pano;
+  EXPECT_EQ(pano.find("intrinsics"), std::string::npos) << pano;
+  dir_.write("given.json", R"({"camera": )" + pano + R"(,
+    "spheres": [{"position": [0, 0, 0], "radius": 1, "color": 0.5}],
+    "lights": [{"position": [0, 3, 3], "intensity": 100}]})");
+  ASSERT_EQ(run("render given.json -q --spp 2 -o f.pfm"), 0);
+  EXPECT_LT(candela::test::relMseAgainst(candela::readImage(path("e.pfm").string()).pixels,
+                                         candela::readImage(path("f.pfm").string()).pixels),
+            1e-9);
 
   // A thin lens keeps its lens; an .exr gets the file too, and so does each frame of a sequence,
   // with that frame's camera.

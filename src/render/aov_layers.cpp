@@ -57,6 +57,11 @@ void resolvePixel(Aov aov, const SceneData& scene, const AovPixel& p, float* out
   };
   switch (aov) {
     case Aov::Depth:
+      // A panorama's depth is the distance: its camera space has no one forward axis.
+      if (cam.projection == CameraProjection::Equirectangular) {
+        out[0] = p.hits > 0 ? p.distanceSum * invHits : inf;
+        return;
+      }
       out[0] = p.hits > 0 ? dot(position - cam.position, cam.cameraToWorld * Vec3(0, 0, 1)) : inf;
       return;
     case Aov::Distance:

@@ -5,12 +5,19 @@
 #include "core/sampling.h"
 #include "geometry/ray.h"
 #include "render/camera.h"
+#include "render/panorama.h"
 
 namespace candela {
 
 // (px, py) in pixel coordinates (pixel (i, j) covers [i, i+1) x [j, j+1)); (lensU, lensV)
 // uniform in [0,1)^2, used only when the aperture is open. Returns a unit-direction ray.
 CANDELA_HDI Ray generateCameraRay(const Camera& cam, float px, float py, float lensU, float lensV) {
+  if (cam.projection == CameraProjection::Equirectangular) {
+    Ray ray;
+    ray.origin = cam.position;
+    ray.direction = normalize(cam.cameraToWorld * panoramaDirection(px, py, cam.width, cam.height));
+    return ray;
+  }
   Vec3 dir = cam.inverseK * Vec3(px, py, 1.0f);
   dir = dir / dir.z;  // a point on the plane z = 1 in front of the camera
   if (cam.distortion.enabled) {

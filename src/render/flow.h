@@ -4,6 +4,7 @@
 
 #include "core/vec2.h"
 #include "render/aov.h"
+#include "render/panorama.h"
 #include "render/scene_view.h"
 
 namespace candela {
@@ -11,6 +12,10 @@ namespace candela {
 // The pixel `c` (camera-space point or direction) falls on through `camera`'s lens, when it
 // lies in front of the camera.
 CANDELA_HDI bool projectToPixel(const FlowCamera& camera, const Vec3& c, Vec2* pixel) {
+  if (camera.projection == CameraProjection::Equirectangular) {
+    *pixel = panoramaPixel(c, camera.width, camera.height);
+    return true;
+  }
   if (!(c.z > 0.0f)) return false;
   Vec3 n = c / c.z;
   if (camera.distortion.enabled) {
@@ -42,6 +47,12 @@ CANDELA_HDI bool sampleFlow(const SceneView& scene, const FirstHit& first, const
   Vec2 a, b;
   if (!projectToPixel(now, fromNow, &a) || !projectToPixel(next, fromNext, &b)) return false;
   *flow = Vec2(b.x - a.x, b.y - a.y);
+  // A panorama wraps around: across its seam a point moves the short way.
+  if (now.projection == CameraProjection::Equirectangular) {
+    const float w = float(now.width);
+    if (flow->x > 0.5f * w) flow->x -= w;
+    if (flow->x < -0.5f * w) flow->x += w;
+  }
   return true;
 }
 

@@ -4,6 +4,7 @@
 
 #include "core/mat3.h"
 #include "core/vec3.h"
+#include "render/camera.h"
 #include "render/lens_distortion.h"
 
 namespace candela {
@@ -17,6 +18,8 @@ struct InstanceMotion {
 // A camera's projection: world point p -> pixel of K * the distorted (x / z, y / z, 1) of
 // worldToCamera * (p - position) (OpenCV camera axes; pixel (0, 0) is the image's top-left corner).
 struct FlowCamera {
+  CameraProjection projection = CameraProjection::Perspective;  // a panorama has no K
+  uint32_t width = 0, height = 0;                               // a panorama's
   Mat3 K;
   LensDistortion distortion;
   Mat3 worldToCamera;

@@ -177,6 +177,7 @@ std::optional<CameraProblem> makeCamera(const CameraDesc& desc, float beyondEdge
   Camera& cam = *out;
   cam.width = desc.width;
   cam.height = desc.height;
+  cam.projection = desc.projection;
   if (!invert(intrinsicMatrix(desc), &cam.inverseK))
     return CameraProblem{intrinsicsPath(desc),
                          std::string("expected an invertible matrix K") +
@@ -249,6 +250,7 @@ CameraMatrices cameraMatrices(const CameraDesc& desc, const std::string& fileLab
     out.apertureRadius = cam.apertureRadius;
     out.focusDistance = cam.focusDistance;
   }
+  out.panorama = cam.projection == CameraProjection::Equirectangular;
   const LensDistortion& d = cam.distortion;
   if (d.enabled) {
     out.distortion = {d.k1, d.k2, d.p1, d.p2, d.k3};

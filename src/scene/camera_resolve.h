@@ -50,6 +50,7 @@ struct CameraMatrices {
   // OpenCV's distortion coefficients, as many as say the lens (5, or 8 for the rational model);
   // none without one.
   std::vector<float> distortion;
+  bool panorama = false;  // equirectangular: no K (`intrinsics` is the fov's, unused)
 };
 
 // The matrices of the camera `desc` makes; throws SceneError as resolveCamera does.

@@ -60,6 +60,9 @@ FlowCamera flowCamera(const CameraDesc& desc, const std::string& label) {
   FlowCamera f;
   f.K = intrinsicMatrix(desc);
   f.distortion = camera.distortion;
+  f.projection = camera.projection;
+  f.width = camera.width;
+  f.height = camera.height;
   f.worldToCamera = camera.cameraToWorld.transposed();
   f.position = camera.position;
   return f;

@@ -17,6 +17,7 @@
 #include "core/vec3.h"
 #include "image/image.h"
 #include "image/output_desc.h"
+#include "render/camera.h"
 #include "render/lens_distortion.h"
 #include "render/light.h"
 #include "render/material.h"
@@ -144,6 +145,7 @@ struct CameraDesc {
   float apertureRadius = 0;
   std::optional<float> focusDistance;
   LensDistortion distortion;  // OpenCV's distCoeffs (render/lens_distortion.h)
+  CameraProjection projection = CameraProjection::Perspective;
 };
 
 // What an animation track can change (docs/scene-format.md, *Animation*). Which properties a

@@ -188,6 +188,18 @@ def test_distorted_camera_reports_its_lens_and_renders_the_same_image_given_back
     assert np.abs(candela.Scene.from_dict(again).render(backend="cpu") - image).max() > 0.01 * image.max()
 
 
+def test_panorama_camera_names_its_projection_and_renders_the_same_image_given_back():
+    spec = tiny_scene(spp=2)
+    spec["camera"] = {"width": 32, "height": 16, "projection": "equirectangular",
+                      "position": [0, 1, 4], "look_at": [0, 0.5, 0], "spp": 2}
+    scene = candela.Scene.from_dict(spec)
+    camera = scene.camera
+    assert camera["projection"] == "equirectangular" and "intrinsics" not in camera
+    image = scene.render(backend="cpu")
+    again = candela.Scene.from_dict(dict(spec, camera=dict(camera, spp=2))).render(backend="cpu")
+    assert np.abs(again - image).max() <= 1e-5 * image.max()
+
+
 def test_poses_map_what_each_pixel_sees_back_onto_its_instances_model(tmp_path):
     # An independent check of the poses (docs/aovs.md, Instance poses): the position pass of each
     # pixel, taken back through its instance's object_to_world, must lie on that instance's model

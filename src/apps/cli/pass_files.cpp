@@ -110,7 +110,8 @@ std::string encodeCamera(const SceneDesc& desc) {
   std::string text =
       "{\n  \"width\": " + std::to_string(c.width) +
       ",\n  \"height\": " + std::to_string(c.height) +
-      ",\n  \"intrinsics\": " + matrixText(intrinsics, "  ") +
+      (c.panorama ? ",\n  \"projection\": \"equirectangular\""
+                  : ",\n  \"intrinsics\": " + matrixText(intrinsics, "  ")) +
       ",\n  \"extrinsics\": " + matrixText(affineRows(c.rotation, c.translation), "  ");
   if (c.apertureRadius > 0.0f)
     text += ",\n  \"aperture_radius\": " + floatText(c.apertureRadius) +

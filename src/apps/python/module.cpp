@@ -415,7 +415,10 @@ NB_MODULE(_candela, m) {
         nb::dict camera;
         camera["width"] = c.width;
         camera["height"] = c.height;
-        camera["intrinsics"] = intrinsics;
+        if (c.panorama)
+          camera["projection"] = "equirectangular";
+        else
+          camera["intrinsics"] = intrinsics;
         camera["extrinsics"] = affineRows(c.rotation, c.translation);
         if (c.apertureRadius > 0.0f) {
           camera["aperture_radius"] = c.apertureRadius;

@@ -192,6 +192,11 @@ void checkUsed(const JsonValue& property, const AnimTrack& track, const SceneDes
     switch (track.property) {
       case AnimProperty::Fov:
         if (c.intrinsics) unused("a camera given by \"intrinsics\"");
+        if (c.projection == CameraProjection::Equirectangular) unused("an equirectangular camera");
+        break;
+      case AnimProperty::ApertureRadius:
+      case AnimProperty::FocusDistance:
+        if (c.projection == CameraProjection::Equirectangular) unused("an equirectangular camera");
         break;
       case AnimProperty::Position:
         if (c.extrinsicsR) unused("a camera given by \"extrinsics\"");

@@ -130,9 +130,9 @@ void checkImageSize(JsonObject& fields, const CameraDesc& camera) {
 }  // namespace
 
 CameraDesc readCamera(const JsonValue& value, RenderSettings& render) {
-  JsonObject fields(
-      value, {"width", "height", "fov", "intrinsics", "position", "rotation", "look_at", "up",
-              "extrinsics", "spp", "rays", "aperture_radius", "focus_distance", "distortion"});
+  JsonObject fields(value, {"width", "height", "fov", "intrinsics", "position", "rotation",
+                            "look_at", "up", "extrinsics", "spp", "rays", "aperture_radius",
+                            "focus_distance", "distortion", "projection"});
   CameraDesc camera;
   if (std::optional<JsonValue> width = fields.get("width"))
     camera.width = static_cast<uint32_t>(width->integer(1, kMaxUint32, "a positive integer"));
@@ -141,6 +141,15 @@ CameraDesc readCamera(const JsonValue& value, RenderSettings& render) {
 
   checkImageSize(fields, camera);
 
+  if (std::optional<JsonValue> projection = fields.get("projection")) {
+    if (projection->choice({"perspective", "equirectangular"}) == 1) {
+      camera.projection = CameraProjection::Equirectangular;
+      for (const char* key :
+           {"fov", "intrinsics", "distortion", "aperture_radius", "focus_distance"})
+        fields.reject(key,
+                      "not used by an equirectangular camera (its image spans every direction)");
+    }
+  }
   fields.exclusive("fov", "intrinsics");
   if (std::optional<JsonValue> fov = fields.get("fov")) {
     const std::string expectation = "a number between 0 and 180 (exclusive)";
