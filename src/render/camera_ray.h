@@ -9,15 +9,19 @@
 
 namespace candela {
 
+// The ray of an equirectangular camera through (px, py). Out of line: most cameras are
+// perspective.
+CANDELA_HD_NOINLINE inline Ray panoramaRay(const Camera& cam, float px, float py) {
+  Ray ray;
+  ray.origin = cam.position;
+  ray.direction = normalize(cam.cameraToWorld * panoramaDirection(px, py, cam.width, cam.height));
+  return ray;
+}
+
 // (px, py) in pixel coordinates (pixel (i, j) covers [i, i+1) x [j, j+1)); (lensU, lensV)
 // uniform in [0,1)^2, used only when the aperture is open. Returns a unit-direction ray.
 CANDELA_HDI Ray generateCameraRay(const Camera& cam, float px, float py, float lensU, float lensV) {
-  if (cam.projection == CameraProjection::Equirectangular) {
-    Ray ray;
-    ray.origin = cam.position;
-    ray.direction = normalize(cam.cameraToWorld * panoramaDirection(px, py, cam.width, cam.height));
-    return ray;
-  }
+  if (cam.projection == CameraProjection::Equirectangular) return panoramaRay(cam, px, py);
   Vec3 dir = cam.inverseK * Vec3(px, py, 1.0f);
   dir = dir / dir.z;  // a point on the plane z = 1 in front of the camera
   if (cam.distortion.enabled) {

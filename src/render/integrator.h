@@ -273,7 +273,9 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
     }
   }
 
-  if (hasEmission(surface) && emitsTowards(surface, wo, sp.ng)) {
+  // An emissive m is its surface's own material (no mix has one).
+  if ((isEmissive(m) || (scene.reflectorsEmit && hasEmission(surface))) &&
+      emitsTowards(surface, wo, sp.ng)) {
     float weight = 1.0f;
     const int32_t light = st.specularBounce ? -1 : lightOfPrimitive(scene, hit.prim);
     if (light >= 0) {

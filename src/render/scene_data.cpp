@@ -28,7 +28,11 @@ SceneView SceneData::view() const {
   v.sunDiscs = sunDiscs;
   v.environment = environment;
   v.emissionReachable = !isBlack(environment.radiance) || sunDiscs;
-  for (const Material& m : materials) v.emissionReachable |= hasEmission(m);
+  v.reflectorsEmit = false;
+  for (const Material& m : materials) {
+    v.emissionReachable |= hasEmission(m);
+    v.reflectorsEmit |= hasEmission(m) && m.type != MaterialType::Emissive;
+  }
   v.camera = camera;
   v.settings = settings;
   v.flow = flow;

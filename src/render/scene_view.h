@@ -82,6 +82,9 @@ struct SceneView : GeometryView {
   // lights, and the ray a path would scatter from its last interaction is not traced: it could add
   // nothing.
   bool emissionReachable = true;
+  // Whether some material that reflects also emits (its "emission"): a hit checks what its
+  // surface emits only where one does, and an emissive material's otherwise.
+  bool reflectorsEmit = false;
   Camera camera;
   RenderSettings settings;
   FlowFrames flow;  // the flow pass's cameras (render/flow.h)
