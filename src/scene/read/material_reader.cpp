@@ -35,25 +35,12 @@ enum TypeIndex : size_t {
 };
 
 // Every field a material may have, and which of them each type reads.
-const std::vector<std::string> kFields = {"color",
-                                          "ior",
-                                          "roughness",
-                                          "metal",
-                                          "radiance",
-                                          "strength",
-                                          "two_sided",
-                                          "normal_map",
-                                          "bump_map",
-                                          "alpha",
-                                          "emission",
-                                          "emission_strength",
-                                          "transmission_depth",
-                                          "abbe",
-                                          "visible",
-                                          "anisotropy",
-                                          "anisotropy_rotation",
-                                          "materials",
-                                          "weight"};
+// clang-format off
+const std::vector<std::string> kFields = {
+    "color", "ior", "roughness", "metal", "radiance", "strength", "two_sided", "normal_map",
+    "bump_map", "alpha", "emission", "emission_strength", "transmission_depth", "abbe", "visible",
+    "anisotropy", "anisotropy_rotation", "materials", "weight"};
+// clang-format on
 const std::vector<std::vector<std::string>> kFieldsOf = {
     {"color", "normal_map", "bump_map", "alpha", "emission", "emission_strength"},  // diffuse
     {"color", "normal_map", "bump_map", "alpha", "emission", "emission_strength"},  // mirror
@@ -71,9 +58,13 @@ const std::vector<std::vector<std::string>> kFieldsOf = {
 // The material a mix names for a part: one of the library's, or a shorthand type's defaults.
 using NamedMaterial = std::function<MaterialRead(const JsonValue& name)>;
 
-std::string notUsedBy(size_t type) {
-  return std::string("not used by ") + (type == kEmissive ? "an " : "a ") +
-         quoted(kTypeNames[type]) + " material";
+// Why `field` is refused on a material of type kTypeNames[type].
+std::string notUsedBy(size_t type, const std::string& field) {
+  const std::string why = std::string("not used by ") + (type == kEmissive ? "an " : "a ") +
+                          quoted(kTypeNames[type]) + " material";
+  if (type == kEmissive && field.rfind("emission", 0) == 0)
+    return why + " (it emits its \"radiance\" times its \"strength\")";
+  return why;
 }
 
 // "roughness" into material->roughness, or its texture into material->roughnessTexture.
@@ -272,10 +263,7 @@ MaterialRead readFields(JsonObject& fields, size_t type, TextureLoader& textures
   for (const std::string& field : kFields) {
     const std::vector<std::string>& used = kFieldsOf[type];
     if (std::find(used.begin(), used.end(), field) == used.end())
-      fields.reject(field, notUsedBy(type) + (type == kEmissive && field.rfind("emission", 0) == 0
-                                                  ? " (it emits its \"radiance\" times its "
-                                                    "\"strength\")"
-                                                  : ""));
+      fields.reject(field, notUsedBy(type, field));
   }
   if (type == kMix) return readMix(fields, textures, named);
   Material material;
