@@ -10,6 +10,7 @@
 #include <string>
 
 #include "core/rotation.h"
+#include "flow_test_util.h"
 #include "moving_sphere_scene.h"
 #include "render/aov_layers.h"
 #include "render_test_util.h"
@@ -22,46 +23,17 @@ namespace fs = std::filesystem;
 namespace candela {
 namespace {
 
-struct FlowRender {
-  std::vector<ImageLayer> layers;
-  float at(const char* name, uint32_t x, uint32_t y, uint32_t c = 0) const {
-    for (const ImageLayer& l : layers)
-      if (l.name == name) return l.pixels[l.channels.size() * (size_t(y) * l.width + x) + c];
-    throw std::runtime_error(std::string("no layer ") + name);
-  }
-};
-
-// Frame `frame` of the scene in `json` with its flow to the next frame, and its positions.
-FlowRender renderFlow(const std::string& json, uint32_t frame = 0, const std::string& dir = ".") {
-  const SceneDesc desc = parseSceneText(json, "test.json", dir);
-  const SceneDesc now = sceneAtFrame(desc, frame), next = sceneAtFrame(desc, frame + 1);
-  SceneData scene = flattenScene(now);
-  applyFlowMotion(scene, flowMotion(now, next));
-  RenderOptions options;
-  options.aovs = true;
-  const RenderResult result = renderCpu(scene.view(), options);
-  return {makeAovLayers(scene, parseAovList("flow,position,instance"), result.aovs)};
-}
-
-std::string writeQuad(const fs::path& dir) {
-  fs::create_directories(dir);
-  std::ofstream(dir / "quad.obj") << "v -100 -100 0\nv 100 -100 0\nv 100 100 0\nv -100 100 0\n"
-                                     "f 1 2 3 4\n";
-  return dir.string();
-}
+using test::renderFlow;
+using test::writeQuad;
 
 // The camera moves by (0.3, 0.2, 0) between frames before a plane 7.5 away: every point of the
 // plane moves by -f (0.3, -0.2) / 7.5 pixels (OpenCV's y points down, world y up).
 TEST(Flow, CameraSlidingPastAPlane) {
   const fs::path dir = fs::temp_directory_path() / "candela_flow_plane";
-  const FlowRender r = renderFlow(R"({
-    "camera": {"width": 20, "height": 10, "fov": 90, "spp": 2},
-    "render": {"antialiasing": false},
-    "objects": [{"file": "quad.obj", "position": [0, 0, -7.5]}],
-    "lights": [{"position": [0, 0, 0], "intensity": 100}],
-    "animation": {"frames": 2, "tracks": [
-      {"target": "camera", "property": "position", "keys": [[0, [0, 0, 0]], [1, [0.3, 0.2, 0]]]}]}
-  })", 0, writeQuad(dir));
+  const test::FlowRender r =
+      renderFlow(std::string(R"({"camera": {"width": 20, "height": 10, "fov": 90, "spp": 2},)") +
+                     test::kCameraSlidingPastTheQuad + "}",
+                 0, writeQuad(dir));
   const float f = 10.0f;  // fov 90: width / 2
   for (uint32_t y = 0; y < 10; ++y)
     for (uint32_t x = 0; x < 20; ++x) {
@@ -74,7 +46,7 @@ TEST(Flow, CameraSlidingPastAPlane) {
 // A sphere moves right by 0.25 before a still camera 5 away: its nearest point, 4 away, moves
 // f 0.25 / 4 pixels right; the background does not move.
 TEST(Flow, SphereMovingBeforeAStillCamera) {
-  const FlowRender r = renderFlow(test::kMovingSphereScene, 0);
+  const test::FlowRender r = renderFlow(test::kMovingSphereScene, 0);
   const float f = 7.5f / std::tan(15.0f * kPi / 180.0f);
   EXPECT_NEAR(r.at("flow", 7, 7, 0), f * 0.25f / 4.0f, 1e-4f);
   EXPECT_NEAR(r.at("flow", 7, 7, 1), 0.0f, 1e-5f);
@@ -86,13 +58,14 @@ TEST(Flow, SphereMovingBeforeAStillCamera) {
 // A camera turning by 5 degrees about +y (to its left) sees the distant background move right by
 // f tan(5 degrees) at the image centre.
 TEST(Flow, TurningCameraMovesTheBackground) {
-  const FlowRender r = renderFlow(R"({
+  const test::FlowRender r = renderFlow(R"({
     "camera": {"width": 21, "height": 21, "fov": 60, "spp": 1},
     "render": {"antialiasing": false},
     "environment": {"color": 0.5},
     "animation": {"frames": 2, "tracks": [
       {"target": "camera", "property": "rotation", "keys": [[0, [0, 0, 0]], [1, [0, 5, 0]]]}]}
-  })", 0);
+  })",
+                                        0);
   const float f = 10.5f / std::tan(30.0f * kPi / 180.0f);
   EXPECT_NEAR(r.at("flow", 10, 10, 0), f * std::tan(5.0f * kPi / 180.0f), 1e-3f);
   EXPECT_NEAR(r.at("flow", 10, 10, 1), 0.0f, 1e-4f);
@@ -102,14 +75,15 @@ TEST(Flow, TurningCameraMovesTheBackground) {
 // position-pass point turned by the frame's rotation, minus the pixel centre.
 TEST(Flow, SpinningObjectFollowsItsRotation) {
   const fs::path dir = fs::temp_directory_path() / "candela_flow_spin";
-  const FlowRender r = renderFlow(R"({
+  const test::FlowRender r = renderFlow(R"({
     "camera": {"width": 16, "height": 12, "fov": 60, "spp": 1, "position": [0, 0, 40]},
     "render": {"antialiasing": false},
     "objects": [{"id": "card", "file": "quad.obj", "position": [2, 0, 0], "scale": 0.1}],
     "lights": [{"position": [0, 0, 30], "intensity": 1000}],
     "animation": {"frames": 8, "tracks": [
       {"target": "card", "property": "rotation", "keys": [[0, [0, 0, 0]], [7, [0, 70, 0]]]}]}
-  })", 3, writeQuad(dir));
+  })",
+                                        3, writeQuad(dir));
   const float f = 8.0f / std::tan(30.0f * kPi / 180.0f);
   const Mat3 turn = eulerRotation(Vec3(0, 40, 0)) * eulerRotation(Vec3(0, 30, 0)).transposed();
   int covered = 0;
@@ -129,7 +103,7 @@ TEST(Flow, SpinningObjectFollowsItsRotation) {
 
 // Nothing moves in a still scene (or after an animation's last key): the flow is exactly 0.
 TEST(Flow, StillSceneHasExactlyZeroFlow) {
-  const FlowRender r = renderFlow(R"({
+  const test::FlowRender r = renderFlow(R"({
     "camera": {"width": 12, "height": 8, "fov": 50, "spp": 4, "position": [0, 0, 10],
                "rotation": [10, 20, 0]},
     "environment": {"color": 0.2},

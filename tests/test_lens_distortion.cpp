@@ -9,15 +9,12 @@
 #include <array>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <string>
 #include <vector>
 
-#include "render/aov_layers.h"
+#include "flow_test_util.h"
 #include "render/camera_ray.h"
 #include "render_test_util.h"
-#include "scene/animation.h"
-#include "scene/flow_motion.h"
 
 namespace fs = std::filesystem;
 
@@ -79,47 +76,24 @@ TEST(LensDistortion, RaysProjectBackOntoTheirPixels) {
   EXPECT_GT(std::hypot(unbent[0], unbent[1]), 3.0);
 }
 
-std::string writeQuad(const fs::path& dir) {
-  fs::create_directories(dir);
-  std::ofstream(dir / "quad.obj") << "v -100 -100 0\nv 100 -100 0\nv 100 100 0\nv -100 100 0\n"
-                                     "f 1 2 3 4\n";
-  return dir.string();
-}
-
 // The renderer uses the lens: with antialiasing off each pixel's samples pass through its
 // centre, so the position pass holds the plane's point there, and OpenCV projects it back onto the
 // centre. The camera then slides by (0.3, 0.2, 0) before the plane: the flow pass moves each
 // point by its projection from the second camera less that from the first.
 TEST(LensDistortion, PositionsAndFlowFollowTheLens) {
   const fs::path dir = fs::temp_directory_path() / "candela_lens_distortion";
-  const std::string json = "{" + distortedCamera() + R"(,
-    "render": {"antialiasing": false},
-    "objects": [{"file": "quad.obj", "position": [0, 0, -7.5]}],
-    "lights": [{"position": [0, 0, 0], "intensity": 100}],
-    "animation": {"frames": 2, "tracks": [
-      {"target": "camera", "property": "position", "keys": [[0, [0, 0, 0]], [1, [0.3, 0.2, 0]]]}]}
-  })";
-  const SceneDesc desc = parseSceneText(json, "test.json", writeQuad(dir));
-  const SceneDesc now = sceneAtFrame(desc, 0), next = sceneAtFrame(desc, 1);
-  SceneData scene = flattenScene(now);
-  applyFlowMotion(scene, flowMotion(now, next));
-  RenderOptions options;
-  options.aovs = true;
-  options.adjust.spp = 1;
-  const RenderResult result = renderCpu(scene.view(), options);
-  const std::vector<ImageLayer> layers =
-      makeAovLayers(scene, parseAovList("position,flow"), result.aovs);
-  const ImageLayer &position = layers[0], &flow = layers[1];
+  const test::FlowRender r = test::renderFlow(
+      "{" + distortedCamera(R"(, "spp": 1)") + "," + test::kCameraSlidingPastTheQuad + "}", 0,
+      test::writeQuad(dir));
   double worstPosition = 0, worstFlow = 0;
   for (uint32_t y = 0; y < 120; ++y)
     for (uint32_t x = 0; x < 160; ++x) {
-      const size_t i = size_t(y) * 160 + x;
-      const Vec3 p(position.pixels[3 * i], position.pixels[3 * i + 1], position.pixels[3 * i + 2]);
+      const Vec3 p(r.at("position", x, y, 0), r.at("position", x, y, 1), r.at("position", x, y, 2));
       const std::array<double, 2> a = projectOpenCv(cameraSpace(p));
       worstPosition = std::max(worstPosition, std::hypot(a[0] - (x + 0.5), a[1] - (y + 0.5)));
       const std::array<double, 2> b = projectOpenCv(cameraSpace(p, Vec3(0.3f, 0.2f, 0.0f)));
-      worstFlow = std::max(worstFlow, std::hypot(flow.pixels[2 * i] - (b[0] - a[0]),
-                                                 flow.pixels[2 * i + 1] - (b[1] - a[1])));
+      worstFlow = std::max(worstFlow, std::hypot(r.at("flow", x, y, 0) - (b[0] - a[0]),
+                                                 r.at("flow", x, y, 1) - (b[1] - a[1])));
     }
   EXPECT_LT(worstPosition, 2e-3);
   EXPECT_LT(worstFlow, 2e-3);

@@ -12,12 +12,11 @@
 #include <vector>
 
 #include "core/constants.h"
+#include "flow_test_util.h"
 #include "render/aov_layers.h"
 #include "render/camera_ray.h"
 #include "render_test_util.h"
-#include "scene/animation.h"
 #include "scene/camera_resolve.h"
-#include "scene/flow_motion.h"
 
 namespace candela {
 namespace {
@@ -61,20 +60,12 @@ TEST(Panorama, FlowOfATurningCameraShiftsTheRows) {
     "environment": {"color": 0.5},
     "animation": {"frames": 2, "tracks": [
       {"target": "camera", "property": "rotation", "keys": [[0, [0, 0, 0]], [1, [0, 10, 0]]]}]}})";
-  const SceneDesc desc = parseSceneText(json, "test.json", ".");
-  const SceneDesc now = sceneAtFrame(desc, 0), next = sceneAtFrame(desc, 1);
-  SceneData scene = flattenScene(now);
-  applyFlowMotion(scene, flowMotion(now, next));
-  RenderOptions options;
-  options.aovs = true;
-  const RenderResult result = renderCpu(scene.view(), options);
-  const ImageLayer flow = makeAovLayers(scene, parseAovList("flow"), result.aovs)[0];
+  const test::FlowRender r = test::renderFlow(json);
   const float shift = 72.0f * 10.0f / 360.0f;
   for (uint32_t y = 2; y < 34; ++y)  // away from the poles, where longitude is undefined
     for (uint32_t x = 0; x < 72; ++x) {
-      const size_t i = 2 * (size_t(y) * 72 + x);
-      ASSERT_NEAR(flow.pixels[i], shift, 1e-3f) << x << "," << y;
-      ASSERT_NEAR(flow.pixels[i + 1], 0.0f, 1e-3f) << x << "," << y;
+      ASSERT_NEAR(r.at("flow", x, y, 0), shift, 1e-3f) << x << "," << y;
+      ASSERT_NEAR(r.at("flow", x, y, 1), 0.0f, 1e-3f) << x << "," << y;
     }
 }
 
