@@ -93,7 +93,7 @@ TEST(Panorama, CameraMatricesNameTheProjection) {
                      "position": [1, 2, 3], "look_at": [0, 0, 0]}})",
       "test.json", ".");
   const CameraMatrices m = cameraMatrices(desc.camera, desc.file);
-  EXPECT_TRUE(m.panorama);
+  EXPECT_EQ(m.projection, CameraProjection::Equirectangular);
   EXPECT_TRUE(m.distortion.empty());
 }
 
@@ -110,8 +110,8 @@ TEST(Panorama, RefusesWhatAPanoramaDoesNotUse) {
             "test.json: camera.aperture_radius: not used by an equirectangular camera (its image "
             "spans every direction)");
   EXPECT_EQ(cameraError(R"("projection": "equirectangula")"),
-            "test.json: camera.projection: expected \"perspective\" or \"equirectangular\", got "
-            "a string \"equirectangula\", did you mean \"equirectangular\"?");
+            "test.json: camera.projection: expected one of \"perspective\", \"equirectangular\", "
+            "\"fisheye\", got a string \"equirectangula\", did you mean \"equirectangular\"?");
   EXPECT_EQ(cameraError(R"("projection": "equirectangular")",
                         test::oneTrack("camera", "fov", "[[0, 40], [2, 50]]")),
             "test.json: animation.tracks[0].property: \"fov\" is not used by an equirectangular "

@@ -138,8 +138,9 @@ class Scene:
         `candela render --aov camera` writes beside the image (docs/aovs.md, *The camera file*):
         {"width", "height", "intrinsics": K (3, 3), "extrinsics": [R t; 0 1] (4, 4)}, and
         "aperture_radius" and "focus_distance" for a thin lens, "distortion" (OpenCV's
-        coefficients, 5 or 8 of them) for a camera with a lens distortion; an equirectangular
-        camera has "projection": "equirectangular" in place of "intrinsics". K puts pixel centres at +0.5
+        coefficients, 5 or 8 of them; a fisheye's 4) for a camera with a lens distortion;
+        "projection" for a fisheye or an equirectangular camera, which has it in place of
+        "intrinsics". K puts pixel centres at +0.5
         (OpenCV's cx and cy are 0.5 less); a world point p is at R p + t in OpenCV's camera axes
         (+x right, +y down, +z forward). The matrices are float64 arrays holding the float32
         values the renderer uses; given back as a scene's "camera" (the arrays as they are, or

@@ -12,15 +12,16 @@
 
 namespace candela {
 
-// How the image's pixels map to directions: through K (and a lens distortion), or as an
-// equirectangular panorama of every direction about the camera (render/camera_ray.h).
-enum class CameraProjection : uint32_t { Perspective = 0, Equirectangular = 1 };
+// How the image's pixels map to directions: through K (and a lens distortion), through K and a
+// fisheye lens (render/fisheye.h), or as an equirectangular panorama of every direction about the
+// camera (render/panorama.h).
+enum class CameraProjection : uint32_t { Perspective = 0, Equirectangular = 1, Fisheye = 2 };
 
 struct Camera {
   uint32_t width = 512, height = 512;
   CameraProjection projection = CameraProjection::Perspective;
   Mat3 inverseK;  // pixel (u, v, 1) -> camera-space direction with z = 1 (distorted)
-  LensDistortion distortion;
+  LensDistortion distortion;  // a fisheye's coefficients are its k1 to k4
   Mat3 cameraToWorld;  // OpenCV camera axes -> world
   Vec3 position;       // camera centre in world space
   float apertureRadius = 0;

@@ -5,6 +5,7 @@
 #include "core/sampling.h"
 #include "geometry/ray.h"
 #include "render/camera.h"
+#include "render/fisheye.h"
 #include "render/panorama.h"
 
 namespace candela {
@@ -24,7 +25,9 @@ CANDELA_HDI Ray generateCameraRay(const Camera& cam, float px, float py, float l
   if (cam.projection == CameraProjection::Equirectangular) return panoramaRay(cam, px, py);
   Vec3 dir = cam.inverseK * Vec3(px, py, 1.0f);
   dir = dir / dir.z;  // a point on the plane z = 1 in front of the camera
-  if (cam.distortion.enabled) {
+  if (cam.projection == CameraProjection::Fisheye) {
+    dir = fisheyeDirection(cam.distortion, Vec2(dir.x, dir.y));
+  } else if (cam.distortion.enabled) {
     const Vec2 straight = undistortNormalized(cam.distortion, Vec2(dir.x, dir.y));
     dir = Vec3(straight.x, straight.y, 1.0f);
   }

@@ -4,6 +4,7 @@
 
 #include "core/vec2.h"
 #include "render/aov.h"
+#include "render/fisheye.h"
 #include "render/panorama.h"
 #include "render/scene_view.h"
 
@@ -14,6 +15,12 @@ namespace candela {
 CANDELA_HDI bool projectToPixel(const FlowCamera& camera, const Vec3& c, Vec2* pixel) {
   if (camera.projection == CameraProjection::Equirectangular) {
     *pixel = panoramaPixel(c, camera.width, camera.height);
+    return true;
+  }
+  if (camera.projection == CameraProjection::Fisheye) {
+    const Vec2 n = fisheyePoint(camera.distortion, c);
+    const Vec3 h = camera.K * Vec3(n.x, n.y, 1.0f);
+    *pixel = Vec2(h.x, h.y);
     return true;
   }
   if (!(c.z > 0.0f)) return false;

@@ -10,13 +10,17 @@
 #include "core/constants.h"
 #include "core/rotation.h"
 #include "render/camera_ray.h"
+#include "render/fisheye.h"
 #include "scene/scene_error.h"
 
 namespace candela {
 
 Mat3 intrinsicMatrix(const CameraDesc& desc) {
   if (desc.intrinsics) return *desc.intrinsics;
-  const float f = float(desc.width) / (2.0f * std::tan(desc.fov * (kPi / 360.0f)));
+  // An equidistant fisheye's image radius is f theta: half the fov at half the width.
+  const float f = desc.projection == CameraProjection::Fisheye
+                      ? float(desc.width) / (desc.fov * (kPi / 180.0f))
+                      : float(desc.width) / (2.0f * std::tan(desc.fov * (kPi / 360.0f)));
   Mat3 k;
   k.m[0][0] = f;
   k.m[1][1] = f;
@@ -159,6 +163,54 @@ std::optional<CameraProblem> distortionProblem(const Camera& cam, float beyondEd
   return std::nullopt;
 }
 
+// A fisheye camera's rays find each pixel's angle from the axis by Newton's method
+// (render/fisheye.h), which needs the image radius to grow with the angle, and every pixel's
+// angle must stay short of straight behind (180 degrees), past which directions would repeat.
+// Checked as distortionProblem checks a perspective lens, on a grid of the region samples reach.
+std::optional<CameraProblem> fisheyeProblem(const Camera& cam, const CameraDesc& desc,
+                                            float beyondEdge) {
+  const LensDistortion& d = cam.distortion;
+  const std::string path = d.enabled ? "camera.distortion" : intrinsicsPath(desc);
+  Mat3 k;
+  invert(cam.inverseK, &k);
+  constexpr int kSteps = 64;
+  const float lo = 0.0f - beyondEdge;
+  const float w = float(cam.width) + beyondEdge, h = float(cam.height) + beyondEdge;
+  float widest = 0.0f;
+  for (int j = 0; j <= kSteps; ++j)
+    for (int i = 0; i <= kSteps; ++i) {
+      const float px = lo + (w - lo) * float(i) / kSteps, py = lo + (h - lo) * float(j) / kSteps;
+      Vec3 n = cam.inverseK * Vec3(px, py, 1.0f);
+      n = n / n.z;
+      const std::string at = "pixel (" + formatNumber(px) + ", " + formatNumber(py) + ")";
+      const float radius = std::sqrt(n.x * n.x + n.y * n.y);
+      const float theta = fisheyeAngle(d, radius);
+      if (!(theta < 0.999f * kPi))
+        return CameraProblem{path, "sees past straight behind the camera at " + at +
+                                       " (180 degrees from its axis, where directions would "
+                                       "repeat); expected a narrower view"};
+      const Vec2 back = fisheyePoint(d, fisheyeDirection(d, Vec2(n.x, n.y)));
+      const Vec3 pixel = k * Vec3(back.x, back.y, 1.0f);
+      if (!(std::fabs(pixel.x - px) + std::fabs(pixel.y - py) < 0.01f))
+        return CameraProblem{path, "folds the image over itself near " + at +
+                                       ", where no direction or more than one would reach a "
+                                       "pixel; expected coefficients whose distortion grows "
+                                       "steadily out to the image's corners"};
+      widest = std::max(widest, theta);
+    }
+  for (int i = 1; i <= 1024; ++i) {
+    float slope;
+    fisheyeRadius(d, std::min(widest * 1.01f, kPi) * float(i) / 1024.0f, &slope);
+    if (!(slope > 0.0f))
+      return CameraProblem{path,
+                           "folds back within the image (its image radius stops growing "
+                           "before the corners' angle from the axis); expected "
+                           "coefficients whose distortion grows steadily out to the "
+                           "image's corners"};
+  }
+  return std::nullopt;
+}
+
 // The contract's "rotation" camera looks along -z with +y up; OpenCV axes flip y and z.
 const Mat3 kGlToOpenCv = Mat3::diagonal(Vec3(1.0f, -1.0f, -1.0f));
 
@@ -203,6 +255,7 @@ std::optional<CameraProblem> makeCamera(const CameraDesc& desc, float beyondEdge
   // The pinhole's rays first: the lens is undone on top of them, where it can be.
   if (std::optional<CameraProblem> problem = rayProblem(cam, desc, beyondEdge)) return problem;
   cam.distortion = desc.distortion;
+  if (cam.projection == CameraProjection::Fisheye) return fisheyeProblem(cam, desc, beyondEdge);
   return distortionProblem(cam, beyondEdge);
 }
 
@@ -220,6 +273,18 @@ Camera resolveCamera(const CameraDesc& desc, const std::string& fileLabel) {
   if (const std::optional<CameraProblem> problem = makeCamera(desc, 0.0f, &cam))
     throw SceneError(fileLabel + ": " + problem->path + ": " + problem->message);
   return cam;
+}
+
+const char* projectionName(CameraProjection projection) {
+  switch (projection) {
+    case CameraProjection::Equirectangular:
+      return "equirectangular";
+    case CameraProjection::Fisheye:
+      return "fisheye";
+    case CameraProjection::Perspective:
+      break;
+  }
+  return "perspective";
 }
 
 AffineRows affineRows(const Mat3& m, const Vec3& p) {
@@ -250,9 +315,11 @@ CameraMatrices cameraMatrices(const CameraDesc& desc, const std::string& fileLab
     out.apertureRadius = cam.apertureRadius;
     out.focusDistance = cam.focusDistance;
   }
-  out.panorama = cam.projection == CameraProjection::Equirectangular;
+  out.projection = cam.projection;
   const LensDistortion& d = cam.distortion;
-  if (d.enabled) {
+  if (d.enabled && cam.projection == CameraProjection::Fisheye) {
+    out.distortion = {d.k1, d.k2, d.k3, d.k4};
+  } else if (d.enabled) {
     out.distortion = {d.k1, d.k2, d.p1, d.p2, d.k3};
     if (d.k4 != 0.0f || d.k5 != 0.0f || d.k6 != 0.0f)
       out.distortion.insert(out.distortion.end(), {d.k4, d.k5, d.k6});

@@ -47,11 +47,15 @@ struct CameraMatrices {
   Vec3 translation;          // t: a world point p is at R p + t in camera space
   float apertureRadius = 0;  // a thin lens where above 0, focused at focusDistance along +z
   float focusDistance = 0;
-  // OpenCV's distortion coefficients, as many as say the lens (5, or 8 for the rational model);
-  // none without one.
+  // OpenCV's distortion coefficients, as many as say the lens (5, or 8 for the rational model; a
+  // fisheye's 4); none without one.
   std::vector<float> distortion;
-  bool panorama = false;  // equirectangular: no K (`intrinsics` is the fov's, unused)
+  // Equirectangular: no K (`intrinsics` is the fov's, unused).
+  CameraProjection projection = CameraProjection::Perspective;
 };
+
+// "perspective", "equirectangular" or "fisheye", as a scene's camera names it.
+const char* projectionName(CameraProjection projection);
 
 // The matrices of the camera `desc` makes; throws SceneError as resolveCamera does.
 CameraMatrices cameraMatrices(const CameraDesc& desc, const std::string& fileLabel);

@@ -108,11 +108,12 @@ std::string encodeCamera(const SceneDesc& desc) {
   for (int i = 0; i < 3; ++i)
     intrinsics[i] = {c.intrinsics.m[i][0], c.intrinsics.m[i][1], c.intrinsics.m[i][2]};
   std::string text =
-      "{\n  \"width\": " + std::to_string(c.width) +
-      ",\n  \"height\": " + std::to_string(c.height) +
-      (c.panorama ? ",\n  \"projection\": \"equirectangular\""
-                  : ",\n  \"intrinsics\": " + matrixText(intrinsics, "  ")) +
-      ",\n  \"extrinsics\": " + matrixText(affineRows(c.rotation, c.translation), "  ");
+      "{\n  \"width\": " + std::to_string(c.width) + ",\n  \"height\": " + std::to_string(c.height);
+  if (c.projection != CameraProjection::Perspective)
+    text += ",\n  \"projection\": \"" + std::string(projectionName(c.projection)) + "\"";
+  if (c.projection != CameraProjection::Equirectangular)
+    text += ",\n  \"intrinsics\": " + matrixText(intrinsics, "  ");
+  text += ",\n  \"extrinsics\": " + matrixText(affineRows(c.rotation, c.translation), "  ");
   if (c.apertureRadius > 0.0f)
     text += ",\n  \"aperture_radius\": " + floatText(c.apertureRadius) +
             ",\n  \"focus_distance\": " + floatText(c.focusDistance);

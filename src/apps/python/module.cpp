@@ -415,10 +415,9 @@ NB_MODULE(_candela, m) {
         nb::dict camera;
         camera["width"] = c.width;
         camera["height"] = c.height;
-        if (c.panorama)
-          camera["projection"] = "equirectangular";
-        else
-          camera["intrinsics"] = intrinsics;
+        if (c.projection != CameraProjection::Perspective)
+          camera["projection"] = projectionName(c.projection);
+        if (c.projection != CameraProjection::Equirectangular) camera["intrinsics"] = intrinsics;
         camera["extrinsics"] = affineRows(c.rotation, c.translation);
         if (c.apertureRadius > 0.0f) {
           camera["aperture_radius"] = c.apertureRadius;

@@ -88,6 +88,35 @@ LensDistortion readDistortion(const JsonValue& value) {
   return d;
 }
 
+// cv::fisheye's coefficients D = [k1, k2, k3, k4] (render/fisheye.h), kept as k1 to k4.
+LensDistortion readFisheyeDistortion(const JsonValue& value) {
+  const std::string expected = "OpenCV's fisheye coefficients, an array [k1, k2, k3, k4]";
+  const std::vector<JsonValue> elements = value.elements(expected);
+  if (elements.size() != 4) value.failExpected(expected);
+  LensDistortion d;
+  d.k1 = elements[0].number();
+  d.k2 = elements[1].number();
+  d.k3 = elements[2].number();
+  d.k4 = elements[3].number();
+  d.enabled = d.k1 != 0.0f || d.k2 != 0.0f || d.k3 != 0.0f || d.k4 != 0.0f;
+  return d;
+}
+
+// "projection": a perspective camera's (the default), an equirectangular panorama's, which spans
+// every direction and so has no K, lens or distortion, or a fisheye's, which has no thin lens.
+void readProjection(JsonObject& fields, const JsonValue& value, CameraDesc& camera) {
+  const size_t choice = value.choice({"perspective", "equirectangular", "fisheye"});
+  if (choice == 1) {
+    camera.projection = CameraProjection::Equirectangular;
+    for (const char* key : {"fov", "intrinsics", "distortion", "aperture_radius", "focus_distance"})
+      fields.reject(key, "not used by an equirectangular camera (its image spans every direction)");
+  } else if (choice == 2) {
+    camera.projection = CameraProjection::Fisheye;
+    for (const char* key : {"aperture_radius", "focus_distance"})
+      fields.reject(key, "not used by a fisheye camera (a pinhole's)");
+  }
+}
+
 void readPose(JsonObject& fields, CameraDesc& camera) {
   for (const char* key : {"position", "rotation", "look_at"}) fields.exclusive("extrinsics", key);
   fields.exclusive("rotation", "look_at");
@@ -141,25 +170,24 @@ CameraDesc readCamera(const JsonValue& value, RenderSettings& render) {
 
   checkImageSize(fields, camera);
 
-  if (std::optional<JsonValue> projection = fields.get("projection")) {
-    if (projection->choice({"perspective", "equirectangular"}) == 1) {
-      camera.projection = CameraProjection::Equirectangular;
-      for (const char* key :
-           {"fov", "intrinsics", "distortion", "aperture_radius", "focus_distance"})
-        fields.reject(key,
-                      "not used by an equirectangular camera (its image spans every direction)");
-    }
-  }
+  if (std::optional<JsonValue> projection = fields.get("projection"))
+    readProjection(fields, *projection, camera);
+  const bool fisheye = camera.projection == CameraProjection::Fisheye;
   fields.exclusive("fov", "intrinsics");
   if (std::optional<JsonValue> fov = fields.get("fov")) {
-    const std::string expectation = "a number between 0 and 180 (exclusive)";
+    // An equidistant fisheye's angle grows with the image radius without bound; a perspective
+    // camera's reaches 90 degrees at infinity.
+    const float widest = fisheye ? 360.0f : 180.0f;
+    const std::string expectation =
+        fisheye ? "a number above 0 and at most 360" : "a number between 0 and 180 (exclusive)";
     camera.fov = fov->number(expectation);
-    if (!(camera.fov > 0 && camera.fov < 180)) fov->failExpected(expectation);
+    if (!(camera.fov > 0 && (camera.fov < widest || (fisheye && camera.fov == widest))))
+      fov->failExpected(expectation);
   }
   if (std::optional<JsonValue> intrinsics = fields.get("intrinsics"))
     camera.intrinsics = readIntrinsics(*intrinsics);
   if (std::optional<JsonValue> distortion = fields.get("distortion"))
-    camera.distortion = readDistortion(*distortion);
+    camera.distortion = fisheye ? readFisheyeDistortion(*distortion) : readDistortion(*distortion);
 
   readPose(fields, camera);
 
