@@ -143,6 +143,18 @@ TEST(Fisheye, RefusesALensItCannotUndo) {
             "no direction or more than one would reach a pixel; expected coefficients whose "
             "distortion grows steadily out to the image's corners");
   EXPECT_EQ(cameraError(R"("fov": 180)"), "(no error)");
+  // A fisheye's fov track may go past 180 degrees too, and is checked at every frame.
+  EXPECT_EQ(test::loadError(R"({"camera": {"width": 64, "height": 64, "projection": "fisheye"},
+      "animation": {"frames": 3, "tracks": [
+        {"target": "camera", "property": "fov", "keys": [[0, 170], [2, 361]]}]}})",
+                            "."),
+            "test.json: animation.tracks[0].keys[1][1]: expected a number above 0 and at most "
+            "360, got 361");
+  EXPECT_EQ(test::loadError(R"({"camera": {"width": 64, "height": 64, "projection": "fisheye"},
+      "animation": {"frames": 3, "tracks": [
+        {"target": "camera", "property": "fov", "keys": [[0, 170], [2, 200]]}]}})",
+                            "."),
+            "(no error)");
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include "scene/animation.h"
 #include "scene/camera_resolve.h"
 #include "scene/light_emission_desc.h"
+#include "scene/read/camera_reader.h"
 #include "scene/read/did_you_mean.h"
 #include "scene/read/entity_reader.h"
 
@@ -120,18 +121,14 @@ void readProperty(const JsonValue& value, const std::string& targetName, AnimTra
              list);
 }
 
-Vec3 readValue(const JsonValue& value, AnimProperty property) {
+Vec3 readValue(const JsonValue& value, AnimProperty property, const CameraDesc& camera) {
   switch (property) {
     case AnimProperty::Position:
     case AnimProperty::Rotation:
     case AnimProperty::LookAt:
     case AnimProperty::Up: return value.vec3();
-    case AnimProperty::Fov: {
-      const std::string expectation = "a number between 0 and 180 (exclusive)";
-      const float fov = value.number(expectation);
-      if (!(fov > 0 && fov < 180)) value.failExpected(expectation);
-      return Vec3(fov);
-    }
+    case AnimProperty::Fov:
+      return Vec3(readFov(value, camera.projection));
     case AnimProperty::ApertureRadius:
     case AnimProperty::Intensity: return Vec3(value.nonNegativeNumber());
     case AnimProperty::FocusDistance:
@@ -155,7 +152,7 @@ Vec3 readValue(const JsonValue& value, AnimProperty property) {
   return Vec3(0.0f);
 }
 
-void readKeys(const JsonValue& value, AnimTrack& track) {
+void readKeys(const JsonValue& value, AnimTrack& track, const CameraDesc& camera) {
   const std::string expectation = "a non-empty array of [frame, value] keys";
   const std::vector<JsonValue> keys = value.elements(expectation);
   if (keys.empty()) value.failExpected(expectation);
@@ -165,7 +162,7 @@ void readKeys(const JsonValue& value, AnimTrack& track) {
     const std::vector<JsonValue> parts = key.elements();
     AnimKey k;
     k.frame = uint32_t(parts[0].integer(0, UINT32_MAX, "a non-negative integer frame"));
-    k.value = readValue(parts[1], track.property);
+    k.value = readValue(parts[1], track.property, camera);
     if (!track.keys.empty()) {
       const AnimKey& previous = track.keys.back();
       if (k.frame <= previous.frame)
@@ -379,7 +376,7 @@ AnimationDesc readAnimation(const JsonValue& value, const SceneDesc& scene) {
       if (!previous.second)
         element.fail(targetName + "'s " + property.string() + " is already animated by " +
                      previous.first->second);
-      readKeys(t.require("keys"), track);
+      readKeys(t.require("keys"), track, scene.camera);
       t.finish();
       animation.tracks.push_back(std::move(track));
     }

@@ -158,6 +158,15 @@ void checkImageSize(JsonObject& fields, const CameraDesc& camera) {
 
 }  // namespace
 
+float readFov(const JsonValue& value, CameraProjection projection) {
+  const bool fisheye = projection == CameraProjection::Fisheye;
+  const std::string expectation =
+      fisheye ? "a number above 0 and at most 360" : "a number between 0 and 180 (exclusive)";
+  const float fov = value.number(expectation);
+  if (!(fov > 0 && (fisheye ? fov <= 360 : fov < 180))) value.failExpected(expectation);
+  return fov;
+}
+
 CameraDesc readCamera(const JsonValue& value, RenderSettings& render) {
   JsonObject fields(value, {"width", "height", "fov", "intrinsics", "position", "rotation",
                             "look_at", "up", "extrinsics", "spp", "rays", "aperture_radius",
@@ -174,16 +183,8 @@ CameraDesc readCamera(const JsonValue& value, RenderSettings& render) {
     readProjection(fields, *projection, camera);
   const bool fisheye = camera.projection == CameraProjection::Fisheye;
   fields.exclusive("fov", "intrinsics");
-  if (std::optional<JsonValue> fov = fields.get("fov")) {
-    // An equidistant fisheye's angle grows with the image radius without bound; a perspective
-    // camera's reaches 90 degrees at infinity.
-    const float widest = fisheye ? 360.0f : 180.0f;
-    const std::string expectation =
-        fisheye ? "a number above 0 and at most 360" : "a number between 0 and 180 (exclusive)";
-    camera.fov = fov->number(expectation);
-    if (!(camera.fov > 0 && (camera.fov < widest || (fisheye && camera.fov == widest))))
-      fov->failExpected(expectation);
-  }
+  if (std::optional<JsonValue> fov = fields.get("fov"))
+    camera.fov = readFov(*fov, camera.projection);
   if (std::optional<JsonValue> intrinsics = fields.get("intrinsics"))
     camera.intrinsics = readIntrinsics(*intrinsics);
   if (std::optional<JsonValue> distortion = fields.get("distortion"))

@@ -16,6 +16,11 @@ namespace candela {
 // The most pixels an image may have (16384 x 16384): its float sums alone take 3 GiB.
 constexpr uint64_t kMaxPixels = uint64_t(1) << 28;
 
+// A field of view in degrees for a camera of `projection`: above 0 and below 180 for a
+// perspective camera (whose angle reaches 90 degrees each way at infinity), up to 360 for an
+// equidistant fisheye.
+float readFov(const JsonValue& value, CameraProjection projection);
+
 // The camera's spp (the scene's samples per pixel) goes to `render`.
 CameraDesc readCamera(const JsonValue& value, RenderSettings& render);
 
