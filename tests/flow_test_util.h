@@ -2,6 +2,9 @@
 // frame and the passes that explain it, and a large square to slide cameras past.
 #pragma once
 
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -48,6 +51,39 @@ constexpr const char* kCameraSlidingPastTheQuad = R"(
     "lights": [{"position": [0, 0, 0], "intensity": 100}],
     "animation": {"frames": 2, "tracks": [
       {"target": "camera", "property": "position", "keys": [[0, [0, 0, 0]], [1, [0.3, 0.2, 0]]]}]})";
+
+// Camera space (OpenCV's axes: world x, -y, -z) of world point p for a camera at `eye` with
+// rotation 0, in double.
+inline std::array<double, 3> unturnedCameraSpace(const Vec3& p, const Vec3& eye = Vec3(0.0f)) {
+  return {double(p.x) - eye.x, -(double(p.y) - eye.y), -(double(p.z) - eye.z)};
+}
+
+// What the test's own projection `project` (camera space -> pixel) says of a render of the camera
+// sliding past the quad (kCameraSlidingPastTheQuad): the largest distance from a pixel's centre
+// to the projection of its point in the position pass, and the largest difference between its
+// flow and the difference of that point's projections from the two cameras; over the `seen`
+// pixels whose samples hit the quad.
+struct SlidingCameraErrors {
+  double position = 0, flow = 0;
+  int seen = 0;
+};
+template <class Project>
+SlidingCameraErrors slidingCameraErrors(const FlowRender& r, uint32_t width, uint32_t height,
+                                        Project project) {
+  SlidingCameraErrors e;
+  for (uint32_t y = 0; y < height; ++y)
+    for (uint32_t x = 0; x < width; ++x) {
+      if (r.at("instance", x, y) == 0.0f) continue;
+      ++e.seen;
+      const Vec3 p(r.at("position", x, y, 0), r.at("position", x, y, 1), r.at("position", x, y, 2));
+      const std::array<double, 2> a = project(unturnedCameraSpace(p));
+      const std::array<double, 2> b = project(unturnedCameraSpace(p, Vec3(0.3f, 0.2f, 0.0f)));
+      e.position = std::max(e.position, std::hypot(a[0] - (x + 0.5), a[1] - (y + 0.5)));
+      e.flow = std::max(e.flow, std::hypot(r.at("flow", x, y, 0) - (b[0] - a[0]),
+                                           r.at("flow", x, y, 1) - (b[1] - a[1])));
+    }
+  return e;
+}
 
 // Writes quad.obj, a square 200 across in the plane z = 0, into `dir`; returns the folder.
 inline std::string writeQuad(const std::filesystem::path& dir) {

@@ -44,12 +44,6 @@ std::array<double, 2> projectFisheye(const std::array<double, 3>& c) {
   return {kFx * radius * c[0] / rho + kCx, kFy * radius * c[1] / rho + kCy};
 }
 
-// Camera space of a world point for the camera at `eye` with rotation 0 (OpenCV's axes are world
-// (x, -y, -z)).
-std::array<double, 3> cameraSpace(const Vec3& p, const Vec3& eye = Vec3(0.0f)) {
-  return {double(p.x) - eye.x, -(double(p.y) - eye.y), -(double(p.z) - eye.z)};
-}
-
 // The corners of this 160 x 120 image lie some 105 degrees from the axis, behind the camera's
 // plane: every ray there, as everywhere, projects back onto its pixel.
 TEST(Fisheye, RaysProjectBackOntoTheirPixels) {
@@ -60,7 +54,7 @@ TEST(Fisheye, RaysProjectBackOntoTheirPixels) {
   for (float py = 0.0f; py <= 120.0f; py += 2.5f)
     for (float px = 0.0f; px <= 160.0f; px += 3.25f) {
       const Ray ray = generateCameraRay(camera, px, py, 0.5f, 0.5f);
-      const std::array<double, 3> c = cameraSpace(ray.origin + ray.direction);
+      const std::array<double, 3> c = test::unturnedCameraSpace(ray.origin + ray.direction);
       const std::array<double, 2> back = projectFisheye(c);
       worst = std::max(worst, std::hypot(back[0] - px, back[1] - py));
       widest = std::max(widest, std::atan2(std::hypot(c[0], c[1]), c[2]) * 180 / kPi);
@@ -92,22 +86,10 @@ TEST(Fisheye, PositionsAndFlowFollowTheLens) {
   const test::FlowRender r = test::renderFlow(
       "{" + fisheyeCamera(R"(, "spp": 1)") + "," + test::kCameraSlidingPastTheQuad + "}", 0,
       test::writeQuad(dir));
-  double worstPosition = 0, worstFlow = 0;
-  int seen = 0;
-  for (uint32_t y = 0; y < 120; ++y)
-    for (uint32_t x = 0; x < 160; ++x) {
-      if (r.at("instance", x, y) == 0.0f) continue;  // beyond 90 degrees, behind the plane
-      ++seen;
-      const Vec3 p(r.at("position", x, y, 0), r.at("position", x, y, 1), r.at("position", x, y, 2));
-      const std::array<double, 2> a = projectFisheye(cameraSpace(p));
-      worstPosition = std::max(worstPosition, std::hypot(a[0] - (x + 0.5), a[1] - (y + 0.5)));
-      const std::array<double, 2> b = projectFisheye(cameraSpace(p, Vec3(0.3f, 0.2f, 0.0f)));
-      worstFlow = std::max(worstFlow, std::hypot(r.at("flow", x, y, 0) - (b[0] - a[0]),
-                                                 r.at("flow", x, y, 1) - (b[1] - a[1])));
-    }
-  EXPECT_GT(seen, 160 * 120 / 2);
-  EXPECT_LT(worstPosition, 2e-3);
-  EXPECT_LT(worstFlow, 2e-3);
+  const test::SlidingCameraErrors e = test::slidingCameraErrors(r, 160, 120, projectFisheye);
+  EXPECT_GT(e.seen, 160 * 120 / 2);  // the rest lies beyond 90 degrees, behind the plane
+  EXPECT_LT(e.position, 2e-3);
+  EXPECT_LT(e.flow, 2e-3);
   fs::remove_all(dir);
 }
 

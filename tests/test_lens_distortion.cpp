@@ -49,12 +49,6 @@ std::array<double, 2> projectOpenCv(const std::array<double, 3>& c) {
   return {kFx * xd + kSkew * yd + kCx, kFy * yd + kCy};
 }
 
-// Camera space of a world point for the camera at `eye` with rotation 0: it looks down world -z
-// with +y up, so OpenCV's axes are (x, -y, -z).
-std::array<double, 3> cameraSpace(const Vec3& p, const Vec3& eye = Vec3(0.0f)) {
-  return {double(p.x) - eye.x, -(double(p.y) - eye.y), -(double(p.z) - eye.z)};
-}
-
 // Every camera ray, over a grid of points of the image and just beyond it, leaves towards what
 // OpenCV projects back onto its pixel (to a thousandth of a pixel; float rounding alone).
 TEST(LensDistortion, RaysProjectBackOntoTheirPixels) {
@@ -65,7 +59,8 @@ TEST(LensDistortion, RaysProjectBackOntoTheirPixels) {
   for (float py = -1.0f; py <= 121.0f; py += 2.75f)
     for (float px = -1.0f; px <= 161.0f; px += 3.25f) {
       const Ray ray = generateCameraRay(camera, px, py, 0.5f, 0.5f);
-      const std::array<double, 2> back = projectOpenCv(cameraSpace(ray.origin + ray.direction));
+      const std::array<double, 2> back =
+          projectOpenCv(test::unturnedCameraSpace(ray.origin + ray.direction));
       worst = std::max(worst, std::hypot(back[0] - px, back[1] - py));
     }
   EXPECT_LT(worst, 1e-3);
@@ -85,18 +80,10 @@ TEST(LensDistortion, PositionsAndFlowFollowTheLens) {
   const test::FlowRender r = test::renderFlow(
       "{" + distortedCamera(R"(, "spp": 1)") + "," + test::kCameraSlidingPastTheQuad + "}", 0,
       test::writeQuad(dir));
-  double worstPosition = 0, worstFlow = 0;
-  for (uint32_t y = 0; y < 120; ++y)
-    for (uint32_t x = 0; x < 160; ++x) {
-      const Vec3 p(r.at("position", x, y, 0), r.at("position", x, y, 1), r.at("position", x, y, 2));
-      const std::array<double, 2> a = projectOpenCv(cameraSpace(p));
-      worstPosition = std::max(worstPosition, std::hypot(a[0] - (x + 0.5), a[1] - (y + 0.5)));
-      const std::array<double, 2> b = projectOpenCv(cameraSpace(p, Vec3(0.3f, 0.2f, 0.0f)));
-      worstFlow = std::max(worstFlow, std::hypot(r.at("flow", x, y, 0) - (b[0] - a[0]),
-                                                 r.at("flow", x, y, 1) - (b[1] - a[1])));
-    }
-  EXPECT_LT(worstPosition, 2e-3);
-  EXPECT_LT(worstFlow, 2e-3);
+  const test::SlidingCameraErrors e = test::slidingCameraErrors(r, 160, 120, projectOpenCv);
+  EXPECT_EQ(e.seen, 160 * 120);
+  EXPECT_LT(e.position, 2e-3);
+  EXPECT_LT(e.flow, 2e-3);
   fs::remove_all(dir);
 }
 

@@ -117,96 +117,104 @@ bool radialGrows(const LensDistortion& d, double rMax) {
   return true;
 }
 
+// The first problem `check(px, py, n)` finds at the points (px, py) of a grid over the region
+// samples reach (the image widened by `beyondEdge` pixels each way), n being the point's K^-1
+// (px, py, 1) on the plane z = 1; none if it finds none.
+template <class Check>
+std::optional<CameraProblem> firstGridProblem(const Camera& cam, float beyondEdge, Check check) {
+  constexpr int kSteps = 64;
+  const float lo = 0.0f - beyondEdge;
+  const float w = float(cam.width) + beyondEdge, h = float(cam.height) + beyondEdge;
+  for (int j = 0; j <= kSteps; ++j)
+    for (int i = 0; i <= kSteps; ++i) {
+      const float px = lo + (w - lo) * float(i) / kSteps, py = lo + (h - lo) * float(j) / kSteps;
+      const Vec3 n = cam.inverseK * Vec3(px, py, 1.0f);
+      if (std::optional<CameraProblem> problem = check(px, py, Vec2(n.x / n.z, n.y / n.z)))
+        return problem;
+    }
+  return std::nullopt;
+}
+
+std::string pixelText(float px, float py) {
+  return "pixel (" + formatNumber(px) + ", " + formatNumber(py) + ")";
+}
+
+const char* const kSteadyLens =
+    "expected coefficients whose distortion grows steadily out to the image's corners";
+
+CameraProblem foldsAt(const std::string& path, float px, float py) {
+  return CameraProblem{path, "folds the image over itself near " + pixelText(px, py) +
+                                 ", where no direction or more than one would reach a pixel; " +
+                                 kSteadyLens};
+}
+
 // A distorted camera's rays undo its lens by Newton's method (render/lens_distortion.h), which
 // finds a pixel's one direction only where the lens maps directions onto the image one to one.
-// Checked over a grid of the region samples reach, the image widened by `beyondEdge` pixels: each
-// pixel's direction must project back onto it (to a hundredth of a pixel), with the distortion's
-// Jacobian positive there, and the radial part must grow out to the largest radius reached.
+// Checked on firstGridProblem's grid: each point's direction must project back onto it (to a
+// hundredth of a pixel), with the distortion's Jacobian positive there, and the radial part must
+// grow out to the largest radius reached.
 std::optional<CameraProblem> distortionProblem(const Camera& cam, float beyondEdge) {
   if (!cam.distortion.enabled) return std::nullopt;
   const LensDistortion& d = cam.distortion;
   Mat3 k;
   invert(cam.inverseK, &k);
   const std::string path = "camera.distortion";
-  constexpr int kSteps = 64;
-  const float lo = 0.0f - beyondEdge;
-  const float w = float(cam.width) + beyondEdge, h = float(cam.height) + beyondEdge;
   double largestR2 = 0;
-  for (int j = 0; j <= kSteps; ++j)
-    for (int i = 0; i <= kSteps; ++i) {
-      const float px = lo + (w - lo) * float(i) / kSteps, py = lo + (h - lo) * float(j) / kSteps;
-      Vec3 n = cam.inverseK * Vec3(px, py, 1.0f);
-      n = n / n.z;
-      const Vec2 straight = undistortNormalized(d, Vec2(n.x, n.y));
-      float jacobian[4];
-      const Vec2 bent = distortNormalized(d, straight.x, straight.y, jacobian);
-      const Vec3 back = k * Vec3(bent.x, bent.y, 1.0f);
-      const float miss = std::fabs(back.x - px) + std::fabs(back.y - py);
-      const float det = jacobian[0] * jacobian[3] - jacobian[1] * jacobian[2];
-      if (!(miss < 0.01f) || !(det > 0.0f))
-        return CameraProblem{
-            path, "folds the image over itself near pixel (" + formatNumber(px) + ", " +
-                      formatNumber(py) +
-                      "), where no direction or more than one would reach a pixel; expected "
-                      "coefficients whose distortion grows steadily out to the image's corners"};
-      largestR2 =
-          std::max(largestR2, double(straight.x) * straight.x + double(straight.y) * straight.y);
-    }
+  const auto check = [&](float px, float py, const Vec2& n) -> std::optional<CameraProblem> {
+    const Vec2 straight = undistortNormalized(d, n);
+    float jacobian[4];
+    const Vec2 bent = distortNormalized(d, straight.x, straight.y, jacobian);
+    const Vec3 back = k * Vec3(bent.x, bent.y, 1.0f);
+    const float miss = std::fabs(back.x - px) + std::fabs(back.y - py);
+    const float det = jacobian[0] * jacobian[3] - jacobian[1] * jacobian[2];
+    if (!(miss < 0.01f) || !(det > 0.0f)) return foldsAt(path, px, py);
+    largestR2 =
+        std::max(largestR2, double(straight.x) * straight.x + double(straight.y) * straight.y);
+    return std::nullopt;
+  };
+  if (std::optional<CameraProblem> problem = firstGridProblem(cam, beyondEdge, check))
+    return problem;
   const double rMax = std::sqrt(largestR2);
   if (!radialGrows(d, rMax * 1.01))
     return CameraProblem{path,
                          "folds back within the image (its radial distortion stops growing "
                          "before the corners' radius " +
-                             formatNumber(float(rMax)) +
-                             " of the focal length); expected coefficients whose "
-                             "distortion grows steadily out to the image's corners"};
+                             formatNumber(float(rMax)) + " of the focal length); " + kSteadyLens};
   return std::nullopt;
 }
 
 // A fisheye camera's rays find each pixel's angle from the axis by Newton's method
 // (render/fisheye.h), which needs the image radius to grow with the angle, and every pixel's
 // angle must stay short of straight behind (180 degrees), past which directions would repeat.
-// Checked as distortionProblem checks a perspective lens, on a grid of the region samples reach.
+// Checked on firstGridProblem's grid as distortionProblem checks a perspective lens.
 std::optional<CameraProblem> fisheyeProblem(const Camera& cam, const CameraDesc& desc,
                                             float beyondEdge) {
   const LensDistortion& d = cam.distortion;
   const std::string path = d.enabled ? "camera.distortion" : intrinsicsPath(desc);
   Mat3 k;
   invert(cam.inverseK, &k);
-  constexpr int kSteps = 64;
-  const float lo = 0.0f - beyondEdge;
-  const float w = float(cam.width) + beyondEdge, h = float(cam.height) + beyondEdge;
   float widest = 0.0f;
-  for (int j = 0; j <= kSteps; ++j)
-    for (int i = 0; i <= kSteps; ++i) {
-      const float px = lo + (w - lo) * float(i) / kSteps, py = lo + (h - lo) * float(j) / kSteps;
-      Vec3 n = cam.inverseK * Vec3(px, py, 1.0f);
-      n = n / n.z;
-      const std::string at = "pixel (" + formatNumber(px) + ", " + formatNumber(py) + ")";
-      const float radius = std::sqrt(n.x * n.x + n.y * n.y);
-      const float theta = fisheyeAngle(d, radius);
-      if (!(theta < 0.999f * kPi))
-        return CameraProblem{path, "sees past straight behind the camera at " + at +
-                                       " (180 degrees from its axis, where directions would "
-                                       "repeat); expected a narrower view"};
-      const Vec2 back = fisheyePoint(d, fisheyeDirection(d, Vec2(n.x, n.y)));
-      const Vec3 pixel = k * Vec3(back.x, back.y, 1.0f);
-      if (!(std::fabs(pixel.x - px) + std::fabs(pixel.y - py) < 0.01f))
-        return CameraProblem{path, "folds the image over itself near " + at +
-                                       ", where no direction or more than one would reach a "
-                                       "pixel; expected coefficients whose distortion grows "
-                                       "steadily out to the image's corners"};
-      widest = std::max(widest, theta);
-    }
+  const auto check = [&](float px, float py, const Vec2& n) -> std::optional<CameraProblem> {
+    const float theta = fisheyeAngle(d, std::sqrt(n.x * n.x + n.y * n.y));
+    if (!(theta < 0.999f * kPi))
+      return CameraProblem{path, "sees past straight behind the camera at " + pixelText(px, py) +
+                                     " (180 degrees from its axis, where directions would "
+                                     "repeat); expected a narrower view"};
+    const Vec2 back = fisheyePoint(d, fisheyeDirection(d, n));
+    const Vec3 pixel = k * Vec3(back.x, back.y, 1.0f);
+    if (!(std::fabs(pixel.x - px) + std::fabs(pixel.y - py) < 0.01f)) return foldsAt(path, px, py);
+    widest = std::max(widest, theta);
+    return std::nullopt;
+  };
+  if (std::optional<CameraProblem> problem = firstGridProblem(cam, beyondEdge, check))
+    return problem;
   for (int i = 1; i <= 1024; ++i) {
     float slope;
     fisheyeRadius(d, std::min(widest * 1.01f, kPi) * float(i) / 1024.0f, &slope);
     if (!(slope > 0.0f))
-      return CameraProblem{path,
-                           "folds back within the image (its image radius stops growing "
-                           "before the corners' angle from the axis); expected "
-                           "coefficients whose distortion grows steadily out to the "
-                           "image's corners"};
+      return CameraProblem{path, std::string("folds back within the image (its image radius stops "
+                                             "growing before the corners' angle from the axis); ") +
+                                     kSteadyLens};
   }
   return std::nullopt;
 }
