@@ -234,8 +234,9 @@ def scene_dict(sc, *args, **kwargs):
     for i, s in enumerate(sc['spheres']):
         if 'emission' in s['mat']:
             d[f'sphere{i}']['emitter'] = {'type': 'area', 'radiance': mr.rgb(s['mat']['emission'])}
-    if any('emission' in m['mat'] for m in sc['meshes']):
-        raise mr.ConvertError('an "emission" on a mesh: not mapped by this tool (spheres only)')
+    # Meshes with an emission need the build_mesh of tools/mitsuba_mtl.py, which maps it.
+    if mr.build_mesh is harness_build_mesh and any('emission' in m['mat'] for m in sc['meshes']):
+        raise mr.ConvertError('an "emission" on a mesh: mapped by tools/mitsuba_mtl.py only')
     for i, s in enumerate(sc['spheres']):
         if textured(s['mat']) or anisotropic(s['mat']):
             sphere = d[f'sphere{i}']
@@ -248,6 +249,7 @@ def scene_dict(sc, *args, **kwargs):
 
 
 harness_scene_dict = mr.scene_dict
+harness_build_mesh = mr.build_mesh
 cs._make_mat = make_mat
 mr.bsdf_dict = bsdf_dict
 mr.scene_dict = scene_dict

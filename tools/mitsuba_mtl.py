@@ -14,8 +14,10 @@ the printed line are the same:
 
 Mapping, per MTL material (an object without `material` or `color`; every opaque material wrapped
 in `twosided`, as the harness and mitsuba_materials.py do, since candela's reflect on both sides):
-  Ke (or map_Ke) not black   -> emissive: black diffuse + `area` emitter, radiance Ke (times
-                                map_Ke's texture; Ke 1 where black or absent); no Kd, Ks, alpha
+  Ke (or map_Ke) not black,  -> emissive: black diffuse + `area` emitter, radiance Ke (times
+  and neither a Kd that is not  map_Ke's texture; Ke 1 where black or absent)
+  black, a map_Kd nor a Ks
+  Ke with one of those       -> the material below, and the same `area` emitter; no alpha
   Ks black                   -> diffuse, reflectance Kd (0.8 without Kd); with map_Kd the texture
                                 times Kd (1 without Kd)
   Ks not black, with a       -> plastic / roughplastic (ggx), diffuse_reflectance as above,
@@ -239,12 +241,14 @@ def load_mtl(path, ctx, jpath):
         map_ke = tex('map_Ke')
         if map_ke is not None and not np.any(ke > 0):
             ke = np.ones(3)
-        if np.any(ke > 0):
-            mat = dict(type='emissive', radiance=ke)
-            if map_ke is not None:
-                mat['radiance'] = {'texture': map_ke[0], 'scale': map_ke[1], 'tint': ke.tolist(),
-                                   'uv': 'obj'}
-            out[name] = mat
+        radiance = ke
+        if map_ke is not None:
+            radiance = {'texture': map_ke[0], 'scale': map_ke[1], 'tint': ke.tolist(), 'uv': 'obj'}
+        # As candela: Ke beside a Kd that is not black, a map_Kd or a Ks reflects and emits.
+        reflects = (kd is not None and np.any(kd > 0)) or 'map_Kd' in st or \
+            np.any(real3('Ks', np.zeros(3)) > 0)
+        if np.any(ke > 0) and not reflects:
+            out[name] = dict(type='emissive', radiance=radiance)
             continue
         map_kd = tex('map_Kd')
         if map_kd is not None:
@@ -278,6 +282,9 @@ def load_mtl(path, ctx, jpath):
             mat['alpha'] = dict(constant=a, texture=map_d[0], scale=map_d[1])
         elif a < 1:
             mat['alpha'] = dict(constant=a, texture=None)
+        if np.any(ke > 0):  # an emitting surface's alpha is not used
+            mat.pop('alpha', None)
+            mat['emission'] = radiance
         out[name] = mat
     return out
 
@@ -285,7 +292,7 @@ def load_mtl(path, ctx, jpath):
 def uses_uv(mat):
     def t(c):
         return isinstance(c, dict)
-    return t(mat.get('color')) or t(mat.get('radiance')) or \
+    return t(mat.get('color')) or t(mat.get('radiance')) or t(mat.get('emission')) or \
         (mat.get('alpha') or {}).get('texture') is not None
 
 
@@ -463,9 +470,9 @@ def build_mesh(m):
     has_t = m.get('UV') is not None
     props = mi.Properties()
     props['bsdf'] = mi.load_dict(mr.bsdf_dict(m['mat']))
-    if m['mat']['type'] == 'emissive':
-        props['emitter'] = mi.load_dict({'type': 'area',
-                                         'radiance': spectrum(m['mat']['radiance'])})
+    if m['mat']['type'] == 'emissive' or 'emission' in m['mat']:
+        radiance = m['mat']['radiance' if m['mat']['type'] == 'emissive' else 'emission']
+        props['emitter'] = mi.load_dict({'type': 'area', 'radiance': spectrum(radiance)})
     mesh = mi.Mesh(m['name'], len(P), len(F), props, has_vertex_normals=has_n,
                    has_vertex_texcoords=has_t)
     params = mi.traverse(mesh)
