@@ -283,6 +283,37 @@ Camera resolveCamera(const CameraDesc& desc, const std::string& fileLabel) {
   return cam;
 }
 
+namespace {
+
+// LensDistortion's fields in the order OpenCV lists a projection's coefficients.
+std::vector<float LensDistortion::*> coefficientOrder(CameraProjection projection) {
+  using L = LensDistortion;
+  if (projection == CameraProjection::Fisheye) return {&L::k1, &L::k2, &L::k3, &L::k4};
+  return {&L::k1, &L::k2, &L::p1, &L::p2, &L::k3, &L::k4, &L::k5, &L::k6};
+}
+
+}  // namespace
+
+std::vector<float> distortionCoefficients(const LensDistortion& d, CameraProjection projection) {
+  if (!d.enabled) return {};
+  std::vector<float> list;
+  for (float LensDistortion::*k : coefficientOrder(projection)) list.push_back(d.*k);
+  // The rational model's denominator only where it is there; five is the usual list.
+  if (projection != CameraProjection::Fisheye && d.k4 == 0.0f && d.k5 == 0.0f && d.k6 == 0.0f)
+    list.resize(5);
+  return list;
+}
+
+LensDistortion lensDistortion(const std::vector<float>& coefficients, CameraProjection projection) {
+  LensDistortion d;
+  const std::vector<float LensDistortion::*> order = coefficientOrder(projection);
+  for (size_t i = 0; i < coefficients.size() && i < order.size(); ++i) {
+    d.*order[i] = coefficients[i];
+    d.enabled = d.enabled || coefficients[i] != 0.0f;
+  }
+  return d;
+}
+
 const char* projectionName(CameraProjection projection) {
   switch (projection) {
     case CameraProjection::Equirectangular:
@@ -324,14 +355,7 @@ CameraMatrices cameraMatrices(const CameraDesc& desc, const std::string& fileLab
     out.focusDistance = cam.focusDistance;
   }
   out.projection = cam.projection;
-  const LensDistortion& d = cam.distortion;
-  if (d.enabled && cam.projection == CameraProjection::Fisheye) {
-    out.distortion = {d.k1, d.k2, d.k3, d.k4};
-  } else if (d.enabled) {
-    out.distortion = {d.k1, d.k2, d.p1, d.p2, d.k3};
-    if (d.k4 != 0.0f || d.k5 != 0.0f || d.k6 != 0.0f)
-      out.distortion.insert(out.distortion.end(), {d.k4, d.k5, d.k6});
-  }
+  out.distortion = distortionCoefficients(cam.distortion, cam.projection);
   return out;
 }
 

@@ -54,6 +54,12 @@ struct CameraMatrices {
   CameraProjection projection = CameraProjection::Perspective;
 };
 
+// A lens's coefficients as OpenCV lists them for `projection` (distCoeffs' k1, k2, p1, p2, k3,
+// k4, k5, k6, the last three only where one is not 0; cv::fisheye's k1 to k4), none where the lens
+// has none; and the lens a list of them makes (as many as the list holds, the rest 0).
+std::vector<float> distortionCoefficients(const LensDistortion& d, CameraProjection projection);
+LensDistortion lensDistortion(const std::vector<float>& coefficients, CameraProjection projection);
+
 // "perspective", "equirectangular" or "fisheye", as a scene's camera names it.
 const char* projectionName(CameraProjection projection);
 

@@ -4,8 +4,11 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <string>
+#include <vector>
 
 #include "scene/along_up.h"
+#include "scene/camera_resolve.h"
 
 namespace candela {
 namespace {
@@ -59,47 +62,22 @@ void readExtrinsics(const JsonValue& value, CameraDesc& camera) {
   camera.extrinsicsT = Vec3(e[3], e[7], e[11]);
 }
 
-// OpenCV's distortion coefficients [k1, k2, p1, p2] with k3, or k3 to k6, after them (the
-// lengths cv::calibrateCamera's distCoeffs has for these models); whether the lens can be undone
-// over the image is the camera's check (scene/camera_resolve.cpp).
-LensDistortion readDistortion(const JsonValue& value) {
+// OpenCV's distortion coefficients for the camera's projection: distCoeffs' [k1, k2, p1, p2]
+// with k3, or k3 to k6, after them (the lengths cv::calibrateCamera gives for these models), or
+// cv::fisheye's D = [k1, k2, k3, k4]. Whether the lens can be undone over the image is the
+// camera's check (scene/camera_resolve.cpp).
+LensDistortion readDistortion(const JsonValue& value, CameraProjection projection) {
+  const bool fisheye = projection == CameraProjection::Fisheye;
   const std::string expected =
-      "OpenCV's distortion coefficients, an array [k1, k2, p1, p2], [k1, k2, p1, p2, k3] or [k1, "
-      "k2, p1, p2, k3, k4, k5, k6]";
+      fisheye ? "OpenCV's fisheye coefficients, an array [k1, k2, k3, k4]"
+              : "OpenCV's distortion coefficients, an array [k1, k2, p1, p2], [k1, k2, p1, p2, "
+                "k3] or [k1, k2, p1, p2, k3, k4, k5, k6]";
   const std::vector<JsonValue> elements = value.elements(expected);
-  if (elements.size() != 4 && elements.size() != 5 && elements.size() != 8)
-    value.failExpected(expected);
-  float k[8] = {};
-  bool any = false;
-  for (size_t i = 0; i < elements.size(); ++i) {
-    k[i] = elements[i].number();
-    any = any || k[i] != 0.0f;
-  }
-  LensDistortion d;
-  d.k1 = k[0];
-  d.k2 = k[1];
-  d.p1 = k[2];
-  d.p2 = k[3];
-  d.k3 = k[4];
-  d.k4 = k[5];
-  d.k5 = k[6];
-  d.k6 = k[7];
-  d.enabled = any;
-  return d;
-}
-
-// cv::fisheye's coefficients D = [k1, k2, k3, k4] (render/fisheye.h), kept as k1 to k4.
-LensDistortion readFisheyeDistortion(const JsonValue& value) {
-  const std::string expected = "OpenCV's fisheye coefficients, an array [k1, k2, k3, k4]";
-  const std::vector<JsonValue> elements = value.elements(expected);
-  if (elements.size() != 4) value.failExpected(expected);
-  LensDistortion d;
-  d.k1 = elements[0].number();
-  d.k2 = elements[1].number();
-  d.k3 = elements[2].number();
-  d.k4 = elements[3].number();
-  d.enabled = d.k1 != 0.0f || d.k2 != 0.0f || d.k3 != 0.0f || d.k4 != 0.0f;
-  return d;
+  const size_t n = elements.size();
+  if (fisheye ? n != 4 : (n != 4 && n != 5 && n != 8)) value.failExpected(expected);
+  std::vector<float> coefficients;
+  for (const JsonValue& element : elements) coefficients.push_back(element.number());
+  return lensDistortion(coefficients, projection);
 }
 
 // "projection": a perspective camera's (the default), an equirectangular panorama's, which spans
@@ -181,14 +159,13 @@ CameraDesc readCamera(const JsonValue& value, RenderSettings& render) {
 
   if (std::optional<JsonValue> projection = fields.get("projection"))
     readProjection(fields, *projection, camera);
-  const bool fisheye = camera.projection == CameraProjection::Fisheye;
   fields.exclusive("fov", "intrinsics");
   if (std::optional<JsonValue> fov = fields.get("fov"))
     camera.fov = readFov(*fov, camera.projection);
   if (std::optional<JsonValue> intrinsics = fields.get("intrinsics"))
     camera.intrinsics = readIntrinsics(*intrinsics);
   if (std::optional<JsonValue> distortion = fields.get("distortion"))
-    camera.distortion = fisheye ? readFisheyeDistortion(*distortion) : readDistortion(*distortion);
+    camera.distortion = readDistortion(*distortion, camera.projection);
 
   readPose(fields, camera);
 
