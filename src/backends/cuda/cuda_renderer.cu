@@ -79,9 +79,12 @@ __device__ void addCounters(unsigned long long* global, const RayCounters& c) {
 }
 
 // With kAovs each pixel's pass sums (render/aov.h) continue from the last pass's.
+// The scene is __grid_constant__: the integrator takes its address, and a plain parameter whose
+// address is taken is copied into every thread's local memory (its kilobyte read back from there
+// by every access) where this one is read in place from the constant bank.
 template <bool kAovs>
-__global__ void renderPassKernel(SceneView scene, uint32_t sampleBegin, uint32_t sampleCount,
-                                 float3* accumulation, AovPixel* aovs,
+__global__ void renderPassKernel(const __grid_constant__ SceneView scene, uint32_t sampleBegin,
+                                 uint32_t sampleCount, float3* accumulation, AovPixel* aovs,
                                  unsigned long long* rayCounts) {
   const uint32_t x = blockIdx.x * blockDim.x + threadIdx.x;
   const uint32_t y = blockIdx.y * blockDim.y + threadIdx.y;
