@@ -191,4 +191,12 @@ ImageRgba readImageRgba(const std::string& path) {
   }
 }
 
+ImageRgba decodeImageRgbaBytes(const std::string& bytes, const std::string& name) {
+  try {
+    return decodeImageRgba(bytes);
+  } catch (const ImageWriteError& e) {
+    throw ImageWriteError(name + ": " + e.what());
+  }
+}
+
 }  // namespace candela

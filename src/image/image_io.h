@@ -57,6 +57,9 @@ ImageRGB readImage(const std::string& path);
 // naming the path on failure.
 ImageRgba readImageRgba(const std::string& path);
 
+// The same from a PNG or JPEG file's bytes held in memory; throws ImageWriteError naming `name`.
+ImageRgba decodeImageRgbaBytes(const std::string& bytes, const std::string& name);
+
 // Whether `path` is a regular file that holds a whole image of its extension's format, by a
 // cheap look at its ends: PNG's signature and final IEND chunk, a PFM's header and the size it
 // implies, EXR's magic number. What a resumed sequence counts as a finished frame.

@@ -21,6 +21,31 @@ namespace {
 // Texture offsets are 32-bit element indices: a texture may hold at most 2^28 texels.
 constexpr uint64_t kMaxTexels = uint64_t(1) << 28;
 
+// An 8- or 16-bit image as a texture: colour from sRGB where it is read for colour, else (and its
+// alpha always) linear.
+void fromRgba(ImageRgba image, TextureUse use, TextureDesc* t, bool* hasAlpha) {
+  t->width = image.width;
+  t->height = image.height;
+  *hasAlpha = image.channels == 2 || image.channels == 4;
+  if (image.bits == 8) {
+    t->format = use == TextureUse::Color ? TextureFormat::Srgb8 : TextureFormat::Linear8;
+    t->texels8 = std::move(image.pixels8);
+    return;
+  }
+  // A 16-bit PNG keeps its precision as floats, decoded as an 8-bit file would be: colour from
+  // sRGB, masks and alpha linear.
+  t->format = TextureFormat::Float;
+  std::vector<float> linear(65536), decoded(65536);  // by 16-bit value, as the 8-bit table
+  for (uint32_t v = 0; v < 65536; ++v) {
+    linear[v] = float(v) * (1.0f / 65535.0f);
+    decoded[v] = srgbToLinearValue(linear[v]);
+  }
+  const std::vector<float>& colour = use == TextureUse::Color ? decoded : linear;
+  t->texelsF.resize(image.pixels16.size());
+  for (size_t i = 0; i < image.pixels16.size(); ++i)
+    t->texelsF[i] = (i % 4 == 3 ? linear : colour)[image.pixels16[i]];
+}
+
 TextureDesc decode(const std::string& path, TextureUse use, bool* hasAlpha) {
   TextureDesc t;
   t.file = path;
@@ -39,29 +64,8 @@ TextureDesc decode(const std::string& path, TextureUse use, bool* hasAlpha) {
                        {image.pixels[i], image.pixels[i + 1], image.pixels[i + 2], 1.0f});
     *hasAlpha = false;
   } else {
-    ImageRgba image = readImageRgba(path);
-    t.width = image.width;
-    t.height = image.height;
-    *hasAlpha = image.channels == 2 || image.channels == 4;
-    if (image.bits == 8) {
-      t.format = use == TextureUse::Color ? TextureFormat::Srgb8 : TextureFormat::Linear8;
-      t.texels8 = std::move(image.pixels8);
-    } else {
-      // A 16-bit PNG keeps its precision as floats, decoded as an 8-bit file would be: colour
-      // from sRGB, masks and alpha linear.
-      t.format = TextureFormat::Float;
-      std::vector<float> linear(65536), decoded(65536);  // by 16-bit value, as the 8-bit table
-      for (uint32_t v = 0; v < 65536; ++v) {
-        linear[v] = float(v) * (1.0f / 65535.0f);
-        decoded[v] = srgbToLinearValue(linear[v]);
-      }
-      const std::vector<float>& colour = use == TextureUse::Color ? decoded : linear;
-      t.texelsF.resize(image.pixels16.size());
-      for (size_t i = 0; i < image.pixels16.size(); ++i)
-        t.texelsF[i] = (i % 4 == 3 ? linear : colour)[image.pixels16[i]];
-    }
+    fromRgba(readImageRgba(path), use, &t, hasAlpha);
   }
-  t.contentHash = hashTexture(t);
   return t;
 }
 
@@ -70,23 +74,42 @@ TextureDesc decode(const std::string& path, TextureUse use, bool* hasAlpha) {
 LoadedTexture TextureLoader::load(const std::string& path, TextureUse use) {
   std::error_code error;
   std::filesystem::path canonical = std::filesystem::weakly_canonical(path, error);
-  const std::string key = error ? path : canonical.string();
+  return add(error ? path : canonical.string(), use, [&](bool* hasAlpha) {
+    try {
+      return decode(path, use, hasAlpha);
+    } catch (const SceneError&) {
+      throw;
+    } catch (const std::exception& e) {
+      throw SceneError(std::string("cannot read the texture: ") + e.what());
+    }
+  });
+}
+
+LoadedTexture TextureLoader::loadEncoded(const std::string& bytes, const std::string& name,
+                                         TextureUse use) {
+  return add(name, use, [&](bool* hasAlpha) {
+    TextureDesc texture;
+    texture.file = name;
+    try {
+      fromRgba(decodeImageRgbaBytes(bytes, name), use, &texture, hasAlpha);
+    } catch (const std::exception& e) {
+      throw SceneError(std::string("cannot read the texture: ") + e.what());
+    }
+    return texture;
+  });
+}
+
+LoadedTexture TextureLoader::add(const std::string& key, TextureUse use,
+                                 const std::function<TextureDesc(bool* hasAlpha)>& make) {
   const auto found = loaded_.find({key, use});
   if (found != loaded_.end()) return found->second;
-
   LoadedTexture result;
-  TextureDesc texture;
-  try {
-    texture = decode(path, use, &result.hasAlpha);
-  } catch (const SceneError&) {
-    throw;
-  } catch (const std::exception& e) {
-    throw SceneError(std::string("cannot read the texture: ") + e.what());
-  }
+  TextureDesc texture = make(&result.hasAlpha);
   if (texture.width == 0 || texture.height == 0)
-    throw SceneError(path + ": the texture is empty");
+    throw SceneError(texture.file + ": the texture is empty");
   if (uint64_t(texture.width) * texture.height > kMaxTexels)
-    throw SceneError(path + ": the texture has more than 2^28 texels");
+    throw SceneError(texture.file + ": the texture has more than 2^28 texels");
+  texture.contentHash = hashTexture(texture);
   result.index = int32_t(textures_.size());
   textures_.push_back(std::make_shared<const TextureDesc>(std::move(texture)));
   loaded_.emplace(std::make_pair(key, use), result);

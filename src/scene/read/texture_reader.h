@@ -7,6 +7,7 @@
 // float. Any other colour field refuses a texture object (JsonValue::colour).
 #pragma once
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -42,6 +43,15 @@ class TextureLoader {
   // when it cannot be read, is empty or too large, or holds a texel that is not finite and
   // non-negative.
   LoadedTexture load(const std::string& path, TextureUse use);
+
+  // The texture of a PNG or JPEG file's bytes held in memory (a glTF file's embedded image),
+  // read once per `name`, which names it in messages; throws SceneError as load() does.
+  LoadedTexture loadEncoded(const std::string& bytes, const std::string& name, TextureUse use);
+
+  // A texture made from others (`make` returns it and whether it has an alpha channel), added
+  // once per (key, use): the same checks as load()'s, and its content hash set.
+  LoadedTexture add(const std::string& key, TextureUse use,
+                    const std::function<TextureDesc(bool* hasAlpha)>& make);
 
   // The light profile (render/light_profile.h) of the IES file at `path`, read once: its texture
   // and the vertical angles its values span. Throws SceneError "<file>:<line>: <reason>" (the
