@@ -53,6 +53,7 @@ struct MeshDesc {
   std::vector<Material> materials;  // from the MTL (obj_loader.h's mapping), else diffuse 0.8
   std::vector<Material> mixParts;   // what its mixes mix (Material::mixParts index this)
   std::vector<std::string> materialFiles;  // the MTL files read, beside the OBJ file
+  std::vector<std::string> bufferFiles;    // a glTF file's buffers read from files of their own
   // What the file leaves to a default that its author may not have meant, "<file>:<line>: ..."
   // (an MTL file that cannot be read, a material that no MTL file defines).
   std::vector<std::string> warnings;

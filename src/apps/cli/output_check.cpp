@@ -21,6 +21,8 @@ std::vector<InputFile> inputFiles(const std::vector<SceneDesc>& scenes) {
       files.push_back({object.file, "the mesh"});
       for (const std::string& mtl : object.mesh->materialFiles)
         files.push_back({mtl, "the material library"});
+      for (const std::string& buffer : object.mesh->bufferFiles)
+        files.push_back({buffer, "the mesh's buffer"});
     }
     if (!scene.environment.map.empty())
       files.push_back({scene.environment.map, "the environment map"});

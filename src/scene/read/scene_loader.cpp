@@ -14,6 +14,7 @@
 #include "scene/read/camera_reader.h"
 #include "scene/read/entity_reader.h"
 #include "scene/read/environment_reader.h"
+#include "scene/read/gltf_loader.h"
 #include "scene/read/json_parse.h"
 #include "scene/read/material_reader.h"
 #include "scene/read/obj_loader.h"
@@ -67,9 +68,9 @@ void shadeFacesWithoutNormals(SceneDesc& scene) {
   }
 }
 
-// The mesh files (OBJ or PLY) named by the scene's objects, each read once however many objects use
-// it and its triangles put in spatial order (scene/mesh_order.h). A failure is reported at the
-// object's "file" key, with the file as the scene wrote it.
+// The mesh files (OBJ, PLY or glTF) named by the scene's objects, each read once however many
+// objects use it and its triangles put in spatial order (scene/mesh_order.h). A failure is reported
+// at the object's "file" key, with the file as the scene wrote it.
 void loadMeshes(SceneDesc& scene, const std::vector<std::string>& writtenNames,
                 TextureLoader& textures) {
   std::map<std::string, std::shared_ptr<const MeshDesc>> loaded;  // resolved path -> its mesh
@@ -82,7 +83,9 @@ void loadMeshes(SceneDesc& scene, const std::vector<std::string>& writtenNames,
     }
     try {
       MeshDesc mesh = isPlyPath(object.file) ? loadPlyFile(object.file, writtenNames[i])
-                                             : loadObjFile(object.file, writtenNames[i], textures);
+                      : isGltfPath(object.file)
+                          ? loadGltfFile(object.file, writtenNames[i], textures)
+                          : loadObjFile(object.file, writtenNames[i], textures);
       orderTrianglesSpatially(&mesh);
       object.mesh = std::make_shared<const MeshDesc>(std::move(mesh));
     } catch (const SceneError& error) {

@@ -1,0 +1,168 @@
+// Reading glTF accessors; see gltf_accessor.h.
+#include "scene/read/gltf_accessor.h"
+
+#include <cmath>
+#include <cstring>
+
+#include "scene/scene_error.h"
+
+namespace candela {
+namespace {
+
+const char* typeName(int components) {
+  switch (components) {
+    case 1:
+      return "SCALAR";
+    case 2:
+      return "VEC2";
+    case 3:
+      return "VEC3";
+    default:
+      return "VEC4";
+  }
+}
+
+// The bytes of an accessor's elements: where the first starts, the distance between them and
+// each one's size, once they are known to lie within the buffer.
+struct ElementBytes {
+  const uint8_t* first = nullptr;
+  size_t stride = 0;
+  size_t count = 0;
+};
+
+ElementBytes elementBytes(const tinygltf::Model& model, int index, int components,
+                          size_t componentSize, const std::string& where) {
+  const std::string what = where + ": accessor " + std::to_string(index);
+  if (index < 0 || size_t(index) >= model.accessors.size())
+    throw SceneError(where + ": accessor " + std::to_string(index) + " does not exist (" +
+                     std::to_string(model.accessors.size()) + " accessors)");
+  const tinygltf::Accessor& a = model.accessors[size_t(index)];
+  if (a.sparse.isSparse) throw SceneError(what + " is sparse; candela reads only plain accessors");
+  if (a.bufferView < 0 || size_t(a.bufferView) >= model.bufferViews.size())
+    throw SceneError(what + " has no buffer view (bufferView " + std::to_string(a.bufferView) +
+                     ")");
+  const tinygltf::BufferView& view = model.bufferViews[size_t(a.bufferView)];
+  if (view.buffer < 0 || size_t(view.buffer) >= model.buffers.size())
+    throw SceneError(what + ": buffer view " + std::to_string(a.bufferView) + " names buffer " +
+                     std::to_string(view.buffer) + ", which does not exist");
+  const tinygltf::Buffer& buffer = model.buffers[size_t(view.buffer)];
+  const size_t elementSize = componentSize * size_t(components);
+  const size_t stride = view.byteStride > 0 ? size_t(view.byteStride) : elementSize;
+  if (stride < elementSize)
+    throw SceneError(what + ": byteStride " + std::to_string(view.byteStride) +
+                     " is smaller than an element (" + std::to_string(elementSize) + " bytes)");
+  ElementBytes bytes;
+  bytes.count = a.count;
+  bytes.stride = stride;
+  // Every bound in 64 bits: offsets and counts come from the file.
+  const uint64_t viewEnd = uint64_t(view.byteOffset) + uint64_t(view.byteLength);
+  if (viewEnd > buffer.data.size())
+    throw SceneError(what + ": buffer view " + std::to_string(a.bufferView) + " ends at byte " +
+                     std::to_string(viewEnd) + " of buffer " + std::to_string(view.buffer) +
+                     ", which holds " + std::to_string(buffer.data.size()));
+  if (a.count == 0) return bytes;
+  const uint64_t needed =
+      uint64_t(a.byteOffset) + uint64_t(stride) * (uint64_t(a.count) - 1) + uint64_t(elementSize);
+  if (a.count > (uint64_t(1) << 32) || needed > uint64_t(view.byteLength))
+    throw SceneError(
+        what + ": " + std::to_string(a.count) + " elements of " + std::to_string(elementSize) +
+        " bytes from byte " + std::to_string(a.byteOffset) + " do not fit buffer view " +
+        std::to_string(a.bufferView) + " (" + std::to_string(view.byteLength) + " bytes)");
+  bytes.first = buffer.data.data() + view.byteOffset + a.byteOffset;
+  return bytes;
+}
+
+void requireType(const tinygltf::Accessor& a, int index, int components, const std::string& where) {
+  const int expected = components == 1   ? TINYGLTF_TYPE_SCALAR
+                       : components == 2 ? TINYGLTF_TYPE_VEC2
+                       : components == 3 ? TINYGLTF_TYPE_VEC3
+                                         : TINYGLTF_TYPE_VEC4;
+  if (a.type != expected)
+    throw SceneError(where + ": accessor " + std::to_string(index) + " is not of type " +
+                     typeName(components));
+}
+
+}  // namespace
+
+std::vector<float> readFloatAccessor(const tinygltf::Model& model, int index, int components,
+                                     bool normalizedIntegers, const std::string& where) {
+  // Checked before its fields are read: elementBytes refuses an index out of range.
+  elementBytes(model, index, components, 1, where);
+  const tinygltf::Accessor& a = model.accessors[size_t(index)];
+  requireType(a, index, components, where);
+  const bool isFloat = a.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT;
+  const bool isInteger = a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
+                         a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
+  if (!isFloat && !(normalizedIntegers && isInteger && a.normalized))
+    throw SceneError(where + ": accessor " + std::to_string(index) + " holds " +
+                     (normalizedIntegers ? "neither floats nor normalized unsigned bytes or shorts"
+                                         : "no floats") +
+                     " (componentType " + std::to_string(a.componentType) +
+                     "; quantized meshes, KHR_mesh_quantization, are not read)");
+  const size_t size = isFloat                                                    ? 4
+                      : a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ? 1
+                                                                                 : 2;
+  const ElementBytes bytes = elementBytes(model, index, components, size, where);
+  std::vector<float> values(bytes.count * size_t(components));
+  for (size_t i = 0; i < bytes.count; ++i) {
+    const uint8_t* element = bytes.first + i * bytes.stride;
+    for (int c = 0; c < components; ++c) {
+      float value = 0.0f;
+      if (isFloat) {
+        std::memcpy(&value, element + 4 * size_t(c), 4);
+        if (!std::isfinite(value))
+          throw SceneError(where + ": accessor " + std::to_string(index) + ", element " +
+                           std::to_string(i) + ": expected finite numbers, got " +
+                           std::to_string(value));
+      } else if (size == 1) {
+        value = float(element[c]) / 255.0f;
+      } else {
+        uint16_t v = 0;
+        std::memcpy(&v, element + 2 * size_t(c), 2);
+        value = float(v) / 65535.0f;
+      }
+      values[i * size_t(components) + size_t(c)] = value;
+    }
+  }
+  return values;
+}
+
+std::vector<uint32_t> readIndexAccessor(const tinygltf::Model& model, int index,
+                                        const std::string& where) {
+  elementBytes(model, index, 1, 1, where);
+  const tinygltf::Accessor& a = model.accessors[size_t(index)];
+  requireType(a, index, 1, where);
+  size_t size = 0;
+  switch (a.componentType) {
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+      size = 1;
+      break;
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+      size = 2;
+      break;
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+      size = 4;
+      break;
+    default:
+      throw SceneError(where + ": accessor " + std::to_string(index) +
+                       ": expected indices of unsigned bytes, shorts or ints (componentType " +
+                       std::to_string(a.componentType) + ")");
+  }
+  const ElementBytes bytes = elementBytes(model, index, 1, size, where);
+  std::vector<uint32_t> indices(bytes.count);
+  for (size_t i = 0; i < bytes.count; ++i) {
+    const uint8_t* element = bytes.first + i * bytes.stride;
+    if (size == 1) {
+      indices[i] = element[0];
+    } else if (size == 2) {
+      uint16_t v = 0;
+      std::memcpy(&v, element, 2);
+      indices[i] = v;
+    } else {
+      std::memcpy(&indices[i], element, 4);
+    }
+  }
+  return indices;
+}
+
+}  // namespace candela

@@ -1,0 +1,28 @@
+// glTF 2.0 file (.gltf with its buffers and images beside it, or one binary .glb) -> MeshDesc, in
+// the object's space: the triangles of every mesh that the file's default scene places (its
+// first scene where it names none; where it has no scenes, every node that is no other's child),
+// each placed by its node's transform and its parents', as one mesh. Positions, normals and the
+// first texture coordinates (v turned to candela's convention, v = 1 - glTF's v) are read, and
+// each glTF material is mapped to candela's (gltf_materials.h); a primitive without one takes
+// glTF's default material. Triangles, strips and fans are read; points and lines are skipped
+// with a warning, as are what else candela does not use (cameras, lights, skins, morph targets,
+// animations). A node whose transform mirrors keeps its faces' outsides (their winding is
+// reversed, as glTF says).
+//
+// Errors throw SceneError "<label>: <reason>", the reason naming the JSON path of what is wrong
+// ("meshes[0].primitives[1].indices: accessor 4 ...").
+#pragma once
+
+#include <string>
+
+#include "scene/read/texture_reader.h"
+#include "scene/scene_desc.h"
+
+namespace candela {
+
+MeshDesc loadGltfFile(const std::string& path, const std::string& label, TextureLoader& textures);
+
+// Whether a mesh file is read as glTF: its name ends in ".gltf" or ".glb", in any case.
+bool isGltfPath(const std::string& path);
+
+}  // namespace candela

@@ -1,0 +1,391 @@
+// glTF materials as candela's; see gltf_materials.h.
+#include "scene/read/gltf_materials.h"
+
+#include <cmath>
+
+#include "core/texture.h"
+#include "render/material_prepare.h"
+#include "scene/read/gltf_uri.h"
+#include "scene/read/texel_check.h"
+#include "scene/scene_error.h"
+
+namespace candela {
+namespace {
+
+// The extensions of a material that candela reads; any other a material uses gets a warning.
+const std::set<std::string> kReadExtensions = {"KHR_materials_emissive_strength",
+                                               "KHR_materials_ior", "KHR_materials_transmission"};
+
+const tinygltf::Value* extension(const tinygltf::ExtensionMap& extensions, const char* name) {
+  const auto found = extensions.find(name);
+  return found != extensions.end() && found->second.IsObject() ? &found->second : nullptr;
+}
+
+// A number of an extension's object, `fallback` where absent; refused unless finite.
+double extensionNumber(const tinygltf::Value* object, const char* key, double fallback,
+                       const std::string& where) {
+  if (!object || !object->Has(key)) return fallback;
+  const tinygltf::Value& value = object->Get(key);
+  const double number = value.IsNumber() ? value.GetNumberAsDouble() : NAN;
+  if (!std::isfinite(number)) throw SceneError(where + "." + key + ": expected a finite number");
+  return number;
+}
+
+float unitFactor(double value, const std::string& where) {
+  if (!(value >= 0.0 && value <= 1.0))
+    throw SceneError(where + ": expected a number between 0 and 1, got " +
+                     formatNumber(float(value)));
+  return float(value);
+}
+
+Vec3 colourFactor(const std::vector<double>& values, const std::string& where) {
+  if (values.size() < 3) throw SceneError(where + ": expected at least 3 numbers");
+  const Vec3 colour{float(values[0]), float(values[1]), float(values[2])};
+  for (int c = 0; c < 3; ++c)
+    if (!(colour[c] >= 0.0f && std::isfinite(colour[c])))
+      throw SceneError(where + ": expected finite, non-negative numbers, got " +
+                       formatVec3(colour));
+  return colour;
+}
+
+// Channel c of texel i of `t`, linear: what a lookup of it reads before filtering.
+float texelValue(const TextureDesc& t, size_t i, uint32_t c) {
+  if (t.format == TextureFormat::Float) return t.texelsF[4 * i + c];
+  const float v = float(t.texels8[4 * i + c]) / 255.0f;
+  return t.format == TextureFormat::Srgb8 && c < 3 ? srgbToLinearValue(v) : v;
+}
+
+// A material and, where it is a mix, its two parts: placed into a mesh's parts only once whole,
+// so that every mix's parts follow it there (render/material_mix.h).
+struct Shading {
+  Material material;
+  std::vector<Shading> parts;
+};
+
+Shading mixOf(Shading first, Shading second, float weight, const TextureRef& map,
+              uint32_t channel) {
+  Shading mix;
+  mix.material.type = MaterialType::Mix;
+  mix.material.mixWeight = weight;
+  mix.material.mixWeightTexture = map;
+  mix.material.mixWeightChannel = channel;
+  mix.parts = {std::move(first), std::move(second)};
+  return mix;
+}
+
+// s's material, its parts (and theirs) appended to *parts after it.
+Material place(const Shading& s, std::vector<Material>* parts) {
+  Material m = s.material;
+  if (m.type != MaterialType::Mix) return m;
+  for (int i = 0; i < 2; ++i) {
+    m.mixParts[i] = uint32_t(parts->size());
+    parts->emplace_back();
+  }
+  for (int i = 0; i < 2; ++i) (*parts)[m.mixParts[i]] = place(s.parts[size_t(i)], parts);
+  return m;
+}
+
+}  // namespace
+
+void GltfMaterialReader::warnOnce(const std::string& message) {
+  if (warned_.insert(message).second) warnings_->push_back(label_ + ": " + message);
+}
+
+TextureRef GltfMaterialReader::texture(const TextureSlot& slot, TextureUse use,
+                                       const std::string& where, bool* hasAlpha) {
+  if (size_t(slot.index) >= model_.textures.size())
+    throw SceneError(label_ + ": " + where + ".index: texture " + std::to_string(slot.index) +
+                     " does not exist (" + std::to_string(model_.textures.size()) + " textures)");
+  const tinygltf::Texture& t = model_.textures[size_t(slot.index)];
+  const std::string textureWhere = "textures[" + std::to_string(slot.index) + "]";
+  if (t.source < 0 || size_t(t.source) >= model_.images.size())
+    throw SceneError(label_ + ": " + textureWhere + ".source: " +
+                     (t.source < 0 ? std::string("no PNG or JPEG image (a KTX2 or WebP source, "
+                                                 "which candela does not read?)")
+                                   : "image " + std::to_string(t.source) + " does not exist"));
+  const tinygltf::Image& image = model_.images[size_t(t.source)];
+  LoadedTexture loaded;
+  const auto bytes = embedded_.find(t.source);
+  if (bytes != embedded_.end()) {
+    const std::string name = label_ + " (images[" + std::to_string(t.source) + "]" +
+                             (image.name.empty() ? "" : " \"" + image.name + "\"") + ")";
+    try {
+      loaded = textures_.loadEncoded(bytes->second, name, use);
+    } catch (const SceneError& e) {
+      throw SceneError(label_ + ": images[" + std::to_string(t.source) + "]: " + e.what());
+    }
+  } else if (!image.uri.empty()) {
+    const std::string path = gltfUriPath(image.uri, folder_);
+    try {
+      loaded = textures_.load(path, use);
+    } catch (const SceneError& e) {
+      throw SceneError(label_ + ": images[" + std::to_string(t.source) + "].uri: " + e.what());
+    }
+  } else {
+    throw SceneError(label_ + ": images[" + std::to_string(t.source) +
+                     "]: expected a uri or a bufferView");
+  }
+  if (hasAlpha) *hasAlpha = loaded.hasAlpha;
+  if (t.sampler >= 0 && size_t(t.sampler) < model_.samplers.size()) {
+    const tinygltf::Sampler& s = model_.samplers[size_t(t.sampler)];
+    if (s.wrapS != TINYGLTF_TEXTURE_WRAP_REPEAT || s.wrapT != TINYGLTF_TEXTURE_WRAP_REPEAT)
+      warnOnce("samplers[" + std::to_string(t.sampler) +
+               "]: clamped or mirrored wrapping is read as repeating (candela's textures repeat)");
+  }
+  TextureRef ref;
+  ref.index = loaded.index;
+  int texCoord = slot.texCoord;
+  // KHR_texture_transform, uv' = T R S uv in glTF's uv (v down the image), brought into
+  // candela's (v up: v = 1 - glTF's v, docs/scene-format.md, Textures): the same scale and
+  // rotation, and the offset where candela's uv (0, 0), glTF's (0, 1), lands.
+  if (const tinygltf::Value* transform =
+          slot.extensions ? extension(*slot.extensions, "KHR_texture_transform") : nullptr) {
+    const std::string tw = label_ + ": " + where + ".extensions.KHR_texture_transform";
+    double offset[2] = {0, 0}, scale[2] = {1, 1};
+    for (const char* key : {"offset", "scale"}) {
+      if (!transform->Has(key)) continue;
+      const tinygltf::Value& pair = transform->Get(key);
+      double* out = key[0] == 'o' ? offset : scale;
+      for (int i = 0; i < 2; ++i) {
+        const tinygltf::Value& v =
+            pair.IsArray() && pair.ArrayLen() == 2 ? pair.Get(i) : tinygltf::Value();
+        out[i] = v.IsNumber() ? v.GetNumberAsDouble() : NAN;
+        if (!std::isfinite(out[i]) || (key[0] == 's' && out[i] == 0.0))
+          throw SceneError(tw + "." + key + ": expected two finite numbers" +
+                           (key[0] == 's' ? ", neither 0" : ""));
+      }
+    }
+    const double rotation = extensionNumber(transform, "rotation", 0.0, tw);
+    texCoord = int(extensionNumber(transform, "texCoord", texCoord, tw));
+    const double c = std::cos(rotation), s = std::sin(rotation);
+    ref.scaleU = float(scale[0]);
+    ref.scaleV = float(scale[1]);
+    ref.rotationCos = float(c);
+    ref.rotationSin = float(s);
+    ref.offsetU = float(offset[0] - s * scale[1]);
+    ref.offsetV = float(1.0 - c * scale[1] - offset[1]);
+  }
+  if (texCoord != 0)
+    warnOnce(where + " reads TEXCOORD_" + std::to_string(texCoord) +
+             "; candela reads TEXCOORD_0 for every texture");
+  return ref;
+}
+
+TextureRef GltfMaterialReader::scaledChannel(const TextureRef& ref, uint32_t channel, float factor,
+                                             uint32_t* outChannel) {
+  *outChannel = channel;
+  if (factor == 1.0f) return ref;
+  const TextureDesc& source = textures_.texture(ref.index);
+  const std::string key =
+      source.file + " channel " + std::to_string(channel) + " times " + formatNumber(factor);
+  const LoadedTexture made = textures_.add(key, TextureUse::Linear, [&](bool* hasAlpha) {
+    TextureDesc t;
+    t.file = key;
+    t.format = TextureFormat::Float;
+    t.width = source.width;
+    t.height = source.height;
+    t.texelsF.resize(size_t(4) * t.width * t.height);
+    for (size_t i = 0; i < size_t(t.width) * t.height; ++i) {
+      const float v = factor * texelValue(source, i, channel);
+      t.texelsF[4 * i] = t.texelsF[4 * i + 1] = t.texelsF[4 * i + 2] = t.texelsF[4 * i + 3] = v;
+    }
+    *hasAlpha = false;
+    return t;
+  });
+  TextureRef scaled = ref;
+  scaled.index = made.index;
+  *outChannel = 0;
+  return scaled;
+}
+
+Material GltfMaterialReader::read(int index, std::vector<Material>* parts) {
+  Material metalDefault;
+  metalDefault.type = MaterialType::Conductor;
+  metalDefault.color = Vec3(1.0f);
+  metalDefault.roughness = 1.0f;
+  if (index < 0) {
+    prepareMaterial(&metalDefault);
+    return metalDefault;
+  }
+  const tinygltf::Material& m = model_.materials[size_t(index)];
+  const std::string where = "materials[" + std::to_string(index) + "]";
+  const std::string at = label_ + ": " + where;
+  for (const auto& [name, value] : m.extensions)
+    if (!kReadExtensions.count(name))
+      warnOnce(where + (m.name.empty() ? "" : " \"" + m.name + "\"") + ": " + name +
+               " is not rendered");
+  const tinygltf::PbrMetallicRoughness& pbr = m.pbrMetallicRoughness;
+  const std::string pbrWhere = where + ".pbrMetallicRoughness";
+
+  // The surface every part shares: base colour, roughness and normal map.
+  Material surface;
+  surface.color = colourFactor(pbr.baseColorFactor, label_ + ": " + pbrWhere + ".baseColorFactor");
+  bool baseHasAlpha = false;
+  if (pbr.baseColorTexture.index >= 0)
+    surface.colorTexture =
+        texture({pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord,
+                 &pbr.baseColorTexture.extensions},
+                TextureUse::Color, pbrWhere + ".baseColorTexture", &baseHasAlpha);
+  for (int c = 0; c < 3; ++c) surface.color[c] = std::fmin(surface.color[c], 1.0f);
+  const float roughness =
+      unitFactor(pbr.roughnessFactor, at + ".pbrMetallicRoughness.roughnessFactor");
+  const float metallic =
+      unitFactor(pbr.metallicFactor, at + ".pbrMetallicRoughness.metallicFactor");
+  surface.roughness = roughness;
+  TextureRef metalRough;
+  if (pbr.metallicRoughnessTexture.index >= 0) {
+    metalRough = texture({pbr.metallicRoughnessTexture.index, pbr.metallicRoughnessTexture.texCoord,
+                          &pbr.metallicRoughnessTexture.extensions},
+                         TextureUse::Linear, pbrWhere + ".metallicRoughnessTexture");
+    surface.roughnessTexture = scaledChannel(metalRough, 1, roughness, &surface.roughnessChannel);
+  }
+  if (m.normalTexture.index >= 0) {
+    surface.normalMap =
+        texture({m.normalTexture.index, m.normalTexture.texCoord, &m.normalTexture.extensions},
+                TextureUse::Linear, where + ".normalTexture");
+    if (m.normalTexture.scale != 1.0)
+      warnOnce(where + ".normalTexture.scale " + formatNumber(float(m.normalTexture.scale)) +
+               " is read as 1");
+  }
+
+  float ior = 1.5f;
+  if (const tinygltf::Value* e = extension(m.extensions, "KHR_materials_ior")) {
+    const double value = extensionNumber(e, "ior", 1.5, at + ".extensions.KHR_materials_ior");
+    if (value > 1.0 && value < 1e3)
+      ior = float(value);
+    else
+      warnOnce(where + ".extensions.KHR_materials_ior.ior " + formatNumber(float(value)) +
+               " is read as 1.5 (candela's coats and glass take an index above 1)");
+  }
+
+  Material plastic = surface;
+  plastic.type = MaterialType::Plastic;
+  plastic.ior = ior;
+  prepareMaterial(&plastic);
+  Shading dielectric{plastic, {}};
+  if (const tinygltf::Value* e = extension(m.extensions, "KHR_materials_transmission")) {
+    const std::string tw = at + ".extensions.KHR_materials_transmission";
+    const float transmission =
+        unitFactor(extensionNumber(e, "transmissionFactor", 0.0, tw), tw + ".transmissionFactor");
+    TextureRef map;
+    uint32_t channel = 0;
+    if (e->Has("transmissionTexture")) {
+      const tinygltf::Value& info = e->Get("transmissionTexture");
+      const int textureIndex =
+          info.Has("index") && info.Get("index").IsInt() ? info.Get("index").GetNumberAsInt() : -1;
+      const int texCoord = info.Has("texCoord") && info.Get("texCoord").IsInt()
+                               ? info.Get("texCoord").GetNumberAsInt()
+                               : 0;
+      map = scaledChannel(texture({textureIndex, texCoord, nullptr}, TextureUse::Linear,
+                                  where + ".extensions.KHR_materials_transmission."
+                                          "transmissionTexture"),
+                          0, transmission, &channel);
+    }
+    if (transmission > 0.0f) {
+      Material glass;
+      glass.type = MaterialType::Glass;
+      glass.ior = ior;
+      glass.color = surface.color;
+      glass.roughness = surface.roughness;
+      glass.roughnessTexture = surface.roughnessTexture;
+      glass.roughnessChannel = surface.roughnessChannel;
+      glass.normalMap = surface.normalMap;
+      if (surface.colorTexture.index >= 0)
+        warnOnce(where +
+                 ": the transmitted light is tinted by baseColorFactor alone (candela's "
+                 "glass takes no colour texture)");
+      prepareMaterial(&glass);
+      if (transmission == 1.0f && map.index < 0)
+        dielectric = {glass, {}};
+      else
+        dielectric = mixOf({plastic, {}}, {glass, {}}, transmission, map, channel);
+    }
+  }
+
+  Material metal = surface;
+  metal.type = MaterialType::Conductor;
+  prepareMaterial(&metal);
+  Shading shading = dielectric;
+  if (metalRough.index >= 0) {
+    uint32_t channel = 0;
+    const TextureRef map = scaledChannel(metalRough, 2, metallic, &channel);
+    if (metallic > 0.0f) shading = mixOf(dielectric, {metal, {}}, metallic, map, channel);
+  } else if (metallic == 1.0f) {
+    shading = {metal, {}};
+  } else if (metallic > 0.0f) {
+    shading = mixOf(dielectric, {metal, {}}, metallic, TextureRef(), 0);
+  }
+  Material& result = shading.material;
+
+  // Emission: emissiveFactor times emissiveTexture, times KHR_materials_emissive_strength.
+  Vec3 emission = colourFactor(m.emissiveFactor, at + ".emissiveFactor");
+  if (const tinygltf::Value* e = extension(m.extensions, "KHR_materials_emissive_strength")) {
+    const std::string ew = at + ".extensions.KHR_materials_emissive_strength";
+    const double strength = extensionNumber(e, "emissiveStrength", 1.0, ew);
+    if (!(strength >= 0.0)) throw SceneError(ew + ".emissiveStrength: expected a number >= 0");
+    emission = emission * float(strength);
+    if (!std::isfinite(emission.x + emission.y + emission.z))
+      throw SceneError(ew + ".emissiveStrength: the emission is beyond single precision");
+  }
+  if (!isBlack(emission)) {
+    result.radiance = emission;
+    if (m.emissiveTexture.index >= 0) {
+      result.emissionTexture = texture(
+          {m.emissiveTexture.index, m.emissiveTexture.texCoord, &m.emissiveTexture.extensions},
+          TextureUse::Color, where + ".emissiveTexture");
+      const std::string beyond =
+          firstTexelBeyondFloat(textures_.texture(result.emissionTexture.index), emission);
+      if (!beyond.empty())
+        throw SceneError(at + ".emissiveTexture: the texture's " + beyond +
+                         " is beyond single precision");
+    }
+  }
+
+  // Alpha: BLEND is coverage, as candela's alpha is; MASK is coverage 0 or 1 by alphaCutoff.
+  const float alphaFactor = pbr.baseColorFactor.size() > 3 ? float(pbr.baseColorFactor[3]) : 1.0f;
+  if (m.alphaMode == "BLEND" || m.alphaMode == "MASK") {
+    AlphaMask alpha;
+    const bool mask = m.alphaMode == "MASK";
+    const float cutoff = float(m.alphaCutoff);
+    if (surface.colorTexture.index >= 0 && baseHasAlpha) {
+      const TextureDesc& source = textures_.texture(surface.colorTexture.index);
+      if (mask) {
+        const std::string key = source.file + " alpha times " + formatNumber(alphaFactor) +
+                                " cut at " + formatNumber(cutoff);
+        const LoadedTexture made = textures_.add(key, TextureUse::Linear, [&](bool* hasAlpha) {
+          TextureDesc t;
+          t.file = key;
+          t.format = TextureFormat::Linear8;
+          t.width = source.width;
+          t.height = source.height;
+          t.texels8.assign(size_t(4) * t.width * t.height, 255);
+          for (size_t i = 0; i < size_t(t.width) * t.height; ++i)
+            t.texels8[4 * i + 3] = alphaFactor * texelValue(source, i, 3) >= cutoff ? 255 : 0;
+          *hasAlpha = true;
+          return t;
+        });
+        alpha.texture = surface.colorTexture;
+        alpha.texture.index = made.index;
+      } else {
+        alpha.constant = alphaFactor;
+        alpha.texture = surface.colorTexture;
+      }
+      alpha.channel = 3;
+    } else {
+      alpha.constant = mask ? (alphaFactor >= cutoff ? 1.0f : 0.0f) : alphaFactor;
+    }
+    if (!(alpha.constant >= 0.0f && alpha.constant <= 1.0f))
+      throw SceneError(at +
+                       ".pbrMetallicRoughness.baseColorFactor: expected an alpha between 0 "
+                       "and 1");
+    if (isMasked(alpha) && hasEmission(result))
+      warnOnce(where +
+               ": the alpha is not used: the material emits, and an emitting surface is "
+               "a light over all its area");
+    else
+      result.alpha = alpha;
+  }
+  return place(shading, parts);
+}
+
+}  // namespace candela

@@ -1,0 +1,59 @@
+// glTF 2.0 materials as candela's (docs/scene-format.md, glTF meshes): the metallic-roughness
+// model is a mix, by metalness, of a plastic (the dielectric base under its coat, glTF's
+// fresnel_mix) and a conductor whose reflectance is the base colour; KHR_materials_transmission
+// mixes glass into the dielectric, KHR_materials_ior sets its index. Normal maps, emission
+// (KHR_materials_emissive_strength), alpha (MASK and BLEND) and KHR_texture_transform are read;
+// what candela does not render is named in a warning.
+#pragma once
+
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "render/material.h"
+#include "scene/read/texture_reader.h"
+#include "scene/read/tiny_gltf_config.h"
+
+namespace candela {
+
+class GltfMaterialReader {
+ public:
+  // `label` names the file in messages, `folder` is where its URIs are resolved, `embedded` holds
+  // the bytes of its images held in the file (data URIs and buffer views) by image index.
+  GltfMaterialReader(const tinygltf::Model& model, std::string label, std::string folder,
+                     const std::map<int, std::string>& embedded, TextureLoader& textures,
+                     std::vector<std::string>* warnings)
+      : model_(model),
+        label_(std::move(label)),
+        folder_(std::move(folder)),
+        embedded_(embedded),
+        textures_(textures),
+        warnings_(warnings) {}
+
+  // The material of glTF material `index` (-1: glTF's default material, a white rough metal),
+  // its mixes' parts appended to *parts.
+  Material read(int index, std::vector<Material>* parts);
+
+ private:
+  struct TextureSlot {
+    int index = -1, texCoord = 0;
+    const tinygltf::ExtensionMap* extensions = nullptr;
+  };
+  TextureRef texture(const TextureSlot& slot, TextureUse use, const std::string& where,
+                     bool* hasAlpha = nullptr);
+  // `ref`'s channel times `factor`, as a texture of its own where factor is not 1 (glTF
+  // multiplies its textures by factors that candela's fields do not take), into *channel.
+  TextureRef scaledChannel(const TextureRef& ref, uint32_t channel, float factor,
+                           uint32_t* outChannel);
+  void warnOnce(const std::string& message);
+
+  const tinygltf::Model& model_;
+  std::string label_, folder_;
+  const std::map<int, std::string>& embedded_;
+  TextureLoader& textures_;
+  std::vector<std::string>* warnings_;
+  std::set<std::string> warned_;
+};
+
+}  // namespace candela

@@ -1,0 +1,25 @@
+// glTF URIs as files; see gltf_uri.h.
+#include "scene/read/gltf_uri.h"
+
+#include <cctype>
+#include <cstdlib>
+#include <filesystem>
+
+namespace candela {
+
+std::string gltfUriPath(const std::string& uri, const std::string& folder) {
+  std::string decoded;
+  for (size_t i = 0; i < uri.size(); ++i) {
+    if (uri[i] == '%' && i + 2 < uri.size() && std::isxdigit(uint8_t(uri[i + 1])) &&
+        std::isxdigit(uint8_t(uri[i + 2]))) {
+      decoded += char(std::strtol(uri.substr(i + 1, 2).c_str(), nullptr, 16));
+      i += 2;
+    } else {
+      decoded += uri[i];
+    }
+  }
+  const std::filesystem::path path(decoded);
+  return path.is_absolute() ? decoded : (std::filesystem::path(folder) / path).string();
+}
+
+}  // namespace candela
