@@ -1,0 +1,32 @@
+// libFuzzer target: the input is a glTF file, text or binary (.glb), rendered by a fixed small
+// scene; what its URIs name is looked for in a temporary folder that holds only it (data URIs and
+// a .glb's own buffer are what the seeds use). See docs/fuzzing.md.
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+#include "fuzz_scene.h"
+
+namespace {
+
+const char* const kScene = R"({
+  "camera": {"width": 8, "height": 8, "fov": 60, "position": [0, 0, 5], "look_at": [0, 0, 0]},
+  "lights": [{"position": [1, 2, 5], "intensity": 10}],
+  "objects": [{"file": "m.gltf", "rotation": [10, 20, 30], "smooth": 60}]
+})";
+
+std::string folder;  // makeInputFolder's
+
+}  // namespace
+
+extern "C" int LLVMFuzzerInitialize(int*, char***) {
+  candela::fuzz::limitToOneThread();
+  folder = candela::fuzz::makeInputFolder("gltf", {"m.gltf"});
+  return 0;
+}
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  candela::fuzz::writeInput(folder + "/m.gltf", data, size);
+  candela::fuzz::loadAndTrace(kScene, folder);
+  return 0;
+}
