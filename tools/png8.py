@@ -3,7 +3,7 @@ textures (make_window_texture.py, make_rust_mask.py), so that they run anywhere.
 import struct
 import zlib
 
-COLOUR_TYPES = {1: 0, 3: 2}  # channels -> PNG colour type: grey, RGB
+COLOUR_TYPES = {1: 0, 3: 2, 4: 6}  # channels -> PNG colour type: grey, RGB, RGBA
 
 
 def png8(width, height, rows, channels=3):
