@@ -195,8 +195,9 @@ TEST(GltfMaterials, TexturesInTheFileOrBesideItAndFactorsThatScaleThem) {
     // MASK: the alpha (the mix's) cut at 0.5, texel by texel.
     const TextureDesc& alpha = *loaded->textures.at(size_t(mix.alpha.texture.index));
     EXPECT_EQ(mix.alpha.channel, 3u);
-    EXPECT_EQ(alpha.texels8[3], 255);
-    EXPECT_EQ(alpha.texels8[7], 0);
+    ASSERT_EQ(alpha.texelsF.size(), 8u);
+    EXPECT_EQ(alpha.texelsF[3], 1.0f);
+    EXPECT_EQ(alpha.texelsF[7], 0.0f);
   }
 }
 

@@ -293,3 +293,27 @@ def test_devices_name_the_cpu_and_say_where_auto_renders():
     assert gpu["usable"] or gpu["summary"].startswith("not usable: ")
     # auto: the GPU where one is usable, else the CPU
     assert [r["backend"] for r in reports if r["auto"]] == ["cuda" if gpu["usable"] else "cpu"]
+
+
+def test_gltf_meshes_load_with_their_warnings_and_render(tmp_path, scene_dict):
+    import base64
+    import json
+    import struct
+    data = struct.pack("9f", -1, -1, 0, 1, -1, 0, 0, 1, 0)
+    gltf = {"asset": {"version": "2.0"},
+            "buffers": [{"byteLength": len(data), "uri": "data:application/octet-stream;base64,"
+                         + base64.b64encode(data).decode()}],
+            "bufferViews": [{"buffer": 0, "byteLength": len(data)}],
+            "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3"}],
+            "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+            "nodes": [{"mesh": 0}, {"camera": 0}],
+            "cameras": [{"type": "perspective", "perspective": {"yfov": 0.8, "znear": 0.1}}]}
+    (tmp_path / "m.gltf").write_text(json.dumps(gltf))
+    scene_dict["objects"] = [{"file": "m.gltf"}]
+    expected = ("<dict>: objects[0].file: m.gltf: the file's cameras are not used "
+                "(the scene's camera is)")
+    with pytest.warns(UserWarning) as caught:
+        scene = candela.Scene.from_dict(scene_dict, base_dir=tmp_path)
+    assert [str(w.message) for w in caught] == [expected]
+    img = scene.render(spp=1, backend="cpu")
+    assert np.isfinite(img).all()

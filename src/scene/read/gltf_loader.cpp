@@ -183,6 +183,8 @@ class MeshBuilder {
       return;
     }
     if (!primitive.targets.empty()) warn("morph targets are not applied (" + where + ")");
+    if (primitive.attributes.count("COLOR_0"))
+      warn("vertex colours (COLOR_0) are not rendered (" + where + ")");
     const std::string at = label_ + ": " + where;
     const auto attribute = [&](const char* name) {
       const auto found = primitive.attributes.find(name);

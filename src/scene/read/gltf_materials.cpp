@@ -1,6 +1,7 @@
 // glTF materials as candela's; see gltf_materials.h.
 #include "scene/read/gltf_materials.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/texture.h"
@@ -54,13 +55,6 @@ float texelValue(const TextureDesc& t, size_t i, uint32_t c) {
   const float v = float(t.texels8[4 * i + c]) / 255.0f;
   return t.format == TextureFormat::Srgb8 && c < 3 ? srgbToLinearValue(v) : v;
 }
-
-// A material and, where it is a mix, its two parts: placed into a mesh's parts only once whole,
-// so that every mix's parts follow it there (render/material_mix.h).
-struct Shading {
-  Material material;
-  std::vector<Shading> parts;
-};
 
 Shading mixOf(Shading first, Shading second, float weight, const TextureRef& map,
               uint32_t channel) {
@@ -171,13 +165,11 @@ TextureRef GltfMaterialReader::texture(const TextureSlot& slot, TextureUse use,
   return ref;
 }
 
-TextureRef GltfMaterialReader::scaledChannel(const TextureRef& ref, uint32_t channel, float factor,
-                                             uint32_t* outChannel) {
-  *outChannel = channel;
-  if (factor == 1.0f) return ref;
+TextureRef GltfMaterialReader::derived(
+    const TextureRef& ref, const std::string& what,
+    const std::function<float(const TextureDesc&, size_t)>& value) {
   const TextureDesc& source = textures_.texture(ref.index);
-  const std::string key =
-      source.file + " channel " + std::to_string(channel) + " times " + formatNumber(factor);
+  const std::string key = source.file + " " + what;
   const LoadedTexture made = textures_.add(key, TextureUse::Linear, [&](bool* hasAlpha) {
     TextureDesc t;
     t.file = key;
@@ -185,59 +177,46 @@ TextureRef GltfMaterialReader::scaledChannel(const TextureRef& ref, uint32_t cha
     t.width = source.width;
     t.height = source.height;
     t.texelsF.resize(size_t(4) * t.width * t.height);
-    for (size_t i = 0; i < size_t(t.width) * t.height; ++i) {
-      const float v = factor * texelValue(source, i, channel);
-      t.texelsF[4 * i] = t.texelsF[4 * i + 1] = t.texelsF[4 * i + 2] = t.texelsF[4 * i + 3] = v;
-    }
+    for (size_t i = 0; i < size_t(t.width) * t.height; ++i)
+      std::fill_n(t.texelsF.begin() + std::ptrdiff_t(4 * i), 4, value(source, i));
     *hasAlpha = false;
     return t;
   });
-  TextureRef scaled = ref;
-  scaled.index = made.index;
-  *outChannel = 0;
-  return scaled;
+  TextureRef out = ref;
+  out.index = made.index;
+  return out;
 }
 
-Material GltfMaterialReader::read(int index, std::vector<Material>* parts) {
-  Material metalDefault;
-  metalDefault.type = MaterialType::Conductor;
-  metalDefault.color = Vec3(1.0f);
-  metalDefault.roughness = 1.0f;
-  if (index < 0) {
-    prepareMaterial(&metalDefault);
-    return metalDefault;
-  }
-  const tinygltf::Material& m = model_.materials[size_t(index)];
-  const std::string where = "materials[" + std::to_string(index) + "]";
-  const std::string at = label_ + ": " + where;
-  for (const auto& [name, value] : m.extensions)
-    if (!kReadExtensions.count(name))
-      warnOnce(where + (m.name.empty() ? "" : " \"" + m.name + "\"") + ": " + name +
-               " is not rendered");
+TextureRef GltfMaterialReader::scaledChannel(const TextureRef& ref, uint32_t channel, float factor,
+                                             uint32_t* outChannel) {
+  *outChannel = channel;
+  if (factor == 1.0f) return ref;
+  *outChannel = 0;
+  return derived(
+      ref, "channel " + std::to_string(channel) + " times " + formatNumber(factor),
+      [&](const TextureDesc& t, size_t i) { return factor * texelValue(t, i, channel); });
+}
+
+Material GltfMaterialReader::surfaceOf(const tinygltf::Material& m, const std::string& where,
+                                       bool* baseHasAlpha, TextureRef* metalRough) {
   const tinygltf::PbrMetallicRoughness& pbr = m.pbrMetallicRoughness;
   const std::string pbrWhere = where + ".pbrMetallicRoughness";
-
-  // The surface every part shares: base colour, roughness and normal map.
   Material surface;
   surface.color = colourFactor(pbr.baseColorFactor, label_ + ": " + pbrWhere + ".baseColorFactor");
-  bool baseHasAlpha = false;
-  if (pbr.baseColorTexture.index >= 0)
-    surface.colorTexture =
-        texture({pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord,
-                 &pbr.baseColorTexture.extensions},
-                TextureUse::Color, pbrWhere + ".baseColorTexture", &baseHasAlpha);
   for (int c = 0; c < 3; ++c) surface.color[c] = std::fmin(surface.color[c], 1.0f);
-  const float roughness =
-      unitFactor(pbr.roughnessFactor, at + ".pbrMetallicRoughness.roughnessFactor");
-  const float metallic =
-      unitFactor(pbr.metallicFactor, at + ".pbrMetallicRoughness.metallicFactor");
-  surface.roughness = roughness;
-  TextureRef metalRough;
+  if (pbr.baseColorTexture.index >= 0)
+    surface.colorTexture = texture({pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord,
+                                    &pbr.baseColorTexture.extensions},
+                                   TextureUse::Color, pbrWhere + ".baseColorTexture", baseHasAlpha);
+  surface.roughness =
+      unitFactor(pbr.roughnessFactor, label_ + ": " + pbrWhere + ".roughnessFactor");
   if (pbr.metallicRoughnessTexture.index >= 0) {
-    metalRough = texture({pbr.metallicRoughnessTexture.index, pbr.metallicRoughnessTexture.texCoord,
-                          &pbr.metallicRoughnessTexture.extensions},
-                         TextureUse::Linear, pbrWhere + ".metallicRoughnessTexture");
-    surface.roughnessTexture = scaledChannel(metalRough, 1, roughness, &surface.roughnessChannel);
+    *metalRough =
+        texture({pbr.metallicRoughnessTexture.index, pbr.metallicRoughnessTexture.texCoord,
+                 &pbr.metallicRoughnessTexture.extensions},
+                TextureUse::Linear, pbrWhere + ".metallicRoughnessTexture");
+    surface.roughnessTexture =
+        scaledChannel(*metalRough, 1, surface.roughness, &surface.roughnessChannel);
   }
   if (m.normalTexture.index >= 0) {
     surface.normalMap =
@@ -247,77 +226,64 @@ Material GltfMaterialReader::read(int index, std::vector<Material>* parts) {
       warnOnce(where + ".normalTexture.scale " + formatNumber(float(m.normalTexture.scale)) +
                " is read as 1");
   }
+  return surface;
+}
 
-  float ior = 1.5f;
-  if (const tinygltf::Value* e = extension(m.extensions, "KHR_materials_ior")) {
-    const double value = extensionNumber(e, "ior", 1.5, at + ".extensions.KHR_materials_ior");
-    if (value > 1.0 && value < 1e3)
-      ior = float(value);
-    else
-      warnOnce(where + ".extensions.KHR_materials_ior.ior " + formatNumber(float(value)) +
-               " is read as 1.5 (candela's coats and glass take an index above 1)");
-  }
+float GltfMaterialReader::iorOf(const tinygltf::Material& m, const std::string& where) {
+  const tinygltf::Value* e = extension(m.extensions, "KHR_materials_ior");
+  if (!e) return 1.5f;
+  const double value =
+      extensionNumber(e, "ior", 1.5, label_ + ": " + where + ".extensions.KHR_materials_ior");
+  if (value > 1.0 && value < 1e3) return float(value);
+  warnOnce(where + ".extensions.KHR_materials_ior.ior " + formatNumber(float(value)) +
+           " is read as 1.5 (candela's coats and glass take an index above 1)");
+  return 1.5f;
+}
 
+Shading GltfMaterialReader::dielectricOf(const tinygltf::Material& m, const Material& surface,
+                                         float ior, const std::string& where) {
   Material plastic = surface;
   plastic.type = MaterialType::Plastic;
   plastic.ior = ior;
   prepareMaterial(&plastic);
-  Shading dielectric{plastic, {}};
-  if (const tinygltf::Value* e = extension(m.extensions, "KHR_materials_transmission")) {
-    const std::string tw = at + ".extensions.KHR_materials_transmission";
-    const float transmission =
-        unitFactor(extensionNumber(e, "transmissionFactor", 0.0, tw), tw + ".transmissionFactor");
-    TextureRef map;
-    uint32_t channel = 0;
-    if (e->Has("transmissionTexture")) {
-      const tinygltf::Value& info = e->Get("transmissionTexture");
-      const int textureIndex =
-          info.Has("index") && info.Get("index").IsInt() ? info.Get("index").GetNumberAsInt() : -1;
-      const int texCoord = info.Has("texCoord") && info.Get("texCoord").IsInt()
-                               ? info.Get("texCoord").GetNumberAsInt()
-                               : 0;
-      map = scaledChannel(texture({textureIndex, texCoord, nullptr}, TextureUse::Linear,
-                                  where + ".extensions.KHR_materials_transmission."
-                                          "transmissionTexture"),
-                          0, transmission, &channel);
-    }
-    if (transmission > 0.0f) {
-      Material glass;
-      glass.type = MaterialType::Glass;
-      glass.ior = ior;
-      glass.color = surface.color;
-      glass.roughness = surface.roughness;
-      glass.roughnessTexture = surface.roughnessTexture;
-      glass.roughnessChannel = surface.roughnessChannel;
-      glass.normalMap = surface.normalMap;
-      if (surface.colorTexture.index >= 0)
-        warnOnce(where +
-                 ": the transmitted light is tinted by baseColorFactor alone (candela's "
-                 "glass takes no colour texture)");
-      prepareMaterial(&glass);
-      if (transmission == 1.0f && map.index < 0)
-        dielectric = {glass, {}};
-      else
-        dielectric = mixOf({plastic, {}}, {glass, {}}, transmission, map, channel);
-    }
+  const tinygltf::Value* e = extension(m.extensions, "KHR_materials_transmission");
+  if (!e) return {plastic, {}};
+  const std::string tw = where + ".extensions.KHR_materials_transmission";
+  const float transmission =
+      unitFactor(extensionNumber(e, "transmissionFactor", 0.0, label_ + ": " + tw),
+                 label_ + ": " + tw + ".transmissionFactor");
+  if (!(transmission > 0.0f)) return {plastic, {}};
+  TextureRef map;
+  uint32_t channel = 0;
+  if (e->Has("transmissionTexture")) {
+    const tinygltf::Value& info = e->Get("transmissionTexture");
+    const auto integer = [&](const char* key, int fallback) {
+      return info.Has(key) && info.Get(key).IsInt() ? info.Get(key).GetNumberAsInt() : fallback;
+    };
+    map = scaledChannel(texture({integer("index", -1), integer("texCoord", 0), nullptr},
+                                TextureUse::Linear, tw + ".transmissionTexture"),
+                        0, transmission, &channel);
   }
+  Material glass;
+  glass.type = MaterialType::Glass;
+  glass.ior = ior;
+  glass.color = surface.color;
+  glass.roughness = surface.roughness;
+  glass.roughnessTexture = surface.roughnessTexture;
+  glass.roughnessChannel = surface.roughnessChannel;
+  glass.normalMap = surface.normalMap;
+  if (surface.colorTexture.index >= 0)
+    warnOnce(where +
+             ": the transmitted light is tinted by baseColorFactor alone (candela's glass takes "
+             "no colour texture)");
+  prepareMaterial(&glass);
+  if (transmission == 1.0f && map.index < 0) return {glass, {}};
+  return mixOf({plastic, {}}, {glass, {}}, transmission, map, channel);
+}
 
-  Material metal = surface;
-  metal.type = MaterialType::Conductor;
-  prepareMaterial(&metal);
-  Shading shading = dielectric;
-  if (metalRough.index >= 0) {
-    uint32_t channel = 0;
-    const TextureRef map = scaledChannel(metalRough, 2, metallic, &channel);
-    if (metallic > 0.0f) shading = mixOf(dielectric, {metal, {}}, metallic, map, channel);
-  } else if (metallic == 1.0f) {
-    shading = {metal, {}};
-  } else if (metallic > 0.0f) {
-    shading = mixOf(dielectric, {metal, {}}, metallic, TextureRef(), 0);
-  }
-  Material& result = shading.material;
-
-  // Emission: emissiveFactor times emissiveTexture, times KHR_materials_emissive_strength.
+void GltfMaterialReader::addEmission(const tinygltf::Material& m, const std::string& where,
+                                     Material* result) {
+  const std::string at = label_ + ": " + where;
   Vec3 emission = colourFactor(m.emissiveFactor, at + ".emissiveFactor");
   if (const tinygltf::Value* e = extension(m.extensions, "KHR_materials_emissive_strength")) {
     const std::string ew = at + ".extensions.KHR_materials_emissive_strength";
@@ -327,64 +293,91 @@ Material GltfMaterialReader::read(int index, std::vector<Material>* parts) {
     if (!std::isfinite(emission.x + emission.y + emission.z))
       throw SceneError(ew + ".emissiveStrength: the emission is beyond single precision");
   }
-  if (!isBlack(emission)) {
-    result.radiance = emission;
-    if (m.emissiveTexture.index >= 0) {
-      result.emissionTexture = texture(
-          {m.emissiveTexture.index, m.emissiveTexture.texCoord, &m.emissiveTexture.extensions},
-          TextureUse::Color, where + ".emissiveTexture");
-      const std::string beyond =
-          firstTexelBeyondFloat(textures_.texture(result.emissionTexture.index), emission);
-      if (!beyond.empty())
-        throw SceneError(at + ".emissiveTexture: the texture's " + beyond +
-                         " is beyond single precision");
-    }
-  }
+  if (isBlack(emission)) return;
+  result->radiance = emission;
+  if (m.emissiveTexture.index < 0) return;
+  result->emissionTexture =
+      texture({m.emissiveTexture.index, m.emissiveTexture.texCoord, &m.emissiveTexture.extensions},
+              TextureUse::Color, where + ".emissiveTexture");
+  const std::string beyond =
+      firstTexelBeyondFloat(textures_.texture(result->emissionTexture.index), emission);
+  if (!beyond.empty())
+    throw SceneError(at + ".emissiveTexture: the texture's " + beyond +
+                     " is beyond single precision");
+}
 
-  // Alpha: BLEND is coverage, as candela's alpha is; MASK is coverage 0 or 1 by alphaCutoff.
-  const float alphaFactor = pbr.baseColorFactor.size() > 3 ? float(pbr.baseColorFactor[3]) : 1.0f;
-  if (m.alphaMode == "BLEND" || m.alphaMode == "MASK") {
-    AlphaMask alpha;
-    const bool mask = m.alphaMode == "MASK";
-    const float cutoff = float(m.alphaCutoff);
-    if (surface.colorTexture.index >= 0 && baseHasAlpha) {
-      const TextureDesc& source = textures_.texture(surface.colorTexture.index);
-      if (mask) {
-        const std::string key = source.file + " alpha times " + formatNumber(alphaFactor) +
-                                " cut at " + formatNumber(cutoff);
-        const LoadedTexture made = textures_.add(key, TextureUse::Linear, [&](bool* hasAlpha) {
-          TextureDesc t;
-          t.file = key;
-          t.format = TextureFormat::Linear8;
-          t.width = source.width;
-          t.height = source.height;
-          t.texels8.assign(size_t(4) * t.width * t.height, 255);
-          for (size_t i = 0; i < size_t(t.width) * t.height; ++i)
-            t.texels8[4 * i + 3] = alphaFactor * texelValue(source, i, 3) >= cutoff ? 255 : 0;
-          *hasAlpha = true;
-          return t;
-        });
-        alpha.texture = surface.colorTexture;
-        alpha.texture.index = made.index;
-      } else {
-        alpha.constant = alphaFactor;
-        alpha.texture = surface.colorTexture;
-      }
-      alpha.channel = 3;
+void GltfMaterialReader::addAlpha(const tinygltf::Material& m, const TextureRef& baseTexture,
+                                  bool baseHasAlpha, const std::string& where, Material* result) {
+  if (m.alphaMode != "BLEND" && m.alphaMode != "MASK") return;
+  const std::vector<double>& base = m.pbrMetallicRoughness.baseColorFactor;
+  const float factor = base.size() > 3 ? float(base[3]) : 1.0f;
+  if (!(factor >= 0.0f && factor <= 1.0f))
+    throw SceneError(label_ + ": " + where +
+                     ".pbrMetallicRoughness.baseColorFactor: expected an alpha between 0 and 1");
+  const bool mask = m.alphaMode == "MASK";
+  const float cutoff = float(m.alphaCutoff);
+  AlphaMask alpha;
+  if (baseTexture.index >= 0 && baseHasAlpha) {
+    alpha.channel = 3;
+    if (mask) {
+      alpha.texture = derived(
+          baseTexture, "alpha times " + formatNumber(factor) + " cut at " + formatNumber(cutoff),
+          [&](const TextureDesc& t, size_t i) {
+            return factor * texelValue(t, i, 3) >= cutoff ? 1.0f : 0.0f;
+          });
     } else {
-      alpha.constant = mask ? (alphaFactor >= cutoff ? 1.0f : 0.0f) : alphaFactor;
+      alpha.constant = factor;
+      alpha.texture = baseTexture;
     }
-    if (!(alpha.constant >= 0.0f && alpha.constant <= 1.0f))
-      throw SceneError(at +
-                       ".pbrMetallicRoughness.baseColorFactor: expected an alpha between 0 "
-                       "and 1");
-    if (isMasked(alpha) && hasEmission(result))
-      warnOnce(where +
-               ": the alpha is not used: the material emits, and an emitting surface is "
-               "a light over all its area");
-    else
-      result.alpha = alpha;
+  } else {
+    alpha.constant = mask ? (factor >= cutoff ? 1.0f : 0.0f) : factor;
   }
+  if (isMasked(alpha) && hasEmission(*result))
+    warnOnce(where +
+             ": the alpha is not used: the material emits, and an emitting surface is a light "
+             "over all its area");
+  else
+    result->alpha = alpha;
+}
+
+Material GltfMaterialReader::read(int index, std::vector<Material>* parts) {
+  if (index < 0) {  // glTF's default material
+    Material metal;
+    metal.type = MaterialType::Conductor;
+    metal.color = Vec3(1.0f);
+    metal.roughness = 1.0f;
+    prepareMaterial(&metal);
+    return metal;
+  }
+  const tinygltf::Material& m = model_.materials[size_t(index)];
+  const std::string where = "materials[" + std::to_string(index) + "]";
+  for (const auto& [name, value] : m.extensions)
+    if (!kReadExtensions.count(name))
+      warnOnce(where + (m.name.empty() ? "" : " \"" + m.name + "\"") + ": " + name +
+               " is not rendered");
+  bool baseHasAlpha = false;
+  TextureRef metalRough;
+  const Material surface = surfaceOf(m, where, &baseHasAlpha, &metalRough);
+  const Shading dielectric = dielectricOf(m, surface, iorOf(m, where), where);
+
+  // Metalness: a mix of the dielectric and a conductor of the base colour.
+  const float metallic = unitFactor(m.pbrMetallicRoughness.metallicFactor,
+                                    label_ + ": " + where + ".pbrMetallicRoughness.metallicFactor");
+  Material metal = surface;
+  metal.type = MaterialType::Conductor;
+  prepareMaterial(&metal);
+  Shading shading = dielectric;
+  if (metalRough.index >= 0 && metallic > 0.0f) {
+    uint32_t channel = 0;
+    const TextureRef map = scaledChannel(metalRough, 2, metallic, &channel);
+    shading = mixOf(dielectric, {metal, {}}, metallic, map, channel);
+  } else if (metalRough.index < 0 && metallic == 1.0f) {
+    shading = {metal, {}};
+  } else if (metalRough.index < 0 && metallic > 0.0f) {
+    shading = mixOf(dielectric, {metal, {}}, metallic, TextureRef(), 0);
+  }
+  addEmission(m, where, &shading.material);
+  addAlpha(m, surface.colorTexture, baseHasAlpha, where, &shading.material);
   return place(shading, parts);
 }
 

@@ -6,6 +6,7 @@
 // what candela does not render is named in a warning.
 #pragma once
 
+#include <functional>
 #include <map>
 #include <set>
 #include <string>
@@ -16,6 +17,13 @@
 #include "scene/read/tiny_gltf_config.h"
 
 namespace candela {
+
+// A material and, where it is a mix, its two parts: placed into a mesh's parts only once whole,
+// so that every mix's parts follow it there (render/material_mix.h).
+struct Shading {
+  Material material;
+  std::vector<Shading> parts;
+};
 
 class GltfMaterialReader {
  public:
@@ -42,10 +50,25 @@ class GltfMaterialReader {
   };
   TextureRef texture(const TextureSlot& slot, TextureUse use, const std::string& where,
                      bool* hasAlpha = nullptr);
+  // A texture made from `ref`'s, each texel's four channels `value` of the source's texel i,
+  // read once per (ref's file, `what`).
+  TextureRef derived(const TextureRef& ref, const std::string& what,
+                     const std::function<float(const TextureDesc&, size_t)>& value);
   // `ref`'s channel times `factor`, as a texture of its own where factor is not 1 (glTF
   // multiplies its textures by factors that candela's fields do not take), into *channel.
   TextureRef scaledChannel(const TextureRef& ref, uint32_t channel, float factor,
                            uint32_t* outChannel);
+  // What every part shares: the base colour, the roughness and the normal map; the
+  // metallic-roughness texture into *metalRough.
+  Material surfaceOf(const tinygltf::Material& m, const std::string& where, bool* baseHasAlpha,
+                     TextureRef* metalRough);
+  float iorOf(const tinygltf::Material& m, const std::string& where);
+  // The plastic, or with transmission the glass or a mix of the two.
+  Shading dielectricOf(const tinygltf::Material& m, const Material& surface, float ior,
+                       const std::string& where);
+  void addEmission(const tinygltf::Material& m, const std::string& where, Material* result);
+  void addAlpha(const tinygltf::Material& m, const TextureRef& baseTexture, bool baseHasAlpha,
+                const std::string& where, Material* result);
   void warnOnce(const std::string& message);
 
   const tinygltf::Model& model_;
