@@ -103,6 +103,24 @@ TEST(GltfMaterials, TransmissionIsGlassOfTheIndexAndPartsFollowTheirMix) {
   EXPECT_EQ(g.type, MaterialType::Glass);
   EXPECT_FLOAT_EQ(g.ior, 1.7f);
   EXPECT_FLOAT_EQ(g.roughness, 0.1f);
+  // KHR_materials_volume and KHR_materials_dispersion: the absorption and the channels' indices
+  // of the JSON glass of that transmission_depth and Abbe number.
+  glass["pbrMetallicRoughness"]["baseColorFactor"] = {1, 1, 1, 1};
+  glass["extensions"]["KHR_materials_volume"] = {
+      {"attenuationColor", {0.5, 0.8, 1}}, {"attenuationDistance", 2}, {"thicknessFactor", 0.1}};
+  glass["extensions"]["KHR_materials_dispersion"] = {{"dispersion", 0.5}};
+  const Material absorbing = materialOf(dir, glass);
+  const SceneData json = test::loadTestScene(
+      R"({"camera": {}, "spheres": [{"position": [0, 0, 0], "radius": 1, "material": {"type":
+          "glass", "ior": 1.7, "roughness": 0.1, "color": [0.5, 0.8, 1], "transmission_depth": 2,
+          "abbe": 40}}]})");
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_FLOAT_EQ(absorbing.absorption[c], json.materials[0].absorption[c]);
+    EXPECT_FLOAT_EQ(absorbing.channelIor[c], json.materials[0].channelIor[c]);
+    EXPECT_EQ(absorbing.color[c], json.materials[0].color[c]);
+  }
+  EXPECT_GT(absorbing.absorption.x, 0.3f);
+  EXPECT_GT(absorbing.channelIor.z, absorbing.channelIor.x);
   // Half transmitting, half metal: a mix of (a mix of plastic and glass) and a conductor, placed
   // so that flattening puts every part after its mix.
   nlohmann::json half = pbr(0.5, 0.3);

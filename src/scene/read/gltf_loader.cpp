@@ -19,9 +19,10 @@ namespace candela {
 namespace {
 
 // The extensions a file may require that candela reads; it refuses a file requiring any other.
-const std::set<std::string> kReadableRequired = {"KHR_texture_transform",
-                                                 "KHR_materials_emissive_strength",
-                                                 "KHR_materials_ior", "KHR_materials_transmission"};
+const std::set<std::string> kReadableRequired = {
+    "KHR_texture_transform", "KHR_materials_emissive_strength",
+    "KHR_materials_ior",     "KHR_materials_transmission",
+    "KHR_materials_volume",  "KHR_materials_dispersion"};
 
 using Matrix = std::array<double, 16>;  // column-major, as glTF writes it
 

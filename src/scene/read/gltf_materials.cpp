@@ -6,6 +6,7 @@
 
 #include "core/texture.h"
 #include "render/material_prepare.h"
+#include "scene/cauchy_index.h"
 #include "scene/read/gltf_uri.h"
 #include "scene/read/texel_check.h"
 #include "scene/scene_error.h"
@@ -15,7 +16,8 @@ namespace {
 
 // The extensions of a material that candela reads; any other a material uses gets a warning.
 const std::set<std::string> kReadExtensions = {"KHR_materials_emissive_strength",
-                                               "KHR_materials_ior", "KHR_materials_transmission"};
+                                               "KHR_materials_ior", "KHR_materials_transmission",
+                                               "KHR_materials_volume", "KHR_materials_dispersion"};
 
 const tinygltf::Value* extension(const tinygltf::ExtensionMap& extensions, const char* name) {
   const auto found = extensions.find(name);
@@ -272,6 +274,7 @@ Shading GltfMaterialReader::dielectricOf(const tinygltf::Material& m, const Mate
   glass.roughnessTexture = surface.roughnessTexture;
   glass.roughnessChannel = surface.roughnessChannel;
   glass.normalMap = surface.normalMap;
+  addVolume(m, where, &glass);
   if (surface.colorTexture.index >= 0)
     warnOnce(where +
              ": the transmitted light is tinted by baseColorFactor alone (candela's glass takes "
@@ -279,6 +282,44 @@ Shading GltfMaterialReader::dielectricOf(const tinygltf::Material& m, const Mate
   prepareMaterial(&glass);
   if (transmission == 1.0f && map.index < 0) return {glass, {}};
   return mixOf({plastic, {}}, {glass, {}}, transmission, map, channel);
+}
+
+void GltfMaterialReader::addVolume(const tinygltf::Material& m, const std::string& where,
+                                   Material* glass) {
+  // KHR_materials_volume: attenuationColor is what white light keeps after attenuationDistance
+  // inside, as candela's transmission_depth (thicknessFactor is for renderers without the
+  // geometry's own thickness).
+  if (const tinygltf::Value* e = extension(m.extensions, "KHR_materials_volume")) {
+    const std::string vw = label_ + ": " + where + ".extensions.KHR_materials_volume";
+    const double distance = e->Has("attenuationDistance")
+                                ? extensionNumber(e, "attenuationDistance", 0.0, vw)
+                                : INFINITY;
+    if (!(distance > 0.0)) throw SceneError(vw + ".attenuationDistance: expected a number > 0");
+    Vec3 kept(1.0f);
+    if (e->Has("attenuationColor")) {
+      const tinygltf::Value& c = e->Get("attenuationColor");
+      for (int i = 0; i < 3; ++i) {
+        const tinygltf::Value& v = c.IsArray() && c.ArrayLen() == 3 ? c.Get(i) : tinygltf::Value();
+        kept[i] = v.IsNumber() ? float(v.GetNumberAsDouble()) : NAN;
+        if (!(kept[i] > 0.0f && kept[i] <= 1.0f))
+          throw SceneError(vw + ".attenuationColor: expected three numbers in (0, 1]");
+      }
+    }
+    if (std::isfinite(distance))
+      for (int c = 0; c < 3; ++c) glass->absorption[c] = float(-std::log(kept[c]) / distance);
+    if (!isFinite(glass->absorption))
+      throw SceneError(vw + ": absorbs more than single precision can say");
+  }
+  // KHR_materials_dispersion: 20 / the Abbe number, at the index's d line.
+  if (const tinygltf::Value* e = extension(m.extensions, "KHR_materials_dispersion")) {
+    const std::string dw = label_ + ": " + where + ".extensions.KHR_materials_dispersion";
+    const double dispersion = extensionNumber(e, "dispersion", 0.0, dw);
+    if (!(dispersion >= 0.0 && dispersion <= 20.0))
+      throw SceneError(dw + ".dispersion: expected a number in [0, 20] (20 / the Abbe number)");
+    if (dispersion > 0.0)
+      for (int c = 0; c < 3; ++c)
+        glass->channelIor[c] = float(cauchyIndex(glass->ior, 20.0 / dispersion, kChannelLambda[c]));
+  }
 }
 
 void GltfMaterialReader::addEmission(const tinygltf::Material& m, const std::string& where,

@@ -1,7 +1,8 @@
 // glTF 2.0 materials as candela's (docs/scene-format.md, glTF meshes): the metallic-roughness
 // model is a mix, by metalness, of a plastic (the dielectric base under its coat, glTF's
 // fresnel_mix) and a conductor whose reflectance is the base colour; KHR_materials_transmission
-// mixes glass into the dielectric, KHR_materials_ior sets its index. Normal maps, emission
+// mixes glass into the dielectric, KHR_materials_ior sets its index, KHR_materials_volume its
+// absorption and KHR_materials_dispersion its Abbe number. Normal maps, emission
 // (KHR_materials_emissive_strength), alpha (MASK and BLEND) and KHR_texture_transform are read;
 // what candela does not render is named in a warning.
 #pragma once
@@ -66,6 +67,8 @@ class GltfMaterialReader {
   // The plastic, or with transmission the glass or a mix of the two.
   Shading dielectricOf(const tinygltf::Material& m, const Material& surface, float ior,
                        const std::string& where);
+  // A glass's absorption (KHR_materials_volume) and dispersion (KHR_materials_dispersion).
+  void addVolume(const tinygltf::Material& m, const std::string& where, Material* glass);
   void addEmission(const tinygltf::Material& m, const std::string& where, Material* result);
   void addAlpha(const tinygltf::Material& m, const TextureRef& baseTexture, bool baseHasAlpha,
                 const std::string& where, Material* result);
