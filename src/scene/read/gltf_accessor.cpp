@@ -30,13 +30,18 @@ struct ElementBytes {
   size_t count = 0;
 };
 
-ElementBytes elementBytes(const tinygltf::Model& model, int index, int components,
-                          size_t componentSize, const std::string& where) {
-  const std::string what = where + ": accessor " + std::to_string(index);
+const tinygltf::Accessor& accessorAt(const tinygltf::Model& model, int index,
+                                     const std::string& where) {
   if (index < 0 || size_t(index) >= model.accessors.size())
     throw SceneError(where + ": accessor " + std::to_string(index) + " does not exist (" +
                      std::to_string(model.accessors.size()) + " accessors)");
-  const tinygltf::Accessor& a = model.accessors[size_t(index)];
+  return model.accessors[size_t(index)];
+}
+
+ElementBytes elementBytes(const tinygltf::Model& model, int index, int components,
+                          size_t componentSize, const std::string& where) {
+  const std::string what = where + ": accessor " + std::to_string(index);
+  const tinygltf::Accessor& a = accessorAt(model, index, where);
   if (a.sparse.isSparse) throw SceneError(what + " is sparse; candela reads only plain accessors");
   if (a.bufferView < 0 || size_t(a.bufferView) >= model.bufferViews.size())
     throw SceneError(what + " has no buffer view (bufferView " + std::to_string(a.bufferView) +
@@ -86,9 +91,7 @@ void requireType(const tinygltf::Accessor& a, int index, int components, const s
 
 std::vector<float> readFloatAccessor(const tinygltf::Model& model, int index, int components,
                                      bool normalizedIntegers, const std::string& where) {
-  // Checked before its fields are read: elementBytes refuses an index out of range.
-  elementBytes(model, index, components, 1, where);
-  const tinygltf::Accessor& a = model.accessors[size_t(index)];
+  const tinygltf::Accessor& a = accessorAt(model, index, where);
   requireType(a, index, components, where);
   const bool isFloat = a.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT;
   const bool isInteger = a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
@@ -129,8 +132,7 @@ std::vector<float> readFloatAccessor(const tinygltf::Model& model, int index, in
 
 std::vector<uint32_t> readIndexAccessor(const tinygltf::Model& model, int index,
                                         const std::string& where) {
-  elementBytes(model, index, 1, 1, where);
-  const tinygltf::Accessor& a = model.accessors[size_t(index)];
+  const tinygltf::Accessor& a = accessorAt(model, index, where);
   requireType(a, index, 1, where);
   size_t size = 0;
   switch (a.componentType) {
