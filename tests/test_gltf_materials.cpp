@@ -153,6 +153,9 @@ TEST(GltfMaterials, EmissionTimesItsStrengthAndAlphaByMode) {
   EXPECT_EQ(g.radiance.x, 4.0f);
   EXPECT_EQ(g.radiance.y, 2.0f);
   EXPECT_EQ(g.radiance.z, 1.0f);
+  EXPECT_FALSE(g.twoSided);
+  glow["doubleSided"] = true;  // its emission leaves both sides
+  EXPECT_TRUE(materialOf(dir, glow).twoSided);
   nlohmann::json blend = pbr(0, 0.5);
   blend["pbrMetallicRoughness"]["baseColorFactor"][3] = 0.4;
   blend["alphaMode"] = "BLEND";

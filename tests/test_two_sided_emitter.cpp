@@ -4,7 +4,8 @@
 // (each the other's mirror, a hair apart): the room renders the same both ways, by next-event
 // estimation, by the rays that hit the panel, and by light subpaths that leave either side. The
 // light tree weighs the panel's back, which a one-sided panel's points behind it never pick.
-// Spheres refuse it, and so does every material that does not emit.
+// Spheres refuse it, and so does every material that does not emit. A material that reflects
+// and emits ("emission_two_sided") is the same light.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -126,8 +127,50 @@ TEST(TwoSidedEmitter, TheSceneFormatRefusesItWhereNothingEmitsFromTwoSides) {
   EXPECT_EQ(error("{" + camera + R"(, "materials": {"lamp": )" + kTwoSidedLamp + R"(},
                     "spheres": [{"position": [0, 0, -5], "radius": 1, "material": "lamp"}]})"),
             "test.json: spheres[0].material: a two-sided emitter on a sphere, which emits outwards "
-            "only; expected a material without \"two_sided\" (two-sided emitters are mesh faces "
-            "and rectangle lights)");
+            "only; expected a material without \"two_sided\" or \"emission_two_sided\" "
+            "(two-sided emitters are mesh faces and rectangle lights)");
+  EXPECT_EQ(error("{" + camera + R"(, "spheres": [{"position": [0, 0, -5], "radius": 1,
+                    "material": {"type": "diffuse", "emission_two_sided": true}}]})"),
+            "test.json: spheres[0].material.emission_two_sided: not used without an \"emission\" "
+            "beside it");
+  EXPECT_EQ(error("{" + camera + R"(, "spheres": [{"position": [0, 0, -5], "radius": 1,
+                    "material": {"type": "glass", "emission": 1, "emission_two_sided": true}}]})"),
+            "test.json: spheres[0].material.emission_two_sided: not used by a \"glass\" material");
+  EXPECT_EQ(error("{" + camera + R"(, "spheres": [{"position": [0, 0, -5], "radius": 1,
+                    "material": {"type": "plastic", "emission": 1, "emission_two_sided": true}}]})")
+                .find("a two-sided emitter on a sphere"),
+            std::string("test.json: spheres[0].material: ").size());
+}
+
+// A sheet that reflects and glows ("emission" with "emission_two_sided" on a diffuse material,
+// as glTF's doubleSided emissive materials and Blender's emission are) lights the room as two
+// one-sided glowing sheets back to back: each reflects what reaches its side and emits from it.
+TEST(TwoSidedEmitter, AGlowingSheetLightsTheRoomAsTwoOneSidedSheetsBackToBack) {
+  const std::string sheet = writePanelObj("glowing_sheet.obj", 0.0f, 1);
+  const std::string front = writePanelObj("glowing_front.obj", 1e-4f, 1);
+  const std::string back = writePanelObj("glowing_back.obj", -1e-4f, -1);
+  const char* const glow = R"({"type": "diffuse", "color": 0.5, "emission": [6, 5.5, 4.5]})";
+  const char* const twoSidedGlow = R"({"type": "diffuse", "color": 0.5, "emission": [6, 5.5,
+      4.5], "emission_two_sided": true})";
+  for (const std::string lightPaths : {"off", "on"}) {
+    SCOPED_TRACE("light_paths " + lightPaths);
+    const auto render = [&](const std::string& panels) {
+      return test::SeedPair{test::renderTestScene(roomWith(panels, lightPaths, 1)),
+                            test::renderTestScene(roomWith(panels, lightPaths, 2))};
+    };
+    test::expectSameImage(render(panel(sheet, twoSidedGlow)),
+                          render(panel(front, glow) + ", " + panel(back, glow)));
+  }
+  // And not as one one-sided sheet, whose back is dark: what the test tells apart.
+  const RenderResult oneSided = test::renderTestScene(roomWith(panel(sheet, glow), "off", 1));
+  const RenderResult twoSided =
+      test::renderTestScene(roomWith(panel(sheet, twoSidedGlow), "off", 1));
+  double sumOne = 0, sumTwo = 0;
+  for (size_t i = 0; i < oneSided.image.pixels.size(); ++i) {
+    sumOne += oneSided.image.pixels[i];
+    sumTwo += twoSided.image.pixels[i];
+  }
+  EXPECT_GT(sumTwo, 1.2 * sumOne);
 }
 
 }  // namespace

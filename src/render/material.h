@@ -64,7 +64,7 @@ struct Material {
   // Radiance emitted from the front side: an emissive material's, or the "emission" of one that
   // reflects too (never a mix's part: a mix's own is its surface's, render/integrator.h).
   Vec3 radiance{0.0f};
-  bool twoSided = false;       // emissive: emits `radiance` from its back as well (mesh faces only)
+  bool twoSided = false;          // emits `radiance` from its back as well (mesh faces only)
   bool hiddenFromCamera = false;  // emissive: camera rays pass it by (a light's "visible": false)
   TextureRef colorTexture;     // a texture that `color` tints (render/surface_color.h)
   TextureRef emissionTexture;  // a texture that `radiance` tints (MTL map_Ke)

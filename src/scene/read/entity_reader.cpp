@@ -128,7 +128,8 @@ SphereDesc readSphere(const JsonValue& value, const MaterialLibrary& library,
   if (sphere.material.twoSided) {
     const std::string why =
         "a two-sided emitter on a sphere, which emits outwards only; expected a material without "
-        "\"two_sided\" (two-sided emitters are mesh faces and rectangle lights)";
+        "\"two_sided\" or \"emission_two_sided\" (two-sided emitters are mesh faces and "
+        "rectangle lights)";
     fields.require("material").fail(why);
   }
   // Traversal lets rays through mesh faces alone (geometry/alpha_mask.h).

@@ -336,6 +336,8 @@ void GltfMaterialReader::addEmission(const tinygltf::Material& m, const std::str
   }
   if (isBlack(emission)) return;
   result->radiance = emission;
+  // A double-sided material shows its front on both sides, emission included.
+  result->twoSided = m.doubleSided;
   if (m.emissiveTexture.index < 0) return;
   result->emissionTexture =
       texture({m.emissiveTexture.index, m.emissiveTexture.texCoord, &m.emissiveTexture.extensions},

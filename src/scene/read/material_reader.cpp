@@ -38,22 +38,23 @@ enum TypeIndex : size_t {
 // clang-format off
 const std::vector<std::string> kFields = {
     "color", "ior", "roughness", "metal", "radiance", "strength", "two_sided", "normal_map",
-    "bump_map", "alpha", "emission", "emission_strength", "transmission_depth", "abbe", "visible",
-    "anisotropy", "anisotropy_rotation", "materials", "weight"};
-// clang-format on
+    "bump_map", "alpha", "emission", "emission_strength", "emission_two_sided",
+    "transmission_depth", "abbe", "visible", "anisotropy", "anisotropy_rotation", "materials",
+    "weight"};
 const std::vector<std::vector<std::string>> kFieldsOf = {
-    {"color", "normal_map", "bump_map", "alpha", "emission", "emission_strength"},  // diffuse
-    {"color", "normal_map", "bump_map", "alpha", "emission", "emission_strength"},  // mirror
+    {"color", "normal_map", "bump_map", "alpha", "emission", "emission_strength", "emission_two_sided"},  // diffuse
+    {"color", "normal_map", "bump_map", "alpha", "emission", "emission_strength", "emission_two_sided"},  // mirror
     {"color", "ior", "roughness", "anisotropy", "anisotropy_rotation", "normal_map", "bump_map",
      "alpha", "emission", "emission_strength", "transmission_depth", "abbe"},  // glass
     {"radiance", "strength", "two_sided", "visible"},                          // emissive
     {"color", "roughness", "anisotropy", "anisotropy_rotation", "metal", "normal_map", "bump_map",
-     "alpha", "emission", "emission_strength"},  // conductor
+     "alpha", "emission", "emission_strength", "emission_two_sided"},  // conductor
     {"color", "ior", "roughness", "normal_map", "bump_map", "alpha", "emission",
-     "emission_strength"},                                              // plastic
-    {"ior"},                                                            // thin_glass
-    {"materials", "weight", "alpha", "emission", "emission_strength"},  // mix
+     "emission_strength", "emission_two_sided"},  // plastic
+    {"ior"},  // thin_glass
+    {"materials", "weight", "alpha", "emission", "emission_strength", "emission_two_sided"},  // mix
 };
+// clang-format on
 
 // The material a mix names for a part: one of the library's, or a shorthand type's defaults.
 using NamedMaterial = std::function<MaterialRead(const JsonValue& name)>;
@@ -130,14 +131,18 @@ void readEmissive(JsonObject& fields, TextureLoader& textures, Material* materia
 
 // The "emission" of a material that reflects (or transmits) as well, times its
 // "emission_strength": it emits as an emissive material of that radiance would, from its front
-// side, and is a light. An emitting surface is sampled over all its area, so it has no alpha.
+// side (from both where "emission_two_sided", but on glass, whose back is its inside), and is a
+// light. An emitting surface is sampled over all its area, so it has no alpha.
 void readSurfaceEmission(JsonObject& fields, TextureLoader& textures, Material* material) {
   const std::optional<JsonValue> emission = fields.get("emission");
   if (!emission) {
     fields.reject("emission_strength", "not used without an \"emission\" beside it");
+    fields.reject("emission_two_sided", "not used without an \"emission\" beside it");
     return;
   }
   readRadiance(fields, *emission, "emission_strength", textures, material);
+  if (std::optional<JsonValue> twoSided = fields.get("emission_two_sided"))
+    material->twoSided = twoSided->boolean();
   if (isMasked(material->alpha) && hasEmission(*material))
     emission->fail(
         "makes a light of a surface with an \"alpha\", which lights sample over all their "
