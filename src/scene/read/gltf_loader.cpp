@@ -222,10 +222,25 @@ class MeshBuilder {
       throw SceneError(at + ": the file has more than 2^31 vertices");
     const uint32_t material = materialIndex(primitive.material, where + ".material");
 
-    // Positions by the node's transform, normals by its inverse transpose (the cofactors, times
-    // the determinant's sign).
-    const uint32_t base = uint32_t(mesh_.positions.size());
-    for (size_t v = 0; v < vertices; ++v) {
+    const Placed placed = appendVertices(positions, normals, uvs, world);
+    appendTriangles(mode, indices, placed, material);
+  }
+
+  // Where a primitive's vertices landed in mesh_, and which of its normals are usable.
+  struct Placed {
+    uint32_t base = 0;
+    int32_t normalBase = -1, uvBase = -1;  // -1: it has none
+    std::vector<bool> usableNormal;
+    bool mirrored = false;  // by a transform of negative determinant
+  };
+
+  // Positions by the node's transform, normals by its inverse transpose (the cofactors, times
+  // the determinant's sign), uvs turned to candela's v.
+  Placed appendVertices(const std::vector<float>& positions, const std::vector<float>& normals,
+                        const std::vector<float>& uvs, const Matrix& world) {
+    Placed placed;
+    placed.base = uint32_t(mesh_.positions.size());
+    for (size_t v = 0; v < positions.size() / 3; ++v) {
       const double x = positions[3 * v], y = positions[3 * v + 1], z = positions[3 * v + 2];
       Vec3 p;
       for (int r = 0; r < 3; ++r)
@@ -240,46 +255,52 @@ class MeshBuilder {
         cof[r][c] = at3((c + 1) % 3, (r + 1) % 3) * at3((c + 2) % 3, (r + 2) % 3) -
                     at3((c + 2) % 3, (r + 1) % 3) * at3((c + 1) % 3, (r + 2) % 3);
     const double det = at3(0, 0) * cof[0][0] + at3(1, 0) * cof[0][1] + at3(2, 0) * cof[0][2];
-    const int32_t normalBase = int32_t(mesh_.normals.size());
-    std::vector<bool> usable(normals.empty() ? 0 : vertices, true);
-    for (size_t v = 0; v < usable.size(); ++v) {
+    placed.mirrored = det < 0;
+    if (!normals.empty()) placed.normalBase = int32_t(mesh_.normals.size());
+    for (size_t v = 0; v < normals.size() / 3; ++v) {
       Vec3 n;
       for (int r = 0; r < 3; ++r)
         n[r] = float(cof[r][0] * normals[3 * v] + cof[r][1] * normals[3 * v + 1] +
                      cof[r][2] * normals[3 * v + 2]);
-      if (det < 0) n = -n;
+      if (placed.mirrored) n = -n;
       const float length = std::sqrt(dot(n, n));
-      usable[v] = length > 0.0f && std::isfinite(length);
-      mesh_.normals.push_back(usable[v] ? n / length : Vec3(0.0f, 0.0f, 1.0f));
+      placed.usableNormal.push_back(length > 0.0f && std::isfinite(length));
+      mesh_.normals.push_back(placed.usableNormal.back() ? n / length : Vec3(0.0f, 0.0f, 1.0f));
     }
-    const int32_t uvBase = int32_t(mesh_.uvs.size());
+    if (!uvs.empty()) placed.uvBase = int32_t(mesh_.uvs.size());
     for (size_t v = 0; v < uvs.size() / 2; ++v)
       mesh_.uvs.push_back(Vec2(uvs[2 * v], 1.0f - uvs[2 * v + 1]));
+    return placed;
+  }
 
-    const auto addTriangle = [&](uint32_t a, uint32_t b, uint32_t c) {
-      if (det < 0) std::swap(b, c);  // a mirroring transform: keep the outside out
+  // The triangles of a list, a strip or a fan of `indices` (checked against the vertices).
+  void appendTriangles(int mode, const std::vector<uint32_t>& indices, const Placed& placed,
+                       uint32_t material) {
+    const auto add = [&](uint32_t a, uint32_t b, uint32_t c) {
+      if (placed.mirrored) std::swap(b, c);  // keep the outside out
       MeshTriangle t;
       const uint32_t corner[3] = {a, b, c};
+      const std::vector<bool>& usable = placed.usableNormal;
       const bool smooth = !usable.empty() && usable[a] && usable[b] && usable[c];
       for (int k = 0; k < 3; ++k) {
-        t.v[k] = base + corner[k];
-        t.n[k] = smooth ? normalBase + int32_t(corner[k]) : -1;
-        t.t[k] = uvs.empty() ? -1 : uvBase + int32_t(corner[k]);
+        t.v[k] = placed.base + corner[k];
+        t.n[k] = smooth ? placed.normalBase + int32_t(corner[k]) : -1;
+        t.t[k] = placed.uvBase < 0 ? -1 : placed.uvBase + int32_t(corner[k]);
       }
       t.material = material;
       mesh_.triangles.push_back(t);
     };
     const size_t n = indices.size();
     if (mode == TINYGLTF_MODE_TRIANGLES) {
-      for (size_t i = 0; i + 2 < n; i += 3) addTriangle(indices[i], indices[i + 1], indices[i + 2]);
+      for (size_t i = 0; i + 2 < n; i += 3) add(indices[i], indices[i + 1], indices[i + 2]);
     } else if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
       for (size_t i = 0; i + 2 < n; ++i)  // every other one turned, to keep the strip's winding
         if (i % 2 == 0)
-          addTriangle(indices[i], indices[i + 1], indices[i + 2]);
+          add(indices[i], indices[i + 1], indices[i + 2]);
         else
-          addTriangle(indices[i + 1], indices[i], indices[i + 2]);
+          add(indices[i + 1], indices[i], indices[i + 2]);
     } else {
-      for (size_t i = 1; i + 1 < n; ++i) addTriangle(indices[0], indices[i], indices[i + 1]);
+      for (size_t i = 1; i + 1 < n; ++i) add(indices[0], indices[i], indices[i + 1]);
     }
   }
 
