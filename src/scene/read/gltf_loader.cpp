@@ -1,107 +1,21 @@
 // glTF loading through tinygltf, every index and bound checked here; see gltf_loader.h.
 #include "scene/read/gltf_loader.h"
 
-#include <array>
 #include <cmath>
-#include <exception>
 #include <filesystem>
 #include <map>
 #include <set>
 #include <vector>
 
 #include "scene/read/gltf_accessor.h"
+#include "scene/read/gltf_file.h"
 #include "scene/read/gltf_materials.h"
+#include "scene/read/gltf_nodes.h"
 #include "scene/read/gltf_uri.h"
-#include "scene/read/text_file.h"
 #include "scene/scene_error.h"
 
 namespace candela {
 namespace {
-
-// The extensions a file may require that candela reads; it refuses a file requiring any other.
-const std::set<std::string> kReadableRequired = {
-    "KHR_texture_transform", "KHR_materials_emissive_strength",
-    "KHR_materials_ior",     "KHR_materials_transmission",
-    "KHR_materials_volume",  "KHR_materials_dispersion"};
-
-using Matrix = std::array<double, 16>;  // column-major, as glTF writes it
-
-Matrix identity() { return {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}; }
-
-Matrix multiply(const Matrix& a, const Matrix& b) {
-  Matrix m{};
-  for (int c = 0; c < 4; ++c)
-    for (int r = 0; r < 4; ++r)
-      for (int k = 0; k < 4; ++k) m[4 * c + r] += a[4 * k + r] * b[4 * c + k];
-  return m;
-}
-
-// A node's own transform: its matrix, or translation * rotation * scale.
-Matrix localTransform(const tinygltf::Node& node, const std::string& where) {
-  auto finite = [&](const std::vector<double>& values, size_t count, const char* key) {
-    if (!values.empty() && values.size() != count)
-      throw SceneError(where + "." + key + ": expected " + std::to_string(count) + " numbers");
-    for (double v : values)
-      if (!std::isfinite(v)) throw SceneError(where + "." + key + ": expected finite numbers");
-  };
-  finite(node.matrix, 16, "matrix");
-  finite(node.translation, 3, "translation");
-  finite(node.rotation, 4, "rotation");
-  finite(node.scale, 3, "scale");
-  if (node.matrix.size() == 16) {
-    Matrix m;
-    std::copy(node.matrix.begin(), node.matrix.end(), m.begin());
-    return m;
-  }
-  Matrix m = identity();
-  if (node.rotation.size() == 4) {
-    double x = node.rotation[0], y = node.rotation[1], z = node.rotation[2], w = node.rotation[3];
-    const double n = std::sqrt(x * x + y * y + z * z + w * w);
-    if (!(n > 0)) throw SceneError(where + ".rotation: expected a unit quaternion, got 0");
-    x /= n, y /= n, z /= n, w /= n;
-    m = {1 - 2 * (y * y + z * z),
-         2 * (x * y + z * w),
-         2 * (x * z - y * w),
-         0,
-         2 * (x * y - z * w),
-         1 - 2 * (x * x + z * z),
-         2 * (y * z + x * w),
-         0,
-         2 * (x * z + y * w),
-         2 * (y * z - x * w),
-         1 - 2 * (x * x + y * y),
-         0,
-         0,
-         0,
-         0,
-         1};
-  }
-  if (node.scale.size() == 3)
-    for (int c = 0; c < 3; ++c)
-      for (int r = 0; r < 3; ++r) m[4 * c + r] *= node.scale[size_t(c)];
-  if (node.translation.size() == 3)
-    for (int r = 0; r < 3; ++r) m[12 + r] = node.translation[size_t(r)];
-  return m;
-}
-
-// The nodes the file's scene places, outermost first.
-std::vector<int> rootNodes(const tinygltf::Model& model, const std::string& label) {
-  if (!model.scenes.empty()) {
-    const int scene = model.defaultScene >= 0 ? model.defaultScene : 0;
-    if (size_t(scene) >= model.scenes.size())
-      throw SceneError(label + ": scene: scene " + std::to_string(scene) + " does not exist (" +
-                       std::to_string(model.scenes.size()) + " scenes)");
-    return model.scenes[size_t(scene)].nodes;
-  }
-  std::vector<bool> child(model.nodes.size(), false);
-  for (const tinygltf::Node& node : model.nodes)
-    for (int c : node.children)
-      if (c >= 0 && size_t(c) < child.size()) child[size_t(c)] = true;
-  std::vector<int> roots;
-  for (size_t i = 0; i < child.size(); ++i)
-    if (!child[i]) roots.push_back(int(i));
-  return roots;
-}
 
 class MeshBuilder {
  public:
@@ -111,28 +25,10 @@ class MeshBuilder {
         label_(label),
         materials_(model, label, folder, embedded, textures, &mesh_.warnings) {}
 
-  void addNodes(const std::vector<int>& roots) {
-    std::vector<bool> reached(model_.nodes.size(), false);
-    std::vector<std::pair<int, Matrix>> pending;
-    for (auto it = roots.rbegin(); it != roots.rend(); ++it) pending.push_back({*it, identity()});
-    while (!pending.empty()) {
-      const auto [index, parent] = pending.back();
-      pending.pop_back();
-      if (index < 0 || size_t(index) >= model_.nodes.size())
-        throw SceneError(label_ + ": node " + std::to_string(index) + " does not exist (" +
-                         std::to_string(model_.nodes.size()) + " nodes)");
-      const std::string where = "nodes[" + std::to_string(index) + "]";
-      if (reached[size_t(index)])
-        throw SceneError(label_ + ": " + where +
-                         " is reached twice (a node may have one parent and appear once)");
-      reached[size_t(index)] = true;
-      const tinygltf::Node& node = model_.nodes[size_t(index)];
-      const Matrix world = multiply(parent, localTransform(node, label_ + ": " + where));
-      if (node.skin >= 0) warn("skins are not applied: skinned meshes keep their rest pose");
-      if (node.mesh >= 0) addMesh(node.mesh, world, where + ".mesh");
-      for (auto c = node.children.rbegin(); c != node.children.rend(); ++c)
-        pending.push_back({*c, world});
-    }
+  void addNode(int index, const tinygltf::Node& node, const GltfMatrix& world) {
+    const std::string where = "nodes[" + std::to_string(index) + "]";
+    if (node.skin >= 0) warn("skins are not applied: skinned meshes keep their rest pose");
+    if (node.mesh >= 0) addMesh(node.mesh, world, where + ".mesh");
   }
 
   MeshDesc finish() {
@@ -165,7 +61,7 @@ class MeshBuilder {
     return made;
   }
 
-  void addMesh(int index, const Matrix& world, const std::string& where) {
+  void addMesh(int index, const GltfMatrix& world, const std::string& where) {
     if (index < 0 || size_t(index) >= model_.meshes.size())
       throw SceneError(label_ + ": " + where + ": mesh " + std::to_string(index) +
                        " does not exist (" + std::to_string(model_.meshes.size()) + " meshes)");
@@ -175,7 +71,7 @@ class MeshBuilder {
                    "meshes[" + std::to_string(index) + "].primitives[" + std::to_string(p) + "]");
   }
 
-  void addPrimitive(const tinygltf::Primitive& primitive, const Matrix& world,
+  void addPrimitive(const tinygltf::Primitive& primitive, const GltfMatrix& world,
                     const std::string& where) {
     const int mode = primitive.mode < 0 ? TINYGLTF_MODE_TRIANGLES : primitive.mode;
     if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
@@ -237,7 +133,7 @@ class MeshBuilder {
   // Positions by the node's transform, normals by its inverse transpose (the cofactors, times
   // the determinant's sign), uvs turned to candela's v.
   Placed appendVertices(const std::vector<float>& positions, const std::vector<float>& normals,
-                        const std::vector<float>& uvs, const Matrix& world) {
+                        const std::vector<float>& uvs, const GltfMatrix& world) {
     Placed placed;
     placed.base = uint32_t(mesh_.positions.size());
     for (size_t v = 0; v < positions.size() / 3; ++v) {
@@ -312,41 +208,6 @@ class MeshBuilder {
   std::set<std::string> warned_;
 };
 
-// What tinygltf's image callback fills: the bytes of each image held in the file (a data URI or a
-// buffer view), by image index, for the texture loader to decode (images named by URI are read
-// from their files instead), and the model being read, against which a buffer view's bytes are
-// checked: tinygltf hands them over without looking at the buffer's size.
-struct ImageBytes {
-  const tinygltf::Model* model = nullptr;
-  std::map<int, std::string> embedded;
-};
-
-bool keepImageBytes(tinygltf::Image* image, const int index, std::string* error, std::string*, int,
-                    int, const unsigned char* bytes, int size, void* user) {
-  auto& images = *static_cast<ImageBytes*>(user);
-  if (image->bufferView >= 0) {
-    const tinygltf::Model& model = *images.model;
-    const tinygltf::BufferView& view = model.bufferViews[size_t(image->bufferView)];
-    const tinygltf::Buffer& buffer = model.buffers[size_t(view.buffer)];
-    if (uint64_t(view.byteOffset) + uint64_t(view.byteLength) > buffer.data.size() ||
-        view.byteLength > size_t(INT32_MAX)) {
-      *error += "images[" + std::to_string(index) + "]: buffer view " +
-                std::to_string(image->bufferView) + " ends past its buffer (" +
-                std::to_string(buffer.data.size()) + " bytes)\n";
-      return false;
-    }
-  }
-  images.embedded[index].assign(reinterpret_cast<const char*>(bytes), size_t(size));
-  image->image.clear();
-  return true;
-}
-
-std::string firstLine(const std::string& text) {
-  std::string line = text.substr(0, text.find('\n'));
-  while (!line.empty() && (line.back() == ' ' || line.back() == '\r')) line.pop_back();
-  return line;
-}
-
 }  // namespace
 
 bool isGltfPath(const std::string& path) {
@@ -356,45 +217,16 @@ bool isGltfPath(const std::string& path) {
 }
 
 MeshDesc loadGltfFile(const std::string& path, const std::string& label, TextureLoader& textures) {
-  std::string bytes, reason;
-  if (!readTextFile(path, &bytes, &reason))
-    throw SceneError("cannot open \"" + label + "\" (" + reason + ")");
-  const std::string folder = std::filesystem::path(path).parent_path().string();
-  tinygltf::Model model;
-  ImageBytes images;
-  images.model = &model;
-  std::string error, warning;
-  bool parsed = false;
-  try {
-    tinygltf::TinyGLTF loader;
-    loader.SetImageLoader(keepImageBytes, &images);
-    const bool binary = bytes.size() >= 4 && bytes.compare(0, 4, "glTF") == 0;
-    if (bytes.size() >= (size_t(1) << 31))
-      throw SceneError(label + ": the file is larger than 2 GiB");
-    parsed = binary
-                 ? loader.LoadBinaryFromMemory(&model, &error, &warning,
-                                               reinterpret_cast<const unsigned char*>(bytes.data()),
-                                               unsigned(bytes.size()), folder)
-                 : loader.LoadASCIIFromString(&model, &error, &warning, bytes.data(),
-                                              unsigned(bytes.size()), folder);
-  } catch (const SceneError&) {
-    throw;
-  } catch (const std::exception& e) {
-    throw SceneError(label + ": not a readable glTF file (" + e.what() + ")");
-  }
-  if (!parsed)
-    throw SceneError(label + ": " +
-                     (error.empty() ? std::string("not a readable glTF file") : firstLine(error)));
-  for (const std::string& required : model.extensionsRequired)
-    if (!kReadableRequired.count(required))
-      throw SceneError(label + ": extensionsRequired: the file requires " + required +
-                       ", which candela does not read");
-  MeshBuilder builder(model, label, folder, images.embedded, textures);
-  builder.addNodes(rootNodes(model, label));
+  const std::unique_ptr<GltfFile> file = readGltfFile(path, label);
+  MeshBuilder builder(file->model, label, file->folder, file->embedded, textures);
+  forEachPlacedNode(file->model, label,
+                    [&](int index, const tinygltf::Node& node, const GltfMatrix& world) {
+                      builder.addNode(index, node, world);
+                    });
   MeshDesc mesh = builder.finish();
-  for (const tinygltf::Buffer& buffer : model.buffers)
+  for (const tinygltf::Buffer& buffer : file->model.buffers)
     if (!buffer.uri.empty() && !isDataUri(buffer.uri))
-      mesh.bufferFiles.push_back(gltfUriPath(buffer.uri, folder));
+      mesh.bufferFiles.push_back(gltfUriPath(buffer.uri, file->folder));
   return mesh;
 }
 

@@ -1,0 +1,118 @@
+// Placing a glTF file's nodes; see gltf_nodes.h.
+#include "scene/read/gltf_nodes.h"
+
+#include <cmath>
+#include <utility>
+#include <vector>
+
+#include "scene/scene_error.h"
+
+namespace candela {
+namespace {
+
+GltfMatrix identity() { return {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}; }
+
+GltfMatrix multiply(const GltfMatrix& a, const GltfMatrix& b) {
+  GltfMatrix m{};
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r)
+      for (int k = 0; k < 4; ++k) m[4 * c + r] += a[4 * k + r] * b[4 * c + k];
+  return m;
+}
+
+// A node's own transform: its matrix, or translation * rotation * scale.
+GltfMatrix localTransform(const tinygltf::Node& node, const std::string& where) {
+  auto finite = [&](const std::vector<double>& values, size_t count, const char* key) {
+    if (!values.empty() && values.size() != count)
+      throw SceneError(where + "." + key + ": expected " + std::to_string(count) + " numbers");
+    for (double v : values)
+      if (!std::isfinite(v)) throw SceneError(where + "." + key + ": expected finite numbers");
+  };
+  finite(node.matrix, 16, "matrix");
+  finite(node.translation, 3, "translation");
+  finite(node.rotation, 4, "rotation");
+  finite(node.scale, 3, "scale");
+  if (node.matrix.size() == 16) {
+    GltfMatrix m;
+    std::copy(node.matrix.begin(), node.matrix.end(), m.begin());
+    return m;
+  }
+  GltfMatrix m = identity();
+  if (node.rotation.size() == 4) {
+    double x = node.rotation[0], y = node.rotation[1], z = node.rotation[2], w = node.rotation[3];
+    const double n = std::sqrt(x * x + y * y + z * z + w * w);
+    if (!(n > 0)) throw SceneError(where + ".rotation: expected a unit quaternion, got 0");
+    x /= n, y /= n, z /= n, w /= n;
+    m = {1 - 2 * (y * y + z * z),
+         2 * (x * y + z * w),
+         2 * (x * z - y * w),
+         0,
+         2 * (x * y - z * w),
+         1 - 2 * (x * x + z * z),
+         2 * (y * z + x * w),
+         0,
+         2 * (x * z + y * w),
+         2 * (y * z - x * w),
+         1 - 2 * (x * x + y * y),
+         0,
+         0,
+         0,
+         0,
+         1};
+  }
+  if (node.scale.size() == 3)
+    for (int c = 0; c < 3; ++c)
+      for (int r = 0; r < 3; ++r) m[4 * c + r] *= node.scale[size_t(c)];
+  if (node.translation.size() == 3)
+    for (int r = 0; r < 3; ++r) m[12 + r] = node.translation[size_t(r)];
+  return m;
+}
+
+// The nodes the file's scene places, outermost first.
+std::vector<int> rootNodes(const tinygltf::Model& model, const std::string& label) {
+  if (!model.scenes.empty()) {
+    const int scene = model.defaultScene >= 0 ? model.defaultScene : 0;
+    if (size_t(scene) >= model.scenes.size())
+      throw SceneError(label + ": scene: scene " + std::to_string(scene) + " does not exist (" +
+                       std::to_string(model.scenes.size()) + " scenes)");
+    return model.scenes[size_t(scene)].nodes;
+  }
+  std::vector<bool> child(model.nodes.size(), false);
+  for (const tinygltf::Node& node : model.nodes)
+    for (int c : node.children)
+      if (c >= 0 && size_t(c) < child.size()) child[size_t(c)] = true;
+  std::vector<int> roots;
+  for (size_t i = 0; i < child.size(); ++i)
+    if (!child[i]) roots.push_back(int(i));
+  return roots;
+}
+
+}  // namespace
+
+void forEachPlacedNode(const tinygltf::Model& model, const std::string& label,
+                       const std::function<void(int index, const tinygltf::Node& node,
+                                                const GltfMatrix& world)>& visit) {
+  const std::vector<int> roots = rootNodes(model, label);
+  std::vector<bool> reached(model.nodes.size(), false);
+  std::vector<std::pair<int, GltfMatrix>> pending;
+  for (auto it = roots.rbegin(); it != roots.rend(); ++it) pending.push_back({*it, identity()});
+  while (!pending.empty()) {
+    const auto [index, parent] = pending.back();
+    pending.pop_back();
+    if (index < 0 || size_t(index) >= model.nodes.size())
+      throw SceneError(label + ": node " + std::to_string(index) + " does not exist (" +
+                       std::to_string(model.nodes.size()) + " nodes)");
+    const std::string where = "nodes[" + std::to_string(index) + "]";
+    if (reached[size_t(index)])
+      throw SceneError(label + ": " + where +
+                       " is reached twice (a node may have one parent and appear once)");
+    reached[size_t(index)] = true;
+    const tinygltf::Node& node = model.nodes[size_t(index)];
+    const GltfMatrix world = multiply(parent, localTransform(node, label + ": " + where));
+    visit(index, node, world);
+    for (auto c = node.children.rbegin(); c != node.children.rend(); ++c)
+      pending.push_back({*c, world});
+  }
+}
+
+}  // namespace candela
