@@ -1,11 +1,14 @@
 // libFuzzer target: the input is a glTF file, text or binary (.glb), rendered by a fixed small
 // scene; what its URIs name is looked for in a temporary folder that holds only it (data URIs and
-// a .glb's own buffer are what the seeds use). See docs/fuzzing.md.
+// a .glb's own buffer are what the seeds use), and its cameras are read as a scene's camera would
+// take them. See docs/fuzzing.md.
 #include <cstddef>
 #include <cstdint>
 #include <string>
 
 #include "fuzz_scene.h"
+#include "scene/read/gltf_camera.h"
+#include "scene/scene_error.h"
 
 namespace {
 
@@ -28,5 +31,12 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   candela::fuzz::writeInput(folder + "/m.gltf", data, size);
   candela::fuzz::loadAndTrace(kScene, folder);
+  // Its first and second cameras, as a scene's camera would take them ("gltf").
+  for (const uint32_t number : {0u, 1u}) {
+    try {
+      candela::readGltfCamera(folder + "/m.gltf", "m.gltf", number);
+    } catch (const candela::SceneError&) {
+    }
+  }
   return 0;
 }

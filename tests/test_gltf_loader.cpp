@@ -205,9 +205,9 @@ TEST(GltfLoader, WhatIsNotRenderedIsNamedInWarnings) {
   EXPECT_EQ(mesh.triangles.size(), 2u);
   const std::vector<std::string> expected = {
       "m.gltf: vertex colours (COLOR_0) are not rendered (meshes[0].primitives[0])",
-      "m.gltf: points and lines are not rendered (meshes[0].primitives[1] is one)",
-      "m.gltf: the file's cameras are not used (the scene's camera is)"};
+      "m.gltf: points and lines are not rendered (meshes[0].primitives[1] is one)"};
   EXPECT_EQ(mesh.warnings, expected);
+  EXPECT_TRUE(mesh.holdsCameras);  // the scene names them (test_gltf_camera.cpp)
 }
 
 TEST(GltfLoader, ASceneObjectNamesAGltfFile) {

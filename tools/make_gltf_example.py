@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Writes the glTF file of scenes/examples/gltf.json: one .glb that shows what candela reads from
-glTF (docs/scene-format.md, *glTF meshes*): a node tree, one sphere mesh placed by three nodes,
+glTF (docs/scene-format.md, *glTF meshes*, *A camera from a glTF file*): a camera, a node tree,
+one sphere mesh placed by three nodes,
 each mesh with a material of its own (a metal-rough mix by a texture, glass by
 KHR_materials_transmission, an emission with KHR_materials_emissive_strength), a ground tiled by
 KHR_texture_transform and a screen of holes cut by MASK alpha, the images held in the buffer.
@@ -73,6 +74,23 @@ def quad(glb, half, uv_repeat):
         glb.accessor([0, 1, 2, 0, 2, 3], 'H', 5123, "SCALAR", 6)
 
 
+def look_at(eye, target):
+    """The quaternion (x, y, z, w) that turns a glTF camera (looking along -z, +y up) at `eye`
+    towards `target`, keeping the world's +y up."""
+    f = [t - e for t, e in zip(target, eye)]
+    n = math.sqrt(sum(c * c for c in f))
+    back = [-c / n for c in f]
+    right = [back[2], 0.0, -back[0]]  # (0, 1, 0) x back
+    n = math.sqrt(sum(c * c for c in right))
+    right = [c / n for c in right]
+    up = [back[1] * right[2] - back[2] * right[1], back[2] * right[0] - back[0] * right[2],
+          back[0] * right[1] - back[1] * right[0]]
+    m = [[right[0], up[0], back[0]], [right[1], up[1], back[1]], [right[2], up[2], back[2]]]
+    w = math.sqrt(max(0.0, 1 + m[0][0] + m[1][1] + m[2][2])) / 2
+    return [(m[2][1] - m[1][2]) / (4 * w), (m[0][2] - m[2][0]) / (4 * w),
+            (m[1][0] - m[0][1]) / (4 * w), w]
+
+
 def checker(size, cells, a, b):
     return png8(size, size, [[c for x in range(size) for c in
                               (a if (x * cells // size + y * cells // size) % 2 else b)]
@@ -121,6 +139,7 @@ def main(path):
     meshes.append({"primitives": [{"attributes": ground_attr, "indices": ground_idx, "material": 3}]})
     meshes.append({"primitives": [{"attributes": screen_attr, "indices": screen_idx, "material": 4}]})
     s = math.sqrt(0.5)
+    camera = look_at((0.4, 2.5, 9.5), (0.0, 0.9, 0.0))
     nodes = [
         {"name": "root", "children": [1, 2, 3, 4, 5], "rotation": [0, math.sin(0.15), 0, math.cos(0.15)]},
         {"mesh": 0, "translation": [-2.2, 1, 0]},
@@ -128,13 +147,19 @@ def main(path):
         {"mesh": 2, "translation": [2.2, 0.6, 0.4], "scale": [0.6, 0.6, 0.6]},
         {"mesh": 3},
         {"mesh": 4, "translation": [0, 1.3, -2.2], "rotation": [s, 0, 0, s], "scale": [2.6, 1, 1.3]},
+        {"name": "camera", "camera": 0, "translation": [0.4, 2.5, 9.5], "rotation": camera},
     ]
+    # 44 degrees across a 16:9 image.
+    cameras = [{"type": "perspective", "perspective": {
+        "yfov": 2 * math.atan(math.tan(math.radians(22)) * 9 / 16), "aspectRatio": 16 / 9,
+        "znear": 0.05}}]
     while len(glb.buffer) % 4:
         glb.buffer.append(0)
     doc = {"asset": {"version": "2.0", "generator": "candela tools/make_gltf_example.py"},
            "extensionsUsed": ["KHR_materials_transmission", "KHR_materials_ior",
                               "KHR_materials_emissive_strength", "KHR_texture_transform"],
-           "scene": 0, "scenes": [{"nodes": [0]}], "nodes": nodes, "meshes": meshes,
+           "scene": 0, "scenes": [{"nodes": [0, 6]}], "nodes": nodes, "meshes": meshes,
+           "cameras": cameras,
            "materials": materials, "textures": textures, "images": glb.images,
            "accessors": glb.accessors, "bufferViews": glb.views,
            "buffers": [{"byteLength": len(glb.buffer)}]}

@@ -33,11 +33,13 @@ namespace {
 
 // Where K comes from: the intrinsics, or the field of view.
 std::string intrinsicsPath(const CameraDesc& desc) {
+  if (!desc.gltfFile.empty()) return "camera.gltf";
   return desc.intrinsics ? "camera.intrinsics" : "camera.fov";
 }
 
 // Where the camera's pose comes from.
 std::string posePath(const CameraDesc& desc) {
+  if (!desc.gltfFile.empty()) return "camera.gltf";
   if (desc.extrinsicsR) return "camera.extrinsics";
   return desc.lookAt ? "camera.look_at" : "camera.rotation";
 }

@@ -54,6 +54,7 @@ struct MeshDesc {
   std::vector<Material> mixParts;   // what its mixes mix (Material::mixParts index this)
   std::vector<std::string> materialFiles;  // the MTL files read, beside the OBJ file
   std::vector<std::string> bufferFiles;    // a glTF file's buffers read from files of their own
+  bool holdsCameras = false;  // a glTF file with cameras (the scene's camera may take one)
   // What the file leaves to a default that its author may not have meant, "<file>:<line>: ..."
   // (an MTL file that cannot be read, a material that no MTL file defines).
   std::vector<std::string> warnings;
@@ -147,6 +148,8 @@ struct CameraDesc {
   std::optional<float> focusDistance;
   LensDistortion distortion;  // OpenCV's distCoeffs (render/lens_distortion.h)
   CameraProjection projection = CameraProjection::Perspective;
+  // The glTF file the pose and field of view came from ("gltf", resolved), or empty.
+  std::string gltfFile;
 };
 
 // What an animation track can change (docs/scene-format.md, *Animation*). Which properties a

@@ -311,7 +311,7 @@ def test_gltf_meshes_load_with_their_warnings_and_render(tmp_path, scene_dict):
     (tmp_path / "m.gltf").write_text(json.dumps(gltf))
     scene_dict["objects"] = [{"file": "m.gltf"}]
     expected = ("<dict>: objects[0].file: m.gltf: the file's cameras are not used "
-                "(the scene's camera is)")
+                "(the scene's camera takes one with \"gltf\")")
     with pytest.warns(UserWarning) as caught:
         scene = candela.Scene.from_dict(scene_dict, base_dir=tmp_path)
     assert [str(w.message) for w in caught] == [expected]

@@ -17,6 +17,8 @@ std::vector<InputFile> inputFiles(const std::vector<SceneDesc>& scenes) {
   std::vector<InputFile> files;
   for (const SceneDesc& scene : scenes) {
     files.push_back({scene.file, "the scene file"});
+    if (!scene.camera.gltfFile.empty())
+      files.push_back({scene.camera.gltfFile, "the camera's glTF file"});
     for (const ObjectDesc& object : scene.objects) {
       files.push_back({object.file, "the mesh"});
       for (const std::string& mtl : object.mesh->materialFiles)

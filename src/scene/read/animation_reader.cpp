@@ -179,6 +179,12 @@ void readKeys(const JsonValue& value, AnimTrack& track, const CameraDesc& camera
   }
 }
 
+// How a camera with fixed extrinsics got them.
+std::string posedBy(const CameraDesc& c) {
+  return c.gltfFile.empty() ? "a camera given by \"extrinsics\""
+                            : "a camera taken from a glTF file (\"gltf\")";
+}
+
 // Refuses a property that the target's style does not use.
 void checkUsed(const JsonValue& property, const AnimTrack& track, const SceneDesc& scene) {
   const auto unused = [&](const std::string& why) {
@@ -196,10 +202,10 @@ void checkUsed(const JsonValue& property, const AnimTrack& track, const SceneDes
         if (c.projection == CameraProjection::Equirectangular) unused("an equirectangular camera");
         break;
       case AnimProperty::Position:
-        if (c.extrinsicsR) unused("a camera given by \"extrinsics\"");
+        if (c.extrinsicsR) unused(posedBy(c));
         break;
       case AnimProperty::Rotation:
-        if (c.extrinsicsR) unused("a camera given by \"extrinsics\"");
+        if (c.extrinsicsR) unused(posedBy(c));
         if (c.lookAt) unused("a camera aimed with \"look_at\"");
         break;
       case AnimProperty::LookAt:

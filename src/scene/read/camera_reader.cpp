@@ -4,16 +4,20 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <filesystem>
 #include <string>
 #include <vector>
 
 #include "scene/along_up.h"
 #include "scene/camera_resolve.h"
+#include "scene/read/gltf_camera.h"
+#include "scene/scene_error.h"
 
 namespace candela {
 namespace {
 
 constexpr uint64_t kMaxUint32 = UINT32_MAX;
+constexpr double kRadiansPerDegree = 0.017453292519943295769;
 
 // K from {"fx", "fy", "cx", "cy"} or a 3x3 matrix [[fx, s, cx], [0, fy, cy], [0, 0, 1]]. A skew s
 // is kept: K^-1 handles it, and calibration tools do produce it.
@@ -95,6 +99,42 @@ void readProjection(JsonObject& fields, const JsonValue& value, CameraDesc& came
   }
 }
 
+// "gltf": the pose and vertical field of view of a camera that a glTF file places, the
+// "gltf_camera"-th (from 0); the horizontal field of view follows from the image's width and
+// height.
+void readGltfCamera(JsonObject& fields, const std::string& baseDir, CameraDesc& camera) {
+  const std::optional<JsonValue> gltf = fields.get("gltf");
+  if (!gltf) {
+    fields.reject("gltf_camera", "not used without \"gltf\"");
+    return;
+  }
+  for (const char* key :
+       {"position", "rotation", "look_at", "up", "extrinsics", "fov", "intrinsics", "projection"})
+    fields.exclusive("gltf", key);
+  const std::string written = gltf->string();
+  if (written.empty()) gltf->failExpected("the path of a glTF file");
+  uint32_t number = 0;
+  if (std::optional<JsonValue> which = fields.get("gltf_camera"))
+    number = uint32_t(which->integer(0, kMaxUint32, "a camera's number, from 0"));
+  const std::filesystem::path path(written);
+  camera.gltfFile = path.is_absolute() ? written : (std::filesystem::path(baseDir) / path).string();
+  GltfCamera read;
+  try {
+    read = candela::readGltfCamera(camera.gltfFile, written, number);
+  } catch (const SceneError& e) {
+    gltf->fail(e.what());
+  }
+  camera.extrinsicsR = read.worldToCamera;
+  camera.extrinsicsT = read.translation;
+  const double halfHeight = std::tan(read.yfovDegrees * kRadiansPerDegree / 2.0);
+  camera.fov =
+      float(2.0 * std::atan(halfHeight * camera.width / camera.height) / kRadiansPerDegree);
+  if (!(camera.fov < 180.0f))
+    gltf->fail("its vertical field of view of " + formatNumber(float(read.yfovDegrees)) +
+               " degrees is wider than 180 across a " + std::to_string(camera.width) + " x " +
+               std::to_string(camera.height) + " image");
+}
+
 void readPose(JsonObject& fields, CameraDesc& camera) {
   for (const char* key : {"position", "rotation", "look_at"}) fields.exclusive("extrinsics", key);
   fields.exclusive("rotation", "look_at");
@@ -145,10 +185,10 @@ float readFov(const JsonValue& value, CameraProjection projection) {
   return fov;
 }
 
-CameraDesc readCamera(const JsonValue& value, RenderSettings& render) {
+CameraDesc readCamera(const JsonValue& value, RenderSettings& render, const std::string& baseDir) {
   JsonObject fields(value, {"width", "height", "fov", "intrinsics", "position", "rotation",
                             "look_at", "up", "extrinsics", "spp", "rays", "aperture_radius",
-                            "focus_distance", "distortion", "projection"});
+                            "focus_distance", "distortion", "projection", "gltf", "gltf_camera"});
   CameraDesc camera;
   if (std::optional<JsonValue> width = fields.get("width"))
     camera.width = static_cast<uint32_t>(width->integer(1, kMaxUint32, "a positive integer"));
@@ -168,6 +208,7 @@ CameraDesc readCamera(const JsonValue& value, RenderSettings& render) {
     camera.distortion = readDistortion(*distortion, camera.projection);
 
   readPose(fields, camera);
+  readGltfCamera(fields, baseDir, camera);
 
   fields.exclusive("spp", "rays");
   std::optional<JsonValue> spp = fields.get("spp");

@@ -8,6 +8,8 @@
 // focus_distance wherever an open aperture has no look_at to focus on.
 #pragma once
 
+#include <string>
+
 #include "scene/read/json_reader.h"
 #include "scene/scene_desc.h"
 
@@ -21,7 +23,8 @@ constexpr uint64_t kMaxPixels = uint64_t(1) << 28;
 // equidistant fisheye.
 float readFov(const JsonValue& value, CameraProjection projection);
 
-// The camera's spp (the scene's samples per pixel) goes to `render`.
-CameraDesc readCamera(const JsonValue& value, RenderSettings& render);
+// The camera's spp (the scene's samples per pixel) goes to `render`; a glTF file it names
+// ("gltf") is resolved against `baseDir`, the scene file's folder.
+CameraDesc readCamera(const JsonValue& value, RenderSettings& render, const std::string& baseDir);
 
 }  // namespace candela

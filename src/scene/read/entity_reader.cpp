@@ -155,7 +155,7 @@ ObjectDesc readObject(const JsonValue& value, const MaterialLibrary& library,
   object.id = readId(fields);
   const JsonValue file = fields.require("file");
   const std::string name = file.string();
-  if (name.empty()) file.failExpected("the path of an OBJ or PLY file");
+  if (name.empty()) file.failExpected("the path of an OBJ, PLY or glTF file");
   const std::filesystem::path path(name);
   object.file = path.is_absolute() ? name : (std::filesystem::path(baseDir) / path).string();
   if (std::optional<JsonValue> position = fields.get("position"))

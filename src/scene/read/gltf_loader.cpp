@@ -34,7 +34,7 @@ class MeshBuilder {
   MeshDesc finish() {
     if (mesh_.triangles.empty())
       throw SceneError(label_ + ": expected at least one triangle, got none");
-    if (!model_.cameras.empty()) warn("the file's cameras are not used (the scene's camera is)");
+    mesh_.holdsCameras = !model_.cameras.empty();
     if (!model_.animations.empty())
       warn("the file's animations are not played (the scene's keyframes move the object)");
     if (model_.extensions.count("KHR_lights_punctual"))

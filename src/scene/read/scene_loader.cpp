@@ -68,6 +68,15 @@ void shadeFacesWithoutNormals(SceneDesc& scene) {
   }
 }
 
+// Whether two paths name one file (as far as they exist; else as written).
+bool sameFile(const std::string& a, const std::string& b) {
+  if (a.empty() || b.empty()) return false;
+  std::error_code error;
+  const std::filesystem::path ca = std::filesystem::weakly_canonical(a, error);
+  const std::filesystem::path cb = std::filesystem::weakly_canonical(b, error);
+  return error ? a == b : ca == cb;
+}
+
 // The mesh files (OBJ, PLY or glTF) named by the scene's objects, each read once however many
 // objects use it and its triangles put in spatial order (scene/mesh_order.h). A failure is reported
 // at the object's "file" key, with the file as the scene wrote it.
@@ -101,6 +110,18 @@ void loadMeshes(SceneDesc& scene, const std::vector<std::string>& writtenNames,
     for (const std::string& warning : object.mesh->warnings)
       scene.warnings.push_back(scene.file + ": " + memberPath(object.where, "file") + ": " +
                                warning);
+  }
+  // A glTF file's cameras, once per file, unless the scene's camera takes one from it.
+  std::set<const MeshDesc*> cameras;
+  for (size_t i = 0; i < scene.objects.size(); ++i) {
+    const ObjectDesc& object = scene.objects[i];
+    if (!object.mesh->holdsCameras || sameFile(object.file, scene.camera.gltfFile) ||
+        !cameras.insert(object.mesh.get()).second)
+      continue;
+    scene.warnings.push_back(scene.file + ": " + memberPath(object.where, "file") + ": " +
+                             writtenNames[i] +
+                             ": the file's cameras are not used (the scene's camera takes one "
+                             "with \"gltf\")");
   }
   // A texture on a mesh without texture coordinates reads one texel everywhere: a flat colour,
   // surely not what was meant (a file exported without `vt`); an anisotropic material has no
@@ -137,7 +158,7 @@ SceneDesc parseSceneText(const std::string& text, const std::string& fileLabel,
 
   SceneDesc scene;
   scene.file = fileLabel;
-  scene.camera = readCamera(top.require("camera"), scene.render);
+  scene.camera = readCamera(top.require("camera"), scene.render, baseDir);
   if (std::optional<JsonValue> render = top.get("render"))
     readRender(*render, scene.render, scene.output);
 
