@@ -308,6 +308,22 @@ TEST(GltfMaterials, BrokenMaterialsAreRefusedWithTheirJsonPath) {
     EXPECT_EQ(std::string(e.what()),
               "m.gltf: images[0]: buffer view 3 ends past its buffer (101 bytes)");
   }
+  // A texture transform's texCoord far past any int (found in review: it was cast unchecked).
+  nlohmann::json transformed = pbr(0, 0.5);
+  transformed["pbrMetallicRoughness"]["baseColorTexture"] = {
+      {"index", 0}, {"extensions", {{"KHR_texture_transform", {{"texCoord", 1e300}}}}}};
+  GltfFile withImage = quad(nlohmann::json::array({transformed}));
+  withImage.addImage(pngBytes(dir));
+  withImage.doc["textures"] = nlohmann::json::array({nlohmann::json{{"source", 0}}});
+  try {
+    load(dir.write("set.glb", withImage.glb()));
+    ADD_FAILURE() << "no error";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "m.gltf: materials[0].pbrMetallicRoughness.baseColorTexture.extensions."
+              "KHR_texture_transform.texCoord: expected the number of a texture coordinate set, "
+              "got 1e+300");
+  }
   nlohmann::json glowing = pbr(0, 0.5);
   glowing["emissiveFactor"] = {1, -1, 0};
   EXPECT_EQ(error(glowing),

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "core/texture.h"
 #include "render/material_prepare.h"
@@ -152,7 +153,14 @@ TextureRef GltfMaterialReader::texture(const TextureSlot& slot, TextureUse use,
       }
     }
     const double rotation = extensionNumber(transform, "rotation", 0.0, tw);
-    texCoord = int(extensionNumber(transform, "texCoord", texCoord, tw));
+    const double set = extensionNumber(transform, "texCoord", texCoord, tw);
+    if (!(set >= 0.0 && set < 1e6 && set == std::floor(set))) {
+      char shown[32];
+      std::snprintf(shown, sizeof shown, "%g", set);
+      throw SceneError(tw + ".texCoord: expected the number of a texture coordinate set, got " +
+                       shown);
+    }
+    texCoord = int(set);
     const double c = std::cos(rotation), s = std::sin(rotation);
     ref.scaleU = float(scale[0]);
     ref.scaleV = float(scale[1]);
