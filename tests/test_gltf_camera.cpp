@@ -126,6 +126,12 @@ TEST(GltfCamera, RefusesWhatItCannotTake) {
                      "position", "keys": [[0, [0, 0, 0]], [1, [0, 0, 1]]]}]})"),
             "test.json: animation.tracks[0].property: \"position\" is not used by a camera taken "
             "from a glTF file (\"gltf\")");
+  GltfFile far = cameraFile();
+  far.doc["nodes"][2]["translation"] = {0, 0, 1e200};
+  dir.write("far.gltf", far.gltf());
+  EXPECT_EQ(error(R"({"gltf": "far.gltf"})"),
+            "test.json: camera.gltf: far.gltf: nodes[2].camera: the camera's place is beyond "
+            "reach");
   EXPECT_EQ(error(R"({"gltf": "gone.gltf"})"),
             "test.json: camera.gltf: cannot open \"gone.gltf\" (No such file or directory)");
 }

@@ -69,6 +69,7 @@ GltfCamera readGltfCamera(const std::string& path, const std::string& label, uin
         camera.worldToCamera.m[i][j] = float(rows[i][j]);
         t -= rows[i][j] * w[size_t(12 + j)];
       }
+      if (!(std::fabs(t) < 1e30)) throw SceneError(where + ": the camera's place is beyond reach");
       camera.translation[i] = float(t);
     }
   });
