@@ -4,13 +4,13 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <filesystem>
 #include <string>
 #include <vector>
 
 #include "scene/along_up.h"
 #include "scene/camera_resolve.h"
 #include "scene/read/gltf_camera.h"
+#include "scene/read/resolve_path.h"
 #include "scene/scene_error.h"
 
 namespace candela {
@@ -116,8 +116,7 @@ void readGltfCamera(JsonObject& fields, const std::string& baseDir, CameraDesc& 
   uint32_t number = 0;
   if (std::optional<JsonValue> which = fields.get("gltf_camera"))
     number = uint32_t(which->integer(0, kMaxUint32, "a camera's number, from 0"));
-  const std::filesystem::path path(written);
-  camera.gltfFile = path.is_absolute() ? written : (std::filesystem::path(baseDir) / path).string();
+  camera.gltfFile = resolvePath(written, baseDir);
   GltfCamera read;
   try {
     read = candela::readGltfCamera(camera.gltfFile, written, number);

@@ -2,13 +2,13 @@
 #include "scene/read/entity_reader.h"
 
 #include <cmath>
-#include <filesystem>
 #include <sstream>
 #include <utility>
 
 #include "scene/along_up.h"
 #include "scene/light_emission_desc.h"
 #include "scene/read/ies_profile.h"
+#include "scene/read/resolve_path.h"
 #include "scene/read/texel_check.h"
 #include "scene/read/texture_reader.h"
 #include "scene/scene_error.h"
@@ -156,8 +156,7 @@ ObjectDesc readObject(const JsonValue& value, const MaterialLibrary& library,
   const JsonValue file = fields.require("file");
   const std::string name = file.string();
   if (name.empty()) file.failExpected("the path of an OBJ, PLY or glTF file");
-  const std::filesystem::path path(name);
-  object.file = path.is_absolute() ? name : (std::filesystem::path(baseDir) / path).string();
+  object.file = resolvePath(name, baseDir);
   if (std::optional<JsonValue> position = fields.get("position"))
     object.position = position->vec3();
   if (std::optional<JsonValue> rotation = fields.get("rotation"))

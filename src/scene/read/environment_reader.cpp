@@ -2,12 +2,12 @@
 #include "scene/read/environment_reader.h"
 
 #include <exception>
-#include <filesystem>
 #include <memory>
 #include <optional>
 
 #include "image/image_io.h"
 #include "scene/content_hash.h"
+#include "scene/read/resolve_path.h"
 #include "scene/read/texel_check.h"
 #include "scene/scene_error.h"
 
@@ -27,8 +27,7 @@ EnvironmentDesc readEnvironment(const JsonValue& value, const std::string& baseD
     return environment;
   }
   const std::string written = map->string();
-  const std::filesystem::path path(written);
-  environment.map = path.is_absolute() ? written : (std::filesystem::path(baseDir) / path).string();
+  environment.map = resolvePath(written, baseDir);
   environment.color = Vec3(1.0f);
   if (std::optional<JsonValue> color = fields.get("color")) environment.color = color->colour();
   if (std::optional<JsonValue> strength = fields.get("strength"))

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <memory>
 
+#include "scene/dvec3.h"
 #include "scene/read/gltf_file.h"
 #include "scene/read/gltf_nodes.h"
 #include "scene/scene_error.h"
@@ -12,14 +13,6 @@ namespace candela {
 namespace {
 
 constexpr double kDegreesPerRadian = 57.295779513082320876798;
-
-// The unit vector along v in double precision, or none where v has no length.
-bool normalized(const double v[3], double out[3]) {
-  const double length = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-  if (!(length > 0.0 && std::isfinite(length))) return false;
-  for (int i = 0; i < 3; ++i) out[i] = v[i] / length;
-  return true;
-}
 
 }  // namespace
 
@@ -43,41 +36,32 @@ GltfCamera readGltfCamera(const std::string& path, const std::string& label, uin
                        "\" camera; candela takes perspective cameras from glTF files");
     camera.yfovDegrees = c.perspective.yfov * kDegreesPerRadian;
     if (!(camera.yfovDegrees > 0.0 && camera.yfovDegrees < 180.0))
-      throw SceneError(cameraWhere +
-                       ".perspective.yfov: expected an angle between 0 and pi "
-                       "(exclusive), got " +
-                       std::to_string(c.perspective.yfov));
+      throw SceneError(cameraWhere + ".perspective.yfov: expected an angle between 0 and pi " +
+                       "(exclusive), got " + std::to_string(c.perspective.yfov));
     // Right and up from the node's x and y axes, made orthonormal; the camera looks along
     // right x up's opposite, whatever the node's scale or mirroring.
-    double right[3], up[3], back[3];
-    const double x[3] = {w[0], w[1], w[2]}, y[3] = {w[4], w[5], w[6]};
-    double yOff[3];
-    bool ok = normalized(x, right);
-    const double along = right[0] * y[0] + right[1] * y[1] + right[2] * y[2];
-    for (int i = 0; i < 3; ++i) yOff[i] = y[i] - along * right[i];
-    ok = ok && normalized(yOff, up);
-    if (!ok) throw SceneError(where + ": the node's transform flattens the camera");
-    back[0] = right[1] * up[2] - right[2] * up[1];
-    back[1] = right[2] * up[0] - right[0] * up[2];
-    back[2] = right[0] * up[1] - right[1] * up[0];
+    const DVec3 x{w[0], w[1], w[2]}, y{w[4], w[5], w[6]};
+    const DVec3 right = unit(x), up = unit(y - dot(right, y) * right);
+    if (!std::isfinite(dot(right, right) + dot(up, up)))
+      throw SceneError(where + ": the node's transform flattens the camera");
+    const DVec3 back = cross(right, up);
     // OpenCV's world-to-camera rows: x right, y down, z forward; t = -R position.
-    const double rows[3][3] = {
-        {right[0], right[1], right[2]}, {-up[0], -up[1], -up[2]}, {-back[0], -back[1], -back[2]}};
+    const DVec3 rows[3] = {right, -1.0 * up, -1.0 * back};
+    const DVec3 position{w[12], w[13], w[14]};
     for (int i = 0; i < 3; ++i) {
-      double t = 0.0;
-      for (int j = 0; j < 3; ++j) {
-        camera.worldToCamera.m[i][j] = float(rows[i][j]);
-        t -= rows[i][j] * w[size_t(12 + j)];
-      }
+      const DVec3& r = rows[i];
+      camera.worldToCamera.m[i][0] = float(r.x);
+      camera.worldToCamera.m[i][1] = float(r.y);
+      camera.worldToCamera.m[i][2] = float(r.z);
+      const double t = -dot(r, position);
       if (!(std::fabs(t) < 1e30)) throw SceneError(where + ": the camera's place is beyond reach");
       camera.translation[i] = float(t);
     }
   });
   if (!found)
-    throw SceneError(label + ": camera " + std::to_string(number) +
-                     " is asked for, but the file's "
-                     "scene places " +
-                     std::to_string(seen) + (seen == 1 ? " camera" : " cameras"));
+    throw SceneError(label + ": camera " + std::to_string(number) + " is asked for, but " +
+                     "the file's scene places " + std::to_string(seen) +
+                     (seen == 1 ? " camera" : " cameras"));
   return camera;
 }
 

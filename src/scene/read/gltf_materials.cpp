@@ -52,13 +52,6 @@ Vec3 colourFactor(const std::vector<double>& values, const std::string& where) {
   return colour;
 }
 
-// Channel c of texel i of `t`, linear: what a lookup of it reads before filtering.
-float texelValue(const TextureDesc& t, size_t i, uint32_t c) {
-  if (t.format == TextureFormat::Float) return t.texelsF[4 * i + c];
-  const float v = float(t.texels8[4 * i + c]) / 255.0f;
-  return t.format == TextureFormat::Srgb8 && c < 3 ? srgbToLinearValue(v) : v;
-}
-
 Shading mixOf(Shading first, Shading second, float weight, const TextureRef& map,
               uint32_t channel) {
   Shading mix;

@@ -3,7 +3,8 @@
 
 #include <cctype>
 #include <cstdlib>
-#include <filesystem>
+
+#include "scene/read/resolve_path.h"
 
 namespace candela {
 
@@ -18,8 +19,7 @@ std::string gltfUriPath(const std::string& uri, const std::string& folder) {
       decoded += uri[i];
     }
   }
-  const std::filesystem::path path(decoded);
-  return path.is_absolute() ? decoded : (std::filesystem::path(folder) / path).string();
+  return resolvePath(decoded, folder);
 }
 
 }  // namespace candela

@@ -4,17 +4,17 @@
 #include <cmath>
 #include <cstddef>
 
+#include "scene/read/texture_reader.h"
+
 namespace candela {
 
 bool holdsUnitNormals(const TextureDesc& texture) {
   const size_t count = size_t(texture.width) * texture.height;
   if (count == 0) return false;
-  const bool eightBit = !texture.texels8.empty();
   size_t unit = 0, grey = 0;
   for (size_t i = 0; i < count; ++i) {
     float c[3];
-    for (int k = 0; k < 3; ++k)
-      c[k] = eightBit ? float(texture.texels8[4 * i + k]) / 255.0f : texture.texelsF[4 * i + k];
+    for (int k = 0; k < 3; ++k) c[k] = texelValue(texture, i, uint32_t(k));
     const float x = 2.0f * c[0] - 1.0f, y = 2.0f * c[1] - 1.0f, z = 2.0f * c[2] - 1.0f;
     const float length = std::sqrt(x * x + y * y + z * z);
     unit += z > 0.0f && std::fabs(length - 1.0f) < 0.1f;

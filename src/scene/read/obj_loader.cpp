@@ -16,6 +16,7 @@
 #include "scene/read/mtl_library.h"
 #include "scene/read/normal_map_guess.h"
 #include "scene/read/obj_scanner.h"
+#include "scene/read/resolve_path.h"
 #include "scene/read/texel_check.h"
 #include "scene/read/text_file.h"
 #include "scene/scene_error.h"
@@ -144,9 +145,7 @@ TextureRef mtlTexture(const MtlStatement& statement, const char* keyword, Textur
     rest = restOfLine(in);
   }
   if (rest.empty()) failAt(statement, std::string("expected a file name after ") + keyword);
-  const std::filesystem::path name(rest);
-  const std::string path =
-      name.is_absolute() ? rest : (std::filesystem::path(statement.folder) / name).string();
+  const std::string path = resolvePath(rest, statement.folder);
   try {
     const LoadedTexture loaded = textures.load(path, use);
     ref.index = loaded.index;

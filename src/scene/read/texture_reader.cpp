@@ -12,6 +12,7 @@
 #include "image/image_io.h"
 #include "scene/content_hash.h"
 #include "scene/read/ies_profile.h"
+#include "scene/read/resolve_path.h"
 #include "scene/read/texel_check.h"
 #include "scene/scene_error.h"
 
@@ -116,9 +117,14 @@ LoadedTexture TextureLoader::add(const std::string& key, TextureUse use,
   return result;
 }
 
+float texelValue(const TextureDesc& t, size_t i, uint32_t c) {
+  if (t.format == TextureFormat::Float) return t.texelsF[4 * i + c];
+  const float v = float(t.texels8[4 * i + c]) / 255.0f;
+  return t.format == TextureFormat::Srgb8 && c < 3 ? srgbToLinearValue(v) : v;
+}
+
 std::string TextureLoader::resolve(const std::string& written) const {
-  const std::filesystem::path path(written);
-  return path.is_absolute() ? written : (std::filesystem::path(baseDir_) / path).string();
+  return resolvePath(written, baseDir_);
 }
 
 TextureLoader::LoadedProfile TextureLoader::loadProfile(const std::string& path,

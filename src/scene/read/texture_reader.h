@@ -72,6 +72,10 @@ class TextureLoader {
   std::map<std::string, LoadedProfile> profiles_;
 };
 
+// Channel c (0-3) of texel i (row by row from the top) of `t`, linear: 8-bit colour channels
+// decoded from sRGB where the texture holds colour, as a lookup reads them before filtering.
+float texelValue(const TextureDesc& t, size_t i, uint32_t c);
+
 // A colour that may be textured: returns the colour (1 for a texture: the texture alone) and sets
 // `*texture` when `value` is a texture object. Errors name the JSON path.
 Vec3 readTexturedColour(const JsonValue& value, TextureLoader& textures, TextureRef* texture);
