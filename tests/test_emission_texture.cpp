@@ -6,8 +6,10 @@
 // hit it alike; a constant texture lights a room as the plain radiance does, light subpaths
 // included. And the refusals.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <string>
 
@@ -23,14 +25,21 @@ using test::num;
 // A PFM texture 1 texel wide and `rows` high: the southern (lower) half of its rows `south`, the
 // northern half `north` (sphereUv puts v = 0 at a sphere's south pole, v = 1 at its north pole).
 std::string writeHemispheresMap(const std::string& name, int rows, float south, float north) {
+  // Written whole under a name of this process's, then renamed into place: the tests that share
+  // a map run in processes of their own at once (ctest -j), and one read another's half-written
+  // file (as test::writePlaneObj avoids).
   const std::string path = ::testing::TempDir() + name;
-  std::ofstream pfm(path, std::ios::binary);
-  pfm << "PF\n1 " << rows << "\n-1\n";
-  for (int row = 0; row < rows; ++row) {  // PFM rows run from the bottom up
-    const float v = row < rows / 2 ? south : north;
-    const float texel[3] = {v, v, v};
-    pfm.write(reinterpret_cast<const char*>(texel), sizeof texel);
+  const std::string own = path + "." + std::to_string(getpid()) + ".tmp";
+  {
+    std::ofstream pfm(own, std::ios::binary);
+    pfm << "PF\n1 " << rows << "\n-1\n";
+    for (int row = 0; row < rows; ++row) {  // PFM rows run from the bottom up
+      const float v = row < rows / 2 ? south : north;
+      const float texel[3] = {v, v, v};
+      pfm.write(reinterpret_cast<const char*>(texel), sizeof texel);
+    }
   }
+  std::rename(own.c_str(), path.c_str());
   return path;
 }
 
