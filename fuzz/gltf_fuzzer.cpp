@@ -1,13 +1,15 @@
 // libFuzzer target: the input is a glTF file, text or binary (.glb), rendered by a fixed small
 // scene; what its URIs name is looked for in a temporary folder that holds only it (data URIs and
-// a .glb's own buffer are what the seeds use), and its cameras are read as a scene's camera would
-// take them. See docs/fuzzing.md.
+// a .glb's own buffer are what the seeds use), its cameras are read as a scene's camera would
+// take them, and a file with lights is rendered again by them ({"gltf": file} in "lights"). See
+// docs/fuzzing.md.
 #include <cstddef>
 #include <cstdint>
 #include <string>
 
 #include "fuzz_scene.h"
 #include "scene/read/gltf_camera.h"
+#include "scene/read/gltf_lights.h"
 #include "scene/scene_error.h"
 
 namespace {
@@ -15,6 +17,13 @@ namespace {
 const char* const kScene = R"({
   "camera": {"width": 8, "height": 8, "fov": 60, "position": [0, 0, 5], "look_at": [0, 0, 0]},
   "lights": [{"position": [1, 2, 5], "intensity": 10}],
+  "objects": [{"file": "m.gltf", "rotation": [10, 20, 30], "smooth": 60}]
+})";
+
+// The same, lit by the file's lights.
+const char* const kLitScene = R"({
+  "camera": {"width": 8, "height": 8, "fov": 60, "position": [0, 0, 5], "look_at": [0, 0, 0]},
+  "lights": [{"gltf": "m.gltf"}],
   "objects": [{"file": "m.gltf", "rotation": [10, 20, 30], "smooth": 60}]
 })";
 
@@ -38,5 +47,11 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     } catch (const candela::SceneError&) {
     }
   }
+  try {
+    candela::readGltfLights(folder + "/m.gltf", "m.gltf");
+  } catch (const candela::SceneError&) {
+    return 0;
+  }
+  candela::fuzz::loadAndTrace(kLitScene, folder);
   return 0;
 }

@@ -55,6 +55,7 @@ struct MeshDesc {
   std::vector<std::string> materialFiles;  // the MTL files read, beside the OBJ file
   std::vector<std::string> bufferFiles;    // a glTF file's buffers read from files of their own
   bool holdsCameras = false;  // a glTF file with cameras (the scene's camera may take one)
+  bool holdsLights = false;   // a glTF file with lights (the scene's lights may take them)
   // What the file leaves to a default that its author may not have meant, "<file>:<line>: ..."
   // (an MTL file that cannot be read, a material that no MTL file defines).
   std::vector<std::string> warnings;
@@ -132,6 +133,8 @@ struct LightDesc {
   // A sphere or rectangle light, or a sun with a disc: whether the camera sees it (false: its
   // rays pass it by, while its light, its reflections and what is seen through glass stay).
   bool visible = true;
+  // The glTF file the light came from ({"gltf": ...} in "lights", resolved), or empty.
+  std::string gltfFile;
 };
 
 struct CameraDesc {

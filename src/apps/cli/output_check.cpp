@@ -19,6 +19,10 @@ std::vector<InputFile> inputFiles(const std::vector<SceneDesc>& scenes) {
     files.push_back({scene.file, "the scene file"});
     if (!scene.camera.gltfFile.empty())
       files.push_back({scene.camera.gltfFile, "the camera's glTF file"});
+    std::string lightFile;  // a glTF file's lights are consecutive
+    for (const LightDesc& light : scene.lights)
+      if (!light.gltfFile.empty() && light.gltfFile != lightFile)
+        files.push_back({lightFile = light.gltfFile, "the lights' glTF file"});
     for (const ObjectDesc& object : scene.objects) {
       files.push_back({object.file, "the mesh"});
       for (const std::string& mtl : object.mesh->materialFiles)

@@ -7,6 +7,7 @@
 
 #include "scene/along_up.h"
 #include "scene/light_emission_desc.h"
+#include "scene/read/gltf_lights.h"
 #include "scene/read/ies_profile.h"
 #include "scene/read/resolve_path.h"
 #include "scene/read/texel_check.h"
@@ -330,6 +331,34 @@ LightDesc readLight(const JsonValue& value, TextureLoader& textures) {
   }
   fields.finish();
   return light;
+}
+
+bool namesGltfLights(const JsonValue& value) {
+  return value.json().is_object() && value.json().contains("gltf");
+}
+
+std::vector<LightDesc> readGltfLightEntry(const JsonValue& value, const std::string& baseDir) {
+  for (const auto& item : value.json().items())
+    if (item.key() != "gltf" && !isCommentKey(item.key()))
+      JsonValue(item.value(), value.file(), memberPath(value.path(), item.key()))
+          .fail("not used beside \"gltf\" (the file gives each of its lights' values)");
+  JsonObject fields(value, {"gltf"});
+  const JsonValue gltf = fields.require("gltf");
+  const std::string written = gltf.string();
+  if (written.empty()) gltf.failExpected("the path of a glTF file");
+  const std::string file = resolvePath(written, baseDir);
+  std::vector<LightDesc> lights;
+  try {
+    lights = readGltfLights(file, written);
+  } catch (const SceneError& e) {
+    gltf.fail(e.what());
+  }
+  for (LightDesc& light : lights) {
+    light.where = gltf.path() + ": " + light.where;
+    light.gltfFile = file;
+  }
+  fields.finish();
+  return lights;
 }
 
 }  // namespace candela

@@ -6,10 +6,11 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "scene/read/json_reader.h"
-#include "scene/scene_desc.h"
 #include "scene/read/material_reader.h"
+#include "scene/scene_desc.h"
 
 namespace candela {
 
@@ -18,6 +19,13 @@ SphereDesc readSphere(const JsonValue& value, const MaterialLibrary& library,
 ObjectDesc readObject(const JsonValue& value, const MaterialLibrary& library,
                       const std::string& baseDir, TextureLoader& textures);
 LightDesc readLight(const JsonValue& value, TextureLoader& textures);
+
+// Whether an element of "lights" names a glTF file's lights ({"gltf": "scene.glb"}) rather than
+// being one light.
+bool namesGltfLights(const JsonValue& value);
+// Those lights (scene/read/gltf_lights.h), each with the file as resolved and its `where`
+// "lights[i].gltf: <file as written>: nodes[n]".
+std::vector<LightDesc> readGltfLightEntry(const JsonValue& value, const std::string& baseDir);
 
 // An object's scale: a number or [sx, sy, sz], every factor non-zero (zero would flatten the
 // mesh; a negative factor mirrors it). Also read by animation tracks on "scale".

@@ -35,10 +35,9 @@ class MeshBuilder {
     if (mesh_.triangles.empty())
       throw SceneError(label_ + ": expected at least one triangle, got none");
     mesh_.holdsCameras = !model_.cameras.empty();
+    mesh_.holdsLights = !model_.lights.empty();
     if (!model_.animations.empty())
       warn("the file's animations are not played (the scene's keyframes move the object)");
-    if (model_.extensions.count("KHR_lights_punctual"))
-      warn("the file's lights (KHR_lights_punctual) are not used (the scene's lights are)");
     return std::move(mesh_);
   }
 

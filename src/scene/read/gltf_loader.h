@@ -5,10 +5,10 @@
 // first texture coordinates (v turned to candela's convention, v = 1 - glTF's v) are read, and
 // each glTF material is mapped to candela's (gltf_materials.h); a primitive without one takes
 // glTF's default material. Triangles, strips and fans are read; points and lines are skipped
-// with a warning, as are what else candela does not use (vertex colours, lights, skins, morph
-// targets, animations); whether it holds cameras is noted (MeshDesc::holdsCameras) for the scene
-// to say where its camera takes none of them. A node whose transform mirrors keeps its faces'
-// outsides (their winding is reversed, as glTF says).
+// with a warning, as are what else candela does not use (vertex colours, skins, morph targets,
+// animations); whether it holds cameras and lights is noted (MeshDesc::holdsCameras,
+// holdsLights) for the scene to say where its camera or lights take none of them. A node whose
+// transform mirrors keeps its faces' outsides (their winding is reversed, as glTF says).
 //
 // Errors throw SceneError "<label>: <reason>", the reason naming the JSON path of what is wrong
 // ("meshes[0].primitives[1].indices: accessor 4 ...").

@@ -111,17 +111,25 @@ void loadMeshes(SceneDesc& scene, const std::vector<std::string>& writtenNames,
       scene.warnings.push_back(scene.file + ": " + memberPath(object.where, "file") + ": " +
                                warning);
   }
-  // A glTF file's cameras, once per file, unless the scene's camera takes one from it.
-  std::set<const MeshDesc*> cameras;
+  // A glTF file's cameras and lights, once per file, unless the scene's camera or lights take
+  // them.
+  std::set<const MeshDesc*> cameras, lights;
   for (size_t i = 0; i < scene.objects.size(); ++i) {
     const ObjectDesc& object = scene.objects[i];
-    if (!object.mesh->holdsCameras || sameFile(object.file, scene.camera.gltfFile) ||
-        !cameras.insert(object.mesh.get()).second)
-      continue;
-    scene.warnings.push_back(scene.file + ": " + memberPath(object.where, "file") + ": " +
-                             writtenNames[i] +
-                             ": the file's cameras are not used (the scene's camera takes one "
-                             "with \"gltf\")");
+    const std::string where = scene.file + ": " + memberPath(object.where, "file") + ": " +
+                              writtenNames[i] + ": the file's ";
+    if (object.mesh->holdsCameras && !sameFile(object.file, scene.camera.gltfFile) &&
+        cameras.insert(object.mesh.get()).second)
+      scene.warnings.push_back(where +
+                               "cameras are not used (the scene's camera takes one with "
+                               "\"gltf\")");
+    const bool lightsTaken =
+        std::any_of(scene.lights.begin(), scene.lights.end(),
+                    [&](const LightDesc& light) { return sameFile(object.file, light.gltfFile); });
+    if (object.mesh->holdsLights && !lightsTaken && lights.insert(object.mesh.get()).second)
+      scene.warnings.push_back(where +
+                               "lights (KHR_lights_punctual) are not used (the scene's "
+                               "lights take them with {\"gltf\": file})");
   }
   // A texture on a mesh without texture coordinates reads one texel everywhere: a flat colour,
   // surely not what was meant (a file exported without `vt`); an anisotropic material has no
@@ -179,6 +187,11 @@ SceneDesc parseSceneText(const std::string& text, const std::string& fileLabel,
     writtenNames.push_back(element.json().at("file").get<std::string>());
   });
   forEachElement(top, "lights", [&](const JsonValue& element) {
+    if (namesGltfLights(element)) {
+      for (LightDesc& light : readGltfLightEntry(element, baseDir))
+        scene.lights.push_back(std::move(light));
+      return;
+    }
     scene.lights.push_back(readLight(element, textures));
     ids.add(scene.lights.back().id, scene.lights.back().where, fileLabel);
   });
