@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Writes the glTF file of scenes/examples/gltf.json: one .glb that shows what candela reads from
-glTF (docs/scene-format.md, *glTF meshes*, *A camera from a glTF file*): a camera, a node tree,
-one sphere mesh placed by three nodes,
+glTF (docs/scene-format.md, *glTF meshes*, *A camera from a glTF file*, *Lights from a glTF
+file*): a camera, a spot light (KHR_lights_punctual), a node tree, one sphere mesh placed by three
+nodes,
 each mesh with a material of its own (a metal-rough mix by a texture, glass by
 KHR_materials_transmission, an emission with KHR_materials_emissive_strength), a ground tiled by
 KHR_texture_transform and a screen of holes cut by MASK alpha, the images held in the buffer.
@@ -75,7 +76,7 @@ def quad(glb, half, uv_repeat):
 
 
 def look_at(eye, target):
-    """The quaternion (x, y, z, w) that turns a glTF camera (looking along -z, +y up) at `eye`
+    """The quaternion (x, y, z, w) that turns a glTF camera or light (along -z, +y up) at `eye`
     towards `target`, keeping the world's +y up."""
     f = [t - e for t, e in zip(target, eye)]
     n = math.sqrt(sum(c * c for c in f))
@@ -148,7 +149,13 @@ def main(path):
         {"mesh": 3},
         {"mesh": 4, "translation": [0, 1.3, -2.2], "rotation": [s, 0, 0, s], "scale": [2.6, 1, 1.3]},
         {"name": "camera", "camera": 0, "translation": [0.4, 2.5, 9.5], "rotation": camera},
+        {"name": "spot", "translation": [-3.5, 6, 3], "rotation": look_at((-3.5, 6, 3), (-0.3, 0, 2.4)),
+         "extensions": {"KHR_lights_punctual": {"light": 0}}},
     ]
+    # A narrow warm spot of 300,000 cd: an irradiance of about 9 where it points, 6.8 away, a pool
+    # on the tiles beside the sky's light.
+    lights = {"lights": [{"type": "spot", "color": [1, 0.85, 0.65], "intensity": 300000,
+                          "spot": {"innerConeAngle": 0.14, "outerConeAngle": 0.22}}]}
     # 44 degrees across a 16:9 image.
     cameras = [{"type": "perspective", "perspective": {
         "yfov": 2 * math.atan(math.tan(math.radians(22)) * 9 / 16), "aspectRatio": 16 / 9,
@@ -157,8 +164,10 @@ def main(path):
         glb.buffer.append(0)
     doc = {"asset": {"version": "2.0", "generator": "candela tools/make_gltf_example.py"},
            "extensionsUsed": ["KHR_materials_transmission", "KHR_materials_ior",
-                              "KHR_materials_emissive_strength", "KHR_texture_transform"],
-           "scene": 0, "scenes": [{"nodes": [0, 6]}], "nodes": nodes, "meshes": meshes,
+                              "KHR_materials_emissive_strength", "KHR_texture_transform",
+                              "KHR_lights_punctual"],
+           "extensions": {"KHR_lights_punctual": lights},
+           "scene": 0, "scenes": [{"nodes": [0, 6, 7]}], "nodes": nodes, "meshes": meshes,
            "cameras": cameras,
            "materials": materials, "textures": textures, "images": glb.images,
            "accessors": glb.accessors, "bufferViews": glb.views,
