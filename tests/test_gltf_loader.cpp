@@ -200,11 +200,9 @@ TEST(GltfLoader, WhatIsNotRenderedIsNamedInWarnings) {
       {nlohmann::json{{"type", "perspective"}, {"perspective", {{"yfov", 0.8}, {"znear", 0.1}}}}});
   f.doc["meshes"][0]["primitives"].push_back(f.doc["meshes"][0]["primitives"][0]);
   f.doc["meshes"][0]["primitives"][1]["mode"] = 1;  // lines
-  f.doc["meshes"][0]["primitives"][0]["attributes"]["COLOR_0"] = 1;
   const MeshDesc mesh = load(dir.write("extra.gltf", f.gltf()));
   EXPECT_EQ(mesh.triangles.size(), 2u);
   const std::vector<std::string> expected = {
-      "m.gltf: vertex colours (COLOR_0) are not rendered (meshes[0].primitives[0])",
       "m.gltf: points and lines are not rendered (meshes[0].primitives[1] is one)"};
   EXPECT_EQ(mesh.warnings, expected);
   EXPECT_TRUE(mesh.holdsCameras);  // the scene names them (test_gltf_camera.cpp)

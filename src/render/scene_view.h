@@ -33,7 +33,8 @@ namespace candela {
 // [0, 1) (render/light_path.h, pickLightPathLight). infiniteLights lists the lights at infinity
 // that next-event estimation picks, each in a share of its own (render/light_selection.h).
 // plasticCoats holds the coat tables of the plastics whose roughness is textured
-// (render/bsdf_plastic.h, Material::plasticCoatTable).
+// (render/bsdf_plastic.h, Material::plasticCoatTable). vertexColors is empty or parallel to
+// positions: the linear colour that tints a mesh vertex's materials (1 for vertices without).
 #define CANDELA_SHADING_ARRAYS(X)                                            \
   X(Material, materials, materialCount, Values)                              \
   X(Light, lights, lightCount, Values)                                       \
@@ -47,7 +48,8 @@ namespace candela {
   X(InstanceMotion, materialMotions, materialMotionCount, Values)            \
   X(uint32_t, lightPathOrder, lightPathOrderCount, Values)                   \
   X(uint32_t, infiniteLights, infiniteLightCount, Values)                    \
-  X(float, plasticCoats, plasticCoatCount, Values)
+  X(float, plasticCoats, plasticCoatCount, Values)                           \
+  X(Vec3, vertexColors, vertexColorCount, Structure)
 
 // Every array of the kernel's scene: SceneData, SceneData::view and the CUDA upload expand
 // this.

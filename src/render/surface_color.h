@@ -1,6 +1,7 @@
 // The colour of a material at a surface point: `color` alone, or its texture times `color` (a
-// tint, 1 unless the scene or the MTL's Kd sets another); likewise an emitter's radiance, and
-// the roughness, which a texture replaces.
+// tint, 1 unless the scene or the MTL's Kd sets another), times the mesh's vertex colours where
+// it has them; likewise an emitter's radiance (which vertex colours leave), and the roughness,
+// which a texture replaces.
 #pragma once
 
 #include "core/texture.h"
@@ -8,14 +9,16 @@
 #include "geometry/surface_uv.h"
 #include "render/material.h"
 #include "render/scene_view.h"
+#include "render/vertex_color.h"
 
 namespace candela {
 
 CANDELA_HDI Vec3 surfaceColor(const SceneView& scene, const Material& m, const Hit& hit,
                               const SurfacePoint& sp) {
-  if (m.colorTexture.index < 0) return m.color;
+  const Vec3 tinted = m.color * vertexColor(scene, hit);
+  if (m.colorTexture.index < 0) return tinted;
   const Vec2 uv = surfaceUv(scene, hit, sp);
-  return m.color * lookupTexture(scene.texturePool(), m.colorTexture, uv.x, uv.y).rgb;
+  return tinted * lookupTexture(scene.texturePool(), m.colorTexture, uv.x, uv.y).rgb;
 }
 
 // The value in [0, 1] of a field that may be a texture: `constant`, or texture `ref`'s luminance

@@ -74,18 +74,20 @@ void reserveMeshes(SceneData& s, const SceneDesc& desc, MeshLayouts& layouts) {
       vertices += 4;
       triangles += 2;
     }
-  bool normals = false, uvs = false;
+  bool normals = false, uvs = false, colors = false;
   for (const ObjectDesc& obj : desc.objects) {
     const MeshLayout& layout = layouts.of(obj);
     vertices += layout.vertexCount(*obj.mesh);
     triangles += layout.triangles.size();
     normals = normals || layout.withNormals;
     uvs = uvs || layout.withUvs;
+    colors = colors || usesVertexColors(obj);
   }
   s.positions.reserve(vertices);
   s.triangles.reserve(triangles);
   if (normals) s.normals.reserve(vertices);
   if (uvs) s.uvs.reserve(vertices);
+  if (colors) s.vertexColors.reserve(vertices);
 }
 
 // Appends an object's mesh in world space: p' = position + R (scale * p). Normals transform by
@@ -94,7 +96,8 @@ void reserveMeshes(SceneData& s, const SceneDesc& desc, MeshLayouts& layouts) {
 //
 // The vertices are the mesh's, then its splits (scene/mesh_layout.h); a vertex of a face without
 // normals gets the encoding "none" (OctNormal()), meaning "use the face normal", and one without
-// uvs the uv (0, 0). With `geometry` false only the object's materials are appended (see
+// uvs the uv (0, 0); one without vertex colours (of a mesh without them, or of an object that
+// leaves them) the colour 1. With `geometry` false only the object's materials are appended (see
 // refreshSceneValues); with it, the object's place (s.meshInstances) too, and in *flattened its
 // mesh and layout (which `layouts` keeps).
 void addObject(SceneData& s, const ObjectDesc& obj, bool geometry, MeshLayouts& layouts,
@@ -141,6 +144,11 @@ void addObject(SceneData& s, const ObjectDesc& obj, bool geometry, MeshLayouts& 
     s.uvs.resize(base, Vec2());  // earlier vertices without uvs
     for (const MeshLayout::Corner& c : layout.corners)
       s.uvs.push_back(c.t >= 0 ? mesh.uvs[uint32_t(c.t)] : Vec2());
+  }
+  if (usesVertexColors(obj)) {
+    s.vertexColors.resize(base, Vec3(1.0f));  // earlier vertices without colours
+    s.vertexColors.insert(s.vertexColors.end(), mesh.colors.begin(), mesh.colors.end());
+    for (uint32_t v : layout.splitSources) s.vertexColors.push_back(mesh.colors[v]);
   }
 }
 
@@ -295,6 +303,7 @@ void addInstances(SceneData& s, const SceneDesc& desc, bool geometry) {
   // Vertices after the last smooth (or textured) mesh have no normals (or uvs) either.
   if (geometry && !s.normals.empty()) s.normals.resize(s.positions.size(), OctNormal());
   if (geometry && !s.uvs.empty()) s.uvs.resize(s.positions.size(), Vec2());
+  if (geometry && !s.vertexColors.empty()) s.vertexColors.resize(s.positions.size(), Vec3(1.0f));
 }
 
 // The coat tables of the plastics whose roughness is textured, one per index of refraction.

@@ -52,6 +52,7 @@ void writeKeys(const SceneDesc& desc, std::string* geometry, std::string* struct
     full.add(o.scale);
     both(o.smooth);
     both(usesUvs(o));  // with the mesh, decides the object's vertices (scene/mesh_layout.h)
+    both(usesVertexColors(o));
     both(o.material.has_value());  // decides how many materials the object appends
     both(o.mixParts.size());
     both(o.mesh->materials.size());
@@ -60,8 +61,9 @@ void writeKeys(const SceneDesc& desc, std::string* geometry, std::string* struct
     const auto [hash, fresh] = meshHashes.try_emplace(o.mesh.get(), 0);
     if (fresh) {
       const MeshDesc& m = *o.mesh;
-      hash->second =
-          hashVector(m.triangles, hashVector(m.uvs, hashVector(m.normals, hashVector(m.positions))));
+      hash->second = hashVector(
+          m.colors, hashVector(m.triangles,
+                               hashVector(m.uvs, hashVector(m.normals, hashVector(m.positions)))));
     }
     both(hash->second);
   }

@@ -27,6 +27,10 @@ bool usesUvs(const ObjectDesc& obj) {
   return !obj.mesh->uvs.empty() && anyMaterialOf(obj, readsUvs);
 }
 
+bool usesVertexColors(const ObjectDesc& obj) {
+  return obj.vertexColors && !obj.mesh->colors.empty();
+}
+
 MeshLayout layOutMesh(const MeshDesc& mesh, bool withNormals, bool withUvs) {
   using Corner = MeshLayout::Corner;
   MeshLayout layout;

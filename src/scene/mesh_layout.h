@@ -50,5 +50,8 @@ bool usesNormals(const ObjectDesc& obj);
 // them (a texture or an alpha mask's). Uvs that nothing reads would split vertices at every seam
 // for nothing (Sponza's file: 69,013 vertices for 39,999 positions).
 bool usesUvs(const ObjectDesc& obj);
+// Whether an object's vertices carry its mesh's colours: the file has them and the object does
+// not leave them ("vertex_colors": false).
+bool usesVertexColors(const ObjectDesc& obj);
 
 }  // namespace candela

@@ -49,6 +49,9 @@ struct MeshDesc {
   std::vector<Vec3> positions;
   std::vector<Vec3> normals;              // from the file's `vn`; may be empty
   std::vector<Vec2> uvs;                  // from the file's `vt` (u, v); may be empty
+  // Linear RGB per position (a PLY's red/green/blue, an OBJ's `v x y z r g b`, a glTF's COLOR_0);
+  // empty or parallel to positions. They multiply the colour of whatever material shades them.
+  std::vector<Vec3> colors;
   std::vector<MeshTriangle> triangles;
   std::vector<Material> materials;  // from the MTL (obj_loader.h's mapping), else diffuse 0.8
   std::vector<Material> mixParts;   // what its mixes mix (Material::mixParts index this)
@@ -69,6 +72,7 @@ struct ObjectDesc {
   Vec3 rotation;     // degrees, R = Rz * Ry * Rx
   Vec3 scale{1.0f};
   bool smooth = true;
+  bool vertexColors = true;  // whether the mesh's vertex colours tint its materials
   // Above 0 (degrees): the faces the file gives no normals get them computed, smoothed across
   // edges up to this angle (scene/vertex_normals.h); 0: such faces are flat.
   float creaseDegrees = 0;

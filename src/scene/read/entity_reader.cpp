@@ -149,8 +149,8 @@ SphereDesc readSphere(const JsonValue& value, const MaterialLibrary& library,
 
 ObjectDesc readObject(const JsonValue& value, const MaterialLibrary& library,
                       const std::string& baseDir, TextureLoader& textures) {
-  JsonObject fields(
-      value, {"id", "file", "position", "rotation", "scale", "material", "color", "ior", "smooth"});
+  JsonObject fields(value, {"id", "file", "position", "rotation", "scale", "material", "color",
+                            "ior", "smooth", "vertex_colors"});
   ObjectDesc object;
   object.where = value.path();
   object.id = readId(fields);
@@ -164,6 +164,8 @@ ObjectDesc readObject(const JsonValue& value, const MaterialLibrary& library,
     object.rotation = rotation->vec3();
   if (std::optional<JsonValue> scale = fields.get("scale")) object.scale = readScale(*scale);
   if (std::optional<JsonValue> smooth = fields.get("smooth")) readSmooth(*smooth, object);
+  if (std::optional<JsonValue> colors = fields.get("vertex_colors"))
+    object.vertexColors = colors->boolean();
   if (std::optional<MaterialRead> read = readMaterialReference(fields, library, textures)) {
     object.material = read->material;
     object.mixParts = std::move(read->parts);

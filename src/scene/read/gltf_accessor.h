@@ -14,7 +14,7 @@ namespace candela {
 
 // The `components`-wide float elements of accessor `index`, one after another: FLOAT components,
 // or (where `normalizedIntegers`) normalized unsigned bytes and shorts scaled into [0, 1], as
-// glTF allows for texture coordinates.
+// glTF allows for texture coordinates and colours.
 std::vector<float> readFloatAccessor(const tinygltf::Model& model, int index, int components,
                                      bool normalizedIntegers, const std::string& where);
 

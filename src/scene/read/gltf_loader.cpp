@@ -36,6 +36,7 @@ class MeshBuilder {
       throw SceneError(label_ + ": expected at least one triangle, got none");
     mesh_.holdsCameras = !model_.cameras.empty();
     mesh_.holdsLights = !model_.lights.empty();
+    if (!mesh_.colors.empty()) mesh_.colors.resize(mesh_.positions.size(), Vec3(1.0f));
     if (!model_.animations.empty())
       warn("the file's animations are not played (the scene's keyframes move the object)");
     return std::move(mesh_);
@@ -79,8 +80,6 @@ class MeshBuilder {
       return;
     }
     if (!primitive.targets.empty()) warn("morph targets are not applied (" + where + ")");
-    if (primitive.attributes.count("COLOR_0"))
-      warn("vertex colours (COLOR_0) are not rendered (" + where + ")");
     const std::string at = label_ + ": " + where;
     const auto attribute = [&](const char* name) {
       const auto found = primitive.attributes.find(name);
@@ -97,10 +96,12 @@ class MeshBuilder {
     if (attribute("TEXCOORD_0") >= 0)
       uvs = readFloatAccessor(model_, attribute("TEXCOORD_0"), 2, true,
                               at + ".attributes.TEXCOORD_0");
+    const std::vector<float> colors = readColors(attribute("COLOR_0"), at + ".attributes.COLOR_0");
     if ((!normals.empty() && normals.size() / 3 != vertices) ||
-        (!uvs.empty() && uvs.size() / 2 != vertices))
-      throw SceneError(at + ".attributes: NORMAL and TEXCOORD_0 must have as many elements as " +
-                       "POSITION (" + std::to_string(vertices) + ")");
+        (!uvs.empty() && uvs.size() / 2 != vertices) ||
+        (!colors.empty() && colors.size() / 3 != vertices))
+      throw SceneError(at + ".attributes: NORMAL, TEXCOORD_0 and COLOR_0 must have as many " +
+                       "elements as POSITION (" + std::to_string(vertices) + ")");
     std::vector<uint32_t> indices;
     if (primitive.indices >= 0) {
       indices = readIndexAccessor(model_, primitive.indices, at + ".indices");
@@ -117,8 +118,33 @@ class MeshBuilder {
       throw SceneError(at + ": the file has more than 2^31 vertices");
     const uint32_t material = materialIndex(primitive.material, where + ".material");
 
+    if (!colors.empty()) {
+      mesh_.colors.resize(mesh_.positions.size(), Vec3(1.0f));  // earlier vertices without
+      for (size_t v = 0; v < vertices; ++v)
+        mesh_.colors.push_back(Vec3(colors[3 * v], colors[3 * v + 1], colors[3 * v + 2]));
+    }
     const Placed placed = appendVertices(positions, normals, uvs, world);
     appendTriangles(mode, indices, placed, material);
+  }
+
+  // A primitive's vertex colours (COLOR_0, linear RGB or RGBA, whose alpha is not used) as RGB,
+  // or none for `index` -1.
+  std::vector<float> readColors(int index, const std::string& where) {
+    if (index < 0) return {};
+    const bool rgba = size_t(index) < model_.accessors.size() &&
+                      model_.accessors[size_t(index)].type == TINYGLTF_TYPE_VEC4;
+    const std::vector<float> read = readFloatAccessor(model_, index, rgba ? 4 : 3, true, where);
+    std::vector<float> rgb;
+    rgb.reserve(read.size());
+    for (size_t i = 0; i < read.size(); ++i) {
+      if (rgba && i % 4 == 3) continue;
+      if (!(read[i] >= 0.0f && read[i] <= 1.0f))
+        throw SceneError(where + ": accessor " + std::to_string(index) + ", element " +
+                         std::to_string(i / (rgba ? 4 : 3)) + ": expected colours from 0 to 1, " +
+                         "got " + formatNumber(read[i]));
+      rgb.push_back(read[i]);
+    }
+    return rgb;
   }
 
   // Where a primitive's vertices landed in mesh_, and which of its normals are usable.

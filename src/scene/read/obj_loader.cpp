@@ -12,6 +12,7 @@
 #include <unordered_set>
 
 #include "core/constants.h"
+#include "core/texture.h"
 #include "render/material_prepare.h"
 #include "scene/read/mtl_library.h"
 #include "scene/read/normal_map_guess.h"
@@ -378,6 +379,16 @@ MeshDesc buildMesh(const tinyobj::ObjReader& reader, const MtlLibrary& library,
   mesh.normals.reserve(attrib.normals.size() / 3);
   for (size_t i = 0; i < attrib.normals.size() / 3; ++i)
     mesh.normals.push_back(vec3At(attrib.normals, i));
+  // Vertex colours where every vertex has one (tinyobjloader keeps none otherwise): display
+  // colours, sRGB-encoded as a PLY's.
+  if (attrib.colors.size() == attrib.vertices.size()) {
+    mesh.colors.reserve(attrib.colors.size() / 3);
+    for (size_t i = 0; i < attrib.colors.size() / 3; ++i) {
+      const Vec3 c = vec3At(attrib.colors, i);
+      mesh.colors.push_back(
+          Vec3(srgbToLinearValue(c.x), srgbToLinearValue(c.y), srgbToLinearValue(c.z)));
+    }
+  }
   mesh.uvs.reserve(attrib.texcoords.size() / 2);
   for (size_t i = 0; i < attrib.texcoords.size() / 2; ++i)
     mesh.uvs.push_back(Vec2(attrib.texcoords[2 * i], attrib.texcoords[2 * i + 1]));
@@ -417,7 +428,10 @@ MeshDesc buildMesh(const tinyobj::ObjReader& reader, const MtlLibrary& library,
       mesh.triangles.push_back(triangle);
     }
   }
-  if (fallbackUsed) mesh.materials.push_back(Material{});  // diffuse 0.8
+  if (fallbackUsed) {  // diffuse 0.8, or 1 under vertex colours, which then are its colour
+    mesh.materials.push_back(Material{});
+    if (!mesh.colors.empty()) mesh.materials.back().color = Vec3(1.0f);
+  }
   return mesh;
 }
 

@@ -166,6 +166,13 @@ void Scanner::scanLine(std::string_view line, size_t number, ObjScan& out) {
   if (keyword == "v") {
     double values[7];
     numbers(tokens, 3, 7, "a vertex \"v x y z\"", whole, values);
+    // Six numbers or more: a colour after the position ("v x y z r g b", MeshLab's and ZBrush's
+    // extension), as tinyobjloader reads it.
+    if (tokens.size() >= 6)
+      for (int c = 3; c < 6; ++c)
+        if (!(values[c] >= 0.0 && values[c] <= 1.0))
+          fail("expected a vertex colour \"v x y z r g b\" of numbers from 0 to 1, got " +
+               shownText(tokens[size_t(c)]));
     positions_.push_back(Vec3(float(values[0]), float(values[1]), float(values[2])));
     ++vertices_;
   } else if (keyword == "vn") {

@@ -9,6 +9,7 @@
 #include <cstring>
 #include <limits>
 
+#include "core/texture.h"
 #include "scene/read/ply_header.h"
 #include "scene/read/polygon_triangulation.h"
 #include "scene/read/shown_text.h"
@@ -178,8 +179,28 @@ class Body {
 // Where a property of the vertex element goes: its index in the element, or -1.
 struct VertexLayout {
   int position[3] = {-1, -1, -1}, normal[3] = {-1, -1, -1}, uv[2] = {-1, -1};
-  std::vector<std::string> colours;  // the colour properties, for the warning
+  int colour[3] = {-1, -1, -1};
 };
+
+// What a colour property's largest value is: an integer type's largest (uchar 255), 1 for floats.
+double colourScale(PlyType type) {
+  switch (type) {
+    case PlyType::Int8:
+      return 127.0;
+    case PlyType::Uint8:
+      return 255.0;
+    case PlyType::Int16:
+      return 32767.0;
+    case PlyType::Uint16:
+      return 65535.0;
+    case PlyType::Int32:
+      return 2147483647.0;
+    case PlyType::Uint32:
+      return 4294967295.0;
+    default:
+      return 1.0;
+  }
+}
 
 [[noreturn]] void failAtLine(const std::string& label, size_t line, const std::string& reason) {
   throw SceneError(label + ":" + std::to_string(line) + ": " + reason);
@@ -209,10 +230,11 @@ VertexLayout vertexLayout(const PlyElement& vertex, const std::string& label) {
       layout.uv[0] = find(pair[0]);
       layout.uv[1] = find(pair[1]);
     }
-  for (const PlyProperty& p : vertex.properties)
-    for (const char* colour :
-         {"red", "green", "blue", "r", "g", "b", "diffuse_red", "diffuse_green", "diffuse_blue"})
-      if (p.name == colour) layout.colours.push_back(p.name);
+  const char* const colourNames[3][3] = {
+      {"red", "green", "blue"}, {"diffuse_red", "diffuse_green", "diffuse_blue"}, {"r", "g", "b"}};
+  for (const auto& names : colourNames)
+    if (layout.colour[0] < 0 && find(names[0]) >= 0 && find(names[1]) >= 0 && find(names[2]) >= 0)
+      for (int c = 0; c < 3; ++c) layout.colour[c] = find(names[c]);
   return layout;
 }
 
@@ -227,6 +249,7 @@ void readVertices(Body& body, const PlyElement& element, const VertexLayout& lay
   mesh.positions.reserve(reserve);
   if (layout.normal[0] >= 0) mesh.normals.reserve(reserve);
   if (layout.uv[0] >= 0) mesh.uvs.reserve(reserve);
+  if (layout.colour[0] >= 0) mesh.colors.reserve(reserve);
   std::vector<double> values(element.properties.size());
   for (uint64_t i = 0; i < element.count; ++i) {
     body.at(element.name, i);
@@ -249,6 +272,19 @@ void readVertices(Body& body, const PlyElement& element, const VertexLayout& lay
       mesh.normals.push_back(
           Vec3(at(layout.normal[0]), at(layout.normal[1]), at(layout.normal[2])));
     if (layout.uv[0] >= 0) mesh.uvs.push_back(Vec2(at(layout.uv[0]), at(layout.uv[1])));
+    if (layout.colour[0] >= 0) {
+      // Display colours, as scanners and MeshLab write them: sRGB-encoded, linear here.
+      Vec3 linear;
+      for (int c = 0; c < 3; ++c) {
+        const PlyProperty& p = element.properties[size_t(layout.colour[c])];
+        const double v = values[size_t(layout.colour[c])] / colourScale(p.type);
+        if (!(v >= 0.0 && v <= 1.0))
+          body.fail(p.name + " is " + shownNumber(values[size_t(layout.colour[c])]) +
+                    "; expected a colour from 0 to " + shownNumber(colourScale(p.type)));
+        linear[c] = srgbToLinearValue(float(v));
+      }
+      mesh.colors.push_back(linear);
+    }
   }
 }
 
@@ -380,13 +416,10 @@ MeshDesc loadPlyFile(const std::string& path, const std::string& label) {
     }
   }
   triangulate(polygons, label, mesh);
-  mesh.materials.push_back(Material{});  // diffuse 0.8, as an OBJ face without a material
-  if (!layout.colours.empty()) {
-    std::string names;
-    for (const std::string& c : layout.colours) names += (names.empty() ? "" : ", ") + c;
-    mesh.warnings.push_back(label + ": its vertex colours (" + names +
-                            ") are not rendered; the faces are diffuse 0.8");
-  }
+  // Diffuse 0.8, as an OBJ face without a material; diffuse 1 under vertex colours, which then
+  // are its colour.
+  mesh.materials.push_back(Material{});
+  if (!mesh.colors.empty()) mesh.materials.back().color = Vec3(1.0f);
   return mesh;
 }
 

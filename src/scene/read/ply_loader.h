@@ -6,9 +6,11 @@
 // texture coordinates as u, v (or s, t, texture_u, texture_v, texture_s, texture_t), which mean
 // what an OBJ's `vt` does; the `face` element's list `vertex_indices` (or `vertex_index`), each
 // face triangulated as an OBJ face is (a quad along its shorter diagonal, a larger polygon by
-// polygon_triangulation.h), keeping its winding. Every other element and property is skipped;
-// vertex colours, which candela does not render, bring a warning. A PLY file has no materials: its
-// faces are diffuse 0.8 unless the object gives a material.
+// polygon_triangulation.h), keeping its winding; vertex colours as red, green, blue (or
+// diffuse_red..., or r, g, b), display colours (sRGB) of an integer type's range or floats from 0
+// to 1, made linear (MeshDesc::colors). Every other element and property is skipped. A PLY file
+// has no materials: its faces are diffuse 0.8, or 1 under vertex colours (which tint it), unless
+// the object gives a material.
 //
 // Errors throw SceneError naming the file: "<label>:<line>: <reason>" in the header and in an
 // ASCII body, "<label>: <reason>" in a binary one, the reason naming the element and its number
