@@ -168,6 +168,13 @@ TEST(VertexColors, AnObjColourOutsideZeroToOneIsRefusedAtItsLine) {
   EXPECT_EQ(test::loadError(R"({"camera": {}, "objects": [{"file": "bad.obj"}]})", dir.path()),
             "test.json: objects[0].file: bad.obj:2: expected a vertex colour \"v x y z r g b\" of "
             "numbers from 0 to 1, got \"1.5\"");
+  dir.write("some.obj", "v 0 0 0 1 1 1\nv 1 0 0\nv 0 1 0 0 0 0\nf 1 2 3\n");
+  const SceneDesc some = parseSceneText(R"({"camera": {}, "objects": [{"file": "some.obj"}]})",
+                                        "test.json", dir.path());
+  EXPECT_TRUE(some.objects[0].mesh->colors.empty());
+  EXPECT_EQ(some.warnings, std::vector<std::string>{
+                               "test.json: objects[0].file: some.obj:2: a vertex without a colour, "
+                               "where 2 of the file's 3 have one: no vertex colours are used"});
   EXPECT_EQ(test::loadError(R"({"camera": {}, "objects": [{"file": "bad.obj",
                                "vertex_colors": 1}]})",
                             dir.path()),

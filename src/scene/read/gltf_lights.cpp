@@ -90,7 +90,7 @@ std::vector<LightDesc> readGltfLights(const std::string& path, const std::string
   const tinygltf::Model& model = file->model;
   std::vector<LightDesc> lights;
   forEachPlacedNode(model, label, [&](int index, const tinygltf::Node& node, const GltfMatrix& w) {
-    const std::string where = label + ": nodes[" + shown(index) + "]";
+    const std::string where = label + ": nodes[" + std::to_string(index) + "]";
     const int which = lightOfNode(node, model.lights.size(), where);
     if (which < 0) return;
     LightDesc light =

@@ -506,6 +506,11 @@ MeshDesc loadObjFile(const std::string& path, const std::string& label, TextureL
   mesh.materialFiles = library.files;
   std::vector<std::string> warnings = materialWarnings(scan, library, reader.GetMaterials(), label);
   for (std::string& warning : bumpWarnings(library)) warnings.push_back(std::move(warning));
+  if (scan.colouredVertices > 0 && scan.colouredVertices < scan.vertices)
+    warnings.push_back(label + ":" + std::to_string(scan.firstUncolouredLine) +
+                       ": a vertex without a colour, where " +
+                       std::to_string(scan.colouredVertices) + " of the file's " +
+                       std::to_string(scan.vertices) + " have one: no vertex colours are used");
   // Then those of the materials (normal maps written as bump maps).
   warnings.insert(warnings.end(), mesh.warnings.begin(), mesh.warnings.end());
   mesh.warnings = std::move(warnings);

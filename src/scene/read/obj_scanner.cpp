@@ -175,6 +175,11 @@ void Scanner::scanLine(std::string_view line, size_t number, ObjScan& out) {
                shownText(tokens[size_t(c)]));
     positions_.push_back(Vec3(float(values[0]), float(values[1]), float(values[2])));
     ++vertices_;
+    ++out.vertices;
+    if (tokens.size() >= 6)
+      ++out.colouredVertices;
+    else if (out.firstUncolouredLine == 0)
+      out.firstUncolouredLine = line_;
   } else if (keyword == "vn") {
     double values[3];
     numbers(tokens, 3, 3, "a normal \"vn x y z\"", whole, values);

@@ -27,6 +27,8 @@ struct ObjScan {
   std::string text;                            // for tinyobjloader
   std::vector<NamedAtLine> materialLibraries;  // `mtllib` file names, unique, in order of use
   std::vector<NamedAtLine> materialUses;       // `usemtl` names, unique, in order of use
+  // Vertices, and those with a colour ("v x y z r g b"), and the first line of one without.
+  size_t vertices = 0, colouredVertices = 0, firstUncolouredLine = 0;
 };
 
 ObjScan scanObj(const std::string& text, const std::string& label);
