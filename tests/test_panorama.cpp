@@ -111,7 +111,8 @@ TEST(Panorama, RefusesWhatAPanoramaDoesNotUse) {
             "spans every direction)");
   EXPECT_EQ(cameraError(R"("projection": "equirectangula")"),
             "test.json: camera.projection: expected one of \"perspective\", \"equirectangular\", "
-            "\"fisheye\", got a string \"equirectangula\", did you mean \"equirectangular\"?");
+            "\"fisheye\", \"orthographic\", got a string \"equirectangula\", did you mean "
+            "\"equirectangular\"?");
   EXPECT_EQ(cameraError(R"("projection": "equirectangular")",
                         test::oneTrack("camera", "fov", "[[0, 40], [2, 50]]")),
             "test.json: animation.tracks[0].property: \"fov\" is not used by an equirectangular "

@@ -13,14 +13,22 @@
 namespace candela {
 
 // How the image's pixels map to directions: through K (and a lens distortion), through K and a
-// fisheye lens (render/fisheye.h), or as an equirectangular panorama of every direction about the
-// camera (render/panorama.h).
-enum class CameraProjection : uint32_t { Perspective = 0, Equirectangular = 1, Fisheye = 2 };
+// fisheye lens (render/fisheye.h), as an equirectangular panorama of every direction about the
+// camera (render/panorama.h), or orthographically: K maps a pixel to a point of the camera's
+// plane, from which its ray runs along +z.
+enum class CameraProjection : uint32_t {
+  Perspective = 0,
+  Equirectangular = 1,
+  Fisheye = 2,
+  Orthographic = 3
+};
 
 struct Camera {
   uint32_t width = 512, height = 512;
   CameraProjection projection = CameraProjection::Perspective;
-  Mat3 inverseK;  // pixel (u, v, 1) -> camera-space direction with z = 1 (distorted)
+  // Pixel (u, v, 1) -> camera-space direction with z = 1 (distorted); orthographic: -> the point
+  // (x, y) of the camera's plane z = 0 (with a 1 for z).
+  Mat3 inverseK;
   LensDistortion distortion;  // a fisheye's coefficients are its k1 to k4
   Mat3 cameraToWorld;  // OpenCV camera axes -> world
   Vec3 position;       // camera centre in world space

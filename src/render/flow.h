@@ -11,8 +11,13 @@
 namespace candela {
 
 // The pixel `c` (camera-space point or direction) falls on through `camera`'s lens, when it
-// lies in front of the camera.
+// lies in front of the camera (an orthographic camera's: a point, anywhere).
 CANDELA_HDI bool projectToPixel(const FlowCamera& camera, const Vec3& c, Vec2* pixel) {
+  if (camera.projection == CameraProjection::Orthographic) {
+    const Vec3 h = camera.K * Vec3(c.x, c.y, 1.0f);
+    *pixel = Vec2(h.x, h.y);
+    return true;
+  }
   if (camera.projection == CameraProjection::Equirectangular) {
     *pixel = panoramaPixel(c, camera.width, camera.height);
     return true;
@@ -37,7 +42,8 @@ CANDELA_HDI bool projectToPixel(const FlowCamera& camera, const Vec3& c, Vec2* p
 // The forward flow of one sample in pixels: the first hit carried by its instance's motion and
 // projected by the next frame's camera, minus its projection by this frame's; a sample that saw
 // the background follows its ray's direction, a point at infinity, so only the cameras' turning
-// moves it. False where either projection is undefined (the point behind a camera).
+// moves it. False where either projection is undefined (the point behind a camera, the
+// background of an orthographic camera).
 CANDELA_HDI bool sampleFlow(const SceneView& scene, const FirstHit& first, const Vec3& rayDirection,
                             Vec2* flow) {
   const FlowCamera& now = scene.flow.now;
@@ -48,6 +54,10 @@ CANDELA_HDI bool sampleFlow(const SceneView& scene, const FirstHit& first, const
     fromNow = now.worldToCamera * (first.position - now.position);
     fromNext = next.worldToCamera * (m.linear * first.position + m.offset - next.position);
   } else {
+    // A point at infinity is no one pixel of an orthographic camera, which sees it everywhere.
+    if (now.projection == CameraProjection::Orthographic ||
+        next.projection == CameraProjection::Orthographic)
+      return false;
     fromNow = now.worldToCamera * rayDirection;
     fromNext = next.worldToCamera * rayDirection;
   }

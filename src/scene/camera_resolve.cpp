@@ -17,9 +17,12 @@ namespace candela {
 
 Mat3 intrinsicMatrix(const CameraDesc& desc) {
   if (desc.intrinsics) return *desc.intrinsics;
-  // An equidistant fisheye's image radius is f theta: half the fov at half the width.
+  // An equidistant fisheye's image radius is f theta: half the fov at half the width. An
+  // orthographic camera's f is pixels per world unit.
   const float f = desc.projection == CameraProjection::Fisheye
                       ? float(desc.width) / (desc.fov * (kPi / 180.0f))
+                  : desc.projection == CameraProjection::Orthographic
+                      ? float(desc.width) / desc.viewWidth
                       : float(desc.width) / (2.0f * std::tan(desc.fov * (kPi / 360.0f)));
   Mat3 k;
   k.m[0][0] = f;
@@ -34,7 +37,8 @@ namespace {
 // Where K comes from: the intrinsics, or the field of view.
 std::string intrinsicsPath(const CameraDesc& desc) {
   if (!desc.gltfFile.empty()) return "camera.gltf";
-  return desc.intrinsics ? "camera.intrinsics" : "camera.fov";
+  if (desc.intrinsics) return "camera.intrinsics";
+  return desc.projection == CameraProjection::Orthographic ? "camera.view_width" : "camera.fov";
 }
 
 // Where the camera's pose comes from.
@@ -322,6 +326,8 @@ const char* projectionName(CameraProjection projection) {
       return "equirectangular";
     case CameraProjection::Fisheye:
       return "fisheye";
+    case CameraProjection::Orthographic:
+      return "orthographic";
     case CameraProjection::Perspective:
       break;
   }

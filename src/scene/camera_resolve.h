@@ -60,7 +60,7 @@ struct CameraMatrices {
 std::vector<float> distortionCoefficients(const LensDistortion& d, CameraProjection projection);
 LensDistortion lensDistortion(const std::vector<float>& coefficients, CameraProjection projection);
 
-// "perspective", "equirectangular" or "fisheye", as a scene's camera names it.
+// "perspective", "equirectangular", "fisheye" or "orthographic", as a scene's camera names it.
 const char* projectionName(CameraProjection projection);
 
 // The matrices of the camera `desc` makes; throws SceneError as resolveCamera does.

@@ -144,6 +144,9 @@ struct LightDesc {
 struct CameraDesc {
   uint32_t width = 512, height = 512;
   float fov = 60;                  // horizontal, degrees; used when `intrinsics` is absent
+  // An orthographic camera's: the world width its image spans (pixels square, the principal
+  // point at the image's centre), when `intrinsics` is absent.
+  float viewWidth = 0;
   std::optional<Mat3> intrinsics;  // K in pixel coordinates (pixel centres at +0.5)
   Vec3 position;
   Vec3 rotation;                   // degrees, camera-to-world, R = Rz * Ry * Rx

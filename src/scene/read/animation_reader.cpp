@@ -196,6 +196,7 @@ void checkUsed(const JsonValue& property, const AnimTrack& track, const SceneDes
       case AnimProperty::Fov:
         if (c.intrinsics) unused("a camera given by \"intrinsics\"");
         if (c.projection == CameraProjection::Equirectangular) unused("an equirectangular camera");
+        if (c.projection == CameraProjection::Orthographic) unused("an orthographic camera");
         break;
       case AnimProperty::ApertureRadius:
       case AnimProperty::FocusDistance:

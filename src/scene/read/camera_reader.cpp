@@ -85,9 +85,11 @@ LensDistortion readDistortion(const JsonValue& value, CameraProjection projectio
 }
 
 // "projection": a perspective camera's (the default), an equirectangular panorama's, which spans
-// every direction and so has no K, lens or distortion, or a fisheye's, which has no thin lens.
+// every direction and so has no K, lens or distortion, a fisheye's, which has no thin lens, or an
+// orthographic camera's, whose K (or "view_width") maps pixels to its plane, with neither a field
+// of view nor a lens.
 void readProjection(JsonObject& fields, const JsonValue& value, CameraDesc& camera) {
-  const size_t choice = value.choice({"perspective", "equirectangular", "fisheye"});
+  const size_t choice = value.choice({"perspective", "equirectangular", "fisheye", "orthographic"});
   if (choice == 1) {
     camera.projection = CameraProjection::Equirectangular;
     for (const char* key : {"fov", "intrinsics", "distortion", "aperture_radius", "focus_distance"})
@@ -96,6 +98,19 @@ void readProjection(JsonObject& fields, const JsonValue& value, CameraDesc& came
     camera.projection = CameraProjection::Fisheye;
     for (const char* key : {"aperture_radius", "focus_distance"})
       fields.reject(key, "not used by a fisheye camera (a pinhole's)");
+  } else if (choice == 3) {
+    camera.projection = CameraProjection::Orthographic;
+    for (const char* key : {"fov", "distortion", "aperture_radius", "focus_distance"})
+      fields.reject(key,
+                    "not used by an orthographic camera (its rays are parallel: \"view_width\" or "
+                    "\"intrinsics\" gives its scale)");
+    fields.exclusive("view_width", "intrinsics");
+    if (std::optional<JsonValue> width = fields.get("view_width"))
+      camera.viewWidth = width->positiveNumber();
+    else if (!fields.has("intrinsics") && !fields.has("gltf"))
+      fields.fail(
+          "missing required key \"view_width\" (an orthographic camera's width in world "
+          "units) or \"intrinsics\"");
   }
 }
 
@@ -185,9 +200,10 @@ float readFov(const JsonValue& value, CameraProjection projection) {
 }
 
 CameraDesc readCamera(const JsonValue& value, RenderSettings& render, const std::string& baseDir) {
-  JsonObject fields(value, {"width", "height", "fov", "intrinsics", "position", "rotation",
-                            "look_at", "up", "extrinsics", "spp", "rays", "aperture_radius",
-                            "focus_distance", "distortion", "projection", "gltf", "gltf_camera"});
+  JsonObject fields(
+      value, {"width", "height", "fov", "intrinsics", "position", "rotation", "look_at", "up",
+              "extrinsics", "spp", "rays", "aperture_radius", "focus_distance", "distortion",
+              "projection", "gltf", "gltf_camera", "view_width"});
   CameraDesc camera;
   if (std::optional<JsonValue> width = fields.get("width"))
     camera.width = static_cast<uint32_t>(width->integer(1, kMaxUint32, "a positive integer"));
@@ -198,6 +214,11 @@ CameraDesc readCamera(const JsonValue& value, RenderSettings& render, const std:
 
   if (std::optional<JsonValue> projection = fields.get("projection"))
     readProjection(fields, *projection, camera);
+  if (camera.projection != CameraProjection::Orthographic) {
+    const std::string name = projectionName(camera.projection);
+    fields.reject("view_width", "not used by " + std::string(name[0] == 'e' ? "an " : "a ") + name +
+                                    " camera (only orthographic cameras have a view width)");
+  }
   fields.exclusive("fov", "intrinsics");
   if (std::optional<JsonValue> fov = fields.get("fov"))
     camera.fov = readFov(*fov, camera.projection);
