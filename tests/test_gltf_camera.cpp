@@ -8,6 +8,7 @@
 #include <string>
 
 #include "gltf_test_util.h"
+#include "render/camera_ray.h"
 #include "render_test_util.h"
 #include "scene/read/scene_loader.h"
 #include "scene/scene_error.h"
@@ -104,6 +105,32 @@ TEST(GltfCamera, AFilesCamerasAreNamedUnlessTheSceneTakesOne) {
   EXPECT_TRUE(taken.warnings.empty());
 }
 
+// An orthographic camera (ymag 1) at the same node: an orthographic camera of the same pose whose
+// image is 2 ymag high, its width following from the image's: every ray leaves the camera's
+// plane where that camera's does, along its axis.
+TEST(GltfCamera, AnOrthographicCameraKeepsItsHeight) {
+  TempDir dir;
+  dir.write("ortho.gltf", cameraFile("orthographic").gltf());
+  dir.write("cam.gltf", cameraFile().gltf());
+  const SceneData fromFile = test::loadTestScene(
+      R"({"camera": {"width": 40, "height": 30, "gltf": "ortho.gltf"}})", dir.path());
+  const SceneData perspective = test::loadTestScene(
+      R"({"camera": {"width": 40, "height": 30, "gltf": "cam.gltf"}})", dir.path());
+  const Camera& a = fromFile.view().camera;
+  const Camera& pose = perspective.view().camera;
+  EXPECT_EQ(a.projection, CameraProjection::Orthographic);
+  for (const auto& [px, py] : {std::pair<float, float>{20, 15}, {0, 0}, {40, 30}, {10, 25}}) {
+    const Ray ray = generateCameraRay(a, px, py, 0.5f, 0.5f);
+    // 30 pixels span 2 units: (px - 20, py - 15) / 15 along the pose's right and down.
+    const Vec3 expected = pose.position + pose.cameraToWorld.column(0) * ((px - 20.0f) / 15.0f) +
+                          pose.cameraToWorld.column(1) * ((py - 15.0f) / 15.0f);
+    for (int c = 0; c < 3; ++c) {
+      EXPECT_NEAR(ray.origin[c], expected[c], 1e-5);
+      EXPECT_NEAR(ray.direction[c], pose.cameraToWorld.column(2)[c], 1e-6);
+    }
+  }
+}
+
 TEST(GltfCamera, RefusesWhatItCannotTake) {
   TempDir dir;
   dir.write("cam.gltf", cameraFile().gltf());
@@ -114,9 +141,12 @@ TEST(GltfCamera, RefusesWhatItCannotTake) {
   EXPECT_EQ(error(R"({"gltf": "cam.gltf", "gltf_camera": 1})"),
             "test.json: camera.gltf: cam.gltf: camera 1 is asked for, but the file's scene "
             "places 1 camera");
-  EXPECT_EQ(error(R"({"gltf": "ortho.gltf"})"),
-            "test.json: camera.gltf: ortho.gltf: cameras[0]: a \"orthographic\" camera; candela "
-            "takes perspective cameras from glTF files");
+  GltfFile flat = cameraFile("orthographic");
+  flat.doc["cameras"][0]["orthographic"]["ymag"] = -1;
+  dir.write("flat.gltf", flat.gltf());
+  EXPECT_EQ(error(R"({"gltf": "flat.gltf"})"),
+            "test.json: camera.gltf: flat.gltf: cameras[0].orthographic.ymag: expected a positive "
+            "number, got -1");
   EXPECT_EQ(error(R"({"gltf_camera": 0})"),
             "test.json: camera.gltf_camera: not used without \"gltf\"");
   EXPECT_NE(error(R"({"gltf": "cam.gltf", "position": [0, 0, 0]})").find("\"gltf\""),

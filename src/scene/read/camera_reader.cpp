@@ -116,7 +116,7 @@ void readProjection(JsonObject& fields, const JsonValue& value, CameraDesc& came
 
 // "gltf": the pose and vertical field of view of a camera that a glTF file places, the
 // "gltf_camera"-th (from 0); the horizontal field of view follows from the image's width and
-// height.
+// height (an orthographic camera's width likewise from its height).
 void readGltfCamera(JsonObject& fields, const std::string& baseDir, CameraDesc& camera) {
   const std::optional<JsonValue> gltf = fields.get("gltf");
   if (!gltf) {
@@ -140,6 +140,15 @@ void readGltfCamera(JsonObject& fields, const std::string& baseDir, CameraDesc& 
   }
   camera.extrinsicsR = read.worldToCamera;
   camera.extrinsicsT = read.translation;
+  if (read.ymag > 0) {  // orthographic: its height 2 ymag kept, as a perspective camera's yfov
+    camera.projection = CameraProjection::Orthographic;
+    camera.viewWidth = float(2.0 * read.ymag * camera.width / camera.height);
+    if (!(std::isfinite(camera.viewWidth) && camera.viewWidth > 0.0f))
+      gltf->fail("its ymag of " + formatNumber(float(read.ymag)) +
+                 " spans no finite width across a " + std::to_string(camera.width) + " x " +
+                 std::to_string(camera.height) + " image");
+    return;
+  }
   const double halfHeight = std::tan(read.yfovDegrees * kRadiansPerDegree / 2.0);
   camera.fov =
       float(2.0 * std::atan(halfHeight * camera.width / camera.height) / kRadiansPerDegree);

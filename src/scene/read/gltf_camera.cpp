@@ -31,13 +31,20 @@ GltfCamera readGltfCamera(const std::string& path, const std::string& label, uin
                        std::to_string(model.cameras.size()) + " cameras)");
     const tinygltf::Camera& c = model.cameras[size_t(node.camera)];
     const std::string cameraWhere = label + ": cameras[" + std::to_string(node.camera) + "]";
-    if (c.type != "perspective")
-      throw SceneError(cameraWhere + ": a \"" + c.type +
-                       "\" camera; candela takes perspective cameras from glTF files");
-    camera.yfovDegrees = c.perspective.yfov * kDegreesPerRadian;
-    if (!(camera.yfovDegrees > 0.0 && camera.yfovDegrees < 180.0))
-      throw SceneError(cameraWhere + ".perspective.yfov: expected an angle between 0 and pi " +
-                       "(exclusive), got " + std::to_string(c.perspective.yfov));
+    if (c.type == "orthographic") {
+      camera.ymag = c.orthographic.ymag;
+      if (!(camera.ymag > 0.0 && camera.ymag < 1e30))
+        throw SceneError(cameraWhere + ".orthographic.ymag: expected a positive number, got " +
+                         formatNumber(float(c.orthographic.ymag)));
+    } else if (c.type == "perspective") {
+      camera.yfovDegrees = c.perspective.yfov * kDegreesPerRadian;
+      if (!(camera.yfovDegrees > 0.0 && camera.yfovDegrees < 180.0))
+        throw SceneError(cameraWhere + ".perspective.yfov: expected an angle between 0 and pi " +
+                         "(exclusive), got " + std::to_string(c.perspective.yfov));
+    } else {
+      throw SceneError(cameraWhere + ".type: expected \"perspective\" or \"orthographic\", got \"" +
+                       c.type + "\"");
+    }
     // Right and up from the node's x and y axes, made orthonormal; the camera looks along
     // right x up's opposite, whatever the node's scale or mirroring.
     const DVec3 x{w[0], w[1], w[2]}, y{w[4], w[5], w[6]};

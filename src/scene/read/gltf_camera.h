@@ -1,9 +1,10 @@
 // A camera of a glTF file (docs/scene-format.md, *A camera from a glTF file*): the `number`-th
-// perspective camera that the file's scene places (in the order its nodes are visited: a node
-// before its children, siblings in order), posed by its node's transform (a glTF camera looks
-// along its -z with +y up; any scale is dropped) and its vertical field of view. Throws SceneError
-// "<label>: <reason>" for a file that cannot be read, one that places fewer cameras, an
-// orthographic camera or a field of view outside (0, 180) degrees.
+// camera that the file's scene places (in the order its nodes are visited: a node before its
+// children, siblings in order), posed by its node's transform (a glTF camera looks along its -z
+// with +y up; any scale is dropped), with a perspective camera's vertical field of view or an
+// orthographic camera's half height (ymag). Throws SceneError "<label>: <reason>" for a file that
+// cannot be read, one that places fewer cameras, a field of view outside (0, 180) degrees or a
+// ymag that is not positive.
 #pragma once
 
 #include <cstdint>
@@ -17,7 +18,8 @@ namespace candela {
 struct GltfCamera {
   Mat3 worldToCamera;  // OpenCV axes: x right, y down, z forward
   Vec3 translation;    // t of [R | t]
-  double yfovDegrees = 0;
+  double yfovDegrees = 0;  // a perspective camera's
+  double ymag = 0;         // an orthographic camera's half height in world units (else 0)
 };
 
 GltfCamera readGltfCamera(const std::string& path, const std::string& label, uint32_t number);
