@@ -140,6 +140,31 @@ TEST(CudaBackend, MatchesCpuWithAreaLightsAndAnEnvironmentMap) {
   EXPECT_EQ(cpu.rays.camera, gpu.rays.camera);
 }
 
+// An orthographic camera over a mesh of vertex colours under a plastic and a mirror: its rays and
+// the colours' interpolation on the device as on the CPU.
+TEST(CudaBackend, MatchesCpuThroughAnOrthographicCameraOnVertexColours) {
+  REQUIRE_GPU();
+  const std::string dir = ::testing::TempDir();
+  std::ofstream(dir + "cuda_coloured.obj")
+      << "v -2 0 -2 1 0.2 0.1\nv 2 0 -2 0.1 0.9 0.3\nv 2 0 2 0.3 0.4 1\nv -2 0 2 0.8 0.8 0\n"
+         "f 1 3 2\nf 1 4 3\n";
+  const SceneData data = test::loadTestScene(R"({
+    "camera": {"width": 48, "height": 36, "projection": "orthographic", "view_width": 4,
+               "position": [3, 3, 3], "look_at": [0, 0.3, 0], "spp": 16},
+    "render": {"max_depth": 6, "seed": 3},
+    "environment": {"color": [0.3, 0.35, 0.4]},
+    "objects": [{"file": ")" + dir + R"(cuda_coloured.obj"},
+                {"file": ")" + dir + R"(cuda_coloured.obj", "position": [0, 0.01, 0],
+                 "scale": 0.3, "material": {"type": "plastic", "color": 1, "roughness": 0.2}}],
+    "spheres": [{"position": [-0.8, 0.5, 0.3], "radius": 0.5, "material": "mirror"}],
+    "lights": [{"type": "directional", "direction": [-0.3, -1, -0.4], "intensity": 2}]})");
+  ASSERT_FALSE(data.vertexColors.empty());
+  const RenderResult cpu = renderCpu(data.view(), RenderOptions{});
+  const RenderResult gpu = renderCuda(data);
+  EXPECT_LT(test::relMseAgainst(cpu.image.pixels, gpu.image.pixels), 1e-4);
+  EXPECT_EQ(cpu.rays.camera, gpu.rays.camera);
+}
+
 // A map of over a million texels is sampled on a grid shifted by half a texel
 // (render/environment.h): the device samples it as the CPU does.
 TEST(CudaBackend, MatchesCpuUnderAMapOfUnsplitTexels) {
