@@ -176,18 +176,26 @@ TEST(PlyLoader, AnElementOfNoPropertiesIsSkippedAtOnceWhateverItsCount) {
   EXPECT_EQ(mesh.triangles.size(), 1u);
 }
 
+// An ASCII PLY triangle whose vertices have the properties `colour` after x, y, z, each of
+// `rows` a vertex's values.
+std::string colouredTriangle(const std::string& colour, const std::string& rows) {
+  return "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+         "property float z\n" +
+         colour + "element face 1\nproperty list uchar int vertex_index\nend_header\n" + rows +
+         "3 0 1 2\n";
+}
+
 // Display colours (sRGB) of uchar, ushort or float properties, made linear; the default material
 // under them is diffuse 1, so that they are its colour.
 TEST(PlyLoader, VertexColoursAreReadAsLinearColours) {
   const auto srgb = [](double s) {
     return s <= 0.04045 ? s / 12.92 : std::pow((s + 0.055) / 1.055, 2.4);
   };
-  const std::string text =
-      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
-      "property float z\nproperty uchar red\nproperty uchar green\nproperty uchar blue\n"
-      "element face 1\nproperty list uchar int vertex_index\nend_header\n"
-      "0 0 0 255 0 128\n1 0 0 0 255 0\n0 1 0 10 0 255\n3 0 1 2\n";
-  const MeshDesc mesh = loadPlyFile(writeFile("colours.ply", text), "colours.ply");
+  const MeshDesc mesh = loadPlyFile(
+      writeFile("colours.ply",
+                colouredTriangle("property uchar red\nproperty uchar green\nproperty uchar blue\n",
+                                 "0 0 0 255 0 128\n1 0 0 0 255 0\n0 1 0 10 0 255\n")),
+      "colours.ply");
   EXPECT_TRUE(mesh.warnings.empty());
   ASSERT_EQ(mesh.colors.size(), 3u);
   EXPECT_FLOAT_EQ(mesh.colors[0].x, 1.0f);
@@ -200,31 +208,28 @@ TEST(PlyLoader, VertexColoursAreReadAsLinearColours) {
   EXPECT_TRUE(mesh.normals.empty());
   EXPECT_TRUE(mesh.uvs.empty());
 
-  const std::string floats =
-      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
-      "property float z\nproperty float diffuse_red\nproperty float diffuse_green\n"
-      "property float diffuse_blue\nelement face 1\nproperty list uchar int vertex_index\n"
-      "end_header\n0 0 0 0.5 0 0\n1 0 0 0 1 0\n0 1 0 0 0 1\n3 0 1 2\n";
-  const MeshDesc f = loadPlyFile(writeFile("float_colours.ply", floats), "float_colours.ply");
+  const MeshDesc f = loadPlyFile(
+      writeFile("float_colours.ply",
+                colouredTriangle("property float diffuse_red\nproperty float diffuse_green\n"
+                                 "property float diffuse_blue\n",
+                                 "0 0 0 0.5 0 0\n1 0 0 0 1 0\n0 1 0 0 0 1\n")),
+      "float_colours.ply");
   ASSERT_EQ(f.colors.size(), 3u);
   EXPECT_NEAR(f.colors[0].x, srgb(0.5), 1e-6);
 
-  const std::string wide =
-      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
-      "property float z\nproperty ushort r\nproperty ushort g\nproperty ushort b\n"
-      "element face 1\nproperty list uchar int vertex_index\nend_header\n"
-      "0 0 0 65535 0 0\n1 0 0 0 65535 0\n0 1 0 0 0 32768\n3 0 1 2\n";
-  const MeshDesc w = loadPlyFile(writeFile("wide_colours.ply", wide), "wide_colours.ply");
+  const MeshDesc w = loadPlyFile(
+      writeFile("wide_colours.ply",
+                colouredTriangle("property ushort r\nproperty ushort g\nproperty ushort b\n",
+                                 "0 0 0 65535 0 0\n1 0 0 0 65535 0\n0 1 0 0 0 32768\n")),
+      "wide_colours.ply");
   ASSERT_EQ(w.colors.size(), 3u);
   EXPECT_NEAR(w.colors[2].z, srgb(32768.0 / 65535), 1e-6);
 
   // Two of the three are no colour.
-  const std::string partial =
-      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
-      "property float z\nproperty uchar red\nproperty uchar green\n"
-      "element face 1\nproperty list uchar int vertex_index\nend_header\n"
-      "0 0 0 255 0\n1 0 0 0 255\n0 1 0 10 0\n3 0 1 2\n";
-  const MeshDesc p = loadPlyFile(writeFile("partial.ply", partial), "partial.ply");
+  const MeshDesc p = loadPlyFile(
+      writeFile("partial.ply", colouredTriangle("property uchar red\nproperty uchar green\n",
+                                                "0 0 0 255 0\n1 0 0 0 255\n0 1 0 10 0\n")),
+      "partial.ply");
   EXPECT_TRUE(p.colors.empty());
   EXPECT_FLOAT_EQ(p.materials[0].color.x, 0.8f);
 }
@@ -290,13 +295,11 @@ TEST(PlyLoader, BrokenAsciiBodiesAreRefusedAtTheirLine) {
             "bad.ply:13: face 0: expected an integer of type int, got \"1.5\"");
   EXPECT_EQ(errorOf(kAsciiHeader + "0 0 0\n1 0 0\n0 1 0\n"),
             "bad.ply:13: face 0: the file ends here");
-  const std::string coloured =
-      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
-      "property float z\nproperty float red\nproperty float green\nproperty float blue\n"
-      "element face 1\nproperty list uchar int vertex_index\nend_header\n";
-  EXPECT_EQ(errorOf(coloured + "0 0 0 1 1 1\n1 0 0 1.5 0 0\n0 1 0 0 0 0\n3 0 1 2\n"),
+  const std::string floatColours =
+      "property float red\nproperty float green\nproperty float blue\n";
+  EXPECT_EQ(errorOf(colouredTriangle(floatColours, "0 0 0 1 1 1\n1 0 0 1.5 0 0\n0 1 0 0 0 0\n")),
             "bad.ply:14: vertex 1: red is 1.5; expected a colour from 0 to 1");
-  EXPECT_EQ(errorOf(coloured + "0 0 0 1 1 1\n1 0 0 1 -0.5 0\n0 1 0 0 0 0\n3 0 1 2\n"),
+  EXPECT_EQ(errorOf(colouredTriangle(floatColours, "0 0 0 1 1 1\n1 0 0 1 -0.5 0\n0 1 0 0 0 0\n")),
             "bad.ply:14: vertex 1: green is -0.5; expected a colour from 0 to 1");
 }
 
