@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "backends/renderer.h"
+#include "gltf_test_util.h"
 #include "image/image_io.h"
 #include "image_difference.h"
 #include "require_gpu.h"
@@ -122,6 +123,27 @@ TEST_F(CliTest, BadSceneExitsTwoWithTheLoaderMessageAndWritesNothing) {
   EXPECT_EQ(countLines(r.err), 1u) << r.err;
   EXPECT_TRUE(r.out.empty()) << r.out;
   EXPECT_FALSE(fs::exists(path("out"))) << "nothing may be written for a bad scene";
+}
+
+// A glTF file is a scene of its own: `candela render model.glb` renders it framed and lit
+// (scene/read/gltf_scene.h), at 960 x 540.
+TEST_F(CliTest, AGltfFileRendersAsItsOwnScene) {
+  candela::test::GltfFile f;
+  const int p = f.addFloats({-1, 0, 0, 1, 0, 0, 0, 1.5f, 0}, "VEC3", 3);
+  f.doc["meshes"] = {{{"primitives", {{{"attributes", {{"POSITION", p}}}}}}}};
+  f.doc["nodes"] = {{{"mesh", 0}}};
+  writeFile("tri.glb", f.glb());
+  const RunResult r = run("render tri.glb -o tri.png --spp 1 --backend cpu");
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  uint32_t width = 0, height = 0;
+  ASSERT_TRUE(pngSize(path("tri.png"), &width, &height));
+  EXPECT_EQ(width, 960u);
+  EXPECT_EQ(height, 540u);
+  writeFile("bad.glb", "glTF but not really");
+  const RunResult bad = run("render bad.glb -o bad.png --spp 1 --backend cpu");
+  EXPECT_EQ(bad.exitCode, 2);
+  EXPECT_EQ(bad.err.rfind("candela: error: bad.glb: ", 0), 0u) << bad.err;
+  EXPECT_FALSE(fs::exists(path("bad.png")));
 }
 
 TEST_F(CliTest, MaterialWarningsGoToStderrAndTheRenderGoesOn) {

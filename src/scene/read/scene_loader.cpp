@@ -15,6 +15,7 @@
 #include "scene/read/entity_reader.h"
 #include "scene/read/environment_reader.h"
 #include "scene/read/gltf_loader.h"
+#include "scene/read/gltf_scene.h"
 #include "scene/read/json_parse.h"
 #include "scene/read/material_reader.h"
 #include "scene/read/obj_loader.h"
@@ -219,10 +220,12 @@ SceneDesc parseSceneText(const std::string& text, const std::string& fileLabel,
 }
 
 SceneDesc loadSceneFile(const std::string& path) {
+  const std::string folder = std::filesystem::path(path).parent_path().string();
+  if (isGltfPath(path)) return parseSceneText(gltfSceneText(path, path), path, folder);
   std::string text, reason;
   if (!readTextFile(path, &text, &reason))
     throw SceneError(path + ": cannot open scene file (" + reason + ")");
-  return parseSceneText(text, path, std::filesystem::path(path).parent_path().string());
+  return parseSceneText(text, path, folder);
 }
 
 }  // namespace candela

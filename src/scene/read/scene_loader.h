@@ -16,7 +16,8 @@
 
 namespace candela {
 
-// Reads, parses and validates a scene file; loads its OBJ files. Throws SceneError.
+// Reads, parses and validates a scene file; loads its OBJ files. Throws SceneError. A glTF file
+// (.gltf, .glb) is a scene of its own (scene/read/gltf_scene.h).
 SceneDesc loadSceneFile(const std::string& path);
 
 // Same from JSON text; `fileLabel` prefixes messages, `baseDir` resolves OBJ paths.
