@@ -38,7 +38,9 @@ class Scene:
 
     @classmethod
     def load(cls, path: str | os.PathLike) -> "Scene":
-        """Loads and validates a JSON scene file (and its OBJ and PLY meshes). Raises SceneError."""
+        """Loads and validates a JSON scene file (and its OBJ, PLY and glTF meshes), or a glTF file
+        as a scene of its own (docs/scene-format.md, *A glTF file as the scene*). Raises
+        SceneError."""
         path = os.fspath(path)
         return cls(_candela._Scene.load(path),
                    {"path": os.path.abspath(path), "label": path})._warned()

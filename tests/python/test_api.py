@@ -317,3 +317,24 @@ def test_gltf_meshes_load_with_their_warnings_and_render(tmp_path, scene_dict):
     assert [str(w.message) for w in caught] == [expected]
     img = scene.render(spp=1, backend="cpu")
     assert np.isfinite(img).all()
+
+
+def test_a_gltf_file_is_a_scene_of_its_own(tmp_path):
+    import base64
+    import json
+    import struct
+    data = struct.pack("9f", -1, -1, 0, 1, -1, 0, 0, 1, 0)
+    gltf = {"asset": {"version": "2.0"},
+            "buffers": [{"byteLength": len(data), "uri": "data:application/octet-stream;base64,"
+                         + base64.b64encode(data).decode()}],
+            "bufferViews": [{"buffer": 0, "byteLength": len(data)}],
+            "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3"}],
+            "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+            "nodes": [{"mesh": 0}]}
+    (tmp_path / "tri.gltf").write_text(json.dumps(gltf))
+    scene = candela.Scene.load(tmp_path / "tri.gltf")
+    img = scene.render(spp=2, backend="cpu")
+    assert img.shape == (540, 960, 3)
+    # Framed: the triangle covers the image's centre; the pale sky (radiance 0.6) its corner.
+    assert abs(img[270, 480] - 0.6).max() > 0.01
+    assert abs(img[5, 5] - 0.6).max() < 1e-6
