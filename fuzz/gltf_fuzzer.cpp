@@ -1,8 +1,8 @@
 // libFuzzer target: the input is a glTF file, text or binary (.glb), rendered by a fixed small
 // scene; what its URIs name is looked for in a temporary folder that holds only it (data URIs and
 // a .glb's own buffer are what the seeds use), its cameras are read as a scene's camera would
-// take them, and a file with lights is rendered again by them ({"gltf": file} in "lights"). See
-// docs/fuzzing.md.
+// take them, the file is rendered as a scene of its own (as `candela render m.gltf` does), and a
+// file with lights is rendered again by them ({"gltf": file} in "lights"). See docs/fuzzing.md.
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -10,6 +10,7 @@
 #include "fuzz_scene.h"
 #include "scene/read/gltf_camera.h"
 #include "scene/read/gltf_lights.h"
+#include "scene/read/gltf_scene.h"
 #include "scene/scene_error.h"
 
 namespace {
@@ -47,6 +48,14 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     } catch (const candela::SceneError&) {
     }
   }
+  // As a scene of its own (`candela render m.gltf`): framed by its bounds, or by its camera.
+  std::string own;
+  try {
+    own = candela::gltfSceneText(folder + "/m.gltf", "m.gltf");
+  } catch (const candela::SceneError&) {
+    return 0;
+  }
+  candela::fuzz::loadAndTrace(own, folder);
   try {
     candela::readGltfLights(folder + "/m.gltf", "m.gltf");
   } catch (const candela::SceneError&) {

@@ -81,8 +81,11 @@ std::string gltfSceneText(const std::string& path, const std::string& label) {
     const DVec3 from = unit(DVec3{0.55, 0.4, 1.0});
     const DVec3 eye = centre + (1.05 * radius / std::sin(halfHeight)) * from;
     camera["fov"] = kFovDegrees;
-    camera["position"] = array3(eye);
-    camera["look_at"] = array3(centre);
+    // Bounds beyond single precision are the mesh loader's to refuse, with their place.
+    if (std::fabs(eye.x) + std::fabs(eye.y) + std::fabs(eye.z) < 1e30) {
+      camera["position"] = array3(eye);
+      camera["look_at"] = array3(centre);
+    }
   }
   scene["camera"] = camera;
   scene["render"] = {{"max_depth", 8}, {"gamma", "srgb"}};
