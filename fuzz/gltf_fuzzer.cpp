@@ -1,8 +1,9 @@
 // libFuzzer target: the input is a glTF file, text or binary (.glb), rendered by a fixed small
 // scene; what its URIs name is looked for in a temporary folder that holds only it (data URIs and
 // a .glb's own buffer are what the seeds use), its cameras are read as a scene's camera would
-// take them, the file is rendered as a scene of its own (as `candela render m.gltf` does), and a
-// file with lights is rendered again by them ({"gltf": file} in "lights"). See docs/fuzzing.md.
+// take them (the first also following the file's first animation), the file is rendered as a scene
+// of its own (as `candela render m.gltf` does), and a file with lights is rendered again by them
+// ({"gltf": file} in "lights"). See docs/fuzzing.md.
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -47,6 +48,11 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
       candela::readGltfCamera(folder + "/m.gltf", "m.gltf", number);
     } catch (const candela::SceneError&) {
     }
+  }
+  // Its first camera following its first animation, as "gltf_animation" plays it.
+  try {
+    candela::readGltfCameraPoses(folder + "/m.gltf", "m.gltf", 0, "", 0, {0.0, 0.37, 1.0, 1e3});
+  } catch (const candela::SceneError&) {
   }
   // As a scene of its own (`candela render m.gltf`): framed by its bounds, or by its camera.
   std::string own;

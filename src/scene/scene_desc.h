@@ -158,8 +158,15 @@ struct CameraDesc {
   std::optional<float> focusDistance;
   LensDistortion distortion;  // OpenCV's distCoeffs (render/lens_distortion.h)
   CameraProjection projection = CameraProjection::Perspective;
-  // The glTF file the pose and field of view came from ("gltf", resolved), or empty.
-  std::string gltfFile;
+  // The glTF file the pose and field of view came from ("gltf", resolved), or empty; its name as
+  // written, and which of its cameras.
+  std::string gltfFile, gltfWritten;
+  uint32_t gltfCamera = 0;
+  // "gltf_animation": the file's animation (by name, or else by number) whose motion of the
+  // camera's node the frames follow (scene/read/camera_reader.h, followGltfAnimation).
+  bool gltfAnimated = false;
+  std::string gltfAnimationName;
+  int gltfAnimationNumber = 0;
 };
 
 // What an animation track can change (docs/scene-format.md, *Animation*). Which properties a

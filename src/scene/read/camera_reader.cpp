@@ -1,6 +1,7 @@
 // Reading the camera; see camera_reader.h.
 #include "scene/read/camera_reader.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -8,6 +9,7 @@
 #include <vector>
 
 #include "scene/along_up.h"
+#include "scene/animation.h"
 #include "scene/camera_resolve.h"
 #include "scene/read/gltf_camera.h"
 #include "scene/read/resolve_path.h"
@@ -121,6 +123,7 @@ void readGltfCamera(JsonObject& fields, const std::string& baseDir, CameraDesc& 
   const std::optional<JsonValue> gltf = fields.get("gltf");
   if (!gltf) {
     fields.reject("gltf_camera", "not used without \"gltf\"");
+    fields.reject("gltf_animation", "not used without \"gltf\"");
     return;
   }
   for (const char* key :
@@ -132,6 +135,19 @@ void readGltfCamera(JsonObject& fields, const std::string& baseDir, CameraDesc& 
   if (std::optional<JsonValue> which = fields.get("gltf_camera"))
     number = uint32_t(which->integer(0, kMaxUint32, "a camera's number, from 0"));
   camera.gltfFile = resolvePath(written, baseDir);
+  camera.gltfWritten = written;
+  camera.gltfCamera = number;
+  if (std::optional<JsonValue> animation = fields.get("gltf_animation")) {
+    camera.gltfAnimated = true;
+    if (animation->json().is_string()) {
+      camera.gltfAnimationName = animation->string();
+      if (camera.gltfAnimationName.empty())
+        animation->failExpected("an animation's name or number, from 0");
+    } else {
+      camera.gltfAnimationNumber =
+          int(animation->integer(0, 1u << 30, "an animation's name or number, from 0"));
+    }
+  }
   GltfCamera read;
   try {
     read = candela::readGltfCamera(camera.gltfFile, written, number);
@@ -212,7 +228,7 @@ CameraDesc readCamera(const JsonValue& value, RenderSettings& render, const std:
   JsonObject fields(
       value, {"width", "height", "fov", "intrinsics", "position", "rotation", "look_at", "up",
               "extrinsics", "spp", "rays", "aperture_radius", "focus_distance", "distortion",
-              "projection", "gltf", "gltf_camera", "view_width"});
+              "projection", "gltf", "gltf_camera", "view_width", "gltf_animation"});
   CameraDesc camera;
   if (std::optional<JsonValue> width = fields.get("width"))
     camera.width = static_cast<uint32_t>(width->integer(1, kMaxUint32, "a positive integer"));
@@ -254,6 +270,70 @@ CameraDesc readCamera(const JsonValue& value, RenderSettings& render, const std:
         "has nothing else to focus on)");
   fields.finish();
   return camera;
+}
+
+namespace {
+
+// The Euler angles (degrees; R = Rz Ry Rx, as eulerRotation) of rotation r.
+Vec3 eulerDegrees(const Mat3& r) {
+  const double kDegrees = 180.0 / 3.14159265358979323846;
+  const double sinY = std::max(-1.0, std::min(1.0, -double(r.m[2][0])));
+  const double y = std::asin(sinY);
+  double x, z;
+  if (std::fabs(sinY) < 0.999999) {
+    x = std::atan2(double(r.m[2][1]), double(r.m[2][2]));
+    z = std::atan2(double(r.m[1][0]), double(r.m[0][0]));
+  } else {  // gimbal lock: only x - z (or x + z) is defined; z = 0 takes it all
+    x = std::atan2(-double(r.m[1][2]), double(r.m[1][1]));
+    z = 0;
+  }
+  return Vec3(float(x * kDegrees), float(y * kDegrees), float(z * kDegrees));
+}
+
+}  // namespace
+
+void followGltfAnimation(SceneDesc& scene) {
+  CameraDesc& camera = scene.camera;
+  if (!camera.gltfAnimated) return;
+  const std::string where = "camera.gltf_animation";
+  if (!scene.animation)
+    failAt(scene.file, where,
+           "needs an \"animation\" block, whose frames and fps give the times at which the "
+           "file's animation is played");
+  AnimationDesc& animation = *scene.animation;
+  std::vector<double> times(animation.frames);
+  for (uint32_t k = 0; k < animation.frames; ++k) times[k] = double(k) / double(animation.fps);
+  std::vector<GltfCamera> poses;
+  try {
+    poses = readGltfCameraPoses(camera.gltfFile, camera.gltfWritten, camera.gltfCamera,
+                                camera.gltfAnimationName, camera.gltfAnimationNumber, times);
+  } catch (const SceneError& e) {
+    failAt(scene.file, where, e.what());
+  }
+  // The contract's camera looks down -z with +y up, as a glTF camera does, and OpenCV's axes
+  // flip y and z: the node's rotation is cameraToWorld with y and z negated.
+  AnimTrack position, rotation;
+  position.property = AnimProperty::Position;
+  rotation.property = AnimProperty::Rotation;
+  position.where = rotation.where = where;
+  for (uint32_t k = 0; k < animation.frames; ++k) {
+    const Mat3 cameraToWorld = poses[k].worldToCamera.transposed();
+    const Vec3 centre = -(cameraToWorld * poses[k].translation);
+    const Mat3 node = cameraToWorld * Mat3::diagonal(Vec3(1.0f, -1.0f, -1.0f));
+    position.keys.push_back({k, centre});
+    rotation.keys.push_back({k, eulerDegrees(node)});
+  }
+  camera.extrinsicsR.reset();
+  camera.extrinsicsT.reset();
+  camera.position = position.keys[0].value;
+  camera.rotation = rotation.keys[0].value;
+  animation.tracks.push_back(std::move(position));
+  animation.tracks.push_back(std::move(rotation));
+  for (uint32_t k = 0; k < animation.frames; ++k)
+    if (const std::optional<CameraProblem> problem = cameraProblem(
+            cameraAtFrame(camera, animation, k), samplesBeyondEdge(scene.render.filter)))
+      failAt(scene.file, where,
+             "at frame " + std::to_string(k) + " " + problem->path + " " + problem->message);
 }
 
 }  // namespace candela

@@ -27,4 +27,11 @@ float readFov(const JsonValue& value, CameraProjection projection);
 // ("gltf") is resolved against `baseDir`, the scene file's folder.
 CameraDesc readCamera(const JsonValue& value, RenderSettings& render, const std::string& baseDir);
 
+// A camera taken from a glTF file with "gltf_animation": its pose at each frame k of the scene's
+// animation is that of its node at time k / fps seconds of the file's animation, given as camera
+// tracks of position and rotation (one key a frame) in place of its fixed pose. Throws SceneError
+// "<file>: camera.gltf_animation: ..." for a scene without an animation block, an animation the
+// file does not have or cannot play, or a pose that makes no camera at some frame.
+void followGltfAnimation(SceneDesc& scene);
+
 }  // namespace candela

@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "core/mat3.h"
 #include "core/vec3.h"
@@ -23,5 +24,13 @@ struct GltfCamera {
 };
 
 GltfCamera readGltfCamera(const std::string& path, const std::string& label, uint32_t number);
+
+// The same camera at each of `times` (seconds) of one of the file's animations (the one named
+// `animationName`, or else the `animationNumber`-th; scene/read/gltf_animation.h), which moves
+// its node or the node's parents; throws as readGltfCamera, and for an animation the file does
+// not have or cannot play.
+std::vector<GltfCamera> readGltfCameraPoses(const std::string& path, const std::string& label,
+                                            uint32_t number, const std::string& animationName,
+                                            int animationNumber, const std::vector<double>& times);
 
 }  // namespace candela

@@ -38,7 +38,9 @@ class MeshBuilder {
     mesh_.holdsLights = !model_.lights.empty();
     if (!mesh_.colors.empty()) mesh_.colors.resize(mesh_.positions.size(), Vec3(1.0f));
     if (!model_.animations.empty())
-      warn("the file's animations are not played (the scene's keyframes move the object)");
+      warn(
+          "the file's animations do not move the object (the scene's keyframes do; a camera "
+          "taken from the file may follow one, with \"gltf_animation\")");
     return std::move(mesh_);
   }
 

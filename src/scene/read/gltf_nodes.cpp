@@ -37,35 +37,14 @@ GltfMatrix localTransform(const tinygltf::Node& node, const std::string& where) 
     std::copy(node.matrix.begin(), node.matrix.end(), m.begin());
     return m;
   }
-  GltfMatrix m = identity();
-  if (node.rotation.size() == 4) {
-    double x = node.rotation[0], y = node.rotation[1], z = node.rotation[2], w = node.rotation[3];
-    const double n = std::sqrt(x * x + y * y + z * z + w * w);
-    if (!(n > 0)) throw SceneError(where + ".rotation: expected a unit quaternion, got 0");
-    x /= n, y /= n, z /= n, w /= n;
-    m = {1 - 2 * (y * y + z * z),
-         2 * (x * y + z * w),
-         2 * (x * z - y * w),
-         0,
-         2 * (x * y - z * w),
-         1 - 2 * (x * x + z * z),
-         2 * (y * z + x * w),
-         0,
-         2 * (x * z + y * w),
-         2 * (y * z - x * w),
-         1 - 2 * (x * x + y * y),
-         0,
-         0,
-         0,
-         0,
-         1};
-  }
-  if (node.scale.size() == 3)
-    for (int c = 0; c < 3; ++c)
-      for (int r = 0; r < 3; ++r) m[4 * c + r] *= node.scale[size_t(c)];
-  if (node.translation.size() == 3)
-    for (int r = 0; r < 3; ++r) m[12 + r] = node.translation[size_t(r)];
-  return m;
+  std::array<double, 3> t{0, 0, 0}, scale{1, 1, 1};
+  std::array<double, 4> q{0, 0, 0, 1};
+  std::copy(node.translation.begin(), node.translation.end(), t.begin());
+  std::copy(node.rotation.begin(), node.rotation.end(), q.begin());
+  std::copy(node.scale.begin(), node.scale.end(), scale.begin());
+  if (node.rotation.size() == 4 && !(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3] > 0))
+    throw SceneError(where + ".rotation: expected a unit quaternion, got 0");
+  return gltfTrs(t, q, scale);
 }
 
 // The nodes the file's scene places, outermost first.
@@ -89,9 +68,37 @@ std::vector<int> rootNodes(const tinygltf::Model& model, const std::string& labe
 
 }  // namespace
 
+GltfMatrix gltfTrs(const std::array<double, 3>& t, std::array<double, 4> q,
+                   const std::array<double, 3>& s) {
+  const double n = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+  if (n > 0)
+    for (double& c : q) c /= n;
+  const double x = q[0], y = q[1], z = q[2], w = q[3];
+  GltfMatrix m = {1 - 2 * (y * y + z * z),
+                  2 * (x * y + z * w),
+                  2 * (x * z - y * w),
+                  0,
+                  2 * (x * y - z * w),
+                  1 - 2 * (x * x + z * z),
+                  2 * (y * z + x * w),
+                  0,
+                  2 * (x * z + y * w),
+                  2 * (y * z - x * w),
+                  1 - 2 * (x * x + y * y),
+                  0,
+                  t[0],
+                  t[1],
+                  t[2],
+                  1};
+  for (int c = 0; c < 3; ++c)
+    for (int r = 0; r < 3; ++r) m[size_t(4 * c + r)] *= s[size_t(c)];
+  return m;
+}
+
 void forEachPlacedNode(const tinygltf::Model& model, const std::string& label,
                        const std::function<void(int index, const tinygltf::Node& node,
-                                                const GltfMatrix& world)>& visit) {
+                                                const GltfMatrix& world)>& visit,
+                       const GltfLocalOverride& moved) {
   const std::vector<int> roots = rootNodes(model, label);
   std::vector<bool> reached(model.nodes.size(), false);
   std::vector<std::pair<int, GltfMatrix>> pending;
@@ -108,7 +115,9 @@ void forEachPlacedNode(const tinygltf::Model& model, const std::string& label,
                        " is reached twice (a node may have one parent and appear once)");
     reached[size_t(index)] = true;
     const tinygltf::Node& node = model.nodes[size_t(index)];
-    const GltfMatrix world = multiply(parent, localTransform(node, label + ": " + where));
+    GltfMatrix local;
+    if (!(moved && moved(index, node, &local))) local = localTransform(node, label + ": " + where);
+    const GltfMatrix world = multiply(parent, local);
     visit(index, node, world);
     for (auto c = node.children.rbegin(); c != node.children.rend(); ++c)
       pending.push_back({*c, world});

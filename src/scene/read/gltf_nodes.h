@@ -15,8 +15,18 @@ namespace candela {
 
 using GltfMatrix = std::array<double, 16>;  // column-major, as glTF writes it
 
+// A node's own transform in place of its matrix or T R S (an animation's, at some time): true
+// where it gives one.
+using GltfLocalOverride =
+    std::function<bool(int index, const tinygltf::Node& node, GltfMatrix* local)>;
+
 void forEachPlacedNode(const tinygltf::Model& model, const std::string& label,
                        const std::function<void(int index, const tinygltf::Node& node,
-                                                const GltfMatrix& world)>& visit);
+                                                const GltfMatrix& world)>& visit,
+                       const GltfLocalOverride& moved = {});
+
+// T * R * S as glTF composes a node's transform (the quaternion [x, y, z, w] normalized).
+GltfMatrix gltfTrs(const std::array<double, 3>& t, std::array<double, 4> q,
+                   const std::array<double, 3>& s);
 
 }  // namespace candela

@@ -203,6 +203,7 @@ SceneDesc parseSceneText(const std::string& text, const std::string& fileLabel,
   // camera at every frame; a still camera is checked here.
   if (std::optional<JsonValue> animation = top.get("animation"))
     scene.animation = readAnimation(*animation, scene);
+  followGltfAnimation(scene);
   const bool cameraAnimated =
       scene.animation && std::any_of(scene.animation->tracks.begin(), scene.animation->tracks.end(),
                                      [](const AnimTrack& t) { return t.target == AnimTarget::Camera; });

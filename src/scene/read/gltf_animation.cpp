@@ -1,0 +1,169 @@
+// Sampling a glTF animation's node channels; see gltf_animation.h.
+#include "scene/read/gltf_animation.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "scene/read/gltf_accessor.h"
+#include "scene/scene_error.h"
+
+namespace candela {
+namespace {
+
+using Key = std::array<double, 4>;
+
+Key lerp(const Key& a, const Key& b, double u, int n) {
+  Key r{};
+  for (int c = 0; c < n; ++c) r[size_t(c)] = a[size_t(c)] + u * (b[size_t(c)] - a[size_t(c)]);
+  return r;
+}
+
+Key normalized(Key q) {
+  const double n = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+  if (n > 0)
+    for (double& c : q) c /= n;
+  return q;
+}
+
+// Spherical interpolation of unit quaternions along the shorter arc.
+Key slerp(const Key& a, Key b, double u) {
+  double d = a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3];
+  if (d < 0) {
+    for (double& c : b) c = -c;
+    d = -d;
+  }
+  if (d > 0.9995) return normalized(lerp(a, b, u, 4));
+  const double angle = std::acos(std::min(d, 1.0));
+  const double wa = std::sin((1 - u) * angle) / std::sin(angle),
+               wb = std::sin(u * angle) / std::sin(angle);
+  Key r{};
+  for (size_t c = 0; c < 4; ++c) r[c] = wa * a[c] + wb * b[c];
+  return r;
+}
+
+}  // namespace
+
+std::array<double, 4> GltfAnimation::Channel::at(double t) const {
+  const size_t n = times.size();
+  const size_t stride = size_t(components) * (mode == Mode::Cubic ? 3 : 1);
+  const size_t offset = mode == Mode::Cubic ? size_t(components) : 0;  // past the in-tangent
+  const auto key = [&](size_t k, size_t part = 0) {
+    Key v{};
+    for (int c = 0; c < components; ++c)
+      v[size_t(c)] = values[k * stride + part * size_t(components) + size_t(c)];
+    return v;
+  };
+  const bool rotation = components == 4;
+  if (t <= times[0] || n == 1) return key(0, offset / size_t(components));
+  if (t >= times[n - 1]) return key(n - 1, offset / size_t(components));
+  const size_t k =
+      size_t(std::upper_bound(times.begin(), times.end(), float(t)) - times.begin()) - 1;
+  const double t0 = times[k], t1 = times[k + 1], d = t1 - t0, u = (t - t0) / d;
+  switch (mode) {
+    case Mode::Step:
+      return key(k);
+    case Mode::Linear:
+      return rotation ? slerp(key(k), key(k + 1), u) : lerp(key(k), key(k + 1), u, 3);
+    case Mode::Cubic: {
+      const double u2 = u * u, u3 = u2 * u;
+      const Key p0 = key(k, 1), m0 = key(k, 2), p1 = key(k + 1, 1), m1 = key(k + 1, 0);
+      Key r{};
+      for (size_t c = 0; c < size_t(components); ++c)
+        r[c] = (2 * u3 - 3 * u2 + 1) * p0[c] + (u3 - 2 * u2 + u) * d * m0[c] +
+               (-2 * u3 + 3 * u2) * p1[c] + (u3 - u2) * d * m1[c];
+      return rotation ? normalized(r) : r;
+    }
+  }
+  return key(k);
+}
+
+GltfAnimation::GltfAnimation(const tinygltf::Model& model, size_t index, const std::string& label) {
+  const tinygltf::Animation& animation = model.animations[index];
+  const std::string at = label + ": animations[" + std::to_string(index) + "]";
+  channels_.reserve(animation.channels.size());
+  std::vector<std::pair<int, int>> targets;  // (node, 0 translation | 1 rotation | 2 scale)
+  for (size_t i = 0; i < animation.channels.size(); ++i) {
+    const tinygltf::AnimationChannel& channel = animation.channels[i];
+    const std::string where = at + ".channels[" + std::to_string(i) + "]";
+    const int path = channel.target_path == "translation" ? 0
+                     : channel.target_path == "rotation"  ? 1
+                     : channel.target_path == "scale"     ? 2
+                                                          : -1;
+    if (path < 0) continue;  // morph weights: not read
+    if (channel.target_node < 0 || size_t(channel.target_node) >= model.nodes.size())
+      throw SceneError(where + ".target.node: node " + std::to_string(channel.target_node) +
+                       " does not exist (" + std::to_string(model.nodes.size()) + " nodes)");
+    if (channel.sampler < 0 || size_t(channel.sampler) >= animation.samplers.size())
+      throw SceneError(where + ".sampler: sampler " + std::to_string(channel.sampler) +
+                       " does not exist (" + std::to_string(animation.samplers.size()) +
+                       " samplers)");
+    const tinygltf::AnimationSampler& sampler = animation.samplers[size_t(channel.sampler)];
+    const std::string samplerAt = at + ".samplers[" + std::to_string(channel.sampler) + "]";
+    Channel c;
+    c.components = path == 1 ? 4 : 3;
+    c.mode = sampler.interpolation == "STEP"          ? Channel::Mode::Step
+             : sampler.interpolation == "CUBICSPLINE" ? Channel::Mode::Cubic
+                                                      : Channel::Mode::Linear;
+    if (sampler.interpolation != "STEP" && sampler.interpolation != "CUBICSPLINE" &&
+        sampler.interpolation != "LINEAR")
+      throw SceneError(samplerAt + ".interpolation: expected LINEAR, STEP or CUBICSPLINE, got \"" +
+                       sampler.interpolation + "\"");
+    c.times = readFloatAccessor(model, sampler.input, 1, false, samplerAt + ".input");
+    if (c.times.empty()) throw SceneError(samplerAt + ".input: expected at least one key time");
+    for (size_t k = 1; k < c.times.size(); ++k)
+      if (!(c.times[k] > c.times[k - 1]))
+        throw SceneError(samplerAt + ".input: key times must increase, got " +
+                         formatNumber(c.times[k]) + " after " + formatNumber(c.times[k - 1]));
+    c.values = readFloatAccessor(model, sampler.output, c.components, false, samplerAt + ".output");
+    const size_t expected =
+        c.times.size() * size_t(c.components) * (c.mode == Channel::Mode::Cubic ? 3 : 1);
+    if (c.values.size() != expected)
+      throw SceneError(samplerAt + ".output: expected " +
+                       std::to_string(expected / size_t(c.components)) + " elements for " +
+                       std::to_string(c.times.size()) + " key times, got " +
+                       std::to_string(c.values.size() / size_t(c.components)));
+    channels_.push_back(std::move(c));
+    targets.push_back({channel.target_node, path});
+  }
+  for (size_t i = 0; i < channels_.size(); ++i)
+    nodes_[targets[i].first][size_t(targets[i].second)] = &channels_[i];
+}
+
+bool GltfAnimation::localAt(int index, const tinygltf::Node& node, double t,
+                            GltfMatrix* local) const {
+  const auto found = nodes_.find(index);
+  if (found == nodes_.end() || node.matrix.size() == 16) return false;  // glTF: TRS nodes only
+  std::array<double, 3> translation{0, 0, 0}, scale{1, 1, 1};
+  std::array<double, 4> rotation{0, 0, 0, 1};
+  std::copy(node.translation.begin(), node.translation.end(), translation.begin());
+  std::copy(node.rotation.begin(), node.rotation.end(), rotation.begin());
+  std::copy(node.scale.begin(), node.scale.end(), scale.begin());
+  const std::array<const Channel*, 3>& channels = found->second;
+  if (channels[0]) {
+    const Key v = channels[0]->at(t);
+    std::copy(v.begin(), v.begin() + 3, translation.begin());
+  }
+  if (channels[1]) rotation = channels[1]->at(t);
+  if (channels[2]) {
+    const Key v = channels[2]->at(t);
+    std::copy(v.begin(), v.begin() + 3, scale.begin());
+  }
+  *local = gltfTrs(translation, rotation, scale);
+  return true;
+}
+
+size_t findGltfAnimation(const tinygltf::Model& model, const std::string& label,
+                         const std::string& name, int number) {
+  if (!name.empty()) {
+    for (size_t i = 0; i < model.animations.size(); ++i)
+      if (model.animations[i].name == name) return i;
+    throw SceneError(label + ": no animation is named \"" + name + "\"");
+  }
+  if (number < 0 || size_t(number) >= model.animations.size())
+    throw SceneError(label + ": animation " + std::to_string(number) +
+                     " is asked for, but the file has " + std::to_string(model.animations.size()) +
+                     (model.animations.size() == 1 ? " animation" : " animations"));
+  return size_t(number);
+}
+
+}  // namespace candela
