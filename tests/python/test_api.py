@@ -295,9 +295,9 @@ def test_devices_name_the_cpu_and_say_where_auto_renders():
     assert [r["backend"] for r in reports if r["auto"]] == ["cuda" if gpu["usable"] else "cpu"]
 
 
-def test_gltf_meshes_load_with_their_warnings_and_render(tmp_path, scene_dict):
+def _triangle_gltf(**more):
+    """A glTF document of one triangle (its buffer a data URI), with `more` members."""
     import base64
-    import json
     import struct
     data = struct.pack("9f", -1, -1, 0, 1, -1, 0, 0, 1, 0)
     gltf = {"asset": {"version": "2.0"},
@@ -306,8 +306,16 @@ def test_gltf_meshes_load_with_their_warnings_and_render(tmp_path, scene_dict):
             "bufferViews": [{"buffer": 0, "byteLength": len(data)}],
             "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3"}],
             "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
-            "nodes": [{"mesh": 0}, {"camera": 0}],
-            "cameras": [{"type": "perspective", "perspective": {"yfov": 0.8, "znear": 0.1}}]}
+            "nodes": [{"mesh": 0}]}
+    gltf.update(more)
+    return gltf
+
+
+def test_gltf_meshes_load_with_their_warnings_and_render(tmp_path, scene_dict):
+    import json
+    gltf = _triangle_gltf(
+        nodes=[{"mesh": 0}, {"camera": 0}],
+        cameras=[{"type": "perspective", "perspective": {"yfov": 0.8, "znear": 0.1}}])
     (tmp_path / "m.gltf").write_text(json.dumps(gltf))
     scene_dict["objects"] = [{"file": "m.gltf"}]
     expected = ("<dict>: objects[0].file: m.gltf: the file's cameras are not used "
@@ -320,17 +328,8 @@ def test_gltf_meshes_load_with_their_warnings_and_render(tmp_path, scene_dict):
 
 
 def test_a_gltf_file_is_a_scene_of_its_own(tmp_path):
-    import base64
     import json
-    import struct
-    data = struct.pack("9f", -1, -1, 0, 1, -1, 0, 0, 1, 0)
-    gltf = {"asset": {"version": "2.0"},
-            "buffers": [{"byteLength": len(data), "uri": "data:application/octet-stream;base64,"
-                         + base64.b64encode(data).decode()}],
-            "bufferViews": [{"buffer": 0, "byteLength": len(data)}],
-            "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3"}],
-            "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
-            "nodes": [{"mesh": 0}]}
+    gltf = _triangle_gltf()
     (tmp_path / "tri.gltf").write_text(json.dumps(gltf))
     scene = candela.Scene.load(tmp_path / "tri.gltf")
     img = scene.render(spp=2, backend="cpu")
