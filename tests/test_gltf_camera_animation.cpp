@@ -5,12 +5,15 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
 #include <string>
 
 #include "gltf_test_util.h"
 #include "render_test_util.h"
 #include "scene/animation.h"
 #include "scene/camera_resolve.h"
+#include "scene/read/gltf_animation.h"
+#include "scene/read/gltf_file.h"
 #include "scene/read/scene_loader.h"
 #include "temp_dir.h"
 
@@ -107,6 +110,21 @@ TEST(GltfCameraAnimation, StepAndCubicSplineSamplersAsGltfDefinesThem) {
     const double x = (u3 - 2 * u2 + u) * 4 + (-2 * u3 + 3 * u2) * 2 + (u3 - u2) * -4;
     expectPose(cubic, frame, 1 + x, 2, 8, 0, -1);
   }
+}
+
+// A time just below the last key, which rounds onto it in single precision, is still between the
+// last two keys: compared in float it was taken for the last, whose next key (past the end of the
+// sampler's values) was read, which AddressSanitizer reports where this runs under it.
+TEST(GltfCameraAnimation, ATimeJustBeforeTheLastKeyStaysBetweenKeys) {
+  TempDir dir;
+  const std::unique_ptr<candela::GltfFile> file =
+      readGltfFile(dir.write("cam.gltf", animatedCamera().gltf()), "cam.gltf");
+  const GltfAnimation fly(file->model, 0, "cam.gltf");
+  GltfMatrix local;
+  ASSERT_TRUE(fly.localAt(2, file->model.nodes[2], 1.0 - 1e-9, &local));
+  EXPECT_NEAR(local[12], 2.0, 1e-6);
+  EXPECT_NEAR(local[14], 5.0, 1e-6);
+  EXPECT_FALSE(fly.localAt(1, file->model.nodes[1], 0.5, &local));  // a node it does not move
 }
 
 TEST(GltfCameraAnimation, RefusesWhatItCannotPlay) {

@@ -56,8 +56,10 @@ std::array<double, 4> GltfAnimation::Channel::at(double t) const {
   const bool rotation = components == 4;
   if (t <= times[0] || n == 1) return key(0, offset / size_t(components));
   if (t >= times[n - 1]) return key(n - 1, offset / size_t(components));
-  const size_t k =
-      size_t(std::upper_bound(times.begin(), times.end(), float(t)) - times.begin()) - 1;
+  // Compared in double: t just below the last key must not round onto it (and past the end).
+  const auto after = std::upper_bound(times.begin(), times.end(), t,
+                                      [](double v, float time) { return v < double(time); });
+  const size_t k = size_t(after - times.begin()) - 1;
   const double t0 = times[k], t1 = times[k + 1], d = t1 - t0, u = (t - t0) / d;
   switch (mode) {
     case Mode::Step:
