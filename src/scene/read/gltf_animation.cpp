@@ -82,7 +82,6 @@ std::array<double, 4> GltfAnimation::Channel::at(double t) const {
 GltfAnimation::GltfAnimation(const tinygltf::Model& model, size_t index, const std::string& label) {
   const tinygltf::Animation& animation = model.animations[index];
   const std::string at = label + ": animations[" + std::to_string(index) + "]";
-  channels_.reserve(animation.channels.size());
   std::vector<std::pair<int, int>> targets;  // (node, 0 translation | 1 rotation | 2 scale)
   for (size_t i = 0; i < animation.channels.size(); ++i) {
     const tinygltf::AnimationChannel& channel = animation.channels[i];
@@ -127,8 +126,10 @@ GltfAnimation::GltfAnimation(const tinygltf::Model& model, size_t index, const s
     channels_.push_back(std::move(c));
     targets.push_back({channel.target_node, path});
   }
-  for (size_t i = 0; i < channels_.size(); ++i)
-    nodes_[targets[i].first][size_t(targets[i].second)] = &channels_[i];
+  for (size_t i = 0; i < channels_.size(); ++i) {
+    const auto [node, fresh] = nodes_.try_emplace(targets[i].first, std::array<int, 3>{-1, -1, -1});
+    node->second[size_t(targets[i].second)] = int(i);
+  }
 }
 
 bool GltfAnimation::localAt(int index, const tinygltf::Node& node, double t,
@@ -140,14 +141,14 @@ bool GltfAnimation::localAt(int index, const tinygltf::Node& node, double t,
   std::copy(node.translation.begin(), node.translation.end(), translation.begin());
   std::copy(node.rotation.begin(), node.rotation.end(), rotation.begin());
   std::copy(node.scale.begin(), node.scale.end(), scale.begin());
-  const std::array<const Channel*, 3>& channels = found->second;
-  if (channels[0]) {
-    const Key v = channels[0]->at(t);
+  const std::array<int, 3>& channels = found->second;
+  if (channels[0] >= 0) {
+    const Key v = channels_[size_t(channels[0])].at(t);
     std::copy(v.begin(), v.begin() + 3, translation.begin());
   }
-  if (channels[1]) rotation = channels[1]->at(t);
-  if (channels[2]) {
-    const Key v = channels[2]->at(t);
+  if (channels[1] >= 0) rotation = channels_[size_t(channels[1])].at(t);
+  if (channels[2] >= 0) {
+    const Key v = channels_[size_t(channels[2])].at(t);
     std::copy(v.begin(), v.begin() + 3, scale.begin());
   }
   *local = gltfTrs(translation, rotation, scale);

@@ -31,7 +31,8 @@ class GltfAnimation {
     int components = 3;
     std::array<double, 4> at(double t) const;
   };
-  std::map<int, std::array<const Channel*, 3>> nodes_;  // node -> translation, rotation, scale
+  // node -> its translation's, rotation's and scale's channel in channels_ (-1: none)
+  std::map<int, std::array<int, 3>> nodes_;
   std::vector<Channel> channels_;
 };
 
