@@ -18,10 +18,11 @@ class SceneError : public std::runtime_error {
   explicit SceneError(const std::string& message) : std::runtime_error(message) {}
 };
 
-// A number as messages show it: the shortest of %g, e.g. "1e-45", "0.5".
-inline std::string formatNumber(float value) {
+// A number as messages show it: the shortest of %g, e.g. "1e-45", "0.5", "1e+300" (a float's
+// value exactly as a double's).
+inline std::string formatNumber(double value) {
   char text[32];
-  std::snprintf(text, sizeof text, "%g", static_cast<double>(value));
+  std::snprintf(text, sizeof text, "%g", value);
   return text;
 }
 

@@ -2,7 +2,6 @@
 #include "scene/read/gltf_lights.h"
 
 #include <cmath>
-#include <cstdio>
 #include <memory>
 
 #include "scene/dvec3.h"
@@ -17,17 +16,11 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr double kDegreesPerRadian = 180.0 / kPi;
 constexpr double kLumensPerWatt = 683.0;
 
-// A number as messages show it, in double: "0.5", "1e+300".
-std::string shown(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", value);
-  return text;
-}
-
 // A number as a float, or the error "<where>: expected <what>, got <value>".
 float finiteFloat(double value, const std::string& where, const std::string& what) {
   const float f = float(value);
-  if (!std::isfinite(f)) throw SceneError(where + ": expected " + what + ", got " + shown(value));
+  if (!std::isfinite(f))
+    throw SceneError(where + ": expected " + what + ", got " + formatNumber(value));
   return f;
 }
 
@@ -41,7 +34,7 @@ int lightOfNode(const tinygltf::Node& node, size_t lightCount, const std::string
     throw SceneError(at + ".light: expected the index of a light");
   const double index = extension.Get("light").GetNumberAsDouble();
   if (!(index >= 0 && index < double(lightCount) && index == std::floor(index)))
-    throw SceneError(at + ".light: light " + shown(index) + " does not exist (" +
+    throw SceneError(at + ".light: light " + formatNumber(index) + " does not exist (" +
                      std::to_string(lightCount) + " lights)");
   return int(index);
 }
@@ -56,7 +49,7 @@ LightDesc lightOf(const tinygltf::Light& l, const std::string& where) {
                      l.type + "\"");
   if (!(l.intensity >= 0))
     throw SceneError(where + ".intensity: expected a non-negative number, got " +
-                     shown(l.intensity));
+                     formatNumber(l.intensity));
   const double watts = l.type == "directional" ? l.intensity / kLumensPerWatt
                                                : 4.0 * kPi * l.intensity / kLumensPerWatt;
   light.intensity = finiteFloat(watts, where + ".intensity", "a number within single precision");
@@ -66,7 +59,7 @@ LightDesc lightOf(const tinygltf::Light& l, const std::string& where) {
     for (int c = 0; c < 3; ++c) {
       if (!(l.color[size_t(c)] >= 0))
         throw SceneError(where + ".color: expected non-negative numbers, got " +
-                         shown(l.color[size_t(c)]));
+                         formatNumber(l.color[size_t(c)]));
       light.color[c] = finiteFloat(l.color[size_t(c)], where + ".color", "finite numbers");
     }
   }
@@ -74,10 +67,10 @@ LightDesc lightOf(const tinygltf::Light& l, const std::string& where) {
     const double inner = l.spot.innerConeAngle, outer = l.spot.outerConeAngle;
     if (!(outer > 0 && outer <= kPi / 2))
       throw SceneError(where + ".spot.outerConeAngle: expected an angle above 0, up to pi/2, got " +
-                       shown(outer));
+                       formatNumber(outer));
     if (!(inner >= 0 && inner < outer))
       throw SceneError(where + ".spot.innerConeAngle: expected an angle from 0 to below the " +
-                       "outerConeAngle, " + shown(outer) + ", got " + shown(inner));
+                       "outerConeAngle, " + formatNumber(outer) + ", got " + formatNumber(inner));
     light.spot = SpotDesc{float(outer * kDegreesPerRadian), float(inner * kDegreesPerRadian)};
   }
   return light;

@@ -148,10 +148,8 @@ TextureRef GltfMaterialReader::texture(const TextureSlot& slot, TextureUse use,
     const double rotation = extensionNumber(transform, "rotation", 0.0, tw);
     const double set = extensionNumber(transform, "texCoord", texCoord, tw);
     if (!(set >= 0.0 && set < 1e6 && set == std::floor(set))) {
-      char shown[32];
-      std::snprintf(shown, sizeof shown, "%g", set);
       throw SceneError(tw + ".texCoord: expected the number of a texture coordinate set, got " +
-                       shown);
+                       formatNumber(set));
     }
     texCoord = int(set);
     const double c = std::cos(rotation), s = std::sin(rotation);

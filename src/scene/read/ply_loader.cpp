@@ -30,13 +30,6 @@ bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; }
 
 bool isInteger(PlyType t) { return t != PlyType::Float32 && t != PlyType::Float64; }
 
-// A number for a message, as printf's %g writes it.
-std::string shownNumber(double v) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", v);
-  return text;
-}
-
 // The body's values one after another, each as a double (which holds every PLY type exactly),
 // with the element and number being read for messages.
 class Body {
@@ -261,9 +254,9 @@ void readVertices(Body& body, const PlyElement& element, const VertexLayout& lay
       }
       values[k] = body.value(p.type);
       if (!std::isfinite(values[k]))
-        body.fail(p.name + " is " + shownNumber(values[k]) + "; expected a finite number");
+        body.fail(p.name + " is " + formatNumber(values[k]) + "; expected a finite number");
       if (std::fabs(values[k]) > FLT_MAX)
-        body.fail(p.name + " is " + shownNumber(values[k]) + ", beyond single precision");
+        body.fail(p.name + " is " + formatNumber(values[k]) + ", beyond single precision");
     }
     const auto at = [&](int k) { return float(values[size_t(k)]); };
     mesh.positions.push_back(
@@ -279,8 +272,8 @@ void readVertices(Body& body, const PlyElement& element, const VertexLayout& lay
         const PlyProperty& p = element.properties[size_t(layout.colour[c])];
         const double v = values[size_t(layout.colour[c])] / colourScale(p.type);
         if (!(v >= 0.0 && v <= 1.0))
-          body.fail(p.name + " is " + shownNumber(values[size_t(layout.colour[c])]) +
-                    "; expected a colour from 0 to " + shownNumber(colourScale(p.type)));
+          body.fail(p.name + " is " + formatNumber(values[size_t(layout.colour[c])]) +
+                    "; expected a colour from 0 to " + formatNumber(colourScale(p.type)));
         linear[c] = srgbToLinearValue(float(v));
       }
       mesh.colors.push_back(linear);
@@ -310,7 +303,7 @@ void readFaces(Body& body, const PlyElement& element, size_t list, uint64_t vert
       for (uint64_t c = 0; c < n; ++c) {
         const double index = body.value(p.type);
         if (!(index >= 0 && index < double(vertexCount) && index == std::floor(index)))
-          body.fail("vertex index " + shownNumber(index) + " out of range (" +
+          body.fail("vertex index " + formatNumber(index) + " out of range (" +
                     std::to_string(vertexCount) + " vertices)");
         polygons.corners.push_back(uint32_t(index));
       }

@@ -51,10 +51,9 @@ double maxAbs(const Vec3& v) {
 
 void failBeyond(const SceneDesc& scene, const std::string& where, const std::string& at,
                 const std::string& what, double reach) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", reach);
   failAt(scene.file, where,
-         at + what + " reaches " + text + " from the origin; expected geometry within " +
+         at + what + " reaches " + formatNumber(reach) +
+             " from the origin; expected geometry within " +
              formatNumber(float(kMaxWorldCoordinate)) +
              " (single precision cannot intersect it further out)");
 }
