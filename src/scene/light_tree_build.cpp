@@ -6,10 +6,10 @@
 #include <cmath>
 #include <limits>
 
+#include "core/constants.h"
+
 namespace candela {
 namespace {
-
-constexpr double kPiDouble = 3.14159265358979323846;
 
 struct Direction {
   double x = 0, y = 0, z = 1;

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "core/constants.h"
 #include "scene/along_up.h"
 #include "scene/animation.h"
 #include "scene/camera_resolve.h"
@@ -276,7 +277,7 @@ namespace {
 
 // The Euler angles (degrees; R = Rz Ry Rx, as eulerRotation) of rotation r.
 Vec3 eulerDegrees(const Mat3& r) {
-  const double kDegrees = 180.0 / 3.14159265358979323846;
+  const double kDegrees = 180.0 / kPiDouble;
   const double sinY = std::max(-1.0, std::min(1.0, -double(r.m[2][0])));
   const double y = std::asin(sinY);
   double x, z;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <memory>
 
+#include "core/constants.h"
 #include "scene/dvec3.h"
 #include "scene/read/gltf_animation.h"
 #include "scene/read/gltf_file.h"
@@ -13,7 +14,7 @@
 namespace candela {
 namespace {
 
-constexpr double kDegreesPerRadian = 57.295779513082320876798;
+constexpr double kDegreesPerRadian = 180.0 / kPiDouble;
 
 // The `number`-th camera that the file's scene places, its nodes moved by `animation` at time t
 // where one is given.

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <memory>
 
+#include "core/constants.h"
 #include "scene/dvec3.h"
 #include "scene/read/gltf_file.h"
 #include "scene/read/gltf_nodes.h"
@@ -12,8 +13,7 @@
 namespace candela {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kDegreesPerRadian = 180.0 / kPi;
+constexpr double kDegreesPerRadian = 180.0 / kPiDouble;
 constexpr double kLumensPerWatt = 683.0;
 
 // A number as a float, or the error "<where>: expected <what>, got <value>".
@@ -51,7 +51,7 @@ LightDesc lightOf(const tinygltf::Light& l, const std::string& where) {
     throw SceneError(where + ".intensity: expected a non-negative number, got " +
                      formatNumber(l.intensity));
   const double watts = l.type == "directional" ? l.intensity / kLumensPerWatt
-                                               : 4.0 * kPi * l.intensity / kLumensPerWatt;
+                                               : 4.0 * kPiDouble * l.intensity / kLumensPerWatt;
   light.intensity = finiteFloat(watts, where + ".intensity", "a number within single precision");
   if (!l.color.empty()) {
     if (l.color.size() != 3)
@@ -65,7 +65,7 @@ LightDesc lightOf(const tinygltf::Light& l, const std::string& where) {
   }
   if (l.type == "spot") {
     const double inner = l.spot.innerConeAngle, outer = l.spot.outerConeAngle;
-    if (!(outer > 0 && outer <= kPi / 2))
+    if (!(outer > 0 && outer <= kPiDouble / 2))
       throw SceneError(where + ".spot.outerConeAngle: expected an angle above 0, up to pi/2, got " +
                        formatNumber(outer));
     if (!(inner >= 0 && inner < outer))

@@ -8,6 +8,7 @@
 #include <optional>
 #include <vector>
 
+#include "core/constants.h"
 #include "core/texture.h"
 #include "image/image_io.h"
 #include "scene/content_hash.h"
@@ -188,8 +189,8 @@ TextureObject readTextureObject(const JsonValue& value, TextureLoader& textures,
     ref.offsetV = e[1].number("a finite number");
   }
   if (std::optional<JsonValue> rotation = fields.get("rotation")) {
-    const double radians = std::fmod(double(rotation->number("an angle in degrees")), 360.0) *
-                           (3.14159265358979323846 / 180.0);
+    const double radians =
+        std::fmod(double(rotation->number("an angle in degrees")), 360.0) * (kPiDouble / 180.0);
     ref.rotationCos = float(std::cos(radians));
     ref.rotationSin = float(std::sin(radians));
   }
