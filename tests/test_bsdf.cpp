@@ -65,6 +65,14 @@ Material diffuse() {
   return m;
 }
 
+// m under a clear coat (render/bsdf_coat.h).
+Material coated(Material m, float weight, float roughness) {
+  m.coatWeight = weight;
+  m.coatRoughness = roughness;
+  prepareMaterial(&m);
+  return m;
+}
+
 struct Case {
   std::string name;
   Material material;
@@ -94,6 +102,12 @@ std::vector<Case> cases() {
       {"anisotropic glass 0.5 outside", anisotropic(glass(0.5f, 1.5f), 0.6f), steep, kUp,
        Vec3(0.0f, 1.0f, 0.0f)},
       {"anisotropic glass 0.6 inside", anisotropic(glass(0.6f, 1.5f), 0.9f), -steep},
+      {"smooth coat over diffuse", coated(diffuse(), 1.0f, 0.0f), steep},
+      {"rough coat 0.3 over rough gold", coated(conductor(0.5f, true), 0.8f, 0.3f), steep},
+      {"rough coat 0.2 over a mirror, grazing", coated(conductor(0.0f, false), 1.0f, 0.2f),
+       grazing},
+      {"half a rough coat over rough plastic", coated(plastic(0.4f, Vec3(0.5f)), 0.5f, 0.6f),
+       steep},
   };
 }
 
@@ -228,6 +242,8 @@ TEST(Bsdf, WhiteFurnaceNeverGainsEnergy) {
       EXPECT_LE(albedo(plastic(r, Vec3(1.0f)), wo, kSamples).x, 1.0f + 0.01f);
       EXPECT_LE(albedo(anisotropic(conductor(r, false), 0.8f), wo, kSamples).x, 1.0f + 1e-4f);
       EXPECT_LE(albedo(anisotropic(glass(r, 1.5f), 0.8f), wo, kSamples).x, 1.0f + 0.01f);
+      EXPECT_LE(albedo(coated(white, 1.0f, r), wo, kSamples).x, 1.0f + 1e-3f);
+      EXPECT_LE(albedo(coated(conductor(0.0f, false), 1.0f, r), wo, kSamples).x, 1.0f + 1e-3f);
     }
   }
 }

@@ -165,6 +165,33 @@ TEST(CudaBackend, MatchesCpuThroughAnOrthographicCameraOnVertexColours) {
   EXPECT_EQ(cpu.rays.camera, gpu.rays.camera);
 }
 
+// Clear coats (render/bsdf_coat.h), smooth and rough, over diffuse, a rough metal, a mirror and
+// a plastic, lit by a lamp, a sphere light and the sky: on the device as on the CPU.
+TEST(CudaBackend, MatchesCpuOnCoatedMaterials) {
+  REQUIRE_GPU();
+  const SceneData data = test::loadTestScene(R"({
+    "camera": {"width": 48, "height": 36, "fov": 50, "position": [0, 1.5, 6], "look_at": [0, 0.5, 0],
+               "spp": 16},
+    "render": {"max_depth": 6, "seed": 3},
+    "environment": {"color": [0.2, 0.25, 0.3]},
+    "spheres": [
+      {"position": [0, -1000, 0], "radius": 1000,
+       "material": {"type": "diffuse", "color": 0.6, "coat": 0.5, "coat_roughness": 0.3}},
+      {"position": [-1.2, 0.5, 0], "radius": 0.5,
+       "material": {"type": "conductor", "metal": "Cu", "roughness": 0.4, "coat": 1}},
+      {"position": [0, 0.5, -0.6], "radius": 0.5,
+       "material": {"type": "mirror", "coat": 0.8, "coat_roughness": 0.2, "coat_ior": 1.6}},
+      {"position": [1.2, 0.5, 0], "radius": 0.5,
+       "material": {"type": "plastic", "color": [0.2, 0.3, 0.8], "roughness": 0.3, "coat": 1}}],
+    "lights": [
+      {"position": [2, 4, 3], "intensity": 800},
+      {"type": "sphere", "position": [-3, 3, 1], "radius": 0.4, "intensity": 300}]})");
+  const RenderResult cpu = renderCpu(data.view(), RenderOptions{});
+  const RenderResult gpu = renderCuda(data);
+  EXPECT_LT(test::relMseAgainst(cpu.image.pixels, gpu.image.pixels), 1e-4);
+  EXPECT_EQ(cpu.rays.camera, gpu.rays.camera);
+}
+
 // A map of over a million texels is sampled on a grid shifted by half a texel
 // (render/environment.h): the device samples it as the CPU does.
 TEST(CudaBackend, MatchesCpuUnderAMapOfUnsplitTexels) {

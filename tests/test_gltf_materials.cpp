@@ -144,6 +144,39 @@ TEST(GltfMaterials, TransmissionIsGlassOfTheIndexAndPartsFollowTheirMix) {
   }
 }
 
+// KHR_materials_clearcoat: a coat of index 1.5 over the plastic and the conductor, its factors
+// alone; its textures are named in a warning, and a factor outside [0, 1] is refused.
+TEST(GltfMaterials, ClearcoatCoatsTheOpaqueParts) {
+  TempDir dir;
+  nlohmann::json m = pbr(0.3, 0.5);
+  m["extensions"] = {{"KHR_materials_clearcoat",
+                      {{"clearcoatFactor", 0.75},
+                       {"clearcoatRoughnessFactor", 0.1},
+                       {"clearcoatNormalTexture", {{"index", 0}}}}}};
+  MeshDesc mesh;
+  const Material mix = materialOf(dir, m, &mesh);
+  ASSERT_EQ(mix.type, MaterialType::Mix);
+  EXPECT_EQ(mix.coatWeight, 0.0f);
+  for (uint32_t part : mix.mixParts) {
+    EXPECT_FLOAT_EQ(mesh.mixParts[part].coatWeight, 0.75f);
+    EXPECT_FLOAT_EQ(mesh.mixParts[part].coatRoughness, 0.1f);
+    EXPECT_FLOAT_EQ(mesh.mixParts[part].coatIor, 1.5f);
+  }
+  const std::vector<std::string> expected = {
+      "m.gltf: materials[0].extensions.KHR_materials_clearcoat.clearcoatNormalTexture is not "
+      "read (the coat takes its factors alone)"};
+  EXPECT_EQ(mesh.warnings, expected);
+  m["extensions"]["KHR_materials_clearcoat"]["clearcoatFactor"] = 2;
+  try {
+    materialOf(dir, m);
+    ADD_FAILURE() << "a clearcoatFactor of 2 loaded";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "m.gltf: materials[0].extensions.KHR_materials_clearcoat.clearcoatFactor: expected a "
+              "number between 0 and 1, got 2");
+  }
+}
+
 TEST(GltfMaterials, EmissionTimesItsStrengthAndAlphaByMode) {
   TempDir dir;
   nlohmann::json glow = pbr(0, 0.5);
@@ -255,7 +288,7 @@ TEST(GltfMaterials, TextureTransformsReadWhereGltfSays) {
 TEST(GltfMaterials, WhatIsNotRenderedIsNamedInWarnings) {
   TempDir dir;
   nlohmann::json m = pbr(0, 0.5);
-  m["extensions"] = {{"KHR_materials_clearcoat", {{"clearcoatFactor", 1}}}};
+  m["extensions"] = {{"KHR_materials_sheen", {{"sheenRoughnessFactor", 1}}}};
   m["pbrMetallicRoughness"]["baseColorTexture"] = {{"index", 0}, {"texCoord", 1}};
   GltfFile f = quad(nlohmann::json::array({m}));
   f.addImage(pngBytes(dir));
@@ -263,7 +296,7 @@ TEST(GltfMaterials, WhatIsNotRenderedIsNamedInWarnings) {
   f.doc["textures"] = nlohmann::json::array({nlohmann::json{{"source", 0}, {"sampler", 0}}});
   const auto loaded = load(dir.write("w.glb", f.glb()));
   const std::vector<std::string> expected = {
-      "m.gltf: materials[0]: KHR_materials_clearcoat is not rendered",
+      "m.gltf: materials[0]: KHR_materials_sheen is not rendered",
       "m.gltf: samplers[0]: clamped or mirrored wrapping is read as repeating (candela's "
       "textures repeat)",
       "m.gltf: materials[0].pbrMetallicRoughness.baseColorTexture reads TEXCOORD_1; candela "
@@ -332,12 +365,14 @@ TEST(GltfMaterials, BrokenMaterialsAreRefusedWithTheirJsonPath) {
 }
 
 // The mapping as the documentation states it, held against the JSON material it names: a glTF
-// quad of metalness 0.3, roughness 0.4 and an emission renders as the same quad in OBJ under
-// the JSON mix, pixel for pixel.
+// quad of metalness 0.3, roughness 0.4, a clear coat and an emission renders as the same quad in
+// OBJ under the JSON mix, pixel for pixel.
 TEST(GltfMaterials, AGltfQuadRendersAsTheJsonMaterialTheDocsMapItTo) {
   TempDir dir;
   nlohmann::json m = pbr(0.3, 0.4);
   m["emissiveFactor"] = {0.2, 0.1, 0.05};
+  m["extensions"] = {
+      {"KHR_materials_clearcoat", {{"clearcoatFactor", 0.6}, {"clearcoatRoughnessFactor", 0.25}}}};
   dir.write("quad.gltf", quad(nlohmann::json::array({m})).gltf());
   dir.write("quad.obj",
             "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
@@ -347,15 +382,16 @@ TEST(GltfMaterials, AGltfQuadRendersAsTheJsonMaterialTheDocsMapItTo) {
           "height": 24, "spp": 16}, "environment": {"color": [0.3, 0.4, 0.5]},
           "lights": [{"type": "point", "position": [1, 2, 2], "intensity": 20}], "objects": [)";
   const std::string colour = "[0.5, 0.25, 0.125]";
+  const std::string coat = R"(, "coat": 0.6, "coat_roughness": 0.25, "coat_ior": 1.5)";
   const RenderResult gltf =
       test::renderTestScene(common + R"({"file": "quad.gltf"}]})", 1, dir.path());
   const RenderResult json = test::renderTestScene(
       common + R"({"file": "quad.obj", "material": {"type": "mix", "weight": 0.3,
           "emission": [0.2, 0.1, 0.05], "materials": [
           {"type": "plastic", "color": )" +
-          colour + R"(, "roughness": 0.4, "ior": 1.5},
+          colour + R"(, "roughness": 0.4, "ior": 1.5)" + coat + R"(},
           {"type": "conductor", "color": )" +
-          colour + R"(, "roughness": 0.4}]}}]})",
+          colour + R"(, "roughness": 0.4)" + coat + R"(}]}}]})",
       1, dir.path());
   ASSERT_EQ(gltf.image.pixels.size(), json.image.pixels.size());
   double sum = 0;

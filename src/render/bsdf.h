@@ -11,7 +11,9 @@
 // let light through an opaque surface or leak around a glass one.
 #pragma once
 
+#include "core/constants.h"
 #include "core/frame.h"
+#include "render/bsdf_coat.h"
 #include "render/bsdf_conductor.h"
 #include "render/bsdf_dielectric.h"
 #include "render/bsdf_diffuse.h"
@@ -31,6 +33,11 @@ CANDELA_HDI float sideOf(const Vec3& wo, const Vec3& ng) {
 // The shading normal turned to wo's side of the surface (decided by the geometric normal).
 CANDELA_HDI Vec3 facingNormal(const Vec3& wo, const Vec3& ng, const Vec3& ns) {
   return sideOf(wo, ng) > 0.0f ? ns : -ns;
+}
+
+// Whether m is Lambertian with nothing over it: the common case, which needs no wo.
+CANDELA_HDI bool isBareDiffuse(const Material& m) {
+  return m.type == MaterialType::Diffuse && !hasCoat(m);
 }
 
 // Frame(n, tangent), out of line: only anisotropic materials have a tangent.
@@ -62,7 +69,7 @@ CANDELA_HDI_ALWAYS Bsdf makeBsdf(const SceneView& scene, const Material& m, cons
                           ? Frame(n)
                           : tangentFrame(n, tangent);
   // A diffuse surface, the most common, never reads wo.
-  if (m.type == MaterialType::Diffuse)
+  if (isBareDiffuse(m))
     return {&m, color, GgxAlpha::isotropic(0.0f), PlasticCoat(), frame, ng, side, Vec3(0.0f), 1.0f};
   const PlasticCoat coat = m.type == MaterialType::Plastic
                                ? plasticCoatAt(m, scene.plasticCoats, roughness)
@@ -81,6 +88,7 @@ CANDELA_HDI_ALWAYS Bsdf makeBsdf(const SceneView& scene, const Material& m, cons
 // Whether some lobe has a density (next-event estimation and MIS apply), rather than only mirror
 // and refraction directions.
 CANDELA_HDI bool hasSmoothLobe(const Material& m) {
+  if (hasCoat(m) && !coatAlpha(m).smooth()) return true;
   switch (m.type) {
     case MaterialType::Diffuse:
     case MaterialType::Plastic:
@@ -98,7 +106,7 @@ CANDELA_HDI bool hasSmoothLobe(const Material& m) {
 // Whether sampleBsdf reads its first number (a choice between lobes); the integrator draws it
 // only for such materials.
 CANDELA_HDI bool usesLobeChoice(const Material& m) {
-  return m.type == MaterialType::Plastic ||
+  return hasCoat(m) || m.type == MaterialType::Plastic ||
          (m.type == MaterialType::Glass && !isSmooth(m));
 }
 
@@ -134,28 +142,45 @@ CANDELA_HDI bool leavesOnItsSide(const Bsdf& b, const Vec3& wi, float wiLocalZ) 
   return wiLocalZ > 0.0f ? geometric > 0.0f : geometric < 0.0f;
 }
 
-// evalBsdf for every material but diffuse, at wi in the local frame.
-CANDELA_HD_NOINLINE inline Vec3 evalNonDiffuse(const Bsdf& b, const Vec3& wi, float* pdf) {
+// f |cos(wi)| and the pdf of the material beneath any coat, at wi in the local frame.
+CANDELA_HDI Vec3 evalBase(const Bsdf& b, const Vec3& wi, float* pdf) {
   const Material& m = *b.material;
   switch (m.type) {
+    case MaterialType::Diffuse:
+      *pdf = wi.z > 0.0f ? cosineHemispherePdf(wi.z) : 0.0f;
+      return diffuseEval(b.color, wi);
     case MaterialType::Conductor:
       return conductorEvalPdf(m, b.color, b.alpha, b.wo, wi, pdf);
     case MaterialType::Glass:
       return dielectricEvalPdf(b.color, b.alpha, b.eta, b.wo, wi, pdf);
     case MaterialType::Plastic:
       return plasticEvalPdf(m, b.coat, b.alpha, b.color, b.wo, wi, pdf);
-    case MaterialType::Diffuse:
     case MaterialType::Emissive:
     case MaterialType::Mix:  // never met: render/material_mix.h chooses a part
       break;
   }
+  *pdf = 0.0f;
   return Vec3(0.0f);
+}
+
+// evalBase under the material's coat (render/bsdf_coat.h).
+CANDELA_HD_NOINLINE inline Vec3 evalCoated(const Bsdf& b, const Vec3& wi, float* pdf) {
+  const Material& m = *b.material;
+  float basePdf;
+  const Vec3 base = evalBase(b, wi, &basePdf);
+  return coatedEvalPdf(m, b.wo, wi, base, basePdf, coatProbability(m, b.color, b.wo.z), pdf);
+}
+
+// evalBsdf for every material but a bare diffuse one, at wi in the local frame.
+CANDELA_HD_NOINLINE inline Vec3 evalNonDiffuse(const Bsdf& b, const Vec3& wi, float* pdf) {
+  if (hasCoat(*b.material)) return evalCoated(b, wi, pdf);
+  return evalBase(b, wi, pdf);
 }
 
 // f |cos(wi)| and the solid-angle pdf with which sampleBsdf picks wi (zero for delta lobes).
 CANDELA_HDI Vec3 evalBsdf(const Bsdf& b, const Vec3& wi, float* pdf) {
   *pdf = 0.0f;
-  if (b.material->type == MaterialType::Diffuse) {  // the common case needs only the cosine
+  if (isBareDiffuse(*b.material)) {  // the common case needs only the cosine
     const float cosTheta = dot(wi, b.frame.n);
     if (!leavesOnItsSide(b, wi, cosTheta)) return Vec3(0.0f);
     *pdf = cosineHemispherePdf(cosTheta);
@@ -176,7 +201,7 @@ CANDELA_HD_NOINLINE inline Vec3 evalBsdfAcrossFace(const Bsdf& b, const Vec3& wi
   const Vec3 local = b.frame.toLocal(wi);
   if (!(local.z > 0.0f)) return Vec3(0.0f);
   Vec3 f;
-  if (b.material->type == MaterialType::Diffuse) {
+  if (isBareDiffuse(*b.material)) {
     *pdf = cosineHemispherePdf(local.z);
     f = diffuseEval(b.color, local);
   } else {
@@ -205,18 +230,18 @@ CANDELA_HDI bool sampleBothDeltaLobes(const Bsdf& b, BsdfSample* first, BsdfSamp
   return leavesOnItsSide(b, first->wi, firstZ) && leavesOnItsSide(b, second->wi, secondZ);
 }
 
-// sampleBsdf for every material but diffuse, in the local frame.
-CANDELA_HD_NOINLINE inline bool sampleNonDiffuse(const Bsdf& b, float uc, float u1, float u2,
-                                                 BsdfSample* s) {
+// sampleBsdf of the material beneath any coat, in the local frame.
+CANDELA_HDI bool sampleBase(const Bsdf& b, float uc, float u1, float u2, BsdfSample* s) {
   const Material& m = *b.material;
   switch (m.type) {
+    case MaterialType::Diffuse:
+      return diffuseSample(b.color, u1, u2, s);
     case MaterialType::Conductor:
       return conductorSample(m, b.color, b.alpha, b.wo, u1, u2, s);
     case MaterialType::Glass:
       return dielectricSample(b.color, b.alpha, b.eta, b.wo, uc, u1, u2, s);
     case MaterialType::Plastic:
       return plasticSample(m, b.coat, b.alpha, b.color, b.wo, uc, u1, u2, s);
-    case MaterialType::Diffuse:
     case MaterialType::Emissive:
     case MaterialType::Mix:  // never met: render/material_mix.h chooses a part
       break;
@@ -224,12 +249,41 @@ CANDELA_HD_NOINLINE inline bool sampleNonDiffuse(const Bsdf& b, float uc, float 
   return false;
 }
 
+// sampleBase under the material's coat: uc chooses the coat's reflection or the base (and then,
+// rescaled, the base's own lobe).
+CANDELA_HD_NOINLINE inline bool sampleCoated(const Bsdf& b, float uc, float u1, float u2,
+                                             BsdfSample* s) {
+  const Material& m = *b.material;
+  if (b.wo.z <= 0.0f) return false;
+  const float p = coatProbability(m, b.color, b.wo.z);
+  if (uc < p) {
+    if (!sampleCoatReflection(m, b.wo, p, u1, u2, s)) return false;
+    if (s->delta) return true;
+  } else {
+    if (!sampleBase(b, minf((uc - p) / (1.0f - p), kOneMinusEpsilon), u1, u2, s)) return false;
+    if (s->delta) {
+      s->weight *= coatedBaseFactor(m, s->wi.z, b.wo.z) / (1.0f - p);
+      return true;
+    }
+  }
+  const Vec3 f = evalCoated(b, s->wi, &s->pdf);
+  if (!(s->pdf > 0.0f)) return false;
+  s->weight = f / s->pdf;
+  return true;
+}
+
+// sampleBsdf for every material but a bare diffuse one, in the local frame.
+CANDELA_HD_NOINLINE inline bool sampleNonDiffuse(const Bsdf& b, float uc, float u1, float u2,
+                                                 BsdfSample* s) {
+  if (hasCoat(*b.material)) return sampleCoated(b, uc, u1, u2, s);
+  return sampleBase(b, uc, u1, u2, s);
+}
+
 // A scattered direction from (uc, u1, u2): uc picks a lobe where usesLobeChoice says so. False
 // when the path ends (no direction, or one leaving through the wrong side of the geometry).
 CANDELA_HDI bool sampleBsdf(const Bsdf& b, float uc, float u1, float u2, BsdfSample* s) {
-  const bool sampled = b.material->type == MaterialType::Diffuse
-                           ? diffuseSample(b.color, u1, u2, s)
-                           : sampleNonDiffuse(b, uc, u1, u2, s);
+  const bool sampled = isBareDiffuse(*b.material) ? diffuseSample(b.color, u1, u2, s)
+                                                  : sampleNonDiffuse(b, uc, u1, u2, s);
   if (!sampled) return false;
   const float localZ = s->wi.z;
   s->wi = b.frame.toWorld(s->wi);

@@ -79,6 +79,15 @@ struct Material {
   TextureRef mixWeightTexture;
   uint32_t mixWeightChannel = kLuminanceChannel;
 
+  // A clear coat over the diffuse, conductor or plastic material (render/bsdf_coat.h): on the
+  // share coatWeight of the surface (0: none), a dielectric layer of index coatIor and roughness
+  // coatRoughness (alpha = roughness^2), and, derived for a rough coat (prepareMaterial), its
+  // transmittance by cos(theta).
+  float coatWeight = 0.0f;
+  float coatRoughness = 0.0f;
+  float coatIor = 1.5f;
+  float coatTransmittance[kPlasticTableSize] = {};
+
   // Plastic, derived (prepareMaterial): the diffuse light's chance to be reflected back down by
   // the coating from inside, and the coating's transmittance from outside by cos(theta).
   float plasticInternalReflectance = 0.0f;

@@ -100,6 +100,11 @@ void prepareMaterial(Material* m) {
     m->roughness = 0.0f;
     m->roughnessTexture = TextureRef();
   }
+  const float coatAlpha = roughnessToAlpha(m->coatRoughness);
+  if (m->coatWeight > 0.0f && coatAlpha >= kSmoothAlpha) {
+    const RoughCoat coat = sharedRoughCoat(m->coatIor, coatAlpha);
+    std::copy(coat.transmittance, coat.transmittance + kPlasticTableSize, m->coatTransmittance);
+  }
   if (m->type != MaterialType::Plastic) return;
   const float alpha = roughnessToAlpha(m->roughness);
   const float eta = m->ior;

@@ -16,9 +16,10 @@ namespace candela {
 namespace {
 
 // The extensions of a material that candela reads; any other a material uses gets a warning.
-const std::set<std::string> kReadExtensions = {"KHR_materials_emissive_strength",
-                                               "KHR_materials_ior", "KHR_materials_transmission",
-                                               "KHR_materials_volume", "KHR_materials_dispersion"};
+const std::set<std::string> kReadExtensions = {
+    "KHR_materials_emissive_strength", "KHR_materials_ior",
+    "KHR_materials_transmission",      "KHR_materials_volume",
+    "KHR_materials_dispersion",        "KHR_materials_clearcoat"};
 
 const tinygltf::Value* extension(const tinygltf::ExtensionMap& extensions, const char* name) {
   const auto found = extensions.find(name);
@@ -265,6 +266,8 @@ Shading GltfMaterialReader::dielectricOf(const tinygltf::Material& m, const Mate
                                 TextureUse::Linear, tw + ".transmissionTexture"),
                         0, transmission, &channel);
   }
+  if (surface.coatWeight > 0.0f)
+    warnOnce(tw + ": the transmitted part has no clear coat (candela's glass takes none)");
   Material glass;
   glass.type = MaterialType::Glass;
   glass.ior = ior;
@@ -319,6 +322,23 @@ void GltfMaterialReader::addVolume(const tinygltf::Material& m, const std::strin
       for (int c = 0; c < 3; ++c)
         glass->channelIor[c] = float(cauchyIndex(glass->ior, 20.0 / dispersion, kChannelLambda[c]));
   }
+}
+
+void GltfMaterialReader::addCoat(const tinygltf::Material& m, const std::string& where,
+                                 Material* surface) {
+  const tinygltf::Value* e = extension(m.extensions, "KHR_materials_clearcoat");
+  if (!e) return;
+  const std::string cw = where + ".extensions.KHR_materials_clearcoat";
+  surface->coatWeight = unitFactor(extensionNumber(e, "clearcoatFactor", 0.0, label_ + ": " + cw),
+                                   label_ + ": " + cw + ".clearcoatFactor");
+  surface->coatRoughness =
+      unitFactor(extensionNumber(e, "clearcoatRoughnessFactor", 0.0, label_ + ": " + cw),
+                 label_ + ": " + cw + ".clearcoatRoughnessFactor");
+  surface->coatIor = 1.5f;  // the extension's fixed index
+  for (const char* map :
+       {"clearcoatTexture", "clearcoatRoughnessTexture", "clearcoatNormalTexture"})
+    if (surface->coatWeight > 0.0f && e->Has(map))
+      warnOnce(cw + "." + map + " is not read (the coat takes its factors alone)");
 }
 
 void GltfMaterialReader::addEmission(const tinygltf::Material& m, const std::string& where,
@@ -399,7 +419,8 @@ Material GltfMaterialReader::read(int index, std::vector<Material>* parts) {
                " is not rendered");
   bool baseHasAlpha = false;
   TextureRef metalRough;
-  const Material surface = surfaceOf(m, where, &baseHasAlpha, &metalRough);
+  Material surface = surfaceOf(m, where, &baseHasAlpha, &metalRough);
+  addCoat(m, where, &surface);
   const Shading dielectric = dielectricOf(m, surface, iorOf(m, where), where);
 
   // Metalness: a mix of the dielectric and a conductor of the base colour.

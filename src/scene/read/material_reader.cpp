@@ -40,17 +40,20 @@ const std::vector<std::string> kFields = {
     "color", "ior", "roughness", "metal", "radiance", "strength", "two_sided", "normal_map",
     "bump_map", "alpha", "emission", "emission_strength", "emission_two_sided",
     "transmission_depth", "abbe", "visible", "anisotropy", "anisotropy_rotation", "materials",
-    "weight"};
+    "weight", "coat", "coat_roughness", "coat_ior"};
 const std::vector<std::vector<std::string>> kFieldsOf = {
-    {"color", "normal_map", "bump_map", "alpha", "emission", "emission_strength", "emission_two_sided"},  // diffuse
-    {"color", "normal_map", "bump_map", "alpha", "emission", "emission_strength", "emission_two_sided"},  // mirror
+    {"color", "normal_map", "bump_map", "alpha", "emission", "emission_strength", "emission_two_sided",
+     "coat", "coat_roughness", "coat_ior"},  // diffuse
+    {"color", "normal_map", "bump_map", "alpha", "emission", "emission_strength", "emission_two_sided",
+     "coat", "coat_roughness", "coat_ior"},  // mirror
     {"color", "ior", "roughness", "anisotropy", "anisotropy_rotation", "normal_map", "bump_map",
      "alpha", "emission", "emission_strength", "transmission_depth", "abbe"},  // glass
     {"radiance", "strength", "two_sided", "visible"},                          // emissive
     {"color", "roughness", "anisotropy", "anisotropy_rotation", "metal", "normal_map", "bump_map",
-     "alpha", "emission", "emission_strength", "emission_two_sided"},  // conductor
+     "alpha", "emission", "emission_strength", "emission_two_sided", "coat", "coat_roughness",
+     "coat_ior"},  // conductor
     {"color", "ior", "roughness", "normal_map", "bump_map", "alpha", "emission",
-     "emission_strength", "emission_two_sided"},  // plastic
+     "emission_strength", "emission_two_sided", "coat", "coat_roughness", "coat_ior"},  // plastic
     {"ior"},  // thin_glass
     {"materials", "weight", "alpha", "emission", "emission_strength", "emission_two_sided"},  // mix
 };
@@ -93,6 +96,20 @@ void readAnisotropy(JsonObject& fields, Material* material) {
           "above 0 beside it");
     material->anisotropyRotation = float(std::fmod(double(degrees), 360.0) * kPi / 180.0);
   }
+}
+
+// "coat", the share of the surface a clear coat covers, and that coat's "coat_roughness" and
+// "coat_ior" (render/bsdf_coat.h).
+void readCoat(JsonObject& fields, Material* material) {
+  const std::optional<JsonValue> coat = fields.get("coat");
+  if (coat) material->coatWeight = coat->unitNumber("a coat weight in [0, 1]");
+  const std::optional<JsonValue> roughness = fields.get("coat_roughness");
+  const std::optional<JsonValue> ior = fields.get("coat_ior");
+  for (const std::optional<JsonValue>* field : {&roughness, &ior})
+    if (*field && !coat)
+      (*field)->fail("describes a clear coat; expected a \"coat\" (its weight) beside it");
+  if (roughness) material->coatRoughness = roughness->unitNumber("a roughness in [0, 1]");
+  if (ior) material->coatIor = ior->positiveNumber();
 }
 
 // `radiance` (a colour, or a texture: material->emissionTexture) times the field `strengthKey`
@@ -326,6 +343,7 @@ MaterialRead readFields(JsonObject& fields, size_t type, TextureLoader& textures
       break;
   }
   if (type != kThinGlass) readSurfaceEmission(fields, textures, &material);
+  readCoat(fields, &material);
   prepareMaterial(&material);
   return {material, {}};
 }

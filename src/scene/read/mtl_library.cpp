@@ -52,6 +52,10 @@ static void collectStatements(const std::string& text, const std::string& label,
       own.mapPm = keep(6);
     else if (isKeyword("Pm", 2))
       own.pm = keep(2);
+    else if (isKeyword("Pcr", 3))
+      own.pcr = keep(3);
+    else if (isKeyword("Pc", 2))
+      own.pc = keep(2);
     else if (isKeyword("anisor", 6))
       own.anisor = keep(6);
     else if (isKeyword("aniso", 5))

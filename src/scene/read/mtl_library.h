@@ -34,6 +34,9 @@ struct MtlTextures {
   // The PBR extension's anisotropy and its rotation (a fraction of a full turn), as Blender's
   // exporter writes them.
   std::optional<MtlStatement> aniso, anisor;
+  // The PBR extension's clear coat (its weight, as Blender's exporter writes its Coat Weight) and
+  // that coat's roughness.
+  std::optional<MtlStatement> pc, pcr;
   // A bump map (`bump`, `map_Bump` or `map_bump`, as written in bumpKeyword): heights, read
   // where the material has no `norm`.
   std::optional<MtlStatement> bump;

@@ -231,6 +231,30 @@ void applyMetalness(const MtlTextures& s, const tinyobj::material_t& material,
   *desc = mix;
 }
 
+// The PBR extension's clear coat, `Pc` (its weight) and `Pcr` (its roughness), as the coat of
+// `desc` (render/bsdf_coat.h), or of both its parts where it is a mix (Pm); an emissive material
+// takes none, with a warning naming the line.
+void applyMtlCoat(const MtlTextures& s, const std::string& name, Material* desc,
+                  std::vector<Material>* parts, std::vector<std::string>* warnings) {
+  if (!s.pc) return;
+  const float weight = unitNumber(*s.pc, "Pc");
+  const float roughness = s.pcr ? unitNumber(*s.pcr, "Pcr") : 0.0f;
+  if (weight == 0.0f) return;
+  if (desc->type == MaterialType::Emissive) {
+    warnings->push_back(s.pc->file + ":" + std::to_string(s.pc->line) +
+                        ": \"Pc\" not used: material \"" + name +
+                        "\" is emissive, and an emissive material reflects nothing");
+    return;
+  }
+  const auto coat = [&](Material* m) {
+    m->coatWeight = weight;
+    m->coatRoughness = roughness;
+    prepareMaterial(m);
+  };
+  if (desc->type != MaterialType::Mix) return coat(desc);
+  for (const uint32_t part : desc->mixParts) coat(&(*parts)[part]);
+}
+
 // Ke (times map_Ke) as the emission of `desc`, a material that reflects too (a mix's own where
 // Pm made one). An emitting surface is sampled over all its area, so its alpha (set by one of
 // s's statements) is not used.
@@ -361,6 +385,8 @@ std::vector<Material> mtlMaterials(const std::vector<tinyobj::material_t>& mater
     if (found != library.statements.end() && diffuseColour &&
         (found->second.pm || found->second.mapPm))
       applyMetalness(found->second, material, label, textures, &desc, mixParts);
+    if (found != library.statements.end())
+      applyMtlCoat(found->second, material.name, &desc, mixParts, warnings);
     if (!isBlack(emission) && reflects)
       addMtlEmission(found != library.statements.end() ? &found->second : nullptr, emission,
                      emissionTexture, &desc, warnings);
