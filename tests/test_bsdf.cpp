@@ -65,6 +65,14 @@ Material diffuse() {
   return m;
 }
 
+// m under a sheen of colour `color` (render/bsdf_sheen.h).
+Material sheened(Material m, const Vec3& color, float roughness) {
+  m.sheenColor = color;
+  m.sheenRoughness = roughness;
+  prepareMaterial(&m);
+  return m;
+}
+
 // m under a clear coat (render/bsdf_coat.h).
 Material coated(Material m, float weight, float roughness) {
   m.coatWeight = weight;
@@ -108,6 +116,13 @@ std::vector<Case> cases() {
        grazing},
       {"half a rough coat over rough plastic", coated(plastic(0.4f, Vec3(0.5f)), 0.5f, 0.6f),
        steep},
+      {"sheen 0.5 over diffuse", sheened(diffuse(), Vec3(0.9f, 0.6f, 0.3f), 0.5f), steep},
+      {"smooth sheen 0.1 over rough gold, grazing",
+       sheened(conductor(0.5f, true), Vec3(1.0f), 0.1f), grazing},
+      {"sheen and a smooth coat over rough metal",
+       coated(sheened(conductor(0.3f, false), Vec3(0.5f), 0.3f), 1.0f, 0.0f), steep},
+      {"sheen and a rough coat over plastic",
+       coated(sheened(plastic(0.3f, Vec3(0.4f)), Vec3(0.8f), 0.7f), 0.6f, 0.2f), grazing},
   };
 }
 
@@ -244,6 +259,9 @@ TEST(Bsdf, WhiteFurnaceNeverGainsEnergy) {
       EXPECT_LE(albedo(anisotropic(glass(r, 1.5f), 0.8f), wo, kSamples).x, 1.0f + 0.01f);
       EXPECT_LE(albedo(coated(white, 1.0f, r), wo, kSamples).x, 1.0f + 1e-3f);
       EXPECT_LE(albedo(coated(conductor(0.0f, false), 1.0f, r), wo, kSamples).x, 1.0f + 1e-3f);
+      EXPECT_LE(albedo(sheened(white, Vec3(1.0f), r), wo, kSamples).x, 1.0f + 2e-3f);
+      EXPECT_LE(albedo(sheened(conductor(0.0f, false), Vec3(1.0f), r * 0.1f), wo, kSamples).x,
+                1.0f + 2e-3f);
     }
   }
 }

@@ -166,8 +166,9 @@ TEST(CudaBackend, MatchesCpuThroughAnOrthographicCameraOnVertexColours) {
 }
 
 // Clear coats (render/bsdf_coat.h), smooth and rough, over diffuse, a rough metal, a mirror and
-// a plastic, lit by a lamp, a sphere light and the sky: on the device as on the CPU.
-TEST(CudaBackend, MatchesCpuOnCoatedMaterials) {
+// a plastic, and sheen (render/bsdf_sheen.h) under a coat and alone, lit by a lamp, a sphere
+// light and the sky: on the device as on the CPU.
+TEST(CudaBackend, MatchesCpuOnCoatedAndSheenedMaterials) {
   REQUIRE_GPU();
   const SceneData data = test::loadTestScene(R"({
     "camera": {"width": 48, "height": 36, "fov": 50, "position": [0, 1.5, 6], "look_at": [0, 0.5, 0],
@@ -182,7 +183,10 @@ TEST(CudaBackend, MatchesCpuOnCoatedMaterials) {
       {"position": [0, 0.5, -0.6], "radius": 0.5,
        "material": {"type": "mirror", "coat": 0.8, "coat_roughness": 0.2, "coat_ior": 1.6}},
       {"position": [1.2, 0.5, 0], "radius": 0.5,
-       "material": {"type": "plastic", "color": [0.2, 0.3, 0.8], "roughness": 0.3, "coat": 1}}],
+       "material": {"type": "plastic", "color": [0.2, 0.3, 0.8], "roughness": 0.3, "coat": 1,
+                    "sheen": [0.9, 0.7, 0.5], "sheen_roughness": 0.3}},
+      {"position": [0.6, 0.3, 1.2], "radius": 0.3,
+       "material": {"type": "diffuse", "color": 0.05, "sheen": 0.8, "sheen_roughness": 0.1}}],
     "lights": [
       {"position": [2, 4, 3], "intensity": 800},
       {"type": "sphere", "position": [-3, 3, 1], "radius": 0.4, "intensity": 300}]})");

@@ -144,15 +144,18 @@ TEST(GltfMaterials, TransmissionIsGlassOfTheIndexAndPartsFollowTheirMix) {
   }
 }
 
-// KHR_materials_clearcoat: a coat of index 1.5 over the plastic and the conductor, its factors
-// alone; its textures are named in a warning, and a factor outside [0, 1] is refused.
-TEST(GltfMaterials, ClearcoatCoatsTheOpaqueParts) {
+// KHR_materials_clearcoat and KHR_materials_sheen: a coat of index 1.5 and a sheen over the
+// plastic and the conductor, their factors alone; their textures are named in a warning, and a
+// factor outside [0, 1] is refused.
+TEST(GltfMaterials, ClearcoatAndSheenLayerTheOpaqueParts) {
   TempDir dir;
   nlohmann::json m = pbr(0.3, 0.5);
   m["extensions"] = {{"KHR_materials_clearcoat",
                       {{"clearcoatFactor", 0.75},
                        {"clearcoatRoughnessFactor", 0.1},
-                       {"clearcoatNormalTexture", {{"index", 0}}}}}};
+                       {"clearcoatNormalTexture", {{"index", 0}}}}},
+                     {"KHR_materials_sheen",
+                      {{"sheenColorFactor", {0.5, 0.25, 1}}, {"sheenRoughnessFactor", 0.7}}}};
   MeshDesc mesh;
   const Material mix = materialOf(dir, m, &mesh);
   ASSERT_EQ(mix.type, MaterialType::Mix);
@@ -161,6 +164,9 @@ TEST(GltfMaterials, ClearcoatCoatsTheOpaqueParts) {
     EXPECT_FLOAT_EQ(mesh.mixParts[part].coatWeight, 0.75f);
     EXPECT_FLOAT_EQ(mesh.mixParts[part].coatRoughness, 0.1f);
     EXPECT_FLOAT_EQ(mesh.mixParts[part].coatIor, 1.5f);
+    EXPECT_FLOAT_EQ(mesh.mixParts[part].sheenColor.y, 0.25f);
+    EXPECT_FLOAT_EQ(mesh.mixParts[part].sheenRoughness, 0.7f);
+    EXPECT_GT(mesh.mixParts[part].sheenKept[0], 0.1f);  // prepared
   }
   const std::vector<std::string> expected = {
       "m.gltf: materials[0].extensions.KHR_materials_clearcoat.clearcoatNormalTexture is not "
@@ -288,7 +294,7 @@ TEST(GltfMaterials, TextureTransformsReadWhereGltfSays) {
 TEST(GltfMaterials, WhatIsNotRenderedIsNamedInWarnings) {
   TempDir dir;
   nlohmann::json m = pbr(0, 0.5);
-  m["extensions"] = {{"KHR_materials_sheen", {{"sheenRoughnessFactor", 1}}}};
+  m["extensions"] = {{"KHR_materials_iridescence", {{"iridescenceFactor", 1}}}};
   m["pbrMetallicRoughness"]["baseColorTexture"] = {{"index", 0}, {"texCoord", 1}};
   GltfFile f = quad(nlohmann::json::array({m}));
   f.addImage(pngBytes(dir));
@@ -296,7 +302,7 @@ TEST(GltfMaterials, WhatIsNotRenderedIsNamedInWarnings) {
   f.doc["textures"] = nlohmann::json::array({nlohmann::json{{"source", 0}, {"sampler", 0}}});
   const auto loaded = load(dir.write("w.glb", f.glb()));
   const std::vector<std::string> expected = {
-      "m.gltf: materials[0]: KHR_materials_sheen is not rendered",
+      "m.gltf: materials[0]: KHR_materials_iridescence is not rendered",
       "m.gltf: samplers[0]: clamped or mirrored wrapping is read as repeating (candela's "
       "textures repeat)",
       "m.gltf: materials[0].pbrMetallicRoughness.baseColorTexture reads TEXCOORD_1; candela "
@@ -365,14 +371,16 @@ TEST(GltfMaterials, BrokenMaterialsAreRefusedWithTheirJsonPath) {
 }
 
 // The mapping as the documentation states it, held against the JSON material it names: a glTF
-// quad of metalness 0.3, roughness 0.4, a clear coat and an emission renders as the same quad in
-// OBJ under the JSON mix, pixel for pixel.
+// quad of metalness 0.3, roughness 0.4, a clear coat, a sheen and an emission renders as the same
+// quad in OBJ under the JSON mix, pixel for pixel.
 TEST(GltfMaterials, AGltfQuadRendersAsTheJsonMaterialTheDocsMapItTo) {
   TempDir dir;
   nlohmann::json m = pbr(0.3, 0.4);
   m["emissiveFactor"] = {0.2, 0.1, 0.05};
   m["extensions"] = {
-      {"KHR_materials_clearcoat", {{"clearcoatFactor", 0.6}, {"clearcoatRoughnessFactor", 0.25}}}};
+      {"KHR_materials_clearcoat", {{"clearcoatFactor", 0.6}, {"clearcoatRoughnessFactor", 0.25}}},
+      {"KHR_materials_sheen",
+       {{"sheenColorFactor", {0.3, 0.2, 0.1}}, {"sheenRoughnessFactor", 0.4}}}};
   dir.write("quad.gltf", quad(nlohmann::json::array({m})).gltf());
   dir.write("quad.obj",
             "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
@@ -382,7 +390,8 @@ TEST(GltfMaterials, AGltfQuadRendersAsTheJsonMaterialTheDocsMapItTo) {
           "height": 24, "spp": 16}, "environment": {"color": [0.3, 0.4, 0.5]},
           "lights": [{"type": "point", "position": [1, 2, 2], "intensity": 20}], "objects": [)";
   const std::string colour = "[0.5, 0.25, 0.125]";
-  const std::string coat = R"(, "coat": 0.6, "coat_roughness": 0.25, "coat_ior": 1.5)";
+  const std::string coat = R"(, "coat": 0.6, "coat_roughness": 0.25, "coat_ior": 1.5,
+      "sheen": [0.3, 0.2, 0.1], "sheen_roughness": 0.4)";
   const RenderResult gltf =
       test::renderTestScene(common + R"({"file": "quad.gltf"}]})", 1, dir.path());
   const RenderResult json = test::renderTestScene(

@@ -235,14 +235,15 @@ TEST_F(ObjLoader, MtlSpecularMapsToPlasticOrConductor) {
   EXPECT_EQ(matte.type, MaterialType::Diffuse);
 }
 
-// The PBR extension's clear coat, as Blender's exporter writes it: Pc its weight and Pcr its
-// roughness, on the material or on both parts of a metalness mix; none on an emitter.
-TEST_F(ObjLoader, MtlClearCoatCoatsTheMaterialOrBothItsParts) {
+// The PBR extension's clear coat and sheen, as Blender's exporter writes them: Pc the coat's
+// weight and Pcr its roughness, Ps the sheen, on the material or on both parts of a metalness
+// mix; none on an emitter.
+TEST_F(ObjLoader, MtlClearCoatAndSheenLayerTheMaterialOrBothItsParts) {
   const MeshDesc mesh = load(std::string("mtllib m.mtl\n") + kSquare +
                                  "usemtl paint\nf 1 2 3\n"
                                  "usemtl flake\nf 1 3 4\n"
                                  "usemtl lamp\nf 1 2 4\n",
-                             "newmtl paint\nKd 0.5 0.1 0.1\nPc 0.8\nPcr 0.1\n"
+                             "newmtl paint\nKd 0.5 0.1 0.1\nPc 0.8\nPcr 0.1\nPs 0.3\n"
                              "newmtl flake\nKd 0.5 0.5 0.5\nPm 0.5\nPr 0.4\nPc 1\n"
                              "newmtl lamp\nKe 2 2 2\nPc 1\n");
   const Material& paint = mesh.materials[mesh.triangles[0].material];
@@ -250,6 +251,8 @@ TEST_F(ObjLoader, MtlClearCoatCoatsTheMaterialOrBothItsParts) {
   EXPECT_FLOAT_EQ(paint.coatWeight, 0.8f);
   EXPECT_FLOAT_EQ(paint.coatRoughness, 0.1f);
   EXPECT_GT(paint.coatTransmittance[kPlasticTableSize - 1], 0.9f);  // prepared
+  EXPECT_FLOAT_EQ(paint.sheenColor.z, 0.3f);
+  EXPECT_GT(paint.sheenKept[0], 0.1f);
   const Material& flake = mesh.materials[mesh.triangles[1].material];
   ASSERT_EQ(flake.type, MaterialType::Mix);
   for (const uint32_t part : flake.mixParts) {
@@ -259,7 +262,7 @@ TEST_F(ObjLoader, MtlClearCoatCoatsTheMaterialOrBothItsParts) {
   EXPECT_EQ(mesh.materials[mesh.triangles[2].material].coatWeight, 0.0f);
   ASSERT_EQ(mesh.warnings.size(), 1u);
   EXPECT_EQ(mesh.warnings[0],
-            "m.mtl:12: \"Pc\" not used: material \"lamp\" is emissive, and an emissive material "
+            "m.mtl:13: \"Pc\" not used: material \"lamp\" is emissive, and an emissive material "
             "reflects nothing");
   dir.write("bad.mtl", "newmtl a\nKd 0.5 0.5 0.5\nPc 1.5\n");
   try {

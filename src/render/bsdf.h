@@ -19,6 +19,7 @@
 #include "render/bsdf_diffuse.h"
 #include "render/bsdf_plastic.h"
 #include "render/bsdf_sample.h"
+#include "render/bsdf_sheen.h"
 #include "render/dispersion.h"
 #include "render/material.h"
 #include "render/scene_view.h"
@@ -35,9 +36,12 @@ CANDELA_HDI Vec3 facingNormal(const Vec3& wo, const Vec3& ng, const Vec3& ns) {
   return sideOf(wo, ng) > 0.0f ? ns : -ns;
 }
 
+// Whether m has a sheen or a coat over it (render/bsdf_sheen.h, render/bsdf_coat.h).
+CANDELA_HDI bool hasLayers(const Material& m) { return hasCoat(m) || hasSheen(m); }
+
 // Whether m is Lambertian with nothing over it: the common case, which needs no wo.
 CANDELA_HDI bool isBareDiffuse(const Material& m) {
-  return m.type == MaterialType::Diffuse && !hasCoat(m);
+  return m.type == MaterialType::Diffuse && !hasLayers(m);
 }
 
 // Frame(n, tangent), out of line: only anisotropic materials have a tangent.
@@ -88,7 +92,7 @@ CANDELA_HDI_ALWAYS Bsdf makeBsdf(const SceneView& scene, const Material& m, cons
 // Whether some lobe has a density (next-event estimation and MIS apply), rather than only mirror
 // and refraction directions.
 CANDELA_HDI bool hasSmoothLobe(const Material& m) {
-  if (hasCoat(m) && !coatAlpha(m).smooth()) return true;
+  if (hasSheen(m) || (hasCoat(m) && !coatAlpha(m).smooth())) return true;
   switch (m.type) {
     case MaterialType::Diffuse:
     case MaterialType::Plastic:
@@ -106,7 +110,7 @@ CANDELA_HDI bool hasSmoothLobe(const Material& m) {
 // Whether sampleBsdf reads its first number (a choice between lobes); the integrator draws it
 // only for such materials.
 CANDELA_HDI bool usesLobeChoice(const Material& m) {
-  return hasCoat(m) || m.type == MaterialType::Plastic ||
+  return hasLayers(m) || m.type == MaterialType::Plastic ||
          (m.type == MaterialType::Glass && !isSmooth(m));
 }
 
@@ -163,17 +167,25 @@ CANDELA_HDI Vec3 evalBase(const Bsdf& b, const Vec3& wi, float* pdf) {
   return Vec3(0.0f);
 }
 
-// evalBase under the material's coat (render/bsdf_coat.h).
-CANDELA_HD_NOINLINE inline Vec3 evalCoated(const Bsdf& b, const Vec3& wi, float* pdf) {
+// evalBase under the material's layers: its sheen (render/bsdf_sheen.h), and over that its coat
+// (render/bsdf_coat.h).
+CANDELA_HD_NOINLINE inline Vec3 evalLayered(const Bsdf& b, const Vec3& wi, float* pdf) {
   const Material& m = *b.material;
-  float basePdf;
-  const Vec3 base = evalBase(b, wi, &basePdf);
-  return coatedEvalPdf(m, b.wo, wi, base, basePdf, coatProbability(m, b.color, b.wo.z), pdf);
+  float p;
+  Vec3 f = evalBase(b, wi, &p);
+  if (hasSheen(m)) {
+    const float chance = sheenProbability(m, b.color, b.wo.z);
+    f = f * sheenedBaseFactor(m, wi.z, b.wo.z) + sheenEval(m, b.wo, wi);
+    p = chance * sheenDirectionPdf(wi) + (1.0f - chance) * p;
+  }
+  if (hasCoat(m)) f = coatedEvalPdf(m, b.wo, wi, f, p, coatProbability(m, b.color, b.wo.z), &p);
+  *pdf = wi.z > 0.0f && b.wo.z > 0.0f ? p : 0.0f;
+  return wi.z > 0.0f && b.wo.z > 0.0f ? f : Vec3(0.0f);
 }
 
 // evalBsdf for every material but a bare diffuse one, at wi in the local frame.
 CANDELA_HD_NOINLINE inline Vec3 evalNonDiffuse(const Bsdf& b, const Vec3& wi, float* pdf) {
-  if (hasCoat(*b.material)) return evalCoated(b, wi, pdf);
+  if (hasLayers(*b.material)) return evalLayered(b, wi, pdf);
   return evalBase(b, wi, pdf);
 }
 
@@ -249,24 +261,34 @@ CANDELA_HDI bool sampleBase(const Bsdf& b, float uc, float u1, float u2, BsdfSam
   return false;
 }
 
-// sampleBase under the material's coat: uc chooses the coat's reflection or the base (and then,
-// rescaled, the base's own lobe).
-CANDELA_HD_NOINLINE inline bool sampleCoated(const Bsdf& b, float uc, float u1, float u2,
-                                             BsdfSample* s) {
+// sampleBase under the material's layers: uc chooses the coat's reflection, or else (rescaled)
+// the sheen, or else (rescaled again) the base and its own lobe.
+CANDELA_HD_NOINLINE inline bool sampleLayered(const Bsdf& b, float uc, float u1, float u2,
+                                              BsdfSample* s) {
   const Material& m = *b.material;
   if (b.wo.z <= 0.0f) return false;
-  const float p = coatProbability(m, b.color, b.wo.z);
-  if (uc < p) {
-    if (!sampleCoatReflection(m, b.wo, p, u1, u2, s)) return false;
+  const float coat = hasCoat(m) ? coatProbability(m, b.color, b.wo.z) : 0.0f;
+  if (uc < coat) {
+    if (!sampleCoatReflection(m, b.wo, coat, u1, u2, s)) return false;
     if (s->delta) return true;
   } else {
-    if (!sampleBase(b, minf((uc - p) / (1.0f - p), kOneMinusEpsilon), u1, u2, s)) return false;
-    if (s->delta) {
-      s->weight *= coatedBaseFactor(m, s->wi.z, b.wo.z) / (1.0f - p);
-      return true;
+    uc = minf((uc - coat) / (1.0f - coat), kOneMinusEpsilon);
+    const float sheen = hasSheen(m) ? sheenProbability(m, b.color, b.wo.z) : 0.0f;
+    if (uc < sheen) {
+      s->wi = sampleSheenDirection(u1, u2);
+      s->delta = false;
+      s->eta = 1.0f;
+    } else {
+      if (!sampleBase(b, minf((uc - sheen) / (1.0f - sheen), kOneMinusEpsilon), u1, u2, s))
+        return false;
+      if (s->delta) {  // the layers' share of it, over the chance of choosing the base
+        if (hasSheen(m)) s->weight *= sheenedBaseFactor(m, s->wi.z, b.wo.z) / (1.0f - sheen);
+        if (hasCoat(m)) s->weight *= coatedBaseFactor(m, s->wi.z, b.wo.z) / (1.0f - coat);
+        return true;
+      }
     }
   }
-  const Vec3 f = evalCoated(b, s->wi, &s->pdf);
+  const Vec3 f = evalLayered(b, s->wi, &s->pdf);
   if (!(s->pdf > 0.0f)) return false;
   s->weight = f / s->pdf;
   return true;
@@ -275,7 +297,7 @@ CANDELA_HD_NOINLINE inline bool sampleCoated(const Bsdf& b, float uc, float u1, 
 // sampleBsdf for every material but a bare diffuse one, in the local frame.
 CANDELA_HD_NOINLINE inline bool sampleNonDiffuse(const Bsdf& b, float uc, float u1, float u2,
                                                  BsdfSample* s) {
-  if (hasCoat(*b.material)) return sampleCoated(b, uc, u1, u2, s);
+  if (hasLayers(*b.material)) return sampleLayered(b, uc, u1, u2, s);
   return sampleBase(b, uc, u1, u2, s);
 }
 

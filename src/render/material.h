@@ -87,6 +87,13 @@ struct Material {
   float coatRoughness = 0.0f;
   float coatIor = 1.5f;
   float coatTransmittance[kPlasticTableSize] = {};
+  // Sheen over the diffuse, conductor or plastic material (render/bsdf_sheen.h): its colour (0:
+  // none) and fibres' roughness, and, derived (prepareMaterial), by cos(theta), the directional
+  // albedo of its lobe and that of the lobe normalized to at most 1.
+  Vec3 sheenColor{0.0f};
+  float sheenRoughness = 0.5f;
+  float sheenAlbedo[kPlasticTableSize] = {};
+  float sheenKept[kPlasticTableSize] = {};
 
   // Plastic, derived (prepareMaterial): the diffuse light's chance to be reflected back down by
   // the coating from inside, and the coating's transmittance from outside by cos(theta).

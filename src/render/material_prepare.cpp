@@ -8,7 +8,9 @@
 #include <utility>
 #include <vector>
 
+#include "core/constants.h"
 #include "render/bsdf_plastic.h"
+#include "render/bsdf_sheen.h"
 #include "render/fresnel.h"
 #include "render/microfacet.h"
 
@@ -90,6 +92,50 @@ RoughCoat sharedRoughCoat(float eta, float alpha) {
   return found->second;
 }
 
+// The sheen lobe's directional albedo at the table's cosines, and the normalized lobe's
+// (render/bsdf_sheen.h), by the midpoint rule over cos(theta_i) = t^2 (dense near the horizon,
+// where a smooth sheen's lobe lies) and the azimuth; mirror-symmetric in the azimuth, so half.
+struct SheenTables {
+  float albedo[kPlasticTableSize];
+  float kept[kPlasticTableSize];
+};
+
+SheenTables sheenTables(float alpha) {
+  constexpr int kT = 256, kPhi = 128;
+  SheenTables tables;
+  for (int pass = 0; pass < 2; ++pass)
+    for (uint32_t k = 0; k < kPlasticTableSize; ++k) {
+      const double mu = std::max(double(k) / (kPlasticTableSize - 1), 1e-4);
+      const Vec3 wo(float(std::sqrt(1.0 - mu * mu)), 0.0f, float(mu));
+      const float normO = pass == 0 ? 1.0f : std::max(1.0f, tables.albedo[k]);
+      double sum = 0.0;
+      for (int i = 0; i < kT; ++i) {
+        const double t = (i + 0.5) / kT, cosI = t * t, sinI = std::sqrt(1.0 - cosI * cosI);
+        const float normI =
+            pass == 0 ? 1.0f : std::max(1.0f, coatTableAt(tables.albedo, float(cosI)));
+        double ring = 0.0;
+        for (int j = 0; j < kPhi; ++j) {
+          const double phi = kPiDouble * (j + 0.5) / kPhi;
+          const Vec3 wi(float(sinI * std::cos(phi)), float(sinI * std::sin(phi)), float(cosI));
+          ring += sheenLobeCos(alpha, wo, wi);
+        }
+        // d(cos) = 2 t dt; the azimuth's half circle counted twice.
+        sum += ring * (kPiDouble / kPhi) * 2.0 * (2.0 * t / kT) / std::max(normI, normO);
+      }
+      (pass == 0 ? tables.albedo : tables.kept)[k] = float(sum);
+    }
+  return tables;
+}
+
+SheenTables sharedSheenTables(float alpha) {
+  static std::mutex mutex;
+  static std::map<float, SheenTables> tables;
+  std::lock_guard<std::mutex> lock(mutex);
+  auto found = tables.find(alpha);
+  if (found == tables.end()) found = tables.emplace(alpha, sheenTables(alpha)).first;
+  return found->second;
+}
+
 }  // namespace
 
 void prepareMaterial(Material* m) {
@@ -104,6 +150,11 @@ void prepareMaterial(Material* m) {
   if (m->coatWeight > 0.0f && coatAlpha >= kSmoothAlpha) {
     const RoughCoat coat = sharedRoughCoat(m->coatIor, coatAlpha);
     std::copy(coat.transmittance, coat.transmittance + kPlasticTableSize, m->coatTransmittance);
+  }
+  if (hasSheen(*m)) {
+    const SheenTables sheen = sharedSheenTables(sheenAlpha(m->sheenRoughness));
+    std::copy(sheen.albedo, sheen.albedo + kPlasticTableSize, m->sheenAlbedo);
+    std::copy(sheen.kept, sheen.kept + kPlasticTableSize, m->sheenKept);
   }
   if (m->type != MaterialType::Plastic) return;
   const float alpha = roughnessToAlpha(m->roughness);

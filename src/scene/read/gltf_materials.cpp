@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "core/texture.h"
+#include "render/bsdf_sheen.h"
 #include "render/material_prepare.h"
 #include "scene/cauchy_index.h"
 #include "scene/read/gltf_uri.h"
@@ -16,10 +17,13 @@ namespace candela {
 namespace {
 
 // The extensions of a material that candela reads; any other a material uses gets a warning.
-const std::set<std::string> kReadExtensions = {
-    "KHR_materials_emissive_strength", "KHR_materials_ior",
-    "KHR_materials_transmission",      "KHR_materials_volume",
-    "KHR_materials_dispersion",        "KHR_materials_clearcoat"};
+const std::set<std::string> kReadExtensions = {"KHR_materials_emissive_strength",
+                                               "KHR_materials_ior",
+                                               "KHR_materials_transmission",
+                                               "KHR_materials_volume",
+                                               "KHR_materials_dispersion",
+                                               "KHR_materials_clearcoat",
+                                               "KHR_materials_sheen"};
 
 const tinygltf::Value* extension(const tinygltf::ExtensionMap& extensions, const char* name) {
   const auto found = extensions.find(name);
@@ -266,8 +270,8 @@ Shading GltfMaterialReader::dielectricOf(const tinygltf::Material& m, const Mate
                                 TextureUse::Linear, tw + ".transmissionTexture"),
                         0, transmission, &channel);
   }
-  if (surface.coatWeight > 0.0f)
-    warnOnce(tw + ": the transmitted part has no clear coat (candela's glass takes none)");
+  if (surface.coatWeight > 0.0f || hasSheen(surface))
+    warnOnce(tw + ": the transmitted part has no clear coat or sheen (candela's glass takes none)");
   Material glass;
   glass.type = MaterialType::Glass;
   glass.ior = ior;
@@ -339,6 +343,29 @@ void GltfMaterialReader::addCoat(const tinygltf::Material& m, const std::string&
        {"clearcoatTexture", "clearcoatRoughnessTexture", "clearcoatNormalTexture"})
     if (surface->coatWeight > 0.0f && e->Has(map))
       warnOnce(cw + "." + map + " is not read (the coat takes its factors alone)");
+}
+
+void GltfMaterialReader::addSheen(const tinygltf::Material& m, const std::string& where,
+                                  Material* surface) {
+  const tinygltf::Value* e = extension(m.extensions, "KHR_materials_sheen");
+  if (!e) return;
+  const std::string sw = where + ".extensions.KHR_materials_sheen";
+  if (e->Has("sheenColorFactor")) {
+    const tinygltf::Value& c = e->Get("sheenColorFactor");
+    for (int i = 0; i < 3; ++i) {
+      const tinygltf::Value& v = c.IsArray() && c.ArrayLen() == 3 ? c.Get(i) : tinygltf::Value();
+      surface->sheenColor[i] = v.IsNumber() ? float(v.GetNumberAsDouble()) : NAN;
+      if (!(surface->sheenColor[i] >= 0.0f && surface->sheenColor[i] <= 1.0f))
+        throw SceneError(label_ + ": " + sw +
+                         ".sheenColorFactor: expected three numbers in [0, 1]");
+    }
+  }
+  surface->sheenRoughness =
+      unitFactor(extensionNumber(e, "sheenRoughnessFactor", 0.0, label_ + ": " + sw),
+                 label_ + ": " + sw + ".sheenRoughnessFactor");
+  for (const char* map : {"sheenColorTexture", "sheenRoughnessTexture"})
+    if (hasSheen(*surface) && e->Has(map))
+      warnOnce(sw + "." + map + " is not read (the sheen takes its factors alone)");
 }
 
 void GltfMaterialReader::addEmission(const tinygltf::Material& m, const std::string& where,
@@ -421,6 +448,7 @@ Material GltfMaterialReader::read(int index, std::vector<Material>* parts) {
   TextureRef metalRough;
   Material surface = surfaceOf(m, where, &baseHasAlpha, &metalRough);
   addCoat(m, where, &surface);
+  addSheen(m, where, &surface);
   const Shading dielectric = dielectricOf(m, surface, iorOf(m, where), where);
 
   // Metalness: a mix of the dielectric and a conductor of the base colour.

@@ -2,8 +2,8 @@
 // model is a mix, by metalness, of a plastic (the dielectric base under its coat, glTF's
 // fresnel_mix) and a conductor whose reflectance is the base colour; KHR_materials_transmission
 // mixes glass into the dielectric, KHR_materials_ior sets its index, KHR_materials_volume its
-// absorption, KHR_materials_dispersion its Abbe number and KHR_materials_clearcoat a coat over
-// the plastic and the conductor. Normal maps, emission
+// absorption, KHR_materials_dispersion its Abbe number and KHR_materials_clearcoat and
+// KHR_materials_sheen a coat and a sheen over the plastic and the conductor. Normal maps, emission
 // (KHR_materials_emissive_strength), alpha (MASK and BLEND) and KHR_texture_transform are read;
 // what candela does not render is named in a warning.
 #pragma once
@@ -73,6 +73,8 @@ class GltfMaterialReader {
   // KHR_materials_clearcoat's factors, as the coat of the opaque parts (the plastic and the
   // conductor; candela's glass takes none).
   void addCoat(const tinygltf::Material& m, const std::string& where, Material* surface);
+  // KHR_materials_sheen's factors, likewise.
+  void addSheen(const tinygltf::Material& m, const std::string& where, Material* surface);
   void addEmission(const tinygltf::Material& m, const std::string& where, Material* result);
   void addAlpha(const tinygltf::Material& m, const TextureRef& baseTexture, bool baseHasAlpha,
                 const std::string& where, Material* result);

@@ -40,20 +40,21 @@ const std::vector<std::string> kFields = {
     "color", "ior", "roughness", "metal", "radiance", "strength", "two_sided", "normal_map",
     "bump_map", "alpha", "emission", "emission_strength", "emission_two_sided",
     "transmission_depth", "abbe", "visible", "anisotropy", "anisotropy_rotation", "materials",
-    "weight", "coat", "coat_roughness", "coat_ior"};
+    "weight", "coat", "coat_roughness", "coat_ior", "sheen", "sheen_roughness"};
 const std::vector<std::vector<std::string>> kFieldsOf = {
     {"color", "normal_map", "bump_map", "alpha", "emission", "emission_strength", "emission_two_sided",
-     "coat", "coat_roughness", "coat_ior"},  // diffuse
+     "coat", "coat_roughness", "coat_ior", "sheen", "sheen_roughness"},  // diffuse
     {"color", "normal_map", "bump_map", "alpha", "emission", "emission_strength", "emission_two_sided",
-     "coat", "coat_roughness", "coat_ior"},  // mirror
+     "coat", "coat_roughness", "coat_ior", "sheen", "sheen_roughness"},  // mirror
     {"color", "ior", "roughness", "anisotropy", "anisotropy_rotation", "normal_map", "bump_map",
      "alpha", "emission", "emission_strength", "transmission_depth", "abbe"},  // glass
     {"radiance", "strength", "two_sided", "visible"},                          // emissive
     {"color", "roughness", "anisotropy", "anisotropy_rotation", "metal", "normal_map", "bump_map",
      "alpha", "emission", "emission_strength", "emission_two_sided", "coat", "coat_roughness",
-     "coat_ior"},  // conductor
+     "coat_ior", "sheen", "sheen_roughness"},  // conductor
     {"color", "ior", "roughness", "normal_map", "bump_map", "alpha", "emission",
-     "emission_strength", "emission_two_sided", "coat", "coat_roughness", "coat_ior"},  // plastic
+     "emission_strength", "emission_two_sided", "coat", "coat_roughness", "coat_ior", "sheen",
+     "sheen_roughness"},  // plastic
     {"ior"},  // thin_glass
     {"materials", "weight", "alpha", "emission", "emission_strength", "emission_two_sided"},  // mix
 };
@@ -110,6 +111,20 @@ void readCoat(JsonObject& fields, Material* material) {
       (*field)->fail("describes a clear coat; expected a \"coat\" (its weight) beside it");
   if (roughness) material->coatRoughness = roughness->unitNumber("a roughness in [0, 1]");
   if (ior) material->coatIor = ior->positiveNumber();
+}
+
+// "sheen", the colour of a sheen over the material (each channel in [0, 1]), and its
+// "sheen_roughness" (render/bsdf_sheen.h).
+void readSheen(JsonObject& fields, Material* material) {
+  const std::optional<JsonValue> sheen = fields.get("sheen");
+  const std::optional<JsonValue> roughness = fields.get("sheen_roughness");
+  if (roughness && !sheen)
+    roughness->fail("describes a sheen; expected a \"sheen\" (its colour) beside it");
+  if (!sheen) return;
+  material->sheenColor = sheen->colour();
+  if (maxComponent(material->sheenColor) > 1.0f)
+    sheen->fail("expected a colour of channels in [0, 1], got " + formatVec3(material->sheenColor));
+  if (roughness) material->sheenRoughness = roughness->unitNumber("a roughness in [0, 1]");
 }
 
 // `radiance` (a colour, or a texture: material->emissionTexture) times the field `strengthKey`
@@ -344,6 +359,7 @@ MaterialRead readFields(JsonObject& fields, size_t type, TextureLoader& textures
   }
   if (type != kThinGlass) readSurfaceEmission(fields, textures, &material);
   readCoat(fields, &material);
+  readSheen(fields, &material);
   prepareMaterial(&material);
   return {material, {}};
 }

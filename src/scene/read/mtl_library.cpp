@@ -56,6 +56,8 @@ static void collectStatements(const std::string& text, const std::string& label,
       own.pcr = keep(3);
     else if (isKeyword("Pc", 2))
       own.pc = keep(2);
+    else if (isKeyword("Ps", 2))
+      own.ps = keep(2);
     else if (isKeyword("anisor", 6))
       own.anisor = keep(6);
     else if (isKeyword("aniso", 5))

@@ -37,6 +37,8 @@ struct MtlTextures {
   // The PBR extension's clear coat (its weight, as Blender's exporter writes its Coat Weight) and
   // that coat's roughness.
   std::optional<MtlStatement> pc, pcr;
+  // The PBR extension's sheen (Blender's exporter writes its Sheen Weight).
+  std::optional<MtlStatement> ps;
   // A bump map (`bump`, `map_Bump` or `map_bump`, as written in bumpKeyword): heights, read
   // where the material has no `norm`.
   std::optional<MtlStatement> bump;

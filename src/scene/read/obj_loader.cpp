@@ -231,28 +231,31 @@ void applyMetalness(const MtlTextures& s, const tinyobj::material_t& material,
   *desc = mix;
 }
 
-// The PBR extension's clear coat, `Pc` (its weight) and `Pcr` (its roughness), as the coat of
-// `desc` (render/bsdf_coat.h), or of both its parts where it is a mix (Pm); an emissive material
-// takes none, with a warning naming the line.
-void applyMtlCoat(const MtlTextures& s, const std::string& name, Material* desc,
-                  std::vector<Material>* parts, std::vector<std::string>* warnings) {
-  if (!s.pc) return;
-  const float weight = unitNumber(*s.pc, "Pc");
+// The PBR extension's clear coat, `Pc` (its weight) and `Pcr` (its roughness), and its sheen,
+// `Ps` (a grey of that value, roughness 0.5), as the layers of `desc` (render/bsdf_coat.h,
+// render/bsdf_sheen.h), or of both its parts where it is a mix (Pm); an emissive material takes
+// none, with a warning naming the line.
+void applyMtlLayers(const MtlTextures& s, const std::string& name, Material* desc,
+                    std::vector<Material>* parts, std::vector<std::string>* warnings) {
+  const float weight = s.pc ? unitNumber(*s.pc, "Pc") : 0.0f;
   const float roughness = s.pcr ? unitNumber(*s.pcr, "Pcr") : 0.0f;
-  if (weight == 0.0f) return;
+  const float sheen = s.ps ? unitNumber(*s.ps, "Ps") : 0.0f;
+  if (weight == 0.0f && sheen == 0.0f) return;
   if (desc->type == MaterialType::Emissive) {
-    warnings->push_back(s.pc->file + ":" + std::to_string(s.pc->line) +
-                        ": \"Pc\" not used: material \"" + name +
+    const MtlStatement& layer = weight > 0.0f ? *s.pc : *s.ps;
+    warnings->push_back(layer.file + ":" + std::to_string(layer.line) + ": \"" +
+                        (weight > 0.0f ? "Pc" : "Ps") + "\" not used: material \"" + name +
                         "\" is emissive, and an emissive material reflects nothing");
     return;
   }
-  const auto coat = [&](Material* m) {
+  const auto layer = [&](Material* m) {
     m->coatWeight = weight;
     m->coatRoughness = roughness;
+    m->sheenColor = Vec3(sheen);
     prepareMaterial(m);
   };
-  if (desc->type != MaterialType::Mix) return coat(desc);
-  for (const uint32_t part : desc->mixParts) coat(&(*parts)[part]);
+  if (desc->type != MaterialType::Mix) return layer(desc);
+  for (const uint32_t part : desc->mixParts) layer(&(*parts)[part]);
 }
 
 // Ke (times map_Ke) as the emission of `desc`, a material that reflects too (a mix's own where
@@ -386,7 +389,7 @@ std::vector<Material> mtlMaterials(const std::vector<tinyobj::material_t>& mater
         (found->second.pm || found->second.mapPm))
       applyMetalness(found->second, material, label, textures, &desc, mixParts);
     if (found != library.statements.end())
-      applyMtlCoat(found->second, material.name, &desc, mixParts, warnings);
+      applyMtlLayers(found->second, material.name, &desc, mixParts, warnings);
     if (!isBlack(emission) && reflects)
       addMtlEmission(found != library.statements.end() ? &found->second : nullptr, emission,
                      emissionTexture, &desc, warnings);
