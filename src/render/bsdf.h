@@ -146,7 +146,7 @@ CANDELA_HDI bool leavesOnItsSide(const Bsdf& b, const Vec3& wi, float wiLocalZ) 
   return wiLocalZ > 0.0f ? geometric > 0.0f : geometric < 0.0f;
 }
 
-// f |cos(wi)| and the pdf of the material beneath any coat, at wi in the local frame.
+// f |cos(wi)| and the pdf of the material beneath any layers, at wi in the local frame.
 CANDELA_HDI Vec3 evalBase(const Bsdf& b, const Vec3& wi, float* pdf) {
   const Material& m = *b.material;
   switch (m.type) {
@@ -242,7 +242,7 @@ CANDELA_HDI bool sampleBothDeltaLobes(const Bsdf& b, BsdfSample* first, BsdfSamp
   return leavesOnItsSide(b, first->wi, firstZ) && leavesOnItsSide(b, second->wi, secondZ);
 }
 
-// sampleBsdf of the material beneath any coat, in the local frame.
+// sampleBsdf of the material beneath any layers, in the local frame.
 CANDELA_HDI bool sampleBase(const Bsdf& b, float uc, float u1, float u2, BsdfSample* s) {
   const Material& m = *b.material;
   switch (m.type) {

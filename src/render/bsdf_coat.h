@@ -62,8 +62,8 @@ CANDELA_HDI float coatReflectionEvalPdf(const Material& m, const Vec3& wo, const
          (4.0f * wo.z);
 }
 
-// The coated f |cos(wi)| and pdf from the base's (baseF, basePdf) at wi, chosen against the coat
-// with coatProbability p.
+// The coated f |cos(wi)| and pdf from those of what lies beneath (baseF, basePdf) at wi, chosen
+// against the coat with coatProbability p.
 CANDELA_HDI Vec3 coatedEvalPdf(const Material& m, const Vec3& wo, const Vec3& wi, const Vec3& baseF,
                                float basePdf, float p, float* pdf) {
   if (wo.z <= 0.0f || wi.z <= 0.0f) {
