@@ -170,7 +170,7 @@ TEST(GltfMaterials, ClearcoatAndSheenLayerTheOpaqueParts) {
   }
   const std::vector<std::string> expected = {
       "m.gltf: materials[0].extensions.KHR_materials_clearcoat.clearcoatNormalTexture is not "
-      "read (the coat takes its factors alone)"};
+      "read (the coat is as rough as its factor says, and follows the surface's normals)"};
   EXPECT_EQ(mesh.warnings, expected);
   m["extensions"]["KHR_materials_clearcoat"]["clearcoatFactor"] = 2;
   try {
@@ -259,6 +259,33 @@ TEST(GltfMaterials, TexturesInTheFileOrBesideItAndFactorsThatScaleThem) {
     EXPECT_EQ(alpha.texelsF[3], 1.0f);
     EXPECT_EQ(alpha.texelsF[7], 0.0f);
   }
+}
+
+// clearcoatTexture's red channel times clearcoatFactor is the coat's weight, and
+// sheenColorTexture (sRGB) times sheenColorFactor the sheen's colour, point by point.
+TEST(GltfMaterials, ClearcoatAndSheenTexturesTimesTheirFactors) {
+  TempDir dir;
+  nlohmann::json m = pbr(1, 0.5);
+  m["extensions"] = {
+      {"KHR_materials_clearcoat", {{"clearcoatFactor", 0.5}, {"clearcoatTexture", {{"index", 0}}}}},
+      {"KHR_materials_sheen",
+       {{"sheenColorFactor", {1, 0.5, 0.25}}, {"sheenColorTexture", {{"index", 0}}}}}};
+  GltfFile f = quad(nlohmann::json::array({m}));
+  f.addImage(pngBytes(dir));
+  f.doc["textures"] = nlohmann::json::array({nlohmann::json{{"source", 0}}});
+  const auto loaded = load(dir.write("layers.glb", f.glb()));
+  EXPECT_TRUE(loaded->mesh.warnings.empty());
+  const Material& metal = loaded->mesh.materials.at(0);
+  ASSERT_EQ(metal.type, MaterialType::Conductor);
+  EXPECT_EQ(metal.coatWeight, 1.0f);
+  const TextureDesc& coat = *loaded->textures.at(size_t(metal.coatTexture.index));
+  ASSERT_EQ(coat.format, TextureFormat::Float);
+  EXPECT_FLOAT_EQ(coat.texelsF[size_t(4 * 0 + metal.coatChannel)], 0.5f * 10 / 255);
+  EXPECT_FLOAT_EQ(coat.texelsF[size_t(4 * 1 + metal.coatChannel)], 0.5f * 250 / 255);
+  const TextureDesc& sheen = *loaded->textures.at(size_t(metal.sheenTexture.index));
+  EXPECT_EQ(sheen.format, TextureFormat::Srgb8);
+  EXPECT_EQ(metal.sheenColor.y, 0.5f);
+  EXPECT_EQ(metal.sheenColor.z, 0.25f);
 }
 
 // KHR_texture_transform: candela's lookup at (u, 1 - v) reads where glTF's formula, uv' = T R S uv

@@ -14,6 +14,8 @@
 #include "core/constants.h"
 #include "render/material_prepare.h"
 #include "render_test_util.h"
+#include "shading_normal_test_util.h"
+#include "texture_test_util.h"
 
 namespace candela {
 namespace {
@@ -247,6 +249,60 @@ TEST(Sheen, ASmoothSheenIsNormalizedNearTheHorizon) {
   }
   EXPECT_NEAR(m.sheenAlbedo[kPlasticTableSize / 2],
               sheenAlbedo(double(kPlasticTableSize / 2) / (kPlasticTableSize - 1), 0.04), 2e-3);
+}
+
+// The values of every pixel of planeUnderSun's mapped plane (shading_normal_test_util.h) in
+// `material`, 2 spp, in folder `dir`.
+std::vector<float> mappedPlane(const std::filesystem::path& dir, const std::string& material) {
+  const RenderResult r =
+      test::renderTestScene(test::planeUnderSun(material, {0.3, -1, 0.5}, 2), 0, dir.string());
+  return r.image.pixels;
+}
+
+// Stripes of a coat's weight (0 and 1, in the texture's G) and of a sheen's colour across the
+// plane: each pixel renders as the layer's number of its stripe does, to rounding, but where the
+// lookup blends a stripe's edge; each stripe in many pixels.
+TEST(Layers, TexturesGiveTheCoatsWeightAndTheSheensColourPointByPoint) {
+  const std::filesystem::path dir = test::mapTestFolder("layer_stripes");
+  test::writeMappedPlane(dir / "plane.obj");
+  const Vec3 zero(1, 0, 1), one(0, 1, 0);
+  test::writeRowPfm(dir / "stripes.pfm", {zero, zero, zero, zero, one, one, one, one});
+  const std::string base = R"({"type": "conductor", "color": [0.8, 0.3, 0.2], "roughness": 0.4, )";
+  const std::string stripes = R"({"texture": "stripes.pfm", "scale": [40, 1])";
+  const struct {
+    std::string textured, first, second;
+  } cases[] = {
+      {base + R"("coat": )" + stripes + R"(, "channel": "g"}, "coat_roughness": 0.2})",
+       base + R"("coat": 0, "coat_roughness": 0.2})",
+       base + R"("coat": 1, "coat_roughness": 0.2})"},
+      // The sheen is the stripes' colours, (1, 0, 1) and (0, 1, 0).
+      {base + R"("sheen": {"texture": "stripes.pfm", "scale": [40, 1]}, "sheen_roughness": 0.9})",
+       base + R"("sheen": [1, 0, 1], "sheen_roughness": 0.9})",
+       base + R"("sheen": [0, 1, 0], "sheen_roughness": 0.9})"},
+  };
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.textured);
+    const std::vector<float> textured = mappedPlane(dir, c.textured);
+    const std::vector<float> first = mappedPlane(dir, c.first);
+    const std::vector<float> second = mappedPlane(dir, c.second);
+    int asFirst = 0, asSecond = 0;
+    for (size_t i = 0; i < textured.size(); i += 3) {
+      ASSERT_GT(std::fabs(first[i] - second[i]) + std::fabs(first[i + 1] - second[i + 1]),
+                0.002f * (first[i] + first[i + 1]))
+          << "pixel " << i / 3;
+      bool isFirst = true, isSecond = true;
+      for (int k = 0; k < 3; ++k) {
+        isFirst &= std::fabs(textured[i + k] - first[i + k]) <= 1e-5f * first[i + k] + 1e-7f;
+        isSecond &= std::fabs(textured[i + k] - second[i + k]) <= 1e-5f * second[i + k] + 1e-7f;
+      }
+      asFirst += isFirst;
+      asSecond += isSecond;
+    }
+    const int pixels = int(textured.size() / 3);
+    EXPECT_GT(asFirst, pixels / 4);
+    EXPECT_GT(asSecond, pixels / 4);
+    EXPECT_GT(asFirst + asSecond, pixels * 6 / 10);
+  }
 }
 
 std::string materialError(const std::string& material) {

@@ -23,6 +23,7 @@
 #include "render/dispersion.h"
 #include "render/material.h"
 #include "render/scene_view.h"
+#include "render/surface_layers.h"
 
 namespace candela {
 
@@ -59,14 +60,16 @@ struct Bsdf {
   float side;  // +1 when wo lies on ng's side (outside), else -1
   Vec3 wo;     // local (zero for a diffuse surface)
   float eta;   // glass: eta_t / eta_i for light leaving towards wo's side
+  SurfaceLayers layers;  // the coat's weight and the sheen's colour here (where m has them)
 };
 
 // The BSDF of material m at a point of colour `color` and roughness `roughness` (its textures'
-// there: render/surface_color.h) and tangent `tangent` (render/surface_tangent.h: zero for an
-// isotropic material), seen from wo, for a path that carries `channel` (render/dispersion.h).
+// there: render/surface_color.h), tangent `tangent` (render/surface_tangent.h: zero for an
+// isotropic material) and layers `layers` (render/surface_layers.h: unread where m has none),
+// seen from wo, for a path that carries `channel` (render/dispersion.h).
 CANDELA_HDI_ALWAYS Bsdf makeBsdf(const SceneView& scene, const Material& m, const Vec3& color,
-                                 float roughness, const Vec3& tangent, const Vec3& wo,
-                                 const Vec3& ng, const Vec3& ns, int32_t channel) {
+                                 float roughness, const Vec3& tangent, const SurfaceLayers& layers,
+                                 const Vec3& wo, const Vec3& ng, const Vec3& ns, int32_t channel) {
   const float side = sideOf(wo, ng);
   const Vec3 n = facingNormal(wo, ng, ns);
   const Frame frame = tangent.x == 0.0f && tangent.y == 0.0f && tangent.z == 0.0f
@@ -74,7 +77,9 @@ CANDELA_HDI_ALWAYS Bsdf makeBsdf(const SceneView& scene, const Material& m, cons
                           : tangentFrame(n, tangent);
   // A diffuse surface, the most common, never reads wo.
   if (isBareDiffuse(m))
-    return {&m, color, GgxAlpha::isotropic(0.0f), PlasticCoat(), frame, ng, side, Vec3(0.0f), 1.0f};
+    return {
+        &m,   color,          GgxAlpha::isotropic(0.0f), PlasticCoat(), frame, ng, side, Vec3(0.0f),
+        1.0f, SurfaceLayers()};
   const PlasticCoat coat = m.type == MaterialType::Plastic
                                ? plasticCoatAt(m, scene.plasticCoats, roughness)
                                : PlasticCoat();
@@ -86,7 +91,8 @@ CANDELA_HDI_ALWAYS Bsdf makeBsdf(const SceneView& scene, const Material& m, cons
           ng,
           side,
           frame.toLocal(wo),
-          side > 0.0f ? iorFor(m, channel) : 1.0f / iorFor(m, channel)};
+          side > 0.0f ? iorFor(m, channel) : 1.0f / iorFor(m, channel),
+          layers};
 }
 
 // Whether some lobe has a density (next-event estimation and MIS apply), rather than only mirror
@@ -174,11 +180,15 @@ CANDELA_HD_NOINLINE inline Vec3 evalLayered(const Bsdf& b, const Vec3& wi, float
   float p;
   Vec3 f = evalBase(b, wi, &p);
   if (hasSheen(m)) {
-    const float chance = sheenProbability(m, b.color, b.wo.z);
-    f = f * sheenedBaseFactor(m, wi.z, b.wo.z) + sheenEval(m, b.wo, wi);
+    const Vec3& sheen = b.layers.sheen;
+    const float chance = sheenProbability(m, sheen, b.color, b.wo.z);
+    f = f * sheenedBaseFactor(m, sheen, wi.z, b.wo.z) + sheenEval(m, sheen, b.wo, wi);
     p = chance * sheenDirectionPdf(wi) + (1.0f - chance) * p;
   }
-  if (hasCoat(m)) f = coatedEvalPdf(m, b.wo, wi, f, p, coatProbability(m, b.color, b.wo.z), &p);
+  if (hasCoat(m)) {
+    const float w = b.layers.coat;
+    f = coatedEvalPdf(m, w, b.wo, wi, f, p, coatProbability(m, w, b.color, b.wo.z), &p);
+  }
   *pdf = wi.z > 0.0f && b.wo.z > 0.0f ? p : 0.0f;
   return wi.z > 0.0f && b.wo.z > 0.0f ? f : Vec3(0.0f);
 }
@@ -267,13 +277,14 @@ CANDELA_HD_NOINLINE inline bool sampleLayered(const Bsdf& b, float uc, float u1,
                                               BsdfSample* s) {
   const Material& m = *b.material;
   if (b.wo.z <= 0.0f) return false;
-  const float coat = hasCoat(m) ? coatProbability(m, b.color, b.wo.z) : 0.0f;
+  const SurfaceLayers& layers = b.layers;
+  const float coat = hasCoat(m) ? coatProbability(m, layers.coat, b.color, b.wo.z) : 0.0f;
   if (uc < coat) {
-    if (!sampleCoatReflection(m, b.wo, coat, u1, u2, s)) return false;
+    if (!sampleCoatReflection(m, layers.coat, b.wo, coat, u1, u2, s)) return false;
     if (s->delta) return true;
   } else {
     uc = minf((uc - coat) / (1.0f - coat), kOneMinusEpsilon);
-    const float sheen = hasSheen(m) ? sheenProbability(m, b.color, b.wo.z) : 0.0f;
+    const float sheen = hasSheen(m) ? sheenProbability(m, layers.sheen, b.color, b.wo.z) : 0.0f;
     if (uc < sheen) {
       s->wi = sampleSheenDirection(u1, u2);
       s->delta = false;
@@ -282,8 +293,10 @@ CANDELA_HD_NOINLINE inline bool sampleLayered(const Bsdf& b, float uc, float u1,
       if (!sampleBase(b, minf((uc - sheen) / (1.0f - sheen), kOneMinusEpsilon), u1, u2, s))
         return false;
       if (s->delta) {  // the layers' share of it, over the chance of choosing the base
-        if (hasSheen(m)) s->weight *= sheenedBaseFactor(m, s->wi.z, b.wo.z) / (1.0f - sheen);
-        if (hasCoat(m)) s->weight *= coatedBaseFactor(m, s->wi.z, b.wo.z) / (1.0f - coat);
+        if (hasSheen(m))
+          s->weight *= sheenedBaseFactor(m, layers.sheen, s->wi.z, b.wo.z) / (1.0f - sheen);
+        if (hasCoat(m))
+          s->weight *= coatedBaseFactor(m, layers.coat, s->wi.z, b.wo.z) / (1.0f - coat);
         return true;
       }
     }

@@ -1,5 +1,6 @@
 // A clear coat over a material (lacquer over paint, wood or metal; glTF's clearcoat, OpenPBR's and
-// Blender's coat): on the share w = coatWeight of the surface, a dielectric layer of index coatIor,
+// Blender's coat): on the share w of the surface (coatWeight, or its texture's value there:
+// render/surface_layers.h), a dielectric layer of index coatIor,
 // smooth or GGX-rough, reflects as a rough dielectric does (Fresnel at the microfacet), and the
 // material beneath is seen through it, weighted by the coat's transmittance T on the way in and on
 // the way out:
@@ -34,23 +35,23 @@ CANDELA_HDI float coatTransmittance(const Material& m, float cosTheta) {
   return coatTableAt(m.coatTransmittance, cosTheta);
 }
 
-// What the base's f |cos| is multiplied by, for wi and wo of local z cosI and cosO.
-CANDELA_HDI float coatedBaseFactor(const Material& m, float cosI, float cosO) {
-  const float w = m.coatWeight;
+// What the base's f |cos| is multiplied by under a coat of weight w, for wi and wo of local z
+// cosI and cosO.
+CANDELA_HDI float coatedBaseFactor(const Material& m, float w, float cosI, float cosO) {
   return 1.0f - w + w * coatTransmittance(m, cosI) * coatTransmittance(m, cosO);
 }
 
-// The chance of sampling the coat's reflection rather than the base: the coat's reflectance at
-// wo against what the base, of mean colour `color`, can reflect through it.
-CANDELA_HDI float coatProbability(const Material& m, const Vec3& color, float cosO) {
-  const float coat = m.coatWeight * fresnelDielectric(cosO, m.coatIor);
+// The chance of sampling the coat's (of weight w) reflection rather than the base: the coat's
+// reflectance at wo against what the base, of mean colour `color`, can reflect through it.
+CANDELA_HDI float coatProbability(const Material& m, float w, const Vec3& color, float cosO) {
+  const float coat = w * fresnelDielectric(cosO, m.coatIor);
   const float base = (1.0f - coat) * (color.x + color.y + color.z) * (1.0f / 3.0f);
   return coat + base > 0.0f ? coat / (coat + base) : 1.0f;
 }
 
 // The rough coat's reflection, f |cos(wi)|, and the pdf with which its lobe samples wi; zero
 // for a smooth coat, whose mirror reflection is a delta lobe.
-CANDELA_HDI float coatReflectionEvalPdf(const Material& m, const Vec3& wo, const Vec3& wi,
+CANDELA_HDI float coatReflectionEvalPdf(const Material& m, float w, const Vec3& wo, const Vec3& wi,
                                         float* pdf) {
   *pdf = 0.0f;
   const GgxAlpha alpha = coatAlpha(m);
@@ -58,33 +59,33 @@ CANDELA_HDI float coatReflectionEvalPdf(const Material& m, const Vec3& wo, const
   const Vec3 h = normalize(wo + wi);
   const float d = ggxD(h, alpha), g1o = ggxG1(wo, h, alpha);
   *pdf = g1o * d / (4.0f * wo.z);
-  return m.coatWeight * fresnelDielectric(dot(wo, h), m.coatIor) * d * (g1o * ggxG1(wi, h, alpha)) /
+  return w * fresnelDielectric(dot(wo, h), m.coatIor) * d * (g1o * ggxG1(wi, h, alpha)) /
          (4.0f * wo.z);
 }
 
 // The coated f |cos(wi)| and pdf from those of what lies beneath (baseF, basePdf) at wi, chosen
 // against the coat with coatProbability p.
-CANDELA_HDI Vec3 coatedEvalPdf(const Material& m, const Vec3& wo, const Vec3& wi, const Vec3& baseF,
-                               float basePdf, float p, float* pdf) {
+CANDELA_HDI Vec3 coatedEvalPdf(const Material& m, float w, const Vec3& wo, const Vec3& wi,
+                               const Vec3& baseF, float basePdf, float p, float* pdf) {
   if (wo.z <= 0.0f || wi.z <= 0.0f) {
     *pdf = 0.0f;
     return Vec3(0.0f);
   }
   float coatPdf;
-  const float coat = coatReflectionEvalPdf(m, wo, wi, &coatPdf);
+  const float coat = coatReflectionEvalPdf(m, w, wo, wi, &coatPdf);
   *pdf = p * coatPdf + (1.0f - p) * basePdf;
-  return baseF * coatedBaseFactor(m, wi.z, wo.z) + Vec3(coat);
+  return baseF * coatedBaseFactor(m, w, wi.z, wo.z) + Vec3(coat);
 }
 
 // A direction from the coat's lobe (chosen with chance p): a smooth coat's mirror direction,
 // complete in *s, or a rough coat's microfacet reflection, whose weight the caller completes with
 // coatedEvalPdf. False where none leaves.
-CANDELA_HDI bool sampleCoatReflection(const Material& m, const Vec3& wo, float p, float u1,
+CANDELA_HDI bool sampleCoatReflection(const Material& m, float w, const Vec3& wo, float p, float u1,
                                       float u2, BsdfSample* s) {
   const GgxAlpha alpha = coatAlpha(m);
   if (alpha.smooth()) {
     s->wi = Vec3(-wo.x, -wo.y, wo.z);
-    s->weight = Vec3(m.coatWeight * fresnelDielectric(wo.z, m.coatIor) / p);
+    s->weight = Vec3(w * fresnelDielectric(wo.z, m.coatIor) / p);
     s->pdf = 0.0f;
     s->delta = true;
     s->eta = 1.0f;

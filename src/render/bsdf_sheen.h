@@ -11,7 +11,8 @@
 //
 //   f = sheenColor f_sheen + (1 - s K(wi)) (1 - s K(wo)) f_base
 //
-// Reciprocal, and energy is kept. Local shading frame of render/bsdf.h, wo.z > 0.
+// Reciprocal, and energy is kept (the colour may vary over the surface: render/surface_layers.h).
+// Local shading frame of render/bsdf.h, wo.z > 0.
 #pragma once
 
 #include "core/sampling.h"
@@ -45,30 +46,31 @@ CANDELA_HDI float sheenLobeCos(float a, const Vec3& wo, const Vec3& wi) {
   return charlieD(h.z, a) * wi.z / (4.0f * (wi.z + wo.z - wi.z * wo.z));
 }
 
-// The sheen's light kept by the base at cos(theta): 1 - s K(mu).
-CANDELA_HDI float sheenBaseShare(const Material& m, float cosTheta) {
-  return 1.0f - maxComponent(m.sheenColor) * coatTableAt(m.sheenKept, cosTheta);
+// What a sheen of colour `sheen` leaves the base at cos(theta): 1 - s K(mu).
+CANDELA_HDI float sheenBaseShare(const Material& m, const Vec3& sheen, float cosTheta) {
+  return 1.0f - maxComponent(sheen) * coatTableAt(m.sheenKept, cosTheta);
 }
 
 // What the base's f |cos| is multiplied by.
-CANDELA_HDI float sheenedBaseFactor(const Material& m, float cosI, float cosO) {
-  return sheenBaseShare(m, cosI) * sheenBaseShare(m, cosO);
+CANDELA_HDI float sheenedBaseFactor(const Material& m, const Vec3& sheen, float cosI, float cosO) {
+  return sheenBaseShare(m, sheen, cosI) * sheenBaseShare(m, sheen, cosO);
 }
 
-// The sheen's f |cos(wi)| (normalized, coloured), zero where either direction is below.
-CANDELA_HDI Vec3 sheenEval(const Material& m, const Vec3& wo, const Vec3& wi) {
+// The sheen's f |cos(wi)| (normalized, of colour `sheen`), zero where either direction is below.
+CANDELA_HDI Vec3 sheenEval(const Material& m, const Vec3& sheen, const Vec3& wo, const Vec3& wi) {
   if (wo.z <= 0.0f || wi.z <= 0.0f) return Vec3(0.0f);
   const float norm =
       maxf(1.0f, maxf(coatTableAt(m.sheenAlbedo, wi.z), coatTableAt(m.sheenAlbedo, wo.z)));
-  return m.sheenColor * (sheenLobeCos(sheenAlpha(m.sheenRoughness), wo, wi) / norm);
+  return sheen * (sheenLobeCos(sheenAlpha(m.sheenRoughness), wo, wi) / norm);
 }
 
 // The chance of sampling the sheen rather than the base: its albedo at wo against what the base,
 // of mean colour `color`, reflects past it.
-CANDELA_HDI float sheenProbability(const Material& m, const Vec3& color, float cosO) {
-  const float sheen = maxComponent(m.sheenColor) * coatTableAt(m.sheenKept, cosO);
-  const float base = (1.0f - sheen) * (color.x + color.y + color.z) * (1.0f / 3.0f);
-  return sheen + base > 0.0f ? sheen / (sheen + base) : 1.0f;
+CANDELA_HDI float sheenProbability(const Material& m, const Vec3& sheen, const Vec3& color,
+                                   float cosO) {
+  const float share = maxComponent(sheen) * coatTableAt(m.sheenKept, cosO);
+  const float base = (1.0f - share) * (color.x + color.y + color.z) * (1.0f / 3.0f);
+  return share + base > 0.0f ? share / (share + base) : 1.0f;
 }
 
 // The sheen samples the hemisphere uniformly: its lobe is broad, and at low alpha lies at the

@@ -312,7 +312,9 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
     st.throughput *= kept;
   }
   const Bsdf bsdf = makeBsdf(scene, m, color, surfaceRoughness(scene, m, hit, sp),
-                             surfaceTangent(scene, m, hit, sp), wo, sp.ng, sp.ns, st.channel);
+                             surfaceTangent(scene, m, hit, sp),
+                             hasLayers(m) ? surfaceLayers(scene, m, hit, sp) : SurfaceLayers(), wo,
+                             sp.ng, sp.ns, st.channel);
   const Vec3 hemisphere = reflectingHemisphere(bsdf);
   const bool smooth = hasSmoothLobe(m);
   float arrivalPdf = 0.0f;

@@ -53,6 +53,7 @@ struct LightVertex {
   Vec3 color;    // the surface's colour there (textures included)
   float roughness = 0.0f;  // and its roughness
   Vec3 tangent = Vec3(0.0f);  // and its tangent (render/surface_tangent.h)
+  SurfaceLayers layers;       // and its layers (render/surface_layers.h)
   uint32_t material = 0;      // the material met there (a mix's part: render/material_mix.h)
   Vec3 toLight;  // unit direction from sp.p to the light (its point L where it has a surface)
   // What the light sends to the vertex over the density of the subpath up to it, less the
@@ -202,6 +203,7 @@ CANDELA_HDI void traceLightVertex(const SceneView& scene, const Tracer& tracer, 
   lv->color = surfaceColor(scene, m, hit, sp);
   lv->roughness = surfaceRoughness(scene, m, hit, sp);
   lv->tangent = surfaceTangent(scene, m, hit, sp);
+  lv->layers = hasLayers(m) ? surfaceLayers(scene, m, hit, sp) : SurfaceLayers();
   lv->material = material;
   lv->toLight = -ray.direction;
   lv->light = index;
@@ -250,8 +252,8 @@ CANDELA_HDI void connectLightVertex(const SceneView& scene, LightVertex* vertex,
   const Vec3 fHere = evalBsdf(bsdf, wi, &pdfHere);
   if (isBlack(fHere)) return;
   const Material& m = scene.materials[lv.material];
-  const Bsdf there =
-      makeBsdf(scene, m, lv.color, lv.roughness, lv.tangent, -wi, lv.sp.ng, lv.sp.ns, kAllChannels);
+  const Bsdf there = makeBsdf(scene, m, lv.color, lv.roughness, lv.tangent, lv.layers, -wi,
+                              lv.sp.ng, lv.sp.ns, kAllChannels);
   float pdfThere;
   const Vec3 fThere = evalBsdf(there, lv.toLight, &pdfThere);
   const float cosIn = fabsf(dot(lv.sp.ng, lv.toLight)), cosOut = fabsf(dot(lv.sp.ng, wi));

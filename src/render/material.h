@@ -89,6 +89,11 @@ struct Material {
   float coatIor = 1.5f;
   Vec3 sheenColor{0.0f};
   float sheenRoughness = 0.5f;
+  // A texture whose value (luminance, or the channel coatChannel) is the coat's weight in place of
+  // coatWeight (then 1), and one the sheen colour tints (render/surface_layers.h).
+  TextureRef coatTexture;
+  uint32_t coatChannel = kLuminanceChannel;
+  TextureRef sheenTexture;
 
   // Plastic, derived (prepareMaterial): the diffuse light's chance to be reflected back down by
   // the coating from inside, and the coating's transmittance from outside by cos(theta).

@@ -261,15 +261,9 @@ Shading GltfMaterialReader::dielectricOf(const tinygltf::Material& m, const Mate
   if (!(transmission > 0.0f)) return {plastic, {}};
   TextureRef map;
   uint32_t channel = 0;
-  if (e->Has("transmissionTexture")) {
-    const tinygltf::Value& info = e->Get("transmissionTexture");
-    const auto integer = [&](const char* key, int fallback) {
-      return info.Has(key) && info.Get(key).IsInt() ? info.Get(key).GetNumberAsInt() : fallback;
-    };
-    map = scaledChannel(texture({integer("index", -1), integer("texCoord", 0), nullptr},
-                                TextureUse::Linear, tw + ".transmissionTexture"),
-                        0, transmission, &channel);
-  }
+  if (e->Has("transmissionTexture"))
+    map = scaledChannel(extensionTexture(*e, "transmissionTexture", TextureUse::Linear, tw), 0,
+                        transmission, &channel);
   if (surface.coatWeight > 0.0f || hasSheen(surface))
     warnOnce(tw + ": the transmitted part has no clear coat or sheen (candela's glass takes none)");
   Material glass;
@@ -328,6 +322,15 @@ void GltfMaterialReader::addVolume(const tinygltf::Material& m, const std::strin
   }
 }
 
+TextureRef GltfMaterialReader::extensionTexture(const tinygltf::Value& e, const char* key,
+                                                TextureUse use, const std::string& where) {
+  const tinygltf::Value& info = e.Get(key);
+  const auto integer = [&](const char* name, int fallback) {
+    return info.Has(name) && info.Get(name).IsInt() ? info.Get(name).GetNumberAsInt() : fallback;
+  };
+  return texture({integer("index", -1), integer("texCoord", 0), nullptr}, use, where + "." + key);
+}
+
 void GltfMaterialReader::addCoat(const tinygltf::Material& m, const std::string& where,
                                  Material* surface) {
   const tinygltf::Value* e = extension(m.extensions, "KHR_materials_clearcoat");
@@ -339,10 +342,17 @@ void GltfMaterialReader::addCoat(const tinygltf::Material& m, const std::string&
       unitFactor(extensionNumber(e, "clearcoatRoughnessFactor", 0.0, label_ + ": " + cw),
                  label_ + ": " + cw + ".clearcoatRoughnessFactor");
   surface->coatIor = 1.5f;  // the extension's fixed index
-  for (const char* map :
-       {"clearcoatTexture", "clearcoatRoughnessTexture", "clearcoatNormalTexture"})
+  if (surface->coatWeight > 0.0f && e->Has("clearcoatTexture")) {
+    // The weight is the texture's red channel times the factor.
+    surface->coatTexture =
+        scaledChannel(extensionTexture(*e, "clearcoatTexture", TextureUse::Linear, cw), 0,
+                      surface->coatWeight, &surface->coatChannel);
+    surface->coatWeight = 1.0f;
+  }
+  for (const char* map : {"clearcoatRoughnessTexture", "clearcoatNormalTexture"})
     if (surface->coatWeight > 0.0f && e->Has(map))
-      warnOnce(cw + "." + map + " is not read (the coat takes its factors alone)");
+      warnOnce(cw + "." + map + " is not read (the coat is as rough as its factor says, and " +
+               "follows the surface's normals)");
 }
 
 void GltfMaterialReader::addSheen(const tinygltf::Material& m, const std::string& where,
@@ -363,9 +373,11 @@ void GltfMaterialReader::addSheen(const tinygltf::Material& m, const std::string
   surface->sheenRoughness =
       unitFactor(extensionNumber(e, "sheenRoughnessFactor", 0.0, label_ + ": " + sw),
                  label_ + ": " + sw + ".sheenRoughnessFactor");
-  for (const char* map : {"sheenColorTexture", "sheenRoughnessTexture"})
-    if (hasSheen(*surface) && e->Has(map))
-      warnOnce(sw + "." + map + " is not read (the sheen takes its factors alone)");
+  // The colour is the texture's (sRGB) times the factor.
+  if (hasSheen(*surface) && e->Has("sheenColorTexture"))
+    surface->sheenTexture = extensionTexture(*e, "sheenColorTexture", TextureUse::Color, sw);
+  if (hasSheen(*surface) && e->Has("sheenRoughnessTexture"))
+    warnOnce(sw + ".sheenRoughnessTexture is not read (the sheen is as rough as its factor says)");
 }
 
 void GltfMaterialReader::addEmission(const tinygltf::Material& m, const std::string& where,

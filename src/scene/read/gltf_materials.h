@@ -52,6 +52,9 @@ class GltfMaterialReader {
   };
   TextureRef texture(const TextureSlot& slot, TextureUse use, const std::string& where,
                      bool* hasAlpha = nullptr);
+  // The texture that the textureInfo `key` of extension object `e` names (`where` its path).
+  TextureRef extensionTexture(const tinygltf::Value& e, const char* key, TextureUse use,
+                              const std::string& where);
   // A texture made from `ref`'s, each texel's four channels `value` of the source's texel i,
   // read once per (ref's file, `what`).
   TextureRef derived(const TextureRef& ref, const std::string& what,

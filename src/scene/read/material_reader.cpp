@@ -99,11 +99,17 @@ void readAnisotropy(JsonObject& fields, Material* material) {
   }
 }
 
-// "coat", the share of the surface a clear coat covers, and that coat's "coat_roughness" and
-// "coat_ior" (render/bsdf_coat.h).
-void readCoat(JsonObject& fields, Material* material) {
+// "coat", the share of the surface a clear coat covers (a number, or a texture object of them),
+// and that coat's "coat_roughness" and "coat_ior" (render/bsdf_coat.h).
+void readCoat(JsonObject& fields, TextureLoader& textures, Material* material) {
   const std::optional<JsonValue> coat = fields.get("coat");
-  if (coat) material->coatWeight = coat->unitNumber("a coat weight in [0, 1]");
+  if (coat && coat->json().is_object()) {
+    material->coatTexture = readUnitTexture(
+        *coat, textures, "a coat weight in [0, 1] or a texture object", &material->coatChannel);
+    material->coatWeight = 1.0f;  // the texture's values are the weight
+  } else if (coat) {
+    material->coatWeight = coat->unitNumber("a coat weight in [0, 1]", " or a texture object");
+  }
   const std::optional<JsonValue> roughness = fields.get("coat_roughness");
   const std::optional<JsonValue> ior = fields.get("coat_ior");
   for (const std::optional<JsonValue>* field : {&roughness, &ior})
@@ -113,15 +119,15 @@ void readCoat(JsonObject& fields, Material* material) {
   if (ior) material->coatIor = ior->positiveNumber();
 }
 
-// "sheen", the colour of a sheen over the material (each channel in [0, 1]), and its
-// "sheen_roughness" (render/bsdf_sheen.h).
-void readSheen(JsonObject& fields, Material* material) {
+// "sheen", the colour of a sheen over the material (each channel in [0, 1]; or a texture object,
+// as a "color" may be), and its "sheen_roughness" (render/bsdf_sheen.h).
+void readSheen(JsonObject& fields, TextureLoader& textures, Material* material) {
   const std::optional<JsonValue> sheen = fields.get("sheen");
   const std::optional<JsonValue> roughness = fields.get("sheen_roughness");
   if (roughness && !sheen)
     roughness->fail("describes a sheen; expected a \"sheen\" (its colour) beside it");
   if (!sheen) return;
-  material->sheenColor = sheen->colour();
+  material->sheenColor = readTexturedColour(*sheen, textures, &material->sheenTexture);
   if (maxComponent(material->sheenColor) > 1.0f)
     sheen->fail("expected a colour of channels in [0, 1], got " + formatVec3(material->sheenColor));
   if (roughness) material->sheenRoughness = roughness->unitNumber("a roughness in [0, 1]");
@@ -358,8 +364,8 @@ MaterialRead readFields(JsonObject& fields, size_t type, TextureLoader& textures
       break;
   }
   if (type != kThinGlass) readSurfaceEmission(fields, textures, &material);
-  readCoat(fields, &material);
-  readSheen(fields, &material);
+  readCoat(fields, textures, &material);
+  readSheen(fields, textures, &material);
   prepareMaterial(&material);
   return {material, {}};
 }
