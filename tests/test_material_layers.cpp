@@ -3,8 +3,9 @@
 // a coated diffuse plane under the sun seen straight down (no noise), and a coated white ball in
 // a uniform sky (a furnace, against the hemispherical integral of the coat's transmittance).
 // Sheen (render/bsdf_sheen.h), f = c f_sheen + (1 - s K(wi)) (1 - s K(wo)) f_base: the same
-// plane, and a black velvet ball in the sky, against the Charlie lobe integrated here. Then how
-// scenes say them and the refusals. The BSDFs' sampling, reciprocity and energy are tested with
+// plane, and a black velvet ball in the sky, against the Charlie lobe integrated here. Textures
+// of a coat's weight and a sheen's colour, stripe by stripe. Then how scenes say them and the
+// refusals. The BSDFs' sampling, reciprocity and energy are tested with
 // every other material's in test_bsdf.cpp.
 #include <gtest/gtest.h>
 
