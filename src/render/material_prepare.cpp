@@ -101,7 +101,7 @@ struct SheenTables {
 };
 
 SheenTables sheenTables(float alpha) {
-  constexpr int kT = 256, kPhi = 128;
+  constexpr int kT = 128, kPhi = 64;
   SheenTables tables;
   for (int pass = 0; pass < 2; ++pass)
     for (uint32_t k = 0; k < kPlasticTableSize; ++k) {
