@@ -262,14 +262,18 @@ TEST(GltfMaterials, TexturesInTheFileOrBesideItAndFactorsThatScaleThem) {
 }
 
 // clearcoatTexture's red channel times clearcoatFactor is the coat's weight, and
-// sheenColorTexture (sRGB) times sheenColorFactor the sheen's colour, point by point.
+// sheenColorTexture (sRGB) times sheenColorFactor the sheen's colour, point by point; an
+// extension's textureInfo takes its KHR_texture_transform as any other.
 TEST(GltfMaterials, ClearcoatAndSheenTexturesTimesTheirFactors) {
   TempDir dir;
   nlohmann::json m = pbr(1, 0.5);
   m["extensions"] = {
       {"KHR_materials_clearcoat", {{"clearcoatFactor", 0.5}, {"clearcoatTexture", {{"index", 0}}}}},
       {"KHR_materials_sheen",
-       {{"sheenColorFactor", {1, 0.5, 0.25}}, {"sheenColorTexture", {{"index", 0}}}}}};
+       {{"sheenColorFactor", {1, 0.5, 0.25}},
+        {"sheenColorTexture",
+         {{"index", 0},
+          {"extensions", {{"KHR_texture_transform", {{"offset", {0.25, -0.5}}}}}}}}}}};
   GltfFile f = quad(nlohmann::json::array({m}));
   f.addImage(pngBytes(dir));
   f.doc["textures"] = nlohmann::json::array({nlohmann::json{{"source", 0}}});
@@ -286,6 +290,11 @@ TEST(GltfMaterials, ClearcoatAndSheenTexturesTimesTheirFactors) {
   EXPECT_EQ(sheen.format, TextureFormat::Srgb8);
   EXPECT_EQ(metal.sheenColor.y, 0.5f);
   EXPECT_EQ(metal.sheenColor.z, 0.25f);
+  // The sheen texture's KHR_texture_transform: glTF's uv (0, 0) reads its texel at the offset.
+  float cs = 0, ct = 0;
+  textureCoordinates(metal.sheenTexture, 0.0f, 1.0f, &cs, &ct);
+  EXPECT_NEAR(cs, 0.25f, 1e-6f);
+  EXPECT_NEAR(1 - ct, -0.5f, 1e-6f);
 }
 
 // KHR_texture_transform: candela's lookup at (u, 1 - v) reads where glTF's formula, uv' = T R S uv

@@ -328,7 +328,15 @@ TextureRef GltfMaterialReader::extensionTexture(const tinygltf::Value& e, const 
   const auto integer = [&](const char* name, int fallback) {
     return info.Has(name) && info.Get(name).IsInt() ? info.Get(name).GetNumberAsInt() : fallback;
   };
-  return texture({integer("index", -1), integer("texCoord", 0), nullptr}, use, where + "." + key);
+  // tinygltf leaves an extension's textureInfo as plain JSON: its own extensions (a
+  // KHR_texture_transform) made a map as a material's textureInfo has them.
+  tinygltf::ExtensionMap extensions;
+  if (info.Has("extensions") && info.Get("extensions").IsObject()) {
+    const tinygltf::Value& object = info.Get("extensions");
+    for (const std::string& name : object.Keys()) extensions[name] = object.Get(name);
+  }
+  return texture({integer("index", -1), integer("texCoord", 0), &extensions}, use,
+                 where + "." + key);
 }
 
 void GltfMaterialReader::addCoat(const tinygltf::Material& m, const std::string& where,
