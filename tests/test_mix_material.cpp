@@ -56,25 +56,7 @@ TEST(MixMaterial, AWeightOfZeroOrOneIsThatPartAlone) {
   const std::vector<float> mixed = planeImage(
       dir, std::string(R"({"type": "mix", "materials": [)") + kCopper + ", " + kRedPlastic +
                R"(], "weight": {"texture": "stripes.pfm", "scale": [40, 1], "channel": "g"}})");
-  ASSERT_EQ(mixed.size(), first.size());
-  int asFirst = 0, asSecond = 0;
-  for (size_t i = 0; i < mixed.size(); i += 3) {
-    ASSERT_GT(std::fabs(first[i] - second[i]) + std::fabs(first[i + 1] - second[i + 1]),
-              0.05f * (first[i] + first[i + 1]))
-        << "pixel " << i / 3;
-    bool isFirst = true, isSecond = true;
-    for (int c = 0; c < 3; ++c) {
-      isFirst &= std::fabs(mixed[i + c] - first[i + c]) <= 1e-5f * first[i + c] + 1e-7f;
-      isSecond &= std::fabs(mixed[i + c] - second[i + c]) <= 1e-5f * second[i + c] + 1e-7f;
-    }
-    asFirst += isFirst;
-    asSecond += isSecond;
-  }
-  // 24 columns over 1.2 repeats of 8 texels: three eighths of a repeat in each stripe's middle.
-  const int pixels = int(mixed.size() / 3);
-  EXPECT_GT(asFirst, pixels / 4);
-  EXPECT_GT(asSecond, pixels / 4);
-  EXPECT_GT(asFirst + asSecond, pixels * 6 / 10);
+  test::expectEachPixelAsOneStripe(mixed, first, second, 0.05f);
 }
 
 // A diffuse plane under the sun reflects albedo * irradiance * cos / pi. A mix of a mix (albedos
