@@ -3,7 +3,8 @@
 glTF (docs/scene-format.md, *glTF meshes*, *A camera from a glTF file*, *Lights from a glTF
 file*): a camera, a spot light (KHR_lights_punctual), a node tree, one sphere mesh placed by three
 nodes,
-each mesh with a material of its own (a metal-rough mix by a texture, glass by
+each mesh with a material of its own (a metal-rough mix by a texture under a clear coat
+(KHR_materials_clearcoat), glass by
 KHR_materials_transmission, an emission with KHR_materials_emissive_strength), a ground tiled by
 KHR_texture_transform and a screen of holes cut by MASK alpha, the images held in the buffer.
 
@@ -117,7 +118,9 @@ def main(path):
     screen_attr, screen_idx = quad(glb, 1, 1)
     materials = [
         {"name": "striped", "pbrMetallicRoughness": {
-            "baseColorTexture": {"index": 0}, "metallicRoughnessTexture": {"index": 1}}},
+            "baseColorTexture": {"index": 0}, "metallicRoughnessTexture": {"index": 1}},
+         "extensions": {"KHR_materials_clearcoat": {"clearcoatFactor": 1,
+                                                    "clearcoatRoughnessFactor": 0.05}}},
         {"name": "glass", "pbrMetallicRoughness": {
             "baseColorFactor": [0.95, 0.98, 1, 1], "metallicFactor": 0, "roughnessFactor": 0.05},
          "extensions": {"KHR_materials_transmission": {"transmissionFactor": 1},
@@ -165,7 +168,7 @@ def main(path):
     doc = {"asset": {"version": "2.0", "generator": "candela tools/make_gltf_example.py"},
            "extensionsUsed": ["KHR_materials_transmission", "KHR_materials_ior",
                               "KHR_materials_emissive_strength", "KHR_texture_transform",
-                              "KHR_lights_punctual"],
+                              "KHR_lights_punctual", "KHR_materials_clearcoat"],
            "extensions": {"KHR_lights_punctual": lights},
            "scene": 0, "scenes": [{"nodes": [0, 6, 7]}], "nodes": nodes, "meshes": meshes,
            "cameras": cameras,
