@@ -13,6 +13,7 @@
 #include "scene/animation.h"
 #include "scene/camera_resolve.h"
 #include "scene/read/gltf_animation.h"
+#include "scene/read/gltf_camera.h"
 #include "scene/read/gltf_file.h"
 #include "scene/read/scene_loader.h"
 #include "temp_dir.h"
@@ -148,6 +149,20 @@ TEST(GltfCameraAnimation, RefusesWhatItCannotPlay) {
   EXPECT_EQ(error(sceneWith("0")),
             "test.json: camera.gltf_animation: cam.gltf: animations[0].samplers[0].input: key "
             "times must increase, got 0 after 1");
+  // A moved node's own transform is checked as any other's: the parts the animation leaves were
+  // copied into fixed arrays unchecked (found by gltf_fuzzer, which plays the poses directly: a
+  // stack overflow).
+  GltfFile longScale = animatedCamera();
+  longScale.doc["nodes"][2]["scale"] = {1, 1, 1, 1, 1, 1};
+  const std::string path = dir.write("cam.gltf", longScale.gltf());
+  try {
+    readGltfCameraPoses(path, "cam.gltf", 0, "fly", -1, {0.0, 0.5});
+    ADD_FAILURE() << "a scale of six numbers played";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(std::string(e.what()), "cam.gltf: nodes[2].scale: expected 3 numbers");
+  }
+  EXPECT_EQ(error(sceneWith("0")),
+            "test.json: camera.gltf: cam.gltf: nodes[2].scale: expected 3 numbers");
 }
 
 }  // namespace

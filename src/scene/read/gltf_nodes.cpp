@@ -115,8 +115,10 @@ void forEachPlacedNode(const tinygltf::Model& model, const std::string& label,
                        " is reached twice (a node may have one parent and appear once)");
     reached[size_t(index)] = true;
     const tinygltf::Node& node = model.nodes[size_t(index)];
-    GltfMatrix local;
-    if (!(moved && moved(index, node, &local))) local = localTransform(node, label + ": " + where);
+    // The node's own transform is checked (its arrays' sizes, finite numbers) even where an
+    // animation moves it: the override copies the parts it leaves from the node.
+    GltfMatrix local = localTransform(node, label + ": " + where);
+    if (moved) moved(index, node, &local);
     const GltfMatrix world = multiply(parent, local);
     visit(index, node, world);
     for (auto c = node.children.rbegin(); c != node.children.rend(); ++c)
