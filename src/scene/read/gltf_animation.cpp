@@ -138,9 +138,14 @@ bool GltfAnimation::localAt(int index, const tinygltf::Node& node, double t,
   if (found == nodes_.end() || node.matrix.size() == 16) return false;  // glTF: TRS nodes only
   std::array<double, 3> translation{0, 0, 0}, scale{1, 1, 1};
   std::array<double, 4> rotation{0, 0, 0, 1};
-  std::copy(node.translation.begin(), node.translation.end(), translation.begin());
-  std::copy(node.rotation.begin(), node.rotation.end(), rotation.begin());
-  std::copy(node.scale.begin(), node.scale.end(), scale.begin());
+  // The node's own parts, where they have their sizes (forEachPlacedNode refuses those that do
+  // not before it asks).
+  const auto own = [](const std::vector<double>& values, auto* part) {
+    if (values.size() == part->size()) std::copy(values.begin(), values.end(), part->begin());
+  };
+  own(node.translation, &translation);
+  own(node.rotation, &rotation);
+  own(node.scale, &scale);
   const std::array<int, 3>& channels = found->second;
   if (channels[0] >= 0) {
     const Key v = channels_[size_t(channels[0])].at(t);
