@@ -176,6 +176,8 @@ CANDELA_HDI Vec3 evalBase(const Bsdf& b, const Vec3& wi, float* pdf) {
 // evalBase under the material's layers: its sheen (render/bsdf_sheen.h), and over that its coat
 // (render/bsdf_coat.h).
 CANDELA_HD_NOINLINE inline Vec3 evalLayered(const Bsdf& b, const Vec3& wi, float* pdf) {
+  *pdf = 0.0f;
+  if (wi.z <= 0.0f || b.wo.z <= 0.0f) return Vec3(0.0f);
   const Material& m = *b.material;
   float p;
   Vec3 f = evalBase(b, wi, &p);
@@ -189,8 +191,8 @@ CANDELA_HD_NOINLINE inline Vec3 evalLayered(const Bsdf& b, const Vec3& wi, float
     const float w = b.layers.coat;
     f = coatedEvalPdf(m, w, b.wo, wi, f, p, coatProbability(m, w, b.color, b.wo.z), &p);
   }
-  *pdf = wi.z > 0.0f && b.wo.z > 0.0f ? p : 0.0f;
-  return wi.z > 0.0f && b.wo.z > 0.0f ? f : Vec3(0.0f);
+  *pdf = p;
+  return f;
 }
 
 // evalBsdf for every material but a bare diffuse one, at wi in the local frame.

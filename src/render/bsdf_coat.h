@@ -32,7 +32,7 @@ CANDELA_HDI GgxAlpha coatAlpha(const Material& m) {
 // The coat's transmittance at cos(theta) in [0, 1].
 CANDELA_HDI float coatTransmittance(const Material& m, float cosTheta) {
   if (coatAlpha(m).smooth()) return 1.0f - fresnelDielectric(cosTheta, m.coatIor);
-  return coatTableAt(m.coatTransmittance, cosTheta);
+  return cosineTableAt(m.coatTransmittance, cosTheta);
 }
 
 // What the base's f |cos| is multiplied by under a coat of weight w, for wi and wo of local z

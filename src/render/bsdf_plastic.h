@@ -53,22 +53,14 @@ CANDELA_HDI PlasticCoat plasticCoatAt(const Material& m, const float* coatTables
   return coat;
 }
 
-// Linear interpolation in a transmittance table at cos(theta).
-CANDELA_HDI float coatTableAt(const float* table, float cosTheta) {
-  const float x = minf(maxf(cosTheta, 0.0f), 1.0f) * float(kPlasticTableSize - 1);
-  const uint32_t i = x < float(kPlasticTableSize - 2) ? uint32_t(x) : kPlasticTableSize - 2;
-  const float w = x - float(i);
-  return (1.0f - w) * table[i] + w * table[i + 1];
-}
-
 // The coat's transmittance at cos(theta): 1 - F for a smooth coat; for a rough one the table
 // of what its BTDF transmits (masking takes some of it, so it is less than 1 - reflectance).
 CANDELA_HDI float plasticTransmittance(const Material& m, const PlasticCoat& coat, float cosTheta) {
   if (isSmooth(m)) return 1.0f - fresnelDielectric(cosTheta, m.ior);
-  const float t = coatTableAt(coat.transmittance, cosTheta);
+  const float t = cosineTableAt(coat.transmittance, cosTheta);
   if (coat.blend == 0.0f) return t;
   return (1.0f - coat.blend) * t +
-         coat.blend * coatTableAt(coat.transmittance + kPlasticCoatRow, cosTheta);
+         coat.blend * cosineTableAt(coat.transmittance + kPlasticCoatRow, cosTheta);
 }
 
 // Probability of sampling the coat's reflection rather than the base (Mitsuba's choice: the

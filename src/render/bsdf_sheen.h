@@ -16,7 +16,6 @@
 #pragma once
 
 #include "core/sampling.h"
-#include "render/bsdf_plastic.h"
 #include "render/bsdf_sample.h"
 #include "render/material.h"
 
@@ -48,7 +47,7 @@ CANDELA_HDI float sheenLobeCos(float a, const Vec3& wo, const Vec3& wi) {
 
 // What a sheen of colour `sheen` leaves the base at cos(theta): 1 - s K(mu).
 CANDELA_HDI float sheenBaseShare(const Material& m, const Vec3& sheen, float cosTheta) {
-  return 1.0f - maxComponent(sheen) * coatTableAt(m.sheenKept, cosTheta);
+  return 1.0f - maxComponent(sheen) * cosineTableAt(m.sheenKept, cosTheta);
 }
 
 // What the base's f |cos| is multiplied by.
@@ -60,7 +59,7 @@ CANDELA_HDI float sheenedBaseFactor(const Material& m, const Vec3& sheen, float 
 CANDELA_HDI Vec3 sheenEval(const Material& m, const Vec3& sheen, const Vec3& wo, const Vec3& wi) {
   if (wo.z <= 0.0f || wi.z <= 0.0f) return Vec3(0.0f);
   const float norm =
-      maxf(1.0f, maxf(coatTableAt(m.sheenAlbedo, wi.z), coatTableAt(m.sheenAlbedo, wo.z)));
+      maxf(1.0f, maxf(cosineTableAt(m.sheenAlbedo, wi.z), cosineTableAt(m.sheenAlbedo, wo.z)));
   return sheen * (sheenLobeCos(sheenAlpha(m.sheenRoughness), wo, wi) / norm);
 }
 
@@ -68,7 +67,7 @@ CANDELA_HDI Vec3 sheenEval(const Material& m, const Vec3& sheen, const Vec3& wo,
 // of mean colour `color`, reflects past it.
 CANDELA_HDI float sheenProbability(const Material& m, const Vec3& sheen, const Vec3& color,
                                    float cosO) {
-  const float share = maxComponent(sheen) * coatTableAt(m.sheenKept, cosO);
+  const float share = maxComponent(sheen) * cosineTableAt(m.sheenKept, cosO);
   const float base = (1.0f - share) * (color.x + color.y + color.z) * (1.0f / 3.0f);
   return share + base > 0.0f ? share / (share + base) : 1.0f;
 }

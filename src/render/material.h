@@ -28,6 +28,15 @@ enum class MaterialType : uint32_t {
 // Samples of the rough plastic's coating transmittance over cos(theta) in [0, 1] (Mitsuba 3's
 // MTS_ROUGH_TRANSMITTANCE_RES is 64 for the same table).
 constexpr uint32_t kPlasticTableSize = 64;
+
+// Linear interpolation at cos(theta) in a table of kPlasticTableSize samples over cos(theta) in
+// [0, 1]: the plastic's and the coat's transmittance, the sheen's albedo.
+CANDELA_HDI float cosineTableAt(const float* table, float cosTheta) {
+  const float x = minf(maxf(cosTheta, 0.0f), 1.0f) * float(kPlasticTableSize - 1);
+  const uint32_t i = x < float(kPlasticTableSize - 2) ? uint32_t(x) : kPlasticTableSize - 2;
+  const float w = x - float(i);
+  return (1.0f - w) * table[i] + w * table[i + 1];
+}
 // A plastic whose roughness is textured has a table per roughness level instead (SceneView::
 // plasticCoats): kPlasticCoatLevels rows from the smoothest rough surface (alpha kSmoothAlpha) to
 // roughness 1 (render/bsdf_plastic.h, plasticCoatLevelRoughness), each its transmittance table

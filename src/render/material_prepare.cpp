@@ -112,7 +112,7 @@ SheenTables sheenTables(float alpha) {
       for (int i = 0; i < kT; ++i) {
         const double t = (i + 0.5) / kT, cosI = t * t, sinI = std::sqrt(1.0 - cosI * cosI);
         const float normI =
-            pass == 0 ? 1.0f : std::max(1.0f, coatTableAt(tables.albedo, float(cosI)));
+            pass == 0 ? 1.0f : std::max(1.0f, cosineTableAt(tables.albedo, float(cosI)));
         double ring = 0.0;
         for (int j = 0; j < kPhi; ++j) {
           const double phi = kPiDouble * (j + 0.5) / kPhi;
