@@ -44,9 +44,10 @@ const DVec3 kSun{0.3, -1, 0.5};
 // dp/du + dh/du n and dp/dv + dh/dv n, and its normal their cross product, here
 // (-200 dh/du, 40000, 200 dh/dv) up to scale. Every pixel is rho E max(0, n . l) / pi.
 // The plane bumped by the ramp of slopes 0.1 and -0.05 a texel, scale 3 and height 120, the map
-// turned by `rotation` degrees, expected to show the raised surface's normal for slopes
-// (slopeU, slopeV) along u and v.
-void expectRampPlane(const std::string& name, double rotation, double slopeU, double slopeV) {
+// turned by `rotation` degrees (and read as the texture object's further keys `more` say),
+// expected to show the raised surface's normal for slopes (slopeU, slopeV) along u and v.
+void expectRampPlane(const std::string& name, double rotation, double slopeU, double slopeV,
+                     const std::string& more = "") {
   const fs::path dir = test::mapTestFolder(name);
   test::writeMappedPlane(dir / "plane.obj");
   writeRampMap(dir / "h.pfm", 0.1f, -0.05f);
@@ -55,7 +56,7 @@ void expectRampPlane(const std::string& name, double rotation, double slopeU, do
       test::planeUnderSun(
           R"({"type": "diffuse", "color": )" + num(rho) +
               R"(, "bump_map": {"texture": "h.pfm", "scale": [3, 3], "rotation": )" +
-              num(rotation) + R"(, "height": 120}})",
+              num(rotation) + R"(, "height": 120)" + more + "}}",
           kSun, irradiance),
       dir);
   const DVec3 n = unit(DVec3{-200 * slopeU, 40000, 200 * slopeV});
@@ -75,6 +76,16 @@ TEST(BumpMap, HeightsThatRiseSteadilyShadeAPlaneAsTheRaisedSurfacesNormal) {
 // height f_t and dh/dv = sv height f_s, so the ramp's slopes trade places on the plane.
 TEST(BumpMap, ATurnedMapTurnsItsSlopes) {
   expectRampPlane("bump_map_turned", 90, -kScale * kHeight * 4 * -0.05, kScale * kHeight * 4 * 0.1);
+}
+
+// The camera sees the plane's uv (0.5, 0.5), (1.5, 1.5) in the map's copies, the second copy in
+// each direction: mirrored, its heights fall where they rose; clamped, they are level.
+TEST(BumpMap, AMirroredCopyMirrorsItsSlopes) {
+  expectRampPlane("bump_map_mirrored", 0, -kHeight * kScale * 4 * 0.1,
+                  -kHeight * kScale * 4 * -0.05, R"(, "wrap": "mirror")");
+  // Clamped above its top edge, the map is level along v.
+  expectRampPlane("bump_map_mirrored_u", 0, -kHeight * kScale * 4 * 0.1, 0,
+                  R"(, "wrap": ["mirror", "clamp"])");
 }
 
 // A sphere of radius R raised by heights h: its derivatives dp/du = 2 pi R (-d.z, 0, d.x) and
@@ -222,7 +233,7 @@ TEST(BumpMap, TheSceneFormatRefusesWhatItCannotBe) {
             "string \"1\"");
   EXPECT_EQ(error(R"({"type": "diffuse", "bump_map": {"texture": "h.pfm", "strength": 1}})"),
             "s.json: materials.m.bump_map.strength: unknown key, expected one of \"texture\", "
-            "\"scale\", \"offset\", \"rotation\", \"height\"");
+            "\"scale\", \"offset\", \"rotation\", \"wrap\", \"filter\", \"height\"");
   EXPECT_EQ(error(R"({"type": "diffuse", "bump_map": "h.pfm"})"),
             "s.json: materials.m.bump_map: expected a texture object {\"texture\": file, "
             "\"scale\": [su, sv], \"height\": h}, got a string \"h.pfm\"");

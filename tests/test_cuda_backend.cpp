@@ -196,6 +196,43 @@ TEST(CudaBackend, MatchesCpuOnCoatedAndSheenedMaterials) {
   EXPECT_EQ(cpu.rays.camera, gpu.rays.camera);
 }
 
+// Textures clamped, mirrored and read from the nearest texel (core/texture.h's wrap and filter),
+// a mirrored normal map and a clamped emission among them: on the device as on the CPU.
+TEST(CudaBackend, MatchesCpuOnWrappedAndNearestTextures) {
+  REQUIRE_GPU();
+  const std::string dir = ::testing::TempDir();
+  ASSERT_TRUE(test::writeTestPng(dir + "cuda_wrap.png", 2, 2, 3,
+                                 {230, 40, 20, 20, 200, 40, 30, 60, 220, 240, 240, 240}));
+  ASSERT_TRUE(
+      test::writeTestPng(dir + "cuda_wrap_normals.png", 2, 1, 3, {200, 90, 230, 110, 160, 220}));
+  const std::string t = R"("texture": ")" + dir;
+  const SceneData data = test::loadTestScene(R"({
+    "camera": {"width": 48, "height": 36, "fov": 50, "position": [0, 1.5, 6], "look_at": [0, 0.5, 0],
+               "spp": 16},
+    "render": {"max_depth": 6, "seed": 3},
+    "environment": {"color": [0.2, 0.25, 0.3]},
+    "spheres": [
+      {"position": [0, -1000, 0], "radius": 1000,
+       "material": {"type": "diffuse", "color": {)" +
+                                             t + R"(cuda_wrap.png", "scale": [3000, 1500],
+         "wrap": "mirror", "filter": "nearest"}, "normal_map": {)" +
+                                             t + R"(cuda_wrap_normals.png",
+         "scale": [900, 900], "wrap": "mirror"}}},
+      {"position": [-1.2, 0.5, 0], "radius": 0.5,
+       "material": {"type": "plastic", "roughness": 0.3, "color": {)" +
+                                             t + R"(cuda_wrap.png",
+         "scale": [3, 2], "offset": [-1, -0.5], "wrap": ["clamp", "mirror"]}}},
+      {"position": [1.2, 0.5, 0], "radius": 0.5,
+       "material": {"type": "emissive", "radiance": {)" +
+                                             t + R"(cuda_wrap.png", "scale": [2, 2],
+         "offset": [-0.5, -0.5], "wrap": "clamp", "filter": "nearest"}}}],
+    "lights": [{"position": [2, 4, 3], "intensity": 800}]})");
+  const RenderResult cpu = renderCpu(data.view(), RenderOptions{});
+  const RenderResult gpu = renderCuda(data);
+  EXPECT_LT(test::relMseAgainst(cpu.image.pixels, gpu.image.pixels), 1e-4);
+  EXPECT_EQ(cpu.rays.camera, gpu.rays.camera);
+}
+
 // A map of over a million texels is sampled on a grid shifted by half a texel
 // (render/environment.h): the device samples it as the CPU does.
 TEST(CudaBackend, MatchesCpuUnderAMapOfUnsplitTexels) {

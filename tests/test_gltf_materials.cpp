@@ -339,11 +339,61 @@ TEST(GltfMaterials, WhatIsNotRenderedIsNamedInWarnings) {
   const auto loaded = load(dir.write("w.glb", f.glb()));
   const std::vector<std::string> expected = {
       "m.gltf: materials[0]: KHR_materials_iridescence is not rendered",
-      "m.gltf: samplers[0]: clamped or mirrored wrapping is read as repeating (candela's "
-      "textures repeat)",
       "m.gltf: materials[0].pbrMetallicRoughness.baseColorTexture reads TEXCOORD_1; candela "
       "reads TEXCOORD_0 for every texture"};
   EXPECT_EQ(loaded->mesh.warnings, expected);
+}
+
+// A texture's sampler: wrapS and wrapT as the lookup's wrap along the image's x and y, NEAREST
+// magnification as the nearest texel; a texture made from it (the roughness, half the green
+// channel) keeps them, as does the metalness. A sampler that does not exist, or a mode glTF does
+// not define, is refused.
+TEST(GltfMaterials, SamplersWrapAndFilterTheirTextures) {
+  TempDir dir;
+  nlohmann::json m = pbr(1, 0.5);
+  m["pbrMetallicRoughness"]["baseColorTexture"] = {{"index", 0}};
+  m["pbrMetallicRoughness"]["metallicRoughnessTexture"] = {{"index", 1}};
+  GltfFile f = quad(nlohmann::json::array({m}));
+  f.addImage(pngBytes(dir));
+  f.doc["samplers"] = nlohmann::json::array(
+      {nlohmann::json{{"wrapS", 33071}, {"wrapT", 33648}, {"magFilter", 9728}},
+       nlohmann::json{{"wrapS", 33648}, {"magFilter", 9729}, {"minFilter", 9728}}});
+  f.doc["textures"] = nlohmann::json::array({nlohmann::json{{"source", 0}, {"sampler", 0}},
+                                             nlohmann::json{{"source", 0}, {"sampler", 1}}});
+  const auto loaded = load(dir.write("s.glb", f.glb()));
+  EXPECT_TRUE(loaded->mesh.warnings.empty());
+  // A metallicRoughnessTexture makes the material a mix (its weight the blue channel).
+  const Material& mix = loaded->mesh.materials.at(0);
+  ASSERT_EQ(mix.type, MaterialType::Mix);
+  EXPECT_EQ(mix.mixWeightTexture.wrapS, TextureWrap::Mirror);
+  const Material& metal = loaded->mesh.mixParts.at(mix.mixParts[1]);
+  EXPECT_EQ(metal.colorTexture.wrapS, TextureWrap::Clamp);
+  EXPECT_EQ(metal.colorTexture.wrapT, TextureWrap::Mirror);
+  EXPECT_EQ(metal.colorTexture.filter, TextureFilter::Nearest);
+  ASSERT_EQ(loaded->textures.at(size_t(metal.roughnessTexture.index))->format,
+            TextureFormat::Float);  // made from the image: half its green channel
+  EXPECT_EQ(metal.roughnessTexture.wrapS, TextureWrap::Mirror);
+  EXPECT_EQ(metal.roughnessTexture.wrapT, TextureWrap::Repeat);
+  EXPECT_EQ(metal.roughnessTexture.filter, TextureFilter::Bilinear);
+
+  const auto error = [&](const nlohmann::json& samplers, int sampler) {
+    GltfFile g = f;
+    g.doc["samplers"] = samplers;
+    g.doc["textures"][0]["sampler"] = sampler;
+    try {
+      load(dir.write("bad.glb", g.glb()));
+    } catch (const SceneError& e) {
+      return std::string(e.what());
+    }
+    return std::string("(no error)");
+  };
+  EXPECT_EQ(error(f.doc["samplers"], 2),
+            "m.gltf: textures[0].sampler: sampler 2 does not exist (2 samplers)");
+  EXPECT_EQ(error(nlohmann::json::array({nlohmann::json{{"wrapT", 33070}}}), 0),
+            "m.gltf: samplers[0].wrapT: expected 10497 (REPEAT), 33071 (CLAMP_TO_EDGE) or 33648 "
+            "(MIRRORED_REPEAT), got 33070");
+  EXPECT_EQ(error(nlohmann::json::array({nlohmann::json{{"magFilter", 9984}}}), 0),
+            "m.gltf: samplers[0].magFilter: expected 9728 (NEAREST) or 9729 (LINEAR), got 9984");
 }
 
 TEST(GltfMaterials, BrokenMaterialsAreRefusedWithTheirJsonPath) {

@@ -64,7 +64,7 @@ TEST(NormalMap, MirroredUvsMirrorTheMap) { expectTiltedPlane(true); }
 
 // A map turned or mirrored on the surface turns or mirrors its tangent frame with it: turned 90
 // degrees counter-clockwise, the image's x runs along +v (-z on the plane) and its y along -u;
-// mirrored by a scale of -1 in u, its x runs along -u.
+// mirrored by a scale of -1 in u, or read in a mirrored copy of its wrap, its x runs along -u.
 TEST(NormalMap, ATurnedOrMirroredMapTurnsItsFrame) {
   const fs::path dir = test::mapTestFolder("normal_map_turned");
   test::writeMappedPlane(dir / "plane.obj");
@@ -78,7 +78,10 @@ TEST(NormalMap, ATurnedOrMirroredMapTurnsItsFrame) {
   };
   for (const Case& c :
        {Case{R"("rotation": 90)", v, -1.0 * u}, Case{R"("scale": [-1, 1])", -1.0 * u, v},
-        Case{R"("rotation": 180, "offset": [0.3, 0.2])", -1.0 * u, -1.0 * v}}) {
+        Case{R"("rotation": 180, "offset": [0.3, 0.2])", -1.0 * u, -1.0 * v},
+        Case{R"("offset": [1, 0], "wrap": "mirror")", -1.0 * u, v},
+        Case{R"("offset": [-1, 1], "wrap": ["mirror", "mirror"])", -1.0 * u, -1.0 * v},
+        Case{R"("offset": [1, 0], "wrap": "clamp")", u, v}}) {
     SCOPED_TRACE(c.transform);
     const test::RenderedWithNormals r = test::renderWithNormals(
         test::planeUnderSun(R"({"type": "diffuse", "color": )" + num(rho) +

@@ -7,7 +7,8 @@
 //   of the texture's first element in its pool.
 // - (u, v) = (0, 0) is the image's bottom-left corner, (1, 1) its top-right (OBJ's convention),
 //   and texel (i, j) (j counted from the top) has its centre at u = (i + 0.5) / W,
-//   v = 1 - (j + 0.5) / H. Lookups repeat in both u and v and interpolate bilinearly.
+//   v = 1 - (j + 0.5) / H. Lookups repeat in u and v unless the use says otherwise (TextureWrap),
+//   and interpolate bilinearly between texel centres unless it asks for the nearest texel.
 // - Srgb8 decodes R, G and B through a 256-entry table (sRGB -> linear, made once on the host);
 //   alpha is linear in every format.
 #pragma once
@@ -28,8 +29,18 @@ struct Texture {
   TextureFormat format = TextureFormat::Srgb8;
 };
 
+// How a lookup reads the image beyond its edges along one axis: the image repeated, its edge
+// texels held (glTF's CLAMP_TO_EDGE, Mitsuba 3's "clamp"), or repeated with every other copy
+// mirrored (MIRRORED_REPEAT, "mirror").
+enum class TextureWrap : uint8_t { Repeat = 0, Clamp = 1, Mirror = 2 };
+
+// How a lookup reads between texels: bilinear interpolation between the four centres around the
+// point, or the one texel the point lies in (glTF's NEAREST: pixel art, voxel models, id maps).
+enum class TextureFilter : uint8_t { Bilinear = 0, Nearest = 1 };
+
 // A material's use of a texture: which one, how many times it repeats across uv's [0, 1), how
-// far it is turned and where it starts (textureCoordinates).
+// far it is turned and where it starts (textureCoordinates), and how it is read beyond its edges
+// and between its texels.
 struct TextureRef {
   int32_t index = -1;  // into the scene's textures; -1: none
   float scaleU = 1, scaleV = 1;
@@ -37,6 +48,10 @@ struct TextureRef {
   // The cosine and sine of the angle by which the image is turned counter-clockwise on the
   // surface (u right, v up).
   float rotationCos = 1, rotationSin = 0;
+  TextureWrap wrapS = TextureWrap::Repeat;  // along the image's x (s, from textureCoordinates)
+  TextureWrap wrapT = TextureWrap::Repeat;  // along its y (t)
+  TextureFilter filter = TextureFilter::Bilinear;
+  uint8_t unused = 0;  // so that no byte of the struct is left undefined
 };
 
 // The image coordinates that `ref` reads at texture coordinates (u, v): scaled, then turned by
@@ -108,27 +123,69 @@ CANDELA_HDI float wrapUnit(float a) {
   return f >= 0.0f && f < 1.0f ? f : 0.0f;
 }
 
-// The four texels around (u, v) that a bilinear lookup of `ref` blends, and the weights' fractions
-// (fx towards x1, fy towards y1; x right, y down the image).
+// The two texels along one axis of n that a lookup blends, the fraction towards i1, and the sign
+// with which the texel coordinate grows with the image coordinate (-1 in a mirrored copy).
+struct TexelSpan {
+  uint32_t i0, i1;
+  float f;
+  float sign;
+};
+
+// Along an axis of n texels, at image coordinate a (one copy of the image per unit): texel
+// coordinates run along a, or against it where `fromTop` (rows are stored from the image's top).
+CANDELA_HDI TexelSpan texelSpan(float a, uint32_t n, TextureWrap wrap, TextureFilter filter,
+                                bool fromTop) {
+  // c: where in [0, 1] of one copy the lookup reads; NaN and infinities read at 0.
+  float c = 0.0f, sign = 1.0f;
+  if (wrap == TextureWrap::Repeat) {
+    c = wrapUnit(a);
+  } else if (wrap == TextureWrap::Clamp) {
+    c = a > 0.0f ? (a < 1.0f ? a : 1.0f) : 0.0f;
+  } else {
+    const float m = a - 2.0f * floorf(0.5f * a);  // in [0, 2): which copy, and where in it
+    c = m >= 0.0f && m < 2.0f ? m : 0.0f;
+    if (c > 1.0f) {
+      c = 2.0f - c;
+      sign = -1.0f;
+    }
+  }
+  if (fromTop) c = 1.0f - c;
+  const int32_t last = int32_t(n) - 1;
+  const float x = c * float(n);  // in [0, n]
+  if (filter == TextureFilter::Nearest) {
+    const uint32_t i = x < float(n) ? uint32_t(x) : uint32_t(last);
+    return {i, i, 0.0f, sign};
+  }
+  // Texel centres at integers: x - 0.5 in [-0.5, n - 0.5], so i0 in [-1, n - 1].
+  const float xc = x - 0.5f, i0f = floorf(xc);
+  int32_t i0 = int32_t(i0f), i1 = i0 + 1;
+  if (wrap == TextureWrap::Repeat) {
+    // Past an edge the next copy's first texel (c < 1 in a repeat: only i0 = -1 wraps, or i1 = n).
+    if (i0 < 0) i0 += int32_t(n);
+    if (i1 > last) i1 = 0;
+  } else {
+    // Clamped, and mirrored copies, meet their edge texel again past the edge.
+    if (i0 < 0) i0 = 0;
+    if (i1 > last) i1 = last;
+  }
+  return {uint32_t(i0), uint32_t(i1), xc - i0f, sign};
+}
+
+// The four texels around (u, v) that a lookup of `ref` blends, the weights' fractions (fx towards
+// x1, fy towards y1; x right, y down the image), and the signs of x's and y's growth with the image
+// coordinates s and t (TexelSpan::sign; y runs against t).
 struct TexelQuad {
   uint32_t x0, y0, x1, y1;
   float fx, fy;
+  float signX, signY;
 };
 
 CANDELA_HDI TexelQuad texelQuad(const Texture& t, const TextureRef& ref, float u, float v) {
-  // Continuous texel coordinates with texel centres at integers, x right and y down.
   float s, tc;
   textureCoordinates(ref, u, v, &s, &tc);
-  const float x = wrapUnit(s) * float(t.width) - 0.5f;
-  const float y = (1.0f - wrapUnit(tc)) * float(t.height) - 0.5f;
-  const float x0f = floorf(x), y0f = floorf(y);
-  // x0f and y0f lie in [-1, W - 1] and [-1, H - 1]: one wrap suffices.
-  const int32_t w = int32_t(t.width), h = int32_t(t.height);
-  int32_t x0 = int32_t(x0f), y0 = int32_t(y0f);
-  x0 = x0 < 0 ? x0 + w : (x0 >= w ? x0 - w : x0);
-  y0 = y0 < 0 ? y0 + h : (y0 >= h ? y0 - h : y0);
-  const int32_t x1 = x0 + 1 == w ? 0 : x0 + 1, y1 = y0 + 1 == h ? 0 : y0 + 1;
-  return {uint32_t(x0), uint32_t(y0), uint32_t(x1), uint32_t(y1), x - x0f, y - y0f};
+  const TexelSpan x = texelSpan(s, t.width, ref.wrapS, ref.filter, false);
+  const TexelSpan y = texelSpan(tc, t.height, ref.wrapT, ref.filter, true);
+  return {x.i0, y.i0, x.i1, y.i1, x.f, y.f, x.sign, y.sign};
 }
 
 // Texel (x, y) of `t` as linear RGB's luminance (Rec. 709 weights, as Mitsuba 3's).
@@ -141,7 +198,8 @@ CANDELA_HDI float texelLuminance(const TexturePool& pool, const Texture& t, uint
 
 }  // namespace detail
 
-// The texture `ref` at texture coordinates (u, v) (textureCoordinates): bilinear, repeating.
+// The texture `ref` at texture coordinates (u, v) (textureCoordinates), filtered and wrapped as
+// `ref` says.
 CANDELA_HDI TextureSample lookupTexture(const TexturePool& pool, const TextureRef& ref, float u,
                                         float v) {
   const Texture& t = pool.textures[ref.index];
@@ -153,6 +211,16 @@ CANDELA_HDI TextureSample lookupTexture(const TexturePool& pool, const TextureRe
   detail::addTexel(pool, t, q.x0, q.y1, (1.0f - fx) * fy, sum);
   detail::addTexel(pool, t, q.x1, q.y1, fx * fy, sum);
   return {Vec3(sum[0], sum[1], sum[2]), sum[3]};
+}
+
+// Whether the copy of the image that `ref` reads at (u, v) is mirrored along s and along t: -1
+// for a mirrored axis, else 1 (TextureWrap::Mirror's every other copy).
+CANDELA_HDI void textureMirrorSigns(const TextureRef& ref, float u, float v, float* signS,
+                                    float* signT) {
+  float s, t;
+  textureCoordinates(ref, u, v, &s, &t);
+  *signS = detail::texelSpan(s, 1, ref.wrapS, TextureFilter::Nearest, false).sign;
+  *signT = detail::texelSpan(t, 1, ref.wrapT, TextureFilter::Nearest, false).sign;
 }
 
 // The derivatives with respect to u and v of the luminance of `ref`'s bilinear lookup at (u, v)
@@ -167,9 +235,10 @@ CANDELA_HDI void textureLuminanceGradient(const TexturePool& pool, const Texture
   const float f11 = detail::texelLuminance(pool, t, q.x1, q.y1);
   const float ddx = (1.0f - q.fy) * (f10 - f00) + q.fy * (f11 - f01);
   const float ddy = (1.0f - q.fx) * (f01 - f00) + q.fx * (f11 - f10);
-  // x = s W and y = (1 - t) H within a repeat, (s, t) = R(-rotation) (u su, v sv) + offset: the
-  // gradient in (s, t), turned back by the rotation and scaled.
-  const float ds = ddx * float(t.width), dt = -ddy * float(t.height);
+  // x = s W and y = (1 - t) H within a copy (against s and t in a mirrored copy), (s, t) =
+  // R(-rotation) (u su, v sv) + offset: the gradient in (s, t), turned back by the rotation and
+  // scaled. (Clamped beyond an edge, or read from the nearest texel, the cell is flat.)
+  const float ds = ddx * float(t.width) * q.signX, dt = -ddy * float(t.height) * q.signY;
   *ddu = (ref.rotationCos * ds - ref.rotationSin * dt) * ref.scaleU;
   *ddv = (ref.rotationSin * ds + ref.rotationCos * dt) * ref.scaleV;
 }

@@ -4,7 +4,8 @@
 // shading normal, the convention of glTF, Blender and MikkTSpace (OpenGL's: green is +v). The
 // tangent is made perpendicular to the shading normal and the bitangent completes the frame on the
 // side of v's growth, so a mesh whose uvs are mirrored reads its map mirrored too (tangent and
-// bitangent follow the image's x and y where the texture is turned or mirrored by its scale).
+// bitangent follow the image's x and y where the texture is turned or mirrored by its scale or its
+// wrap).
 #pragma once
 
 #include <cmath>
@@ -37,10 +38,11 @@ CANDELA_HDI Vec3 bumpedNormal(const SceneView& scene, const Material& m, const S
 CANDELA_HDI Vec3 normalFromMap(const SceneView& scene, const Material& m, const SurfacePoint& sp,
                                const Vec2& uv, const Vec3& dpdu, const Vec3& dpdv) {
   // The directions in which the image's x and y grow on the surface: along u and v unless the
-  // texture is turned or mirrored.
-  float su, sv, tu, tv;
+  // texture is turned or mirrored (by its scale, or in a mirrored copy of its wrap).
+  float su, sv, tu, tv, signS, signT;
   textureAxes(m.normalMap, &su, &sv, &tu, &tv);
-  const Vec3 imageX = su * dpdu + sv * dpdv, imageY = tu * dpdu + tv * dpdv;
+  textureMirrorSigns(m.normalMap, uv.x, uv.y, &signS, &signT);
+  const Vec3 imageX = signS * (su * dpdu + sv * dpdv), imageY = signT * (tu * dpdu + tv * dpdv);
   const Vec3 along = imageX - dot(imageX, sp.ns) * sp.ns;
   if (!(lengthSquared(along) > 0.0f)) return sp.ns;
   const Vec3 tangent = normalize(along);

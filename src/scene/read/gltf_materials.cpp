@@ -121,14 +121,36 @@ TextureRef GltfMaterialReader::texture(const TextureSlot& slot, TextureUse use,
                      "]: expected a uri or a bufferView");
   }
   if (hasAlpha) *hasAlpha = loaded.hasAlpha;
-  if (t.sampler >= 0 && size_t(t.sampler) < model_.samplers.size()) {
-    const tinygltf::Sampler& s = model_.samplers[size_t(t.sampler)];
-    if (s.wrapS != TINYGLTF_TEXTURE_WRAP_REPEAT || s.wrapT != TINYGLTF_TEXTURE_WRAP_REPEAT)
-      warnOnce("samplers[" + std::to_string(t.sampler) +
-               "]: clamped or mirrored wrapping is read as repeating (candela's textures repeat)");
-  }
   TextureRef ref;
   ref.index = loaded.index;
+  if (t.sampler >= 0) {
+    // glTF's wrapS and wrapT act in the image's coordinates, after KHR_texture_transform, as
+    // candela's do; its magnification filter says whether texels are blended or kept whole (the
+    // minification filter picks among mipmaps, which candela does not make).
+    if (size_t(t.sampler) >= model_.samplers.size())
+      throw SceneError(label_ + ": " + textureWhere + ".sampler: sampler " +
+                       std::to_string(t.sampler) + " does not exist (" +
+                       std::to_string(model_.samplers.size()) + " samplers)");
+    const tinygltf::Sampler& s = model_.samplers[size_t(t.sampler)];
+    const std::string samplerWhere = label_ + ": samplers[" + std::to_string(t.sampler) + "].";
+    const auto wrap = [&](int mode, const char* key) {
+      if (mode == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE) return TextureWrap::Clamp;
+      if (mode == TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT) return TextureWrap::Mirror;
+      if (mode == TINYGLTF_TEXTURE_WRAP_REPEAT) return TextureWrap::Repeat;
+      throw SceneError(samplerWhere + key +
+                       ": expected 10497 (REPEAT), 33071 (CLAMP_TO_EDGE) or 33648 "
+                       "(MIRRORED_REPEAT), got " +
+                       std::to_string(mode));
+    };
+    ref.wrapS = wrap(s.wrapS, "wrapS");
+    ref.wrapT = wrap(s.wrapT, "wrapT");
+    if (s.magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST) {
+      ref.filter = TextureFilter::Nearest;
+    } else if (s.magFilter != -1 && s.magFilter != TINYGLTF_TEXTURE_FILTER_LINEAR) {
+      throw SceneError(samplerWhere + "magFilter: expected 9728 (NEAREST) or 9729 (LINEAR), got " +
+                       std::to_string(s.magFilter));
+    }
+  }
   int texCoord = slot.texCoord;
   // KHR_texture_transform, uv' = T R S uv in glTF's uv (v down the image), brought into
   // candela's (v up: v = 1 - glTF's v, docs/scene-format.md, Textures): the same scale and

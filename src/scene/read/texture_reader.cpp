@@ -159,10 +159,11 @@ struct TextureObject {
 };
 
 // A texture object {"texture": file, "scale": [su, sv], "offset": [ou, ov], "rotation": degrees,
-// ...}, its file read for `use`, with the further keys that `keys` allows.
+// "wrap": mode or [mode, mode], "filter": "bilinear" or "nearest", ...}, its file read for `use`,
+// with the further keys that `keys` allows.
 TextureObject readTextureObject(const JsonValue& value, TextureLoader& textures, TextureUse use,
                                 const std::string& expected, unsigned keys = kNoMoreKeys) {
-  std::vector<std::string> known = {"texture", "scale", "offset", "rotation"};
+  std::vector<std::string> known = {"texture", "scale", "offset", "rotation", "wrap", "filter"};
   if (keys & kHeightKey) known.push_back("height");
   if (keys & kChannelKey) known.push_back("channel");
   JsonObject fields(value, std::move(known), expected);
@@ -193,6 +194,25 @@ TextureObject readTextureObject(const JsonValue& value, TextureLoader& textures,
         std::fmod(double(rotation->number("an angle in degrees")), 360.0) * (kPiDouble / 180.0);
     ref.rotationCos = float(std::cos(radians));
     ref.rotationSin = float(std::sin(radians));
+  }
+  if (std::optional<JsonValue> wrap = fields.get("wrap")) {
+    // In the order of TextureWrap's values; one for both axes, or [along s, along t].
+    const std::vector<std::string> modes = {"repeat", "clamp", "mirror"};
+    if (wrap->json().is_array()) {
+      if (wrap->json().size() != 2)
+        wrap->failExpected("\"repeat\", \"clamp\" or \"mirror\", or an array of two of them");
+      const std::vector<JsonValue> e = wrap->elements();
+      ref.wrapS = TextureWrap(e[0].choice(modes));
+      ref.wrapT = TextureWrap(e[1].choice(modes));
+    } else {
+      ref.wrapS = ref.wrapT = TextureWrap(wrap->choice(modes));
+    }
+  }
+  if (std::optional<JsonValue> filter = fields.get("filter")) {
+    ref.filter = TextureFilter(filter->choice({"bilinear", "nearest"}));
+    // A bump map's slopes are those of its bilinear interpolation; the nearest texel's are 0.
+    if ((keys & kHeightKey) && ref.filter == TextureFilter::Nearest)
+      filter->failExpected("\"bilinear\" (a bump map of the nearest texels would be flat)");
   }
   if (std::optional<JsonValue> given = fields.get("height")) {
     object.height = given->number("a finite, non-zero number");
