@@ -145,8 +145,8 @@ TEST(GltfMaterials, TransmissionIsGlassOfTheIndexAndPartsFollowTheirMix) {
 }
 
 // KHR_materials_clearcoat and KHR_materials_sheen: a coat of index 1.5 and a sheen over the
-// plastic and the conductor, their factors alone; their textures are named in a warning, and a
-// factor outside [0, 1] is refused.
+// plastic and the conductor, their factors alone; the coat's normal texture is named in a warning,
+// and a factor outside [0, 1] is refused.
 TEST(GltfMaterials, ClearcoatAndSheenLayerTheOpaqueParts) {
   TempDir dir;
   nlohmann::json m = pbr(0.3, 0.5);
@@ -170,7 +170,7 @@ TEST(GltfMaterials, ClearcoatAndSheenLayerTheOpaqueParts) {
   }
   const std::vector<std::string> expected = {
       "m.gltf: materials[0].extensions.KHR_materials_clearcoat.clearcoatNormalTexture is not "
-      "read (the coat is as rough as its factor says, and follows the surface's normals)"};
+      "read (the coat follows the surface's normals)"};
   EXPECT_EQ(mesh.warnings, expected);
   m["extensions"]["KHR_materials_clearcoat"]["clearcoatFactor"] = 2;
   try {
@@ -342,6 +342,38 @@ TEST(GltfMaterials, WhatIsNotRenderedIsNamedInWarnings) {
       "m.gltf: materials[0].pbrMetallicRoughness.baseColorTexture reads TEXCOORD_1; candela "
       "reads TEXCOORD_0 for every texture"};
   EXPECT_EQ(loaded->mesh.warnings, expected);
+}
+
+// The clear coat's roughness texture: its green channel times clearcoatRoughnessFactor, a
+// texture of its own, on both parts of the metalness mix.
+TEST(GltfMaterials, ClearcoatRoughnessTextureScalesItsFactor) {
+  TempDir dir;
+  nlohmann::json m = pbr(0.3, 0.5);
+  m["extensions"] = {{"KHR_materials_clearcoat",
+                      {{"clearcoatFactor", 1},
+                       {"clearcoatRoughnessFactor", 0.5},
+                       {"clearcoatRoughnessTexture", {{"index", 0}}}}}};
+  GltfFile f = quad(nlohmann::json::array({m}));
+  f.addImage(pngBytes(dir));
+  f.doc["textures"] = nlohmann::json::array({nlohmann::json{{"source", 0}}});
+  const auto loaded = load(dir.write("c.glb", f.glb()));
+  EXPECT_TRUE(loaded->mesh.warnings.empty());
+  const Material& mix = loaded->mesh.materials.at(0);
+  ASSERT_EQ(mix.type, MaterialType::Mix);
+  for (uint32_t part : mix.mixParts) {
+    const Material& p = loaded->mesh.mixParts.at(part);
+    ASSERT_GE(p.coatRoughnessTexture.index, 0);
+    const TextureDesc& rough = *loaded->textures.at(size_t(p.coatRoughnessTexture.index));
+    ASSERT_EQ(rough.format, TextureFormat::Float);
+    EXPECT_FLOAT_EQ(rough.texelsF[size_t(4 * 0 + p.coatRoughnessChannel)], 0.5f * 200 / 255);
+    EXPECT_FLOAT_EQ(rough.texelsF[size_t(4 * 1 + p.coatRoughnessChannel)], 0.5f * 100 / 255);
+  }
+  // A factor of 0 leaves the coat smooth, whatever the texture.
+  m["extensions"]["KHR_materials_clearcoat"]["clearcoatRoughnessFactor"] = 0;
+  f.doc["materials"][0] = m;
+  const auto smooth = load(dir.write("s.glb", f.glb()));
+  for (uint32_t part : smooth->mesh.materials.at(0).mixParts)
+    EXPECT_LT(smooth->mesh.mixParts.at(part).coatRoughnessTexture.index, 0);
 }
 
 // A texture's sampler: wrapS and wrapT as the lookup's wrap along the image's x and y, NEAREST

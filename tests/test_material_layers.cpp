@@ -13,6 +13,7 @@
 #include <string>
 
 #include "core/constants.h"
+#include "render/bsdf_plastic.h"
 #include "render/material_prepare.h"
 #include "render_test_util.h"
 #include "shading_normal_test_util.h"
@@ -260,9 +261,10 @@ std::vector<float> mappedPlane(const std::filesystem::path& dir, const std::stri
   return r.image.pixels;
 }
 
-// Stripes of a coat's weight (0 and 1, in the texture's G) and of a sheen's colour across the
-// plane: each pixel renders as the layer's number of its stripe does, to rounding, but where the
-// lookup blends a stripe's edge; each stripe in many pixels.
+// Stripes of a coat's weight (0 and 1, in the texture's G), of its roughness (two of the levels
+// of its tables, render/bsdf_plastic.h) and of a sheen's colour across the plane: each pixel
+// renders as the layer's number of its stripe does, to rounding, but where the lookup blends a
+// stripe's edge; each stripe in many pixels.
 TEST(Layers, TexturesGiveTheCoatsWeightAndTheSheensColourPointByPoint) {
   const std::filesystem::path dir = test::mapTestFolder("layer_stripes");
   test::writeMappedPlane(dir / "plane.obj");
@@ -270,12 +272,19 @@ TEST(Layers, TexturesGiveTheCoatsWeightAndTheSheensColourPointByPoint) {
   test::writeRowPfm(dir / "stripes.pfm", {zero, zero, zero, zero, one, one, one, one});
   const std::string base = R"({"type": "conductor", "color": [0.8, 0.3, 0.2], "roughness": 0.4, )";
   const std::string stripes = R"({"texture": "stripes.pfm", "scale": [40, 1])";
+  const float smoother = plasticCoatLevelRoughness(3), rougher = plasticCoatLevelRoughness(17);
+  const Vec3 a(smoother), b(rougher);
+  test::writeRowPfm(dir / "coat_roughness.pfm", {a, a, a, a, b, b, b, b});
   const struct {
     std::string textured, first, second;
   } cases[] = {
       {base + R"("coat": )" + stripes + R"(, "channel": "g"}, "coat_roughness": 0.2})",
        base + R"("coat": 0, "coat_roughness": 0.2})",
        base + R"("coat": 1, "coat_roughness": 0.2})"},
+      {base + R"("coat": 1, "coat_roughness": {"texture": "coat_roughness.pfm", "scale": [40, 1],
+                                                 "channel": "r"}})",
+       base + R"("coat": 1, "coat_roughness": )" + test::num(smoother) + "}",
+       base + R"("coat": 1, "coat_roughness": )" + test::num(rougher) + "}"},
       // The sheen is the stripes' colours, (1, 0, 1) and (0, 1, 0).
       {base + R"("sheen": {"texture": "stripes.pfm", "scale": [40, 1]}, "sheen_roughness": 0.9})",
        base + R"("sheen": [1, 0, 1], "sheen_roughness": 0.9})",

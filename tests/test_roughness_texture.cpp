@@ -79,7 +79,8 @@ TEST(RoughnessTexture, AConstantTextureRendersAsItsValue) {
 }
 
 // Paths that meet light subpaths (the room under a lamp) evaluate the textured surface at both
-// ends of each connection: the ball renders as with the roughness given as a number.
+// ends of each connection: the ball renders as with the roughness given as a number (a clear
+// coat's too, whose light vertices keep the roughness and table they met).
 TEST(RoughnessTexture, LightSubpathsSeeTheTexturedRoughness) {
   const fs::path dir = test::mapTestFolder("roughness_light_paths");
   const float level = plasticCoatLevelRoughness(9);
@@ -92,14 +93,15 @@ TEST(RoughnessTexture, LightSubpathsSeeTheTexturedRoughness) {
     json.replace(json.find(plain), plain.size(), R"("radius": 1, "material": )" + ball + "}");
     return test::renderTestScene(json, 0, dir.string()).image;
   };
-  for (const auto& [material, roughness, map] :
-       {std::tuple<std::string, float, std::string>{R"("type": "conductor", "metal": "Cu")", 0.3f,
-                                                    "r03.pfm"},
-        {R"("type": "plastic", "color": 0.5)", level, "level.pfm"}}) {
+  for (const auto& [material, key, roughness, map] :
+       {std::tuple<std::string, std::string, float, std::string>{
+            R"("type": "conductor", "metal": "Cu")", "roughness", 0.3f, "r03.pfm"},
+        {R"("type": "plastic", "color": 0.5)", "roughness", level, "level.pfm"},
+        {R"("type": "diffuse", "color": 0.5, "coat": 1)", "coat_roughness", level, "level.pfm"}}) {
     SCOPED_TRACE(material);
-    const ImageRGB plain = render("{" + material + R"(, "roughness": )" + num(roughness) + "}");
-    const ImageRGB textured =
-        render("{" + material + R"(, "roughness": {"texture": ")" + map + R"("}})");
+    const std::string field = R"(, ")" + key + R"(": )";
+    const ImageRGB plain = render("{" + material + field + num(roughness) + "}");
+    const ImageRGB textured = render("{" + material + field + R"({"texture": ")" + map + R"("}})");
     for (uint32_t y = 0; y < plain.height; ++y)
       for (uint32_t x = 0; x < plain.width; ++x)
         for (int c = 0; c < 3; ++c)

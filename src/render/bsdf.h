@@ -98,7 +98,7 @@ CANDELA_HDI_ALWAYS Bsdf makeBsdf(const SceneView& scene, const Material& m, cons
 // Whether some lobe has a density (next-event estimation and MIS apply), rather than only mirror
 // and refraction directions.
 CANDELA_HDI bool hasSmoothLobe(const Material& m) {
-  if (hasSheen(m) || (hasCoat(m) && !coatAlpha(m).smooth())) return true;
+  if (hasSheen(m) || hasRoughCoat(m)) return true;
   switch (m.type) {
     case MaterialType::Diffuse:
     case MaterialType::Plastic:
@@ -187,10 +187,9 @@ CANDELA_HD_NOINLINE inline Vec3 evalLayered(const Bsdf& b, const Vec3& wi, float
     f = f * sheenedBaseFactor(m, sheen, wi.z, b.wo.z) + sheenEval(m, sheen, b.wo, wi);
     p = chance * sheenDirectionPdf(wi) + (1.0f - chance) * p;
   }
-  if (hasCoat(m)) {
-    const float w = b.layers.coat;
-    f = coatedEvalPdf(m, w, b.wo, wi, f, p, coatProbability(m, w, b.color, b.wo.z), &p);
-  }
+  if (hasCoat(m))
+    f = coatedEvalPdf(m, b.layers, b.wo, wi, f, p, coatProbability(m, b.layers, b.color, b.wo.z),
+                      &p);
   *pdf = p;
   return f;
 }
@@ -280,9 +279,9 @@ CANDELA_HD_NOINLINE inline bool sampleLayered(const Bsdf& b, float uc, float u1,
   const Material& m = *b.material;
   if (b.wo.z <= 0.0f) return false;
   const SurfaceLayers& layers = b.layers;
-  const float coat = hasCoat(m) ? coatProbability(m, layers.coat, b.color, b.wo.z) : 0.0f;
+  const float coat = hasCoat(m) ? coatProbability(m, layers, b.color, b.wo.z) : 0.0f;
   if (uc < coat) {
-    if (!sampleCoatReflection(m, layers.coat, b.wo, coat, u1, u2, s)) return false;
+    if (!sampleCoatReflection(m, layers, b.wo, coat, u1, u2, s)) return false;
     if (s->delta) return true;
   } else {
     uc = minf((uc - coat) / (1.0f - coat), kOneMinusEpsilon);
@@ -297,8 +296,7 @@ CANDELA_HD_NOINLINE inline bool sampleLayered(const Bsdf& b, float uc, float u1,
       if (s->delta) {  // the layers' share of it, over the chance of choosing the base
         if (hasSheen(m))
           s->weight *= sheenedBaseFactor(m, layers.sheen, s->wi.z, b.wo.z) / (1.0f - sheen);
-        if (hasCoat(m))
-          s->weight *= coatedBaseFactor(m, layers.coat, s->wi.z, b.wo.z) / (1.0f - coat);
+        if (hasCoat(m)) s->weight *= coatedBaseFactor(m, layers, s->wi.z, b.wo.z) / (1.0f - coat);
         return true;
       }
     }

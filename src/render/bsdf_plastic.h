@@ -32,6 +32,26 @@ CANDELA_HDI float plasticCoatLevelRoughness(uint32_t level) {
   return lowest + (1.0f - lowest) * t * t;
 }
 
+// The row of a coat table (kPlasticCoatLevels rows of kPlasticCoatRow, from
+// plasticCoatLevelRoughness) that a coat of roughness `roughness` reads, blended by *blend with
+// the row after it: the two levels around it.
+CANDELA_HDI const float* coatTableRow(const float* table, float roughness, float* blend) {
+  const float lowest = smoothestRoughRoughness();
+  const float x = sqrtf((minf(maxf(roughness, lowest), 1.0f) - lowest) / (1.0f - lowest)) *
+                  float(kPlasticCoatLevels - 1);
+  const uint32_t level = x < float(kPlasticCoatLevels - 2) ? uint32_t(x) : kPlasticCoatLevels - 2;
+  *blend = x - float(level);
+  return table + level * kPlasticCoatRow;
+}
+
+// A coat's transmittance at cos(theta) from its table `row` (of kPlasticTableSize), blended by
+// `blend` with the row after it (coatTableRow; 0: the row alone).
+CANDELA_HDI float coatTableAt(const float* row, float blend, float cosTheta) {
+  const float t = cosineTableAt(row, cosTheta);
+  if (blend == 0.0f) return t;
+  return (1.0f - blend) * t + blend * cosineTableAt(row + kPlasticCoatRow, cosTheta);
+}
+
 // m's coat at a point of roughness `roughness` (render/surface_color.h); coatTables is
 // SceneView::plasticCoats, which a textured roughness reads between its two nearest levels.
 CANDELA_HDI PlasticCoat plasticCoatAt(const Material& m, const float* coatTables, float roughness) {
@@ -41,12 +61,7 @@ CANDELA_HDI PlasticCoat plasticCoatAt(const Material& m, const float* coatTables
     coat.internalReflectance = m.plasticInternalReflectance;
     return coat;
   }
-  const float lowest = smoothestRoughRoughness();
-  const float x = sqrtf((minf(maxf(roughness, lowest), 1.0f) - lowest) / (1.0f - lowest)) *
-                  float(kPlasticCoatLevels - 1);
-  const uint32_t level = x < float(kPlasticCoatLevels - 2) ? uint32_t(x) : kPlasticCoatLevels - 2;
-  coat.blend = x - float(level);
-  coat.transmittance = coatTables + m.plasticCoatTable + level * kPlasticCoatRow;
+  coat.transmittance = coatTableRow(coatTables + m.plasticCoatTable, roughness, &coat.blend);
   const float* internal = coat.transmittance + kPlasticTableSize;
   coat.internalReflectance =
       (1.0f - coat.blend) * internal[0] + coat.blend * internal[kPlasticCoatRow];
@@ -57,10 +72,7 @@ CANDELA_HDI PlasticCoat plasticCoatAt(const Material& m, const float* coatTables
 // of what its BTDF transmits (masking takes some of it, so it is less than 1 - reflectance).
 CANDELA_HDI float plasticTransmittance(const Material& m, const PlasticCoat& coat, float cosTheta) {
   if (isSmooth(m)) return 1.0f - fresnelDielectric(cosTheta, m.ior);
-  const float t = cosineTableAt(coat.transmittance, cosTheta);
-  if (coat.blend == 0.0f) return t;
-  return (1.0f - coat.blend) * t +
-         coat.blend * cosineTableAt(coat.transmittance + kPlasticCoatRow, cosTheta);
+  return coatTableAt(coat.transmittance, coat.blend, cosTheta);
 }
 
 // Probability of sampling the coat's reflection rather than the base (Mitsuba's choice: the

@@ -103,6 +103,13 @@ struct Material {
   TextureRef coatTexture;
   uint32_t coatChannel = kLuminanceChannel;
   TextureRef sheenTexture;
+  // A texture whose value (luminance, or the channel coatRoughnessChannel) is the coat's roughness
+  // in place of coatRoughness: the coat is then rough everywhere, and its transmittance comes from
+  // the tables by roughness level at SceneView::plasticCoats + coatTable (the plastic's, of index
+  // coatIor; set when the scene is flattened, -1: none).
+  TextureRef coatRoughnessTexture;
+  uint32_t coatRoughnessChannel = kLuminanceChannel;
+  int32_t coatTable = -1;
 
   // Plastic, derived (prepareMaterial): the diffuse light's chance to be reflected back down by
   // the coating from inside, and the coating's transmittance from outside by cos(theta).

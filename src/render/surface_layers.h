@@ -1,13 +1,16 @@
 // The layers over a material at a surface point (render/bsdf_coat.h, render/bsdf_sheen.h): the
-// coat's weight and the sheen's colour, each the material's own, or where it has a texture for
-// it, the texture's value there (the coat's from its luminance or a channel, at most 1; the sheen
-// colour times the texture's colour, each channel at most 1).
+// coat's weight and roughness and the sheen's colour, each the material's own, or where it has a
+// texture for it, the texture's value there (the coat's from its luminance or a channel, at most
+// 1, a textured roughness at least the smoothest rough one; the sheen colour times the texture's
+// colour, each channel at most 1).
 #pragma once
 
 #include "core/texture.h"
 #include "geometry/surface.h"
 #include "geometry/surface_uv.h"
+#include "render/bsdf_plastic.h"
 #include "render/material.h"
+#include "render/microfacet.h"
 #include "render/scene_view.h"
 
 namespace candela {
@@ -15,18 +18,29 @@ namespace candela {
 struct SurfaceLayers {
   float coat = 0.0f;
   Vec3 sheen{0.0f};
+  // The coat's roughness, and its transmittance table by cos(theta) (a rough coat's: blended by
+  // coatBlend with the row after it where the roughness is textured, render/bsdf_plastic.h's
+  // coatTableAt).
+  float coatRoughness = 0.0f;
+  float coatBlend = 0.0f;
+  const float* coatTransmittance = nullptr;
 };
 
 // The layers of a material without textures for them.
 CANDELA_HDI SurfaceLayers untexturedLayers(const Material& m) {
-  return {m.coatWeight, m.sheenColor};
+  return {m.coatWeight, m.sheenColor, m.coatRoughness, 0.0f, m.coatTransmittance};
+}
+
+// Whether m has a texture for one of its layers' values.
+CANDELA_HDI bool hasLayerTextures(const Material& m) {
+  return m.coatTexture.index >= 0 || m.sheenTexture.index >= 0 || m.coatRoughnessTexture.index >= 0;
 }
 
 // Out of line: most materials have no layers, and few layers have textures.
 CANDELA_HD_NOINLINE inline SurfaceLayers surfaceLayers(const SceneView& scene, const Material& m,
                                                        const Hit& hit, const SurfacePoint& sp) {
   SurfaceLayers layers = untexturedLayers(m);
-  if (m.coatTexture.index < 0 && m.sheenTexture.index < 0) return layers;
+  if (!hasLayerTextures(m)) return layers;
   const Vec2 uv = surfaceUv(scene, hit, sp);
   if (m.coatTexture.index >= 0)
     layers.coat = minf(textureChannel(lookupTexture(scene.texturePool(), m.coatTexture, uv.x, uv.y),
@@ -36,6 +50,13 @@ CANDELA_HD_NOINLINE inline SurfaceLayers surfaceLayers(const SceneView& scene, c
     layers.sheen =
         min(Vec3(1.0f),
             layers.sheen * lookupTexture(scene.texturePool(), m.sheenTexture, uv.x, uv.y).rgb);
+  if (m.coatRoughnessTexture.index >= 0) {
+    const TextureSample s = lookupTexture(scene.texturePool(), m.coatRoughnessTexture, uv.x, uv.y);
+    layers.coatRoughness =
+        minf(maxf(textureChannel(s, m.coatRoughnessChannel), smoothestRoughRoughness()), 1.0f);
+    layers.coatTransmittance =
+        coatTableRow(scene.plasticCoats + m.coatTable, layers.coatRoughness, &layers.coatBlend);
+  }
   return layers;
 }
 

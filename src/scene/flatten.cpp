@@ -306,18 +306,23 @@ void addInstances(SceneData& s, const SceneDesc& desc, bool geometry) {
   if (geometry && !s.vertexColors.empty()) s.vertexColors.resize(s.positions.size(), Vec3(1.0f));
 }
 
-// The coat tables of the plastics whose roughness is textured, one per index of refraction.
+// The coat tables by roughness level, one per index of refraction, of the plastics whose
+// roughness is textured and of the clear coats whose roughness is.
 void addPlasticCoats(SceneData& s) {
   std::map<float, int32_t> offsets;
-  for (Material& m : s.materials) {
-    if (m.type != MaterialType::Plastic || m.roughnessTexture.index < 0) continue;
-    auto found = offsets.find(m.ior);
+  const auto tableOf = [&](float ior) {
+    auto found = offsets.find(ior);
     if (found == offsets.end()) {
-      found = offsets.emplace(m.ior, int32_t(s.plasticCoats.size())).first;
-      const std::vector<float> table = plasticCoatTable(m.ior);
+      found = offsets.emplace(ior, int32_t(s.plasticCoats.size())).first;
+      const std::vector<float> table = plasticCoatTable(ior);
       s.plasticCoats.insert(s.plasticCoats.end(), table.begin(), table.end());
     }
-    m.plasticCoatTable = found->second;
+    return found->second;
+  };
+  for (Material& m : s.materials) {
+    if (m.type == MaterialType::Plastic && m.roughnessTexture.index >= 0)
+      m.plasticCoatTable = tableOf(m.ior);
+    if (m.coatWeight > 0.0f && m.coatRoughnessTexture.index >= 0) m.coatTable = tableOf(m.coatIor);
   }
 }
 

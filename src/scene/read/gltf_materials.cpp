@@ -379,10 +379,16 @@ void GltfMaterialReader::addCoat(const tinygltf::Material& m, const std::string&
                       surface->coatWeight, &surface->coatChannel);
     surface->coatWeight = 1.0f;
   }
-  for (const char* map : {"clearcoatRoughnessTexture", "clearcoatNormalTexture"})
-    if (surface->coatWeight > 0.0f && e->Has(map))
-      warnOnce(cw + "." + map + " is not read (the coat is as rough as its factor says, and " +
-               "follows the surface's normals)");
+  if (surface->coatWeight > 0.0f && surface->coatRoughness > 0.0f &&
+      e->Has("clearcoatRoughnessTexture")) {
+    // The roughness is the texture's green channel times the factor (a factor of 0 leaves the
+    // coat smooth).
+    surface->coatRoughnessTexture =
+        scaledChannel(extensionTexture(*e, "clearcoatRoughnessTexture", TextureUse::Linear, cw), 1,
+                      surface->coatRoughness, &surface->coatRoughnessChannel);
+  }
+  if (surface->coatWeight > 0.0f && e->Has("clearcoatNormalTexture"))
+    warnOnce(cw + ".clearcoatNormalTexture is not read (the coat follows the surface's normals)");
 }
 
 void GltfMaterialReader::addSheen(const tinygltf::Material& m, const std::string& where,

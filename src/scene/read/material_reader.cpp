@@ -100,7 +100,8 @@ void readAnisotropy(JsonObject& fields, Material* material) {
 }
 
 // "coat", the share of the surface a clear coat covers (a number, or a texture object of them),
-// and that coat's "coat_roughness" and "coat_ior" (render/bsdf_coat.h).
+// and that coat's "coat_roughness" (a number or a texture object) and "coat_ior"
+// (render/bsdf_coat.h).
 void readCoat(JsonObject& fields, TextureLoader& textures, Material* material) {
   const std::optional<JsonValue> coat = fields.get("coat");
   if (coat && coat->json().is_object()) {
@@ -115,7 +116,13 @@ void readCoat(JsonObject& fields, TextureLoader& textures, Material* material) {
   for (const std::optional<JsonValue>* field : {&roughness, &ior})
     if (*field && !coat)
       (*field)->fail("describes a clear coat; expected a \"coat\" (its weight) beside it");
-  if (roughness) material->coatRoughness = roughness->unitNumber("a roughness in [0, 1]");
+  if (roughness && roughness->json().is_object())
+    material->coatRoughnessTexture =
+        readUnitTexture(*roughness, textures, "a roughness in [0, 1] or a texture object",
+                        &material->coatRoughnessChannel);
+  else if (roughness)
+    material->coatRoughness =
+        roughness->unitNumber("a roughness in [0, 1]", " or a texture object");
   if (ior) material->coatIor = ior->positiveNumber();
 }
 
