@@ -197,8 +197,8 @@ TEST(CudaBackend, MatchesCpuOnCoatedAndSheenedMaterials) {
 }
 
 // Textures clamped, mirrored and read from the nearest texel (core/texture.h's wrap and filter),
-// a mirrored normal map and a clamped emission among them, and a clear coat of textured roughness
-// (its transmittance from the tables by level): on the device as on the CPU.
+// a mirrored normal map and a clamped emission among them, and a clear coat and a sheen of textured
+// roughness (their tables by level): on the device as on the CPU.
 TEST(CudaBackend, MatchesCpuOnWrappedAndNearestTextures) {
   REQUIRE_GPU();
   const std::string dir = ::testing::TempDir();
@@ -223,7 +223,9 @@ TEST(CudaBackend, MatchesCpuOnWrappedAndNearestTextures) {
        "material": {"type": "plastic", "roughness": 0.3, "color": {)" +
                                              t + R"(cuda_wrap.png",
          "scale": [3, 2], "offset": [-1, -0.5], "wrap": ["clamp", "mirror"]}, "coat": 1,
-         "coat_roughness": {)" + t + R"(cuda_wrap.png", "scale": [4, 4], "channel": "g"}}},
+         "coat_roughness": {)" + t + R"(cuda_wrap.png", "scale": [4, 4], "channel": "g"},
+         "sheen": [0.5, 0.4, 0.3], "sheen_roughness": {)" +
+                                             t + R"(cuda_wrap.png", "channel": "r"}}},
       {"position": [1.2, 0.5, 0], "radius": 0.5,
        "material": {"type": "emissive", "radiance": {)" +
                                              t + R"(cuda_wrap.png", "scale": [2, 2],

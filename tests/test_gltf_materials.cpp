@@ -344,15 +344,20 @@ TEST(GltfMaterials, WhatIsNotRenderedIsNamedInWarnings) {
   EXPECT_EQ(loaded->mesh.warnings, expected);
 }
 
-// The clear coat's roughness texture: its green channel times clearcoatRoughnessFactor, a
-// texture of its own, on both parts of the metalness mix.
-TEST(GltfMaterials, ClearcoatRoughnessTextureScalesItsFactor) {
+// The clear coat's roughness texture: its green channel times clearcoatRoughnessFactor; the
+// sheen's: its alpha channel times sheenRoughnessFactor; each a texture of its own, on both parts
+// of the metalness mix.
+TEST(GltfMaterials, ClearcoatAndSheenRoughnessTexturesScaleTheirFactors) {
   TempDir dir;
   nlohmann::json m = pbr(0.3, 0.5);
   m["extensions"] = {{"KHR_materials_clearcoat",
                       {{"clearcoatFactor", 1},
                        {"clearcoatRoughnessFactor", 0.5},
-                       {"clearcoatRoughnessTexture", {{"index", 0}}}}}};
+                       {"clearcoatRoughnessTexture", {{"index", 0}}}}},
+                     {"KHR_materials_sheen",
+                      {{"sheenColorFactor", {0.5, 0.25, 1}},
+                       {"sheenRoughnessFactor", 0.8},
+                       {"sheenRoughnessTexture", {{"index", 0}}}}}};
   GltfFile f = quad(nlohmann::json::array({m}));
   f.addImage(pngBytes(dir));
   f.doc["textures"] = nlohmann::json::array({nlohmann::json{{"source", 0}}});
@@ -367,13 +372,21 @@ TEST(GltfMaterials, ClearcoatRoughnessTextureScalesItsFactor) {
     ASSERT_EQ(rough.format, TextureFormat::Float);
     EXPECT_FLOAT_EQ(rough.texelsF[size_t(4 * 0 + p.coatRoughnessChannel)], 0.5f * 200 / 255);
     EXPECT_FLOAT_EQ(rough.texelsF[size_t(4 * 1 + p.coatRoughnessChannel)], 0.5f * 100 / 255);
+    ASSERT_GE(p.sheenRoughnessTexture.index, 0);
+    const TextureDesc& fibres = *loaded->textures.at(size_t(p.sheenRoughnessTexture.index));
+    ASSERT_EQ(fibres.format, TextureFormat::Float);
+    EXPECT_FLOAT_EQ(fibres.texelsF[size_t(4 * 0 + p.sheenRoughnessChannel)], 0.8f);
+    EXPECT_FLOAT_EQ(fibres.texelsF[size_t(4 * 1 + p.sheenRoughnessChannel)], 0.0f);
   }
-  // A factor of 0 leaves the coat smooth, whatever the texture.
+  // A factor of 0 leaves the coat smooth and the sheen's fibres upright, whatever the texture.
   m["extensions"]["KHR_materials_clearcoat"]["clearcoatRoughnessFactor"] = 0;
+  m["extensions"]["KHR_materials_sheen"]["sheenRoughnessFactor"] = 0;
   f.doc["materials"][0] = m;
   const auto smooth = load(dir.write("s.glb", f.glb()));
-  for (uint32_t part : smooth->mesh.materials.at(0).mixParts)
+  for (uint32_t part : smooth->mesh.materials.at(0).mixParts) {
     EXPECT_LT(smooth->mesh.mixParts.at(part).coatRoughnessTexture.index, 0);
+    EXPECT_LT(smooth->mesh.mixParts.at(part).sheenRoughnessTexture.index, 0);
+  }
 }
 
 // A texture's sampler: wrapS and wrapT as the lookup's wrap along the image's x and y, NEAREST

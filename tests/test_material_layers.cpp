@@ -9,12 +9,16 @@
 // every other material's in test_bsdf.cpp.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "core/constants.h"
 #include "render/bsdf_plastic.h"
+#include "render/bsdf_sheen.h"
 #include "render/material_prepare.h"
+#include "render/surface_layers.h"
 #include "render_test_util.h"
 #include "shading_normal_test_util.h"
 #include "texture_test_util.h"
@@ -253,6 +257,47 @@ TEST(Sheen, ASmoothSheenIsNormalizedNearTheHorizon) {
               sheenAlbedo(double(kPlasticTableSize / 2) / (kPlasticTableSize - 1), 0.04), 2e-3);
 }
 
+// A sheen of textured roughness reads its tables at kSheenLevels levels, evenly spaced in
+// log(alpha): at a level, that roughness's own tables; halfway between two, the lobe's
+// normalization max(1, E) within 0.5% of its own (0.19% measured; E reaches 12 at the horizon at
+// the smoothest levels) and the kept share K within 0.015 (0.0136 measured, near the horizon
+// at roughness about 0.3, where the normalization sets in: a kink that the levels blend over).
+TEST(Sheen, TexturedRoughnessReadsTablesByLevel) {
+  const std::vector<float> levels = sheenLevelTables(0, kSheenLevels - 1);
+  ASSERT_EQ(levels.size(), size_t(kSheenLevels) * kSheenRow);
+  // A scene whose textures reach only some levels gets those alone, the rest zero.
+  const std::vector<float> some = sheenLevelTables(3, 5);
+  for (size_t i = 0; i < some.size(); ++i)
+    ASSERT_EQ(some[i], i >= 3 * kSheenRow && i < 6 * kSheenRow ? levels[i] : 0.0f) << i;
+  float normError = 0, keptError = 0;
+  for (uint32_t level = 0; level + 1 < kSheenLevels; ++level)
+    for (const float blend : {0.0f, 0.5f}) {
+      Material m;
+      m.sheenColor = Vec3(1.0f);
+      m.sheenRoughness = blend == 0.0f
+                             ? sheenLevelRoughness(level)
+                             : std::sqrt(std::sqrt(sheenAlpha(sheenLevelRoughness(level)) *
+                                                   sheenAlpha(sheenLevelRoughness(level + 1))));
+      prepareMaterial(&m);
+      SurfaceLayers l = untexturedLayers(m);
+      l.sheenTable = levels.data() + size_t(level) * kSheenRow;
+      l.sheenBlend = blend;
+      for (uint32_t k = 0; k < kPlasticTableSize; ++k) {
+        const float mu = float(k) / float(kPlasticTableSize - 1);
+        if (blend == 0.0f) {
+          ASSERT_EQ(sheenAlbedoAt(l, mu), m.sheenAlbedo[k]) << "level " << level << ", k " << k;
+          ASSERT_EQ(sheenKeptAt(l, mu), m.sheenKept[k]) << "level " << level << ", k " << k;
+        }
+        const float norm = std::max(1.0f, m.sheenAlbedo[k]);
+        normError =
+            std::max(normError, std::fabs(std::max(1.0f, sheenAlbedoAt(l, mu)) - norm) / norm);
+        keptError = std::max(keptError, std::fabs(sheenKeptAt(l, mu) - m.sheenKept[k]));
+      }
+    }
+  EXPECT_LT(normError, 5e-3f);
+  EXPECT_LT(keptError, 0.015f);
+}
+
 // The values of every pixel of planeUnderSun's mapped plane (shading_normal_test_util.h) in
 // `material`, 2 spp, in folder `dir`.
 std::vector<float> mappedPlane(const std::filesystem::path& dir, const std::string& material) {
@@ -262,10 +307,11 @@ std::vector<float> mappedPlane(const std::filesystem::path& dir, const std::stri
 }
 
 // Stripes of a coat's weight (0 and 1, in the texture's G), of its roughness (two of the levels
-// of its tables, render/bsdf_plastic.h) and of a sheen's colour across the plane: each pixel
-// renders as the layer's number of its stripe does, to rounding, but where the lookup blends a
-// stripe's edge; each stripe in many pixels.
-TEST(Layers, TexturesGiveTheCoatsWeightAndTheSheensColourPointByPoint) {
+// of its tables, render/bsdf_plastic.h), of a sheen's colour and of its roughness (two of its
+// levels, render/surface_layers.h) across the plane: each pixel renders as the layer's number of
+// its stripe does, to rounding, but where the lookup blends a stripe's edge; each stripe in many
+// pixels.
+TEST(Layers, TexturesGiveTheLayersValuesPointByPoint) {
   const std::filesystem::path dir = test::mapTestFolder("layer_stripes");
   test::writeMappedPlane(dir / "plane.obj");
   const Vec3 zero(1, 0, 1), one(0, 1, 0);
@@ -273,8 +319,11 @@ TEST(Layers, TexturesGiveTheCoatsWeightAndTheSheensColourPointByPoint) {
   const std::string base = R"({"type": "conductor", "color": [0.8, 0.3, 0.2], "roughness": 0.4, )";
   const std::string stripes = R"({"texture": "stripes.pfm", "scale": [40, 1])";
   const float smoother = plasticCoatLevelRoughness(3), rougher = plasticCoatLevelRoughness(17);
-  const Vec3 a(smoother), b(rougher);
-  test::writeRowPfm(dir / "coat_roughness.pfm", {a, a, a, a, b, b, b, b});
+  const Vec3 s(smoother), r(rougher);
+  test::writeRowPfm(dir / "coat_roughness.pfm", {s, s, s, s, r, r, r, r});
+  const float thinner = sheenLevelRoughness(5), fuller = sheenLevelRoughness(24);
+  const Vec3 t(thinner), f(fuller);
+  test::writeRowPfm(dir / "sheen_roughness.pfm", {t, t, t, t, f, f, f, f});
   const struct {
     std::string textured, first, second;
   } cases[] = {
@@ -285,6 +334,10 @@ TEST(Layers, TexturesGiveTheCoatsWeightAndTheSheensColourPointByPoint) {
                                                  "channel": "r"}})",
        base + R"("coat": 1, "coat_roughness": )" + test::num(smoother) + "}",
        base + R"("coat": 1, "coat_roughness": )" + test::num(rougher) + "}"},
+      {base + R"("sheen": [0.9, 0.8, 0.7], "sheen_roughness": {"texture": "sheen_roughness.pfm",
+                                                                 "scale": [40, 1]}})",
+       base + R"("sheen": [0.9, 0.8, 0.7], "sheen_roughness": )" + test::num(thinner) + "}",
+       base + R"("sheen": [0.9, 0.8, 0.7], "sheen_roughness": )" + test::num(fuller) + "}"},
       // The sheen is the stripes' colours, (1, 0, 1) and (0, 1, 0).
       {base + R"("sheen": {"texture": "stripes.pfm", "scale": [40, 1]}, "sheen_roughness": 0.9})",
        base + R"("sheen": [1, 0, 1], "sheen_roughness": 0.9})",

@@ -16,6 +16,7 @@
 
 #include "render/bsdf_plastic.h"
 #include "render/material_prepare.h"
+#include "render/surface_layers.h"
 #include "render_test_util.h"
 #include "shading_normal_test_util.h"
 #include "texture_test_util.h"
@@ -80,12 +81,14 @@ TEST(RoughnessTexture, AConstantTextureRendersAsItsValue) {
 
 // Paths that meet light subpaths (the room under a lamp) evaluate the textured surface at both
 // ends of each connection: the ball renders as with the roughness given as a number (a clear
-// coat's too, whose light vertices keep the roughness and table they met).
+// coat's and a sheen's too, whose light vertices keep the roughness and tables they met).
 TEST(RoughnessTexture, LightSubpathsSeeTheTexturedRoughness) {
   const fs::path dir = test::mapTestFolder("roughness_light_paths");
   const float level = plasticCoatLevelRoughness(9);
   writeRowMap(dir / "level.pfm", {level, level});
   writeRowMap(dir / "r03.pfm", {0.3f, 0.3f});
+  const float sheenLevel = sheenLevelRoughness(12);
+  writeRowMap(dir / "sheen_level.pfm", {sheenLevel, sheenLevel});
   const auto render = [&](const std::string& ball) {
     std::string json =
         test::lampUnderTheCeiling(R"("width": 24, "height": 24, "spp": 4)", R"("max_depth": 4)");
@@ -97,7 +100,9 @@ TEST(RoughnessTexture, LightSubpathsSeeTheTexturedRoughness) {
        {std::tuple<std::string, std::string, float, std::string>{
             R"("type": "conductor", "metal": "Cu")", "roughness", 0.3f, "r03.pfm"},
         {R"("type": "plastic", "color": 0.5)", "roughness", level, "level.pfm"},
-        {R"("type": "diffuse", "color": 0.5, "coat": 1)", "coat_roughness", level, "level.pfm"}}) {
+        {R"("type": "diffuse", "color": 0.5, "coat": 1)", "coat_roughness", level, "level.pfm"},
+        {R"("type": "diffuse", "color": 0.3, "sheen": 0.9)", "sheen_roughness", sheenLevel,
+         "sheen_level.pfm"}}) {
     SCOPED_TRACE(material);
     const std::string field = R"(, ")" + key + R"(": )";
     const ImageRGB plain = render("{" + material + field + num(roughness) + "}");

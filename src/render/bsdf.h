@@ -182,9 +182,8 @@ CANDELA_HD_NOINLINE inline Vec3 evalLayered(const Bsdf& b, const Vec3& wi, float
   float p;
   Vec3 f = evalBase(b, wi, &p);
   if (hasSheen(m)) {
-    const Vec3& sheen = b.layers.sheen;
-    const float chance = sheenProbability(m, sheen, b.color, b.wo.z);
-    f = f * sheenedBaseFactor(m, sheen, wi.z, b.wo.z) + sheenEval(m, sheen, b.wo, wi);
+    const float chance = sheenProbability(b.layers, b.color, b.wo.z);
+    f = f * sheenedBaseFactor(b.layers, wi.z, b.wo.z) + sheenEval(b.layers, b.wo, wi);
     p = chance * sheenDirectionPdf(wi) + (1.0f - chance) * p;
   }
   if (hasCoat(m))
@@ -285,7 +284,7 @@ CANDELA_HD_NOINLINE inline bool sampleLayered(const Bsdf& b, float uc, float u1,
     if (s->delta) return true;
   } else {
     uc = minf((uc - coat) / (1.0f - coat), kOneMinusEpsilon);
-    const float sheen = hasSheen(m) ? sheenProbability(m, layers.sheen, b.color, b.wo.z) : 0.0f;
+    const float sheen = hasSheen(m) ? sheenProbability(layers, b.color, b.wo.z) : 0.0f;
     if (uc < sheen) {
       s->wi = sampleSheenDirection(u1, u2);
       s->delta = false;
@@ -294,8 +293,7 @@ CANDELA_HD_NOINLINE inline bool sampleLayered(const Bsdf& b, float uc, float u1,
       if (!sampleBase(b, minf((uc - sheen) / (1.0f - sheen), kOneMinusEpsilon), u1, u2, s))
         return false;
       if (s->delta) {  // the layers' share of it, over the chance of choosing the base
-        if (hasSheen(m))
-          s->weight *= sheenedBaseFactor(m, layers.sheen, s->wi.z, b.wo.z) / (1.0f - sheen);
+        if (hasSheen(m)) s->weight *= sheenedBaseFactor(layers, s->wi.z, b.wo.z) / (1.0f - sheen);
         if (hasCoat(m)) s->weight *= coatedBaseFactor(m, layers, s->wi.z, b.wo.z) / (1.0f - coat);
         return true;
       }

@@ -47,9 +47,7 @@ CANDELA_HDI const float* coatTableRow(const float* table, float roughness, float
 // A coat's transmittance at cos(theta) from its table `row` (of kPlasticTableSize), blended by
 // `blend` with the row after it (coatTableRow; 0: the row alone).
 CANDELA_HDI float coatTableAt(const float* row, float blend, float cosTheta) {
-  const float t = cosineTableAt(row, cosTheta);
-  if (blend == 0.0f) return t;
-  return (1.0f - blend) * t + blend * cosineTableAt(row + kPlasticCoatRow, cosTheta);
+  return levelTableAt(row, kPlasticCoatRow, blend, cosTheta);
 }
 
 // m's coat at a point of roughness `roughness` (render/surface_color.h); coatTables is

@@ -11,25 +11,19 @@
 //
 //   f = sheenColor f_sheen + (1 - s K(wi)) (1 - s K(wo)) f_base
 //
-// Reciprocal, and energy is kept (the colour may vary over the surface: render/surface_layers.h).
-// Local shading frame of render/bsdf.h, wo.z > 0.
+// Reciprocal, and energy is kept (the colour and the roughness may vary over the surface:
+// render/surface_layers.h; the functions take the layers at the point, `l`). Local shading frame
+// of render/bsdf.h, wo.z > 0.
 #pragma once
 
 #include "core/sampling.h"
 #include "render/bsdf_sample.h"
 #include "render/material.h"
+#include "render/surface_layers.h"
 
 namespace candela {
 
-// The smallest alpha of the sheen's fibres: below it the lobe is a spike at the horizon that
-// float cannot hold (sin^(1/a)).
-constexpr float kSheenMinAlpha = 1e-3f;
-
 CANDELA_HDI bool hasSheen(const Material& m) { return maxComponent(m.sheenColor) > 0.0f; }
-
-CANDELA_HDI float sheenAlpha(float roughness) {
-  return maxf(roughness * roughness, kSheenMinAlpha);
-}
 
 // The Charlie distribution of alpha a at a half vector of local z `cosH` (>= 0).
 CANDELA_HDI float charlieD(float cosH, float a) {
@@ -45,29 +39,36 @@ CANDELA_HDI float sheenLobeCos(float a, const Vec3& wo, const Vec3& wi) {
   return charlieD(h.z, a) * wi.z / (4.0f * (wi.z + wo.z - wi.z * wo.z));
 }
 
-// What a sheen of colour `sheen` leaves the base at cos(theta): 1 - s K(mu).
-CANDELA_HDI float sheenBaseShare(const Material& m, const Vec3& sheen, float cosTheta) {
-  return 1.0f - maxComponent(sheen) * cosineTableAt(m.sheenKept, cosTheta);
+// The sheen's tables at the point: the lobe's directional albedo E and the normalized lobe's K.
+CANDELA_HDI float sheenAlbedoAt(const SurfaceLayers& l, float cosTheta) {
+  return levelTableAt(l.sheenTable, kSheenRow, l.sheenBlend, cosTheta);
+}
+CANDELA_HDI float sheenKeptAt(const SurfaceLayers& l, float cosTheta) {
+  return levelTableAt(l.sheenTable + kPlasticTableSize, kSheenRow, l.sheenBlend, cosTheta);
+}
+
+// What the sheen leaves the base at cos(theta): 1 - s K(mu).
+CANDELA_HDI float sheenBaseShare(const SurfaceLayers& l, float cosTheta) {
+  return 1.0f - maxComponent(l.sheen) * sheenKeptAt(l, cosTheta);
 }
 
 // What the base's f |cos| is multiplied by.
-CANDELA_HDI float sheenedBaseFactor(const Material& m, const Vec3& sheen, float cosI, float cosO) {
-  return sheenBaseShare(m, sheen, cosI) * sheenBaseShare(m, sheen, cosO);
+CANDELA_HDI float sheenedBaseFactor(const SurfaceLayers& l, float cosI, float cosO) {
+  return sheenBaseShare(l, cosI) * sheenBaseShare(l, cosO);
 }
 
-// The sheen's f |cos(wi)| (normalized, of colour `sheen`), zero where either direction is below.
-CANDELA_HDI Vec3 sheenEval(const Material& m, const Vec3& sheen, const Vec3& wo, const Vec3& wi) {
+// The sheen's f |cos(wi)| (normalized, of the layers' colour), zero where either direction is
+// below.
+CANDELA_HDI Vec3 sheenEval(const SurfaceLayers& l, const Vec3& wo, const Vec3& wi) {
   if (wo.z <= 0.0f || wi.z <= 0.0f) return Vec3(0.0f);
-  const float norm =
-      maxf(1.0f, maxf(cosineTableAt(m.sheenAlbedo, wi.z), cosineTableAt(m.sheenAlbedo, wo.z)));
-  return sheen * (sheenLobeCos(sheenAlpha(m.sheenRoughness), wo, wi) / norm);
+  const float norm = maxf(1.0f, maxf(sheenAlbedoAt(l, wi.z), sheenAlbedoAt(l, wo.z)));
+  return l.sheen * (sheenLobeCos(sheenAlpha(l.sheenRoughness), wo, wi) / norm);
 }
 
 // The chance of sampling the sheen rather than the base: its albedo at wo against what the base,
 // of mean colour `color`, reflects past it.
-CANDELA_HDI float sheenProbability(const Material& m, const Vec3& sheen, const Vec3& color,
-                                   float cosO) {
-  const float share = maxComponent(sheen) * cosineTableAt(m.sheenKept, cosO);
+CANDELA_HDI float sheenProbability(const SurfaceLayers& l, const Vec3& color, float cosO) {
+  const float share = maxComponent(l.sheen) * sheenKeptAt(l, cosO);
   const float base = (1.0f - share) * (color.x + color.y + color.z) * (1.0f / 3.0f);
   return share + base > 0.0f ? share / (share + base) : 1.0f;
 }

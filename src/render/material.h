@@ -5,6 +5,7 @@
 // table) is filled in once on the host by prepareMaterial (render/material_prepare.h).
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 
 #include "core/device.h"
@@ -37,12 +38,36 @@ CANDELA_HDI float cosineTableAt(const float* table, float cosTheta) {
   const float w = x - float(i);
   return (1.0f - w) * table[i] + w * table[i + 1];
 }
+
+// cosineTableAt in `row`, a table of a set by roughness level, blended by `blend` with the same
+// table of the next level, `stride` floats on (0: the row alone).
+CANDELA_HDI float levelTableAt(const float* row, uint32_t stride, float blend, float cosTheta) {
+  const float t = cosineTableAt(row, cosTheta);
+  if (blend == 0.0f) return t;
+  return (1.0f - blend) * t + blend * cosineTableAt(row + stride, cosTheta);
+}
 // A plastic whose roughness is textured has a table per roughness level instead (SceneView::
 // plasticCoats): kPlasticCoatLevels rows from the smoothest rough surface (alpha kSmoothAlpha) to
 // roughness 1 (render/bsdf_plastic.h, plasticCoatLevelRoughness), each its transmittance table
 // and then its internal reflectance.
 constexpr uint32_t kPlasticCoatLevels = 32;
 constexpr uint32_t kPlasticCoatRow = kPlasticTableSize + 1;
+// A sheen's tables, by cos(theta): its lobe's directional albedo, then that of the lobe normalized
+// to at most 1 (render/bsdf_sheen.h; Material::sheenAlbedo and sheenKept). A sheen whose
+// roughness is textured reads such rows for kSheenLevels alphas, kSheenMinAlpha to 1 evenly spaced
+// in log(alpha), as the lobe changes with 1 / alpha (SceneView::sheenTables;
+// render/surface_layers.h).
+constexpr uint32_t kSheenRow = 2 * kPlasticTableSize;
+constexpr uint32_t kSheenLevels = 32;
+
+// The smallest alpha of the sheen's fibres: below it the lobe is a spike at the horizon that
+// float cannot hold (sin^(1/a)).
+constexpr float kSheenMinAlpha = 1e-3f;
+
+// The alpha of a sheen of roughness `roughness` (render/bsdf_sheen.h).
+CANDELA_HDI float sheenAlpha(float roughness) {
+  return maxf(roughness * roughness, kSheenMinAlpha);
+}
 
 struct Material {
   MaterialType type = MaterialType::Diffuse;
@@ -110,6 +135,10 @@ struct Material {
   TextureRef coatRoughnessTexture;
   uint32_t coatRoughnessChannel = kLuminanceChannel;
   int32_t coatTable = -1;
+  // A texture whose value (luminance, or the channel sheenRoughnessChannel) is the sheen's
+  // roughness in place of sheenRoughness, its tables then read by level (kSheenLevels).
+  TextureRef sheenRoughnessTexture;
+  uint32_t sheenRoughnessChannel = kLuminanceChannel;
 
   // Plastic, derived (prepareMaterial): the diffuse light's chance to be reflected back down by
   // the coating from inside, and the coating's transmittance from outside by cos(theta).
@@ -120,11 +149,15 @@ struct Material {
   int32_t plasticCoatTable = -1;
 
   // Layers, derived (prepareMaterial), by cos(theta): a rough coat's transmittance; the sheen
-  // lobe's directional albedo, and that of the lobe normalized to at most 1.
+  // lobe's directional albedo, and that of the lobe normalized to at most 1 (one row of kSheenRow:
+  // sheenKept follows sheenAlbedo).
   float coatTransmittance[kPlasticTableSize] = {};
   float sheenAlbedo[kPlasticTableSize] = {};
   float sheenKept[kPlasticTableSize] = {};
 };
+static_assert(offsetof(Material, sheenKept) ==
+                  offsetof(Material, sheenAlbedo) + kPlasticTableSize * sizeof(float),
+              "a sheen's two tables make one row");
 
 // Whether a surface of material m emits light: an emissive material, or one that reflects and
 // emits as well (its "emission"). What emits is a light (scene/flatten_lights.cpp).

@@ -1,6 +1,8 @@
 // Derived material values; see material_prepare.h.
 #include "render/material_prepare.h"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -174,6 +176,30 @@ void prepareMaterial(Material* m) {
   const RoughCoat coat = sharedRoughCoat(eta, alpha);
   std::copy(coat.transmittance, coat.transmittance + kPlasticTableSize, m->plasticTransmittance);
   m->plasticInternalReflectance = coat.internalReflectance;
+}
+
+std::vector<float> sheenLevelTables(uint32_t first, uint32_t last) {
+  static std::mutex mutex;
+  static std::vector<float> made(size_t(kSheenLevels) * kSheenRow);
+  static bool isMade[kSheenLevels] = {};
+  std::lock_guard<std::mutex> lock(mutex);
+  last = std::min(last, kSheenLevels - 1);
+  // The levels not made yet share the machine's cores.
+  std::vector<uint32_t> missing;
+  for (uint32_t level = first; level <= last; ++level)
+    if (!isMade[level]) missing.push_back(level);
+  tbb::parallel_for(size_t(0), missing.size(), [&](size_t i) {
+    const SheenTables sheen = sheenTables(sheenAlpha(sheenLevelRoughness(missing[i])));
+    float* row = made.data() + size_t(missing[i]) * kSheenRow;
+    std::copy(sheen.albedo, sheen.albedo + kPlasticTableSize, row);
+    std::copy(sheen.kept, sheen.kept + kPlasticTableSize, row + kPlasticTableSize);
+  });
+  for (const uint32_t level : missing) isMade[level] = true;
+  std::vector<float> table(made.size(), 0.0f);
+  for (uint32_t level = first; level <= last; ++level)
+    std::copy_n(made.begin() + std::ptrdiff_t(level) * kSheenRow, kSheenRow,
+                table.begin() + std::ptrdiff_t(level) * kSheenRow);
+  return table;
 }
 
 std::vector<float> plasticCoatTable(float eta) {

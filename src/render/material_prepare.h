@@ -17,6 +17,12 @@ void prepareMaterial(Material* m);
 // its transmittance table and its internal reflectance.
 std::vector<float> plasticCoatTable(float eta);
 
+// The sheen's tables by roughness level for the sheens whose roughness is textured
+// (SceneView::sheenTables): kSheenLevels rows of kSheenRow (the lobe's albedo, then the normalized
+// lobe's; render/surface_layers.h, sheenLevelRoughness), those from level `first` to `last` filled
+// and the rest zero. Each level is made once per process (about 20 ms of one core's time).
+std::vector<float> sheenLevelTables(uint32_t first, uint32_t last);
+
 // The share of light arriving at cos(theta) = mu that a GGX dielectric coating (relative index
 // eta, alpha >= kSmoothAlpha) reflects, and the share it transmits, in single scattering (the
 // integrals of its BRDF and BTDF times the cosine, by quadrature over the visible normals).

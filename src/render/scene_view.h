@@ -32,8 +32,10 @@ namespace candela {
 // lightPathOrder lists the lights in the order their light-subpath picks are laid out over
 // [0, 1) (render/light_path.h, pickLightPathLight). infiniteLights lists the lights at infinity
 // that next-event estimation picks, each in a share of its own (render/light_selection.h).
-// plasticCoats holds the coat tables of the plastics whose roughness is textured
-// (render/bsdf_plastic.h, Material::plasticCoatTable). vertexColors is empty or parallel to
+// plasticCoats holds the coat tables of the plastics and clear coats whose roughness is textured
+// (render/bsdf_plastic.h, Material::plasticCoatTable and coatTable); sheenTables the sheen's tables
+// by roughness level where some sheen's roughness is textured (render/surface_layers.h), else
+// nothing. vertexColors is empty or parallel to
 // positions: the linear colour that tints a mesh vertex's materials (1 for vertices without).
 #define CANDELA_SHADING_ARRAYS(X)                                            \
   X(Material, materials, materialCount, Values)                              \
@@ -49,6 +51,7 @@ namespace candela {
   X(uint32_t, lightPathOrder, lightPathOrderCount, Values)                   \
   X(uint32_t, infiniteLights, infiniteLightCount, Values)                    \
   X(float, plasticCoats, plasticCoatCount, Values)                           \
+  X(float, sheenTables, sheenTableCount, Values)                             \
   X(Vec3, vertexColors, vertexColorCount, Structure)
 
 // Every array of the kernel's scene: SceneData, SceneData::view and the CUDA upload expand

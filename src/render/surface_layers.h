@@ -1,8 +1,8 @@
 // The layers over a material at a surface point (render/bsdf_coat.h, render/bsdf_sheen.h): the
-// coat's weight and roughness and the sheen's colour, each the material's own, or where it has a
-// texture for it, the texture's value there (the coat's from its luminance or a channel, at most
-// 1, a textured roughness at least the smoothest rough one; the sheen colour times the texture's
-// colour, each channel at most 1).
+// coat's weight and roughness and the sheen's colour and roughness, each the material's own, or
+// where it has a texture for it, the texture's value there (a number from the texture's luminance
+// or a channel, at most 1, a coat's textured roughness at least the smoothest rough one; the sheen
+// colour times the texture's colour, each channel at most 1), with the tables they read.
 #pragma once
 
 #include "core/texture.h"
@@ -24,16 +24,37 @@ struct SurfaceLayers {
   float coatRoughness = 0.0f;
   float coatBlend = 0.0f;
   const float* coatTransmittance = nullptr;
+  // The sheen's roughness, and its row of tables (kSheenRow: albedo, then kept), blended by
+  // sheenBlend with the next level's where the roughness is textured.
+  float sheenRoughness = 0.0f;
+  float sheenBlend = 0.0f;
+  const float* sheenTable = nullptr;
 };
 
 // The layers of a material without textures for them.
 CANDELA_HDI SurfaceLayers untexturedLayers(const Material& m) {
-  return {m.coatWeight, m.sheenColor, m.coatRoughness, 0.0f, m.coatTransmittance};
+  return {m.coatWeight,     m.sheenColor, m.coatRoughness, 0.0f, m.coatTransmittance,
+          m.sheenRoughness, 0.0f,         m.sheenAlbedo};
 }
 
 // Whether m has a texture for one of its layers' values.
 CANDELA_HDI bool hasLayerTextures(const Material& m) {
-  return m.coatTexture.index >= 0 || m.sheenTexture.index >= 0 || m.coatRoughnessTexture.index >= 0;
+  return m.coatTexture.index >= 0 || m.sheenTexture.index >= 0 ||
+         m.coatRoughnessTexture.index >= 0 || m.sheenRoughnessTexture.index >= 0;
+}
+
+// The roughness of level `level` of the sheen's tables by roughness (SceneView::sheenTables):
+// alphas from kSheenMinAlpha to 1, evenly spaced in log(alpha).
+CANDELA_HDI float sheenLevelRoughness(uint32_t level) {
+  return sqrtf(kSheenMinAlpha *
+               powf(1.0f / kSheenMinAlpha, float(level) / float(kSheenLevels - 1)));
+}
+
+// Where a sheen of roughness `roughness` lies among the levels: level x and x + 1 blended by the
+// fraction of x.
+CANDELA_HDI float sheenLevelAt(float roughness) {
+  return logf(sheenAlpha(roughness) * (1.0f / kSheenMinAlpha)) *
+         (float(kSheenLevels - 1) / logf(1.0f / kSheenMinAlpha));
 }
 
 // Out of line: most materials have no layers, and few layers have textures.
@@ -56,6 +77,14 @@ CANDELA_HD_NOINLINE inline SurfaceLayers surfaceLayers(const SceneView& scene, c
         minf(maxf(textureChannel(s, m.coatRoughnessChannel), smoothestRoughRoughness()), 1.0f);
     layers.coatTransmittance =
         coatTableRow(scene.plasticCoats + m.coatTable, layers.coatRoughness, &layers.coatBlend);
+  }
+  if (m.sheenRoughnessTexture.index >= 0) {
+    const TextureSample s = lookupTexture(scene.texturePool(), m.sheenRoughnessTexture, uv.x, uv.y);
+    layers.sheenRoughness = minf(textureChannel(s, m.sheenRoughnessChannel), 1.0f);
+    const float x = minf(maxf(sheenLevelAt(layers.sheenRoughness), 0.0f), float(kSheenLevels - 1));
+    const uint32_t level = x < float(kSheenLevels - 2) ? uint32_t(x) : kSheenLevels - 2;
+    layers.sheenBlend = x - float(level);
+    layers.sheenTable = scene.sheenTables + level * kSheenRow;
   }
   return layers;
 }

@@ -7,6 +7,7 @@
 
 #include "core/rotation.h"
 #include "geometry/bvh_build.h"
+#include "render/bsdf_sheen.h"
 #include "render/material_prepare.h"
 #include "render/scene_change.h"
 #include "scene/camera_resolve.h"
@@ -15,6 +16,7 @@
 #include "scene/light_emission_desc.h"
 #include "scene/mesh_layout.h"
 #include "scene/mesh_repeats.h"
+#include "scene/read/texture_reader.h"
 
 namespace candela {
 
@@ -326,11 +328,44 @@ void addPlasticCoats(SceneData& s) {
   }
 }
 
+// The range of the values of `channel` (core/texture.h's textureChannel) over texture t's texels,
+// at most 1: all that a lookup of it, which blends neighbouring texels, can return.
+std::pair<float, float> channelRange(const TextureDesc& t, uint32_t channel) {
+  float lo = 1.0f, hi = 0.0f;
+  for (size_t i = 0; i < size_t(t.width) * t.height; ++i) {
+    const float v =
+        channel == kLuminanceChannel
+            ? textureLuminance(Vec3(texelValue(t, i, 0), texelValue(t, i, 1), texelValue(t, i, 2)))
+            : texelValue(t, i, channel);
+    lo = std::min(lo, v);
+    hi = std::max(hi, v);
+  }
+  return {std::min(lo, 1.0f), std::min(hi, 1.0f)};
+}
+
+// The sheen's tables by roughness level where some sheen's roughness is textured: the levels its
+// textures' values reach, and the next (render/surface_layers.h reads a level and the one after).
+void addSheenTables(SceneData& s, const SceneDesc& desc) {
+  uint32_t first = kSheenLevels, last = 0;
+  for (const Material& m : s.materials) {
+    if (!hasSheen(m) || m.sheenRoughnessTexture.index < 0) continue;
+    const auto [lo, hi] = channelRange(*desc.textures[size_t(m.sheenRoughnessTexture.index)],
+                                       m.sheenRoughnessChannel);
+    const auto level = [](float roughness) {
+      return std::min(std::max(sheenLevelAt(roughness), 0.0f), float(kSheenLevels - 1));
+    };
+    first = std::min(first, uint32_t(level(lo)));
+    last = std::max(last, uint32_t(level(hi)) + 1);
+  }
+  if (first < kSheenLevels) s.sheenTables = sheenLevelTables(first, last);
+}
+
 // Everything but the BVH; mesh vertices and triangles only with `geometry`, the texture pool
 // only with `texturePool`.
 void addContents(SceneData& s, const SceneDesc& desc, bool geometry, bool texturePool) {
   addInstances(s, desc, geometry);
   addPlasticCoats(s);
+  addSheenTables(s, desc);
   if (texturePool) addTexturePool(s, desc);
   addTextureUses(s);
 
@@ -377,6 +412,7 @@ void refreshSceneValues(SceneData& s, const SceneDesc& desc) {
   s.materials.clear();
   s.materialInstances.clear();
   s.plasticCoats.clear();
+  s.sheenTables.clear();
   s.spheres.clear();
   s.alphaMasks.clear();
   addContents(s, desc, false, false);  // the frame's textures are the last frame's (equal keys)

@@ -412,8 +412,11 @@ void GltfMaterialReader::addSheen(const tinygltf::Material& m, const std::string
   // The colour is the texture's (sRGB) times the factor.
   if (hasSheen(*surface) && e->Has("sheenColorTexture"))
     surface->sheenTexture = extensionTexture(*e, "sheenColorTexture", TextureUse::Color, sw);
-  if (hasSheen(*surface) && e->Has("sheenRoughnessTexture"))
-    warnOnce(sw + ".sheenRoughnessTexture is not read (the sheen is as rough as its factor says)");
+  // The roughness is the texture's alpha channel times the factor.
+  if (hasSheen(*surface) && surface->sheenRoughness > 0.0f && e->Has("sheenRoughnessTexture"))
+    surface->sheenRoughnessTexture =
+        scaledChannel(extensionTexture(*e, "sheenRoughnessTexture", TextureUse::Linear, sw), 3,
+                      surface->sheenRoughness, &surface->sheenRoughnessChannel);
 }
 
 void GltfMaterialReader::addEmission(const tinygltf::Material& m, const std::string& where,

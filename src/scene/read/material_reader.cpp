@@ -127,7 +127,8 @@ void readCoat(JsonObject& fields, TextureLoader& textures, Material* material) {
 }
 
 // "sheen", the colour of a sheen over the material (each channel in [0, 1]; or a texture object,
-// as a "color" may be), and its "sheen_roughness" (render/bsdf_sheen.h).
+// as a "color" may be), and its "sheen_roughness" (a number or a texture object;
+// render/bsdf_sheen.h).
 void readSheen(JsonObject& fields, TextureLoader& textures, Material* material) {
   const std::optional<JsonValue> sheen = fields.get("sheen");
   const std::optional<JsonValue> roughness = fields.get("sheen_roughness");
@@ -137,7 +138,13 @@ void readSheen(JsonObject& fields, TextureLoader& textures, Material* material) 
   material->sheenColor = readTexturedColour(*sheen, textures, &material->sheenTexture);
   if (maxComponent(material->sheenColor) > 1.0f)
     sheen->fail("expected a colour of channels in [0, 1], got " + formatVec3(material->sheenColor));
-  if (roughness) material->sheenRoughness = roughness->unitNumber("a roughness in [0, 1]");
+  if (roughness && roughness->json().is_object())
+    material->sheenRoughnessTexture =
+        readUnitTexture(*roughness, textures, "a roughness in [0, 1] or a texture object",
+                        &material->sheenRoughnessChannel);
+  else if (roughness)
+    material->sheenRoughness =
+        roughness->unitNumber("a roughness in [0, 1]", " or a texture object");
 }
 
 // `radiance` (a colour, or a texture: material->emissionTexture) times the field `strengthKey`
