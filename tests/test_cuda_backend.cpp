@@ -197,8 +197,9 @@ TEST(CudaBackend, MatchesCpuOnCoatedAndSheenedMaterials) {
 }
 
 // Textures clamped, mirrored and read from the nearest texel (core/texture.h's wrap and filter),
-// a mirrored normal map and a clamped emission among them, and a clear coat and a sheen of textured
-// roughness (their tables by level): on the device as on the CPU.
+// a mirrored normal map and a clamped emission among them, clear coats smooth over a normal map
+// and on a normal map of their own, and a coat and a sheen of textured roughness (their tables by
+// level): on the device as on the CPU.
 TEST(CudaBackend, MatchesCpuOnWrappedAndNearestTextures) {
   REQUIRE_GPU();
   const std::string dir = ::testing::TempDir();
@@ -218,14 +219,15 @@ TEST(CudaBackend, MatchesCpuOnWrappedAndNearestTextures) {
                                              t + R"(cuda_wrap.png", "scale": [3000, 1500],
          "wrap": "mirror", "filter": "nearest"}, "normal_map": {)" +
                                              t + R"(cuda_wrap_normals.png",
-         "scale": [900, 900], "wrap": "mirror"}}},
+         "scale": [900, 900], "wrap": "mirror"}, "coat": 0.6}},
       {"position": [-1.2, 0.5, 0], "radius": 0.5,
        "material": {"type": "plastic", "roughness": 0.3, "color": {)" +
                                              t + R"(cuda_wrap.png",
          "scale": [3, 2], "offset": [-1, -0.5], "wrap": ["clamp", "mirror"]}, "coat": 1,
          "coat_roughness": {)" + t + R"(cuda_wrap.png", "scale": [4, 4], "channel": "g"},
          "sheen": [0.5, 0.4, 0.3], "sheen_roughness": {)" +
-                                             t + R"(cuda_wrap.png", "channel": "r"}}},
+                                             t + R"(cuda_wrap.png", "channel": "r"},
+         "coat_normal_map": {)" + t + R"(cuda_wrap_normals.png", "scale": [6, 3]}}},
       {"position": [1.2, 0.5, 0], "radius": 0.5,
        "material": {"type": "emissive", "radiance": {)" +
                                              t + R"(cuda_wrap.png", "scale": [2, 2],

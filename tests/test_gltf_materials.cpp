@@ -145,17 +145,14 @@ TEST(GltfMaterials, TransmissionIsGlassOfTheIndexAndPartsFollowTheirMix) {
 }
 
 // KHR_materials_clearcoat and KHR_materials_sheen: a coat of index 1.5 and a sheen over the
-// plastic and the conductor, their factors alone; the coat's normal texture is named in a warning,
-// and a factor outside [0, 1] is refused.
+// plastic and the conductor, their factors alone; a factor outside [0, 1] is refused.
 TEST(GltfMaterials, ClearcoatAndSheenLayerTheOpaqueParts) {
   TempDir dir;
   nlohmann::json m = pbr(0.3, 0.5);
-  m["extensions"] = {{"KHR_materials_clearcoat",
-                      {{"clearcoatFactor", 0.75},
-                       {"clearcoatRoughnessFactor", 0.1},
-                       {"clearcoatNormalTexture", {{"index", 0}}}}},
-                     {"KHR_materials_sheen",
-                      {{"sheenColorFactor", {0.5, 0.25, 1}}, {"sheenRoughnessFactor", 0.7}}}};
+  m["extensions"] = {
+      {"KHR_materials_clearcoat", {{"clearcoatFactor", 0.75}, {"clearcoatRoughnessFactor", 0.1}}},
+      {"KHR_materials_sheen",
+       {{"sheenColorFactor", {0.5, 0.25, 1}}, {"sheenRoughnessFactor", 0.7}}}};
   MeshDesc mesh;
   const Material mix = materialOf(dir, m, &mesh);
   ASSERT_EQ(mix.type, MaterialType::Mix);
@@ -168,10 +165,7 @@ TEST(GltfMaterials, ClearcoatAndSheenLayerTheOpaqueParts) {
     EXPECT_FLOAT_EQ(mesh.mixParts[part].sheenRoughness, 0.7f);
     EXPECT_GT(mesh.mixParts[part].sheenKept[0], 0.1f);  // prepared
   }
-  const std::vector<std::string> expected = {
-      "m.gltf: materials[0].extensions.KHR_materials_clearcoat.clearcoatNormalTexture is not "
-      "read (the coat follows the surface's normals)"};
-  EXPECT_EQ(mesh.warnings, expected);
+  EXPECT_TRUE(mesh.warnings.empty());
   m["extensions"]["KHR_materials_clearcoat"]["clearcoatFactor"] = 2;
   try {
     materialOf(dir, m);
@@ -346,14 +340,15 @@ TEST(GltfMaterials, WhatIsNotRenderedIsNamedInWarnings) {
 
 // The clear coat's roughness texture: its green channel times clearcoatRoughnessFactor; the
 // sheen's: its alpha channel times sheenRoughnessFactor; each a texture of its own, on both parts
-// of the metalness mix.
+// of the metalness mix; and the coat's normal texture as its normal map (a scale read as 1).
 TEST(GltfMaterials, ClearcoatAndSheenRoughnessTexturesScaleTheirFactors) {
   TempDir dir;
   nlohmann::json m = pbr(0.3, 0.5);
   m["extensions"] = {{"KHR_materials_clearcoat",
                       {{"clearcoatFactor", 1},
                        {"clearcoatRoughnessFactor", 0.5},
-                       {"clearcoatRoughnessTexture", {{"index", 0}}}}},
+                       {"clearcoatRoughnessTexture", {{"index", 0}}},
+                       {"clearcoatNormalTexture", {{"index", 0}, {"scale", 0.5}}}}},
                      {"KHR_materials_sheen",
                       {{"sheenColorFactor", {0.5, 0.25, 1}},
                        {"sheenRoughnessFactor", 0.8},
@@ -362,7 +357,10 @@ TEST(GltfMaterials, ClearcoatAndSheenRoughnessTexturesScaleTheirFactors) {
   f.addImage(pngBytes(dir));
   f.doc["textures"] = nlohmann::json::array({nlohmann::json{{"source", 0}}});
   const auto loaded = load(dir.write("c.glb", f.glb()));
-  EXPECT_TRUE(loaded->mesh.warnings.empty());
+  const std::vector<std::string> expected = {
+      "m.gltf: materials[0].extensions.KHR_materials_clearcoat.clearcoatNormalTexture.scale is "
+      "read as 1"};
+  EXPECT_EQ(loaded->mesh.warnings, expected);
   const Material& mix = loaded->mesh.materials.at(0);
   ASSERT_EQ(mix.type, MaterialType::Mix);
   for (uint32_t part : mix.mixParts) {
@@ -377,6 +375,9 @@ TEST(GltfMaterials, ClearcoatAndSheenRoughnessTexturesScaleTheirFactors) {
     ASSERT_EQ(fibres.format, TextureFormat::Float);
     EXPECT_FLOAT_EQ(fibres.texelsF[size_t(4 * 0 + p.sheenRoughnessChannel)], 0.8f);
     EXPECT_FLOAT_EQ(fibres.texelsF[size_t(4 * 1 + p.sheenRoughnessChannel)], 0.0f);
+    ASSERT_GE(p.coatNormalMap.index, 0);
+    EXPECT_EQ(loaded->textures.at(size_t(p.coatNormalMap.index))->format, TextureFormat::Linear8);
+    EXPECT_LT(p.normalMap.index, 0);  // the base has none
   }
   // A factor of 0 leaves the coat smooth and the sheen's fibres upright, whatever the texture.
   m["extensions"]["KHR_materials_clearcoat"]["clearcoatRoughnessFactor"] = 0;

@@ -61,7 +61,13 @@ struct Bsdf {
   Vec3 wo;     // local (zero for a diffuse surface)
   float eta;   // glass: eta_t / eta_i for light leaving towards wo's side
   SurfaceLayers layers;  // the coat's weight and the sheen's colour here (where m has them)
+  // The normal the coat reflects about, in the local frame: +z unless a map tilts the material
+  // beneath or the coat (render/normal_map.h, applyNormalMaps).
+  Vec3 coatUp;
 };
+
+// The frame of the coat's normal within the local frame (the identity where it is +z).
+CANDELA_HDI Frame coatFrame(const Bsdf& b) { return Frame(b.coatUp); }
 
 // The BSDF of material m at a point of colour `color` and roughness `roughness` (its textures'
 // there: render/surface_color.h), tangent `tangent` (render/surface_tangent.h: zero for an
@@ -77,9 +83,8 @@ CANDELA_HDI_ALWAYS Bsdf makeBsdf(const SceneView& scene, const Material& m, cons
                           : tangentFrame(n, tangent);
   // A diffuse surface, the most common, never reads wo.
   if (isBareDiffuse(m))
-    return {
-        &m,   color,          GgxAlpha::isotropic(0.0f), PlasticCoat(), frame, ng, side, Vec3(0.0f),
-        1.0f, SurfaceLayers()};
+    return {&m,         color, GgxAlpha::isotropic(0.0f), PlasticCoat(),         frame, ng, side,
+            Vec3(0.0f), 1.0f,  SurfaceLayers(),           Vec3(0.0f, 0.0f, 1.0f)};
   const PlasticCoat coat = m.type == MaterialType::Plastic
                                ? plasticCoatAt(m, scene.plasticCoats, roughness)
                                : PlasticCoat();
@@ -92,7 +97,9 @@ CANDELA_HDI_ALWAYS Bsdf makeBsdf(const SceneView& scene, const Material& m, cons
           side,
           frame.toLocal(wo),
           side > 0.0f ? iorFor(m, channel) : 1.0f / iorFor(m, channel),
-          layers};
+          layers,
+          isBlack(layers.coatNormal) ? Vec3(0.0f, 0.0f, 1.0f)
+                                     : frame.toLocal(facingNormal(wo, ng, layers.coatNormal))};
 }
 
 // Whether some lobe has a density (next-event estimation and MIS apply), rather than only mirror
@@ -186,9 +193,12 @@ CANDELA_HD_NOINLINE inline Vec3 evalLayered(const Bsdf& b, const Vec3& wi, float
     f = f * sheenedBaseFactor(b.layers, wi.z, b.wo.z) + sheenEval(b.layers, b.wo, wi);
     p = chance * sheenDirectionPdf(wi) + (1.0f - chance) * p;
   }
-  if (hasCoat(m))
-    f = coatedEvalPdf(m, b.layers, b.wo, wi, f, p, coatProbability(m, b.layers, b.color, b.wo.z),
-                      &p);
+  if (hasCoat(m)) {  // in the coat's frame
+    const Frame coat = coatFrame(b);
+    const Vec3 wo = coat.toLocal(b.wo);
+    f = coatedEvalPdf(m, b.layers, wo, coat.toLocal(wi), f, p,
+                      coatProbability(m, b.layers, b.color, wo.z), &p);
+  }
   *pdf = p;
   return f;
 }
@@ -278,9 +288,14 @@ CANDELA_HD_NOINLINE inline bool sampleLayered(const Bsdf& b, float uc, float u1,
   const Material& m = *b.material;
   if (b.wo.z <= 0.0f) return false;
   const SurfaceLayers& layers = b.layers;
-  const float coat = hasCoat(m) ? coatProbability(m, layers, b.color, b.wo.z) : 0.0f;
+  // The coat's lobe, and what it lets through, in its own frame.
+  const Frame coatLocal = coatFrame(b);
+  const Vec3 coatWo = coatLocal.toLocal(b.wo);
+  if (hasCoat(m) && coatWo.z <= 0.0f) return false;  // seen from below the coat: nothing
+  const float coat = hasCoat(m) ? coatProbability(m, layers, b.color, coatWo.z) : 0.0f;
   if (uc < coat) {
-    if (!sampleCoatReflection(m, layers, b.wo, coat, u1, u2, s)) return false;
+    if (!sampleCoatReflection(m, layers, coatWo, coat, u1, u2, s)) return false;
+    s->wi = coatLocal.toWorld(s->wi);
     if (s->delta) return true;
   } else {
     uc = minf((uc - coat) / (1.0f - coat), kOneMinusEpsilon);
@@ -294,7 +309,9 @@ CANDELA_HD_NOINLINE inline bool sampleLayered(const Bsdf& b, float uc, float u1,
         return false;
       if (s->delta) {  // the layers' share of it, over the chance of choosing the base
         if (hasSheen(m)) s->weight *= sheenedBaseFactor(layers, s->wi.z, b.wo.z) / (1.0f - sheen);
-        if (hasCoat(m)) s->weight *= coatedBaseFactor(m, layers, s->wi.z, b.wo.z) / (1.0f - coat);
+        if (hasCoat(m))
+          s->weight *=
+              coatedBaseFactor(m, layers, coatLocal.toLocal(s->wi).z, coatWo.z) / (1.0f - coat);
         return true;
       }
     }

@@ -255,7 +255,7 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
     return true;
   }
   const Vec3 wo = -st.ray.direction;
-  if (m.normalMap.index >= 0) sp.ns = mappedNormal(scene, m, hit, sp, wo);
+  const Vec3 coatNormal = hasMaps(m) ? applyNormalMaps(scene, m, hit, &sp, wo) : Vec3(0.0f);
   [[maybe_unused]] bool albedoHere = false;  // the albedo pass takes this surface's colour
   if constexpr (kAovs) {
     if (depth == 1) {
@@ -311,10 +311,10 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
     kept[st.channel] = 3.0f;
     st.throughput *= kept;
   }
-  const Bsdf bsdf = makeBsdf(scene, m, color, surfaceRoughness(scene, m, hit, sp),
-                             surfaceTangent(scene, m, hit, sp),
-                             hasLayers(m) ? surfaceLayers(scene, m, hit, sp) : SurfaceLayers(), wo,
-                             sp.ng, sp.ns, st.channel);
+  const Bsdf bsdf = makeBsdf(
+      scene, m, color, surfaceRoughness(scene, m, hit, sp), surfaceTangent(scene, m, hit, sp),
+      hasLayers(m) ? surfaceLayers(scene, m, hit, sp, coatNormal) : SurfaceLayers(), wo, sp.ng,
+      sp.ns, st.channel);
   const Vec3 hemisphere = reflectingHemisphere(bsdf);
   const bool smooth = hasSmoothLobe(m);
   float arrivalPdf = 0.0f;

@@ -198,12 +198,13 @@ CANDELA_HDI void traceLightVertex(const SceneView& scene, const Tracer& tracer, 
   const uint32_t material = materialMet(scene, sp.material, hit, sp, rng);
   const Material& m = scene.materials[material];
   if (!holdsLightVertex(m)) return;
-  if (m.normalMap.index >= 0) sp.ns = mappedNormal(scene, m, hit, sp, -ray.direction);
+  const Vec3 coatNormal =
+      hasMaps(m) ? applyNormalMaps(scene, m, hit, &sp, -ray.direction) : Vec3(0.0f);
   lv->sp = sp;
   lv->color = surfaceColor(scene, m, hit, sp);
   lv->roughness = surfaceRoughness(scene, m, hit, sp);
   lv->tangent = surfaceTangent(scene, m, hit, sp);
-  lv->layers = hasLayers(m) ? surfaceLayers(scene, m, hit, sp) : SurfaceLayers();
+  lv->layers = hasLayers(m) ? surfaceLayers(scene, m, hit, sp, coatNormal) : SurfaceLayers();
   lv->material = material;
   lv->toLight = -ray.direction;
   lv->light = index;

@@ -135,6 +135,9 @@ struct Material {
   TextureRef coatRoughnessTexture;
   uint32_t coatRoughnessChannel = kLuminanceChannel;
   int32_t coatTable = -1;
+  // Tangent-space normals that tilt the coat's normal (render/normal_map.h, coatNormal); without
+  // them the coat lies along the surface's shading normal, unmapped by normalMap.
+  TextureRef coatNormalMap;
   // A texture whose value (luminance, or the channel sheenRoughnessChannel) is the sheen's
   // roughness in place of sheenRoughness, its tables then read by level (kSheenLevels).
   TextureRef sheenRoughnessTexture;

@@ -29,12 +29,15 @@ struct SurfaceLayers {
   float sheenRoughness = 0.0f;
   float sheenBlend = 0.0f;
   const float* sheenTable = nullptr;
+  // The normal about which the coat reflects, in the world, where it is not the shading normal
+  // the material beneath has (render/normal_map.h, applyNormalMaps); zero where it is.
+  Vec3 coatNormal{0.0f};
 };
 
 // The layers of a material without textures for them.
 CANDELA_HDI SurfaceLayers untexturedLayers(const Material& m) {
-  return {m.coatWeight,     m.sheenColor, m.coatRoughness, 0.0f, m.coatTransmittance,
-          m.sheenRoughness, 0.0f,         m.sheenAlbedo};
+  return {m.coatWeight,     m.sheenColor, m.coatRoughness, 0.0f,      m.coatTransmittance,
+          m.sheenRoughness, 0.0f,         m.sheenAlbedo,   Vec3(0.0f)};
 }
 
 // Whether m has a texture for one of its layers' values.
@@ -57,10 +60,13 @@ CANDELA_HDI float sheenLevelAt(float roughness) {
          (float(kSheenLevels - 1) / logf(1.0f / kSheenMinAlpha));
 }
 
-// Out of line: most materials have no layers, and few layers have textures.
+// m's layers at `sp`, its coat about `coatNormal` (applyNormalMaps: zero for sp.ns). Out of
+// line: most materials have no layers, and few layers have textures.
 CANDELA_HD_NOINLINE inline SurfaceLayers surfaceLayers(const SceneView& scene, const Material& m,
-                                                       const Hit& hit, const SurfacePoint& sp) {
+                                                       const Hit& hit, const SurfacePoint& sp,
+                                                       const Vec3& coatNormal) {
   SurfaceLayers layers = untexturedLayers(m);
+  layers.coatNormal = coatNormal;
   if (!hasLayerTextures(m)) return layers;
   const Vec2 uv = surfaceUv(scene, hit, sp);
   if (m.coatTexture.index >= 0)

@@ -10,7 +10,8 @@ bool readsTextures(const Material& m) {
   return m.colorTexture.index >= 0 || m.emissionTexture.index >= 0 || m.alpha.texture.index >= 0 ||
          m.normalMap.index >= 0 || m.roughnessTexture.index >= 0 || m.mixWeightTexture.index >= 0 ||
          m.coatTexture.index >= 0 || m.sheenTexture.index >= 0 ||
-         m.coatRoughnessTexture.index >= 0 || m.sheenRoughnessTexture.index >= 0;
+         m.coatRoughnessTexture.index >= 0 || m.sheenRoughnessTexture.index >= 0 ||
+         m.coatNormalMap.index >= 0;
 }
 
 bool readsUvs(const Material& m) { return readsTextures(m) || m.anisotropy != 0.0f; }

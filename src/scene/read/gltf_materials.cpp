@@ -387,8 +387,15 @@ void GltfMaterialReader::addCoat(const tinygltf::Material& m, const std::string&
         scaledChannel(extensionTexture(*e, "clearcoatRoughnessTexture", TextureUse::Linear, cw), 1,
                       surface->coatRoughness, &surface->coatRoughnessChannel);
   }
-  if (surface->coatWeight > 0.0f && e->Has("clearcoatNormalTexture"))
-    warnOnce(cw + ".clearcoatNormalTexture is not read (the coat follows the surface's normals)");
+  if (surface->coatWeight > 0.0f && e->Has("clearcoatNormalTexture")) {
+    // The coat's own normals; without them it lies smooth over the base's normal texture.
+    surface->coatNormalMap = extensionTexture(*e, "clearcoatNormalTexture", TextureUse::Linear, cw);
+    const tinygltf::Value& info = e->Get("clearcoatNormalTexture");
+    const tinygltf::Value scale =
+        info.IsObject() && info.Has("scale") ? info.Get("scale") : tinygltf::Value(1.0);
+    if (!scale.IsNumber() || scale.GetNumberAsDouble() != 1.0)
+      warnOnce(cw + ".clearcoatNormalTexture.scale is read as 1");
+  }
 }
 
 void GltfMaterialReader::addSheen(const tinygltf::Material& m, const std::string& where,

@@ -40,21 +40,23 @@ const std::vector<std::string> kFields = {
     "color", "ior", "roughness", "metal", "radiance", "strength", "two_sided", "normal_map",
     "bump_map", "alpha", "emission", "emission_strength", "emission_two_sided",
     "transmission_depth", "abbe", "visible", "anisotropy", "anisotropy_rotation", "materials",
-    "weight", "coat", "coat_roughness", "coat_ior", "sheen", "sheen_roughness"};
+    "weight", "coat", "coat_roughness", "coat_ior", "coat_normal_map", "sheen", "sheen_roughness"};
 const std::vector<std::vector<std::string>> kFieldsOf = {
     {"color", "normal_map", "bump_map", "alpha", "emission", "emission_strength", "emission_two_sided",
-     "coat", "coat_roughness", "coat_ior", "sheen", "sheen_roughness"},  // diffuse
+     "coat", "coat_roughness", "coat_ior", "coat_normal_map", "sheen",
+     "sheen_roughness"},  // diffuse
     {"color", "normal_map", "bump_map", "alpha", "emission", "emission_strength", "emission_two_sided",
-     "coat", "coat_roughness", "coat_ior", "sheen", "sheen_roughness"},  // mirror
+     "coat", "coat_roughness", "coat_ior", "coat_normal_map", "sheen",
+     "sheen_roughness"},  // mirror
     {"color", "ior", "roughness", "anisotropy", "anisotropy_rotation", "normal_map", "bump_map",
      "alpha", "emission", "emission_strength", "transmission_depth", "abbe"},  // glass
     {"radiance", "strength", "two_sided", "visible"},                          // emissive
     {"color", "roughness", "anisotropy", "anisotropy_rotation", "metal", "normal_map", "bump_map",
      "alpha", "emission", "emission_strength", "emission_two_sided", "coat", "coat_roughness",
-     "coat_ior", "sheen", "sheen_roughness"},  // conductor
+     "coat_ior", "coat_normal_map", "sheen", "sheen_roughness"},  // conductor
     {"color", "ior", "roughness", "normal_map", "bump_map", "alpha", "emission",
-     "emission_strength", "emission_two_sided", "coat", "coat_roughness", "coat_ior", "sheen",
-     "sheen_roughness"},  // plastic
+     "emission_strength", "emission_two_sided", "coat", "coat_roughness", "coat_ior",
+     "coat_normal_map", "sheen", "sheen_roughness"},  // plastic
     {"ior"},  // thin_glass
     {"materials", "weight", "alpha", "emission", "emission_strength", "emission_two_sided"},  // mix
 };
@@ -100,8 +102,8 @@ void readAnisotropy(JsonObject& fields, Material* material) {
 }
 
 // "coat", the share of the surface a clear coat covers (a number, or a texture object of them),
-// and that coat's "coat_roughness" (a number or a texture object) and "coat_ior"
-// (render/bsdf_coat.h).
+// and that coat's "coat_roughness" (a number or a texture object), "coat_ior" and
+// "coat_normal_map" (render/bsdf_coat.h).
 void readCoat(JsonObject& fields, TextureLoader& textures, Material* material) {
   const std::optional<JsonValue> coat = fields.get("coat");
   if (coat && coat->json().is_object()) {
@@ -113,7 +115,8 @@ void readCoat(JsonObject& fields, TextureLoader& textures, Material* material) {
   }
   const std::optional<JsonValue> roughness = fields.get("coat_roughness");
   const std::optional<JsonValue> ior = fields.get("coat_ior");
-  for (const std::optional<JsonValue>* field : {&roughness, &ior})
+  const std::optional<JsonValue> normalMap = fields.get("coat_normal_map");
+  for (const std::optional<JsonValue>* field : {&roughness, &ior, &normalMap})
     if (*field && !coat)
       (*field)->fail("describes a clear coat; expected a \"coat\" (its weight) beside it");
   if (roughness && roughness->json().is_object())
@@ -124,6 +127,7 @@ void readCoat(JsonObject& fields, TextureLoader& textures, Material* material) {
     material->coatRoughness =
         roughness->unitNumber("a roughness in [0, 1]", " or a texture object");
   if (ior) material->coatIor = ior->positiveNumber();
+  if (normalMap) material->coatNormalMap = readNormalMap(*normalMap, textures);
 }
 
 // "sheen", the colour of a sheen over the material (each channel in [0, 1]; or a texture object,
