@@ -115,7 +115,7 @@ TEST(Coat, LiesSmoothOverTheMaterialsNormalMapUnlessItHasItsOwn) {
   test::writeMappedPlane(dir / "plane.obj");
   const uint8_t texel[3] = {210, 150, 200};
   std::vector<uint8_t> bytes;
-  for (int i = 0; i < 4; ++i) bytes.insert(bytes.end(), texel, texel + 3);
+  for (int i = 0; i < 12; ++i) bytes.push_back(texel[i % 3]);
   ASSERT_TRUE(test::writeTestPng((dir / "n.png").string(), 2, 2, 3, bytes));
   double t[3], n[3] = {0, 0, 0};
   for (int c = 0; c < 3; ++c) t[c] = 2.0 * texel[c] / 255.0 - 1.0;
