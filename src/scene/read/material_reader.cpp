@@ -74,16 +74,22 @@ std::string notUsedBy(size_t type, const std::string& field) {
   return why;
 }
 
+// A roughness field's value: a number into *number, or a texture object into *texture and its
+// channel into *channel.
+void readRoughnessValue(const JsonValue& value, TextureLoader& textures, float* number,
+                        TextureRef* texture, uint32_t* channel) {
+  if (value.json().is_object())
+    *texture =
+        readUnitTexture(value, textures, "a roughness in [0, 1] or a texture object", channel);
+  else
+    *number = value.unitNumber("a roughness in [0, 1]", " or a texture object");
+}
+
 // "roughness" into material->roughness, or its texture into material->roughnessTexture.
 void readRoughness(JsonObject& fields, TextureLoader& textures, Material* material) {
-  const std::optional<JsonValue> value = fields.get("roughness");
-  if (!value) return;
-  if (value->json().is_object()) {
-    material->roughnessTexture = readUnitTexture(
-        *value, textures, "a roughness in [0, 1] or a texture object", &material->roughnessChannel);
-    return;
-  }
-  material->roughness = value->unitNumber("a roughness in [0, 1]", " or a texture object");
+  if (const std::optional<JsonValue> value = fields.get("roughness"))
+    readRoughnessValue(*value, textures, &material->roughness, &material->roughnessTexture,
+                       &material->roughnessChannel);
 }
 
 // "anisotropy" a in [0, 1] and "anisotropy_rotation" (degrees) into the material: the roughness
@@ -119,13 +125,9 @@ void readCoat(JsonObject& fields, TextureLoader& textures, Material* material) {
   for (const std::optional<JsonValue>* field : {&roughness, &ior, &normalMap})
     if (*field && !coat)
       (*field)->fail("describes a clear coat; expected a \"coat\" (its weight) beside it");
-  if (roughness && roughness->json().is_object())
-    material->coatRoughnessTexture =
-        readUnitTexture(*roughness, textures, "a roughness in [0, 1] or a texture object",
-                        &material->coatRoughnessChannel);
-  else if (roughness)
-    material->coatRoughness =
-        roughness->unitNumber("a roughness in [0, 1]", " or a texture object");
+  if (roughness)
+    readRoughnessValue(*roughness, textures, &material->coatRoughness,
+                       &material->coatRoughnessTexture, &material->coatRoughnessChannel);
   if (ior) material->coatIor = ior->positiveNumber();
   if (normalMap) material->coatNormalMap = readNormalMap(*normalMap, textures);
 }
@@ -142,13 +144,9 @@ void readSheen(JsonObject& fields, TextureLoader& textures, Material* material) 
   material->sheenColor = readTexturedColour(*sheen, textures, &material->sheenTexture);
   if (maxComponent(material->sheenColor) > 1.0f)
     sheen->fail("expected a colour of channels in [0, 1], got " + formatVec3(material->sheenColor));
-  if (roughness && roughness->json().is_object())
-    material->sheenRoughnessTexture =
-        readUnitTexture(*roughness, textures, "a roughness in [0, 1] or a texture object",
-                        &material->sheenRoughnessChannel);
-  else if (roughness)
-    material->sheenRoughness =
-        roughness->unitNumber("a roughness in [0, 1]", " or a texture object");
+  if (roughness)
+    readRoughnessValue(*roughness, textures, &material->sheenRoughness,
+                       &material->sheenRoughnessTexture, &material->sheenRoughnessChannel);
 }
 
 // `radiance` (a colour, or a texture: material->emissionTexture) times the field `strengthKey`
