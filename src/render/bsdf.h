@@ -60,7 +60,7 @@ struct Bsdf {
   float side;  // +1 when wo lies on ng's side (outside), else -1
   Vec3 wo;     // local (zero for a diffuse surface)
   float eta;   // glass: eta_t / eta_i for light leaving towards wo's side
-  SurfaceLayers layers;  // the coat's weight and the sheen's colour here (where m has them)
+  SurfaceLayers layers;  // the coat and the sheen here (render/surface_layers.h; where m has them)
   // The normal the coat reflects about, in the local frame: +z unless a map tilts the material
   // beneath or the coat (render/normal_map.h, applyNormalMaps).
   Vec3 coatUp;

@@ -12,9 +12,10 @@
 // by the coat (so a white diffuse base under a coat of index 1.5 reflects about 9% less than a
 // plastic, which follows both). T is 1 - F for a smooth coat, and for a rough one the table of
 // what its BTDF lets through (render/material_prepare.h, as the plastic's; by roughness level
-// where a texture gives the roughness). Local shading frame of render/bsdf.h, wo.z > 0; the coat
-// shares the base's shading normal, normal map included. The functions take the layers at the
-// point (`l`: the weight w = l.coat, the roughness, the transmittance table).
+// where a texture gives the roughness). The functions work in the coat's own local frame, wo.z > 0:
+// render/bsdf.h's, turned where the coat's normal is not the material's (a normal map tilts one of
+// them: render/normal_map.h, applyNormalMaps), and take the layers at the point (`l`: the weight
+// w = l.coat, the roughness, the transmittance table).
 #pragma once
 
 #include "render/bsdf_plastic.h"

@@ -58,11 +58,10 @@ CANDELA_HDI Vec3 normalFromMap(const SceneView& scene, const TextureRef& map,
 // The shading normal at `sp` (at `hit`, seen from direction wo) that normal map `map` gives, or
 // bump map `map` of heights `height` where that is not 0: sp.ns where the surface has no frame of
 // uvs. Out of line: the integrator calls it only for materials with maps, and the rest of its loop
-// stays as tight. A mapped
-// normal that turns its back on wo, which would leave the surface black from there, has its tilt
-// mirrored about sp.ns (Mitsuba 3's flip_invalid_normals of its normalmap, after Schuessler et al.
-// 2017); one the map tilts below the surface is mirrored above it, as ns always lies in ng's
-// hemisphere (geometry/surface.h).
+// stays as tight. A mapped normal that turns its back on wo, which would leave the surface black
+// from there, has its tilt mirrored about sp.ns (Mitsuba 3's flip_invalid_normals of its
+// normalmap, after Schuessler et al. 2017); one the map tilts below the surface is mirrored above
+// it, as ns always lies in ng's hemisphere (geometry/surface.h).
 CANDELA_HD_NOINLINE inline Vec3 mappedNormal(const SceneView& scene, const TextureRef& map,
                                              float height, const Hit& hit, const SurfacePoint& sp,
                                              const Vec3& wo) {
