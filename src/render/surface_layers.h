@@ -53,11 +53,12 @@ CANDELA_HDI float sheenLevelRoughness(uint32_t level) {
                powf(1.0f / kSheenMinAlpha, float(level) / float(kSheenLevels - 1)));
 }
 
-// Where a sheen of roughness `roughness` lies among the levels: level x and x + 1 blended by the
-// fraction of x.
+// Where a sheen of roughness `roughness` lies among the levels, in [0, kSheenLevels - 1]: level x
+// and x + 1 blended by the fraction of x.
 CANDELA_HDI float sheenLevelAt(float roughness) {
-  return logf(sheenAlpha(roughness) * (1.0f / kSheenMinAlpha)) *
-         (float(kSheenLevels - 1) / logf(1.0f / kSheenMinAlpha));
+  const float x = logf(sheenAlpha(roughness) * (1.0f / kSheenMinAlpha)) *
+                  (float(kSheenLevels - 1) / logf(1.0f / kSheenMinAlpha));
+  return minf(maxf(x, 0.0f), float(kSheenLevels - 1));
 }
 
 // m's layers at `sp`, its coat about `coatNormal` (applyNormalMaps: zero for sp.ns). Out of
@@ -87,7 +88,7 @@ CANDELA_HD_NOINLINE inline SurfaceLayers surfaceLayers(const SceneView& scene, c
   if (m.sheenRoughnessTexture.index >= 0) {
     const TextureSample s = lookupTexture(scene.texturePool(), m.sheenRoughnessTexture, uv.x, uv.y);
     layers.sheenRoughness = minf(textureChannel(s, m.sheenRoughnessChannel), 1.0f);
-    const float x = minf(maxf(sheenLevelAt(layers.sheenRoughness), 0.0f), float(kSheenLevels - 1));
+    const float x = sheenLevelAt(layers.sheenRoughness);
     const uint32_t level = x < float(kSheenLevels - 2) ? uint32_t(x) : kSheenLevels - 2;
     layers.sheenBlend = x - float(level);
     layers.sheenTable = scene.sheenTables + level * kSheenRow;

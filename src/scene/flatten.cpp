@@ -351,11 +351,8 @@ void addSheenTables(SceneData& s, const SceneDesc& desc) {
     if (!hasSheen(m) || m.sheenRoughnessTexture.index < 0) continue;
     const auto [lo, hi] = channelRange(*desc.textures[size_t(m.sheenRoughnessTexture.index)],
                                        m.sheenRoughnessChannel);
-    const auto level = [](float roughness) {
-      return std::min(std::max(sheenLevelAt(roughness), 0.0f), float(kSheenLevels - 1));
-    };
-    first = std::min(first, uint32_t(level(lo)));
-    last = std::max(last, uint32_t(level(hi)) + 1);
+    first = std::min(first, uint32_t(sheenLevelAt(lo)));
+    last = std::max(last, uint32_t(sheenLevelAt(hi)) + 1);
   }
   if (first < kSheenLevels) s.sheenTables = sheenLevelTables(first, last);
 }
