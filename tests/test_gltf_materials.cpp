@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "core/texture.h"
-#include "gltf_test_util.h"
+#include "gltf_material_test_util.h"
 #include "render_test_util.h"
 #include "scene/read/gltf_loader.h"
 #include "scene/scene_error.h"
@@ -24,48 +24,14 @@ namespace candela {
 namespace {
 
 using test::GltfFile;
+using test::kTexels;
+using test::load;
+using test::Loaded;
+using test::materialOf;
+using test::pbr;
+using test::pngBytes;
+using test::quad;
 using test::TempDir;
-
-// One unit quad in z = 0 facing +z (uvs across it), whose primitive takes `material` (-1: none)
-// of the file's `materials`.
-GltfFile quad(const nlohmann::json& materials, int material = 0) {
-  GltfFile f;
-  const int p = f.addFloats({-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0}, "VEC3", 3);
-  const int t = f.addFloats({0, 1, 1, 1, 1, 0, 0, 0}, "VEC2", 2);
-  const int i = f.addAccessor(std::vector<uint16_t>{0, 1, 2, 0, 2, 3}, 5123, "SCALAR", 6);
-  nlohmann::json primitive = {{"attributes", {{"POSITION", p}, {"TEXCOORD_0", t}}}, {"indices", i}};
-  if (material >= 0) primitive["material"] = material;
-  f.doc["meshes"] = nlohmann::json::array({nlohmann::json{{"primitives", {primitive}}}});
-  f.doc["nodes"] = nlohmann::json::array({nlohmann::json{{"mesh", 0}}});
-  if (!materials.is_null()) f.doc["materials"] = materials;
-  return f;
-}
-
-struct Loaded {
-  std::vector<std::shared_ptr<const TextureDesc>> textures;
-  MeshDesc mesh;
-};
-
-std::unique_ptr<Loaded> load(const std::string& path) {
-  auto loaded = std::make_unique<Loaded>();
-  TextureLoader loader(loaded->textures, ".");
-  loaded->mesh = loadGltfFile(path, "m.gltf", loader);
-  return loaded;
-}
-
-// The material of the file's one quad.
-Material materialOf(const TempDir& dir, const nlohmann::json& material, MeshDesc* mesh = nullptr) {
-  const auto loaded = load(dir.write("m.gltf", quad(nlohmann::json::array({material})).gltf()));
-  if (mesh) *mesh = loaded->mesh;
-  return loaded->mesh.materials.at(0);
-}
-
-nlohmann::json pbr(double metallic, double roughness) {
-  return {{"pbrMetallicRoughness",
-           {{"baseColorFactor", {0.5, 0.25, 0.125, 1}},
-            {"metallicFactor", metallic},
-            {"roughnessFactor", roughness}}}};
-}
 
 TEST(GltfMaterials, MetalnessMakesAPlasticAConductorOrAMixOfTheTwo) {
   TempDir dir;
@@ -201,16 +167,6 @@ TEST(GltfMaterials, EmissionTimesItsStrengthAndAlphaByMode) {
   nlohmann::json opaque = blend;
   opaque.erase("alphaMode");
   EXPECT_EQ(materialOf(dir, opaque).alpha.constant, 1.0f);
-}
-
-// Texels of a 2 x 1 RGBA image: channel values the tests can tell apart.
-const std::vector<uint8_t> kTexels = {10, 200, 40, 255, 250, 100, 160, 0};
-
-std::string pngBytes(const TempDir& dir) {
-  const std::string path = dir.file("t.png");
-  EXPECT_TRUE(test::writeTestPng(path, 2, 1, 4, kTexels));
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
 TEST(GltfMaterials, TexturesInTheFileOrBesideItAndFactorsThatScaleThem) {
