@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/constants.h"
 #include "core/texture.h"
 #include "render/bsdf_sheen.h"
 #include "render/material_prepare.h"
@@ -23,7 +24,9 @@ const std::set<std::string> kReadExtensions = {"KHR_materials_emissive_strength"
                                                "KHR_materials_volume",
                                                "KHR_materials_dispersion",
                                                "KHR_materials_clearcoat",
-                                               "KHR_materials_sheen"};
+                                               "KHR_materials_sheen",
+                                               "KHR_materials_specular",
+                                               "KHR_materials_anisotropy"};
 
 const tinygltf::Value* extension(const tinygltf::ExtensionMap& extensions, const char* name) {
   const auto found = extensions.find(name);
@@ -38,6 +41,24 @@ double extensionNumber(const tinygltf::Value* object, const char* key, double fa
   const double number = value.IsNumber() ? value.GetNumberAsDouble() : NAN;
   if (!std::isfinite(number)) throw SceneError(where + "." + key + ": expected a finite number");
   return number;
+}
+
+// Three numbers of an extension's object, `fallback` where absent; refused unless each is in
+// [0, most] (most infinite: finite and non-negative).
+Vec3 extensionColour(const tinygltf::Value* object, const char* key, Vec3 fallback, float most,
+                     const std::string& where) {
+  if (!object || !object->Has(key)) return fallback;
+  const tinygltf::Value& c = object->Get(key);
+  Vec3 colour;
+  for (int i = 0; i < 3; ++i) {
+    const tinygltf::Value& v = c.IsArray() && c.ArrayLen() == 3 ? c.Get(i) : tinygltf::Value();
+    colour[i] = v.IsNumber() ? float(v.GetNumberAsDouble()) : NAN;
+    if (!(colour[i] >= 0.0f && colour[i] <= most && std::isfinite(colour[i])))
+      throw SceneError(where + "." + key + ": expected three " +
+                       (std::isfinite(most) ? "numbers in [0, " + formatNumber(most) + "]"
+                                            : std::string("finite, non-negative numbers")));
+  }
+  return colour;
 }
 
 float unitFactor(double value, const std::string& where) {
@@ -257,22 +278,54 @@ Material GltfMaterialReader::surfaceOf(const tinygltf::Material& m, const std::s
   return surface;
 }
 
-float GltfMaterialReader::iorOf(const tinygltf::Material& m, const std::string& where) {
+double GltfMaterialReader::fileIorOf(const tinygltf::Material& m, const std::string& where) {
   const tinygltf::Value* e = extension(m.extensions, "KHR_materials_ior");
-  if (!e) return 1.5f;
+  if (!e) return 1.5;
   const double value =
       extensionNumber(e, "ior", 1.5, label_ + ": " + where + ".extensions.KHR_materials_ior");
-  if (value > 1.0 && value < 1e3) return float(value);
+  if (value == 0.0 || value >= 1.0) return value;
   warnOnce(where + ".extensions.KHR_materials_ior.ior " + formatNumber(float(value)) +
-           " is read as 1.5 (candela's coats and glass take an index above 1)");
-  return 1.5f;
+           " is read as 1.5 (glTF's index is 0 or at least 1)");
+  return 1.5;
+}
+
+float GltfMaterialReader::plasticIorOf(const tinygltf::Material& m, const std::string& where) {
+  const double ior = fileIorOf(m, where);
+  const tinygltf::Value* e = extension(m.extensions, "KHR_materials_specular");
+  const std::string sw = where + ".extensions.KHR_materials_specular";
+  const float factor = unitFactor(extensionNumber(e, "specularFactor", 1.0, label_ + ": " + sw),
+                                  label_ + ": " + sw + ".specularFactor");
+  const Vec3 colour =
+      extensionColour(e, "specularColorFactor", Vec3(1.0f), INFINITY, label_ + ": " + sw);
+  for (const char* key : {"specularTexture", "specularColorTexture"})
+    if (e && e->Has(key))
+      warnOnce(sw + "." + key + " is not rendered (a plastic has one index): read as white");
+  const bool white = colour.x == 1.0f && colour.y == 1.0f && colour.z == 1.0f;
+  if (factor == 1.0f && white && ior > 1.0 && ior < 1e3) return float(ior);
+  // F0, each channel clamped to 1 as glTF's dielectric_f0 is, then its luminance.
+  const double f0 = ior == 0.0 ? 1.0 : ((ior - 1.0) / (ior + 1.0)) * ((ior - 1.0) / (ior + 1.0));
+  Vec3 tinted;
+  for (int c = 0; c < 3; ++c) tinted[c] = float(std::min(f0 * colour[c], 1.0));
+  if (tinted.x != tinted.y || tinted.y != tinted.z)
+    warnOnce(sw + ".specularColorFactor " + formatVec3(colour) +
+             " tints the reflection by its luminance alone (candela's plastic reflects white)");
+  const double reflectance = double(factor) * luminance(tinted);
+  if (!(reflectance > 0.0)) return 0.0f;
+  // The index of that reflectance at normal incidence, below 1000 (F0 0.996).
+  const double r = std::min(std::sqrt(reflectance), 0.998);
+  return float((1.0 + r) / (1.0 - r));
 }
 
 Shading GltfMaterialReader::dielectricOf(const tinygltf::Material& m, const Material& surface,
-                                         float ior, const std::string& where) {
+                                         const Material& anisotropic, const std::string& where) {
   Material plastic = surface;
-  plastic.type = MaterialType::Plastic;
-  plastic.ior = ior;
+  plastic.ior = plasticIorOf(m, where);
+  plastic.type = plastic.ior > 0.0f ? MaterialType::Plastic : MaterialType::Diffuse;
+  if (plastic.type == MaterialType::Diffuse) {  // a base that nothing reflects over
+    plastic.ior = 1.5f;
+    plastic.roughness = 0.0f;
+    plastic.roughnessTexture = TextureRef();
+  }
   prepareMaterial(&plastic);
   const tinygltf::Value* e = extension(m.extensions, "KHR_materials_transmission");
   if (!e) return {plastic, {}};
@@ -288,13 +341,26 @@ Shading GltfMaterialReader::dielectricOf(const tinygltf::Material& m, const Mate
                         transmission, &channel);
   if (surface.coatWeight > 0.0f || hasSheen(surface))
     warnOnce(tw + ": the transmitted part has no clear coat or sheen (candela's glass takes none)");
+  if (extension(m.extensions, "KHR_materials_specular"))
+    warnOnce(tw +
+             ": the transmitted part reflects as its index says (KHR_materials_specular "
+             "scales the plastic's reflection alone)");
+  double ior = fileIorOf(m, where);
+  if (ior == 0.0 || ior >= 1e3) {
+    warnOnce(where + ".extensions.KHR_materials_ior.ior " + formatNumber(float(ior)) +
+             " is read as 1.5 for the transmitted part (candela's glass takes an index from 1 "
+             "to 1000)");
+    ior = 1.5;
+  }
   Material glass;
   glass.type = MaterialType::Glass;
-  glass.ior = ior;
+  glass.ior = float(ior);
   glass.color = surface.color;
-  glass.roughness = surface.roughness;
-  glass.roughnessTexture = surface.roughnessTexture;
-  glass.roughnessChannel = surface.roughnessChannel;
+  glass.roughness = anisotropic.roughness;
+  glass.roughnessTexture = anisotropic.roughnessTexture;
+  glass.roughnessChannel = anisotropic.roughnessChannel;
+  glass.anisotropy = anisotropic.anisotropy;
+  glass.anisotropyRotation = anisotropic.anisotropyRotation;
   glass.normalMap = surface.normalMap;
   addVolume(m, where, &glass);
   if (surface.colorTexture.index >= 0)
@@ -361,6 +427,43 @@ TextureRef GltfMaterialReader::extensionTexture(const tinygltf::Value& e, const 
                  where + "." + key);
 }
 
+Material GltfMaterialReader::anisotropicOf(const tinygltf::Material& m, const Material& surface,
+                                           const TextureRef& metalRough, const std::string& where) {
+  const tinygltf::Value* e = extension(m.extensions, "KHR_materials_anisotropy");
+  if (!e) return surface;
+  const std::string aw = where + ".extensions.KHR_materials_anisotropy";
+  const float strength =
+      unitFactor(extensionNumber(e, "anisotropyStrength", 0.0, label_ + ": " + aw),
+                 label_ + ": " + aw + ".anisotropyStrength");
+  const double rotation = extensionNumber(e, "anisotropyRotation", 0.0, label_ + ": " + aw);
+  if (e->Has("anisotropyTexture"))
+    warnOnce(aw +
+             ".anisotropyTexture is not rendered: the anisotropy lies along the tangent "
+             "turned by anisotropyRotation, of strength anisotropyStrength");
+  // glTF's alphas: the tangent's mix(alpha, 1, strength^2), the bitangent's alpha itself; as
+  // candela's roughness and anisotropy (render/microfacet.h, tangentAlpha): the bitangent's alpha
+  // is (1 - anisotropy) times the tangent's, and roughness^2 their root mean square.
+  const double alpha = double(surface.roughness) * surface.roughness;
+  const double along = alpha + double(strength) * strength * (1.0 - alpha);
+  if (!(strength > 0.0f) || !(along > alpha)) return surface;
+  const double across = alpha / along;
+  const double rms = along * std::sqrt(0.5 * (1.0 + across * across));
+  Material anisotropic = surface;
+  anisotropic.roughness = float(std::sqrt(rms));
+  anisotropic.anisotropy = float(1.0 - across);
+  anisotropic.anisotropyRotation = float(std::fmod(rotation, 2.0 * kPiDouble));
+  if (metalRough.index >= 0 && surface.roughness > 0.0f) {
+    // The texture scaled so that a texel at the factor's roughness gets exactly glTF's alphas;
+    // the others keep glTF's bitangent alpha, and their tangent's is the factor's ratio times it.
+    anisotropic.roughnessTexture =
+        scaledChannel(metalRough, 1, anisotropic.roughness, &anisotropic.roughnessChannel);
+    warnOnce(aw +
+             ": with a roughness texture, the ratio of the tangent's roughness to the "
+             "bitangent's is the roughnessFactor's everywhere");
+  }
+  return anisotropic;
+}
+
 void GltfMaterialReader::addCoat(const tinygltf::Material& m, const std::string& where,
                                  Material* surface) {
   const tinygltf::Value* e = extension(m.extensions, "KHR_materials_clearcoat");
@@ -403,16 +506,8 @@ void GltfMaterialReader::addSheen(const tinygltf::Material& m, const std::string
   const tinygltf::Value* e = extension(m.extensions, "KHR_materials_sheen");
   if (!e) return;
   const std::string sw = where + ".extensions.KHR_materials_sheen";
-  if (e->Has("sheenColorFactor")) {
-    const tinygltf::Value& c = e->Get("sheenColorFactor");
-    for (int i = 0; i < 3; ++i) {
-      const tinygltf::Value& v = c.IsArray() && c.ArrayLen() == 3 ? c.Get(i) : tinygltf::Value();
-      surface->sheenColor[i] = v.IsNumber() ? float(v.GetNumberAsDouble()) : NAN;
-      if (!(surface->sheenColor[i] >= 0.0f && surface->sheenColor[i] <= 1.0f))
-        throw SceneError(label_ + ": " + sw +
-                         ".sheenColorFactor: expected three numbers in [0, 1]");
-    }
-  }
+  surface->sheenColor =
+      extensionColour(e, "sheenColorFactor", surface->sheenColor, 1.0f, label_ + ": " + sw);
   surface->sheenRoughness =
       unitFactor(extensionNumber(e, "sheenRoughnessFactor", 0.0, label_ + ": " + sw),
                  label_ + ": " + sw + ".sheenRoughnessFactor");
@@ -507,14 +602,20 @@ Material GltfMaterialReader::read(int index, std::vector<Material>* parts) {
   Material surface = surfaceOf(m, where, &baseHasAlpha, &metalRough);
   addCoat(m, where, &surface);
   addSheen(m, where, &surface);
-  const Shading dielectric = dielectricOf(m, surface, iorOf(m, where), where);
+  const Material anisotropic = anisotropicOf(m, surface, metalRough, where);
+  const Shading dielectric = dielectricOf(m, surface, anisotropic, where);
 
   // Metalness: a mix of the dielectric and a conductor of the base colour.
   const float metallic = unitFactor(m.pbrMetallicRoughness.metallicFactor,
                                     label_ + ": " + where + ".pbrMetallicRoughness.metallicFactor");
-  Material metal = surface;
+  Material metal = anisotropic;
   metal.type = MaterialType::Conductor;
   prepareMaterial(&metal);
+  if (anisotropic.anisotropy > 0.0f && (metallic < 1.0f || metalRough.index >= 0) &&
+      dielectric.material.type != MaterialType::Glass)
+    warnOnce(where +
+             ".extensions.KHR_materials_anisotropy: the dielectric's reflection stays "
+             "isotropic (candela's plastic takes no anisotropy)");
   Shading shading = dielectric;
   if (metalRough.index >= 0 && metallic > 0.0f) {
     uint32_t channel = 0;

@@ -2,8 +2,10 @@
 // model is a mix, by metalness, of a plastic (the dielectric base under its coat, glTF's
 // fresnel_mix) and a conductor whose reflectance is the base colour; KHR_materials_transmission
 // mixes glass into the dielectric, KHR_materials_ior sets its index, KHR_materials_volume its
-// absorption, KHR_materials_dispersion its Abbe number and KHR_materials_clearcoat and
-// KHR_materials_sheen a coat and a sheen over the plastic and the conductor. Normal maps, emission
+// absorption, KHR_materials_dispersion its Abbe number, KHR_materials_specular the plastic's
+// reflectance, KHR_materials_anisotropy the conductor's and glass's anisotropy, and
+// KHR_materials_clearcoat and KHR_materials_sheen a coat and a sheen over the plastic and the
+// conductor. Normal maps, emission
 // (KHR_materials_emissive_strength), alpha (MASK and BLEND) and KHR_texture_transform are read;
 // what candela does not render is named in a warning.
 #pragma once
@@ -67,10 +69,21 @@ class GltfMaterialReader {
   // metallic-roughness texture into *metalRough.
   Material surfaceOf(const tinygltf::Material& m, const std::string& where, bool* baseHasAlpha,
                      TextureRef* metalRough);
-  float iorOf(const tinygltf::Material& m, const std::string& where);
-  // The plastic, or with transmission the glass or a mix of the two.
-  Shading dielectricOf(const tinygltf::Material& m, const Material& surface, float ior,
-                       const std::string& where);
+  // KHR_materials_ior's index as the file gives it: 1.5 where absent; 0 (an infinite index, as
+  // specular-glossiness materials convert) or at least 1, else read as 1.5 with a warning.
+  double fileIorOf(const tinygltf::Material& m, const std::string& where);
+  // The plastic's index: the one whose reflectance at normal incidence is glTF's dielectric F0,
+  // ((ior - 1) / (ior + 1))^2 (1 for an ior of 0), times KHR_materials_specular's colour (its
+  // luminance: candela's plastic reflects white) and factor; 0 where that is 0 (a diffuse base).
+  float plasticIorOf(const tinygltf::Material& m, const std::string& where);
+  // The surface with KHR_materials_anisotropy's strength and rotation as its anisotropy, for the
+  // parts that take one (the conductor and the glass); the surface itself without.
+  Material anisotropicOf(const tinygltf::Material& m, const Material& surface,
+                         const TextureRef& metalRough, const std::string& where);
+  // The plastic (a diffuse base where KHR_materials_specular leaves it nothing to reflect), or
+  // with transmission the glass (rough as `anisotropic`) or a mix of the two.
+  Shading dielectricOf(const tinygltf::Material& m, const Material& surface,
+                       const Material& anisotropic, const std::string& where);
   // A glass's absorption (KHR_materials_volume) and dispersion (KHR_materials_dispersion).
   void addVolume(const tinygltf::Material& m, const std::string& where, Material* glass);
   // KHR_materials_clearcoat's factors, as the coat of the opaque parts (the plastic and the
