@@ -65,6 +65,14 @@ Material diffuse() {
   return m;
 }
 
+// A diffuse sheet that reflects `color` and lets `transmittance` through (render/bsdf_diffuse.h).
+Material translucent(const Vec3& color, const Vec3& transmittance) {
+  Material m;
+  m.color = color;
+  m.transmittance = transmittance;
+  return m;
+}
+
 // m under a sheen of colour `color` (render/bsdf_sheen.h).
 Material sheened(Material m, const Vec3& color, float roughness) {
   m.sheenColor = color;
@@ -94,6 +102,8 @@ std::vector<Case> cases() {
   const Vec3 grazing = normalize(Vec3(0.9f, 0.3f, 0.15f));
   return {
       {"diffuse", diffuse(), steep},
+      {"translucent diffuse", translucent(Vec3(0.5f, 0.3f, 0.1f), Vec3(0.2f, 0.4f, 0.6f)), steep},
+      {"translucent diffuse from behind, grazing", translucent(Vec3(0.1f), Vec3(0.8f)), -grazing},
       {"rough conductor 0.3", conductor(0.3f, false), steep},
       {"rough gold 0.6 grazing", conductor(0.6f, true), grazing},
       {"rough conductor 1", conductor(1.0f, false), grazing},
@@ -203,7 +213,7 @@ TEST(Bsdf, IsReciprocal) {
     SCOPED_TRACE(c.name);
     for (int i = 0; i < 2000; ++i) {
       const Vec3 wo = direction(uniform(rng), 2.0f * kPi * uniform(rng));
-      const bool transmit = c.material.type == MaterialType::Glass && i % 2 == 1;
+      const bool transmit = transmits(c.material) && i % 2 == 1;
       const Vec3 wi = direction(transmit ? -uniform(rng) : uniform(rng), 2.0f * kPi * uniform(rng));
       float pdf;
       const Vec3 forward =
@@ -211,7 +221,8 @@ TEST(Bsdf, IsReciprocal) {
       const Vec3 backward =
           evalBsdf(untexturedBsdf(c.material, wi, kUp, kUp, c.tangent), wo, &pdf) / std::fabs(wo.z);
       // wo outside (index 1), wi inside (index ior) when transmitting.
-      const float scale = transmit ? c.material.ior * c.material.ior : 1.0f;
+      const bool refracts = transmit && c.material.type == MaterialType::Glass;
+      const float scale = refracts ? c.material.ior * c.material.ior : 1.0f;
       for (int a = 0; a < 3; ++a)
         ASSERT_NEAR(forward[a] * scale, backward[a], 2e-3f * backward[a] + 1e-5f)
             << "wo " << wo.x << " " << wo.y << " " << wo.z << ", wi " << wi.x << " " << wi.y << " "
@@ -242,6 +253,12 @@ TEST(Bsdf, WhiteFurnaceNeverGainsEnergy) {
     Material white;
     white.color = Vec3(1.0f);
     EXPECT_NEAR(albedo(white, wo, kSamples).x, 1.0f, 1e-5f);
+    const Vec3 sheet =
+        albedo(translucent(Vec3(0.3f, 0.5f, 0.0f), Vec3(0.7f, 0.5f, 0.2f)), wo, kSamples);
+    // Reflection and transmission chosen at random: within 6 standard deviations of the mean.
+    EXPECT_NEAR(sheet.x, 1.0f, 3e-3f);
+    EXPECT_NEAR(sheet.y, 1.0f, 3e-3f);
+    EXPECT_NEAR(sheet.z, 0.2f, 3e-3f);
     EXPECT_NEAR(albedo(conductor(0.0f, false), wo, kSamples).x, 1.0f, 1e-6f);
     EXPECT_NEAR(albedo(glass(0.0f, 1.5f), wo, kSamples).x, 1.0f, 1e-5f);
     EXPECT_NEAR(albedo(plastic(0.0f, Vec3(1.0f)), wo, kSamples).x, 1.0f, 0.005f);
@@ -378,6 +395,11 @@ TEST(Bsdf, SmoothLobesAndLobeChoice) {
   EXPECT_TRUE(usesLobeChoice(glass(0.3f, 1.5f)));
   EXPECT_TRUE(usesLobeChoice(plastic(0.0f, Vec3(0.5f))));
   EXPECT_FALSE(usesLobeChoice(conductor(0.5f, false)));
+  // A translucent sheet chooses between its two sides, and is no longer bare diffuse.
+  const Material sheet = translucent(Vec3(0.4f), Vec3(0.3f));
+  EXPECT_TRUE(usesLobeChoice(sheet) && transmits(sheet) && hasSmoothLobe(sheet));
+  EXPECT_FALSE(isBareDiffuse(sheet) || boundsAnInside(sheet));
+  EXPECT_FALSE(usesLobeChoice(diffuse()) || transmits(diffuse()));
 }
 
 }  // namespace

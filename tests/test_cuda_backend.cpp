@@ -196,6 +196,32 @@ TEST(CudaBackend, MatchesCpuOnCoatedAndSheenedMaterials) {
   EXPECT_EQ(cpu.rays.camera, gpu.rays.camera);
 }
 
+// Translucent diffuse surfaces (render/bsdf_diffuse.h): a lantern around a point light, a sheet
+// lit from behind by a sun and a sphere light, seen through and through: on the device as on the
+// CPU.
+TEST(CudaBackend, MatchesCpuOnTranslucentSurfaces) {
+  REQUIRE_GPU();
+  const SceneData data = test::loadTestScene(R"({
+    "camera": {"width": 48, "height": 36, "fov": 50, "position": [0, 1.5, 6], "look_at": [0, 0.8, 0],
+               "spp": 16},
+    "render": {"max_depth": 6, "seed": 5},
+    "environment": {"color": [0.05, 0.06, 0.08]},
+    "spheres": [
+      {"position": [0, -1000, 0], "radius": 1000, "material": {"type": "diffuse", "color": 0.5}},
+      {"position": [-1, 1, 0], "radius": 0.6,
+       "material": {"type": "diffuse", "color": [0.5, 0.4, 0.3], "transmittance": [0.4, 0.35, 0.2]}},
+      {"position": [1.2, 0.8, -0.5], "radius": 0.5,
+       "material": {"type": "diffuse", "color": 0.1, "transmittance": [0.2, 0.6, 0.1]}}],
+    "lights": [
+      {"position": [-1, 1, 0], "intensity": 40},
+      {"type": "directional", "direction": [0.2, -0.4, 1], "intensity": 2},
+      {"type": "sphere", "position": [2, 2, -3], "radius": 0.4, "intensity": 300}]})");
+  const RenderResult cpu = renderCpu(data.view(), RenderOptions{});
+  const RenderResult gpu = renderCuda(data);
+  EXPECT_LT(test::relMseAgainst(cpu.image.pixels, gpu.image.pixels), 1e-4);
+  EXPECT_EQ(cpu.rays.camera, gpu.rays.camera);
+}
+
 // Textures clamped, mirrored and read from the nearest texel (core/texture.h's wrap and filter),
 // a mirrored normal map and a clamped emission among them, clear coats smooth over a normal map
 // and on a normal map of their own, and a coat and a sheen of textured roughness (their tables by

@@ -40,9 +40,10 @@ CANDELA_HDI Vec3 facingNormal(const Vec3& wo, const Vec3& ng, const Vec3& ns) {
 // Whether m has a sheen or a coat over it (render/bsdf_sheen.h, render/bsdf_coat.h).
 CANDELA_HDI bool hasLayers(const Material& m) { return hasCoat(m) || hasSheen(m); }
 
-// Whether m is Lambertian with nothing over it: the common case, which needs no wo.
+// Whether m is Lambertian with nothing over it and nothing through it: the common case, which
+// needs no wo.
 CANDELA_HDI bool isBareDiffuse(const Material& m) {
-  return m.type == MaterialType::Diffuse && !hasLayers(m);
+  return m.type == MaterialType::Diffuse && !hasLayers(m) && !isTranslucent(m.transmittance);
 }
 
 // Frame(n, tangent), out of line: only anisotropic materials have a tangent.
@@ -124,7 +125,8 @@ CANDELA_HDI bool hasSmoothLobe(const Material& m) {
 // only for such materials.
 CANDELA_HDI bool usesLobeChoice(const Material& m) {
   return hasLayers(m) || m.type == MaterialType::Plastic ||
-         (m.type == MaterialType::Glass && !isSmooth(m));
+         (m.type == MaterialType::Glass && !isSmooth(m)) ||
+         (m.type == MaterialType::Diffuse && isTranslucent(m.transmittance));
 }
 
 // Whether m emits and reflects nothing (a path that meets it ends there).
@@ -137,9 +139,16 @@ CANDELA_HDI bool emitsTowards(const Material& m, const Vec3& wo, const Vec3& ng)
   return side > 0.0f || (m.twoSided && side < 0.0f);
 }
 
-// Whether material m sends light through its surface as well as back (glass), rather than only
-// back (every other material).
-CANDELA_HDI bool transmits(const Material& m) { return m.type == MaterialType::Glass; }
+// Whether material m sends light through its surface as well as back (glass, a translucent
+// diffuse surface), rather than only back (every other material).
+CANDELA_HDI bool transmits(const Material& m) {
+  return m.type == MaterialType::Glass ||
+         (m.type == MaterialType::Diffuse && isTranslucent(m.transmittance));
+}
+
+// Whether m bounds a solid whose inside absorbs (glass: render/absorption.h), so that a
+// transmission through it enters or leaves that inside; a translucent sheet has none.
+CANDELA_HDI bool boundsAnInside(const Material& m) { return m.type == MaterialType::Glass; }
 
 // The normal of the hemisphere outside which the BSDF scatters nothing (leavesOnItsSide): the
 // geometric normal on wo's side for the surfaces that only reflect; zero for glass, which also
@@ -164,6 +173,8 @@ CANDELA_HDI Vec3 evalBase(const Bsdf& b, const Vec3& wi, float* pdf) {
   const Material& m = *b.material;
   switch (m.type) {
     case MaterialType::Diffuse:
+      if (isTranslucent(m.transmittance))
+        return translucentEvalPdf(b.color, m.transmittance, wi, pdf);
       *pdf = wi.z > 0.0f ? cosineHemispherePdf(wi.z) : 0.0f;
       return diffuseEval(b.color, wi);
     case MaterialType::Conductor:
@@ -267,6 +278,8 @@ CANDELA_HDI bool sampleBase(const Bsdf& b, float uc, float u1, float u2, BsdfSam
   const Material& m = *b.material;
   switch (m.type) {
     case MaterialType::Diffuse:
+      if (isTranslucent(m.transmittance))
+        return translucentSample(b.color, m.transmittance, uc, u1, u2, s);
       return diffuseSample(b.color, u1, u2, s);
     case MaterialType::Conductor:
       return conductorSample(m, b.color, b.alpha, b.wo, u1, u2, s);

@@ -373,7 +373,7 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
   st.etaScale *= bs.eta * bs.eta;
   // A transmission enters the surface's inside, against its outward normal, or leaves it.
   const float outward = dot(bs.wi, sp.ng);
-  if (transmits(m) && outward * dot(wo, sp.ng) < 0.0f)
+  if (boundsAnInside(m) && outward * dot(wo, sp.ng) < 0.0f)
     st.absorption = outward < 0.0f ? m.absorption : Vec3(0.0f);
   st.specularBounce = bs.delta;
   st.bsdfPdf = bs.pdf;

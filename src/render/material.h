@@ -123,6 +123,10 @@ struct Material {
   float coatIor = 1.5f;
   Vec3 sheenColor{0.0f};
   float sheenRoughness = 0.5f;
+  // Diffuse: the share of light, by colour, that passes diffusely through to the other side
+  // (render/bsdf_diffuse.h; 0: none), beside the share `color` that it reflects. Read with the
+  // layers, which a diffuse hit reads anyway.
+  Vec3 transmittance{0.0f};
   // A texture whose value (luminance, or the channel coatChannel) is the coat's weight in place of
   // coatWeight (then 1), and one the sheen colour tints (render/surface_layers.h).
   TextureRef coatTexture;

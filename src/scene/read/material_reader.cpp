@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/constants.h"
+#include "render/bsdf_diffuse.h"
 #include "render/material_prepare.h"
 #include "scene/cauchy_index.h"
 #include "scene/read/did_you_mean.h"
@@ -40,11 +41,12 @@ const std::vector<std::string> kFields = {
     "color", "ior", "roughness", "metal", "radiance", "strength", "two_sided", "normal_map",
     "bump_map", "alpha", "emission", "emission_strength", "emission_two_sided",
     "transmission_depth", "abbe", "visible", "anisotropy", "anisotropy_rotation", "materials",
-    "weight", "coat", "coat_roughness", "coat_ior", "coat_normal_map", "sheen", "sheen_roughness"};
+    "weight", "coat", "coat_roughness", "coat_ior", "coat_normal_map", "sheen", "sheen_roughness",
+    "transmittance"};
 const std::vector<std::vector<std::string>> kFieldsOf = {
     {"color", "normal_map", "bump_map", "alpha", "emission", "emission_strength", "emission_two_sided",
      "coat", "coat_roughness", "coat_ior", "coat_normal_map", "sheen",
-     "sheen_roughness"},  // diffuse
+     "sheen_roughness", "transmittance"},  // diffuse
     {"color", "normal_map", "bump_map", "alpha", "emission", "emission_strength", "emission_two_sided",
      "coat", "coat_roughness", "coat_ior", "coat_normal_map", "sheen",
      "sheen_roughness"},  // mirror
@@ -71,6 +73,9 @@ std::string notUsedBy(size_t type, const std::string& field) {
                           quoted(kTypeNames[type]) + " material";
   if (type == kEmissive && field.rfind("emission", 0) == 0)
     return why + " (it emits its \"radiance\" times its \"strength\")";
+  if (field == "transmittance")
+    return why + " (a \"diffuse\" one lets light through diffusely" +
+           (type == kGlass ? std::string("; a glass's \"color\" tints what passes it)") : ")");
   return why;
 }
 
@@ -147,6 +152,18 @@ void readSheen(JsonObject& fields, TextureLoader& textures, Material* material) 
   if (roughness)
     readRoughnessValue(*roughness, textures, &material->sheenRoughness,
                        &material->sheenRoughnessTexture, &material->sheenRoughnessChannel);
+}
+
+// A diffuse material's "transmittance": the share of light, by colour, that it lets through
+// diffusely (each channel in [0, 1]); a translucent sheet takes no coat or sheen, whose layers
+// cover one side.
+void readTransmittance(const JsonValue& value, JsonObject& fields, Material* material) {
+  material->transmittance = value.colour();
+  if (maxComponent(material->transmittance) > 1.0f)
+    value.fail("expected a colour of channels in [0, 1], got " +
+               formatVec3(material->transmittance));
+  if (isTranslucent(material->transmittance) && (fields.has("coat") || fields.has("sheen")))
+    value.fail("a translucent material takes no \"coat\" or \"sheen\" (they lie on one side)");
 }
 
 // `radiance` (a colour, or a texture: material->emissionTexture) times the field `strengthKey`
@@ -348,6 +365,8 @@ MaterialRead readFields(JsonObject& fields, size_t type, TextureLoader& textures
   switch (type) {
     case kDiffuse:
       material.type = MaterialType::Diffuse;
+      if (std::optional<JsonValue> transmittance = fields.get("transmittance"))
+        readTransmittance(*transmittance, fields, &material);
       break;
     case kMirror:
       material.type = MaterialType::Conductor;

@@ -13,7 +13,16 @@ constexpr int kNamed = 4;  // entities named one by one before the rest are coun
 bool reflectsMoreThanItReceives(const Material& m) {
   const bool reflective = m.type == MaterialType::Diffuse || m.type == MaterialType::Conductor ||
                           m.type == MaterialType::Plastic || m.type == MaterialType::Glass;
-  return reflective && (m.color.x > 1.0f || m.color.y > 1.0f || m.color.z > 1.0f);
+  return reflective && maxComponent(m.color + m.transmittance) > 1.0f;
+}
+
+// What m's colour (and a translucent surface's transmittance) say, for the warning.
+std::string scattered(const Material& m) {
+  if (isBlack(m.transmittance))
+    return "color " + formatVec3(m.color) +
+           " is above 1, a surface that reflects more light than it receives";
+  return "color " + formatVec3(m.color) + " and transmittance " + formatVec3(m.transmittance) +
+         " sum above 1, a surface that scatters more light than it receives";
 }
 
 }  // namespace
@@ -22,10 +31,8 @@ void warnReflectanceAboveOne(SceneDesc& scene) {
   int count = 0;
   const auto check = [&](const std::string& where, const Material& m, const char* whose) {
     if (!reflectsMoreThanItReceives(m) || ++count > kNamed) return;
-    scene.warnings.push_back(scene.file + ": " + where + ": " + whose + " color " +
-                             formatVec3(m.color) +
-                             " is above 1, a surface that reflects more light than it receives; "
-                             "colours are linear reflectances in [0, 1] (8-bit values divided "
+    scene.warnings.push_back(scene.file + ": " + where + ": " + whose + " " + scattered(m) +
+                             "; colours are linear reflectances in [0, 1] (8-bit values divided "
                              "by 255)");
   };
   // A mix's parts are named by the surface that has them.
