@@ -68,6 +68,7 @@ Material diffuse() {
 // A diffuse sheet that reflects `color` and lets `transmittance` through (render/bsdf_diffuse.h).
 Material translucent(const Vec3& color, const Vec3& transmittance) {
   Material m;
+  m.type = MaterialType::Translucent;
   m.color = color;
   m.transmittance = transmittance;
   return m;

@@ -196,11 +196,14 @@ TEST(CudaBackend, MatchesCpuOnCoatedAndSheenedMaterials) {
   EXPECT_EQ(cpu.rays.camera, gpu.rays.camera);
 }
 
-// Translucent diffuse surfaces (render/bsdf_diffuse.h): a lantern around a point light, a sheet
-// lit from behind by a sun and a sphere light, seen through and through: on the device as on the
+// Translucent diffuse surfaces (render/bsdf_diffuse.h): a lantern around a point light, a ball of
+// textured transmittance lit from behind by a sun and a sphere light: on the device as on the
 // CPU.
 TEST(CudaBackend, MatchesCpuOnTranslucentSurfaces) {
   REQUIRE_GPU();
+  const std::string dir = ::testing::TempDir();
+  ASSERT_TRUE(
+      test::writeTestPng(dir + "cuda_translucent.png", 2, 1, 3, {60, 230, 40, 200, 120, 30}));
   const SceneData data = test::loadTestScene(R"({
     "camera": {"width": 48, "height": 36, "fov": 50, "position": [0, 1.5, 6], "look_at": [0, 0.8, 0],
                "spp": 16},
@@ -211,7 +214,8 @@ TEST(CudaBackend, MatchesCpuOnTranslucentSurfaces) {
       {"position": [-1, 1, 0], "radius": 0.6,
        "material": {"type": "diffuse", "color": [0.5, 0.4, 0.3], "transmittance": [0.4, 0.35, 0.2]}},
       {"position": [1.2, 0.8, -0.5], "radius": 0.5,
-       "material": {"type": "diffuse", "color": 0.1, "transmittance": [0.2, 0.6, 0.1]}}],
+       "material": {"type": "diffuse", "color": 0.1, "transmittance": {"texture": ")" +
+                                             dir + R"(cuda_translucent.png"}}}],
     "lights": [
       {"position": [-1, 1, 0], "intensity": 40},
       {"type": "directional", "direction": [0.2, -0.4, 1], "intensity": 2},

@@ -11,6 +11,8 @@
 
 #include "core/constants.h"
 #include "render_test_util.h"
+#include "temp_dir.h"
+#include "texture_test_util.h"
 
 namespace candela {
 namespace {
@@ -46,6 +48,34 @@ TEST(Translucent, UnderASunFromBehindTheSheetShowsTransmittanceTimesIrradiance) 
       for (uint32_t x = 0; x < 32; ++x)
         ASSERT_NEAR(image.image.at(x, y).x, expected, 2e-6 + 2e-6 * expected) << x << "," << y;
   }
+}
+
+// A transmittance texture tints what passes, point by point: a sheet whose texture is magenta on
+// its left half and cyan on its right (read from the nearest texel), under a sun from behind.
+TEST(Translucent, ATransmittanceTextureTintsWhatPassesPointByPoint) {
+  test::TempDir dir;
+  dir.write("sheet.obj",
+            "v -100 0 100\nv 100 0 100\nv 100 0 -100\nv -100 0 -100\n"
+            "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nf 1/1 2/2 3/3 4/4\n");
+  ASSERT_TRUE(test::writeTestPng(dir.file("halves.png"), 2, 1, 3, {255, 0, 255, 0, 255, 255}));
+  const double irradiance = 2.0;
+  const RenderResult image = test::renderTestScene(
+      "{" + camera(4) + R"(, "objects": [{"file": "sheet.obj", "material": {"type": "diffuse",
+          "color": 0.2, "transmittance": {"texture": "halves.png", "filter": "nearest"}}}],
+          "lights": [{"type": "directional", "direction": [0, 1, 0], "intensity": )" +
+          num(irradiance) + "}]}",
+      1, dir.path());
+  // The texels are the transmittance (sRGB 255: 1, 0: 0), the sun straight from below.
+  const double through = irradiance / kPi;
+  for (uint32_t y = 0; y < 24; ++y)
+    for (uint32_t x = 0; x < 32; ++x) {
+      if (x == 15 || x == 16) continue;  // the seam under the image's centre
+      const Vec3 v = image.image.at(x, y);
+      const bool left = x < 16;
+      EXPECT_NEAR(v.x, left ? through : 0.0, 2e-6) << x << "," << y;
+      EXPECT_NEAR(v.y, left ? 0.0 : through, 2e-6) << x << "," << y;
+      EXPECT_NEAR(v.z, through, 2e-6) << x << "," << y;
+    }
 }
 
 // An emissive sphere of radiance L and radius rs, its centre a depth h below the sheet, lights a
@@ -127,9 +157,8 @@ TEST(Translucent, TheSceneFormatRefusesWhatASheetCannotBe) {
   EXPECT_EQ(error(R"({"type": "diffuse", "transmittance": 0.5, "coat": 1})"),
             "test.json: spheres[0].material.transmittance: a translucent material takes no "
             "\"coat\" or \"sheen\" (they lie on one side)");
-  EXPECT_EQ(error(R"({"type": "diffuse", "transmittance": {"texture": "leaf.png"}})"),
-            "test.json: spheres[0].material.transmittance: a texture on a field that takes none "
-            "(expected a number or an array of 3 numbers)");
+  EXPECT_EQ(error(R"({"type": "diffuse", "transmittance": {"texture": 3}})"),
+            "test.json: spheres[0].material.transmittance.texture: expected a string, got 3");
   EXPECT_EQ(error(R"({"type": "plastic", "transmittance": 0.5})"),
             "test.json: spheres[0].material.transmittance: not used by a \"plastic\" material (a "
             "\"diffuse\" one lets light through diffusely)");

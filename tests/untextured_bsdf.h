@@ -8,8 +8,8 @@ namespace candela {
 // The tangent orients an anisotropic material (zero: the frame core/frame.h builds about ns).
 inline Bsdf untexturedBsdf(const Material& m, const Vec3& wo, const Vec3& ng, const Vec3& ns,
                            const Vec3& tangent = Vec3(0.0f)) {
-  return makeBsdf(SceneView(), m, m.color, m.roughness, tangent, untexturedLayers(m), wo, ng, ns,
-                  kAllChannels);
+  return makeBsdf(SceneView(), m, m.color, m.transmittance, m.roughness, tangent,
+                  untexturedLayers(m), wo, ng, ns, kAllChannels);
 }
 
 }  // namespace candela

@@ -40,11 +40,14 @@ CANDELA_HDI Vec3 facingNormal(const Vec3& wo, const Vec3& ng, const Vec3& ns) {
 // Whether m has a sheen or a coat over it (render/bsdf_sheen.h, render/bsdf_coat.h).
 CANDELA_HDI bool hasLayers(const Material& m) { return hasCoat(m) || hasSheen(m); }
 
-// Whether m is Lambertian with nothing over it and nothing through it: the common case, which
-// needs no wo.
+// Whether m is Lambertian with nothing over it: the common case, which needs no wo.
 CANDELA_HDI bool isBareDiffuse(const Material& m) {
-  return m.type == MaterialType::Diffuse && !hasLayers(m) && !isTranslucent(m.transmittance);
+  return m.type == MaterialType::Diffuse && !hasLayers(m);
 }
+
+// Whether m lets light through diffusely (its transmittance is then read at each hit:
+// render/surface_color.h, surfaceTransmittance).
+CANDELA_HDI bool isTranslucent(const Material& m) { return m.type == MaterialType::Translucent; }
 
 // Frame(n, tangent), out of line: only anisotropic materials have a tangent.
 CANDELA_HD_NOINLINE inline Frame tangentFrame(const Vec3& n, const Vec3& tangent) {
@@ -54,6 +57,7 @@ CANDELA_HD_NOINLINE inline Frame tangentFrame(const Vec3& n, const Vec3& tangent
 struct Bsdf {
   const Material* material;
   Vec3 color;   // the material's colour at this point (textures resolved)
+  Vec3 transmittance;  // a translucent diffuse material's at this point (else unread)
   GgxAlpha alpha;    // conductor, glass, plastic: the microfacets' alphas at this point
   PlasticCoat coat;  // plastic: its coat at this point
   Frame frame;  // +z: the shading normal on wo's side; +x: the tangent of an anisotropic material
@@ -70,13 +74,15 @@ struct Bsdf {
 // The frame of the coat's normal within the local frame (the identity where it is +z).
 CANDELA_HDI Frame coatFrame(const Bsdf& b) { return Frame(b.coatUp); }
 
-// The BSDF of material m at a point of colour `color` and roughness `roughness` (its textures'
-// there: render/surface_color.h), tangent `tangent` (render/surface_tangent.h: zero for an
-// isotropic material) and layers `layers` (render/surface_layers.h: unread where m has none),
-// seen from wo, for a path that carries `channel` (render/dispersion.h).
+// The BSDF of material m at a point of colour `color`, transmittance `transmittance` (read where m
+// is translucent) and roughness `roughness` (their textures' there: render/surface_color.h),
+// tangent `tangent` (render/surface_tangent.h: zero for an isotropic material) and layers `layers`
+// (render/surface_layers.h: unread where m has none), seen from wo, for a path that carries
+// `channel` (render/dispersion.h).
 CANDELA_HDI_ALWAYS Bsdf makeBsdf(const SceneView& scene, const Material& m, const Vec3& color,
-                                 float roughness, const Vec3& tangent, const SurfaceLayers& layers,
-                                 const Vec3& wo, const Vec3& ng, const Vec3& ns, int32_t channel) {
+                                 const Vec3& transmittance, float roughness, const Vec3& tangent,
+                                 const SurfaceLayers& layers, const Vec3& wo, const Vec3& ng,
+                                 const Vec3& ns, int32_t channel) {
   const float side = sideOf(wo, ng);
   const Vec3 n = facingNormal(wo, ng, ns);
   const Frame frame = tangent.x == 0.0f && tangent.y == 0.0f && tangent.z == 0.0f
@@ -84,13 +90,15 @@ CANDELA_HDI_ALWAYS Bsdf makeBsdf(const SceneView& scene, const Material& m, cons
                           : tangentFrame(n, tangent);
   // A diffuse surface, the most common, never reads wo.
   if (isBareDiffuse(m))
-    return {&m,         color, GgxAlpha::isotropic(0.0f), PlasticCoat(),         frame, ng, side,
-            Vec3(0.0f), 1.0f,  SurfaceLayers(),           Vec3(0.0f, 0.0f, 1.0f)};
+    return {
+        &m,   color,      Vec3(0.0f), GgxAlpha::isotropic(0.0f), PlasticCoat(),         frame, ng,
+        side, Vec3(0.0f), 1.0f,       SurfaceLayers(),           Vec3(0.0f, 0.0f, 1.0f)};
   const PlasticCoat coat = m.type == MaterialType::Plastic
                                ? plasticCoatAt(m, scene.plasticCoats, roughness)
                                : PlasticCoat();
   return {&m,
           color,
+          transmittance,
           pointAlpha(m, roughness),
           coat,
           frame,
@@ -109,6 +117,7 @@ CANDELA_HDI bool hasSmoothLobe(const Material& m) {
   if (hasSheen(m) || hasRoughCoat(m)) return true;
   switch (m.type) {
     case MaterialType::Diffuse:
+    case MaterialType::Translucent:
     case MaterialType::Plastic:
       return true;
     case MaterialType::Conductor:
@@ -125,8 +134,7 @@ CANDELA_HDI bool hasSmoothLobe(const Material& m) {
 // only for such materials.
 CANDELA_HDI bool usesLobeChoice(const Material& m) {
   return hasLayers(m) || m.type == MaterialType::Plastic ||
-         (m.type == MaterialType::Glass && !isSmooth(m)) ||
-         (m.type == MaterialType::Diffuse && isTranslucent(m.transmittance));
+         (m.type == MaterialType::Glass && !isSmooth(m)) || m.type == MaterialType::Translucent;
 }
 
 // Whether m emits and reflects nothing (a path that meets it ends there).
@@ -142,8 +150,7 @@ CANDELA_HDI bool emitsTowards(const Material& m, const Vec3& wo, const Vec3& ng)
 // Whether material m sends light through its surface as well as back (glass, a translucent
 // diffuse surface), rather than only back (every other material).
 CANDELA_HDI bool transmits(const Material& m) {
-  return m.type == MaterialType::Glass ||
-         (m.type == MaterialType::Diffuse && isTranslucent(m.transmittance));
+  return m.type == MaterialType::Glass || m.type == MaterialType::Translucent;
 }
 
 // Whether m bounds a solid whose inside absorbs (glass: render/absorption.h), so that a
@@ -173,10 +180,10 @@ CANDELA_HDI Vec3 evalBase(const Bsdf& b, const Vec3& wi, float* pdf) {
   const Material& m = *b.material;
   switch (m.type) {
     case MaterialType::Diffuse:
-      if (isTranslucent(m.transmittance))
-        return translucentEvalPdf(b.color, m.transmittance, wi, pdf);
       *pdf = wi.z > 0.0f ? cosineHemispherePdf(wi.z) : 0.0f;
       return diffuseEval(b.color, wi);
+    case MaterialType::Translucent:
+      return translucentEvalPdf(b.color, b.transmittance, wi, pdf);
     case MaterialType::Conductor:
       return conductorEvalPdf(m, b.color, b.alpha, b.wo, wi, pdf);
     case MaterialType::Glass:
@@ -278,9 +285,9 @@ CANDELA_HDI bool sampleBase(const Bsdf& b, float uc, float u1, float u2, BsdfSam
   const Material& m = *b.material;
   switch (m.type) {
     case MaterialType::Diffuse:
-      if (isTranslucent(m.transmittance))
-        return translucentSample(b.color, m.transmittance, uc, u1, u2, s);
       return diffuseSample(b.color, u1, u2, s);
+    case MaterialType::Translucent:
+      return translucentSample(b.color, b.transmittance, uc, u1, u2, s);
     case MaterialType::Conductor:
       return conductorSample(m, b.color, b.alpha, b.wo, u1, u2, s);
     case MaterialType::Glass:

@@ -19,9 +19,6 @@ CANDELA_HDI bool diffuseSample(const Vec3& color, float u1, float u2, BsdfSample
   return s->pdf > 0.0f;
 }
 
-// Whether a diffuse material of transmittance t lets light through.
-CANDELA_HDI bool isTranslucent(const Vec3& transmittance) { return !isBlack(transmittance); }
-
 // The chance that a translucent surface samples its reflection rather than its transmission: by
 // their largest channels, as pbrt-v4.
 CANDELA_HDI float diffuseReflectionProbability(const Vec3& color, const Vec3& transmittance) {

@@ -312,7 +312,8 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
     st.throughput *= kept;
   }
   const Bsdf bsdf = makeBsdf(
-      scene, m, color, surfaceRoughness(scene, m, hit, sp), surfaceTangent(scene, m, hit, sp),
+      scene, m, color, isTranslucent(m) ? surfaceTransmittance(scene, m, hit, sp) : Vec3(0.0f),
+      surfaceRoughness(scene, m, hit, sp), surfaceTangent(scene, m, hit, sp),
       hasLayers(m) ? surfaceLayers(scene, m, hit, sp, coatNormal) : SurfaceLayers(), wo, sp.ng,
       sp.ns, st.channel);
   const Vec3 hemisphere = reflectingHemisphere(bsdf);

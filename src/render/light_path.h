@@ -51,6 +51,7 @@ CANDELA_HDI bool holdsLightVertex(const Material& m) {
 struct LightVertex {
   SurfacePoint sp;
   Vec3 color;    // the surface's colour there (textures included)
+  Vec3 transmittance = Vec3(0.0f);  // and a translucent surface's transmittance
   float roughness = 0.0f;  // and its roughness
   Vec3 tangent = Vec3(0.0f);  // and its tangent (render/surface_tangent.h)
   SurfaceLayers layers;       // and its layers (render/surface_layers.h)
@@ -202,6 +203,7 @@ CANDELA_HDI void traceLightVertex(const SceneView& scene, const Tracer& tracer, 
       hasMaps(m) ? applyNormalMaps(scene, m, hit, &sp, -ray.direction) : Vec3(0.0f);
   lv->sp = sp;
   lv->color = surfaceColor(scene, m, hit, sp);
+  lv->transmittance = isTranslucent(m) ? surfaceTransmittance(scene, m, hit, sp) : Vec3(0.0f);
   lv->roughness = surfaceRoughness(scene, m, hit, sp);
   lv->tangent = surfaceTangent(scene, m, hit, sp);
   lv->layers = hasLayers(m) ? surfaceLayers(scene, m, hit, sp, coatNormal) : SurfaceLayers();
@@ -253,8 +255,8 @@ CANDELA_HDI void connectLightVertex(const SceneView& scene, LightVertex* vertex,
   const Vec3 fHere = evalBsdf(bsdf, wi, &pdfHere);
   if (isBlack(fHere)) return;
   const Material& m = scene.materials[lv.material];
-  const Bsdf there = makeBsdf(scene, m, lv.color, lv.roughness, lv.tangent, lv.layers, -wi,
-                              lv.sp.ng, lv.sp.ns, kAllChannels);
+  const Bsdf there = makeBsdf(scene, m, lv.color, lv.transmittance, lv.roughness, lv.tangent,
+                              lv.layers, -wi, lv.sp.ng, lv.sp.ns, kAllChannels);
   float pdfThere;
   const Vec3 fThere = evalBsdf(there, lv.toLight, &pdfThere);
   const float cosIn = fabsf(dot(lv.sp.ng, lv.toLight)), cosOut = fabsf(dot(lv.sp.ng, wi));

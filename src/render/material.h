@@ -3,6 +3,8 @@
 // The scene description and the kernel share this struct: a material has one home. What a
 // material derives from its parameters (the plastic's internal reflectance and transmittance
 // table) is filled in once on the host by prepareMaterial (render/material_prepare.h).
+// Every TextureRef of a Material is named in scene/mesh_layout.cpp's readsTextures, which gives
+// a mesh its texture coordinates only where some material reads them.
 #pragma once
 
 #include <cstddef>
@@ -24,6 +26,10 @@ enum class MaterialType : uint32_t {
   // Two materials, one of which a path meets at each hit, chosen by the weight there
   // (render/material_mix.h); never a part of what the BSDF or the lights see.
   Mix = 5,
+  // The contract's "diffuse" with a "transmittance": a sheet that reflects `color` and lets
+  // `transmittance` through, both diffusely (render/bsdf_diffuse.h). A type of its own so that
+  // plain diffuse hits, the most common, never look at the transmittance.
+  Translucent = 6,
 };
 
 // Samples of the rough plastic's coating transmittance over cos(theta) in [0, 1] (Mitsuba 3's
@@ -123,10 +129,11 @@ struct Material {
   float coatIor = 1.5f;
   Vec3 sheenColor{0.0f};
   float sheenRoughness = 0.5f;
-  // Diffuse: the share of light, by colour, that passes diffusely through to the other side
-  // (render/bsdf_diffuse.h; 0: none), beside the share `color` that it reflects. Read with the
-  // layers, which a diffuse hit reads anyway.
+  // Translucent: the share of light, by colour, that passes diffusely through to the other side
+  // (render/bsdf_diffuse.h), beside the share `color` that it reflects, and a texture that it
+  // tints (render/surface_color.h).
   Vec3 transmittance{0.0f};
+  TextureRef transmittanceTexture;
   // A texture whose value (luminance, or the channel coatChannel) is the coat's weight in place of
   // coatWeight (then 1), and one the sheen colour tints (render/surface_layers.h).
   TextureRef coatTexture;

@@ -21,6 +21,16 @@ CANDELA_HDI Vec3 surfaceColor(const SceneView& scene, const Material& m, const H
   return tinted * lookupTexture(scene.texturePool(), m.colorTexture, uv.x, uv.y).rgb;
 }
 
+// The transmittance of a translucent material m at the point: `transmittance`, or its texture
+// times it (vertex colours tint the reflected colour alone).
+CANDELA_HDI Vec3 surfaceTransmittance(const SceneView& scene, const Material& m, const Hit& hit,
+                                      const SurfacePoint& sp) {
+  if (m.transmittanceTexture.index < 0) return m.transmittance;
+  const Vec2 uv = surfaceUv(scene, hit, sp);
+  return m.transmittance *
+         lookupTexture(scene.texturePool(), m.transmittanceTexture, uv.x, uv.y).rgb;
+}
+
 // The value in [0, 1] of a field that may be a texture: `constant`, or texture `ref`'s luminance
 // or chosen channel at the point (at most 1).
 CANDELA_HDI float surfaceUnitValue(const SceneView& scene, float constant, const TextureRef& ref,

@@ -11,7 +11,7 @@ bool readsTextures(const Material& m) {
          m.normalMap.index >= 0 || m.roughnessTexture.index >= 0 || m.mixWeightTexture.index >= 0 ||
          m.coatTexture.index >= 0 || m.sheenTexture.index >= 0 ||
          m.coatRoughnessTexture.index >= 0 || m.sheenRoughnessTexture.index >= 0 ||
-         m.coatNormalMap.index >= 0;
+         m.coatNormalMap.index >= 0 || m.transmittanceTexture.index >= 0;
 }
 
 bool readsUvs(const Material& m) { return readsTextures(m) || m.anisotropy != 0.0f; }

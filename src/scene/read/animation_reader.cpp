@@ -273,7 +273,8 @@ void checkUsed(const JsonValue& property, const AnimTrack& track, const SceneDes
       return;
     }
     if (!m) unused("an object whose materials are its file's (give it a \"material\")");
-    if (m->type == MaterialType::Diffuse) unused("a \"diffuse\" material");
+    if (m->type == MaterialType::Diffuse || m->type == MaterialType::Translucent)
+      unused("a \"diffuse\" material");
     if (track.property == AnimProperty::Anisotropy) {
       if (m->type == MaterialType::Plastic) unused("a \"plastic\" material");
       return;

@@ -9,7 +9,6 @@
 #include <vector>
 
 #include "core/constants.h"
-#include "render/bsdf_diffuse.h"
 #include "render/material_prepare.h"
 #include "scene/cauchy_index.h"
 #include "scene/read/did_you_mean.h"
@@ -155,14 +154,17 @@ void readSheen(JsonObject& fields, TextureLoader& textures, Material* material) 
 }
 
 // A diffuse material's "transmittance": the share of light, by colour, that it lets through
-// diffusely (each channel in [0, 1]); a translucent sheet takes no coat or sheen, whose layers
-// cover one side.
-void readTransmittance(const JsonValue& value, JsonObject& fields, Material* material) {
-  material->transmittance = value.colour();
+// diffusely (each channel in [0, 1]; or a texture object, as a "color" may be); a translucent sheet
+// takes no coat or sheen, whose layers cover one side.
+void readTransmittance(const JsonValue& value, JsonObject& fields, TextureLoader& textures,
+                       Material* material) {
+  material->transmittance = readTexturedColour(value, textures, &material->transmittanceTexture);
   if (maxComponent(material->transmittance) > 1.0f)
     value.fail("expected a colour of channels in [0, 1], got " +
                formatVec3(material->transmittance));
-  if (isTranslucent(material->transmittance) && (fields.has("coat") || fields.has("sheen")))
+  if (isBlack(material->transmittance) && material->transmittanceTexture.index < 0) return;
+  material->type = MaterialType::Translucent;
+  if (fields.has("coat") || fields.has("sheen"))
     value.fail("a translucent material takes no \"coat\" or \"sheen\" (they lie on one side)");
 }
 
@@ -366,7 +368,7 @@ MaterialRead readFields(JsonObject& fields, size_t type, TextureLoader& textures
     case kDiffuse:
       material.type = MaterialType::Diffuse;
       if (std::optional<JsonValue> transmittance = fields.get("transmittance"))
-        readTransmittance(*transmittance, fields, &material);
+        readTransmittance(*transmittance, fields, textures, &material);
       break;
     case kMirror:
       material.type = MaterialType::Conductor;

@@ -11,8 +11,9 @@ namespace {
 constexpr int kNamed = 4;  // entities named one by one before the rest are counted
 
 bool reflectsMoreThanItReceives(const Material& m) {
-  const bool reflective = m.type == MaterialType::Diffuse || m.type == MaterialType::Conductor ||
-                          m.type == MaterialType::Plastic || m.type == MaterialType::Glass;
+  const bool reflective = m.type == MaterialType::Diffuse || m.type == MaterialType::Translucent ||
+                          m.type == MaterialType::Conductor || m.type == MaterialType::Plastic ||
+                          m.type == MaterialType::Glass;
   return reflective && maxComponent(m.color + m.transmittance) > 1.0f;
 }
 
