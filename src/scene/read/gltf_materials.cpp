@@ -26,6 +26,7 @@ const std::set<std::string> kReadExtensions = {"KHR_materials_emissive_strength"
                                                "KHR_materials_clearcoat",
                                                "KHR_materials_sheen",
                                                "KHR_materials_specular",
+                                               "KHR_materials_diffuse_transmission",
                                                "KHR_materials_anisotropy"};
 
 const tinygltf::Value* extension(const tinygltf::ExtensionMap& extensions, const char* name) {
@@ -327,13 +328,14 @@ Shading GltfMaterialReader::dielectricOf(const tinygltf::Material& m, const Mate
     plastic.roughnessTexture = TextureRef();
   }
   prepareMaterial(&plastic);
+  const Shading opaque = withDiffuseTransmission(m, surface, plastic, where);
   const tinygltf::Value* e = extension(m.extensions, "KHR_materials_transmission");
-  if (!e) return {plastic, {}};
+  if (!e) return opaque;
   const std::string tw = where + ".extensions.KHR_materials_transmission";
   const float transmission =
       unitFactor(extensionNumber(e, "transmissionFactor", 0.0, label_ + ": " + tw),
                  label_ + ": " + tw + ".transmissionFactor");
-  if (!(transmission > 0.0f)) return {plastic, {}};
+  if (!(transmission > 0.0f)) return opaque;
   TextureRef map;
   uint32_t channel = 0;
   if (e->Has("transmissionTexture"))
@@ -369,7 +371,42 @@ Shading GltfMaterialReader::dielectricOf(const tinygltf::Material& m, const Mate
              "no colour texture)");
   prepareMaterial(&glass);
   if (transmission == 1.0f && map.index < 0) return {glass, {}};
-  return mixOf({plastic, {}}, {glass, {}}, transmission, map, channel);
+  return mixOf(opaque, {glass, {}}, transmission, map, channel);
+}
+
+Shading GltfMaterialReader::withDiffuseTransmission(const tinygltf::Material& m,
+                                                    const Material& surface,
+                                                    const Material& plastic,
+                                                    const std::string& where) {
+  const tinygltf::Value* e = extension(m.extensions, "KHR_materials_diffuse_transmission");
+  if (!e) return {plastic, {}};
+  const std::string dw = where + ".extensions.KHR_materials_diffuse_transmission";
+  const float factor =
+      unitFactor(extensionNumber(e, "diffuseTransmissionFactor", 0.0, label_ + ": " + dw),
+                 label_ + ": " + dw + ".diffuseTransmissionFactor");
+  if (!(factor > 0.0f)) return {plastic, {}};
+  // The share that glTF transmits diffusely, as a sheet that lets its colour through and reflects
+  // nothing: a mix with the plastic by the share (times the texture's alpha channel).
+  Material sheet;
+  sheet.type = MaterialType::Translucent;
+  sheet.color = Vec3(0.0f);
+  sheet.transmittance =
+      extensionColour(e, "diffuseTransmissionColorFactor", Vec3(1.0f), 1.0f, label_ + ": " + dw);
+  if (e->Has("diffuseTransmissionColorTexture"))
+    sheet.transmittanceTexture =
+        extensionTexture(*e, "diffuseTransmissionColorTexture", TextureUse::Color, dw);
+  sheet.normalMap = surface.normalMap;
+  prepareMaterial(&sheet);
+  warnOnce(dw + ": the diffusely transmitted share has no specular reflection" +
+           (surface.coatWeight > 0.0f || hasSheen(surface) ? ", clear coat or sheen" : "") +
+           " (candela's translucent surface takes no coat)");
+  TextureRef map;
+  uint32_t channel = 0;
+  if (e->Has("diffuseTransmissionTexture"))
+    map = scaledChannel(extensionTexture(*e, "diffuseTransmissionTexture", TextureUse::Linear, dw),
+                        3, factor, &channel);
+  if (factor == 1.0f && map.index < 0) return {sheet, {}};
+  return mixOf({plastic, {}}, {sheet, {}}, factor, map, channel);
 }
 
 void GltfMaterialReader::addVolume(const tinygltf::Material& m, const std::string& where,

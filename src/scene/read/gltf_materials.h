@@ -3,7 +3,8 @@
 // fresnel_mix) and a conductor whose reflectance is the base colour; KHR_materials_transmission
 // mixes glass into the dielectric, KHR_materials_ior sets its index, KHR_materials_volume its
 // absorption, KHR_materials_dispersion its Abbe number, KHR_materials_specular the plastic's
-// reflectance, KHR_materials_anisotropy the conductor's and glass's anisotropy, and
+// reflectance, KHR_materials_anisotropy the conductor's and glass's anisotropy,
+// KHR_materials_diffuse_transmission a translucent sheet mixed with the plastic, and
 // KHR_materials_clearcoat and KHR_materials_sheen a coat and a sheen over the plastic and the
 // conductor. Normal maps, emission
 // (KHR_materials_emissive_strength), alpha (MASK and BLEND) and KHR_texture_transform are read;
@@ -80,10 +81,15 @@ class GltfMaterialReader {
   // parts that take one (the conductor and the glass); the surface itself without.
   Material anisotropicOf(const tinygltf::Material& m, const Material& surface,
                          const TextureRef& metalRough, const std::string& where);
-  // The plastic (a diffuse base where KHR_materials_specular leaves it nothing to reflect), or
-  // with transmission the glass (rough as `anisotropic`) or a mix of the two.
+  // The plastic (a diffuse base where KHR_materials_specular leaves it nothing to reflect), with
+  // its diffuse transmission, or with transmission the glass (rough as `anisotropic`) or a mix of
+  // the two.
   Shading dielectricOf(const tinygltf::Material& m, const Material& surface,
                        const Material& anisotropic, const std::string& where);
+  // `plastic`, or with KHR_materials_diffuse_transmission a mix of it and a translucent sheet of
+  // the transmission's colour by its factor (a sheet alone where the factor is 1).
+  Shading withDiffuseTransmission(const tinygltf::Material& m, const Material& surface,
+                                  const Material& plastic, const std::string& where);
   // A glass's absorption (KHR_materials_volume) and dispersion (KHR_materials_dispersion).
   void addVolume(const tinygltf::Material& m, const std::string& where, Material* glass);
   // KHR_materials_clearcoat's factors, as the coat of the opaque parts (the plastic and the

@@ -1,8 +1,9 @@
-// KHR_materials_specular and KHR_materials_anisotropy as candela's materials
-// (scene/read/gltf_materials.h): the plastic's index reflects glTF's F0 times the specular colour
-// and factor at normal incidence, a black plastic seen head-on under a white sky shows that F0,
-// and the conductor's and glass's alphas are glTF's mix(alpha, 1, strength^2) along the tangent
-// and alpha across it.
+// KHR_materials_specular, KHR_materials_anisotropy and KHR_materials_diffuse_transmission as
+// candela's materials (scene/read/gltf_materials.h): the plastic's index reflects glTF's F0 times
+// the specular colour and factor at normal incidence, a black plastic seen head-on under a white
+// sky shows that F0; the conductor's and glass's alphas are glTF's mix(alpha, 1, strength^2) along
+// the tangent and alpha across it; diffuse transmission is a mix of the plastic and a translucent
+// sheet, and a glTF quad renders as the JSON mix the documentation names, pixel for pixel.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -15,6 +16,7 @@
 #include "render/microfacet.h"
 #include "render_test_util.h"
 #include "scene/scene_error.h"
+#include "temp_dir.h"
 
 namespace candela {
 namespace {
@@ -225,6 +227,109 @@ TEST(GltfAnisotropy, ARoughnessTextureKeepsGltfsAlphaAcrossTheTangent) {
   }
   expectGltfAlphas(metal, 0.6, 0.7);            // a texel at the factor's roughness: exactly glTF's
   EXPECT_EQ(loaded->mesh.warnings.size(), 2u);  // the ratio, and the isotropic plastic
+}
+
+nlohmann::json translucent(double factor, const std::vector<double>& colour) {
+  nlohmann::json m = pbr(0, 0.4);
+  m["extensions"] = {
+      {"KHR_materials_diffuse_transmission",
+       {{"diffuseTransmissionFactor", factor}, {"diffuseTransmissionColorFactor", colour}}}};
+  return m;
+}
+
+TEST(GltfDiffuseTransmission, AMixOfThePlasticAndATranslucentSheetByTheFactor) {
+  TempDir dir;
+  MeshDesc mesh;
+  const Material mix = materialOf(dir, translucent(0.4, {1, 0.5, 0.2}), &mesh);
+  ASSERT_EQ(mix.type, MaterialType::Mix);
+  EXPECT_FLOAT_EQ(mix.mixWeight, 0.4f);
+  const Material& plastic = mesh.mixParts.at(mix.mixParts[0]);
+  const Material& sheet = mesh.mixParts.at(mix.mixParts[1]);
+  EXPECT_EQ(plastic.type, MaterialType::Plastic);
+  ASSERT_EQ(sheet.type, MaterialType::Translucent);
+  EXPECT_EQ(sheet.color.x, 0.0f);  // glTF's diffuse_btdf reflects nothing
+  EXPECT_EQ(sheet.transmittance.y, 0.5f);
+  EXPECT_EQ(mesh.warnings,
+            std::vector<std::string>{
+                "m.gltf: materials[0].extensions.KHR_materials_diffuse_transmission: the diffusely "
+                "transmitted share has no specular reflection (candela's translucent surface takes "
+                "no coat)"});
+  // All of it transmitted: the sheet alone; none: the plastic alone.
+  EXPECT_EQ(materialOf(dir, translucent(1, {1, 1, 1})).type, MaterialType::Translucent);
+  EXPECT_EQ(materialOf(dir, translucent(0, {1, 1, 1})).type, MaterialType::Plastic);
+  // With KHR_materials_transmission, the glass mixed over the two, as glTF's transmission
+  // overrides its diffuse transmission.
+  nlohmann::json both = translucent(0.5, {1, 1, 1});
+  both["extensions"]["KHR_materials_transmission"] = {{"transmissionFactor", 0.25}};
+  MeshDesc parts;
+  const Material outer = materialOf(dir, both, &parts);
+  ASSERT_EQ(outer.type, MaterialType::Mix);
+  EXPECT_FLOAT_EQ(outer.mixWeight, 0.25f);
+  EXPECT_EQ(parts.mixParts.at(outer.mixParts[0]).type, MaterialType::Mix);
+  EXPECT_EQ(parts.mixParts.at(outer.mixParts[1]).type, MaterialType::Glass);
+  try {
+    materialOf(dir, translucent(0.5, {1, 2, 1}));
+    ADD_FAILURE() << "a colour of 2 loaded";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "m.gltf: materials[0].extensions.KHR_materials_diffuse_transmission."
+              "diffuseTransmissionColorFactor: expected three numbers in [0, 1]");
+  }
+}
+
+// The factor's texture (alpha times the factor) weighs the mix, the colour's (sRGB) tints the
+// sheet's transmittance.
+TEST(GltfDiffuseTransmission, TexturesWeighTheMixAndTintTheSheet) {
+  TempDir dir;
+  nlohmann::json m = translucent(0.5, {1, 1, 1});
+  m["extensions"]["KHR_materials_diffuse_transmission"]["diffuseTransmissionTexture"] = {
+      {"index", 0}};
+  m["extensions"]["KHR_materials_diffuse_transmission"]["diffuseTransmissionColorTexture"] = {
+      {"index", 0}};
+  test::GltfFile f = test::quad(nlohmann::json::array({m}));
+  f.addImage(test::pngBytes(dir));
+  f.doc["textures"] = nlohmann::json::array({nlohmann::json{{"source", 0}}});
+  const auto loaded = test::load(dir.write("t.glb", f.glb()));
+  const Material& mix = loaded->mesh.materials.at(0);
+  ASSERT_EQ(mix.type, MaterialType::Mix);
+  const TextureDesc& weight = *loaded->textures.at(size_t(mix.mixWeightTexture.index));
+  EXPECT_FLOAT_EQ(weight.texelsF[4 * 0 + mix.mixWeightChannel], 0.5f * 255 / 255);
+  EXPECT_FLOAT_EQ(weight.texelsF[4 * 1 + mix.mixWeightChannel], 0.0f);
+  const Material& sheet = loaded->mesh.mixParts.at(mix.mixParts[1]);
+  ASSERT_EQ(sheet.type, MaterialType::Translucent);
+  EXPECT_EQ(loaded->textures.at(size_t(sheet.transmittanceTexture.index))->format,
+            TextureFormat::Srgb8);
+}
+
+// The mapping as the documentation states it: a glTF quad under a sun from behind and a lamp in
+// front renders as the same quad in OBJ under the JSON mix, pixel for pixel.
+TEST(GltfDiffuseTransmission, AGltfQuadRendersAsTheJsonMixTheDocsMapItTo) {
+  TempDir dir;
+  dir.write("quad.gltf",
+            test::quad(nlohmann::json::array({translucent(0.4, {1, 0.6, 0.3})})).gltf());
+  dir.write("quad.obj",
+            "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
+            "f 1/1 2/2 3/3\nf 1/1 3/3 4/4\n");
+  const std::string common =
+      R"({"camera": {"position": [0.3, 0.5, 3], "look_at": [0, 0, 0], "fov": 50, "width": 24,
+          "height": 24, "spp": 16}, "environment": {"color": [0.1, 0.1, 0.1]},
+          "lights": [{"type": "point", "position": [1, 2, 2], "intensity": 20},
+                     {"type": "directional", "direction": [0.2, 0.1, 1], "intensity": 2}],
+          "objects": [)";
+  const RenderResult gltf =
+      test::renderTestScene(common + R"({"file": "quad.gltf"}]})", 1, dir.path());
+  const RenderResult json = test::renderTestScene(
+      common + R"({"file": "quad.obj", "material": {"type": "mix", "weight": 0.4, "materials": [
+          {"type": "plastic", "color": [0.5, 0.25, 0.125], "roughness": 0.4, "ior": 1.5},
+          {"type": "diffuse", "color": 0, "transmittance": [1, 0.6, 0.3]}]}}]})",
+      1, dir.path());
+  ASSERT_EQ(gltf.image.pixels.size(), json.image.pixels.size());
+  double sum = 0;
+  for (size_t i = 0; i < gltf.image.pixels.size(); ++i) {
+    EXPECT_FLOAT_EQ(gltf.image.pixels[i], json.image.pixels[i]) << "value " << i;
+    sum += gltf.image.pixels[i];
+  }
+  EXPECT_GT(sum, 0.0);
 }
 
 }  // namespace
