@@ -225,6 +225,23 @@ TEST(Aovs, AlbedoOfTheEnvironmentIsItsClampedRadiance) {
   EXPECT_EQ(r.at("instance", 4, 4), 1.0f);
 }
 
+// A translucent sheet's albedo is all it scatters, reflected and let through (at most 1), so that
+// a denoiser sees the colour of a backlit leaf; at max_depth 1 as after it.
+TEST(Aovs, AlbedoOfATranslucentSheetIsItsColourPlusItsTransmittance) {
+  for (const char* depth : {"1", "4"}) {
+    SCOPED_TRACE(std::string("max_depth ") + depth);
+    const AovRender r = renderAovs(R"({
+      "camera": {"width": 9, "height": 9, "fov": 20, "spp": 4, "position": [0, 0, 5]},
+      "render": {"antialiasing": false, "max_depth": )" +
+                                   std::string(depth) + R"(},
+      "spheres": [{"position": [0, 0, 0], "radius": 1, "material": {"type": "diffuse",
+                   "color": [0.2, 0.5, 0.1], "transmittance": [0.3, 0.7, 0.4]}}],
+      "lights": [{"position": [0, 3, 3], "intensity": 100}]
+    })");
+    EXPECT_TRUE(same(r.at3("albedo", 4, 4), Vec3(0.5f, 1.0f, 0.5f)));
+  }
+}
+
 // At an edge, filtered passes are means over the samples (albedo over all of them, depth over
 // those that hit) while the id passes take the sample nearest the pixel centre.
 TEST(Aovs, EdgePixelsAverageFilteredPassesAndTakeIdsFromTheNearestSample) {

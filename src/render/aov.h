@@ -35,10 +35,12 @@ struct FirstHit {
   bool albedoDone = false;
 };
 
-// What a pass uses as the colour of a material whose colour (texture included) is `color`: the
-// BSDF's colour, with a named metal's reflectance at normal incidence.
-CANDELA_HDI Vec3 aovAlbedo(const Material& m, const Vec3& color) {
-  return m.type == MaterialType::Conductor ? conductorFresnel(m, color, 1.0f) : color;
+// What a pass uses as the colour of a material whose colour (texture included) is `color` and
+// transmittance `transmittance` (0 but where it is translucent): the BSDF's colour, with a named
+// metal's reflectance at normal incidence; for a translucent sheet all it scatters, both sides.
+CANDELA_HDI Vec3 aovAlbedo(const Material& m, const Vec3& color, const Vec3& transmittance) {
+  if (m.type == MaterialType::Conductor) return conductorFresnel(m, color, 1.0f);
+  return m.type == MaterialType::Translucent ? min(Vec3(1.0f), color + transmittance) : color;
 }
 
 CANDELA_HDI Vec3 clampUnit(const Vec3& v) { return min(Vec3(1.0f), max(Vec3(0.0f), v)); }

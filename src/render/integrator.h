@@ -298,24 +298,28 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
   if (isEmissive(m)) return false;
   if (depth > st.maxDepth) {
     if constexpr (kAovs)
-      if (albedoHere) first->albedo = aovAlbedo(m, surfaceColor(scene, m, hit, sp));
+      if (albedoHere)
+        first->albedo =
+            aovAlbedo(m, surfaceColor(scene, m, hit, sp), surfaceTransmittance(scene, m, hit, sp));
     return false;
   }
 
   const Vec3 color = surfaceColor(scene, m, hit, sp);
+  const Vec3 transmittance =
+      isTranslucent(m) ? surfaceTransmittance(scene, m, hit, sp) : Vec3(0.0f);
   if constexpr (kAovs)
-    if (albedoHere) first->albedo = aovAlbedo(m, color);
+    if (albedoHere) first->albedo = aovAlbedo(m, color, transmittance);
   if (isDispersive(m) && st.channel == kAllChannels) {
     st.channel = int32_t(minf(rng.next1D() * 3.0f, 2.0f));
     Vec3 kept(0.0f);
     kept[st.channel] = 3.0f;
     st.throughput *= kept;
   }
-  const Bsdf bsdf = makeBsdf(
-      scene, m, color, isTranslucent(m) ? surfaceTransmittance(scene, m, hit, sp) : Vec3(0.0f),
-      surfaceRoughness(scene, m, hit, sp), surfaceTangent(scene, m, hit, sp),
-      hasLayers(m) ? surfaceLayers(scene, m, hit, sp, coatNormal) : SurfaceLayers(), wo, sp.ng,
-      sp.ns, st.channel);
+  const Bsdf bsdf =
+      makeBsdf(scene, m, color, transmittance, surfaceRoughness(scene, m, hit, sp),
+               surfaceTangent(scene, m, hit, sp),
+               hasLayers(m) ? surfaceLayers(scene, m, hit, sp, coatNormal) : SurfaceLayers(), wo,
+               sp.ng, sp.ns, st.channel);
   const Vec3 hemisphere = reflectingHemisphere(bsdf);
   const bool smooth = hasSmoothLobe(m);
   float arrivalPdf = 0.0f;
