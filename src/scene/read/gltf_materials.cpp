@@ -69,6 +69,12 @@ float unitFactor(double value, const std::string& where) {
   return float(value);
 }
 
+// A factor in [0, 1] of an extension's object, `fallback` where absent.
+float extensionFactor(const tinygltf::Value* object, const char* key, double fallback,
+                      const std::string& where) {
+  return unitFactor(extensionNumber(object, key, fallback, where), where + "." + key);
+}
+
 Vec3 colourFactor(const std::vector<double>& values, const std::string& where) {
   if (values.size() < 3) throw SceneError(where + ": expected at least 3 numbers");
   const Vec3 colour{float(values[0]), float(values[1]), float(values[2])};
@@ -294,8 +300,7 @@ float GltfMaterialReader::plasticIorOf(const tinygltf::Material& m, const std::s
   const double ior = fileIorOf(m, where);
   const tinygltf::Value* e = extension(m.extensions, "KHR_materials_specular");
   const std::string sw = where + ".extensions.KHR_materials_specular";
-  const float factor = unitFactor(extensionNumber(e, "specularFactor", 1.0, label_ + ": " + sw),
-                                  label_ + ": " + sw + ".specularFactor");
+  const float factor = extensionFactor(e, "specularFactor", 1.0, label_ + ": " + sw);
   const Vec3 colour =
       extensionColour(e, "specularColorFactor", Vec3(1.0f), INFINITY, label_ + ": " + sw);
   for (const char* key : {"specularTexture", "specularColorTexture"})
@@ -332,9 +337,7 @@ Shading GltfMaterialReader::dielectricOf(const tinygltf::Material& m, const Mate
   const tinygltf::Value* e = extension(m.extensions, "KHR_materials_transmission");
   if (!e) return opaque;
   const std::string tw = where + ".extensions.KHR_materials_transmission";
-  const float transmission =
-      unitFactor(extensionNumber(e, "transmissionFactor", 0.0, label_ + ": " + tw),
-                 label_ + ": " + tw + ".transmissionFactor");
+  const float transmission = extensionFactor(e, "transmissionFactor", 0.0, label_ + ": " + tw);
   if (!(transmission > 0.0f)) return opaque;
   TextureRef map;
   uint32_t channel = 0;
@@ -381,9 +384,7 @@ Shading GltfMaterialReader::withDiffuseTransmission(const tinygltf::Material& m,
   const tinygltf::Value* e = extension(m.extensions, "KHR_materials_diffuse_transmission");
   if (!e) return {plastic, {}};
   const std::string dw = where + ".extensions.KHR_materials_diffuse_transmission";
-  const float factor =
-      unitFactor(extensionNumber(e, "diffuseTransmissionFactor", 0.0, label_ + ": " + dw),
-                 label_ + ": " + dw + ".diffuseTransmissionFactor");
+  const float factor = extensionFactor(e, "diffuseTransmissionFactor", 0.0, label_ + ": " + dw);
   if (!(factor > 0.0f)) return {plastic, {}};
   // The share that glTF transmits diffusely, as a sheet that lets its colour through and reflects
   // nothing: a mix with the plastic by the share (times the texture's alpha channel).
@@ -469,9 +470,7 @@ Material GltfMaterialReader::anisotropicOf(const tinygltf::Material& m, const Ma
   const tinygltf::Value* e = extension(m.extensions, "KHR_materials_anisotropy");
   if (!e) return surface;
   const std::string aw = where + ".extensions.KHR_materials_anisotropy";
-  const float strength =
-      unitFactor(extensionNumber(e, "anisotropyStrength", 0.0, label_ + ": " + aw),
-                 label_ + ": " + aw + ".anisotropyStrength");
+  const float strength = extensionFactor(e, "anisotropyStrength", 0.0, label_ + ": " + aw);
   const double rotation = extensionNumber(e, "anisotropyRotation", 0.0, label_ + ": " + aw);
   if (e->Has("anisotropyTexture"))
     warnOnce(aw +
@@ -506,11 +505,8 @@ void GltfMaterialReader::addCoat(const tinygltf::Material& m, const std::string&
   const tinygltf::Value* e = extension(m.extensions, "KHR_materials_clearcoat");
   if (!e) return;
   const std::string cw = where + ".extensions.KHR_materials_clearcoat";
-  surface->coatWeight = unitFactor(extensionNumber(e, "clearcoatFactor", 0.0, label_ + ": " + cw),
-                                   label_ + ": " + cw + ".clearcoatFactor");
-  surface->coatRoughness =
-      unitFactor(extensionNumber(e, "clearcoatRoughnessFactor", 0.0, label_ + ": " + cw),
-                 label_ + ": " + cw + ".clearcoatRoughnessFactor");
+  surface->coatWeight = extensionFactor(e, "clearcoatFactor", 0.0, label_ + ": " + cw);
+  surface->coatRoughness = extensionFactor(e, "clearcoatRoughnessFactor", 0.0, label_ + ": " + cw);
   surface->coatIor = 1.5f;  // the extension's fixed index
   if (surface->coatWeight > 0.0f && e->Has("clearcoatTexture")) {
     // The weight is the texture's red channel times the factor.
@@ -545,9 +541,7 @@ void GltfMaterialReader::addSheen(const tinygltf::Material& m, const std::string
   const std::string sw = where + ".extensions.KHR_materials_sheen";
   surface->sheenColor =
       extensionColour(e, "sheenColorFactor", surface->sheenColor, 1.0f, label_ + ": " + sw);
-  surface->sheenRoughness =
-      unitFactor(extensionNumber(e, "sheenRoughnessFactor", 0.0, label_ + ": " + sw),
-                 label_ + ": " + sw + ".sheenRoughnessFactor");
+  surface->sheenRoughness = extensionFactor(e, "sheenRoughnessFactor", 0.0, label_ + ": " + sw);
   // The colour is the texture's (sRGB) times the factor.
   if (hasSheen(*surface) && e->Has("sheenColorTexture"))
     surface->sheenTexture = extensionTexture(*e, "sheenColorTexture", TextureUse::Color, sw);
