@@ -8,7 +8,8 @@
 // KHR_materials_clearcoat and KHR_materials_sheen a coat and a sheen over the plastic and the
 // conductor. Normal maps, emission
 // (KHR_materials_emissive_strength), alpha (MASK and BLEND) and KHR_texture_transform are read;
-// what candela does not render is named in a warning.
+// what candela does not render is named in a warning. The extensions that add to the
+// metallic-roughness model are read in gltf_material_extensions.cpp.
 #pragma once
 
 #include <functional>
