@@ -170,6 +170,15 @@ TEST(Translucent, TheSceneFormatRefusesWhatASheetCannotBe) {
       R"({"camera": {}, "spheres": [{"position": [0, 0, 0], "radius": 1, "material":
           {"type": "diffuse", "color": 0.6, "transmittance": 0.5}}]})",
       "test.json", ".");
+  // Textured, the tint (1) is not what the texels let through: no warning.
+  test::TempDir dir;
+  ASSERT_TRUE(test::writeTestPng(dir.file("grey.png"), 1, 1, 3, {100, 100, 100}));
+  EXPECT_TRUE(parseSceneText(
+                  R"({"camera": {}, "spheres": [{"position": [0, 0, 0], "radius": 1, "material":
+                      {"type": "diffuse", "color": 0.6, "transmittance": {"texture":
+                      "grey.png"}}}]})",
+                  "test.json", dir.path())
+                  .warnings.empty());
   ASSERT_EQ(bright.warnings.size(), 1u);
   EXPECT_NE(bright.warnings[0].find("color [0.6, 0.6, 0.6] and transmittance [0.5, 0.5, 0.5] sum "
                                     "above 1"),

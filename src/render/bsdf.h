@@ -158,8 +158,8 @@ CANDELA_HDI bool transmits(const Material& m) {
 CANDELA_HDI bool boundsAnInside(const Material& m) { return m.type == MaterialType::Glass; }
 
 // The normal of the hemisphere outside which the BSDF scatters nothing (leavesOnItsSide): the
-// geometric normal on wo's side for the surfaces that only reflect; zero for glass, which also
-// transmits.
+// geometric normal on wo's side for the surfaces that only reflect; zero for those that also
+// transmit (glass, a translucent sheet).
 CANDELA_HDI Vec3 reflectingHemisphere(const Bsdf& b) {
   return transmits(*b.material) ? Vec3(0.0f) : b.ng * b.side;
 }

@@ -14,12 +14,15 @@ bool reflectsMoreThanItReceives(const Material& m) {
   const bool reflective = m.type == MaterialType::Diffuse || m.type == MaterialType::Translucent ||
                           m.type == MaterialType::Conductor || m.type == MaterialType::Plastic ||
                           m.type == MaterialType::Glass;
-  return reflective && maxComponent(m.color + m.transmittance) > 1.0f;
+  // A texture's tint is 1 and its texels' largest unknown here: each part alone, then.
+  const bool textured = m.colorTexture.index >= 0 || m.transmittanceTexture.index >= 0;
+  return reflective && (textured ? maxComponent(max(m.color, m.transmittance))
+                                 : maxComponent(m.color + m.transmittance)) > 1.0f;
 }
 
 // What m's colour (and a translucent surface's transmittance) say, for the warning.
 std::string scattered(const Material& m) {
-  if (isBlack(m.transmittance))
+  if (maxComponent(m.color) > 1.0f || isBlack(m.transmittance))
     return "color " + formatVec3(m.color) +
            " is above 1, a surface that reflects more light than it receives";
   return "color " + formatVec3(m.color) + " and transmittance " + formatVec3(m.transmittance) +
