@@ -13,6 +13,7 @@
 
 #include "gltf_test_util.h"
 #include "scene/read/gltf_loader.h"
+#include "scene/scene_error.h"
 #include "temp_dir.h"
 #include "texture_test_util.h"
 
@@ -51,6 +52,16 @@ inline Material materialOf(const TempDir& dir, const nlohmann::json& material,
   const auto loaded = load(dir.write("m.gltf", quad(nlohmann::json::array({material})).gltf()));
   if (mesh) *mesh = loaded->mesh;
   return loaded->mesh.materials.at(0);
+}
+
+// The error loading a file whose one quad takes `material` gives, or "(no error)".
+inline std::string materialError(const TempDir& dir, const nlohmann::json& material) {
+  try {
+    materialOf(dir, material);
+  } catch (const SceneError& e) {
+    return e.what();
+  }
+  return "(no error)";
 }
 
 inline nlohmann::json pbr(double metallic, double roughness) {

@@ -39,11 +39,12 @@ CANDELA_HDI Vec3 translucentEvalPdf(const Vec3& color, const Vec3& transmittance
 CANDELA_HDI bool translucentSample(const Vec3& color, const Vec3& transmittance, float uc, float u1,
                                    float u2, BsdfSample* s) {
   const float reflect = diffuseReflectionProbability(color, transmittance);
+  const bool reflects = uc < reflect;
+  const float chance = reflects ? reflect : 1.0f - reflect;
   s->wi = sampleCosineHemisphere(u1, u2);
-  const float chance = uc < reflect ? reflect : 1.0f - reflect;
-  if (uc >= reflect) s->wi.z = -s->wi.z;
+  if (!reflects) s->wi.z = -s->wi.z;
   s->pdf = chance * cosineHemispherePdf(fabsf(s->wi.z));
-  s->weight = (uc < reflect ? color : transmittance) / chance;
+  s->weight = (reflects ? color : transmittance) / chance;
   s->delta = false;
   s->eta = 1.0f;
   return s->pdf > 0.0f;

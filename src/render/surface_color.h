@@ -13,22 +13,26 @@
 
 namespace candela {
 
-CANDELA_HDI Vec3 surfaceColor(const SceneView& scene, const Material& m, const Hit& hit,
-                              const SurfacePoint& sp) {
-  const Vec3 tinted = m.color * vertexColor(scene, hit);
-  if (m.colorTexture.index < 0) return tinted;
+// The colour of a field that may be a texture: `tint`, or texture `ref`'s colour at the point
+// times it.
+CANDELA_HDI Vec3 surfaceTintedColour(const SceneView& scene, const Vec3& tint,
+                                     const TextureRef& ref, const Hit& hit,
+                                     const SurfacePoint& sp) {
+  if (ref.index < 0) return tint;
   const Vec2 uv = surfaceUv(scene, hit, sp);
-  return tinted * lookupTexture(scene.texturePool(), m.colorTexture, uv.x, uv.y).rgb;
+  return tint * lookupTexture(scene.texturePool(), ref, uv.x, uv.y).rgb;
 }
 
-// The transmittance of a translucent material m at the point: `transmittance`, or its texture
-// times it (vertex colours tint the reflected colour alone).
+CANDELA_HDI Vec3 surfaceColor(const SceneView& scene, const Material& m, const Hit& hit,
+                              const SurfacePoint& sp) {
+  return surfaceTintedColour(scene, m.color * vertexColor(scene, hit), m.colorTexture, hit, sp);
+}
+
+// The transmittance of a translucent material m at the point (vertex colours tint the reflected
+// colour alone).
 CANDELA_HDI Vec3 surfaceTransmittance(const SceneView& scene, const Material& m, const Hit& hit,
                                       const SurfacePoint& sp) {
-  if (m.transmittanceTexture.index < 0) return m.transmittance;
-  const Vec2 uv = surfaceUv(scene, hit, sp);
-  return m.transmittance *
-         lookupTexture(scene.texturePool(), m.transmittanceTexture, uv.x, uv.y).rgb;
+  return surfaceTintedColour(scene, m.transmittance, m.transmittanceTexture, hit, sp);
 }
 
 // The value in [0, 1] of a field that may be a texture: `constant`, or texture `ref`'s luminance

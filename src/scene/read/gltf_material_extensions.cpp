@@ -26,8 +26,8 @@ double GltfMaterialReader::fileIorOf(const tinygltf::Material& m, const std::str
   return 1.5;
 }
 
-float GltfMaterialReader::plasticIorOf(const tinygltf::Material& m, const std::string& where) {
-  const double ior = fileIorOf(m, where);
+float GltfMaterialReader::plasticIorOf(const tinygltf::Material& m, double ior,
+                                       const std::string& where) {
   const tinygltf::Value* e = extension(m.extensions, "KHR_materials_specular");
   const std::string sw = where + ".extensions.KHR_materials_specular";
   const float factor = extensionFactor(e, "specularFactor", 1.0, label_ + ": " + sw);
@@ -54,8 +54,9 @@ float GltfMaterialReader::plasticIorOf(const tinygltf::Material& m, const std::s
 
 Shading GltfMaterialReader::dielectricOf(const tinygltf::Material& m, const Material& surface,
                                          const Material& anisotropic, const std::string& where) {
+  double ior = fileIorOf(m, where);
   Material plastic = surface;
-  plastic.ior = plasticIorOf(m, where);
+  plastic.ior = plasticIorOf(m, ior, where);
   plastic.type = plastic.ior > 0.0f ? MaterialType::Plastic : MaterialType::Diffuse;
   if (plastic.type == MaterialType::Diffuse) {  // a base that nothing reflects over
     plastic.ior = 1.5f;
@@ -80,7 +81,6 @@ Shading GltfMaterialReader::dielectricOf(const tinygltf::Material& m, const Mate
     warnOnce(tw +
              ": the transmitted part reflects as its index says (KHR_materials_specular "
              "scales the plastic's reflection alone)");
-  double ior = fileIorOf(m, where);
   if (ior == 0.0 || ior >= 1e3) {
     warnOnce(where + ".extensions.KHR_materials_ior.ior " + formatNumber(float(ior)) +
              " is read as 1.5 for the transmitted part (candela's glass takes an index from 1 "
