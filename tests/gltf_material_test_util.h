@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "gltf_test_util.h"
+#include "render/render_result.h"
 #include "scene/read/gltf_loader.h"
 #include "scene/scene_error.h"
 #include "temp_dir.h"
@@ -69,6 +70,23 @@ inline nlohmann::json pbr(double metallic, double roughness) {
            {{"baseColorFactor", {0.5, 0.25, 0.125, 1}},
             {"metallicFactor", metallic},
             {"roughnessFactor", roughness}}}};
+}
+
+// The quad of `quad` as an OBJ file, for the JSON material a glTF material maps to.
+inline const char* kQuadObj =
+    "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
+    "f 1/1 2/2 3/3\nf 1/1 3/3 4/4\n";
+
+// The glTF quad's render and the OBJ quad's under the JSON material agree pixel for pixel, and
+// show something.
+inline void expectSameImage(const RenderResult& gltf, const RenderResult& json) {
+  ASSERT_EQ(gltf.image.pixels.size(), json.image.pixels.size());
+  double sum = 0;
+  for (size_t i = 0; i < gltf.image.pixels.size(); ++i) {
+    EXPECT_FLOAT_EQ(gltf.image.pixels[i], json.image.pixels[i]) << "value " << i;
+    sum += gltf.image.pixels[i];
+  }
+  EXPECT_GT(sum, 0.0);
 }
 
 // Texels of a 2 x 1 RGBA image: channel values the tests can tell apart.
