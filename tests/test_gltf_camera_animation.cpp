@@ -113,6 +113,38 @@ TEST(GltfCameraAnimation, StepAndCubicSplineSamplersAsGltfDefinesThem) {
   }
 }
 
+// glTF stores rotation keys as floats or as normalized integers; a key of normalized shorts
+// (made unit again: 23170 / 32767 is sin 45 degrees only to 5 digits) turns the camera as the
+// floats do.
+TEST(GltfCameraAnimation, RotationKeysOfNormalizedShortsTurnAsFloats) {
+  TempDir dir;
+  GltfFile f = animatedCamera();
+  const int16_t h = int16_t(std::lround(std::sin(kPiD / 4) * 32767));
+  const int turns =
+      f.addAccessor(std::vector<int16_t>{0, 0, 0, 32767, 0, h, 0, h}, 5122, "VEC4", 2, 0, true);
+  f.doc["animations"][0]["samplers"][1]["output"] = turns;
+  dir.write("cam.gltf", f.gltf());
+  const SceneDesc scene = parseSceneText(sceneWith("\"fly\""), "test.json", dir.path());
+  for (const uint32_t frame : {0u, 6u, 12u, 24u}) {
+    const double t = frame / 24.0, angle = t * kPiD / 2;
+    expectPose(scene, frame, 1 + 2 * t, 2, 8, -std::sin(angle), -std::cos(angle));
+  }
+  // Translations are floats only.
+  const int moves = f.addAccessor(std::vector<int16_t>{0, 0, 5, 2, 0, 5}, 5122, "VEC3", 2, 0, true);
+  f.doc["animations"][0]["samplers"][0]["output"] = moves;
+  dir.write("cam.gltf", f.gltf());
+  try {
+    parseSceneText(sceneWith("\"fly\""), "test.json", dir.path());
+    ADD_FAILURE() << "no error";
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("animations[0].samplers[0].output: accessor " +
+                                         std::to_string(moves) +
+                                         " holds normalized SHORT; expected FLOAT"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 // A time just below the last key, which rounds onto it in single precision, is still between the
 // last two keys: compared in float it was taken for the last, whose next key (past the end of the
 // sampler's values) was read, which AddressSanitizer reports where this runs under it.

@@ -24,7 +24,8 @@ namespace {
 using test::GltfFile;
 using test::TempDir;
 
-constexpr int kFloat = 5126, kUbyte = 5121, kUshort = 5123, kUint = 5125;
+constexpr int kFloat = 5126, kByte = 5120, kUbyte = 5121, kShort = 5122, kUshort = 5123,
+              kUint = 5125;
 
 MeshDesc load(const std::string& path, const std::string& label = "m.gltf") {
   std::vector<std::shared_ptr<const TextureDesc>> textures;
@@ -193,6 +194,48 @@ TEST(GltfLoader, EveryIndexTypeInterleavedBuffersStripsAndFans) {
     }
 }
 
+// KHR_mesh_quantization, as gltfpack writes it: positions of plain unsigned shorts scaled back by
+// their node (uniformly, so that the normals keep their directions), normals of normalized bytes
+// (the most negative held at -1, as glTF says), texture coordinates of plain bytes and of
+// normalized signed shorts; each element padded to 4 bytes.
+TEST(GltfLoader, AQuantizedMeshReadsAsItsNumbers) {
+  TempDir dir;
+  GltfFile f;
+  const int p = f.addAccessor(std::vector<uint16_t>{0, 0, 0, 0, 1000, 0, 0, 0, 1000, 1000, 0, 0},
+                              kUshort, "VEC3", 3, 8);
+  const int n = f.addAccessor(std::vector<int8_t>{-128, 127, 0, 0, 0, 0, 127, 0, 76, 0, 102, 0},
+                              kByte, "VEC3", 3, 4, true);
+  const int t =
+      f.addAccessor(std::vector<uint8_t>{0, 0, 0, 0, 4, 0, 0, 0, 4, 1, 0, 0}, kUbyte, "VEC2", 3, 4);
+  const int ts = f.addAccessor(std::vector<int16_t>{-32768, 0, 32767, 16384, 0, -32767}, kShort,
+                               "VEC2", 3, 0, true);
+  const nlohmann::json primitives = nlohmann::json::array(
+      {nlohmann::json{{"attributes", {{"POSITION", p}, {"NORMAL", n}, {"TEXCOORD_0", t}}}},
+       nlohmann::json{{"attributes", {{"POSITION", p}, {"TEXCOORD_0", ts}}}}});
+  f.doc["meshes"] = nlohmann::json::array({nlohmann::json{{"primitives", primitives}}});
+  f.doc["nodes"] =
+      nlohmann::json::array({nlohmann::json{{"mesh", 0}, {"scale", {1e-3, 1e-3, 1e-3}}}});
+  f.doc["extensionsUsed"] = {"KHR_mesh_quantization"};
+  f.doc["extensionsRequired"] = {"KHR_mesh_quantization"};
+  const MeshDesc mesh = load(dir.write("quantized.glb", f.glb()));
+  ASSERT_EQ(mesh.positions.size(), 6u);
+  const float xyz[3][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}};
+  for (size_t v = 0; v < 6; ++v)
+    for (int a = 0; a < 3; ++a) EXPECT_NEAR(mesh.positions[v][a], xyz[v % 3][a], 1e-6);
+  ASSERT_EQ(mesh.normals.size(), 3u);
+  const double r = std::sqrt(0.5), len = std::hypot(76.0, 102.0);
+  const double normals[3][3] = {{-r, r, 0}, {0, 0, 1}, {76 / len, 0, 102 / len}};
+  for (size_t v = 0; v < 3; ++v)
+    for (int a = 0; a < 3; ++a) EXPECT_NEAR(mesh.normals[v][a], normals[v][a], 1e-6);
+  ASSERT_EQ(mesh.uvs.size(), 6u);
+  const float uvs[6][2] = {{0, 1}, {4, 1}, {4, 0}, {-1, 1}, {1, 1 - 16384 / 32767.0f}, {0, 2}};
+  for (size_t v = 0; v < 6; ++v) {
+    EXPECT_FLOAT_EQ(mesh.uvs[v].x, uvs[v][0]) << v;
+    EXPECT_FLOAT_EQ(mesh.uvs[v].y, uvs[v][1]) << v;
+  }
+  EXPECT_TRUE(mesh.warnings.empty());
+}
+
 TEST(GltfLoader, WhatIsNotRenderedIsNamedInWarnings) {
   TempDir dir;
   GltfFile f = placedQuad();
@@ -250,9 +293,13 @@ TEST(GltfLoader, BrokenFilesAreRefusedWithTheirJsonPath) {
       {"no positions",
        [](GltfFile& f) { f.doc["meshes"][0]["primitives"][0]["attributes"].erase("POSITION"); },
        "m.gltf: meshes[0].primitives[0].attributes: expected a POSITION"},
-      {"integer positions", [](GltfFile& f) { f.doc["accessors"][0]["componentType"] = kUshort; },
-       "m.gltf: meshes[0].primitives[0].attributes.POSITION: accessor 0 holds no floats "
-       "(componentType 5123; quantized meshes, KHR_mesh_quantization, are not read)"},
+      {"positions of ints", [](GltfFile& f) { f.doc["accessors"][0]["componentType"] = kUint; },
+       "m.gltf: meshes[0].primitives[0].attributes.POSITION: accessor 0 holds UNSIGNED_INT; "
+       "expected FLOAT, or BYTE, UNSIGNED_BYTE, SHORT or UNSIGNED_SHORT, normalized or not"},
+      {"normals of plain shorts",
+       [](GltfFile& f) { f.doc["accessors"][1]["componentType"] = kShort; },
+       "m.gltf: meshes[0].primitives[0].attributes.NORMAL: accessor 1 holds SHORT; expected "
+       "FLOAT or normalized BYTE or SHORT"},
       {"a node reached twice", [](GltfFile& f) { f.doc["nodes"][1]["children"] = {0}; },
        "m.gltf: nodes[0] is reached twice (a node may have one parent and appear once)"},
       {"a required extension",

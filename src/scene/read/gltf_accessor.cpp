@@ -1,6 +1,7 @@
 // Reading glTF accessors; see gltf_accessor.h.
 #include "scene/read/gltf_accessor.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -87,42 +88,96 @@ void requireType(const tinygltf::Accessor& a, int index, int components, const s
                      typeName(components));
 }
 
+// glTF's name of a component type, as its tables write them ("normalized SHORT").
+std::string componentTypeName(int type, bool normalized) {
+  const char* name = type == TINYGLTF_COMPONENT_TYPE_BYTE             ? "BYTE"
+                     : type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE  ? "UNSIGNED_BYTE"
+                     : type == TINYGLTF_COMPONENT_TYPE_SHORT          ? "SHORT"
+                     : type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ? "UNSIGNED_SHORT"
+                     : type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT   ? "UNSIGNED_INT"
+                     : type == TINYGLTF_COMPONENT_TYPE_FLOAT          ? "FLOAT"
+                                                                      : nullptr;
+  if (!name) return "componentType " + std::to_string(type);
+  return std::string(normalized && type != TINYGLTF_COMPONENT_TYPE_FLOAT ? "normalized " : "") +
+         name;
+}
+
+// What `encodings` allow, in glTF's words.
+std::string encodingNames(unsigned encodings) {
+  if (encodings & kPlainIntegers)
+    return "FLOAT, or BYTE, UNSIGNED_BYTE, SHORT or UNSIGNED_SHORT, normalized or not";
+  const bool hasSigned = encodings & kSignedNormalized,
+             hasUnsigned = encodings & kUnsignedNormalized;
+  return std::string("FLOAT") + (!hasSigned && !hasUnsigned ? ""
+                                 : !hasSigned   ? " or normalized UNSIGNED_BYTE or UNSIGNED_SHORT"
+                                 : !hasUnsigned ? " or normalized BYTE or SHORT"
+                                                : " or normalized BYTE, UNSIGNED_BYTE, SHORT or "
+                                                  "UNSIGNED_SHORT");
+}
+
+// One integer component as glTF reads it: as it is, or normalized (unsigned into [0, 1]; signed
+// into [-1, 1], the most negative value held at -1).
+float decodeInteger(const uint8_t* bytes, int type, bool normalized) {
+  switch (type) {
+    case TINYGLTF_COMPONENT_TYPE_BYTE: {
+      const float c = float(int8_t(bytes[0]));
+      return normalized ? std::max(c / 127.0f, -1.0f) : c;
+    }
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+      return normalized ? float(bytes[0]) / 255.0f : float(bytes[0]);
+    case TINYGLTF_COMPONENT_TYPE_SHORT: {
+      int16_t v = 0;
+      std::memcpy(&v, bytes, 2);
+      return normalized ? std::max(float(v) / 32767.0f, -1.0f) : float(v);
+    }
+    default: {
+      uint16_t v = 0;
+      std::memcpy(&v, bytes, 2);
+      return normalized ? float(v) / 65535.0f : float(v);
+    }
+  }
+}
+
 }  // namespace
 
 std::vector<float> readFloatAccessor(const tinygltf::Model& model, int index, int components,
-                                     bool normalizedIntegers, const std::string& where) {
+                                     unsigned encodings, const std::string& where) {
   const tinygltf::Accessor& a = accessorAt(model, index, where);
   requireType(a, index, components, where);
-  const bool isFloat = a.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT;
-  const bool isInteger = a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
-                         a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
-  if (!isFloat && !(normalizedIntegers && isInteger && a.normalized))
+  const int type = a.componentType;
+  const bool isFloat = type == TINYGLTF_COMPONENT_TYPE_FLOAT;
+  const bool isSigned =
+      type == TINYGLTF_COMPONENT_TYPE_BYTE || type == TINYGLTF_COMPONENT_TYPE_SHORT;
+  const bool isUnsigned = type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
+                          type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
+  const unsigned encoding = isFloat                    ? kFloats
+                            : !isSigned && !isUnsigned ? 0u
+                            : !a.normalized            ? kPlainIntegers
+                            : isSigned                 ? kSignedNormalized
+                                                       : kUnsignedNormalized;
+  if (!(encoding & encodings))
     throw SceneError(where + ": accessor " + std::to_string(index) + " holds " +
-                     (normalizedIntegers ? "neither floats nor normalized unsigned bytes or shorts"
-                                         : "no floats") +
-                     " (componentType " + std::to_string(a.componentType) +
-                     "; quantized meshes, KHR_mesh_quantization, are not read)");
-  const size_t size = isFloat                                                    ? 4
-                      : a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ? 1
-                                                                                 : 2;
+                     componentTypeName(type, a.normalized) + "; expected " +
+                     encodingNames(encodings));
+  const size_t size =
+      isFloat                                                                                 ? 4
+      : type == TINYGLTF_COMPONENT_TYPE_BYTE || type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ? 1
+                                                                                              : 2;
   const ElementBytes bytes = elementBytes(model, index, components, size, where);
   std::vector<float> values(bytes.count * size_t(components));
   for (size_t i = 0; i < bytes.count; ++i) {
     const uint8_t* element = bytes.first + i * bytes.stride;
     for (int c = 0; c < components; ++c) {
+      const uint8_t* component = element + size * size_t(c);
       float value = 0.0f;
       if (isFloat) {
-        std::memcpy(&value, element + 4 * size_t(c), 4);
+        std::memcpy(&value, component, 4);
         if (!std::isfinite(value))
           throw SceneError(where + ": accessor " + std::to_string(index) + ", element " +
                            std::to_string(i) + ": expected finite numbers, got " +
                            std::to_string(value));
-      } else if (size == 1) {
-        value = float(element[c]) / 255.0f;
       } else {
-        uint16_t v = 0;
-        std::memcpy(&v, element + 2 * size_t(c), 2);
-        value = float(v) / 65535.0f;
+        value = decodeInteger(component, type, a.normalized);
       }
       values[i * size_t(components) + size_t(c)] = value;
     }

@@ -12,11 +12,21 @@
 
 namespace candela {
 
-// The `components`-wide float elements of accessor `index`, one after another: FLOAT components,
-// or (where `normalizedIntegers`) normalized unsigned bytes and shorts scaled into [0, 1], as
-// glTF allows for texture coordinates and colours.
+// The encodings of numbers an accessor may use, as glTF's tables allow them per attribute (and
+// KHR_mesh_quantization widens them for positions, normals and texture coordinates). Flags.
+enum AccessorEncoding : unsigned {
+  kFloats = 1u,
+  kUnsignedNormalized = 2u,  // normalized UNSIGNED_BYTE and _SHORT: c / 255, c / 65535
+  kSignedNormalized = 4u,    // normalized BYTE and SHORT: max(c / 127, -1), max(c / 32767, -1)
+  kPlainIntegers = 8u,       // BYTE, UNSIGNED_BYTE, SHORT and UNSIGNED_SHORT as they are
+};
+constexpr unsigned kAnyEncoding =
+    kFloats | kUnsignedNormalized | kSignedNormalized | kPlainIntegers;
+
+// The `components`-wide elements of accessor `index` as floats, one after another, decoded from
+// any of the `encodings` (AccessorEncoding flags).
 std::vector<float> readFloatAccessor(const tinygltf::Model& model, int index, int components,
-                                     bool normalizedIntegers, const std::string& where);
+                                     unsigned encodings, const std::string& where);
 
 // The scalar unsigned integers (UNSIGNED_BYTE, _SHORT or _INT) of accessor `index`: indices.
 std::vector<uint32_t> readIndexAccessor(const tinygltf::Model& model, int index,

@@ -47,13 +47,15 @@ std::array<double, 4> GltfAnimation::Channel::at(double t) const {
   const size_t n = times.size();
   const size_t stride = size_t(components) * (mode == Mode::Cubic ? 3 : 1);
   const size_t offset = mode == Mode::Cubic ? size_t(components) : 0;  // past the in-tangent
+  const bool rotation = components == 4;
+  // A rotation key is made unit: normalized integers (and rounded floats) hold one only nearly.
+  // Cubic tangents (parts 0 and 2) are not rotations.
   const auto key = [&](size_t k, size_t part = 0) {
     Key v{};
     for (int c = 0; c < components; ++c)
       v[size_t(c)] = values[k * stride + part * size_t(components) + size_t(c)];
-    return v;
+    return rotation && part * size_t(components) == offset ? normalized(v) : v;
   };
-  const bool rotation = components == 4;
   if (t <= times[0] || n == 1) return key(0, offset / size_t(components));
   if (t >= times[n - 1]) return key(n - 1, offset / size_t(components));
   // Compared in double: t just below the last key must not round onto it (and past the end).
@@ -109,13 +111,17 @@ GltfAnimation::GltfAnimation(const tinygltf::Model& model, size_t index, const s
         sampler.interpolation != "LINEAR")
       throw SceneError(samplerAt + ".interpolation: expected LINEAR, STEP or CUBICSPLINE, got \"" +
                        sampler.interpolation + "\"");
-    c.times = readFloatAccessor(model, sampler.input, 1, false, samplerAt + ".input");
+    c.times = readFloatAccessor(model, sampler.input, 1, kFloats, samplerAt + ".input");
     if (c.times.empty()) throw SceneError(samplerAt + ".input: expected at least one key time");
     for (size_t k = 1; k < c.times.size(); ++k)
       if (!(c.times[k] > c.times[k - 1]))
         throw SceneError(samplerAt + ".input: key times must increase, got " +
                          formatNumber(c.times[k]) + " after " + formatNumber(c.times[k - 1]));
-    c.values = readFloatAccessor(model, sampler.output, c.components, false, samplerAt + ".output");
+    // glTF stores rotations as floats or as normalized integers of either sign.
+    const unsigned encodings =
+        path == 1 ? kFloats | kSignedNormalized | kUnsignedNormalized : unsigned(kFloats);
+    c.values =
+        readFloatAccessor(model, sampler.output, c.components, encodings, samplerAt + ".output");
     const size_t expected =
         c.times.size() * size_t(c.components) * (c.mode == Channel::Mode::Cubic ? 3 : 1);
     if (c.values.size() != expected)

@@ -16,7 +16,8 @@ namespace {
 const std::set<std::string> kReadableRequired = {
     "KHR_texture_transform", "KHR_materials_emissive_strength",
     "KHR_materials_ior",     "KHR_materials_transmission",
-    "KHR_materials_volume",  "KHR_materials_dispersion"};
+    "KHR_materials_volume",  "KHR_materials_dispersion",
+    "KHR_mesh_quantization"};
 
 // What tinygltf's image callback fills: the bytes of each image held in the file (a data URI or a
 // buffer view), by image index, for the texture loader to decode (images named by URI are read

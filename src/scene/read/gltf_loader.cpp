@@ -90,13 +90,14 @@ class MeshBuilder {
     const int positionAccessor = attribute("POSITION");
     if (positionAccessor < 0) throw SceneError(at + ".attributes: expected a POSITION");
     const std::vector<float> positions =
-        readFloatAccessor(model_, positionAccessor, 3, false, at + ".attributes.POSITION");
+        readFloatAccessor(model_, positionAccessor, 3, kAnyEncoding, at + ".attributes.POSITION");
     const size_t vertices = positions.size() / 3;
     std::vector<float> normals, uvs;
     if (attribute("NORMAL") >= 0)
-      normals = readFloatAccessor(model_, attribute("NORMAL"), 3, false, at + ".attributes.NORMAL");
+      normals = readFloatAccessor(model_, attribute("NORMAL"), 3, kFloats | kSignedNormalized,
+                                  at + ".attributes.NORMAL");
     if (attribute("TEXCOORD_0") >= 0)
-      uvs = readFloatAccessor(model_, attribute("TEXCOORD_0"), 2, true,
+      uvs = readFloatAccessor(model_, attribute("TEXCOORD_0"), 2, kAnyEncoding,
                               at + ".attributes.TEXCOORD_0");
     const std::vector<float> colors = readColors(attribute("COLOR_0"), at + ".attributes.COLOR_0");
     if ((!normals.empty() && normals.size() / 3 != vertices) ||
@@ -135,7 +136,8 @@ class MeshBuilder {
     if (index < 0) return {};
     const bool rgba = size_t(index) < model_.accessors.size() &&
                       model_.accessors[size_t(index)].type == TINYGLTF_TYPE_VEC4;
-    const std::vector<float> read = readFloatAccessor(model_, index, rgba ? 4 : 3, true, where);
+    const std::vector<float> read =
+        readFloatAccessor(model_, index, rgba ? 4 : 3, kFloats | kUnsignedNormalized, where);
     std::vector<float> rgb;
     rgb.reserve(read.size());
     for (size_t i = 0; i < read.size(); ++i) {

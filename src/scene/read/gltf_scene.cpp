@@ -40,7 +40,7 @@ Staging stagingOf(const tinygltf::Model& model, const std::string& label) {
       if (position == primitive.attributes.end()) continue;
       std::vector<float> xyz;
       try {
-        xyz = readFloatAccessor(model, position->second, 3, false, "POSITION");
+        xyz = readFloatAccessor(model, position->second, 3, kAnyEncoding, "POSITION");
       } catch (const SceneError&) {
         continue;  // the mesh loader refuses it, with its path
       }
