@@ -236,6 +236,84 @@ TEST(GltfLoader, AQuantizedMeshReadsAsItsNumbers) {
   EXPECT_TRUE(mesh.warnings.empty());
 }
 
+// Sparse accessors (as exporters write small edits of a base): the base's elements with those
+// the sparse part names substituted, and, without a base buffer view, zeros under them.
+TEST(GltfLoader, SparseAccessorsSubstituteTheirElements) {
+  TempDir dir;
+  GltfFile f = placedQuad();
+  f.doc["nodes"] = nlohmann::json::array({nlohmann::json{{"mesh", 0}}});
+  f.doc["scenes"] = nlohmann::json::array({nlohmann::json{{"nodes", {0}}}});
+  // Vertex 2 of the positions moves to (2, 3, 0).
+  f.addAccessor(std::vector<uint16_t>{2}, kUshort, "SCALAR", 1);
+  f.addFloats({2, 3, 0}, "VEC3", 3);
+  const size_t views = f.doc["bufferViews"].size();
+  f.doc["accessors"][0]["sparse"] = {
+      {"count", 1},
+      {"indices", {{"bufferView", views - 2}, {"componentType", kUshort}}},
+      {"values", {{"bufferView", views - 1}}}};
+  // The uvs: zeros but for vertices 1 and 3.
+  f.addAccessor(std::vector<uint8_t>{1, 3}, kUbyte, "SCALAR", 2);
+  f.addFloats({0.5f, 0.25f, 1, 1}, "VEC2", 2);
+  f.doc["accessors"][2].erase("bufferView");
+  f.doc["accessors"][2]["sparse"] = {
+      {"count", 2},
+      {"indices", {{"bufferView", views}, {"componentType", kUbyte}}},
+      {"values", {{"bufferView", views + 1}}}};
+  const MeshDesc mesh = load(dir.write("sparse.glb", f.glb()));
+  ASSERT_EQ(mesh.positions.size(), 4u);
+  const float xyz[4][3] = {{0, 0, 0}, {1, 0, 0}, {2, 3, 0}, {0, 1, 0}};
+  for (size_t v = 0; v < 4; ++v)
+    for (int a = 0; a < 3; ++a) EXPECT_EQ(mesh.positions[v][a], xyz[v][a]) << v;
+  ASSERT_EQ(mesh.uvs.size(), 4u);
+  const float uvs[4][2] = {{0, 1}, {0.5f, 0.75f}, {0, 1}, {1, 0}};  // v = 1 - glTF's v
+  for (size_t v = 0; v < 4; ++v) {
+    EXPECT_EQ(mesh.uvs[v].x, uvs[v][0]) << v;
+    EXPECT_EQ(mesh.uvs[v].y, uvs[v][1]) << v;
+  }
+
+  struct Case {
+    const char* name;
+    std::function<void(GltfFile&)> breakIt;
+    std::string expected;
+  };
+  const std::string at = "m.gltf: meshes[0].primitives[0].attributes.TEXCOORD_0: accessor 2";
+  const std::vector<Case> cases = {
+      {"indices that do not rise",
+       [&](GltfFile& g) { g.buffer[g.doc["bufferViews"][views]["byteOffset"].get<size_t>()] = 3; },
+       at + ": sparse.indices: index 1 is 3; expected indices that rise, below 4"},
+      {"an index past the count",
+       [&](GltfFile& g) {
+         g.buffer[g.doc["bufferViews"][views]["byteOffset"].get<size_t>() + 1] = 4;
+       },
+       at + ": sparse.indices: index 1 is 4; expected indices that rise, below 4"},
+      {"more substitutes than elements",
+       [](GltfFile& g) { g.doc["accessors"][2]["sparse"]["count"] = 5; },
+       at + ": sparse.count: expected from 1 to the accessor's count (4), got 5"},
+      {"indices of floats",
+       [](GltfFile& g) { g.doc["accessors"][2]["sparse"]["indices"]["componentType"] = kFloat; },
+       at + ": sparse.indices.componentType: expected UNSIGNED_BYTE, UNSIGNED_SHORT or "
+            "UNSIGNED_INT, got 5126"},
+      {"values past their view",
+       [](GltfFile& g) { g.doc["accessors"][2]["sparse"]["values"]["byteOffset"] = 4; },
+       at + ": sparse.values: 2 elements of 8 bytes from byte 4 do not fit buffer view " +
+           std::to_string(views + 1) + " (16 bytes)"},
+      {"no such view",
+       [](GltfFile& g) { g.doc["accessors"][2]["sparse"]["values"]["bufferView"] = 99; },
+       at + ": sparse.values: buffer view 99 does not exist (" + std::to_string(views + 2) +
+           " buffer views)"},
+      {"a zero-filled count beyond reason",
+       [](GltfFile& g) { g.doc["accessors"][2]["count"] = 1u << 30; },
+       at + " has no buffer view and 1073741824 elements; candela fills at most 16777216 with "
+            "zeros"},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.name);
+    GltfFile broken = f;
+    c.breakIt(broken);
+    EXPECT_EQ(loadError(dir.write("broken.gltf", broken.gltf())), c.expected);
+  }
+}
+
 TEST(GltfLoader, WhatIsNotRenderedIsNamedInWarnings) {
   TempDir dir;
   GltfFile f = placedQuad();

@@ -1,6 +1,8 @@
 // Reading a glTF accessor's elements, every bound checked: the accessor, its buffer view and its
 // buffer must exist and hold all the elements the accessor says they do (a file may claim
-// anything). Errors throw SceneError with `where`, the JSON path of what names the accessor
+// anything). An accessor without a buffer view is zeros, and a sparse one substitutes the
+// elements it names, as glTF defines them. Errors throw SceneError with `where`, the JSON path of
+// what names the accessor
 // ("meshes[0].primitives[1].attributes.POSITION"), and the reason.
 #pragma once
 
