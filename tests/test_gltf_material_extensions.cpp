@@ -1,9 +1,11 @@
-// KHR_materials_specular, KHR_materials_anisotropy and KHR_materials_diffuse_transmission as
+// KHR_materials_specular, KHR_materials_anisotropy, KHR_materials_diffuse_transmission and
+// KHR_materials_unlit as
 // candela's materials (scene/read/gltf_materials.h): the plastic's index reflects glTF's F0 times
 // the specular colour and factor at normal incidence, a black plastic seen head-on under a white
 // sky shows that F0; the conductor's and glass's alphas are glTF's mix(alpha, 1, strength^2) along
 // the tangent and alpha across it; diffuse transmission is a mix of the plastic and a translucent
-// sheet, and a glTF quad renders as the JSON mix the documentation names, pixel for pixel.
+// sheet, and a glTF quad renders as the JSON mix the documentation names, pixel for pixel;
+// KHR_materials_unlit is an emitter of the base colour, which the camera sees as it is.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -307,6 +309,68 @@ TEST(GltfDiffuseTransmission, AGltfQuadRendersAsTheJsonMixTheDocsMapItTo) {
           {"type": "diffuse", "color": 0, "transmittance": [1, 0.6, 0.3]}]}}]})",
       1, dir.path());
   test::expectSameImage(gltf, json);
+}
+
+nlohmann::json unlit() {
+  nlohmann::json m = pbr(1, 0.2);  // unlit: the metalness and roughness are a fallback's
+  m["extensions"] = {{"KHR_materials_unlit", nlohmann::json::object()}};
+  return m;
+}
+
+TEST(GltfUnlit, AnEmitterOfTheBaseColourAndItsTexture) {
+  TempDir dir;
+  nlohmann::json m = unlit();
+  m["doubleSided"] = true;
+  m["pbrMetallicRoughness"]["baseColorTexture"] = {{"index", 0}};
+  test::GltfFile f = test::quad(nlohmann::json::array({m}));
+  f.addImage(test::pngBytes(dir));
+  f.doc["textures"] = nlohmann::json::array({nlohmann::json{{"source", 0}}});
+  const auto loaded = test::load(dir.write("t.glb", f.glb()));
+  const Material& e = loaded->mesh.materials.at(0);
+  EXPECT_EQ(e.type, MaterialType::Emissive);
+  EXPECT_EQ(e.radiance.x, 0.5f);
+  EXPECT_EQ(e.radiance.y, 0.25f);
+  EXPECT_EQ(e.radiance.z, 0.125f);
+  ASSERT_GE(e.emissionTexture.index, 0);
+  EXPECT_EQ(loaded->textures.at(size_t(e.emissionTexture.index))->format, TextureFormat::Srgb8);
+  EXPECT_TRUE(e.twoSided);
+  EXPECT_TRUE(loaded->mesh.warnings.empty());
+  EXPECT_FALSE(materialOf(dir, unlit()).twoSided);
+}
+
+// Seen head-on under a white sky, an unlit quad shows its colour and nothing else: it reflects
+// none of the sky.
+TEST(GltfUnlit, TheCameraSeesTheBaseColourUnderAnySky) {
+  TempDir dir;
+  dir.write("quad.gltf", test::quad(nlohmann::json::array({unlit()})).gltf());
+  const RenderResult r = test::renderTestScene(
+      R"({"camera": {"position": [0, 0, 3], "look_at": [0, 0, 0], "fov": 20, "width": 4,
+          "height": 4, "spp": 4}, "environment": {"color": 1},
+          "lights": [{"type": "point", "position": [0, 1, 2], "intensity": 50}],
+          "objects": [{"file": "quad.gltf"}]})",
+      1, dir.path());
+  const float expected[3] = {0.5f, 0.25f, 0.125f};
+  ASSERT_EQ(r.image.pixels.size(), 4u * 4u * 3u);
+  for (size_t i = 0; i < r.image.pixels.size(); ++i)
+    EXPECT_NEAR(r.image.pixels[i], expected[i % 3], 1e-6) << "value " << i;
+}
+
+// Vertex colours tint glTF's unlit colour, not candela's emitters; an emitter has no alpha.
+TEST(GltfUnlit, VertexColoursAndAlphaAreNamedInWarnings) {
+  TempDir dir;
+  nlohmann::json m = unlit();
+  m["alphaMode"] = "MASK";
+  m["pbrMetallicRoughness"]["baseColorFactor"] = {0.5, 0.25, 0.125, 0.2};
+  test::GltfFile f = test::quad(nlohmann::json::array({m}));
+  const int c = f.addFloats({1, 0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0}, "VEC3", 3);
+  f.doc["meshes"][0]["primitives"][0]["attributes"]["COLOR_0"] = c;
+  const auto loaded = test::load(dir.write("c.gltf", f.gltf()));
+  const std::vector<std::string> expected = {
+      "m.gltf: materials[0]: the alpha is not used: the material emits, and an emitting surface "
+      "is a light over all its area",
+      "m.gltf: meshes[0].primitives[0].attributes.COLOR_0: vertex colours do not tint an unlit "
+      "material (materials[0])"};
+  EXPECT_EQ(loaded->mesh.warnings, expected);
 }
 
 }  // namespace

@@ -25,6 +25,7 @@ const std::set<std::string> kReadExtensions = {"KHR_materials_emissive_strength"
                                                "KHR_materials_sheen",
                                                "KHR_materials_specular",
                                                "KHR_materials_diffuse_transmission",
+                                               "KHR_materials_unlit",
                                                "KHR_materials_anisotropy"};
 
 Vec3 colourFactor(const std::vector<double>& values, const std::string& where) {
@@ -270,6 +271,16 @@ void GltfMaterialReader::addEmission(const tinygltf::Material& m, const std::str
                      " is beyond single precision");
 }
 
+Material GltfMaterialReader::unlitOf(const tinygltf::Material& m, const Material& surface) {
+  Material unlit;
+  unlit.type = MaterialType::Emissive;
+  unlit.radiance = surface.color;
+  unlit.emissionTexture = surface.colorTexture;
+  unlit.twoSided = m.doubleSided;
+  prepareMaterial(&unlit);
+  return unlit;
+}
+
 void GltfMaterialReader::addAlpha(const tinygltf::Material& m, const TextureRef& baseTexture,
                                   bool baseHasAlpha, const std::string& where, Material* result) {
   if (m.alphaMode != "BLEND" && m.alphaMode != "MASK") return;
@@ -322,6 +333,11 @@ Material GltfMaterialReader::read(int index, std::vector<Material>* parts) {
   bool baseHasAlpha = false;
   TextureRef metalRough;
   Material surface = surfaceOf(m, where, &baseHasAlpha, &metalRough);
+  if (extension(m.extensions, "KHR_materials_unlit")) {
+    Material unlit = unlitOf(m, surface);
+    addAlpha(m, surface.colorTexture, baseHasAlpha, where, &unlit);
+    return unlit;
+  }
   addCoat(m, where, &surface);
   addSheen(m, where, &surface);
   const Material anisotropic = anisotropicOf(m, surface, metalRough, where);

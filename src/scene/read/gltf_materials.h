@@ -6,7 +6,7 @@
 // reflectance, KHR_materials_anisotropy the conductor's and glass's anisotropy,
 // KHR_materials_diffuse_transmission a translucent sheet mixed with the plastic, and
 // KHR_materials_clearcoat and KHR_materials_sheen a coat and a sheen over the plastic and the
-// conductor. Normal maps, emission
+// conductor; KHR_materials_unlit makes an emitter of the base colour. Normal maps, emission
 // (KHR_materials_emissive_strength), alpha (MASK and BLEND) and KHR_texture_transform are read;
 // what candela does not render is named in a warning. The extensions that add to the
 // metallic-roughness model are read in gltf_material_extensions.cpp.
@@ -100,6 +100,9 @@ class GltfMaterialReader {
   // KHR_materials_sheen's factors, likewise.
   void addSheen(const tinygltf::Material& m, const std::string& where, Material* surface);
   void addEmission(const tinygltf::Material& m, const std::string& where, Material* result);
+  // KHR_materials_unlit: an emitter of the base colour (times its texture), which the camera sees
+  // as that colour; from both sides where the material is double-sided.
+  Material unlitOf(const tinygltf::Material& m, const Material& surface);
   void addAlpha(const tinygltf::Material& m, const TextureRef& baseTexture, bool baseHasAlpha,
                 const std::string& where, Material* result);
   void warnOnce(const std::string& message);
