@@ -114,6 +114,11 @@ TEST(GltfSpecular, WhatThePlasticCannotHoldIsNamedAndBadFactorsRefused) {
   const Material& glass = mesh.mixParts.at(1);
   ASSERT_EQ(glass.type, MaterialType::Glass);
   EXPECT_EQ(glass.ior, 1.5f);  // refraction keeps the file's index
+  // At glTF's defaults the extension scales nothing, and nothing is said.
+  nlohmann::json defaults = specular(1.5, 1, {1, 1, 1});
+  defaults["extensions"]["KHR_materials_transmission"] = {{"transmissionFactor", 0.5}};
+  materialOf(dir, defaults, &mesh);
+  EXPECT_TRUE(mesh.warnings.empty());
   const auto error = [&](const nlohmann::json& material) {
     return test::materialError(dir, material);
   };

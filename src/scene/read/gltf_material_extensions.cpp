@@ -27,7 +27,7 @@ double GltfMaterialReader::fileIorOf(const tinygltf::Material& m, const std::str
 }
 
 float GltfMaterialReader::plasticIorOf(const tinygltf::Material& m, double ior,
-                                       const std::string& where) {
+                                       const std::string& where, bool* scaled) {
   const tinygltf::Value* e = extension(m.extensions, "KHR_materials_specular");
   const std::string sw = where + ".extensions.KHR_materials_specular";
   const float factor = extensionFactor(e, "specularFactor", 1.0, label_ + ": " + sw);
@@ -37,6 +37,7 @@ float GltfMaterialReader::plasticIorOf(const tinygltf::Material& m, double ior,
     if (e && e->Has(key))
       warnOnce(sw + "." + key + " is not rendered (a plastic has one index): read as white");
   const bool white = colour.x == 1.0f && colour.y == 1.0f && colour.z == 1.0f;
+  *scaled = factor != 1.0f || !white;
   if (factor == 1.0f && white && ior > 1.0 && ior < 1e3) return float(ior);
   // F0, each channel clamped to 1 as glTF's dielectric_f0 is, then its luminance.
   const double f0 = ior == 0.0 ? 1.0 : ((ior - 1.0) / (ior + 1.0)) * ((ior - 1.0) / (ior + 1.0));
@@ -56,7 +57,8 @@ Shading GltfMaterialReader::dielectricOf(const tinygltf::Material& m, const Mate
                                          const Material& anisotropic, const std::string& where) {
   double ior = fileIorOf(m, where);
   Material plastic = surface;
-  plastic.ior = plasticIorOf(m, ior, where);
+  bool specularScaled = false;
+  plastic.ior = plasticIorOf(m, ior, where, &specularScaled);
   plastic.type = plastic.ior > 0.0f ? MaterialType::Plastic : MaterialType::Diffuse;
   if (plastic.type == MaterialType::Diffuse) {  // a base that nothing reflects over
     plastic.ior = 1.5f;
@@ -77,7 +79,7 @@ Shading GltfMaterialReader::dielectricOf(const tinygltf::Material& m, const Mate
                         transmission, &channel);
   if (surface.coatWeight > 0.0f || hasSheen(surface))
     warnOnce(tw + ": the transmitted part has no clear coat or sheen (candela's glass takes none)");
-  if (extension(m.extensions, "KHR_materials_specular"))
+  if (specularScaled)
     warnOnce(tw +
              ": the transmitted part reflects as its index says (KHR_materials_specular "
              "scales the plastic's reflection alone)");

@@ -77,8 +77,10 @@ class GltfMaterialReader {
   // The plastic's index: the one whose reflectance at normal incidence is glTF's dielectric F0,
   // ((ior - 1) / (ior + 1))^2 for the file's index `ior` (1 for an ior of 0), times
   // KHR_materials_specular's colour (its luminance: candela's plastic reflects white) and factor;
-  // 0 where that is 0 (a diffuse base).
-  float plasticIorOf(const tinygltf::Material& m, double ior, const std::string& where);
+  // 0 where that is 0 (a diffuse base). *scaled: whether the extension's factor or colour scale
+  // the reflectance (they are not glTF's defaults).
+  float plasticIorOf(const tinygltf::Material& m, double ior, const std::string& where,
+                     bool* scaled);
   // The surface with KHR_materials_anisotropy's strength and rotation as its anisotropy, for the
   // parts that take one (the conductor and the glass); the surface itself without.
   Material anisotropicOf(const tinygltf::Material& m, const Material& surface,
