@@ -176,9 +176,9 @@ TEST(BumpMap, MtlBumpReadsHeightsWithItsMultiplier) {
   EXPECT_EQ(error("map_Bump -bm h.pfm"),
             "test.json: objects[0].file: m.mtl:2: map_Bump -bm: expected a finite, non-zero "
             "multiplier, got \"h.pfm\"");
-  EXPECT_EQ(error("bump -clamp on h.pfm"),
-            "test.json: objects[0].file: m.mtl:2: bump option \"-clamp\" is not supported (only "
-            "-s, -o and -bm)");
+  EXPECT_EQ(error("bump -mm 0 1 h.pfm"),
+            "test.json: objects[0].file: m.mtl:2: bump option \"-mm\" is not supported (only "
+            "-s, -o, -clamp and -bm)");
 }
 
 // Blender's exporter writes tangent-space normal maps as `map_Bump`: a bump map whose texels are

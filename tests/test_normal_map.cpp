@@ -252,7 +252,7 @@ TEST(NormalMap, MtlNormReadsANormalMap) {
   } catch (const SceneError& e) {
     EXPECT_EQ(std::string(e.what()),
               "test.json: objects[0].file: m.mtl:2: norm option \"-bm\" is not supported (only "
-              "-s and -o)");
+              "-s, -o and -clamp)");
   }
 }
 

@@ -246,7 +246,7 @@ TEST(RoughnessTexture, MtlPrAndMapPrSetTheRoughness) {
   EXPECT_EQ(error("map_Pr -imfchan l r.pfm"), "(no error)");
   EXPECT_EQ(error("map_Pr -bm 2 r.pfm"),
             "test.json: objects[0].file: m.mtl:3: map_Pr option \"-bm\" is not supported (only -s, "
-            "-o and -imfchan)");
+            "-o, -clamp and -imfchan)");
 }
 
 TEST(RoughnessTexture, TheSceneFormatRefusesWhatItCannotBe) {

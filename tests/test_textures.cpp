@@ -458,22 +458,24 @@ TEST(TextureErrors, MtlMessagesNameFileAndLine) {
   EXPECT_EQ(error("newmtl a\nmap_Kd -o inf a.png\n"),
             "meshes/m.mtl:2: map_Kd -o: expected finite offsets, got \"inf\"");
   EXPECT_EQ(error("newmtl a\n\nTr x\n"), "meshes/m.mtl:3: expected Tr between 0 and 1, got \"x\"");
-  EXPECT_EQ(error("newmtl a\nmap_Kd -clamp on a.png\n"),
-            "meshes/m.mtl:2: map_Kd option \"-clamp\" is not supported (only -s and -o)");
+  EXPECT_EQ(error("newmtl a\nmap_Kd -mm 0 1 a.png\n"),
+            "meshes/m.mtl:2: map_Kd option \"-mm\" is not supported (only -s, -o and -clamp)");
+  EXPECT_EQ(error("newmtl a\nmap_Kd -clamp yes a.png\n"),
+            "meshes/m.mtl:2: map_Kd -clamp: expected on or off, got \"yes\"");
   dir.write("bad.png", "not a png");
   const std::string unreadable = error("newmtl a\nmap_Kd bad.png\n");
   EXPECT_EQ(unreadable.rfind("meshes/m.mtl:2: cannot read the texture: ", 0), 0u) << unreadable;
 }
 
-// Each file is read once per use; -s scales (v as u where only u is given) and -o offsets (v 0
-// where only u is given; w not used).
+// Each file is read once per use; -s scales (v as u where only u is given), -o offsets (v 0
+// where only u is given; w not used) and -clamp on clamps.
 TEST(TextureLoading, EachFileOnceWithScaleAndOffsetFromMtl) {
   test::TempDir dir;
   ASSERT_TRUE(test::writeTestPng(dir.file("t.png"), 1, 1, 4, {1, 2, 3, 4}));
   ASSERT_TRUE(test::writeTestPng(dir.file("g.png"), 1, 1, 1, {7}));
   dir.write("m.mtl",
-            "newmtl a\nmap_Kd -s 2 3 1 -o 0.25 0.5 1 t.png\nmap_d t.png\nnewmtl b\n"
-            "Kd 0.5 0.5 0.5\nmap_Kd -o 0.75 ./t.png\nTr 0.25\nmap_d g.png\n");
+            "newmtl a\nmap_Kd -s 2 3 1 -clamp on -o 0.25 0.5 1 t.png\nmap_d t.png\nnewmtl b\n"
+            "Kd 0.5 0.5 0.5\nmap_Kd -clamp off -o 0.75 ./t.png\nTr 0.25\nmap_d g.png\n");
   const std::string obj = dir.write(
       "m.obj", "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl a\nf 1 2 3\nusemtl b\nf 1 3 2\n");
   SceneDesc desc;
@@ -493,6 +495,11 @@ TEST(TextureLoading, EachFileOnceWithScaleAndOffsetFromMtl) {
   EXPECT_EQ(b.colorTexture.scaleU, 1.0f);
   EXPECT_EQ(b.colorTexture.offsetU, 0.75f);
   EXPECT_EQ(b.colorTexture.offsetV, 0.0f);
+  // -clamp on holds the edge texels beyond [0, 1]; off (the default) repeats.
+  EXPECT_EQ(a.colorTexture.wrapS, TextureWrap::Clamp);
+  EXPECT_EQ(a.colorTexture.wrapT, TextureWrap::Clamp);
+  EXPECT_EQ(b.colorTexture.wrapS, TextureWrap::Repeat);
+  EXPECT_EQ(a.alpha.texture.wrapS, TextureWrap::Repeat);
   EXPECT_EQ(a.color.x, 1.0f);  // no Kd: the texture alone
   EXPECT_EQ(b.color.x, 0.5f);  // Kd tints the texture
   EXPECT_EQ(a.alpha.channel, 3u);  // t.png has an alpha channel

@@ -73,9 +73,10 @@ std::string restOfLine(std::istringstream& in) {
 }
 
 // A texture statement "map_Kd [-s u v [w]] file": its texture, loaded for `use`. The -s scale
-// is honoured (w ignored); with `bumpMultiplier`, a bump map's, so is -bm (into it); with
-// `channel`, a scalar texture's, so is -imfchan (r, g, b, m for the alpha channel, l for the
-// luminance: Material::roughnessChannel's values, into it); other options are refused.
+// and -o offset are honoured (w ignored), and -clamp on (the edge texels beyond [0, 1]); with
+// `bumpMultiplier`, a bump map's, so is -bm (into it); with `channel`, a scalar texture's, so is
+// -imfchan (r, g, b, m for the alpha channel, l for the luminance: Material::roughnessChannel's
+// values, into it); other options are refused.
 TextureRef mtlTexture(const MtlStatement& statement, const char* keyword, TextureUse use,
                       TextureLoader& textures, bool* hasAlpha, float* bumpMultiplier = nullptr,
                       uint32_t* channel = nullptr) {
@@ -110,12 +111,22 @@ TextureRef mtlTexture(const MtlStatement& statement, const char* keyword, Textur
       rest = restOfLine(in);
       continue;
     }
+    if (option == "-clamp") {
+      std::string word;
+      in >> word;
+      if (word != "on" && word != "off")
+        failAt(statement,
+               std::string(keyword) + " -clamp: expected on or off, got \"" + word + "\"");
+      ref.wrapS = ref.wrapT = word == "on" ? TextureWrap::Clamp : TextureWrap::Repeat;
+      rest = restOfLine(in);
+      continue;
+    }
     if (option != "-s" && option != "-o")
       failAt(statement, std::string(keyword) + " option \"" + option +
-                            "\" is not supported (only -s" +
-                            (bumpMultiplier ? ", -o and -bm)"
-                             : channel      ? ", -o and -imfchan)"
-                                            : " and -o)"));
+                            "\" is not supported (only -s, -o" +
+                            (bumpMultiplier ? ", -clamp and -bm)"
+                             : channel      ? ", -clamp and -imfchan)"
+                                            : " and -clamp)"));
     // -s u [v [w]] scales (v defaults to u), -o u [v [w]] offsets (v defaults to 0); w, the third
     // texture coordinate's, is read and not used.
     const bool scaling = option == "-s";
