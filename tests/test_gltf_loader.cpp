@@ -381,9 +381,9 @@ TEST(GltfLoader, BrokenFilesAreRefusedWithTheirJsonPath) {
       {"a node reached twice", [](GltfFile& f) { f.doc["nodes"][1]["children"] = {0}; },
        "m.gltf: nodes[0] is reached twice (a node may have one parent and appear once)"},
       {"a required extension",
-       [](GltfFile& f) { f.doc["extensionsRequired"] = {"KHR_draco_mesh_compression"}; },
-       "m.gltf: extensionsRequired: the file requires KHR_draco_mesh_compression, which candela "
-       "does not read"},
+       [](GltfFile& f) { f.doc["extensionsRequired"] = {"KHR_texture_basisu"}; },
+       "m.gltf: extensionsRequired: the file requires KHR_texture_basisu, which candela does not "
+       "read"},
       {"a material out of range",
        [](GltfFile& f) { f.doc["meshes"][0]["primitives"][0]["material"] = 3; },
        "m.gltf: meshes[0].primitives[0].material: material 3 does not exist (0 materials)"},

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <set>
 
+#include "scene/read/gltf_draco.h"
 #include "scene/read/text_file.h"
 #include "scene/scene_error.h"
 
@@ -60,6 +61,7 @@ std::unique_ptr<GltfFile> readGltfFile(const std::string& path, const std::strin
   std::string bytes, reason;
   if (!readTextFile(path, &bytes, &reason))
     throw SceneError("cannot open \"" + label + "\" (" + reason + ")");
+  bytes = withoutDracoIndices(bytes);
   auto file = std::make_unique<GltfFile>();
   file->folder = std::filesystem::path(path).parent_path().string();
   tinygltf::Model& model = file->model;
@@ -86,10 +88,16 @@ std::unique_ptr<GltfFile> readGltfFile(const std::string& path, const std::strin
   if (!parsed)
     throw SceneError(label + ": " +
                      (error.empty() ? std::string("not a readable glTF file") : firstLine(error)));
-  for (const std::string& required : model.extensionsRequired)
-    if (!kReadableRequired.count(required))
+  for (const std::string& required : model.extensionsRequired) {
+    if (required == "KHR_draco_mesh_compression" && !gltfDracoDecoding())
+      throw SceneError(label + ": extensionsRequired: the file requires " + required +
+                       ", and this build of candela reads no Draco-compressed meshes (built "
+                       "without libdraco-dev)");
+    if (!kReadableRequired.count(required) && required != "KHR_draco_mesh_compression")
       throw SceneError(label + ": extensionsRequired: the file requires " + required +
                        ", which candela does not read");
+  }
+  decodeDracoPrimitives(model, label);
   return file;
 }
 
