@@ -29,6 +29,8 @@ inline std::string base64(const std::string& bytes) {
 struct GltfFile {
   nlohmann::json doc = {{"asset", {{"version", "2.0"}}}};
   std::string buffer;
+  // Buffers after the first (`buffer`'s), written as they are (a meshopt fallback: no bytes).
+  std::vector<nlohmann::json> moreBuffers;
 
   // Appends `values` as a buffer view and an accessor of `count` elements of `type`; returns the
   // accessor's index. `stride` 0: tightly packed.
@@ -71,11 +73,13 @@ struct GltfFile {
         {{"byteLength", buffer.size()},
          {"uri",
           binName.empty() ? "data:application/octet-stream;base64," + base64(buffer) : binName}}};
+    for (const nlohmann::json& more : moreBuffers) d["buffers"].push_back(more);
     return d.dump();
   }
   std::string glb() const {
     nlohmann::json d = doc;
     d["buffers"] = {{{"byteLength", buffer.size()}}};
+    for (const nlohmann::json& more : moreBuffers) d["buffers"].push_back(more);
     std::string json = d.dump(), bin = buffer;
     while (json.size() % 4) json += ' ';
     while (bin.size() % 4) bin += '\0';

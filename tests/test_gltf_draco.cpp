@@ -191,7 +191,7 @@ TEST(GltfDraco, ABuildWithoutDracoRefusesAFileThatRequiresIt) {
   TempDir dir;
   EXPECT_EQ(loadError(dir.write("a.glb", dracoFile("not a stream", 0, 1).glb())),
             "m.glb: extensionsRequired: the file requires KHR_draco_mesh_compression, and this "
-            "build of candela reads no Draco-compressed meshes (built without libdraco-dev)");
+            "build of candela reads no such files (built without libdraco-dev)");
 }
 
 }  // namespace

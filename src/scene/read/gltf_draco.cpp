@@ -8,10 +8,9 @@
 
 #ifdef CANDELA_HAS_DRACO
 #include <draco/compression/decode.h>
-
-#include <nlohmann/json.hpp>
 #endif
 
+#include "scene/read/gltf_json_edit.h"
 #include "scene/scene_error.h"
 
 namespace candela {
@@ -156,41 +155,21 @@ bool gltfDracoDecoding() { return true; }
 
 std::string withoutDracoIndices(const std::string& file) {
   if (file.find("KHR_draco_mesh_compression") == std::string::npos) return file;
-  // A .glb: its header, the JSON chunk (length, "JSON", text) and what follows it.
-  const bool binary = file.size() >= 20 && file.compare(0, 4, "glTF") == 0;
-  uint32_t jsonLength = 0;
-  if (binary) std::memcpy(&jsonLength, file.data() + 12, 4);
-  if (binary && (file.compare(16, 4, "JSON") != 0 || jsonLength > file.size() - 20)) return file;
-  const std::string text = binary ? file.substr(20, jsonLength) : file;
-  nlohmann::json doc = nlohmann::json::parse(text, nullptr, false);
-  if (doc.is_discarded() || !doc.is_object() || !doc.contains("meshes") ||
-      !doc["meshes"].is_array())
-    return file;
-  bool changed = false;
-  for (nlohmann::json& mesh : doc["meshes"]) {
-    if (!mesh.is_object() || !mesh.contains("primitives") || !mesh["primitives"].is_array())
-      continue;
-    for (nlohmann::json& p : mesh["primitives"])
-      if (p.is_object() && p.contains("extensions") && p["extensions"].is_object() &&
-          p["extensions"].contains("KHR_draco_mesh_compression") && p.contains("indices")) {
-        p.erase("indices");
-        changed = true;
-      }
-  }
-  if (!changed) return file;
-  std::string json = doc.dump();
-  if (!binary) return json;
-  while (json.size() % 4) json += ' ';
-  const std::string rest = file.substr(20 + size_t(jsonLength));
-  std::string out = file.substr(0, 12);
-  const uint32_t total = uint32_t(12 + 8 + json.size() + rest.size()),
-                 length = uint32_t(json.size());
-  std::memcpy(&out[8], &total, 4);
-  out.append(reinterpret_cast<const char*>(&length), 4);
-  out += "JSON";
-  out += json;
-  out += rest;
-  return out;
+  return editGltfJson(file, [](nlohmann::json& doc, bool) {
+    bool changed = false;
+    if (!doc.contains("meshes") || !doc["meshes"].is_array()) return false;
+    for (nlohmann::json& mesh : doc["meshes"]) {
+      if (!mesh.is_object() || !mesh.contains("primitives") || !mesh["primitives"].is_array())
+        continue;
+      for (nlohmann::json& p : mesh["primitives"])
+        if (p.is_object() && p.contains("extensions") && p["extensions"].is_object() &&
+            p["extensions"].contains("KHR_draco_mesh_compression") && p.contains("indices")) {
+          p.erase("indices");
+          changed = true;
+        }
+    }
+    return changed;
+  });
 }
 
 void decodeDracoPrimitives(tinygltf::Model& model, const std::string& label) {

@@ -7,6 +7,7 @@
 #include <set>
 
 #include "scene/read/gltf_draco.h"
+#include "scene/read/gltf_meshopt.h"
 #include "scene/read/text_file.h"
 #include "scene/scene_error.h"
 
@@ -19,6 +20,17 @@ const std::set<std::string> kReadableRequired = {
     "KHR_materials_ior",     "KHR_materials_transmission",
     "KHR_materials_volume",  "KHR_materials_dispersion",
     "KHR_mesh_quantization"};
+
+// The Debian package whose library decodes a compression extension, or null for other extensions;
+// whether this build has it.
+const char* decoderLibrary(const std::string& extension) {
+  return extension == "KHR_draco_mesh_compression" ? "libdraco-dev"
+         : extension == "EXT_meshopt_compression"  ? "libmeshoptimizer-dev"
+                                                   : nullptr;
+}
+bool decoderBuilt(const std::string& extension) {
+  return extension == "KHR_draco_mesh_compression" ? gltfDracoDecoding() : gltfMeshoptDecoding();
+}
 
 // What tinygltf's image callback fills: the bytes of each image held in the file (a data URI or a
 // buffer view), by image index, for the texture loader to decode (images named by URI are read
@@ -61,7 +73,7 @@ std::unique_ptr<GltfFile> readGltfFile(const std::string& path, const std::strin
   std::string bytes, reason;
   if (!readTextFile(path, &bytes, &reason))
     throw SceneError("cannot open \"" + label + "\" (" + reason + ")");
-  bytes = withoutDracoIndices(bytes);
+  bytes = withEmptyMeshoptFallbacks(withoutDracoIndices(bytes));
   auto file = std::make_unique<GltfFile>();
   file->folder = std::filesystem::path(path).parent_path().string();
   tinygltf::Model& model = file->model;
@@ -89,14 +101,16 @@ std::unique_ptr<GltfFile> readGltfFile(const std::string& path, const std::strin
     throw SceneError(label + ": " +
                      (error.empty() ? std::string("not a readable glTF file") : firstLine(error)));
   for (const std::string& required : model.extensionsRequired) {
-    if (required == "KHR_draco_mesh_compression" && !gltfDracoDecoding())
-      throw SceneError(label + ": extensionsRequired: the file requires " + required +
-                       ", and this build of candela reads no Draco-compressed meshes (built "
-                       "without libdraco-dev)");
-    if (!kReadableRequired.count(required) && required != "KHR_draco_mesh_compression")
-      throw SceneError(label + ": extensionsRequired: the file requires " + required +
-                       ", which candela does not read");
+    const std::string at = label + ": extensionsRequired: the file requires " + required;
+    if (const char* library = decoderLibrary(required)) {
+      if (!decoderBuilt(required))
+        throw SceneError(at + ", and this build of candela reads no such files (built without " +
+                         library + ")");
+    } else if (!kReadableRequired.count(required)) {
+      throw SceneError(at + ", which candela does not read");
+    }
   }
+  decodeMeshoptViews(model, label);
   decodeDracoPrimitives(model, label);
   return file;
 }

@@ -1,0 +1,30 @@
+// EXT_meshopt_compression (gltfpack's and gltf-transform's compression): the buffer views whose
+// bytes a meshoptimizer stream holds, decoded into plain buffers by Debian's libmeshoptimizer
+// (CANDELA_HAS_MESHOPT), filters (octahedral normals, quaternions, exponents) included, so that
+// the accessors over them read as over any view. Without the library nothing is decoded: a file
+// that requires the extension is refused (gltf_file.cpp) and one that merely uses it is read by
+// the uncompressed fallback it must then carry.
+#pragma once
+
+#include <string>
+
+#include "scene/read/tiny_gltf_config.h"
+
+namespace candela {
+
+// Whether this build decodes meshopt streams.
+bool gltfMeshoptDecoding();
+
+// The glTF file `file` (a .gltf's text or a .glb's bytes) with the placeholder buffers of
+// compressed views (without a URI, read by compressed views alone, tagged "fallback" or not)
+// given a data URI of one byte, for tinygltf, which refuses a buffer without a URI that is not a
+// .glb's own; decodeMeshoptViews gives the views that read them their decoded bytes. The file as
+// it is without the library or such buffers.
+std::string withEmptyMeshoptFallbacks(const std::string& file);
+
+// Decodes every compressed buffer view of `model` in place (where this build decodes meshopt).
+// Throws SceneError "<label>: bufferViews[i].extensions.EXT_meshopt_compression...: <reason>" for
+// a stream that does not decode, or a mode, filter, stride or count the extension does not allow.
+void decodeMeshoptViews(tinygltf::Model& model, const std::string& label);
+
+}  // namespace candela
