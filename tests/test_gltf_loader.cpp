@@ -14,6 +14,7 @@
 
 #include "gltf_test_util.h"
 #include "scene/read/gltf_loader.h"
+#include "scene/read/gltf_scene.h"
 #include "scene/read/scene_loader.h"
 #include "scene/scene_error.h"
 #include "temp_dir.h"
@@ -312,6 +313,80 @@ TEST(GltfLoader, SparseAccessorsSubstituteTheirElements) {
     c.breakIt(broken);
     EXPECT_EQ(loadError(dir.write("broken.gltf", broken.gltf())), c.expected);
   }
+}
+
+// EXT_mesh_gpu_instancing: the node's mesh copied to each instance, placed by its T R S under the
+// node's transform (rotations as floats or normalized shorts); a bare file is framed around all
+// the copies.
+TEST(GltfLoader, InstancedMeshesAreCopiedToEachInstance) {
+  TempDir dir;
+  GltfFile f = placedQuad();
+  const double h = std::sqrt(0.5);
+  const int t = f.addFloats({0, 0, 0, 10, 0, 0, 0, 5, 0}, "VEC3", 3);
+  const int r = f.addFloats({0, 0, 0, 1, 0, 0, float(h), float(h), 0, 0, 0, 1}, "VEC4", 4);
+  const int16_t k = int16_t(std::lround(h * 32767));
+  const int rs = f.addAccessor(std::vector<int16_t>{0, 0, 0, 32767, 0, 0, k, k, 0, 0, 0, 32767},
+                               kShort, "VEC4", 3, 0, true);
+  const int sc = f.addFloats({1, 1, 1, 2, 2, 2, 1, 1, 1}, "VEC3", 3);
+  // Node 1 (the quad, under node 0) drawn three times.
+  f.doc["nodes"][1]["extensions"] = {
+      {"EXT_mesh_gpu_instancing",
+       {{"attributes", {{"TRANSLATION", t}, {"ROTATION", r}, {"SCALE", sc}}}}}};
+  f.doc["extensionsUsed"] = {"EXT_mesh_gpu_instancing"};
+  // Instance i takes a quad corner (x, y, 0) to node 1's space as T_i R_i S_i, then on as before.
+  const auto instance = [](int i, double x, double y) {
+    if (i == 1) return placed(10 - 2 * y, 2 * x, 0);  // scaled by 2, turned 90 degrees about z
+    return placed(x, y + (i == 2 ? 5 : 0), 0);
+  };
+  for (const int rotations : {r, rs}) {
+    SCOPED_TRACE(rotations == r ? "float rotations" : "normalized short rotations");
+    f.doc["nodes"][1]["extensions"]["EXT_mesh_gpu_instancing"]["attributes"]["ROTATION"] =
+        rotations;
+    const MeshDesc mesh = load(dir.write("instanced.glb", f.glb()));
+    ASSERT_EQ(mesh.positions.size(), 12u);
+    ASSERT_EQ(mesh.triangles.size(), 6u);
+    const double corners[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    for (int i = 0; i < 3; ++i)
+      for (int v = 0; v < 4; ++v) {
+        const auto expected = instance(i, corners[v][0], corners[v][1]);
+        for (int a = 0; a < 3; ++a)
+          EXPECT_NEAR(mesh.positions[size_t(4 * i + v)][a], expected[size_t(a)], 1e-4)
+              << "instance " << i << ", corner " << v;
+      }
+  }
+  // A bare file is framed around every copy: the far instance moves the bounds' centre.
+  const auto centre = [&](const GltfFile& file, const char* name) {
+    const nlohmann::json scene =
+        nlohmann::json::parse(gltfSceneText(dir.write(name, file.glb()), name));
+    return scene["camera"]["look_at"].get<std::vector<double>>();
+  };
+  // Node 1's x runs along the world's y, 6 to 1 (placed()): the copies span x from 0 to 10, the
+  // quad alone 0 to 1, so the centre moves by 6 (5 - 0.5) = 27.
+  EXPECT_NEAR(centre(f, "bare.glb")[1] - centre(placedQuad(), "once.glb")[1], 27.0, 1e-6);
+
+  const std::string at = "m.gltf: nodes[1].extensions.EXT_mesh_gpu_instancing";
+  GltfFile uneven = f;
+  uneven.doc["nodes"][1]["extensions"]["EXT_mesh_gpu_instancing"]["attributes"]["SCALE"] =
+      uneven.addFloats({1, 1, 1}, "VEC3", 3);
+  EXPECT_EQ(loadError(dir.write("uneven.gltf", uneven.gltf())),
+            at + ".attributes.SCALE: 1 instances, where the other attributes have 3");
+  GltfFile zero = f;
+  zero.doc["nodes"][1]["extensions"]["EXT_mesh_gpu_instancing"]["attributes"]["ROTATION"] =
+      zero.addFloats({0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 1}, "VEC4", 4);
+  EXPECT_EQ(loadError(dir.write("zero.gltf", zero.gltf())),
+            at + ".attributes.ROTATION: instance 1: expected a unit quaternion, got 0");
+  // 2^24 instances (zeros: no buffer view) of the 4-vertex quad and a 60-vertex second primitive.
+  GltfFile many = placedQuad();
+  many.doc["accessors"].push_back(
+      {{"componentType", kFloat}, {"count", 1 << 24}, {"type", "VEC3"}});
+  many.doc["accessors"].push_back({{"componentType", kFloat}, {"count", 60}, {"type", "VEC3"}});
+  const size_t n = many.doc["accessors"].size();
+  many.doc["meshes"][0]["primitives"].push_back({{"attributes", {{"POSITION", n - 1}}}});
+  many.doc["nodes"][1]["extensions"] = {
+      {"EXT_mesh_gpu_instancing", {{"attributes", {{"TRANSLATION", n - 2}}}}}};
+  EXPECT_EQ(loadError(dir.write("many.gltf", many.gltf())),
+            at + ": 16777216 instances of a mesh of 64 vertices are more than candela copies "
+                 "(268435456 vertices)");
 }
 
 TEST(GltfLoader, WhatIsNotRenderedIsNamedInWarnings) {

@@ -19,7 +19,7 @@ const std::set<std::string> kReadableRequired = {
     "KHR_texture_transform", "KHR_materials_emissive_strength",
     "KHR_materials_ior",     "KHR_materials_transmission",
     "KHR_materials_volume",  "KHR_materials_dispersion",
-    "KHR_mesh_quantization"};
+    "KHR_mesh_quantization", "EXT_mesh_gpu_instancing"};
 
 // The Debian package whose library decodes a compression extension, or null for other extensions;
 // whether this build has it.

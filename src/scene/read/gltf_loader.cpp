@@ -9,6 +9,7 @@
 
 #include "scene/read/gltf_accessor.h"
 #include "scene/read/gltf_file.h"
+#include "scene/read/gltf_instancing.h"
 #include "scene/read/gltf_materials.h"
 #include "scene/read/gltf_nodes.h"
 #include "scene/read/gltf_uri.h"
@@ -28,7 +29,9 @@ class MeshBuilder {
   void addNode(int index, const tinygltf::Node& node, const GltfMatrix& world) {
     const std::string where = "nodes[" + std::to_string(index) + "]";
     if (node.skin >= 0) warn("skins are not applied: skinned meshes keep their rest pose");
-    if (node.mesh >= 0) addMesh(node.mesh, world, where + ".mesh");
+    if (node.mesh < 0) return;
+    for (const GltfMatrix& placed : meshPlacements(model_, index, node, world, label_))
+      addMesh(node.mesh, placed, where + ".mesh");
   }
 
   MeshDesc finish() {

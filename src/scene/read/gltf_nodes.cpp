@@ -12,14 +12,6 @@ namespace {
 
 GltfMatrix identity() { return {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}; }
 
-GltfMatrix multiply(const GltfMatrix& a, const GltfMatrix& b) {
-  GltfMatrix m{};
-  for (int c = 0; c < 4; ++c)
-    for (int r = 0; r < 4; ++r)
-      for (int k = 0; k < 4; ++k) m[4 * c + r] += a[4 * k + r] * b[4 * c + k];
-  return m;
-}
-
 // A node's own transform: its matrix, or translation * rotation * scale.
 GltfMatrix localTransform(const tinygltf::Node& node, const std::string& where) {
   auto finite = [&](const std::vector<double>& values, size_t count, const char* key) {
@@ -67,6 +59,14 @@ std::vector<int> rootNodes(const tinygltf::Model& model, const std::string& labe
 }
 
 }  // namespace
+
+GltfMatrix gltfMultiply(const GltfMatrix& a, const GltfMatrix& b) {
+  GltfMatrix m{};
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r)
+      for (int k = 0; k < 4; ++k) m[4 * c + r] += a[4 * k + r] * b[4 * c + k];
+  return m;
+}
 
 GltfMatrix gltfTrs(const std::array<double, 3>& t, std::array<double, 4> q,
                    const std::array<double, 3>& s) {
@@ -119,7 +119,7 @@ void forEachPlacedNode(const tinygltf::Model& model, const std::string& label,
     // animation moves it: the override copies the parts it leaves from the node.
     GltfMatrix local = localTransform(node, label + ": " + where);
     if (moved) moved(index, node, &local);
-    const GltfMatrix world = multiply(parent, local);
+    const GltfMatrix world = gltfMultiply(parent, local);
     visit(index, node, world);
     for (auto c = node.children.rbegin(); c != node.children.rend(); ++c)
       pending.push_back({*c, world});

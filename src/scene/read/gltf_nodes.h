@@ -25,6 +25,9 @@ void forEachPlacedNode(const tinygltf::Model& model, const std::string& label,
                                                 const GltfMatrix& world)>& visit,
                        const GltfLocalOverride& moved = {});
 
+// a * b (column-major).
+GltfMatrix gltfMultiply(const GltfMatrix& a, const GltfMatrix& b);
+
 // T * R * S as glTF composes a node's transform (the quaternion [x, y, z, w] normalized).
 GltfMatrix gltfTrs(const std::array<double, 3>& t, std::array<double, 4> q,
                    const std::array<double, 3>& s);

@@ -12,6 +12,7 @@
 #include "scene/dvec3.h"
 #include "scene/read/gltf_accessor.h"
 #include "scene/read/gltf_file.h"
+#include "scene/read/gltf_instancing.h"
 #include "scene/read/gltf_nodes.h"
 #include "scene/scene_error.h"
 
@@ -31,29 +32,37 @@ struct Staging {
 
 Staging stagingOf(const tinygltf::Model& model, const std::string& label) {
   Staging s;
-  forEachPlacedNode(model, label, [&](int, const tinygltf::Node& node, const GltfMatrix& w) {
-    s.camera = s.camera || node.camera >= 0;
-    s.lights = s.lights || node.extensions.count("KHR_lights_punctual") > 0;
-    if (node.mesh < 0 || size_t(node.mesh) >= model.meshes.size()) return;  // the loader says
-    for (const tinygltf::Primitive& primitive : model.meshes[size_t(node.mesh)].primitives) {
-      const auto position = primitive.attributes.find("POSITION");
-      if (position == primitive.attributes.end()) continue;
-      std::vector<float> xyz;
-      try {
-        xyz = readFloatAccessor(model, position->second, 3, kAnyEncoding, "POSITION");
-      } catch (const SceneError&) {
-        continue;  // the mesh loader refuses it, with its path
-      }
-      for (size_t v = 0; v + 2 < xyz.size(); v += 3) {
-        const double x = xyz[v], y = xyz[v + 1], z = xyz[v + 2];
-        const DVec3 p{w[0] * x + w[4] * y + w[8] * z + w[12],
-                      w[1] * x + w[5] * y + w[9] * z + w[13],
-                      w[2] * x + w[6] * y + w[10] * z + w[14]};
-        s.lo = {std::min(s.lo.x, p.x), std::min(s.lo.y, p.y), std::min(s.lo.z, p.z)};
-        s.hi = {std::max(s.hi.x, p.x), std::max(s.hi.y, p.y), std::max(s.hi.z, p.z)};
-      }
-    }
-  });
+  forEachPlacedNode(
+      model, label, [&](int index, const tinygltf::Node& node, const GltfMatrix& world) {
+        s.camera = s.camera || node.camera >= 0;
+        s.lights = s.lights || node.extensions.count("KHR_lights_punctual") > 0;
+        if (node.mesh < 0 || size_t(node.mesh) >= model.meshes.size()) return;  // the loader says
+        std::vector<GltfMatrix> placements;
+        try {
+          placements = meshPlacements(model, index, node, world, label);
+        } catch (const SceneError&) {
+          return;  // likewise
+        }
+        for (const tinygltf::Primitive& primitive : model.meshes[size_t(node.mesh)].primitives) {
+          const auto position = primitive.attributes.find("POSITION");
+          if (position == primitive.attributes.end()) continue;
+          std::vector<float> xyz;
+          try {
+            xyz = readFloatAccessor(model, position->second, 3, kAnyEncoding, "POSITION");
+          } catch (const SceneError&) {
+            continue;  // the mesh loader refuses it, with its path
+          }
+          for (const GltfMatrix& w : placements)
+            for (size_t v = 0; v + 2 < xyz.size(); v += 3) {
+              const double x = xyz[v], y = xyz[v + 1], z = xyz[v + 2];
+              const DVec3 p{w[0] * x + w[4] * y + w[8] * z + w[12],
+                            w[1] * x + w[5] * y + w[9] * z + w[13],
+                            w[2] * x + w[6] * y + w[10] * z + w[14]};
+              s.lo = {std::min(s.lo.x, p.x), std::min(s.lo.y, p.y), std::min(s.lo.z, p.z)};
+              s.hi = {std::max(s.hi.x, p.x), std::max(s.hi.y, p.y), std::max(s.hi.z, p.z)};
+            }
+        }
+      });
   return s;
 }
 
