@@ -95,9 +95,11 @@ class CliThreads : public ::testing::Test {
   }
 
   // How many of the process's threads besides the main one took a share of the work (20 ms of
-  // CPU or more; what only waited takes a few at most) in a render of scene.json with
-  // `extraArgs`; -1 when the render failed, its message in *error.
-  int busyThreads(std::vector<std::string> extraArgs, std::string* error = nullptr) const {
+  // CPU or more; what only waited takes a few at most; and, where `share` is above 0, at least
+  // that share of the busiest such thread's time) in a render of scene.json with `extraArgs`; -1
+  // when the render failed, its message in *error.
+  int busyThreads(std::vector<std::string> extraArgs, std::string* error = nullptr,
+                  double share = 0.0) const {
     const std::string errors = (dir_ / "stderr.txt").string();
     std::vector<std::string> args = {"render", (dir_ / "scene.json").string(),
                                      "-o",     (dir_ / "out.pfm").string(),
@@ -128,9 +130,14 @@ class CliThreads : public ::testing::Test {
       if (error) *error = message;
       return -1;
     }
+    long long busiest = 0;
+    for (const auto& [thread, ns] : most)
+      if (thread != std::to_string(pid)) busiest = std::max(busiest, ns);
     int busy = 0;
     for (const auto& [thread, ns] : most)
-      busy += thread != std::to_string(pid) && ns >= 20'000'000 ? 1 : 0;
+      busy += thread != std::to_string(pid) && ns >= 20'000'000 && ns >= share * double(busiest)
+                  ? 1
+                  : 0;
     return busy;
   }
 
@@ -149,11 +156,14 @@ TEST_F(CliThreads, OneThreadLoadsAndBuildsOnOne) {
 TEST_F(CliThreads, OneThreadDenoisesOnOne) {
   writeBigImageScene();
   std::string error;
-  const int one = busyThreads({"--threads", "1", "--denoise"}, &error);
+  // A share of the busiest worker's time: TBB's own thread, idle otherwise, at times spins for a
+  // few tens of milliseconds while OIDN's one worker filters for a second (seen under load).
+  const double share = 0.1;
+  const int one = busyThreads({"--threads", "1", "--denoise"}, &error, share);
   if (one < 0 && error.find("needs Intel Open Image Denoise") != std::string::npos)
     GTEST_SKIP() << error;
   ASSERT_GE(one, 0) << error;
-  const int allCores = busyThreads({"--denoise"});
+  const int allCores = busyThreads({"--denoise"}, nullptr, share);
   EXPECT_GT(allCores, 1);  // the control: OIDN's workers share the filter
   EXPECT_EQ(one, 1);
 }
