@@ -416,7 +416,8 @@ TEST(GltfMaterials, BrokenMaterialsAreRefusedWithTheirJsonPath) {
   GltfFile noImage;
   noImage.doc["textures"] = nlohmann::json::array({nlohmann::json{{"source", 4}}});
   textured["pbrMetallicRoughness"]["baseColorTexture"] = {{"index", 0}};
-  EXPECT_EQ(error(textured, &noImage), "m.gltf: textures[0].source: image 4 does not exist");
+  EXPECT_EQ(error(textured, &noImage),
+            "m.gltf: textures[0].source: image 4 does not exist (0 images)");
   // An image's buffer view past the end of its buffer (tinygltf hands such bytes on unchecked;
   // found by gltf_fuzzer).
   GltfFile pastTheEnd = quad(nlohmann::json::array({textured}));

@@ -416,7 +416,7 @@ TEST(TextureErrors, JsonMessagesNameThePath) {
       loadError(scene(R"({"type": "diffuse", "color": {"texture": "wood.json"}})"), dir.path()),
       "scene.json: spheres[0].material.color.texture: cannot read the texture: " +
           dir.file("wood.json") +
-          ": unsupported image format '.json', expected .png, .jpg, .jpeg, .exr, .pfm or "
+          ": unsupported image format '.json', expected .png, .jpg, .jpeg, .webp, .exr, .pfm or "
           ".hdr");
   EXPECT_EQ(loadError(scene(R"({"type": "diffuse", "color": {"texture": "ok.png", "scale": [1, 0]}})"),
                       dir.path()),

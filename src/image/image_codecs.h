@@ -41,4 +41,10 @@ ImageRGB decodeHdr(const std::string& bytes);
 // PNG (8- or 16-bit) or JPEG, read only, as RGBA.
 ImageRgba decodeImageRgba(const std::string& bytes);
 
+// WebP (a still, lossy or lossless, with or without alpha), read only, as 8-bit RGBA, where this
+// build has libwebp (webpDecoding()); else it throws saying so. isWebpBytes: the bytes start as
+// a WebP file does ("RIFF", a size, "WEBP").
+bool isWebpBytes(const std::string& bytes);
+ImageRgba decodeWebp(const std::string& bytes);
+
 }  // namespace candela

@@ -39,10 +39,15 @@ ImageFormat formatOf(const std::string& path) {
                         ", expected " + expected);
 }
 
-// The files readImageRgba reads: .png, .jpg, .jpeg.
+// The files readImageRgba reads: .png, .jpg, .jpeg, .webp.
 bool isRgbaImagePath(const std::string& path) {
   const std::string ext = lowercaseExtension(path);
-  return ext == ".png" || ext == ".jpg" || ext == ".jpeg";
+  return ext == ".png" || ext == ".jpg" || ext == ".jpeg" || ext == ".webp";
+}
+
+// An 8- or 16-bit image's bytes by what they start with: WebP, else PNG or JPEG.
+ImageRgba decodeRgba(const std::string& bytes) {
+  return isWebpBytes(bytes) ? decodeWebp(bytes) : decodeImageRgba(bytes);
 }
 
 }  // namespace
@@ -61,7 +66,7 @@ bool isFloatImagePath(const std::string& path) {
 
 void requireTextureImagePath(const std::string& path) {
   if (!isFloatImagePath(path) && !isRgbaImagePath(path))
-    unsupported(path, ".png, .jpg, .jpeg, .exr, .pfm or .hdr");
+    unsupported(path, ".png, .jpg, .jpeg, .webp, .exr, .pfm or .hdr");
 }
 
 void writeImage(const std::string& path, const ImageRGB& image, const OutputDesc& output) {
@@ -182,10 +187,10 @@ ImageRGB readImage(const std::string& path) {
 }
 
 ImageRgba readImageRgba(const std::string& path) {
-  if (!isRgbaImagePath(path)) unsupported(path, ".png, .jpg or .jpeg");
+  if (!isRgbaImagePath(path)) unsupported(path, ".png, .jpg, .jpeg or .webp");
   const std::string bytes = readFileBytes(path);
   try {
-    return decodeImageRgba(bytes);
+    return decodeRgba(bytes);
   } catch (const ImageWriteError& e) {
     throw ImageWriteError(path + ": " + e.what());
   }
@@ -193,7 +198,7 @@ ImageRgba readImageRgba(const std::string& path) {
 
 ImageRgba decodeImageRgbaBytes(const std::string& bytes, const std::string& name) {
   try {
-    return decodeImageRgba(bytes);
+    return decodeRgba(bytes);
   } catch (const ImageWriteError& e) {
     throw ImageWriteError(name + ": " + e.what());
   }

@@ -28,7 +28,7 @@ bool isExrPath(const std::string& path);
 bool isFloatImagePath(const std::string& path);
 
 // Throws ImageWriteError naming `path` and the formats textures are read from (.png, .jpg, .jpeg,
-// .exr, .pfm, .hdr) unless its extension is one of them.
+// .webp, .exr, .pfm, .hdr) unless its extension is one of them.
 void requireTextureImagePath(const std::string& path);
 
 // Throws ImageWriteError (naming the path and the reason) on failure; leaves no partial file.
@@ -53,12 +53,16 @@ ExrChannels readExrChannels(const std::string& path);
 // tools); throws ImageWriteError (the image module's one error type, naming the path) on failure.
 ImageRGB readImage(const std::string& path);
 
-// Reads .png (8- or 16-bit), .jpg and .jpeg files (textures) as RGBA; throws ImageWriteError
-// naming the path on failure.
+// Reads .png (8- or 16-bit), .jpg, .jpeg and .webp files (textures) as RGBA, by their first
+// bytes; throws ImageWriteError naming the path on failure.
 ImageRgba readImageRgba(const std::string& path);
 
-// The same from a PNG or JPEG file's bytes held in memory; throws ImageWriteError naming `name`.
+// The same from a PNG, JPEG or WebP file's bytes held in memory; throws ImageWriteError naming
+// `name`.
 ImageRgba decodeImageRgbaBytes(const std::string& bytes, const std::string& name);
+
+// Whether this build reads WebP images (Debian's libwebp, CANDELA_WEBP).
+bool webpDecoding();
 
 // Whether `path` is a regular file that holds a whole image of its extension's format, by a
 // cheap look at its ends: PNG's signature and final IEND chunk, a PFM's header and the size it

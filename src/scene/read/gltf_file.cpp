@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <set>
 
+#include "image/image_io.h"
 #include "scene/read/gltf_draco.h"
 #include "scene/read/gltf_meshopt.h"
 #include "scene/read/text_file.h"
@@ -26,10 +27,13 @@ const std::set<std::string> kReadableRequired = {
 const char* decoderLibrary(const std::string& extension) {
   return extension == "KHR_draco_mesh_compression" ? "libdraco-dev"
          : extension == "EXT_meshopt_compression"  ? "libmeshoptimizer-dev"
+         : extension == "EXT_texture_webp"         ? "libwebp-dev"
                                                    : nullptr;
 }
 bool decoderBuilt(const std::string& extension) {
-  return extension == "KHR_draco_mesh_compression" ? gltfDracoDecoding() : gltfMeshoptDecoding();
+  return extension == "KHR_draco_mesh_compression" ? gltfDracoDecoding()
+         : extension == "EXT_meshopt_compression"  ? gltfMeshoptDecoding()
+                                                   : webpDecoding();
 }
 
 // What tinygltf's image callback fills: the bytes of each image held in the file (a data URI or a

@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "core/texture.h"
+#include "image/image_io.h"
 #include "render/material_prepare.h"
 #include "scene/read/gltf_extension_values.h"
 #include "scene/read/gltf_uri.h"
@@ -63,32 +64,42 @@ TextureRef GltfMaterialReader::texture(const TextureSlot& slot, TextureUse use,
                      " does not exist (" + std::to_string(model_.textures.size()) + " textures)");
   const tinygltf::Texture& t = model_.textures[size_t(slot.index)];
   const std::string textureWhere = "textures[" + std::to_string(slot.index) + "]";
-  if (t.source < 0 || size_t(t.source) >= model_.images.size())
-    throw SceneError(label_ + ": " + textureWhere + ".source: " +
-                     (t.source < 0 ? std::string("no PNG or JPEG image (a KTX2 or WebP source, "
-                                                 "which candela does not read?)")
-                                   : "image " + std::to_string(t.source) + " does not exist"));
-  const tinygltf::Image& image = model_.images[size_t(t.source)];
+  // EXT_texture_webp names a WebP image, read in place of the (fallback) source where this build
+  // decodes WebP.
+  int source = t.source;
+  std::string sourceWhere = textureWhere + ".source";
+  const auto webp = t.extensions.find("EXT_texture_webp");
+  if (webp != t.extensions.end() && webpDecoding() && webp->second.Get("source").IsInt()) {
+    source = webp->second.Get("source").GetNumberAsInt();
+    sourceWhere = textureWhere + ".extensions.EXT_texture_webp.source";
+  }
+  if (source < 0 || size_t(source) >= model_.images.size())
+    throw SceneError(label_ + ": " + sourceWhere + ": " +
+                     (source < 0 ? std::string("no PNG, JPEG or WebP image (a KTX2 source, which "
+                                               "candela does not read?)")
+                                 : "image " + std::to_string(source) + " does not exist (" +
+                                       std::to_string(model_.images.size()) + " images)"));
+  const tinygltf::Image& image = model_.images[size_t(source)];
+  const std::string imageWhere = label_ + ": images[" + std::to_string(source) + "]";
   LoadedTexture loaded;
-  const auto bytes = embedded_.find(t.source);
+  const auto bytes = embedded_.find(source);
   if (bytes != embedded_.end()) {
-    const std::string name = label_ + " (images[" + std::to_string(t.source) + "]" +
+    const std::string name = label_ + " (images[" + std::to_string(source) + "]" +
                              (image.name.empty() ? "" : " \"" + image.name + "\"") + ")";
     try {
       loaded = textures_.loadEncoded(bytes->second, name, use);
     } catch (const SceneError& e) {
-      throw SceneError(label_ + ": images[" + std::to_string(t.source) + "]: " + e.what());
+      throw SceneError(imageWhere + ": " + e.what());
     }
   } else if (!image.uri.empty()) {
     const std::string path = gltfUriPath(image.uri, folder_);
     try {
       loaded = textures_.load(path, use);
     } catch (const SceneError& e) {
-      throw SceneError(label_ + ": images[" + std::to_string(t.source) + "].uri: " + e.what());
+      throw SceneError(imageWhere + ".uri: " + e.what());
     }
   } else {
-    throw SceneError(label_ + ": images[" + std::to_string(t.source) +
-                     "]: expected a uri or a bufferView");
+    throw SceneError(imageWhere + ": expected a uri or a bufferView");
   }
   if (hasAlpha) *hasAlpha = loaded.hasAlpha;
   TextureRef ref;
