@@ -76,6 +76,8 @@ struct ObjectDesc {
   // Above 0 (degrees): the faces the file gives no normals get them computed, smoothed across
   // edges up to this angle (scene/vertex_normals.h); 0: such faces are flat.
   float creaseDegrees = 0;
+  // A glTF file's KHR_materials_variants variant that picks its materials ("": the file's own).
+  std::string gltfVariant;
   std::optional<Material> material;  // overrides the mesh's own materials when present
   std::vector<Material> mixParts;    // what `material` mixes, where it is a mix
   // Read once per file: the objects that name one file share it (and so do frames).

@@ -8,6 +8,7 @@
 #include "scene/along_up.h"
 #include "scene/light_emission_desc.h"
 #include "scene/read/gltf_lights.h"
+#include "scene/read/gltf_loader.h"
 #include "scene/read/ies_profile.h"
 #include "scene/read/resolve_path.h"
 #include "scene/read/texel_check.h"
@@ -150,7 +151,7 @@ SphereDesc readSphere(const JsonValue& value, const MaterialLibrary& library,
 ObjectDesc readObject(const JsonValue& value, const MaterialLibrary& library,
                       const std::string& baseDir, TextureLoader& textures) {
   JsonObject fields(value, {"id", "file", "position", "rotation", "scale", "material", "color",
-                            "ior", "smooth", "vertex_colors"});
+                            "ior", "smooth", "vertex_colors", "gltf_variant"});
   ObjectDesc object;
   object.where = value.path();
   object.id = readId(fields);
@@ -169,6 +170,14 @@ ObjectDesc readObject(const JsonValue& value, const MaterialLibrary& library,
   if (std::optional<MaterialRead> read = readMaterialReference(fields, library, textures)) {
     object.material = read->material;
     object.mixParts = std::move(read->parts);
+  }
+  if (std::optional<JsonValue> variant = fields.get("gltf_variant")) {
+    object.gltfVariant = variant->string();
+    if (object.gltfVariant.empty()) variant->failExpected("the name of one of the file's variants");
+    if (!isGltfPath(object.file))
+      variant->fail("a glTF file's variant, and \"" + name + "\" is not a glTF file");
+    if (object.material)
+      variant->fail("not used: the object's material replaces the file's, whatever the variant");
   }
   fields.finish();
   return object;

@@ -109,8 +109,8 @@ uint32_t readUnsigned(const uint8_t* bytes, size_t size) {
 }
 
 // The elements of accessor `index` (`a`), each of `components` values of `componentSize` bytes,
-// decoded by `decode(bytes, out)` into `components` Ts: from its buffer view (zeros without one),
-// then its sparse substitutions, whose indices must rise and stay below its count.
+// decoded by `decode(bytes, out, element)` into `components` Ts: from its buffer view (zeros
+// without one), then its sparse substitutions, whose indices must rise and stay below its count.
 template <typename T, typename Decode>
 std::vector<T> readElements(const tinygltf::Model& model, const tinygltf::Accessor& a, int index,
                             int components, size_t componentSize, const Decode& decode,

@@ -13,6 +13,7 @@
 #include "scene/read/gltf_materials.h"
 #include "scene/read/gltf_nodes.h"
 #include "scene/read/gltf_uri.h"
+#include "scene/read/gltf_variants.h"
 #include "scene/scene_error.h"
 
 namespace candela {
@@ -20,11 +21,16 @@ namespace {
 
 class MeshBuilder {
  public:
+  // `variant`: the index of the KHR_materials_variants variant that picks the materials (-1:
+  // the primitives' own), among `variantCount`.
   MeshBuilder(const tinygltf::Model& model, const std::string& label, const std::string& folder,
-              const std::map<int, std::string>& embedded, TextureLoader& textures)
+              const std::map<int, std::string>& embedded, TextureLoader& textures, int variant,
+              size_t variantCount)
       : model_(model),
         label_(label),
-        materials_(model, label, folder, embedded, textures, &mesh_.warnings) {}
+        materials_(model, label, folder, embedded, textures, &mesh_.warnings),
+        variant_(variant),
+        variantCount_(variantCount) {}
 
   void addNode(int index, const tinygltf::Node& node, const GltfMatrix& world) {
     const std::string where = "nodes[" + std::to_string(index) + "]";
@@ -122,7 +128,10 @@ class MeshBuilder {
     }
     if (mesh_.positions.size() + vertices >= (size_t(1) << 31))
       throw SceneError(at + ": the file has more than 2^31 vertices");
-    const uint32_t material = materialIndex(primitive.material, where + ".material");
+    const uint32_t material =
+        materialIndex(gltfVariantMaterial(primitive, variant_, variantCount_,
+                                          model_.materials.size(), label_, where),
+                      where + ".material");
     if (!colors.empty() && mesh_.materials[material].type == MaterialType::Emissive)
       warn(where + ".attributes.COLOR_0: vertex colours do not tint an unlit material (materials[" +
            std::to_string(primitive.material) + "])");  // candela's emitters take none
@@ -241,6 +250,8 @@ class MeshBuilder {
   GltfMaterialReader materials_;
   std::map<int, uint32_t> materialOf_;  // glTF material (-1: the default) -> mesh_.materials
   std::set<std::string> warned_;
+  int variant_;
+  size_t variantCount_;
 };
 
 }  // namespace
@@ -251,9 +262,12 @@ bool isGltfPath(const std::string& path) {
   return lower == ".gltf" || lower == ".glb";
 }
 
-MeshDesc loadGltfFile(const std::string& path, const std::string& label, TextureLoader& textures) {
+MeshDesc loadGltfFile(const std::string& path, const std::string& label, TextureLoader& textures,
+                      const std::string& variant) {
   const std::unique_ptr<GltfFile> file = readGltfFile(path, label);
-  MeshBuilder builder(file->model, label, file->folder, file->embedded, textures);
+  const std::vector<std::string> variants = gltfVariantNames(file->model, label);
+  MeshBuilder builder(file->model, label, file->folder, file->embedded, textures,
+                      variant.empty() ? -1 : gltfVariantIndex(variants, variant), variants.size());
   forEachPlacedNode(file->model, label,
                     [&](int index, const tinygltf::Node& node, const GltfMatrix& world) {
                       builder.addNode(index, node, world);

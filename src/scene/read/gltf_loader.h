@@ -22,7 +22,10 @@
 
 namespace candela {
 
-MeshDesc loadGltfFile(const std::string& path, const std::string& label, TextureLoader& textures);
+// `variant`: a KHR_materials_variants variant's name that picks the primitives' materials ("":
+// their own); one the file does not have throws GltfVariantError (gltf_variants.h).
+MeshDesc loadGltfFile(const std::string& path, const std::string& label, TextureLoader& textures,
+                      const std::string& variant = "");
 
 // Whether a mesh file is read as glTF: its name ends in ".gltf" or ".glb", in any case.
 bool isGltfPath(const std::string& path);

@@ -16,6 +16,7 @@
 #include "scene/read/environment_reader.h"
 #include "scene/read/gltf_loader.h"
 #include "scene/read/gltf_scene.h"
+#include "scene/read/gltf_variants.h"
 #include "scene/read/json_parse.h"
 #include "scene/read/material_reader.h"
 #include "scene/read/obj_loader.h"
@@ -83,10 +84,12 @@ bool sameFile(const std::string& a, const std::string& b) {
 // at the object's "file" key, with the file as the scene wrote it.
 void loadMeshes(SceneDesc& scene, const std::vector<std::string>& writtenNames,
                 TextureLoader& textures) {
-  std::map<std::string, std::shared_ptr<const MeshDesc>> loaded;  // resolved path -> its mesh
+  // (resolved path, glTF variant) -> its mesh
+  std::map<std::pair<std::string, std::string>, std::shared_ptr<const MeshDesc>> loaded;
   for (size_t i = 0; i < scene.objects.size(); ++i) {
     ObjectDesc& object = scene.objects[i];
-    const auto previous = loaded.find(object.file);
+    const auto key = std::make_pair(object.file, object.gltfVariant);
+    const auto previous = loaded.find(key);
     if (previous != loaded.end()) {
       object.mesh = previous->second;
       continue;
@@ -94,14 +97,17 @@ void loadMeshes(SceneDesc& scene, const std::vector<std::string>& writtenNames,
     try {
       MeshDesc mesh = isPlyPath(object.file) ? loadPlyFile(object.file, writtenNames[i])
                       : isGltfPath(object.file)
-                          ? loadGltfFile(object.file, writtenNames[i], textures)
+                          ? loadGltfFile(object.file, writtenNames[i], textures, object.gltfVariant)
                           : loadObjFile(object.file, writtenNames[i], textures);
       orderTrianglesSpatially(&mesh);
       object.mesh = std::make_shared<const MeshDesc>(std::move(mesh));
+    } catch (const GltfVariantError& error) {
+      failAt(scene.file, memberPath(object.where, "gltf_variant"),
+             writtenNames[i] + ": " + error.what());
     } catch (const SceneError& error) {
       failAt(scene.file, memberPath(object.where, "file"), error.what());
     }
-    loaded.emplace(object.file, object.mesh);
+    loaded.emplace(key, object.mesh);
   }
   // A mesh's warnings concern its own materials: each is given once, at the first object that
   // takes its materials from the file.
