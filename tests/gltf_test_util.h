@@ -5,9 +5,14 @@
 
 #include <cstdint>
 #include <cstring>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
+
+#include "scene/read/gltf_loader.h"
+#include "scene/read/texture_reader.h"
+#include "scene/scene_error.h"
 
 namespace candela::test {
 
@@ -96,5 +101,22 @@ struct GltfFile {
     return out;
   }
 };
+
+// The mesh of the glTF file at `path`, named `label` in messages (its textures not kept).
+inline MeshDesc loadGltfMesh(const std::string& path, const std::string& label) {
+  std::vector<std::shared_ptr<const TextureDesc>> textures;
+  TextureLoader loader(textures, ".");
+  return loadGltfFile(path, label, loader);
+}
+
+// The error loading it gives, or "(no error)".
+inline std::string gltfLoadError(const std::string& path, const std::string& label) {
+  try {
+    loadGltfMesh(path, label);
+  } catch (const SceneError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
 
 }  // namespace candela::test

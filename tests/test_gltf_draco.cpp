@@ -27,20 +27,8 @@ namespace {
 using test::GltfFile;
 using test::TempDir;
 
-MeshDesc load(const std::string& path) {
-  std::vector<std::shared_ptr<const TextureDesc>> textures;
-  TextureLoader loader(textures, ".");
-  return loadGltfFile(path, "m.glb", loader);
-}
-
-std::string loadError(const std::string& path) {
-  try {
-    load(path);
-  } catch (const SceneError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
+MeshDesc load(const std::string& path) { return test::loadGltfMesh(path, "m.glb"); }
+std::string loadError(const std::string& path) { return test::gltfLoadError(path, "m.glb"); }
 
 // A file whose one primitive's POSITION and TEXCOORD_0 are the Draco `stream` (its attribute ids
 // `position` and `uv`), its accessors without buffer views, as encoders write them.

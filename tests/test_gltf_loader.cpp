@@ -29,18 +29,10 @@ constexpr int kFloat = 5126, kByte = 5120, kUbyte = 5121, kShort = 5122, kUshort
               kUint = 5125;
 
 MeshDesc load(const std::string& path, const std::string& label = "m.gltf") {
-  std::vector<std::shared_ptr<const TextureDesc>> textures;
-  TextureLoader loader(textures, ".");
-  return loadGltfFile(path, label, loader);
+  return test::loadGltfMesh(path, label);
 }
-
 std::string loadError(const std::string& path, const std::string& label = "m.gltf") {
-  try {
-    load(path, label);
-  } catch (const SceneError& e) {
-    return e.what();
-  }
-  return "(no error)";
+  return test::gltfLoadError(path, label);
 }
 
 // A quad (0, 1, 2, 3) in z = 0 with normals tilted towards +x and uvs, under a node tree: the

@@ -30,20 +30,8 @@ namespace {
 using test::GltfFile;
 using test::TempDir;
 
-MeshDesc load(const std::string& path) {
-  std::vector<std::shared_ptr<const TextureDesc>> textures;
-  TextureLoader loader(textures, ".");
-  return loadGltfFile(path, "m.glb", loader);
-}
-
-std::string loadError(const std::string& path) {
-  try {
-    load(path);
-  } catch (const SceneError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
+MeshDesc load(const std::string& path) { return test::loadGltfMesh(path, "m.glb"); }
+std::string loadError(const std::string& path) { return test::gltfLoadError(path, "m.glb"); }
 
 #ifdef CANDELA_HAS_MESHOPT
 // Appends `stream` to the file's buffer 0 and adds a view of `decodedLength` bytes over the
