@@ -128,13 +128,12 @@ class MeshBuilder {
     }
     if (mesh_.positions.size() + vertices >= (size_t(1) << 31))
       throw SceneError(at + ": the file has more than 2^31 vertices");
-    const uint32_t material =
-        materialIndex(gltfVariantMaterial(primitive, variant_, variantCount_,
-                                          model_.materials.size(), label_, where),
-                      where + ".material");
+    const int fileMaterial = gltfVariantMaterial(primitive, variant_, variantCount_,
+                                                 model_.materials.size(), label_, where);
+    const uint32_t material = materialIndex(fileMaterial, where + ".material");
     if (!colors.empty() && mesh_.materials[material].type == MaterialType::Emissive)
       warn(where + ".attributes.COLOR_0: vertex colours do not tint an unlit material (materials[" +
-           std::to_string(primitive.material) + "])");  // candela's emitters take none
+           std::to_string(fileMaterial) + "])");  // candela's emitters take none
 
     if (!colors.empty()) {
       mesh_.colors.resize(mesh_.positions.size(), Vec3(1.0f));  // earlier vertices without

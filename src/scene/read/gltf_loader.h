@@ -1,15 +1,19 @@
 // glTF 2.0 file (.gltf with its buffers and images beside it, or one binary .glb) -> MeshDesc, in
 // the object's space: the triangles of every mesh that the file's default scene places (its
 // first scene where it names none; where it has no scenes, every node that is no other's child),
-// each placed by its node's transform and its parents', as one mesh. Positions, normals, the
-// first texture coordinates (v turned to candela's convention, v = 1 - glTF's v) and vertex
-// colours (COLOR_0, linear, which tint the base colour as glTF says) are read, and
-// each glTF material is mapped to candela's (gltf_materials.h); a primitive without one takes
-// glTF's default material. Triangles, strips and fans are read; points and lines are skipped
-// with a warning, as are what else candela does not use (skins, morph targets, animations); whether
-// it holds cameras and lights is noted (MeshDesc::holdsCameras, holdsLights) for the scene to say
-// where its camera or lights take none of them. A node whose transform mirrors keeps its faces'
-// outsides (their winding is reversed, as glTF says).
+// each placed by its node's transform and its parents' (and, with EXT_mesh_gpu_instancing, once
+// per instance: gltf_instancing.h), as one mesh. Positions, normals, the first texture
+// coordinates (v turned to candela's convention, v = 1 - glTF's v) and vertex colours (COLOR_0,
+// linear, which tint the base colour as glTF says) are read, as floats or as the integers glTF
+// and KHR_mesh_quantization allow, sparse or not (gltf_accessor.h), from buffers that Draco or
+// meshopt may have compressed (gltf_draco.h, gltf_meshopt.h); each glTF material is mapped to
+// candela's (gltf_materials.h), picked by a KHR_materials_variants variant where one is asked for
+// (gltf_variants.h); a primitive without one takes glTF's default material. Triangles, strips and
+// fans are read; points and lines are skipped with a warning, as are what else candela does not use
+// (skins, morph targets, animations); whether it holds cameras and lights is noted
+// (MeshDesc::holdsCameras, holdsLights) for the scene to say where its camera or lights take none
+// of them. A node whose transform mirrors keeps its faces' outsides (their winding is reversed, as
+// glTF says).
 //
 // Errors throw SceneError "<label>: <reason>", the reason naming the JSON path of what is wrong
 // ("meshes[0].primitives[1].indices: accessor 4 ...").

@@ -3,8 +3,8 @@
 // A colour field that takes a texture accepts, besides a grey or [r, g, b],
 //   {"texture": "wood.png", "scale": [su, sv]}
 // with the file relative to the scene file's folder and `scale` (default [1, 1]) finite and
-// non-zero. PNG and JPEG are 8-bit sRGB (colours) or linear (masks); EXR, PFM and .hdr are linear
-// float. Any other colour field refuses a texture object (JsonValue::colour).
+// non-zero. PNG, JPEG and WebP are 8-bit sRGB (colours) or linear (masks); EXR, PFM and .hdr are
+// linear float. Any other colour field refuses a texture object (JsonValue::colour).
 #pragma once
 
 #include <functional>
@@ -25,7 +25,7 @@ enum class TextureUse { Color, Linear, Profile };
 
 struct LoadedTexture {
   int32_t index = -1;     // into the scene's textures
-  bool hasAlpha = false;  // the file has an alpha channel (PNG or JPEG files of 2 or 4 channels)
+  bool hasAlpha = false;  // the file has an alpha channel (8- or 16-bit files of 2 or 4 channels)
 };
 
 // Reads textures into a scene's list, each (file, use) once, by canonical path.
@@ -44,7 +44,7 @@ class TextureLoader {
   // non-negative.
   LoadedTexture load(const std::string& path, TextureUse use);
 
-  // The texture of a PNG or JPEG file's bytes held in memory (a glTF file's embedded image),
+  // The texture of a PNG, JPEG or WebP file's bytes held in memory (a glTF file's embedded image),
   // read once per `name`, which names it in messages; throws SceneError as load() does.
   LoadedTexture loadEncoded(const std::string& bytes, const std::string& name, TextureUse use);
 
