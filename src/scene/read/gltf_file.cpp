@@ -8,6 +8,7 @@
 
 #include "image/image_io.h"
 #include "scene/read/gltf_draco.h"
+#include "scene/read/gltf_json_edit.h"
 #include "scene/read/gltf_meshopt.h"
 #include "scene/read/text_file.h"
 #include "scene/scene_error.h"
@@ -34,6 +35,18 @@ bool decoderBuilt(const std::string& extension) {
   return extension == "KHR_draco_mesh_compression" ? gltfDracoDecoding()
          : extension == "EXT_meshopt_compression"  ? gltfMeshoptDecoding()
                                                    : webpDecoding();
+}
+
+// Throws SceneError naming the file's required extension `required` unless this build reads it.
+void requireReadable(const std::string& required, const std::string& label) {
+  const std::string at = label + ": extensionsRequired: the file requires " + required;
+  if (const char* library = decoderLibrary(required)) {
+    if (!decoderBuilt(required))
+      throw SceneError(at + ", and this build of candela reads no such files (built without " +
+                       library + ")");
+  } else if (!kReadableRequired.count(required)) {
+    throw SceneError(at + ", which candela does not read");
+  }
 }
 
 // What tinygltf's image callback fills: the bytes of each image held in the file (a data URI or a
@@ -99,21 +112,21 @@ std::unique_ptr<GltfFile> readGltfFile(const std::string& path, const std::strin
   } catch (const SceneError&) {
     throw;
   } catch (const std::exception& e) {
-    throw SceneError(label + ": not a readable glTF file (" + e.what() + ")");
+    error = std::string("not a readable glTF file (") + e.what() + ")";
   }
-  if (!parsed)
+  if (!parsed) {
+    // A file that requires what this build cannot decode may be valid only to a decoder (Draco's
+    // indices without a buffer view, meshopt's placeholder buffers): that is the better message.
+    editGltfJson(bytes, [&](nlohmann::json& doc, bool) {
+      if (doc.contains("extensionsRequired") && doc["extensionsRequired"].is_array())
+        for (const nlohmann::json& required : doc["extensionsRequired"])
+          if (required.is_string()) requireReadable(required.get<std::string>(), label);
+      return false;
+    });
     throw SceneError(label + ": " +
                      (error.empty() ? std::string("not a readable glTF file") : firstLine(error)));
-  for (const std::string& required : model.extensionsRequired) {
-    const std::string at = label + ": extensionsRequired: the file requires " + required;
-    if (const char* library = decoderLibrary(required)) {
-      if (!decoderBuilt(required))
-        throw SceneError(at + ", and this build of candela reads no such files (built without " +
-                         library + ")");
-    } else if (!kReadableRequired.count(required)) {
-      throw SceneError(at + ", which candela does not read");
-    }
   }
+  for (const std::string& required : model.extensionsRequired) requireReadable(required, label);
   decodeMeshoptViews(model, label);
   decodeDracoPrimitives(model, label);
   return file;
