@@ -153,9 +153,9 @@ void decodePrimitive(tinygltf::Model& model, tinygltf::Primitive& p, const tinyg
 
 bool gltfDracoDecoding() { return true; }
 
-std::string withoutDracoIndices(const std::string& file) {
-  if (file.find("KHR_draco_mesh_compression") == std::string::npos) return file;
-  return editGltfJson(file, [](nlohmann::json& doc, bool) {
+void leaveOutDracoIndices(std::string* file) {
+  if (gltfJsonText(*file).find("KHR_draco_mesh_compression") == std::string_view::npos) return;
+  editGltfJson(file, [](nlohmann::json& doc, bool) {
     bool changed = false;
     if (!doc.contains("meshes") || !doc["meshes"].is_array()) return false;
     for (nlohmann::json& mesh : doc["meshes"]) {
@@ -190,7 +190,7 @@ void decodeDracoPrimitives(tinygltf::Model& model, const std::string& label) {
 
 bool gltfDracoDecoding() { return false; }
 
-std::string withoutDracoIndices(const std::string& file) { return file; }
+void leaveOutDracoIndices(std::string*) {}
 
 void decodeDracoPrimitives(tinygltf::Model&, const std::string&) {}
 

@@ -15,12 +15,11 @@ namespace candela {
 // Whether this build decodes Draco streams.
 bool gltfDracoDecoding();
 
-// The glTF file `file` (a .gltf's text or a .glb's bytes) with the "indices" of its compressed
-// primitives left out, for tinygltf, which refuses an indices accessor without a buffer view
-// (where Draco's encoders leave it); decodeDracoPrimitives makes their indices from the stream.
-// The file as it is without Draco, without such primitives, or where it is not JSON to edit (the
-// parser then says what is wrong).
-std::string withoutDracoIndices(const std::string& file);
+// Leaves the "indices" of *file's compressed primitives (a .gltf's text or a .glb's bytes) out,
+// for tinygltf, which refuses an indices accessor without a buffer view (where Draco's encoders
+// leave it); decodeDracoPrimitives makes their indices from the stream. Nothing changes without
+// Draco, without such primitives, or where the JSON cannot be read (the parser then says why).
+void leaveOutDracoIndices(std::string* file);
 
 // Decodes every compressed primitive of `model` in place (where this build decodes Draco). Throws
 // SceneError "<label>: <JSON path>: <reason>" for a stream Draco cannot decode or one that does not

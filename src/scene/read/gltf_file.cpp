@@ -23,30 +23,28 @@ const std::set<std::string> kReadableRequired = {
     "KHR_materials_volume",  "KHR_materials_dispersion",
     "KHR_mesh_quantization", "EXT_mesh_gpu_instancing"};
 
-// The Debian package whose library decodes a compression extension, or null for other extensions;
-// whether this build has it.
-const char* decoderLibrary(const std::string& extension) {
-  return extension == "KHR_draco_mesh_compression" ? "libdraco-dev"
-         : extension == "EXT_meshopt_compression"  ? "libmeshoptimizer-dev"
-         : extension == "EXT_texture_webp"         ? "libwebp-dev"
-                                                   : nullptr;
-}
-bool decoderBuilt(const std::string& extension) {
-  return extension == "KHR_draco_mesh_compression" ? gltfDracoDecoding()
-         : extension == "EXT_meshopt_compression"  ? gltfMeshoptDecoding()
-                                                   : webpDecoding();
-}
+// The extensions read through an optional library: the Debian package that has it, and whether
+// this build does.
+struct Decoder {
+  const char* extension;
+  const char* package;
+  bool (*built)();
+};
+const Decoder kDecoders[] = {
+    {"KHR_draco_mesh_compression", "libdraco-dev", gltfDracoDecoding},
+    {"EXT_meshopt_compression", "libmeshoptimizer-dev", gltfMeshoptDecoding},
+    {"EXT_texture_webp", "libwebp-dev", webpDecoding}};
 
 // Throws SceneError naming the file's required extension `required` unless this build reads it.
 void requireReadable(const std::string& required, const std::string& label) {
   const std::string at = label + ": extensionsRequired: the file requires " + required;
-  if (const char* library = decoderLibrary(required)) {
-    if (!decoderBuilt(required))
+  for (const Decoder& d : kDecoders)
+    if (required == d.extension) {
+      if (d.built()) return;
       throw SceneError(at + ", and this build of candela reads no such files (built without " +
-                       library + ")");
-  } else if (!kReadableRequired.count(required)) {
-    throw SceneError(at + ", which candela does not read");
-  }
+                       d.package + ")");
+    }
+  if (!kReadableRequired.count(required)) throw SceneError(at + ", which candela does not read");
 }
 
 // What tinygltf's image callback fills: the bytes of each image held in the file (a data URI or a
@@ -90,7 +88,8 @@ std::unique_ptr<GltfFile> readGltfFile(const std::string& path, const std::strin
   std::string bytes, reason;
   if (!readTextFile(path, &bytes, &reason))
     throw SceneError("cannot open \"" + label + "\" (" + reason + ")");
-  bytes = withEmptyMeshoptFallbacks(withoutDracoIndices(bytes));
+  leaveOutDracoIndices(&bytes);
+  giveMeshoptPlaceholdersAByte(&bytes);
   auto file = std::make_unique<GltfFile>();
   file->folder = std::filesystem::path(path).parent_path().string();
   tinygltf::Model& model = file->model;
@@ -117,7 +116,7 @@ std::unique_ptr<GltfFile> readGltfFile(const std::string& path, const std::strin
   if (!parsed) {
     // A file that requires what this build cannot decode may be valid only to a decoder (Draco's
     // indices without a buffer view, meshopt's placeholder buffers): that is the better message.
-    editGltfJson(bytes, [&](nlohmann::json& doc, bool) {
+    editGltfJson(&bytes, [&](nlohmann::json& doc, bool) {
       if (doc.contains("extensionsRequired") && doc["extensionsRequired"].is_array())
         for (const nlohmann::json& required : doc["extensionsRequired"])
           if (required.is_string()) requireReadable(required.get<std::string>(), label);

@@ -6,13 +6,17 @@
 #include <functional>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <string_view>
 
 namespace candela {
 
-// `file` (a .gltf's text or a .glb's bytes) with its JSON as `edit(json, binary)` leaves it when
-// `edit` returns true; `file` itself when it returns false, or where the JSON cannot be read (the
-// parser then says what is wrong). `binary`: the file is a .glb.
-std::string editGltfJson(const std::string& file,
-                         const std::function<bool(nlohmann::json&, bool)>& edit);
+// The JSON text of `file` (a .gltf's text or a .glb's bytes): the whole text, or a .glb's first
+// chunk (empty where the .glb's header or chunk is malformed; the parser then says what is wrong).
+std::string_view gltfJsonText(const std::string& file);
+
+// Gives *file (a .gltf's text or a .glb's bytes) its JSON as `edit(json, binary)` leaves it where
+// `edit` returns true; leaves it as it is where `edit` returns false or the JSON cannot be read.
+// `binary`: the file is a .glb.
+void editGltfJson(std::string* file, const std::function<bool(nlohmann::json&, bool)>& edit);
 
 }  // namespace candela

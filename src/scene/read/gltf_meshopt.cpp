@@ -127,9 +127,9 @@ void decodeView(tinygltf::Model& model, tinygltf::BufferView& view, const tinygl
 
 bool gltfMeshoptDecoding() { return true; }
 
-std::string withEmptyMeshoptFallbacks(const std::string& file) {
-  if (file.find(kExtension) == std::string::npos) return file;
-  return editGltfJson(file, [](nlohmann::json& doc, bool binary) {
+void giveMeshoptPlaceholdersAByte(std::string* file) {
+  if (gltfJsonText(*file).find(kExtension) == std::string_view::npos) return;
+  editGltfJson(file, [](nlohmann::json& doc, bool binary) {
     if (!doc.contains("buffers") || !doc["buffers"].is_array()) return false;
     // The placeholders: buffers without a URI (but a .glb's first, its binary chunk) that only
     // compressed views read, tagged "fallback" or not (the extension allows both).
@@ -168,7 +168,7 @@ void decodeMeshoptViews(tinygltf::Model& model, const std::string& label) {
 
 bool gltfMeshoptDecoding() { return false; }
 
-std::string withEmptyMeshoptFallbacks(const std::string& file) { return file; }
+void giveMeshoptPlaceholdersAByte(std::string*) {}
 
 void decodeMeshoptViews(tinygltf::Model&, const std::string&) {}
 

@@ -15,12 +15,12 @@ namespace candela {
 // Whether this build decodes meshopt streams.
 bool gltfMeshoptDecoding();
 
-// The glTF file `file` (a .gltf's text or a .glb's bytes) with the placeholder buffers of
-// compressed views (without a URI, read by compressed views alone, tagged "fallback" or not)
-// given a data URI of one byte, for tinygltf, which refuses a buffer without a URI that is not a
-// .glb's own; decodeMeshoptViews gives the views that read them their decoded bytes. The file as
-// it is without the library or such buffers.
-std::string withEmptyMeshoptFallbacks(const std::string& file);
+// Gives the placeholder buffers of *file's compressed views (a .gltf's text or a .glb's bytes;
+// buffers without a URI that compressed views alone read, tagged "fallback" or not) a data URI of
+// one byte, for tinygltf, which refuses a buffer without a URI that is not a .glb's own;
+// decodeMeshoptViews gives the views that read them their decoded bytes. Nothing changes without
+// the library or such buffers.
+void giveMeshoptPlaceholdersAByte(std::string* file);
 
 // Decodes every compressed buffer view of `model` in place (where this build decodes meshopt).
 // Throws SceneError "<label>: bufferViews[i].extensions.EXT_meshopt_compression...: <reason>" for
