@@ -27,7 +27,6 @@ namespace {
 using test::GltfFile;
 using test::TempDir;
 
-MeshDesc load(const std::string& path) { return test::loadGltfMesh(path, "m.glb"); }
 std::string loadError(const std::string& path) { return test::gltfLoadError(path, "m.glb"); }
 
 // A file whose one primitive's POSITION and TEXCOORD_0 are the Draco `stream` (its attribute ids
@@ -53,6 +52,8 @@ GltfFile dracoFile(const std::string& stream, int position, int uv) {
 }
 
 #ifdef CANDELA_HAS_DRACO
+MeshDesc load(const std::string& path) { return test::loadGltfMesh(path, "m.glb"); }
+
 // A 4 x 4 grid of cells over [0, 2] x [0, 1] in z = x y / 2, its uvs (x / 2, y): 32 triangles.
 constexpr int kCells = 4;
 std::array<float, 3> gridPoint(int i, int j) {

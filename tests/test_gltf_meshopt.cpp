@@ -30,10 +30,11 @@ namespace {
 using test::GltfFile;
 using test::TempDir;
 
-MeshDesc load(const std::string& path) { return test::loadGltfMesh(path, "m.glb"); }
 std::string loadError(const std::string& path) { return test::gltfLoadError(path, "m.glb"); }
 
 #ifdef CANDELA_HAS_MESHOPT
+MeshDesc load(const std::string& path) { return test::loadGltfMesh(path, "m.glb"); }
+
 // Appends `stream` to the file's buffer 0 and adds a view of `decodedLength` bytes over the
 // fallback buffer 1 whose EXT_meshopt_compression names it; the view's index.
 int addCompressedView(GltfFile& f, const std::vector<unsigned char>& stream, size_t count,
