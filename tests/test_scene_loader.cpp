@@ -142,7 +142,8 @@ TEST_F(SceneLoader, MissingRequiredKey) {
   EXPECT_EQ(errorWith(R"("spheres": [{"radius": 1}])"),
             "s.json: spheres[0]: missing required key \"position\"");
   EXPECT_EQ(errorWith(R"("objects": [{"position": [0, 0, 0]}])"),
-            "s.json: objects[0]: missing required key \"file\"");
+            "s.json: objects[0]: missing required key \"file\" (an OBJ, PLY or glTF file) or "
+            "\"shape\" (\"rectangle\", \"disk\", \"cube\" or \"cylinder\")");
   EXPECT_EQ(errorWith(R"("lights": [{"position": [0, 0, 0]}])"),
             "s.json: lights[0]: missing required key \"intensity\"");
   EXPECT_EQ(errorWith(R"("materials": {"lamp": {"type": "emissive"}})"),

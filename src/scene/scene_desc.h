@@ -67,7 +67,8 @@ struct MeshDesc {
 struct ObjectDesc {
   std::string id;
   std::string where;
-  std::string file;  // as resolved against the scene file's folder
+  std::string file;   // as resolved against the scene file's folder; empty for a shape
+  std::string shape;  // a built-in shape (scene/shape_meshes.h) in place of a file; else empty
   Vec3 position;
   Vec3 rotation;     // degrees, R = Rz * Ry * Rx
   Vec3 scale{1.0f};

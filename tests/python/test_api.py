@@ -337,3 +337,20 @@ def test_a_gltf_file_is_a_scene_of_its_own(tmp_path):
     # Framed: the triangle covers the image's centre; the pale sky (radiance 0.6) its corner.
     assert abs(img[270, 480] - 0.6).max() > 0.01
     assert abs(img[5, 5] - 0.6).max() < 1e-6
+
+
+def test_built_in_shapes_need_no_file():
+    # A glowing unit cube, 2 units wide, seen straight on by an orthographic camera 4 units
+    # across: the middle half of the image glows, the rest is black.
+    scene = {"camera": {"width": 16, "height": 16, "projection": "orthographic",
+                        "view_width": 4, "position": [0, 0, 5], "spp": 1},
+             "render": {"antialiasing": False, "max_depth": 1},
+             "objects": [{"shape": "cube", "scale": 2,
+                          "material": {"type": "emissive", "radiance": 1}}]}
+    img = candela.Scene.from_dict(scene).render(backend="cpu")
+    expected = np.zeros((16, 16, 3), np.float32)
+    expected[4:12, 4:12] = 1
+    np.testing.assert_array_equal(img, expected)
+    scene["objects"][0]["shape"] = "ball"
+    with pytest.raises(candela.SceneError, match=r"objects\[0\]\.shape: expected one of"):
+        candela.Scene.from_dict(scene)

@@ -24,7 +24,7 @@ std::vector<InputFile> inputFiles(const std::vector<SceneDesc>& scenes) {
       if (!light.gltfFile.empty() && light.gltfFile != lightFile)
         files.push_back({lightFile = light.gltfFile, "the lights' glTF file"});
     for (const ObjectDesc& object : scene.objects) {
-      files.push_back({object.file, "the mesh"});
+      if (!object.file.empty()) files.push_back({object.file, "the mesh"});
       for (const std::string& mtl : object.mesh->materialFiles)
         files.push_back({mtl, "the material library"});
       for (const std::string& buffer : object.mesh->bufferFiles)

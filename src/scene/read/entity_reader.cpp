@@ -14,9 +14,19 @@
 #include "scene/read/texel_check.h"
 #include "scene/read/texture_reader.h"
 #include "scene/scene_error.h"
+#include "scene/shape_meshes.h"
 
 namespace candela {
 namespace {
+
+// The shapes' names, quoted: "a", "b" or "c".
+std::string shapeList() {
+  const std::vector<std::string>& names = shapeNames();
+  std::string list;
+  for (size_t i = 0; i < names.size(); ++i)
+    list += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + quoted(names[i]);
+  return list;
+}
 
 // An optional "id": a non-empty string other than "camera", which animation tracks use to name
 // the camera. Uniqueness across the scene is the loader's check.
@@ -150,15 +160,27 @@ SphereDesc readSphere(const JsonValue& value, const MaterialLibrary& library,
 
 ObjectDesc readObject(const JsonValue& value, const MaterialLibrary& library,
                       const std::string& baseDir, TextureLoader& textures) {
-  JsonObject fields(value, {"id", "file", "position", "rotation", "scale", "material", "color",
-                            "ior", "smooth", "vertex_colors", "gltf_variant"});
+  JsonObject fields(value, {"id", "file", "shape", "position", "rotation", "scale", "material",
+                            "color", "ior", "smooth", "vertex_colors", "gltf_variant"});
   ObjectDesc object;
   object.where = value.path();
   object.id = readId(fields);
-  const JsonValue file = fields.require("file");
-  const std::string name = file.string();
-  if (name.empty()) file.failExpected("the path of an OBJ, PLY or glTF file");
-  object.file = resolvePath(name, baseDir);
+  std::string name;  // the file as written
+  fields.exclusive("file", "shape");
+  if (std::optional<JsonValue> shape = fields.get("shape")) {
+    if (shape->json().is_string() && shape->string() == "sphere")
+      shape->fail("expected " + shapeList() +
+                  "; a sphere goes in \"spheres\", exact, with a \"radius\"");
+    object.shape = shapeNames()[shape->choice(shapeNames())];
+  } else {
+    if (!fields.has("file"))
+      fields.fail("missing required key \"file\" (an OBJ, PLY or glTF file) or \"shape\" (" +
+                  shapeList() + ")");
+    const JsonValue file = fields.require("file");
+    name = file.string();
+    if (name.empty()) file.failExpected("the path of an OBJ, PLY or glTF file");
+    object.file = resolvePath(name, baseDir);
+  }
   if (std::optional<JsonValue> position = fields.get("position"))
     object.position = position->vec3();
   if (std::optional<JsonValue> rotation = fields.get("rotation"))
@@ -174,6 +196,8 @@ ObjectDesc readObject(const JsonValue& value, const MaterialLibrary& library,
   if (std::optional<JsonValue> variant = fields.get("gltf_variant")) {
     object.gltfVariant = variant->string();
     if (object.gltfVariant.empty()) variant->failExpected("the name of one of the file's variants");
+    if (!object.shape.empty())
+      variant->fail("a glTF file's variant, and the object is a " + object.shape);
     if (!isGltfPath(object.file))
       variant->fail("a glTF file's variant, and \"" + name + "\" is not a glTF file");
     if (object.material)

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <map>
 #include <set>
+#include <tuple>
 #include <vector>
 
 #include "scene/camera_resolve.h"
@@ -26,6 +27,7 @@
 #include "scene/read/scene_limits.h"
 #include "scene/read/text_file.h"
 #include "scene/scene_error.h"
+#include "scene/shape_meshes.h"
 #include "scene/vertex_normals.h"
 
 namespace candela {
@@ -84,18 +86,20 @@ bool sameFile(const std::string& a, const std::string& b) {
 // at the object's "file" key, with the file as the scene wrote it.
 void loadMeshes(SceneDesc& scene, const std::vector<std::string>& writtenNames,
                 TextureLoader& textures) {
-  // (resolved path, glTF variant) -> its mesh
-  std::map<std::pair<std::string, std::string>, std::shared_ptr<const MeshDesc>> loaded;
+  // (resolved path, glTF variant, shape) -> its mesh
+  std::map<std::tuple<std::string, std::string, std::string>, std::shared_ptr<const MeshDesc>>
+      loaded;
   for (size_t i = 0; i < scene.objects.size(); ++i) {
     ObjectDesc& object = scene.objects[i];
-    const auto key = std::make_pair(object.file, object.gltfVariant);
+    const auto key = std::make_tuple(object.file, object.gltfVariant, object.shape);
     const auto previous = loaded.find(key);
     if (previous != loaded.end()) {
       object.mesh = previous->second;
       continue;
     }
     try {
-      MeshDesc mesh = isPlyPath(object.file) ? loadPlyFile(object.file, writtenNames[i])
+      MeshDesc mesh = !object.shape.empty()    ? shapeMesh(object.shape)
+                      : isPlyPath(object.file) ? loadPlyFile(object.file, writtenNames[i])
                       : isGltfPath(object.file)
                           ? loadGltfFile(object.file, writtenNames[i], textures, object.gltfVariant)
                           : loadObjFile(object.file, writtenNames[i], textures);
@@ -191,7 +195,9 @@ SceneDesc parseSceneText(const std::string& text, const std::string& fileLabel,
   forEachElement(top, "objects", [&](const JsonValue& element) {
     scene.objects.push_back(readObject(element, library, baseDir, textures));
     ids.add(scene.objects.back().id, scene.objects.back().where, fileLabel);
-    writtenNames.push_back(element.json().at("file").get<std::string>());
+    const ObjectDesc& object = scene.objects.back();
+    writtenNames.push_back(object.shape.empty() ? element.json().at("file").get<std::string>()
+                                                : "the " + object.shape);
   });
   forEachElement(top, "lights", [&](const JsonValue& element) {
     if (namesGltfLights(element)) {
