@@ -44,6 +44,19 @@ inline Mat3 eulerRotation(const Vec3& degrees) {
   return rotationZ(degrees.z) * rotationY(degrees.y) * rotationX(degrees.x);
 }
 
+// The Euler angles (degrees) of rotation r, so that eulerRotation of them is r (host only). x comes
+// from the third row and z from x and the first two rows (Shoemake's order of solving), so that
+// near y = +-90 degrees, where x and z turn about one axis, the pair still gives r to rounding.
+inline Vec3 eulerDegrees(const Mat3& r) {
+  const auto& m = r.m;
+  const double x = std::atan2(double(m[2][1]), double(m[2][2]));
+  const double y = std::atan2(-double(m[2][0]), std::hypot(double(m[0][0]), double(m[1][0])));
+  const double sx = std::sin(x), cx = std::cos(x);
+  const double z = std::atan2(sx * m[0][2] - cx * m[0][1], cx * m[1][1] - sx * m[1][2]);
+  const double degrees = 180.0 / kPiDouble;
+  return Vec3(float(x * degrees), float(y * degrees), float(z * degrees));
+}
+
 // Inverse of a general 3x3 matrix (host only: used for K and normal transforms).
 // Returns false when the matrix is singular.
 inline bool invert(const Mat3& a, Mat3* out) {

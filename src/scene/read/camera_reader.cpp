@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/constants.h"
+#include "core/rotation.h"
 #include "scene/along_up.h"
 #include "scene/animation.h"
 #include "scene/camera_resolve.h"
@@ -272,26 +273,6 @@ CameraDesc readCamera(const JsonValue& value, RenderSettings& render, const std:
   fields.finish();
   return camera;
 }
-
-namespace {
-
-// The Euler angles (degrees; R = Rz Ry Rx, as eulerRotation) of rotation r.
-Vec3 eulerDegrees(const Mat3& r) {
-  const double kDegrees = 180.0 / kPiDouble;
-  const double sinY = std::max(-1.0, std::min(1.0, -double(r.m[2][0])));
-  const double y = std::asin(sinY);
-  double x, z;
-  if (std::fabs(sinY) < 0.999999) {
-    x = std::atan2(double(r.m[2][1]), double(r.m[2][2]));
-    z = std::atan2(double(r.m[1][0]), double(r.m[0][0]));
-  } else {  // gimbal lock: only x - z (or x + z) is defined; z = 0 takes it all
-    x = std::atan2(-double(r.m[1][2]), double(r.m[1][1]));
-    z = 0;
-  }
-  return Vec3(float(x * kDegrees), float(y * kDegrees), float(z * kDegrees));
-}
-
-}  // namespace
 
 void followGltfAnimation(SceneDesc& scene) {
   CameraDesc& camera = scene.camera;

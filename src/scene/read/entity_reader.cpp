@@ -13,6 +13,7 @@
 #include "scene/read/resolve_path.h"
 #include "scene/read/texel_check.h"
 #include "scene/read/texture_reader.h"
+#include "scene/read/transform_reader.h"
 #include "scene/scene_error.h"
 #include "scene/shape_meshes.h"
 
@@ -160,8 +161,8 @@ SphereDesc readSphere(const JsonValue& value, const MaterialLibrary& library,
 
 ObjectDesc readObject(const JsonValue& value, const MaterialLibrary& library,
                       const std::string& baseDir, TextureLoader& textures) {
-  JsonObject fields(value, {"id", "file", "shape", "position", "rotation", "scale", "material",
-                            "color", "ior", "smooth", "vertex_colors", "gltf_variant"});
+  JsonObject fields(value, {"id", "file", "shape", "position", "rotation", "scale", "transform",
+                            "material", "color", "ior", "smooth", "vertex_colors", "gltf_variant"});
   ObjectDesc object;
   object.where = value.path();
   object.id = readId(fields);
@@ -180,6 +181,13 @@ ObjectDesc readObject(const JsonValue& value, const MaterialLibrary& library,
     name = file.string();
     if (name.empty()) file.failExpected("the path of an OBJ, PLY or glTF file");
     object.file = resolvePath(name, baseDir);
+  }
+  for (const char* key : {"position", "rotation", "scale"}) fields.exclusive("transform", key);
+  if (std::optional<JsonValue> transform = fields.get("transform")) {
+    const Placement placement = readTransform(*transform);
+    object.position = placement.position;
+    object.rotation = placement.rotation;
+    object.scale = placement.scale;
   }
   if (std::optional<JsonValue> position = fields.get("position"))
     object.position = position->vec3();
