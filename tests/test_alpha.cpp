@@ -159,7 +159,8 @@ TEST(AlphaErrors, JsonAlphaIsRefusedWhereItCannotBe) {
             "test.json: spheres[0].material.alpha: not used by an \"emissive\" material");
   EXPECT_EQ(error(R"({"type": "diffuse", "alpha": {"texture": "x.png", "height": 2}})"),
             "test.json: spheres[0].material.alpha.height: unknown key, expected one of "
-            "\"texture\", \"scale\", \"offset\", \"rotation\", \"wrap\", \"filter\", \"channel\"");
+            "\"texture\", \"checkerboard\", \"scale\", \"offset\", \"rotation\", \"wrap\", "
+            "\"filter\", \"channel\"");
 }
 
 INSTANTIATE_TEST_SUITE_P(Engines, Alpha, ::testing::ValuesIn(test::builtCpuEngines()),

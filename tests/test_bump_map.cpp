@@ -231,9 +231,10 @@ TEST(BumpMap, TheSceneFormatRefusesWhatItCannotBe) {
   EXPECT_EQ(error(R"({"type": "diffuse", "bump_map": {"texture": "h.pfm", "height": "1"}})"),
             "s.json: materials.m.bump_map.height: expected a finite, non-zero number, got a "
             "string \"1\"");
-  EXPECT_EQ(error(R"({"type": "diffuse", "bump_map": {"texture": "h.pfm", "strength": 1}})"),
-            "s.json: materials.m.bump_map.strength: unknown key, expected one of \"texture\", "
-            "\"scale\", \"offset\", \"rotation\", \"wrap\", \"filter\", \"height\"");
+  EXPECT_EQ(
+      error(R"({"type": "diffuse", "bump_map": {"texture": "h.pfm", "strength": 1}})"),
+      "s.json: materials.m.bump_map.strength: unknown key, expected one of \"texture\", "
+      "\"checkerboard\", \"scale\", \"offset\", \"rotation\", \"wrap\", \"filter\", \"height\"");
   EXPECT_EQ(error(R"({"type": "diffuse", "bump_map": "h.pfm"})"),
             "s.json: materials.m.bump_map: expected a texture object {\"texture\": file, "
             "\"scale\": [su, sv], \"height\": h}, got a string \"h.pfm\"");

@@ -262,9 +262,10 @@ TEST(RoughnessTexture, TheSceneFormatRefusesWhatItCannotBe) {
   EXPECT_EQ(error(R"({"type": "conductor", "roughness": {"texture": "missing.pfm"}})"),
             "s.json: materials.m.roughness.texture: cannot read the texture: " +
                 (dir / "missing.pfm").string() + ": cannot open: No such file or directory");
-  EXPECT_EQ(error(R"({"type": "plastic", "roughness": {"texture": "r.pfm", "height": 1}})"),
-            "s.json: materials.m.roughness.height: unknown key, expected one of \"texture\", "
-            "\"scale\", \"offset\", \"rotation\", \"wrap\", \"filter\", \"channel\"");
+  EXPECT_EQ(
+      error(R"({"type": "plastic", "roughness": {"texture": "r.pfm", "height": 1}})"),
+      "s.json: materials.m.roughness.height: unknown key, expected one of \"texture\", "
+      "\"checkerboard\", \"scale\", \"offset\", \"rotation\", \"wrap\", \"filter\", \"channel\"");
   EXPECT_EQ(error(R"({"type": "plastic", "roughness": [0.1, 0.2]})"),
             "s.json: materials.m.roughness: expected a roughness in [0, 1] or a texture object, "
             "got an array [0.1,0.2]");

@@ -432,7 +432,7 @@ TEST(TextureErrors, JsonMessagesNameThePath) {
   EXPECT_EQ(loadError(scene(R"({"type": "emissive", "radiance": {"texture": "ok.png", "a": 1}})"),
                       dir.path()),
             "scene.json: spheres[0].material.radiance.a: unknown key, expected one of \"texture\", "
-            "\"scale\", \"offset\", \"rotation\", \"wrap\", \"filter\"");
+            "\"checkerboard\", \"scale\", \"offset\", \"rotation\", \"wrap\", \"filter\"");
 }
 
 TEST(TextureErrors, MtlMessagesNameFileAndLine) {

@@ -158,7 +158,7 @@ Vec3 JsonValue::vec3() const {
 Vec3 JsonValue::colour() const {
   if (json().is_number()) return Vec3(nonNegativeNumber());
   // Colours that take textures are read by readTexturedColour (texture_reader.h) instead.
-  if (json().is_object() && json().contains("texture"))
+  if (json().is_object() && (json().contains("texture") || json().contains("checkerboard")))
     fail("a texture on a field that takes none (expected a number or an array of 3 numbers)");
   if (!json().is_array() || json().size() != 3)
     failExpected("a colour (a number or an array of 3 numbers)");

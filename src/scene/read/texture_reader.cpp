@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <exception>
 #include <filesystem>
 #include <optional>
@@ -158,21 +159,52 @@ struct TextureObject {
   bool hasAlpha = false;            // whether the image has an alpha channel
 };
 
+// A texture object's "checkerboard": [colour0, colour1] (each a number or [r, g, b], linear), as
+// the 2 x 2 texture whose squares Mitsuba 3's `checkerboard` gives uv [0, 1)^2: colour0 where u
+// and v are both past one half or neither is (the bottom-left and top-right squares).
+int32_t readCheckerboard(const JsonValue& value, TextureLoader& textures, TextureUse use) {
+  if (!value.json().is_array() || value.json().size() != 2)
+    value.failExpected("an array of two colours, [colour0, colour1]");
+  const std::vector<JsonValue> e = value.elements();
+  const Vec3 c0 = e[0].colour(), c1 = e[1].colour();
+  char key[160];
+  std::snprintf(key, sizeof key, "checkerboard [%.9g %.9g %.9g] [%.9g %.9g %.9g]", c0.x, c0.y, c0.z,
+                c1.x, c1.y, c1.z);
+  return textures
+      .add(key, use,
+           [&](bool* hasAlpha) {
+             TextureDesc t;
+             t.file = key;
+             t.format = TextureFormat::Float;
+             t.width = t.height = 2;
+             for (const Vec3& c : {c1, c0, c0, c1})
+               t.texelsF.insert(t.texelsF.end(), {c.x, c.y, c.z, 1.0f});
+             *hasAlpha = false;
+             return t;
+           })
+      .index;
+}
+
 // A texture object {"texture": file, "scale": [su, sv], "offset": [ou, ov], "rotation": degrees,
 // "wrap": mode or [mode, mode], "filter": "bilinear" or "nearest", ...}, its file read for `use`,
 // with the further keys that `keys` allows.
 TextureObject readTextureObject(const JsonValue& value, TextureLoader& textures, TextureUse use,
                                 const std::string& expected, unsigned keys = kNoMoreKeys) {
-  std::vector<std::string> known = {"texture", "scale", "offset", "rotation", "wrap", "filter"};
+  std::vector<std::string> known = {"texture",  "checkerboard", "scale", "offset",
+                                    "rotation", "wrap",         "filter"};
   if (keys & kHeightKey) known.push_back("height");
   if (keys & kChannelKey) known.push_back("channel");
   JsonObject fields(value, std::move(known), expected);
-  const JsonValue file = fields.require("texture");
-  const std::string written = file.string();
-  if (written.empty()) file.failExpected("the path of an image file");
-  const std::string resolved = textures.resolve(written);
+  fields.exclusive("texture", "checkerboard");
+  const std::optional<JsonValue> checkerboard = fields.get("checkerboard");
+  if (!checkerboard && !fields.has("texture"))
+    fields.fail(
+        "missing required key \"texture\" (an image file) or \"checkerboard\" ([colour, colour])");
   TextureObject object;
   TextureRef& ref = object.ref;
+  // A checkerboard's squares are its texels: read by the nearest texel, but where a bump map's
+  // slopes need the bilinear lookup.
+  if (checkerboard && !(keys & kHeightKey)) ref.filter = TextureFilter::Nearest;
   if (std::optional<JsonValue> scale = fields.get("scale")) {
     const std::string expectation = "an array of 2 finite, non-zero numbers";
     if (!scale->json().is_array() || scale->json().size() != 2) scale->failExpected(expectation);
@@ -221,13 +253,20 @@ TextureObject readTextureObject(const JsonValue& value, TextureLoader& textures,
   // In the order of core/texture.h's channel numbers.
   if (std::optional<JsonValue> given = fields.get("channel"))
     object.channel = uint32_t(given->choice({"r", "g", "b", "a", "luminance"}));
+  const std::optional<JsonValue> file = fields.get("texture");
   fields.finish();
+  if (checkerboard) {
+    ref.index = readCheckerboard(*checkerboard, textures, use);
+    return object;
+  }
+  const std::string written = file->string();
+  if (written.empty()) file->failExpected("the path of an image file");
   try {
-    const LoadedTexture loaded = textures.load(resolved, use);
+    const LoadedTexture loaded = textures.load(textures.resolve(written), use);
     ref.index = loaded.index;
     object.hasAlpha = loaded.hasAlpha;
   } catch (const SceneError& e) {
-    file.fail(e.what());
+    file->fail(e.what());
   }
   return object;
 }

@@ -3,8 +3,9 @@
 // A colour field that takes a texture accepts, besides a grey or [r, g, b],
 //   {"texture": "wood.png", "scale": [su, sv]}
 // with the file relative to the scene file's folder and `scale` (default [1, 1]) finite and
-// non-zero. PNG, JPEG and WebP are 8-bit sRGB (colours) or linear (masks); EXR, PFM and .hdr are
-// linear float. Any other colour field refuses a texture object (JsonValue::colour).
+// non-zero, or {"checkerboard": [colour0, colour1], ...}, a 2 x 2 texture of those colours. PNG,
+// JPEG and WebP are 8-bit sRGB (colours) or linear (masks); EXR, PFM and .hdr are linear float. Any
+// other colour field refuses a texture object (JsonValue::colour).
 #pragma once
 
 #include <functional>
