@@ -312,7 +312,7 @@ TEST(Environment, BadMapsAreRefusedWithOneMessage) {
             0u);
   EXPECT_EQ(loadError(R"({"color": 1, "strength": 2})"),
             "s.json: environment.strength: not used by a constant environment (only with a "
-            "\"map\")");
+            "\"map\" or \"sky\")");
   EXPECT_EQ(loadError(R"({"map": "env_inf.pfm", "strength": -1})"),
             "s.json: environment.strength: expected a non-negative number, got -1");
 }
