@@ -97,7 +97,7 @@ TEST_F(RectangleLightTexture, TheSceneFormatRefusesWhatItCannotBe) {
                                 "color": {"texture": "quads.png"}}]})",
                             dir.path()),
             "test.json: lights[0].color: a texture, which only \"rectangle\" lights take; "
-            "expected a colour");
+            "expected a colour or {\"temperature\": kelvin}");
   EXPECT_EQ(test::loadError(R"({"camera": {}, "lights": [{"id": "screen", "type": "rectangle",
         "position": [0, 1, 0], "direction": [0, 0, 1], "size": 1, "intensity": 1,
         "color": {"texture": "quads.png"}}],

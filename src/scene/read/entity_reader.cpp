@@ -300,10 +300,13 @@ LightDesc readLight(const JsonValue& value, TextureLoader& textures) {
     light.position = fields.require("position").vec3();
   light.intensity = fields.require("intensity").nonNegativeNumber();
   const std::optional<JsonValue> color = fields.get("color");
-  if (color && color->json().is_object() && kind != kRectangle)
-    color->fail("a texture, which only \"rectangle\" lights take; expected a colour");
+  if (color && color->json().is_object() && !color->json().contains("temperature") &&
+      kind != kRectangle)
+    color->fail(
+        "a texture, which only \"rectangle\" lights take; expected a colour or "
+        "{\"temperature\": kelvin}");
   TextureRef texture;
-  if (color) light.color = readTexturedColour(*color, textures, &texture);
+  if (color) light.color = readLightColour(*color, textures, &texture);
   if (kind == kSphere)
     light.radius = fields.require("radius").positiveNumber();
   else

@@ -172,7 +172,7 @@ void readTransmittance(const JsonValue& value, JsonObject& fields, TextureLoader
 // (default 1) into material->radiance.
 void readRadiance(JsonObject& fields, const JsonValue& radiance, const std::string& strengthKey,
                   TextureLoader& textures, Material* material) {
-  material->radiance = readTexturedColour(radiance, textures, &material->emissionTexture);
+  material->radiance = readLightColour(radiance, textures, &material->emissionTexture);
   if (std::optional<JsonValue> strength = fields.get(strengthKey)) {
     const float k = strength->nonNegativeNumber();
     const Vec3 scaled = material->radiance * k;

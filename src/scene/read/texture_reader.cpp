@@ -12,6 +12,7 @@
 #include "core/constants.h"
 #include "core/texture.h"
 #include "image/image_io.h"
+#include "scene/blackbody.h"
 #include "scene/content_hash.h"
 #include "scene/read/ies_profile.h"
 #include "scene/read/resolve_path.h"
@@ -278,6 +279,19 @@ Vec3 readTexturedColour(const JsonValue& value, TextureLoader& textures, Texture
   *texture =
       readTextureObject(value, textures, TextureUse::Color, "a colour or a texture object").ref;
   return Vec3(1.0f);
+}
+
+Vec3 readLightColour(const JsonValue& value, TextureLoader& textures, TextureRef* texture) {
+  if (!value.json().is_object() || !value.json().contains("temperature"))
+    return readTexturedColour(value, textures, texture);
+  JsonObject fields(value, {"temperature"});
+  const JsonValue temperature = fields.require("temperature");
+  const double kelvin = temperature.number();
+  if (!(kelvin >= kBlackbodyMinKelvin && kelvin <= kBlackbodyMaxKelvin))
+    temperature.failExpected("a temperature in kelvin from " + formatNumber(kBlackbodyMinKelvin) +
+                             " to " + formatNumber(kBlackbodyMaxKelvin));
+  fields.finish();
+  return blackbodyColour(kelvin);
 }
 
 TextureRef readNormalMap(const JsonValue& value, TextureLoader& textures) {

@@ -81,6 +81,10 @@ float texelValue(const TextureDesc& t, size_t i, uint32_t c);
 // `*texture` when `value` is a texture object. Errors name the JSON path.
 Vec3 readTexturedColour(const JsonValue& value, TextureLoader& textures, TextureRef* texture);
 
+// The colour of a light or an emitter: as readTexturedColour, or {"temperature": kelvin}, a black
+// body's colour at luminance 1 (scene/blackbody.h).
+Vec3 readLightColour(const JsonValue& value, TextureLoader& textures, TextureRef* texture);
+
 // A material's "normal_map": a texture object, its file read linearly.
 TextureRef readNormalMap(const JsonValue& value, TextureLoader& textures);
 
