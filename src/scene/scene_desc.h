@@ -79,6 +79,9 @@ struct ObjectDesc {
   float creaseDegrees = 0;
   // A glTF file's KHR_materials_variants variant that picks its materials ("": the file's own).
   std::string gltfVariant;
+  // The glTF file's node whose meshes (with its children's) the object holds ("": the file's
+  // scene), in the node's own frame.
+  std::string gltfNode;
   std::optional<Material> material;  // overrides the mesh's own materials when present
   std::vector<Material> mixParts;    // what `material` mixes, where it is a mix
   // Read once per file: the objects that name one file share it (and so do frames).

@@ -161,8 +161,9 @@ SphereDesc readSphere(const JsonValue& value, const MaterialLibrary& library,
 
 ObjectDesc readObject(const JsonValue& value, const MaterialLibrary& library,
                       const std::string& baseDir, TextureLoader& textures) {
-  JsonObject fields(value, {"id", "file", "shape", "position", "rotation", "scale", "transform",
-                            "material", "color", "ior", "smooth", "vertex_colors", "gltf_variant"});
+  JsonObject fields(
+      value, {"id", "file", "shape", "position", "rotation", "scale", "transform", "material",
+              "color", "ior", "smooth", "vertex_colors", "gltf_variant", "gltf_node"});
   ObjectDesc object;
   object.where = value.path();
   object.id = readId(fields);
@@ -210,6 +211,14 @@ ObjectDesc readObject(const JsonValue& value, const MaterialLibrary& library,
       variant->fail("a glTF file's variant, and \"" + name + "\" is not a glTF file");
     if (object.material)
       variant->fail("not used: the object's material replaces the file's, whatever the variant");
+  }
+  if (std::optional<JsonValue> node = fields.get("gltf_node")) {
+    object.gltfNode = node->string();
+    if (object.gltfNode.empty()) node->failExpected("the name of one of the file's nodes");
+    if (!object.shape.empty())
+      node->fail("a glTF file's node, and the object is a " + object.shape);
+    if (!isGltfPath(object.file))
+      node->fail("a glTF file's node, and \"" + name + "\" is not a glTF file");
   }
   fields.finish();
   return object;

@@ -262,15 +262,18 @@ bool isGltfPath(const std::string& path) {
 }
 
 MeshDesc loadGltfFile(const std::string& path, const std::string& label, TextureLoader& textures,
-                      const std::string& variant) {
+                      const std::string& variant, const std::string& nodeName) {
   const std::unique_ptr<GltfFile> file = readGltfFile(path, label);
+  const int root = nodeName.empty() ? -1 : gltfNodeIndex(file->model, nodeName);
   const std::vector<std::string> variants = gltfVariantNames(file->model, label);
   MeshBuilder builder(file->model, label, file->folder, file->embedded, textures,
                       variant.empty() ? -1 : gltfVariantIndex(variants, variant), variants.size());
-  forEachPlacedNode(file->model, label,
-                    [&](int index, const tinygltf::Node& node, const GltfMatrix& world) {
-                      builder.addNode(index, node, world);
-                    });
+  forEachPlacedNode(
+      file->model, label,
+      [&](int index, const tinygltf::Node& node, const GltfMatrix& world) {
+        builder.addNode(index, node, world);
+      },
+      {}, root);
   MeshDesc mesh = builder.finish();
   for (const tinygltf::Buffer& buffer : file->model.buffers)
     if (!buffer.uri.empty() && !isDataUri(buffer.uri))

@@ -27,9 +27,11 @@
 namespace candela {
 
 // `variant`: a KHR_materials_variants variant's name that picks the primitives' materials ("":
-// their own); one the file does not have throws GltfVariantError (gltf_variants.h).
+// their own); one the file does not have throws GltfVariantError (gltf_variants.h). `node`: the
+// name of the one node whose meshes (with its children's) make the mesh, in the node's own frame
+// ("": the file's scene); one the file does not have throws GltfNodeError (gltf_nodes.h).
 MeshDesc loadGltfFile(const std::string& path, const std::string& label, TextureLoader& textures,
-                      const std::string& variant = "");
+                      const std::string& variant = "", const std::string& node = "");
 
 // Whether a mesh file is read as glTF: its name ends in ".gltf" or ".glb", in any case.
 bool isGltfPath(const std::string& path);

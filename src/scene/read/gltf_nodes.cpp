@@ -5,6 +5,7 @@
 #include <utility>
 #include <vector>
 
+#include "scene/read/did_you_mean.h"
 #include "scene/scene_error.h"
 
 namespace candela {
@@ -98,8 +99,8 @@ GltfMatrix gltfTrs(const std::array<double, 3>& t, std::array<double, 4> q,
 void forEachPlacedNode(const tinygltf::Model& model, const std::string& label,
                        const std::function<void(int index, const tinygltf::Node& node,
                                                 const GltfMatrix& world)>& visit,
-                       const GltfLocalOverride& moved) {
-  const std::vector<int> roots = rootNodes(model, label);
+                       const GltfLocalOverride& moved, int root) {
+  const std::vector<int> roots = root >= 0 ? std::vector<int>{root} : rootNodes(model, label);
   std::vector<bool> reached(model.nodes.size(), false);
   std::vector<std::pair<int, GltfMatrix>> pending;
   for (auto it = roots.rbegin(); it != roots.rend(); ++it) pending.push_back({*it, identity()});
@@ -119,11 +120,36 @@ void forEachPlacedNode(const tinygltf::Model& model, const std::string& label,
     // animation moves it: the override copies the parts it leaves from the node.
     GltfMatrix local = localTransform(node, label + ": " + where);
     if (moved) moved(index, node, &local);
+    if (index == root) local = identity();
     const GltfMatrix world = gltfMultiply(parent, local);
     visit(index, node, world);
     for (auto c = node.children.rbegin(); c != node.children.rend(); ++c)
       pending.push_back({*c, world});
   }
+}
+
+int gltfNodeIndex(const tinygltf::Model& model, const std::string& name) {
+  std::vector<int> found;
+  std::vector<std::string> names;
+  for (size_t i = 0; i < model.nodes.size(); ++i) {
+    if (model.nodes[i].name == name) found.push_back(int(i));
+    if (!model.nodes[i].name.empty()) names.push_back(model.nodes[i].name);
+  }
+  if (found.size() == 1) return found[0];
+  if (found.size() > 1)
+    throw GltfNodeError("the file names " + std::to_string(found.size()) + " nodes \"" + name +
+                        "\" (nodes[" + std::to_string(found[0]) + "] and nodes[" +
+                        std::to_string(found[1]) + "]); expected a name that one node has");
+  if (names.empty())
+    throw GltfNodeError("the file's nodes have no names, so none is \"" + name + "\"");
+  const std::string close = closestMatch(name, names);
+  std::string list;
+  for (size_t i = 0; i < names.size() && i < 20; ++i)
+    list += (i == 0 ? "\"" : ", \"") + names[i] + "\"";
+  if (names.size() > 20) list += " and " + std::to_string(names.size() - 20) + " more";
+  throw GltfNodeError("the file has no node \"" + name + "\"" +
+                      (close.empty() ? "" : " (did you mean \"" + close + "\"?)") +
+                      "; its nodes: " + list);
 }
 
 }  // namespace candela

@@ -1,6 +1,7 @@
 // Where a glTF file's scene places its nodes: each node's transform (its matrix, or translation,
 // rotation and scale) times its parents', visited from the nodes of the file's default scene (its
-// first where it names none; in a file without scenes, every node that is no other's child).
+// first where it names none; in a file without scenes, every node that is no other's child), or
+// from one node by its name.
 // Throws SceneError "<label>: <reason>" for a node that does not exist, is reached twice (a node
 // has one parent) or has a transform that is not finite.
 #pragma once
@@ -10,6 +11,7 @@
 #include <string>
 
 #include "scene/read/tiny_gltf_config.h"
+#include "scene/scene_error.h"
 
 namespace candela {
 
@@ -20,10 +22,24 @@ using GltfMatrix = std::array<double, 16>;  // column-major, as glTF writes it
 using GltfLocalOverride =
     std::function<bool(int index, const tinygltf::Node& node, GltfMatrix* local)>;
 
+// With `root` (a node's index) the walk visits that node and what lies under it alone, the root
+// at the identity (its own transform and its parents' left out), so that an object holds one
+// node of a file in the node's own frame.
 void forEachPlacedNode(const tinygltf::Model& model, const std::string& label,
                        const std::function<void(int index, const tinygltf::Node& node,
                                                 const GltfMatrix& world)>& visit,
-                       const GltfLocalOverride& moved = {});
+                       const GltfLocalOverride& moved = {}, int root = -1);
+
+// A node an object asks for by name (its "gltf_node") that the file does not have, or has more than
+// once: the scene reports it at the object's "gltf_node".
+class GltfNodeError : public SceneError {
+ public:
+  using SceneError::SceneError;
+};
+
+// The index of the node named `name`; throws GltfNodeError naming the file's nodes (and the
+// likely one meant) where none or several have that name.
+int gltfNodeIndex(const tinygltf::Model& model, const std::string& name);
 
 // a * b (column-major).
 GltfMatrix gltfMultiply(const GltfMatrix& a, const GltfMatrix& b);

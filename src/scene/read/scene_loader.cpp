@@ -16,6 +16,7 @@
 #include "scene/read/entity_reader.h"
 #include "scene/read/environment_reader.h"
 #include "scene/read/gltf_loader.h"
+#include "scene/read/gltf_nodes.h"
 #include "scene/read/gltf_scene.h"
 #include "scene/read/gltf_variants.h"
 #include "scene/read/json_parse.h"
@@ -86,12 +87,14 @@ bool sameFile(const std::string& a, const std::string& b) {
 // at the object's "file" key, with the file as the scene wrote it.
 void loadMeshes(SceneDesc& scene, const std::vector<std::string>& writtenNames,
                 TextureLoader& textures) {
-  // (resolved path, glTF variant, shape) -> its mesh
-  std::map<std::tuple<std::string, std::string, std::string>, std::shared_ptr<const MeshDesc>>
+  // (resolved path, glTF variant, glTF node, shape) -> its mesh
+  std::map<std::tuple<std::string, std::string, std::string, std::string>,
+           std::shared_ptr<const MeshDesc>>
       loaded;
   for (size_t i = 0; i < scene.objects.size(); ++i) {
     ObjectDesc& object = scene.objects[i];
-    const auto key = std::make_tuple(object.file, object.gltfVariant, object.shape);
+    const auto key =
+        std::make_tuple(object.file, object.gltfVariant, object.gltfNode, object.shape);
     const auto previous = loaded.find(key);
     if (previous != loaded.end()) {
       object.mesh = previous->second;
@@ -101,12 +104,16 @@ void loadMeshes(SceneDesc& scene, const std::vector<std::string>& writtenNames,
       MeshDesc mesh = !object.shape.empty()    ? shapeMesh(object.shape)
                       : isPlyPath(object.file) ? loadPlyFile(object.file, writtenNames[i])
                       : isGltfPath(object.file)
-                          ? loadGltfFile(object.file, writtenNames[i], textures, object.gltfVariant)
+                          ? loadGltfFile(object.file, writtenNames[i], textures, object.gltfVariant,
+                                         object.gltfNode)
                           : loadObjFile(object.file, writtenNames[i], textures);
       orderTrianglesSpatially(&mesh);
       object.mesh = std::make_shared<const MeshDesc>(std::move(mesh));
     } catch (const GltfVariantError& error) {
       failAt(scene.file, memberPath(object.where, "gltf_variant"),
+             writtenNames[i] + ": " + error.what());
+    } catch (const GltfNodeError& error) {
+      failAt(scene.file, memberPath(object.where, "gltf_node"),
              writtenNames[i] + ": " + error.what());
     } catch (const SceneError& error) {
       failAt(scene.file, memberPath(object.where, "file"), error.what());
