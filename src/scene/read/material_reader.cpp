@@ -3,7 +3,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <functional>
+#include <memory>
 #include <set>
 #include <utility>
 #include <vector>
@@ -12,8 +14,10 @@
 #include "render/material_prepare.h"
 #include "scene/cauchy_index.h"
 #include "scene/read/did_you_mean.h"
+#include "scene/read/json_parse.h"
 #include "scene/read/metal_table.h"
 #include "scene/read/texel_check.h"
+#include "scene/read/text_file.h"
 #include "scene/scene_error.h"
 
 namespace candela {
@@ -457,19 +461,32 @@ std::vector<std::string> namesOf(const Map& map) {
 // Reads the top-level "materials" in whatever order its mixes name each other.
 class LibraryReader {
  public:
-  LibraryReader(const JsonValue& value, TextureLoader& textures) : textures_(textures) {
-    for (const auto& item : value.json().items())
-      if (!isCommentKey(item.key()))
-        entries_.emplace(item.key(), JsonValue(item.value(), value.file(),
-                                               memberPath(value.path(), item.key())));
+  explicit LibraryReader(TextureLoader& textures) : textures_(textures) {}
+
+  // Adds the materials of `value` (name -> material), whose files lie relative to `folder`.
+  void add(const JsonValue& value, const std::string& folder) {
+    if (!value.json().is_object()) value.failExpected("an object (material name -> material)");
+    for (const auto& item : value.json().items()) {
+      if (isCommentKey(item.key())) continue;
+      const JsonValue entry(item.value(), value.file(), memberPath(value.path(), item.key()));
+      const auto [found, fresh] = entries_.emplace(item.key(), Entry{entry, folder});
+      if (!fresh)
+        entry.fail("the material " + quoted(item.key()) + " is defined twice, first at " +
+                   found->second.value.file() + ": " + found->second.value.path());
+    }
   }
 
   MaterialLibrary read() {
-    for (const auto& entry : entries_) named(entry.first, entry.second);
+    for (const auto& entry : entries_) named(entry.first, entry.second.value);
     return std::move(library_);
   }
 
  private:
+  struct Entry {
+    JsonValue value;
+    std::string folder;  // its textures' paths are relative to this
+  };
+
   // The material named `name`, read on first use; `where` is what names it.
   const MaterialRead& named(const std::string& name, const JsonValue& where) {
     const auto done = library_.find(name);
@@ -484,13 +501,15 @@ class LibraryReader {
         if (partName == kTypeNames[type]) return shorthandMaterial(type);
       failUnknownMaterial(part, partName, namesOf(entries_));
     };
-    MaterialRead material = readMaterialObject(entries_.at(name), textures_, lookup);
+    const Entry& entry = entries_.at(name);
+    const TextureLoader::BaseDirScope folder(textures_, entry.folder);
+    MaterialRead material = readMaterialObject(entry.value, textures_, lookup);
     reading_.erase(name);
     return library_[name] = std::move(material);
   }
 
   TextureLoader& textures_;
-  std::map<std::string, JsonValue> entries_;
+  std::map<std::string, Entry> entries_;
   MaterialLibrary library_;
   std::set<std::string> reading_;  // the mixes being read, which a part may not name
 };
@@ -498,8 +517,30 @@ class LibraryReader {
 }  // namespace
 
 MaterialLibrary readMaterialLibrary(const JsonValue& value, TextureLoader& textures) {
-  if (!value.json().is_object()) value.failExpected("an object (material name -> material)");
-  return LibraryReader(value, textures).read();
+  LibraryReader reader(textures);
+  std::vector<std::unique_ptr<Json>> files;  // the library files' documents, alive while read
+  const auto addOne = [&](const JsonValue& part) {
+    if (part.json().is_object()) return reader.add(part, textures.baseDir());
+    if (!part.json().is_string())
+      part.failExpected(
+          "an object (material name -> material), the path of a JSON file of "
+          "them, or an array of those");
+    const std::string written = part.string();
+    if (written.empty()) part.failExpected("the path of a JSON file of materials");
+    const std::string path = textures.resolve(written);
+    std::string text, reason;
+    if (!readTextFile(path, &text, &reason))
+      part.fail("cannot open the material library " + written + " (" + reason + ")");
+    files.push_back(std::make_unique<Json>(parseJson(text, path)));
+    reader.add(JsonValue(*files.back(), path, ""),
+               std::filesystem::path(path).parent_path().string());
+  };
+  if (value.json().is_array()) {
+    for (const JsonValue& part : value.elements()) addOne(part);
+  } else {
+    addOne(value);
+  }
+  return reader.read();
 }
 
 std::optional<MaterialRead> readMaterialReference(JsonObject& owner, const MaterialLibrary& library,

@@ -29,8 +29,10 @@ struct MaterialRead {
 
 using MaterialLibrary = std::map<std::string, MaterialRead>;
 
-// The top-level "materials" object: name -> material object. A mix may name any of them for a
-// part, in any order; one that contains itself is refused.
+// The top-level "materials": an object (name -> material object), the path of a JSON file of one
+// (relative to the scene's folder; the file's textures relative to its own), or an array of both,
+// whose names must differ. A mix may name any of them for a part, in any order; one that contains
+// itself is refused.
 MaterialLibrary readMaterialLibrary(const JsonValue& value, TextureLoader& textures);
 
 // The material that `owner` (a sphere or object) gives through its "material", "color" and "ior"

@@ -37,6 +37,21 @@ class TextureLoader {
       : textures_(textures), baseDir_(std::move(baseDir)) {}
 
   const std::string& baseDir() const { return baseDir_; }
+  // While it lives, names resolve against `folder` (a material library file's) instead.
+  class BaseDirScope {
+   public:
+    BaseDirScope(TextureLoader& loader, std::string folder)
+        : loader_(loader), saved_(std::move(loader.baseDir_)) {
+      loader_.baseDir_ = std::move(folder);
+    }
+    ~BaseDirScope() { loader_.baseDir_ = std::move(saved_); }
+    BaseDirScope(const BaseDirScope&) = delete;
+    BaseDirScope& operator=(const BaseDirScope&) = delete;
+
+   private:
+    TextureLoader& loader_;
+    std::string saved_;
+  };
   // A file as the scene names it, resolved against the scene file's folder unless absolute.
   std::string resolve(const std::string& written) const;
 
