@@ -123,6 +123,13 @@ TEST(Sky, IsSymmetricAboutTheSunsPlaneAndTheGroundLiesBelow) {
   const Vec3 down = skyRadiance(sky, unit(0.2, -0.01, 0.5));
   EXPECT_EQ(down.x, 0.1f);
   EXPECT_EQ(down.z, 0.3f);
+  // Without a ground, the horizon's radiance at each azimuth goes on below it.
+  sky.ground.reset();
+  for (const Vec3& d : {unit(0.2, -0.3, 0.5), unit(-0.9, -0.99, 0.1)}) {
+    const Vec3 below = skyRadiance(sky, d), horizon = skyRadiance(sky, unit(d.x, 0, d.z));
+    for (int c = 0; c < 3; ++c) EXPECT_EQ(below[c], horizon[c]);
+  }
+  EXPECT_GT(skyRadiance(sky, unit(0.2, -0.3, 0.5)).y, 0.5f);
   // Brighter towards the sun than away from it, bluer overhead than at the horizon.
   EXPECT_GT(skyRadiance(sky, unit(0, 0.4, -1)).y, 1.5f * skyRadiance(sky, unit(0, 0.4, 1)).y);
   const Vec3 zenith = skyRadiance(sky, Vec3(0, 1, 0)), horizon = skyRadiance(sky, unit(1, 0.02, 0));

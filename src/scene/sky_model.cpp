@@ -62,7 +62,12 @@ constexpr double kZenithY[3][4] = {{0.00275, -0.00610, 0.00317, 0.0},
 }  // namespace
 
 Vec3 skyRadiance(const SkyParams& sky, const Vec3& d) {
-  if (d.y < 0.0f) return sky.ground;
+  if (d.y < 0.0f) {
+    if (sky.ground) return *sky.ground;
+    const float across = std::sqrt(d.x * d.x + d.z * d.z);
+    return skyRadiance(
+        sky, across > 0.0f ? Vec3(d.x / across, 0.0f, d.z / across) : Vec3(0.0f, 0.0f, -1.0f));
+  }
   const double t = sky.turbidity;
   const double thetaSun = std::acos(std::clamp(double(sky.sun.y), -1.0, 1.0));
   const double cosGamma = std::clamp(

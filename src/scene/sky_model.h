@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 
 #include "core/vec3.h"
 #include "image/image.h"
@@ -14,7 +15,9 @@ namespace candela {
 struct SkyParams {
   Vec3 sun{0.0f, 1.0f, 0.0f};  // unit, towards the sun, at or above the horizon (y >= 0)
   float turbidity = 3.0f;      // haze: 2 a very clear sky, 10 a hazy one (the model's fitted range)
-  Vec3 ground{0.0f};           // the radiance below the horizon
+  // The radiance below the horizon; absent: the horizon's at each azimuth, as haze would carry it
+  // on to a distant ground.
+  std::optional<Vec3> ground;
 };
 
 // The model's lowest and highest turbidity.
@@ -23,7 +26,7 @@ constexpr float kSkyTurbidityMin = 1.7f, kSkyTurbidityMax = 10.0f;
 // The sky's linear sRGB radiance towards unit direction `d`: the Perez distribution of luminance
 // and of chromaticity x and y about the zenith's, luminance in kcd/m^2, through CIE XYZ; each
 // channel at least 0 (the model's colours near the sun can leave the sRGB gamut). Below the
-// horizon, `ground`.
+// horizon, `ground` (or the horizon's).
 Vec3 skyRadiance(const SkyParams& sky, const Vec3& d);
 
 // skyRadiance at the centre of each texel of a width x height equirectangular map.
