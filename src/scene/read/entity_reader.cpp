@@ -159,6 +159,33 @@ SphereDesc readSphere(const JsonValue& value, const MaterialLibrary& library,
   return sphere;
 }
 
+namespace {
+
+// An object's "gltf_variant" and "gltf_node", which pick a glTF file's materials and nodes; `name`
+// is its file as written.
+void readGltfSelection(JsonObject& fields, const std::string& name, ObjectDesc& object) {
+  if (std::optional<JsonValue> variant = fields.get("gltf_variant")) {
+    object.gltfVariant = variant->string();
+    if (object.gltfVariant.empty()) variant->failExpected("the name of one of the file's variants");
+    if (!object.shape.empty())
+      variant->fail("a glTF file's variant, and the object is a " + object.shape);
+    if (!isGltfPath(object.file))
+      variant->fail("a glTF file's variant, and \"" + name + "\" is not a glTF file");
+    if (object.material)
+      variant->fail("not used: the object's material replaces the file's, whatever the variant");
+  }
+  if (std::optional<JsonValue> node = fields.get("gltf_node")) {
+    object.gltfNode = node->string();
+    if (object.gltfNode.empty()) node->failExpected("the name of one of the file's nodes");
+    if (!object.shape.empty())
+      node->fail("a glTF file's node, and the object is a " + object.shape);
+    if (!isGltfPath(object.file))
+      node->fail("a glTF file's node, and \"" + name + "\" is not a glTF file");
+  }
+}
+
+}  // namespace
+
 ObjectDesc readObject(const JsonValue& value, const MaterialLibrary& library,
                       const std::string& baseDir, TextureLoader& textures) {
   JsonObject fields(
@@ -202,24 +229,7 @@ ObjectDesc readObject(const JsonValue& value, const MaterialLibrary& library,
     object.material = read->material;
     object.mixParts = std::move(read->parts);
   }
-  if (std::optional<JsonValue> variant = fields.get("gltf_variant")) {
-    object.gltfVariant = variant->string();
-    if (object.gltfVariant.empty()) variant->failExpected("the name of one of the file's variants");
-    if (!object.shape.empty())
-      variant->fail("a glTF file's variant, and the object is a " + object.shape);
-    if (!isGltfPath(object.file))
-      variant->fail("a glTF file's variant, and \"" + name + "\" is not a glTF file");
-    if (object.material)
-      variant->fail("not used: the object's material replaces the file's, whatever the variant");
-  }
-  if (std::optional<JsonValue> node = fields.get("gltf_node")) {
-    object.gltfNode = node->string();
-    if (object.gltfNode.empty()) node->failExpected("the name of one of the file's nodes");
-    if (!object.shape.empty())
-      node->fail("a glTF file's node, and the object is a " + object.shape);
-    if (!isGltfPath(object.file))
-      node->fail("a glTF file's node, and \"" + name + "\" is not a glTF file");
-  }
+  readGltfSelection(fields, name, object);
   fields.finish();
   return object;
 }
