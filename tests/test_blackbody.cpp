@@ -72,27 +72,23 @@ TEST(Blackbody, LightsAndEmittersTakeATemperature) {
 }
 
 std::string sceneError(const std::string& members) {
-  try {
-    parseSceneText(R"({"camera": {"width": 4, "height": 4}, )" + members + "}", "s.json", ".");
-  } catch (const SceneError& e) {
-    return e.what();
-  }
-  return "(no error)";
+  return test::loadError(R"({"camera": {"width": 4, "height": 4}, )" + members + "}", ".");
 }
 
 TEST(Blackbody, RefusesWhatIsNotATemperature) {
   EXPECT_EQ(sceneError(R"("lights": [{"type": "point", "position": [0, 1, 0], "intensity": 1,
                                       "color": {"temperature": 500}}])"),
-            "s.json: lights[0].color.temperature: expected a temperature in kelvin from 1000 to "
+            "test.json: lights[0].color.temperature: expected a temperature in kelvin from 1000 to "
             "40000, got 500");
   EXPECT_EQ(sceneError(R"("lights": [{"type": "point", "position": [0, 1, 0], "intensity": 1,
                                       "color": {"temperature": 3000, "tint": 1}}])")
-                .substr(0, 38),
-            "s.json: lights[0].color.tint: unknown ");
-  EXPECT_EQ(sceneError(R"("lights": [{"type": "point", "position": [0, 1, 0], "intensity": 1,
+                .substr(0, 41),
+            "test.json: lights[0].color.tint: unknown ");
+  EXPECT_EQ(
+      sceneError(R"("lights": [{"type": "point", "position": [0, 1, 0], "intensity": 1,
                                       "color": {"texture": "a.png"}}])"),
-            "s.json: lights[0].color: a texture, which only \"rectangle\" lights take; expected a "
-            "colour or {\"temperature\": kelvin}");
+      "test.json: lights[0].color: a texture, which only \"rectangle\" lights take; expected a "
+      "colour or {\"temperature\": kelvin}");
 }
 
 }  // namespace

@@ -70,29 +70,25 @@ TEST(CheckerboardTexture, ReadsForScalarFieldsAndBumpMaps) {
 }
 
 std::string materialError(const std::string& material) {
-  try {
-    parseSceneText(R"({"camera": {"width": 4, "height": 4}, "materials": {"m": )" + material + "}}",
-                   "s.json", ".");
-  } catch (const SceneError& e) {
-    return e.what();
-  }
-  return "(no error)";
+  return test::loadError(
+      R"({"camera": {"width": 4, "height": 4}, "materials": {"m": )" + material + "}}", ".");
 }
 
 TEST(CheckerboardTexture, RefusesWhatIsNotTwoColours) {
   EXPECT_EQ(materialError(R"({"type": "diffuse", "color": {"checkerboard": [0.2, 0.8, 0.5]}})"),
-            "s.json: materials.m.color.checkerboard: expected an array of two colours, "
+            "test.json: materials.m.color.checkerboard: expected an array of two colours, "
             "[colour0, colour1], got an array [0.2,0.8,0.5]");
   EXPECT_EQ(materialError(R"({"type": "diffuse", "color": {"checkerboard": [0.2, -1]}})"),
-            "s.json: materials.m.color.checkerboard[1]: expected a non-negative number, got -1");
-  EXPECT_EQ(materialError(
-                R"({"type": "diffuse", "color": {"checkerboard": [0, 1], "texture": "a.png"}})"),
-            "s.json: materials.m.color: expected either \"texture\" or \"checkerboard\", got both");
+            "test.json: materials.m.color.checkerboard[1]: expected a non-negative number, got -1");
+  EXPECT_EQ(
+      materialError(
+          R"({"type": "diffuse", "color": {"checkerboard": [0, 1], "texture": "a.png"}})"),
+      "test.json: materials.m.color: expected either \"texture\" or \"checkerboard\", got both");
   EXPECT_EQ(materialError(R"({"type": "diffuse", "color": {"scale": [2, 2]}})"),
-            "s.json: materials.m.color: missing required key \"texture\" (an image file) or "
+            "test.json: materials.m.color: missing required key \"texture\" (an image file) or "
             "\"checkerboard\" ([colour, colour])");
   EXPECT_EQ(materialError(R"({"type": "glass", "color": {"checkerboard": [0, 1]}})"),
-            "s.json: materials.m.color: a texture on a field that takes none (expected a number "
+            "test.json: materials.m.color: a texture on a field that takes none (expected a number "
             "or an array of 3 numbers)");
 }
 

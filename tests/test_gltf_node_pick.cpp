@@ -9,6 +9,7 @@
 #include <string>
 
 #include "gltf_material_test_util.h"
+#include "render_test_util.h"
 #include "scene/read/scene_loader.h"
 #include "scene/scene_error.h"
 #include "temp_dir.h"
@@ -96,30 +97,26 @@ std::string errorOf(const std::string& objects, const test::GltfFile& file) {
   TempDir dir;
   dir.write("room.gltf", file.gltf());
   dir.write("box.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
-  try {
-    parseSceneText(sceneOf(objects), "s.json", dir.path());
-  } catch (const SceneError& e) {
-    return e.what();
-  }
-  return "(no error)";
+  return test::loadError(sceneOf(objects), dir.path());
 }
 
 TEST(GltfNodePick, WhatNamesNoOneNodeIsRefusedWithItsPath) {
   EXPECT_EQ(errorOf(R"({"file": "room.gltf", "gltf_node": "tabel"})", room()),
-            "s.json: objects[0].gltf_node: room.gltf: the file has no node \"tabel\" (did you "
+            "test.json: objects[0].gltf_node: room.gltf: the file has no node \"tabel\" (did you "
             "mean \"table\"?); its nodes: \"room\", \"table\", \"lamp\", \"chair\"");
   test::GltfFile twice = room();
   twice.doc["nodes"][3]["name"] = "table";
-  EXPECT_EQ(errorOf(R"({"file": "room.gltf", "gltf_node": "table"})", twice),
-            "s.json: objects[0].gltf_node: room.gltf: the file names 2 nodes \"table\" (nodes[1] "
-            "and nodes[3]); expected a name that one node has");
+  EXPECT_EQ(
+      errorOf(R"({"file": "room.gltf", "gltf_node": "table"})", twice),
+      "test.json: objects[0].gltf_node: room.gltf: the file names 2 nodes \"table\" (nodes[1] "
+      "and nodes[3]); expected a name that one node has");
   EXPECT_EQ(errorOf(R"({"file": "box.obj", "gltf_node": "table"})", room()),
-            "s.json: objects[0].gltf_node: a glTF file's node, and \"box.obj\" is not a glTF "
+            "test.json: objects[0].gltf_node: a glTF file's node, and \"box.obj\" is not a glTF "
             "file");
   EXPECT_EQ(errorOf(R"({"shape": "cube", "gltf_node": "table"})", room()),
-            "s.json: objects[0].gltf_node: a glTF file's node, and the object is a cube");
+            "test.json: objects[0].gltf_node: a glTF file's node, and the object is a cube");
   EXPECT_EQ(errorOf(R"({"file": "room.gltf", "gltf_node": ""})", room()),
-            "s.json: objects[0].gltf_node: expected the name of one of the file's nodes, got a "
+            "test.json: objects[0].gltf_node: expected the name of one of the file's nodes, got a "
             "string \"\"");
 }
 

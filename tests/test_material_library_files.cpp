@@ -55,13 +55,8 @@ TEST(MaterialLibraryFiles, ReadAsTheScenesOwnWithTexturesBesideThem) {
 }
 
 std::string errorOf(const std::string& materials, const TempDir& dir) {
-  try {
-    parseSceneText(R"({"camera": {"width": 4, "height": 4}, "materials": )" + materials + "}",
-                   "s.json", dir.path());
-  } catch (const SceneError& e) {
-    return e.what();
-  }
-  return "(no error)";
+  return test::loadError(R"({"camera": {"width": 4, "height": 4}, "materials": )" + materials + "}",
+                         dir.path());
 }
 
 TEST(MaterialLibraryFiles, ErrorsNameTheLibraryFile) {
@@ -70,11 +65,11 @@ TEST(MaterialLibraryFiles, ErrorsNameTheLibraryFile) {
   writeLibrary(dir);
   const std::string lib = dir.file("lib/common.json");
   EXPECT_EQ(errorOf(R"(["lib/none.json"])", dir),
-            "s.json: materials[0]: cannot open the material library lib/none.json (No such file "
+            "test.json: materials[0]: cannot open the material library lib/none.json (No such file "
             "or directory)");
   EXPECT_EQ(errorOf(R"(["lib/common.json", {"wood": {"type": "mirror"}}])", dir),
-            "s.json: materials[1].wood: the material \"wood\" is defined twice, first at " + lib +
-                ": wood");
+            "test.json: materials[1].wood: the material \"wood\" is defined twice, first at " +
+                lib + ": wood");
   dir.write("lib/bad.json", R"({"rough": {"type": "conductor", "roughness": 2}})");
   EXPECT_EQ(errorOf(R"("lib/bad.json")", dir).substr(0, dir.file("lib/bad.json").size() + 25),
             dir.file("lib/bad.json") + ": rough.roughness: expect");
@@ -82,7 +77,7 @@ TEST(MaterialLibraryFiles, ErrorsNameTheLibraryFile) {
   EXPECT_EQ(errorOf(R"("lib/broken.json")", dir).substr(0, dir.file("lib/broken.json").size() + 5),
             dir.file("lib/broken.json") + ":1:7:");
   EXPECT_EQ(errorOf("3", dir),
-            "s.json: materials: expected an object (material name -> material), the path of a "
+            "test.json: materials: expected an object (material name -> material), the path of a "
             "JSON file of them, or an array of those, got 3");
 }
 

@@ -99,37 +99,35 @@ TEST(ObjectTransform, AGlowingCubeCoversTheOutlineItsMatrixGives) {
 }
 
 std::string transformError(const std::string& object) {
-  try {
-    loadedObject(object);
-  } catch (const SceneError& e) {
-    return e.what();
-  }
-  return "(no error)";
+  return test::loadError(R"({"camera": {"width": 4, "height": 4}, "objects": [)" + object + "]}",
+                         ".");
 }
 
 TEST(ObjectTransform, RefusesWhatNoPlacementGives) {
   EXPECT_EQ(transformError(R"({"shape": "cube", "transform": [[1, 0.5, 0, 0], [0, 1, 0, 0],
                                                               [0, 0, 1, 0]]})"),
-            "s.json: objects[0].transform: expected a rotation times a scale along the object's "
+            "test.json: objects[0].transform: expected a rotation times a scale along the object's "
             "axes in the upper-left 3x3 block; its columns 1 and 2 are not at right angles (a "
             "shear, which an object cannot take), got an array [[1,0.5,0,0],[0,1,0,0],[0,0,1,0]]");
-  EXPECT_EQ(transformError(R"({"shape": "cube", "transform": [[1, 0, 0, 0], [0, 0, 0, 0],
+  EXPECT_EQ(
+      transformError(R"({"shape": "cube", "transform": [[1, 0, 0, 0], [0, 0, 0, 0],
                                                               [0, 0, 1, 0]]})"),
-            "s.json: objects[0].transform: expected a transform that keeps the object solid (the "
-            "upper-left 3x3 block is singular, flattening it), got an array "
-            "[[1,0,0,0],[0,0,0,0],[0,0,1,0]]");
+      "test.json: objects[0].transform: expected a transform that keeps the object solid (the "
+      "upper-left 3x3 block is singular, flattening it), got an array "
+      "[[1,0,0,0],[0,0,0,0],[0,0,1,0]]");
   EXPECT_EQ(transformError(R"({"shape": "cube", "transform": [[1, 0, 0, 0], [0, 1, 0, 0],
                                                               [0, 0, 1, 0], [0, 0, 1, 1]]})"),
-            "s.json: objects[0].transform[3]: expected [0, 0, 0, 1] (an affine transform), got "
+            "test.json: objects[0].transform[3]: expected [0, 0, 0, 1] (an affine transform), got "
             "an array [0,0,1,1]");
   EXPECT_EQ(transformError(R"({"shape": "cube", "transform": [[1, 0, 0], [0, 1, 0]]})"),
-            "s.json: objects[0].transform: expected an object-to-world matrix: 3 rows of 4 "
+            "test.json: objects[0].transform: expected an object-to-world matrix: 3 rows of 4 "
             "numbers, [R S | t], and optionally [0, 0, 0, 1], got an array [[1,0,0],[0,1,0]]");
-  EXPECT_EQ(transformError(R"({"shape": "cube", "transform": [[1, 0, 0], [0, 1, 0], [0, 0, 1]]})"),
-            "s.json: objects[0].transform[0]: expected a row of 4 numbers, got an array [1,0,0]");
+  EXPECT_EQ(
+      transformError(R"({"shape": "cube", "transform": [[1, 0, 0], [0, 1, 0], [0, 0, 1]]})"),
+      "test.json: objects[0].transform[0]: expected a row of 4 numbers, got an array [1,0,0]");
   EXPECT_EQ(transformError(R"({"shape": "cube", "position": [0, 1, 0],
                                "transform": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0]]})"),
-            "s.json: objects[0]: expected either \"transform\" or \"position\", got both");
+            "test.json: objects[0]: expected either \"transform\" or \"position\", got both");
 }
 
 }  // namespace

@@ -330,31 +330,26 @@ TEST(Shapes, ObjectsOfOneShapeShareItsMesh) {
 }
 
 std::string objectError(const std::string& object) {
-  try {
-    parseSceneText(R"({"camera": {"width": 4, "height": 4}, "objects": [)" + object + "]}",
-                   "s.json", ".");
-  } catch (const SceneError& e) {
-    return e.what();
-  }
-  return "(no error)";
+  return test::loadError(R"({"camera": {"width": 4, "height": 4}, "objects": [)" + object + "]}",
+                         ".");
 }
 
 TEST(Shapes, RefusesWhatIsNotAShape) {
   EXPECT_EQ(objectError(R"({"shape": "cub"})"),
-            "s.json: objects[0].shape: expected one of \"rectangle\", \"disk\", \"cube\", "
+            "test.json: objects[0].shape: expected one of \"rectangle\", \"disk\", \"cube\", "
             "\"cylinder\", got a string \"cub\", did you mean \"cube\"?");
   EXPECT_EQ(objectError(R"({"shape": 3})"),
-            "s.json: objects[0].shape: expected one of \"rectangle\", \"disk\", \"cube\", "
+            "test.json: objects[0].shape: expected one of \"rectangle\", \"disk\", \"cube\", "
             "\"cylinder\", got 3");
   EXPECT_EQ(objectError(R"({"shape": "sphere"})"),
-            "s.json: objects[0].shape: expected \"rectangle\", \"disk\", \"cube\" or "
+            "test.json: objects[0].shape: expected \"rectangle\", \"disk\", \"cube\" or "
             "\"cylinder\"; a sphere goes in \"spheres\", exact, with a \"radius\"");
   EXPECT_EQ(objectError(R"({"shape": "cube", "file": "cube.obj"})"),
-            "s.json: objects[0]: expected either \"file\" or \"shape\", got both");
+            "test.json: objects[0]: expected either \"file\" or \"shape\", got both");
   EXPECT_EQ(objectError(R"({"shape": "cube", "gltf_variant": "red"})"),
-            "s.json: objects[0].gltf_variant: a glTF file's variant, and the object is a cube");
-  EXPECT_EQ(objectError(R"({"shape": "cube", "scale": [1, 0, 1]})").substr(0, 34),
-            "s.json: objects[0].scale[1]: expec");
+            "test.json: objects[0].gltf_variant: a glTF file's variant, and the object is a cube");
+  EXPECT_EQ(objectError(R"({"shape": "cube", "scale": [1, 0, 1]})").substr(0, 37),
+            "test.json: objects[0].scale[1]: expec");
 }
 
 }  // namespace

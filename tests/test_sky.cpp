@@ -193,34 +193,30 @@ TEST(Sky, LightsAFloorWithItsIrradiance) {
 }
 
 std::string environmentError(const std::string& environment) {
-  try {
-    parseSceneText(R"({"camera": {"width": 4, "height": 4}, "environment": )" + environment + "}",
-                   "s.json", ".");
-  } catch (const SceneError& e) {
-    return e.what();
-  }
-  return "(no error)";
+  return test::loadError(
+      R"({"camera": {"width": 4, "height": 4}, "environment": )" + environment + "}", ".");
 }
 
 TEST(Sky, RefusesWhatTheModelCannotBe) {
   EXPECT_EQ(environmentError(R"({"sky": {"sun": [0, -0.1, 1]}})"),
-            "s.json: environment.sky.sun: expected a sun at or above the horizon (y >= 0); the "
+            "test.json: environment.sky.sun: expected a sun at or above the horizon (y >= 0); the "
             "model has no night, got an array [0,-0.1,1]");
   EXPECT_EQ(environmentError(R"({"sky": {"sun": [0, 0, 0]}})"),
-            "s.json: environment.sky.sun: expected a direction towards the sun, not [0, 0, 0], "
+            "test.json: environment.sky.sun: expected a direction towards the sun, not [0, 0, 0], "
             "got an array [0,0,0]");
-  EXPECT_EQ(environmentError(R"({"sky": {"sun": [0, 1, 0], "turbidity": 12}})"),
-            "s.json: environment.sky.turbidity: expected a turbidity from 1.7 to 10 (the model's "
-            "fitted range), got 12");
+  EXPECT_EQ(
+      environmentError(R"({"sky": {"sun": [0, 1, 0], "turbidity": 12}})"),
+      "test.json: environment.sky.turbidity: expected a turbidity from 1.7 to 10 (the model's "
+      "fitted range), got 12");
   EXPECT_EQ(environmentError(R"({"sky": {"turbidity": 3}})"),
-            "s.json: environment.sky: missing required key \"sun\"");
+            "test.json: environment.sky: missing required key \"sun\"");
   EXPECT_EQ(environmentError(R"({"sky": {"sun": [0, 1, 0]}, "map": "sky.exr"})"),
-            "s.json: environment: expected either \"map\" or \"sky\", got both");
+            "test.json: environment: expected either \"map\" or \"sky\", got both");
   EXPECT_EQ(environmentError(R"({"sky": {"sun": [0, 1, 0]}, "rotation": [0, 90, 0]})"),
-            "s.json: environment.rotation: not used by a \"sky\" (its \"sun\" gives the sun's "
+            "test.json: environment.rotation: not used by a \"sky\" (its \"sun\" gives the sun's "
             "direction)");
-  EXPECT_EQ(environmentError(R"({"sky": {"sun": [0, 1, 0], "haze": 3}})").substr(0, 37),
-            "s.json: environment.sky.haze: unknown");
+  EXPECT_EQ(environmentError(R"({"sky": {"sun": [0, 1, 0], "haze": 3}})").substr(0, 40),
+            "test.json: environment.sky.haze: unknown");
 }
 
 }  // namespace

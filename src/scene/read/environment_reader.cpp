@@ -45,6 +45,20 @@ SkyParams readSky(const JsonValue& value) {
   return sky;
 }
 
+// Makes `image` (what `what`, "map" or "sky", gave) the environment's map, unless its brightest
+// texel times the colour and strength is beyond single precision.
+void keepMap(ImageRGB image, const std::string& what, const JsonValue& value,
+             EnvironmentDesc& environment) {
+  const std::string overflow =
+      firstTexelBeyondFloat(image, environment.color * environment.strength);
+  if (!overflow.empty())
+    value.fail("the " + what + "'s " + overflow + ", times color " + formatVec3(environment.color) +
+               " and strength " + formatNumber(environment.strength) +
+               " is beyond single precision; expected a smaller strength or color");
+  environment.mapHash = hashImage(image);
+  environment.image = std::make_shared<const ImageRGB>(std::move(image));
+}
+
 }  // namespace
 
 EnvironmentDesc readEnvironment(const JsonValue& value, const std::string& baseDir) {
@@ -60,22 +74,13 @@ EnvironmentDesc readEnvironment(const JsonValue& value, const std::string& baseD
     if (std::optional<JsonValue> strength = fields.get("strength"))
       environment.strength = strength->nonNegativeNumber();
     fields.finish();
-    ImageRGB image = skyMap(readSky(*sky), kSkyMapWidth, kSkyMapWidth / 2);
-    const std::string overflow =
-        firstTexelBeyondFloat(image, environment.color * environment.strength);
-    if (!overflow.empty())
-      value.fail("the sky's " + overflow + ", times color " + formatVec3(environment.color) +
-                 " and strength " + formatNumber(environment.strength) +
-                 " is beyond single precision; expected a smaller strength or color");
-    environment.mapHash = hashImage(image);
-    environment.image = std::make_shared<const ImageRGB>(std::move(image));
+    keepMap(skyMap(readSky(*sky), kSkyMapWidth, kSkyMapWidth / 2), "sky", value, environment);
     return environment;
   }
   std::optional<JsonValue> map = fields.get("map");
   if (!map) {
     fields.reject("strength",
-                  "not used by a constant environment (only with a \"map\" or "
-                  "\"sky\")");
+                  "not used by a constant environment (only with a \"map\" or \"sky\")");
     fields.reject("rotation", "not used by a constant environment (only with a \"map\")");
     environment.color = fields.require("color").colour();
     fields.finish();
@@ -101,14 +106,7 @@ EnvironmentDesc readEnvironment(const JsonValue& value, const std::string& baseD
   const std::string bad = firstBadTexel(image);
   if (!bad.empty())
     map->fail(written + ": " + bad + "; expected finite, non-negative radiance in every texel");
-  const std::string overflow =
-      firstTexelBeyondFloat(image, environment.color * environment.strength);
-  if (!overflow.empty())
-    value.fail("the map's " + overflow + ", times color " + formatVec3(environment.color) +
-               " and strength " + formatNumber(environment.strength) +
-               " is beyond single precision; expected a smaller strength or color");
-  environment.mapHash = hashImage(image);
-  environment.image = std::make_shared<const ImageRGB>(std::move(image));
+  keepMap(std::move(image), "map", value, environment);
   return environment;
 }
 
