@@ -1,7 +1,9 @@
 // Objects placed by a "transform" matrix: read back as the position, rotation and scale whose
 // product is the matrix (mirroring and at gimbal lock too), Euler angles recovered from any
 // rotation, a glowing cube posed by a matrix covering the outline the matrix gives it, and the
-// refusals (a shear, a singular block, a projective row, a matrix beside a position).
+// refusals (a shear, a singular block, a projective row, a matrix beside a position). Cameras
+// posed by their camera-to-world matrix (Blender's axes) cast the rays of the same pose given by
+// position and rotation.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,6 +12,7 @@
 #include <vector>
 
 #include "core/rotation.h"
+#include "render/camera_ray.h"
 #include "render_test_util.h"
 
 namespace candela {
@@ -128,6 +131,44 @@ TEST(ObjectTransform, RefusesWhatNoPlacementGives) {
   EXPECT_EQ(transformError(R"({"shape": "cube", "position": [0, 1, 0],
                                "transform": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0]]})"),
             "test.json: objects[0]: expected either \"transform\" or \"position\", got both");
+}
+
+// A camera given by its camera-to-world matrix casts, through every pixel, the ray of the camera
+// at that position with that rotation; one at (0, 0, 5) turned 90 degrees about y looks down -x.
+TEST(ObjectTransform, ACameraMatrixPosesTheCameraAsItsRotationAndPositionDo) {
+  const Vec3 degrees(-25, 140, 10), position(1, 2, 3);
+  const Mat3 r = eulerRotation(degrees);
+  const std::string camera =
+      R"({"width": 32, "height": 24, "fov": 50, "transform": )" + rows(r, position, true) + "}";
+  const SceneData byMatrix = test::loadTestScene(R"({"camera": )" + camera + "}");
+  const SceneData byAngles = test::loadTestScene(
+      R"({"camera": {"width": 32, "height": 24, "fov": 50, "position": [1, 2, 3],
+                     "rotation": [-25, 140, 10]}})");
+  double worst = 0;
+  for (float py = 0.5f; py < 24; py += 5.0f)
+    for (float px = 0.5f; px < 32; px += 7.0f) {
+      const Ray a = generateCameraRay(byMatrix.view().camera, px, py, 0.5f, 0.5f);
+      const Ray b = generateCameraRay(byAngles.view().camera, px, py, 0.5f, 0.5f);
+      for (int k = 0; k < 3; ++k)
+        worst = std::max({worst, double(std::fabs(a.origin[k] - b.origin[k])),
+                          double(std::fabs(a.direction[k] - b.direction[k]))});
+    }
+  EXPECT_LT(worst, 2e-6);
+  const SceneData turned = test::loadTestScene(R"({"camera": {"width": 8, "height": 8,
+      "transform": [[0, 0, 1, 0], [0, 1, 0, 0], [-1, 0, 0, 5]]}})");
+  const Ray centre = generateCameraRay(turned.view().camera, 4.0f, 4.0f, 0.0f, 0.0f);
+  EXPECT_NEAR(centre.direction.x, -1.0f, 1e-6f);
+  EXPECT_NEAR(centre.origin.z, 5.0f, 1e-6f);
+  EXPECT_EQ(test::loadError(R"({"camera": {"transform": [[2, 0, 0, 0], [0, 2, 0, 0],
+                                                           [0, 0, 2, 0]]}})",
+                            "."),
+            "test.json: camera.transform: expected a rotation (orthonormal, determinant +1) in the "
+            "upper-left 3x3 block: a camera takes no scale or mirror, got an array "
+            "[[2,0,0,0],[0,2,0,0],[0,0,2,0]]");
+  EXPECT_EQ(test::loadError(R"({"camera": {"look_at": [0, 0, 0], "transform": [[1, 0, 0, 0],
+                                           [0, 1, 0, 0], [0, 0, 1, 5]]}})",
+                            "."),
+            "test.json: camera: expected either \"transform\" or \"look_at\", got both");
 }
 
 }  // namespace

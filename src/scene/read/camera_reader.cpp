@@ -15,6 +15,7 @@
 #include "scene/camera_resolve.h"
 #include "scene/read/gltf_camera.h"
 #include "scene/read/resolve_path.h"
+#include "scene/read/transform_reader.h"
 #include "scene/scene_error.h"
 
 namespace candela {
@@ -128,8 +129,8 @@ void readGltfCamera(JsonObject& fields, const std::string& baseDir, CameraDesc& 
     fields.reject("gltf_animation", "not used without \"gltf\"");
     return;
   }
-  for (const char* key :
-       {"position", "rotation", "look_at", "up", "extrinsics", "fov", "intrinsics", "projection"})
+  for (const char* key : {"position", "rotation", "look_at", "up", "extrinsics", "transform", "fov",
+                          "intrinsics", "projection"})
     fields.exclusive("gltf", key);
   const std::string written = gltf->string();
   if (written.empty()) gltf->failExpected("the path of a glTF file");
@@ -176,13 +177,31 @@ void readGltfCamera(JsonObject& fields, const std::string& baseDir, CameraDesc& 
                std::to_string(camera.height) + " image");
 }
 
+// "transform": the camera-to-world matrix of Blender's, OpenGL's and candela's camera axes
+// (looking down its -z, +y up), [R | t] with R a rotation: read as the position and rotation it
+// gives.
+void readCameraTransform(const JsonValue& value, CameraDesc& camera) {
+  const Placement placement = readTransform(value);
+  for (int k = 0; k < 3; ++k)
+    if (!(std::fabs(placement.scale[k] - 1.0f) <= 1e-3f))
+      value.failExpected(
+          "a rotation (orthonormal, determinant +1) in the upper-left 3x3 block: a camera takes "
+          "no scale or mirror");
+  camera.position = placement.position;
+  camera.rotation = placement.rotation;
+}
+
 void readPose(JsonObject& fields, CameraDesc& camera) {
   for (const char* key : {"position", "rotation", "look_at"}) fields.exclusive("extrinsics", key);
+  for (const char* key : {"position", "rotation", "look_at", "extrinsics"})
+    fields.exclusive("transform", key);
   fields.exclusive("rotation", "look_at");
   if (!fields.has("look_at")) fields.reject("up", "not used without \"look_at\"");
 
   if (std::optional<JsonValue> extrinsics = fields.get("extrinsics"))
     readExtrinsics(*extrinsics, camera);
+  if (std::optional<JsonValue> transform = fields.get("transform"))
+    readCameraTransform(*transform, camera);
   if (std::optional<JsonValue> position = fields.get("position"))
     camera.position = position->vec3();
   if (std::optional<JsonValue> rotation = fields.get("rotation"))
@@ -227,10 +246,26 @@ float readFov(const JsonValue& value, CameraProjection projection) {
 }
 
 CameraDesc readCamera(const JsonValue& value, RenderSettings& render, const std::string& baseDir) {
-  JsonObject fields(
-      value, {"width", "height", "fov", "intrinsics", "position", "rotation", "look_at", "up",
-              "extrinsics", "spp", "rays", "aperture_radius", "focus_distance", "distortion",
-              "projection", "gltf", "gltf_camera", "view_width", "gltf_animation"});
+  JsonObject fields(value, {"width",
+                            "height",
+                            "fov",
+                            "intrinsics",
+                            "position",
+                            "rotation",
+                            "look_at",
+                            "up",
+                            "extrinsics",
+                            "transform",
+                            "spp",
+                            "rays",
+                            "aperture_radius",
+                            "focus_distance",
+                            "distortion",
+                            "projection",
+                            "gltf",
+                            "gltf_camera",
+                            "view_width",
+                            "gltf_animation"});
   CameraDesc camera;
   if (std::optional<JsonValue> width = fields.get("width"))
     camera.width = static_cast<uint32_t>(width->integer(1, kMaxUint32, "a positive integer"));
