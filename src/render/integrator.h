@@ -17,15 +17,16 @@
 #include "core/float_error.h"
 #include "core/sobol_sampler.h"
 #include "geometry/surface.h"
-#include "render/absorption.h"
 #include "render/aov.h"
 #include "render/bsdf.h"
 #include "render/light_path.h"
 #include "render/light_sample.h"
 #include "render/light_selection.h"
 #include "render/material_mix.h"
+#include "render/medium.h"
 #include "render/normal_map.h"
 #include "render/path_branch.h"
+#include "render/phase_function.h"
 #include "render/ray_counters.h"
 #include "render/ray_kind.h"
 #include "render/shadow_query.h"
@@ -153,10 +154,11 @@ struct PathState {
   // The product of eta^2 over the transmissions so far: Russian roulette judges the throughput
   // without the 1 / eta^2 radiance scaling, which says nothing about the path's worth.
   float etaScale = 1.0f;
-  // The absorption coefficient of the medium the ray travels in: the inside of glass with a
-  // transmission_depth, entered and left by the transmissions through its surface; 0 outside
-  // (the camera and the lights are outside every absorbing glass).
-  Vec3 absorption = Vec3(0.0f);
+  // The glass whose inside (its medium: hasMedium) the ray travels in, by material index, entered
+  // and left by the transmissions through its surface; -1 outside (the camera and the lights are
+  // outside every medium).
+  int32_t medium = -1;
+  HeroChannel hero;  // how the path draws its distances through scattering media
   // The one colour channel the path carries since it met dispersive glass (render/dispersion.h),
   // or kAllChannels.
   int32_t channel = kAllChannels;
@@ -195,6 +197,50 @@ CANDELA_HDI Vec3 sunDiscsSeen(const SceneView& scene, const PathState& st, bool 
   return sum;
 }
 
+// Russian roulette after interaction `depth` (from kRouletteDepth on): false where the path ends,
+// else its throughput is divided by its chance to go on.
+CANDELA_HDI_ALWAYS bool survivesRoulette(uint32_t depth, SampleStream& rng, PathState* path) {
+  if (depth < kRouletteDepth) return true;
+  const float survive = minf(0.95f, maxComponent(path->throughput) * path->etaScale);
+  if (rng.next1D() >= survive) return false;
+  path->throughput /= survive;
+  return true;
+}
+
+// Interaction `depth` of a path inside the medium of glass `inside`, where it scatters at point p
+// (render/medium.h): a new direction by the phase function. No light is sampled from here (the
+// glass around blocks every shadow ray), so whatever the scattered ray finds counts fully, as
+// after a mirror. False when the path ends here.
+template <bool kAovs>
+CANDELA_HDI bool scatterInMedium(const SceneView& scene, const Material& inside, const Vec3& p,
+                                 uint32_t depth, PathState* path, SampleStream& rng,
+                                 RayCounters& counters, FirstHit* first) {
+  PathState& st = *path;
+  if constexpr (kAovs) {
+    if (!first->albedoDone) {
+      first->albedoDone = true;
+      first->albedo = singleScatteringAlbedo(inside.absorption, inside.scattering);
+    }
+  }
+  if (depth > st.maxDepth || (depth == st.maxDepth && !scene.emissionReachable)) return false;
+  // "direct": the scattered ray only gathers emission, as after a diffuse surface.
+  if (scene.settings.integrator == IntegratorType::Direct) st.maxDepth = depth;
+  float u1, u2;
+  rng.next2D(&u1, &u2);
+  const Vec3 wi = sampleHenyeyGreenstein(st.ray.direction, inside.scatteringAnisotropy, u1, u2);
+  st.specularBounce = true;
+  st.bsdfPdf = 0.0f;
+  st.bounceArrivalPdf = 0.0f;
+  st.connectable = false;
+  if (!survivesRoulette(depth, rng, &st)) return false;
+  st.ray.origin = p;
+  st.ray.direction = wi;
+  st.ray.tMax = kInfinity;
+  st.ray.alphaKey = rayKeyFor(scene, rng, kBounceRay);
+  ++counters.bounce;
+  return true;
+}
+
 // Interaction path->depth, where path->ray found `hit` (`found` false: it left the scene): adds
 // what it sees there to path->radiance, leaves next-event estimation's shadow rays in *lights
 // (one, or at a first interaction one for each of a few delta lights) and the connection to the
@@ -214,8 +260,23 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
   const uint32_t depth = st.depth++;
   const bool fromCamera = depth == 1;  // a camera ray, which emitters hidden from it do not show
   // Rays are unit length, so the hit's t is the distance travelled through the medium.
-  if (!isBlack(st.absorption))
-    st.throughput *= beerTransmittance(st.absorption, found ? hit.t : kInfinity);
+  if (st.medium >= 0) {
+    const Material& inside = scene.materials[st.medium];
+    const float tMax = found ? hit.t : kInfinity;
+    if (isBlack(inside.scattering)) {
+      st.throughput *= beerTransmittance(inside.absorption, tMax);
+    } else {
+      float uHero, uDistance;
+      rng.next2D(&uHero, &uDistance);
+      if (st.hero.channel < 0) st.hero.pick(st.channel, uHero);
+      const MediumStep step =
+          sampleMediumStep(inside.absorption, inside.scattering, st.hero.channel, tMax, uDistance);
+      st.throughput *= st.hero.take(step);
+      if (step.scattered)
+        return scatterInMedium<kAovs>(scene, inside, st.ray.origin + st.ray.direction * step.t,
+                                      depth, path, rng, counters, first);
+    }
+  }
   if (!found) {
     const int32_t light = st.specularBounce ? -1 : scene.environment.light;
     const float weight =
@@ -247,7 +308,8 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
   // sp.material stays the surface's (the material pass shows a mix as itself), and so does what
   // it emits: a mix's emission is its own, whichever part the path meets.
   const Material& surface = scene.materials[sp.material];
-  const Material& m = scene.materials[materialMet(scene, sp.material, hit, sp, rng)];
+  const uint32_t met = materialMet(scene, sp.material, hit, sp, rng);
+  const Material& m = scene.materials[met];
   if (fromCamera && m.hiddenFromCamera) {  // the camera ray goes on as if it were not there
     st.depth = depth;
     st.ray = spawnRay(sp, st.ray.direction, rayKeyFor(scene, rng, kCameraRay));
@@ -367,7 +429,8 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
     b.depth = st.depth;
     b.maxDepth = st.maxDepth;
     b.etaScale = st.etaScale * reflected.eta * reflected.eta;
-    b.absorption = st.absorption;
+    b.medium = st.medium;
+    b.hero = st.hero;
     b.channel = st.channel;
     b.rng = rng.branch();
     ++counters.bounce;
@@ -379,7 +442,7 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
   // A transmission enters the surface's inside, against its outward normal, or leaves it.
   const float outward = dot(bs.wi, sp.ng);
   if (boundsAnInside(m) && outward * dot(wo, sp.ng) < 0.0f)
-    st.absorption = outward < 0.0f ? m.absorption : Vec3(0.0f);
+    st.medium = outward < 0.0f && hasMedium(m) ? int32_t(met) : -1;
   st.specularBounce = bs.delta;
   st.bsdfPdf = bs.pdf;
   st.bouncePoint = sp.p;
@@ -387,11 +450,7 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
   st.bounceNormal = sp.ng;
   st.bounceArrivalPdf = arrivalPdf;
 
-  if (depth >= kRouletteDepth) {
-    const float survive = minf(0.95f, maxComponent(st.throughput) * st.etaScale);
-    if (rng.next1D() >= survive) return false;
-    st.throughput /= survive;
-  }
+  if (!survivesRoulette(depth, rng, &st)) return false;
   st.ray = spawnRay(sp, bs.wi, rayKeyFor(scene, rng, kBounceRay));
   ++counters.bounce;
   return true;
@@ -407,7 +466,8 @@ CANDELA_HDI bool resumeBranch(PathState* path, SampleStream* rng) {
   path->depth = b.depth;
   path->maxDepth = b.maxDepth;
   path->etaScale = b.etaScale;
-  path->absorption = b.absorption;
+  path->medium = b.medium;
+  path->hero = b.hero;
   path->channel = b.channel;
   path->specularBounce = true;  // a delta lobe: what it finds counts fully
   path->bsdfPdf = 0.0f;

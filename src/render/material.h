@@ -168,6 +168,13 @@ struct Material {
   float coatTransmittance[kPlasticTableSize] = {};
   float sheenAlbedo[kPlasticTableSize] = {};
   float sheenKept[kPlasticTableSize] = {};
+
+  // Glass: the scattering coefficient of its inside, per unit length and colour channel, beside
+  // `absorption`, and the Henyey-Greenstein g of its phase function (render/medium.h,
+  // render/phase_function.h); 0: the inside only absorbs. (At the end, where no other material's
+  // hit reads past them.)
+  Vec3 scattering{0.0f};
+  float scatteringAnisotropy = 0.0f;
 };
 static_assert(offsetof(Material, sheenKept) ==
                   offsetof(Material, sheenAlbedo) + kPlasticTableSize * sizeof(float),
@@ -176,5 +183,11 @@ static_assert(offsetof(Material, sheenKept) ==
 // Whether a surface of material m emits light: an emissive material, or one that reflects and
 // emits as well (its "emission"). What emits is a light (scene/flatten_lights.cpp).
 CANDELA_HDI bool hasEmission(const Material& m) { return !isBlack(m.radiance); }
+
+// Whether glass m has a medium inside (one that absorbs, scatters or both), which a path enters by
+// a transmission through its surface (render/integrator.h).
+CANDELA_HDI bool hasMedium(const Material& m) {
+  return !isBlack(m.absorption) || !isBlack(m.scattering);
+}
 
 }  // namespace candela

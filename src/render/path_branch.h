@@ -14,6 +14,7 @@
 #include "core/sobol_sampler.h"
 #include "core/vec3.h"
 #include "geometry/ray.h"
+#include "render/medium.h"
 
 namespace candela {
 
@@ -33,7 +34,8 @@ struct PathBranch {
   uint32_t depth;  // of its next interaction
   uint32_t maxDepth;
   float etaScale;
-  Vec3 absorption;  // of the medium it starts in (PathState::absorption)
+  int32_t medium;    // the medium it starts in (PathState::medium)
+  HeroChannel hero;  // PathState::hero
   int32_t channel;  // the colour channel it carries (PathState::channel)
   SampleStream rng;
 };

@@ -45,7 +45,7 @@ const std::vector<std::string> kFields = {
     "bump_map", "alpha", "emission", "emission_strength", "emission_two_sided",
     "transmission_depth", "abbe", "visible", "anisotropy", "anisotropy_rotation", "materials",
     "weight", "coat", "coat_roughness", "coat_ior", "coat_normal_map", "sheen", "sheen_roughness",
-    "transmittance"};
+    "transmittance", "scattering", "scattering_anisotropy"};
 const std::vector<std::vector<std::string>> kFieldsOf = {
     {"color", "normal_map", "bump_map", "alpha", "emission", "emission_strength", "emission_two_sided",
      "coat", "coat_roughness", "coat_ior", "coat_normal_map", "sheen",
@@ -54,7 +54,8 @@ const std::vector<std::vector<std::string>> kFieldsOf = {
      "coat", "coat_roughness", "coat_ior", "coat_normal_map", "sheen",
      "sheen_roughness"},  // mirror
     {"color", "ior", "roughness", "anisotropy", "anisotropy_rotation", "normal_map", "bump_map",
-     "alpha", "emission", "emission_strength", "transmission_depth", "abbe"},  // glass
+     "alpha", "emission", "emission_strength", "transmission_depth", "abbe", "scattering",
+     "scattering_anisotropy"},  // glass
     {"radiance", "strength", "two_sided", "visible"},                          // emissive
     {"color", "roughness", "anisotropy", "anisotropy_rotation", "metal", "normal_map", "bump_map",
      "alpha", "emission", "emission_strength", "emission_two_sided", "coat", "coat_roughness",
@@ -79,6 +80,8 @@ std::string notUsedBy(size_t type, const std::string& field) {
   if (field == "transmittance")
     return why + " (a \"diffuse\" one lets light through diffusely" +
            (type == kGlass ? std::string("; a glass's \"color\" tints what passes it)") : ")");
+  if (field.rfind("scattering", 0) == 0)
+    return why + " (a \"glass\" holds a scattering medium inside)";
   return why;
 }
 
@@ -246,6 +249,23 @@ void readAbsorption(const JsonValue& depth, const std::optional<JsonValue>& colo
   material->color = Vec3(1.0f);
 }
 
+// Glass's "scattering": the scattering coefficient of its inside, per unit length (a grey number or
+// [r, g, b]), and the "scattering_anisotropy" g of its Henyey-Greenstein phase function.
+void readScattering(JsonObject& fields, Material* material) {
+  const std::optional<JsonValue> scattering = fields.get("scattering");
+  if (!scattering) {
+    fields.reject("scattering_anisotropy", "not used without a \"scattering\" beside it");
+    return;
+  }
+  material->scattering = scattering->colour();
+  if (std::optional<JsonValue> g = fields.get("scattering_anisotropy")) {
+    const float value = g->number();
+    if (!(value > -1.0f && value < 1.0f))
+      g->failExpected("a number between -1 and 1, exclusive (0 scatters alike in every direction)");
+    material->scatteringAnisotropy = value;
+  }
+}
+
 // Glass's "abbe": its Abbe number, which with its ior (at the d line) gives its index in each
 // colour channel (scene/cauchy_index.h).
 void readDispersion(const JsonValue& abbe, Material* material) {
@@ -395,6 +415,7 @@ MaterialRead readFields(JsonObject& fields, size_t type, TextureLoader& textures
       if (std::optional<JsonValue> depth = fields.get("transmission_depth"))
         readAbsorption(*depth, color, &material);
       if (std::optional<JsonValue> abbe = fields.get("abbe")) readDispersion(*abbe, &material);
+      if (type == kGlass) readScattering(fields, &material);
       break;
     case kThinGlass:
       // What the sheet transmits passes the alpha test (geometry/alpha_mask.h); a face that
