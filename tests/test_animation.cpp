@@ -323,6 +323,44 @@ TEST(SceneAtFrame, RoughnessTrackRendersAsTheStillOfThatRoughness) {
       for (int c = 0; c < 3; ++c) EXPECT_EQ(a.image.at(x, y)[c], b.image.at(x, y)[c]);
 }
 
+// A scattering track on glass (fog that thickens, milk that thins) renders frame 2 to the bit as
+// the still scene of that scattering and the frame's seed; glass without a static "scattering"
+// may be given one by a track.
+TEST(SceneAtFrame, ScatteringTrackRendersAsTheStillOfThatScattering) {
+  const auto fog = [](const std::string& scattering, const std::string& animation) {
+    return R"({"camera": {"width": 12, "height": 8, "position": [0, 0, 5], "spp": 4},
+      "render": {"max_depth": 16},
+      "environment": {"color": 0.5},
+      "spheres": [{"id": "fog", "position": [0, 0, 0], "radius": 1,
+                   "material": {"type": "glass", "ior": 1.2)" +
+           scattering + R"(}}])" + animation + "}";
+  };
+  const SceneDesc animated = parse(fog("", R"(, "animation": {"frames": 5, "tracks": [
+      {"target": "fog", "property": "scattering", "keys": [[0, [0, 1, 2]], [4, [2, 3, 6]]]}]})"));
+  SceneDesc still = parse(fog(R"(, "scattering": [1, 2, 4])", ""));
+  still.render.seed += 2;
+  const SceneDesc frame = sceneAtFrame(animated, 2);
+  const Vec3 scattering = frame.spheres[0].material.scattering;
+  EXPECT_EQ(scattering.x, 1.0f);
+  EXPECT_EQ(scattering.y, 2.0f);
+  EXPECT_EQ(scattering.z, 4.0f);
+  const SceneData frameData = flattenScene(frame), stillData = flattenScene(still);
+  const RenderResult a = renderCpu(frameData.view(), RenderOptions{});
+  const RenderResult b = renderCpu(stillData.view(), RenderOptions{});
+  for (uint32_t y = 0; y < 8; ++y)
+    for (uint32_t x = 0; x < 12; ++x)
+      for (int c = 0; c < 3; ++c) EXPECT_EQ(a.image.at(x, y)[c], b.image.at(x, y)[c]);
+  // Frame 0's clear glass is not the still's scattering glass.
+  const SceneData clearData = flattenScene(sceneAtFrame(animated, 0));
+  EXPECT_NE(renderCpu(clearData.view(), RenderOptions{}).image.at(6, 4)[2], b.image.at(6, 4)[2]);
+}
+
+TEST(AnimationErrors, ScatteringOfWhatIsNotGlass) {
+  EXPECT_EQ(trackError(R"({"target": "ball", "property": "scattering", "keys": [[0, 2]]})"),
+            "s.json: animation.tracks[0].property: \"scattering\" is not used by a material "
+            "other than \"glass\"");
+}
+
 TEST(AnimationErrors, RoughnessOfWhatHasNone) {
   EXPECT_EQ(trackError(R"({"target": "ball", "property": "roughness", "keys": [[0, 0.5]]})"),
             "s.json: animation.tracks[0].property: \"roughness\" is not used by a \"diffuse\" "

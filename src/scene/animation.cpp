@@ -38,6 +38,9 @@ void applyToSphere(SphereDesc& sphere, AnimProperty property, const Vec3& v) {
     case AnimProperty::Anisotropy:
       sphere.material.anisotropy = v.x;
       break;
+    case AnimProperty::Scattering:
+      sphere.material.scattering = v;
+      break;
     default: break;
   }
 }
@@ -56,6 +59,9 @@ void applyToObject(ObjectDesc& object, AnimProperty property, const Vec3& v) {
       break;
     case AnimProperty::Anisotropy:
       if (object.material) object.material->anisotropy = v.x;
+      break;
+    case AnimProperty::Scattering:
+      if (object.material) object.material->scattering = v;
       break;
     default: break;
   }

@@ -197,7 +197,7 @@ enum class AnimTarget { Camera, Sphere, Object, Light };
 enum class AnimProperty {
   // clang-format off
   Position, Rotation, LookAt, Up, Fov, ApertureRadius, FocusDistance,
-  Radius, Color, Roughness, Anisotropy, Scale, Intensity, Direction, Angle, Size
+  Radius, Color, Roughness, Anisotropy, Scattering, Scale, Intensity, Direction, Angle, Size
   // clang-format on
 };
 

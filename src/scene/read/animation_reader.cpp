@@ -27,15 +27,15 @@ const std::vector<PropertyName>& propertiesOf(AnimTarget target) {
       {"look_at", AnimProperty::LookAt},    {"up", AnimProperty::Up},
       {"fov", AnimProperty::Fov},           {"aperture_radius", AnimProperty::ApertureRadius},
       {"focus_distance", AnimProperty::FocusDistance}};
-  static const std::vector<PropertyName> sphere = {{"position", AnimProperty::Position},
-                                                   {"radius", AnimProperty::Radius},
-                                                   {"color", AnimProperty::Color},
-                                                   {"roughness", AnimProperty::Roughness},
-                                                   {"anisotropy", AnimProperty::Anisotropy}};
+  static const std::vector<PropertyName> sphere = {
+      {"position", AnimProperty::Position},     {"radius", AnimProperty::Radius},
+      {"color", AnimProperty::Color},           {"roughness", AnimProperty::Roughness},
+      {"anisotropy", AnimProperty::Anisotropy}, {"scattering", AnimProperty::Scattering}};
   static const std::vector<PropertyName> object = {
-      {"position", AnimProperty::Position},   {"rotation", AnimProperty::Rotation},
-      {"scale", AnimProperty::Scale},         {"color", AnimProperty::Color},
-      {"roughness", AnimProperty::Roughness}, {"anisotropy", AnimProperty::Anisotropy}};
+      {"position", AnimProperty::Position},    {"rotation", AnimProperty::Rotation},
+      {"scale", AnimProperty::Scale},          {"color", AnimProperty::Color},
+      {"roughness", AnimProperty::Roughness},  {"anisotropy", AnimProperty::Anisotropy},
+      {"scattering", AnimProperty::Scattering}};
   static const std::vector<PropertyName> light = {{"position", AnimProperty::Position},
                                                   {"intensity", AnimProperty::Intensity},
                                                   {"color", AnimProperty::Color},
@@ -133,7 +133,9 @@ Vec3 readValue(const JsonValue& value, AnimProperty property, const CameraDesc& 
     case AnimProperty::Intensity: return Vec3(value.nonNegativeNumber());
     case AnimProperty::FocusDistance:
     case AnimProperty::Radius: return Vec3(value.positiveNumber());
-    case AnimProperty::Color: return value.colour();
+    case AnimProperty::Color:
+    case AnimProperty::Scattering:
+      return value.colour();
     case AnimProperty::Roughness:
     case AnimProperty::Anisotropy:
       return Vec3(value.unitNumber(property == AnimProperty::Roughness
@@ -258,7 +260,8 @@ void checkUsed(const JsonValue& property, const AnimTrack& track, const SceneDes
         break;
     }
   } else if (track.property == AnimProperty::Color || track.property == AnimProperty::Roughness ||
-             track.property == AnimProperty::Anisotropy) {
+             track.property == AnimProperty::Anisotropy ||
+             track.property == AnimProperty::Scattering) {
     const Material* m = track.target == AnimTarget::Sphere
                                 ? &scene.spheres[track.index].material
                                 : (scene.objects[track.index].material
@@ -273,6 +276,10 @@ void checkUsed(const JsonValue& property, const AnimTrack& track, const SceneDes
       return;
     }
     if (!m) unused("an object whose materials are its file's (give it a \"material\")");
+    if (track.property == AnimProperty::Scattering) {
+      if (m->type != MaterialType::Glass) unused("a material other than \"glass\"");
+      return;
+    }
     if (m->type == MaterialType::Diffuse || m->type == MaterialType::Translucent)
       unused("a \"diffuse\" material");
     if (track.property == AnimProperty::Anisotropy) {
