@@ -82,6 +82,9 @@ struct ObjectDesc {
   // The glTF file's node whose meshes (with its children's) the object holds ("": the file's
   // scene), in the node's own frame.
   std::string gltfNode;
+  // The OBJ file's group or object (the faces after a `g` or `o` of this name) the object holds
+  // ("": all its faces).
+  std::string objGroup;
   std::optional<Material> material;  // overrides the mesh's own materials when present
   std::vector<Material> mixParts;    // what `material` mixes, where it is a mix
   // Read once per file: the objects that name one file share it (and so do frames).

@@ -10,6 +10,7 @@
 #include "scene/read/gltf_lights.h"
 #include "scene/read/gltf_loader.h"
 #include "scene/read/ies_profile.h"
+#include "scene/read/ply_loader.h"
 #include "scene/read/resolve_path.h"
 #include "scene/read/texel_check.h"
 #include "scene/read/texture_reader.h"
@@ -161,8 +162,8 @@ SphereDesc readSphere(const JsonValue& value, const MaterialLibrary& library,
 
 namespace {
 
-// An object's "gltf_variant" and "gltf_node", which pick a glTF file's materials and nodes; `name`
-// is its file as written.
+// An object's "gltf_variant" and "gltf_node", which pick a glTF file's materials and nodes, and
+// its "obj_group", which picks an OBJ file's group; `name` is its file as written.
 void readGltfSelection(JsonObject& fields, const std::string& name, ObjectDesc& object) {
   if (std::optional<JsonValue> variant = fields.get("gltf_variant")) {
     object.gltfVariant = variant->string();
@@ -182,6 +183,15 @@ void readGltfSelection(JsonObject& fields, const std::string& name, ObjectDesc& 
     if (!isGltfPath(object.file))
       node->fail("a glTF file's node, and \"" + name + "\" is not a glTF file");
   }
+  if (std::optional<JsonValue> group = fields.get("obj_group")) {
+    object.objGroup = group->string();
+    if (object.objGroup.empty())
+      group->failExpected("the name of one of the file's groups (\"g\") or objects (\"o\")");
+    if (!object.shape.empty())
+      group->fail("an OBJ file's group, and the object is a " + object.shape);
+    if (isGltfPath(object.file) || isPlyPath(object.file))
+      group->fail("an OBJ file's group, and \"" + name + "\" is not an OBJ file");
+  }
 }
 
 }  // namespace
@@ -190,7 +200,7 @@ ObjectDesc readObject(const JsonValue& value, const MaterialLibrary& library,
                       const std::string& baseDir, TextureLoader& textures) {
   JsonObject fields(
       value, {"id", "file", "shape", "position", "rotation", "scale", "transform", "material",
-              "color", "ior", "smooth", "vertex_colors", "gltf_variant", "gltf_node"});
+              "color", "ior", "smooth", "vertex_colors", "gltf_variant", "gltf_node", "obj_group"});
   ObjectDesc object;
   object.where = value.path();
   object.id = readId(fields);

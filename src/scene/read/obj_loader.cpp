@@ -14,6 +14,7 @@
 #include "core/constants.h"
 #include "core/texture.h"
 #include "render/material_prepare.h"
+#include "scene/read/did_you_mean.h"
 #include "scene/read/mtl_library.h"
 #include "scene/read/normal_map_guess.h"
 #include "scene/read/obj_scanner.h"
@@ -410,7 +411,7 @@ std::vector<Material> mtlMaterials(const std::vector<tinyobj::material_t>& mater
 }
 
 MeshDesc buildMesh(const tinyobj::ObjReader& reader, const MtlLibrary& library,
-                   const std::string& label, TextureLoader& textures) {
+                   const std::string& label, TextureLoader& textures, const std::string& group) {
   const tinyobj::attrib_t& attrib = reader.GetAttrib();
   MeshDesc mesh;
   mesh.positions.reserve(attrib.vertices.size() / 3);
@@ -439,6 +440,7 @@ MeshDesc buildMesh(const tinyobj::ObjReader& reader, const MtlLibrary& library,
   const auto fallback = static_cast<uint32_t>(mesh.materials.size());
   bool fallbackUsed = false;
   for (const tinyobj::shape_t& shape : reader.GetShapes()) {
+    if (!group.empty() && shape.name != group) continue;
     const std::vector<tinyobj::index_t>& indices = shape.mesh.indices;
     for (size_t face = 0; face < shape.mesh.num_face_vertices.size(); ++face) {
       if (shape.mesh.num_face_vertices[face] != 3)
@@ -473,6 +475,71 @@ MeshDesc buildMesh(const tinyobj::ObjReader& reader, const MtlLibrary& library,
     if (!mesh.colors.empty()) mesh.materials.back().color = Vec3(1.0f);
   }
   return mesh;
+}
+
+// Keeps of the mesh's positions (with their colours), normals and uvs those its triangles use, in
+// their order, and renumbers the triangles' corners: a group's mesh holds its own vertices alone,
+// which its bounds and vertex count then describe.
+void keepUsedVertices(MeshDesc* mesh) {
+  constexpr uint32_t kUnused = 0xffffffffu;
+  std::vector<uint32_t> position(mesh->positions.size(), kUnused);
+  std::vector<uint32_t> normal(mesh->normals.size(), kUnused), uv(mesh->uvs.size(), kUnused);
+  MeshDesc kept;
+  const bool coloured = !mesh->colors.empty();
+  for (MeshTriangle& triangle : mesh->triangles)
+    for (int corner = 0; corner < 3; ++corner) {
+      uint32_t& v = position[triangle.v[corner]];
+      if (v == kUnused) {
+        v = uint32_t(kept.positions.size());
+        kept.positions.push_back(mesh->positions[triangle.v[corner]]);
+        if (coloured) kept.colors.push_back(mesh->colors[triangle.v[corner]]);
+      }
+      triangle.v[corner] = v;
+      if (triangle.n[corner] >= 0) {
+        uint32_t& n = normal[size_t(triangle.n[corner])];
+        if (n == kUnused) {
+          n = uint32_t(kept.normals.size());
+          kept.normals.push_back(mesh->normals[size_t(triangle.n[corner])]);
+        }
+        triangle.n[corner] = int32_t(n);
+      }
+      if (triangle.t[corner] >= 0) {
+        uint32_t& t = uv[size_t(triangle.t[corner])];
+        if (t == kUnused) {
+          t = uint32_t(kept.uvs.size());
+          kept.uvs.push_back(mesh->uvs[size_t(triangle.t[corner])]);
+        }
+        triangle.t[corner] = int32_t(t);
+      }
+    }
+  mesh->positions = std::move(kept.positions);
+  mesh->colors = std::move(kept.colors);
+  mesh->normals = std::move(kept.normals);
+  mesh->uvs = std::move(kept.uvs);
+}
+
+// The name `group` among the file's groups with faces (tinyobjloader's shapes, named by their `g`
+// or `o`), else ObjGroupError naming them and the likely one meant.
+void checkGroup(const tinyobj::ObjReader& reader, const std::string& group) {
+  std::vector<std::string> names;
+  for (const tinyobj::shape_t& shape : reader.GetShapes()) {
+    if (shape.name == group) return;
+    if (!shape.name.empty() && std::find(names.begin(), names.end(), shape.name) == names.end())
+      names.push_back(shape.name);
+  }
+  if (names.empty())
+    throw ObjGroupError(
+        "no face of the file lies in a named group or object (\"g\" or \"o\"), so "
+        "none in \"" +
+        group + "\"");
+  const std::string close = closestMatch(group, names);
+  std::string list;
+  for (size_t i = 0; i < names.size() && i < 20; ++i)
+    list += (i == 0 ? "\"" : ", \"") + names[i] + "\"";
+  if (names.size() > 20) list += " and " + std::to_string(names.size() - 20) + " more";
+  throw ObjGroupError("the file has no faces in a group or object \"" + group + "\"" +
+                      (close.empty() ? "" : " (did you mean \"" + close + "\"?)") +
+                      "; those with faces: " + list);
 }
 
 // Of the libraries that cannot be read, and of the materials that no library defines, this many
@@ -527,7 +594,8 @@ std::vector<std::string> bumpWarnings(const MtlLibrary& library) {
 
 }  // namespace
 
-MeshDesc loadObjFile(const std::string& path, const std::string& label, TextureLoader& textures) {
+MeshDesc loadObjFile(const std::string& path, const std::string& label, TextureLoader& textures,
+                     const std::string& group) {
   std::string text, reason;
   if (!readTextFile(path, &text, &reason))
     throw SceneError("cannot open \"" + label + "\" (" + reason + ")");
@@ -541,8 +609,10 @@ MeshDesc loadObjFile(const std::string& path, const std::string& label, TextureL
   if (!reader.ParseFromString(scan.text, library.text, config))
     throw SceneError(label + ": " + firstLine(reader.Error()));
 
-  MeshDesc mesh = buildMesh(reader, library, label, textures);
+  if (!group.empty()) checkGroup(reader, group);
+  MeshDesc mesh = buildMesh(reader, library, label, textures, group);
   if (mesh.triangles.empty()) throw SceneError(label + ": expected at least one face, got none");
+  if (!group.empty()) keepUsedVertices(&mesh);
   mesh.materialFiles = library.files;
   std::vector<std::string> warnings = materialWarnings(scan, library, reader.GetMaterials(), label);
   for (std::string& warning : bumpWarnings(library)) warnings.push_back(std::move(warning));

@@ -23,9 +23,20 @@
 
 #include "scene/read/texture_reader.h"
 #include "scene/scene_desc.h"
+#include "scene/scene_error.h"
 
 namespace candela {
 
-MeshDesc loadObjFile(const std::string& path, const std::string& label, TextureLoader& textures);
+// A group an object asks for by name (its "obj_group") that the file does not have: the scene
+// reports it at the object's "obj_group".
+class ObjGroupError : public SceneError {
+ public:
+  using SceneError::SceneError;
+};
+
+// The OBJ file's faces, or with `group` those after the `g` or `o` statements of that name, their
+// vertices alone (throws ObjGroupError naming the file's groups where none has that name).
+MeshDesc loadObjFile(const std::string& path, const std::string& label, TextureLoader& textures,
+                     const std::string& group = "");
 
 }  // namespace candela

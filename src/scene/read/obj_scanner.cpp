@@ -18,7 +18,8 @@ namespace candela {
 namespace {
 
 // Statements of the OBJ specification (and tinyobjloader's extensions "vw" and "t") that carry
-// nothing a path tracer uses: free-form geometry, display and grouping attributes.
+// nothing a path tracer draws: free-form geometry, display and grouping attributes (of which "g"
+// and "o" pass on to tinyobjloader, whose shapes they name: an object's "obj_group").
 constexpr std::string_view kIgnoredStatements[] = {
     "vp",         "cstype",    "deg",   "bmat",  "step",     "curv",     "curv2", "surf",
     "parm",       "trim",      "hole",  "scrv",  "sp",       "end",      "con",   "g",
@@ -148,10 +149,11 @@ void Scanner::scanLine(std::string_view line, size_t number, ObjScan& out) {
     } else if (std::find(std::begin(kIgnoredStatements), std::end(kIgnoredStatements), keyword) ==
                std::end(kIgnoredStatements)) {
       fail("unknown statement " + shownText(keyword));
-    } else if (keyword != "usemtl") {
+    } else if (keyword != "g" && keyword != "o") {
       out.text += '\n';  // unused, and unchecked: tinyobjloader must not parse it either
       return;
     }
+    // A group's or object's name passes, which names tinyobjloader's shapes (an "obj_group").
     out.text.append(line.data(), line.size());
     out.text += '\n';
     return;

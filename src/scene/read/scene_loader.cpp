@@ -87,14 +87,14 @@ bool sameFile(const std::string& a, const std::string& b) {
 // at the object's "file" key, with the file as the scene wrote it.
 void loadMeshes(SceneDesc& scene, const std::vector<std::string>& writtenNames,
                 TextureLoader& textures) {
-  // (resolved path, glTF variant, glTF node, shape) -> its mesh
+  // (resolved path, glTF variant, glTF node or OBJ group, shape) -> its mesh
   std::map<std::tuple<std::string, std::string, std::string, std::string>,
            std::shared_ptr<const MeshDesc>>
       loaded;
   for (size_t i = 0; i < scene.objects.size(); ++i) {
     ObjectDesc& object = scene.objects[i];
-    const auto key =
-        std::make_tuple(object.file, object.gltfVariant, object.gltfNode, object.shape);
+    const auto key = std::make_tuple(object.file, object.gltfVariant,
+                                     object.gltfNode + object.objGroup, object.shape);
     const auto previous = loaded.find(key);
     if (previous != loaded.end()) {
       object.mesh = previous->second;
@@ -106,11 +106,14 @@ void loadMeshes(SceneDesc& scene, const std::vector<std::string>& writtenNames,
                       : isGltfPath(object.file)
                           ? loadGltfFile(object.file, writtenNames[i], textures, object.gltfVariant,
                                          object.gltfNode)
-                          : loadObjFile(object.file, writtenNames[i], textures);
+                          : loadObjFile(object.file, writtenNames[i], textures, object.objGroup);
       orderTrianglesSpatially(&mesh);
       object.mesh = std::make_shared<const MeshDesc>(std::move(mesh));
     } catch (const GltfVariantError& error) {
       failAt(scene.file, memberPath(object.where, "gltf_variant"),
+             writtenNames[i] + ": " + error.what());
+    } catch (const ObjGroupError& error) {
+      failAt(scene.file, memberPath(object.where, "obj_group"),
              writtenNames[i] + ": " + error.what());
     } catch (const GltfNodeError& error) {
       failAt(scene.file, memberPath(object.where, "gltf_node"),
