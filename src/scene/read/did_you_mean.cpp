@@ -51,4 +51,12 @@ std::string closestMatch(const std::string& word, const std::vector<std::string>
   return best;
 }
 
+std::string quotedNames(const std::vector<std::string>& names, size_t shown) {
+  std::string list;
+  for (size_t i = 0; i < names.size() && i < shown; ++i)
+    list += (i == 0 ? "\"" : ", \"") + names[i] + "\"";
+  if (names.size() > shown) list += " and " + std::to_string(names.size() - shown) + " more";
+  return list;
+}
+
 }  // namespace candela

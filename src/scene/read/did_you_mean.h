@@ -19,4 +19,8 @@ size_t editDistance(const std::string& a, const std::string& b);
 // Ties go to the earlier candidate.
 std::string closestMatch(const std::string& word, const std::vector<std::string>& candidates);
 
+// The names a file offers, for an error that says none is the one asked for: the first `shown`
+// quoted and separated by commas, and how many more there are.
+std::string quotedNames(const std::vector<std::string>& names, size_t shown = 20);
+
 }  // namespace candela

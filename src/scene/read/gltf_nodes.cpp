@@ -143,13 +143,9 @@ int gltfNodeIndex(const tinygltf::Model& model, const std::string& name) {
   if (names.empty())
     throw GltfNodeError("the file's nodes have no names, so none is \"" + name + "\"");
   const std::string close = closestMatch(name, names);
-  std::string list;
-  for (size_t i = 0; i < names.size() && i < 20; ++i)
-    list += (i == 0 ? "\"" : ", \"") + names[i] + "\"";
-  if (names.size() > 20) list += " and " + std::to_string(names.size() - 20) + " more";
   throw GltfNodeError("the file has no node \"" + name + "\"" +
                       (close.empty() ? "" : " (did you mean \"" + close + "\"?)") +
-                      "; its nodes: " + list);
+                      "; its nodes: " + quotedNames(names));
 }
 
 }  // namespace candela

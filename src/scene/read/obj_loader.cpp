@@ -533,13 +533,9 @@ void checkGroup(const tinyobj::ObjReader& reader, const std::string& group) {
         "none in \"" +
         group + "\"");
   const std::string close = closestMatch(group, names);
-  std::string list;
-  for (size_t i = 0; i < names.size() && i < 20; ++i)
-    list += (i == 0 ? "\"" : ", \"") + names[i] + "\"";
-  if (names.size() > 20) list += " and " + std::to_string(names.size() - 20) + " more";
   throw ObjGroupError("the file has no faces in a group or object \"" + group + "\"" +
                       (close.empty() ? "" : " (did you mean \"" + close + "\"?)") +
-                      "; those with faces: " + list);
+                      "; those with faces: " + quotedNames(names));
 }
 
 // Of the libraries that cannot be read, and of the materials that no library defines, this many
