@@ -124,13 +124,19 @@ def main():
     with tempfile.TemporaryDirectory() as work:
         c = np.array([candela(args.candela, work, args.spp, s) for s in seeds])
     m = np.array([mitsuba(args.spp, s) for s in seeds])
-    print(f'{args.spp} spp a seed, {len(seeds)} seeds each: candela mean {c.mean():.5f}, '
+    report(c, m, args.spp)
+
+
+def report(c, m, spp):
+    """Prints how candela's renders c and Mitsuba's m (seeds x height x width x 3) differ."""
+    seeds = len(c)
+    print(f'{spp} spp a seed, {seeds} seeds each: candela mean {c.mean():.5f}, '
           f'Mitsuba mean {m.mean():.5f}, difference {(c.mean() - m.mean()) / m.mean():+.3%}')
     # Each 8 x 8 block's difference of means over its standard error: the variance of a block's
     # mean is its pixels' mean variance (each pixel's from the seeds' spread) over its 64 pixels.
     cm, mm = block_means(c.mean(axis=0)), block_means(m.mean(axis=0))
     error = np.sqrt((block_means(c.var(axis=0, ddof=1)) + block_means(m.var(axis=0, ddof=1))) /
-                    (64 * len(seeds)))
+                    (64 * seeds))
     z = (cm - mm) / np.maximum(error, 1e-9)
     worst = np.unravel_index(np.abs(z).argmax(), z.shape)
     relative = np.abs(cm - mm) / np.maximum(mm, 1e-3)
