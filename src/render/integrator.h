@@ -19,6 +19,7 @@
 #include "geometry/surface.h"
 #include "render/aov.h"
 #include "render/bsdf.h"
+#include "render/index_matched.h"
 #include "render/light_path.h"
 #include "render/light_sample.h"
 #include "render/light_selection.h"
@@ -31,6 +32,7 @@
 #include "render/ray_kind.h"
 #include "render/shadow_query.h"
 #include "render/shadow_ray_origin.h"
+#include "render/shadow_transmittance.h"
 #include "render/surface_color.h"
 #include "render/surface_tangent.h"
 
@@ -207,14 +209,47 @@ CANDELA_HDI_ALWAYS bool survivesRoulette(uint32_t depth, SampleStream& rng, Path
   return true;
 }
 
+// Direct light at point p in the medium of index-matched glass `inside`, where a path travelling
+// along `travel` scatters by its phase function, as the shadow query *shadow, which crosses the
+// glass (render/shadow_transmittance.h); its numbers drawn as estimateDirect draws them.
+CANDELA_HDI void estimateDirectInMedium(const SceneView& scene, const Material& inside,
+                                        const Vec3& p, const Vec3& travel, const Vec3& throughput,
+                                        SampleStream& rng, ShadowQuery* shadow) {
+  float u1 = 0.0f, u2 = 0.0f, selectPmf = 1.0f;
+  uint32_t index = 0;
+  if (scene.loneDeltaLight) {
+    drawLightNumbers(rng, scene.lights[0], &u1, &u2);
+  } else {
+    rng.next2D(&u1, &u2);
+    const int picked = selectLightForSample(scene, p, Vec3(0.0f), rng, &u1, &selectPmf);
+    if (picked < 0) return;
+    index = uint32_t(picked);
+  }
+  const uint32_t key = rayKeyFor(scene, rng, kShadowRay);
+  const Light& light = scene.lights[index];
+  LightSample ls;
+  if (!sampleLight(scene, light, p, u1, u2, &ls)) return;
+  const float phase = henyeyGreenstein(dot(travel, ls.wi), inside.scatteringAnisotropy);
+  const float lightPdf = selectPmf * ls.pdf;
+  const float weight = ls.isDelta ? 1.0f : powerHeuristic(lightPdf, phase);
+  shadow->ray.origin = p;
+  shadow->ray.direction = ls.wi;
+  shadow->ray.tMax = ls.distance < kInfinity ? ls.distance * (1.0f - kShadowEpsilon) : kInfinity;
+  shadow->ray.alphaKey = key;
+  shadow->skipPrim = lightPrimitive(scene, light);
+  shadow->contribution = throughput * ls.radiance * (phase * weight / lightPdf);
+  shadow->active = true;
+}
+
 // Interaction `depth` of a path inside the medium of glass `inside`, where it scatters at point p
-// (render/medium.h): a new direction by the phase function. No light is sampled from here (the
-// glass around blocks every shadow ray), so whatever the scattered ray finds counts fully, as
-// after a mirror. False when the path ends here.
+// (render/medium.h): a new direction by the phase function. Inside index-matched glass light is
+// sampled from here too (estimateDirectInMedium) and weighed against what the scattered ray finds;
+// inside any other the glass around blocks every shadow ray, so that whatever the scattered ray
+// finds counts fully, as after a mirror. False when the path ends here.
 template <bool kAovs>
 CANDELA_HDI bool scatterInMedium(const SceneView& scene, const Material& inside, const Vec3& p,
                                  uint32_t depth, PathState* path, SampleStream& rng,
-                                 RayCounters& counters, FirstHit* first) {
+                                 RayCounters& counters, FirstHit* first, LightQueries* lights) {
   PathState& st = *path;
   if constexpr (kAovs) {
     if (!first->albedoDone) {
@@ -223,13 +258,26 @@ CANDELA_HDI bool scatterInMedium(const SceneView& scene, const Material& inside,
     }
   }
   if (depth > st.maxDepth || (depth == st.maxDepth && !scene.emissionReachable)) return false;
+  const bool sampled = isIndexMatched(inside);
+  if (sampled) {
+    ShadowQuery& shadow = lights->query.emplace(0);
+    lights->count = 1;
+    estimateDirectInMedium(scene, inside, p, st.ray.direction, st.throughput, rng, &shadow);
+    shadow.medium = st.medium;
+    counters.shadow += shadow.active;
+    if constexpr (kAovs) shadow.direct = depth == 1;
+  }
   // "direct": the scattered ray only gathers emission, as after a diffuse surface.
   if (scene.settings.integrator == IntegratorType::Direct) st.maxDepth = depth;
   float u1, u2;
   rng.next2D(&u1, &u2);
-  const Vec3 wi = sampleHenyeyGreenstein(st.ray.direction, inside.scatteringAnisotropy, u1, u2);
-  st.specularBounce = true;
-  st.bsdfPdf = 0.0f;
+  const float g = inside.scatteringAnisotropy;
+  const Vec3 wi = sampleHenyeyGreenstein(st.ray.direction, g, u1, u2);
+  st.specularBounce = !sampled;
+  st.bsdfPdf = sampled ? henyeyGreenstein(dot(st.ray.direction, wi), g) : 0.0f;
+  st.bouncePoint = p;
+  st.bounceHemisphere = Vec3(0.0f);  // light comes from every side
+  st.bounceNormal = Vec3(0.0f);
   st.bounceArrivalPdf = 0.0f;
   st.connectable = false;
   if (!survivesRoulette(depth, rng, &st)) return false;
@@ -274,7 +322,7 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
       st.throughput *= st.hero.take(step);
       if (step.scattered)
         return scatterInMedium<kAovs>(scene, inside, st.ray.origin + st.ray.direction * step.t,
-                                      depth, path, rng, counters, first);
+                                      depth, path, rng, counters, first, lights);
     }
   }
   if (!found) {
@@ -316,6 +364,17 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
     ++counters.camera;
     return true;
   }
+  // Glass of index 1 bounds its medium and nothing more: the path crosses it as it is, tinted by
+  // its colour, with the last scattering's weights for what it finds (as the shadow rays that
+  // cross it too, render/shadow_transmittance.h), and the crossing is not an interaction.
+  if (isIndexMatched(m)) {
+    st.throughput *= surfaceColor(scene, m, hit, sp);
+    st.medium = dot(st.ray.direction, sp.ng) < 0.0f && hasMedium(m) ? int32_t(met) : -1;
+    st.depth = depth;
+    st.ray =
+        spawnRay(sp, st.ray.direction, rayKeyFor(scene, rng, fromCamera ? kCameraRay : kBounceRay));
+    return true;
+  }
   const Vec3 wo = -st.ray.direction;
   const Vec3 coatNormal = hasMaps(m) ? applyNormalMaps(scene, m, hit, &sp, wo) : Vec3(0.0f);
   [[maybe_unused]] bool albedoHere = false;  // the albedo pass takes this surface's colour
@@ -343,8 +402,10 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
     if (light >= 0) {
       const float selectPmf =
           lightSelectPmf(scene, uint32_t(light), st.bouncePoint, st.bounceHemisphere);
+      // The ray may have left from an index-matched crossing after the bounce point.
+      const float distance = scene.indexMatchedMedia ? length(sp.p - st.bouncePoint) : hit.t;
       const float neePdf = selectPmf * emitterPdf(scene, scene.lights[light], st.bouncePoint,
-                                                  st.ray.direction, hit.t, sp.ng);
+                                                  st.ray.direction, distance, sp.ng);
       const float subpathPdf = lightSubpathSolidAnglePdf(scene, uint32_t(light), st.bounceNormal,
                                                          st.ray.direction, st.bounceArrivalPdf);
       weight = misWeight3(st.bsdfPdf, neePdf, subpathPdf,
@@ -403,6 +464,14 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
       estimateDirect(scene, bsdf, hemisphere, sp, st.throughput, arrivalPdf, rng, &shadow);
       counters.shadow += shadow.active;
       if constexpr (kAovs) shadow.direct = depth == 1;
+    }
+    // Each shadow ray starts in the medium on its side of the surface: glass's inside where it
+    // leaves into it, else outside every medium; past any other surface, the path's.
+    for (uint32_t k = 0; k < lights->count; ++k) {
+      ShadowQuery& q = lights->query[k];
+      q.medium = !boundsAnInside(m)                                   ? st.medium
+                 : dot(q.ray.direction, sp.ng) < 0.0f && hasMedium(m) ? int32_t(met)
+                                                                      : -1;
     }
     // "direct": the scattered ray below only gathers emission; nothing scatters after it.
     if (scene.settings.integrator == IntegratorType::Direct) st.maxDepth = depth;
@@ -477,16 +546,18 @@ CANDELA_HDI bool resumeBranch(PathState* path, SampleStream* rng) {
   return true;
 }
 
-// Adds an active shadow query's contribution to the path unless its ray is blocked (with kAovs,
-// next-event estimation's at the first hit also to first->direct).
+// Adds what of an active shadow query's contribution reaches its point, `kept` of it
+// (shadowTransmittance), to the path (with kAovs, next-event estimation's at the first hit also to
+// first->direct).
 template <bool kAovs>
-CANDELA_HDI_ALWAYS void resolveShadow(const ShadowQuery& shadow, bool blocked, PathState* path,
+CANDELA_HDI_ALWAYS void resolveShadow(const ShadowQuery& shadow, const Vec3& kept, PathState* path,
                                       FirstHit* first) {
   CANDELA_DCHECK(shadow.active);
-  if (blocked) return;
-  path->radiance += shadow.contribution;
+  if (isBlack(kept)) return;
+  const Vec3 contribution = shadow.contribution * kept;
+  path->radiance += contribution;
   if constexpr (kAovs)
-    if (shadow.direct) first->direct += shadow.contribution;
+    if (shadow.direct) first->direct += contribution;
 }
 
 // Runs a path from its next interaction to its end, and then its branch, if one waits, one ray at
@@ -504,10 +575,10 @@ CANDELA_HDI Vec3 finishPath(const SceneView& scene, const Tracer& tracer, PathSt
     for (uint32_t k = 0; k < lights.count; ++k) {
       const ShadowQuery& shadow = lights.query[k];
       if (shadow.active)
-        resolveShadow<kAovs>(shadow, tracer.occluded(shadow.ray, shadow.skipPrim), path, first);
+        resolveShadow<kAovs>(shadow, shadowTransmittance(scene, tracer, shadow), path, first);
     }
     if (connect.active)
-      resolveShadow<kAovs>(connect, tracer.occluded(connect.ray, connect.skipPrim), path, first);
+      resolveShadow<kAovs>(connect, shadowTransmittance(scene, tracer, connect), path, first);
     if (!goesOn && !resumeBranch(path, &rng)) return path->radiance;
   }
 }

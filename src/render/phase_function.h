@@ -18,6 +18,7 @@ constexpr float kIsotropicPhaseG = 1e-3f;
 // The density of scattering into a direction at cosine `cosTheta` to the direction of travel,
 // per unit solid angle (it integrates to 1 over the sphere).
 CANDELA_HDI float henyeyGreenstein(float cosTheta, float g) {
+  if (fabsf(g) < kIsotropicPhaseG) return kInv4Pi;  // as sampleHenyeyGreenstein draws it
   const float denominator = 1.0f + g * g - 2.0f * g * cosTheta;
   return kInv4Pi * (1.0f - g * g) / (denominator * sqrtf(maxf(denominator, 0.0f)));
 }

@@ -94,7 +94,7 @@ CANDELA_HDI void renderPacket(const SceneView& scene, const Tracer& tracer, uint
                 resumeBranch(&paths[i], &rng[i]);
     mostQueries = lights[i].count > mostQueries ? lights[i].count : mostQueries;
     if (connect.active)
-      resolveShadow<kAovs>(connect, tracer.occluded(connect.ray, connect.skipPrim), &paths[i],
+      resolveShadow<kAovs>(connect, shadowTransmittance(scene, tracer, connect), &paths[i],
                            &first[kAovs ? i : 0]);
   }
   // The paths' k-th shadow rays together (towards light k, where each point light is sampled).
@@ -108,6 +108,14 @@ CANDELA_HDI void renderPacket(const SceneView& scene, const Tracer& tracer, uint
       shadowLane[shadowCount++] = i;
     }
     if (shadowCount == 0) continue;
+    if (scene.indexMatchedMedia) {  // each ray hit by hit through the media it crosses
+      for (uint32_t j = 0; j < shadowCount; ++j) {
+        const ShadowQuery& q = lights[shadowLane[j]].query[k];
+        resolveShadow<kAovs>(q, shadowTransmittance(scene, tracer, q), &paths[shadowLane[j]],
+                             &first[kAovs ? shadowLane[j] : 0]);
+      }
+      continue;
+    }
     bool blocked[kWidth];
     if (scene.lightCount <= kShadowPacketsUpToLights) {
       tracer.occludedPacket(shadowRays, skipPrims, shadowCount, blocked);
@@ -116,8 +124,8 @@ CANDELA_HDI void renderPacket(const SceneView& scene, const Tracer& tracer, uint
         blocked[j] = tracer.occluded(shadowRays[j], skipPrims[j]);
     }
     for (uint32_t j = 0; j < shadowCount; ++j)
-      resolveShadow<kAovs>(lights[shadowLane[j]].query[k], blocked[j], &paths[shadowLane[j]],
-                           &first[kAovs ? shadowLane[j] : 0]);
+      resolveShadow<kAovs>(lights[shadowLane[j]].query[k], blocked[j] ? Vec3(0.0f) : Vec3(1.0f),
+                           &paths[shadowLane[j]], &first[kAovs ? shadowLane[j] : 0]);
   }
 
   for (uint32_t i = 0; i < n; ++i) {

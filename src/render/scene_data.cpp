@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "core/check.h"
+#include "render/index_matched.h"
 #include "render/path_branch.h"
 
 namespace candela {
@@ -32,7 +33,12 @@ SceneView SceneData::view() const {
   for (const Material& m : materials) {
     v.emissionReachable |= hasEmission(m);
     v.reflectorsEmit |= hasEmission(m) && m.type != MaterialType::Emissive;
+    v.indexMatchedMedia |= isIndexMatched(m);
   }
+  // A light subpath would stop at an index-matched boundary that the camera's paths and shadow
+  // rays cross, so the connections' weights would miss paths that cross one.
+  if (v.indexMatchedMedia) v.lightPathLights = 0;
+  v.areaLightPaths = v.lightPathLights > 0 && areaLightsStartPaths;
   v.camera = camera;
   v.settings = settings;
   v.flow = flow;

@@ -81,6 +81,9 @@ struct SceneView : GeometryView {
   // Whether some of infiniteLights is a directional light with a disc, which the rays that leave
   // the scene may see (render/light.h, hasSunDisc).
   bool sunDiscs = false;
+  // Whether a material is glass of index 1 (render/index_matched.h), whose media shadow rays cross
+  // (render/shadow_transmittance.h); such scenes start no light subpaths.
+  bool indexMatchedMedia = false;
   Environment environment;
   // Whether a scattered ray can find any light: an emissive material (sphere lights included), a
   // nonzero environment or a sun's disc. Without, light arrives only by shadow rays to point

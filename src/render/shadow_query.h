@@ -21,6 +21,9 @@ struct ShadowQuery {
   Vec3 contribution;  // the path's throughput times the light's weighted share
   bool active = false;
   bool direct = false;  // next-event estimation at the first hit, set only for the passes
+  // The medium the ray starts in (PathState::medium), read where it may cross index-matched glass
+  // (render/shadow_transmittance.h).
+  int32_t medium = -1;
 };
 
 // The most shadow queries next-event estimation leaves at one interaction: one for each point
