@@ -295,6 +295,34 @@ TEST(GlassMedia, ShadowRaysCrossIndexMatchedGlassThroughItsMedium) {
     }
 }
 
+// A camera ray crosses clear glass of index 1 without an interaction: at max_depth 1 the wall
+// behind a box of it is lit by the point light as without the box (were the crossings
+// interactions, the path would end at the box), pixel by pixel within rounding.
+TEST(GlassMedia, CrossingIndexMatchedGlassIsNoInteraction) {
+  test::TempDir dir;
+  dir.write("quad.obj", "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nf 1 2 3\nf 1 3 4\n");
+  const auto render = [&](const std::string& box) {
+    const SceneData data = flattenScene(parseSceneText(
+        R"({"camera": {"width": 9, "height": 9, "fov": 20, "position": [0, 0, 6], "spp": 2},
+            "render": {"antialiasing": false, "max_depth": 1},
+            "lights": [{"position": [3, 0, 4], "intensity": 100}],
+            "objects": [{"file": "quad.obj", "scale": 100, "color": 0.5})" +
+            box + "]}",
+        "box.json", dir.path()));
+    return renderCpu(data.view(), RenderOptions{}).image;
+  };
+  const ImageRGB open = render("");
+  const ImageRGB boxed = render(
+      R"(, {"shape": "cube", "position": [0, 0, 3], "scale": 2, "material": {"type": "glass", "ior": 1}})");
+  for (uint32_t y = 0; y < 9; ++y)
+    for (uint32_t x = 0; x < 9; ++x)
+      for (int c = 0; c < 3; ++c) {
+        ASSERT_GT(open.at(x, y)[c], 0.0f);
+        EXPECT_NEAR(boxed.at(x, y)[c] / open.at(x, y)[c], 1.0, 1e-4)
+            << "pixel (" << x << ", " << y << "), channel " << c;
+      }
+}
+
 TEST(GlassMedia, ScatteringIsReadOnGlassAndRefusedWhereItMeansNothing) {
   const SceneData data = test::loadTestScene(
       R"({"camera": {}, "spheres": [{"position": [0, 0, 0], "radius": 1, "material": {"type":
