@@ -102,6 +102,24 @@ CANDELA_HDI void drawLightNumbers(SampleStream& rng, const Light& light, float* 
   rng.next2DIfUsed(!isDeltaLight(light), u1, u2);
 }
 
+// The light next-event estimation samples at p (hemisphere: as for selectLight), with its two
+// numbers in (*u1, *u2) and its chance in *selectPmf: the scene's lone delta light, else one
+// picked by its importance (render/light_selection.h); -1 for none. One dimension for the lone
+// delta light, or two for a picked one (the pick with its light's sample, and one passed over
+// unless the pick's place in its share is too coarse), whatever the geometry, so the stream's
+// layout never depends on it (estimateDirectFromEach passes over the same two).
+CANDELA_HDI int pickLightSample(const SceneView& scene, const Vec3& p, const Vec3& hemisphere,
+                                SampleStream& rng, float* u1, float* u2, float* selectPmf) {
+  *u1 = *u2 = 0.0f;
+  *selectPmf = 1.0f;
+  if (scene.loneDeltaLight) {
+    drawLightNumbers(rng, scene.lights[0], u1, u2);
+    return 0;
+  }
+  rng.next2D(u1, u2);
+  return selectLightForSample(scene, p, hemisphere, rng, u1, selectPmf);
+}
+
 // Direct light at a point with a smooth BSDF lobe, whose reflecting hemisphere is around
 // `hemisphere` (reflectingHemisphere: zero where the surface also transmits), as a shadow query
 // (sampleOneLight, which `arrivalPdf` is passed to): from the scene's lone delta light
@@ -110,20 +128,8 @@ CANDELA_HDI void drawLightNumbers(SampleStream& rng, const Light& light, float* 
 CANDELA_HDI void estimateDirect(const SceneView& scene, const Bsdf& bsdf, const Vec3& hemisphere,
                                 const SurfacePoint& sp, const Vec3& throughput, float arrivalPdf,
                                 SampleStream& rng, ShadowQuery* shadow) {
-  // One dimension for the lone delta light, or two for a picked one (the pick with its light's
-  // sample, and one passed over unless the pick's place in its share is too coarse), whatever
-  // the geometry, so the stream's layout never depends on it (estimateDirectFromEach passes over
-  // the same two).
-  float u1 = 0.0f, u2 = 0.0f;
-  if (scene.loneDeltaLight) {
-    drawLightNumbers(rng, scene.lights[0], &u1, &u2);
-    sampleOneLight(scene, 0, 1.0f, bsdf, sp, u1, u2, throughput, arrivalPdf,
-                   rayKeyFor(scene, rng, kShadowRay), shadow);
-    return;
-  }
-  rng.next2D(&u1, &u2);
-  float selectPmf;
-  const int index = selectLightForSample(scene, sp.p, hemisphere, rng, &u1, &selectPmf);
+  float u1, u2, selectPmf;  // as pickLightSample draws them
+  const int index = pickLightSample(scene, sp.p, hemisphere, rng, &u1, &u2, &selectPmf);
   if (index < 0) return;
   sampleOneLight(scene, uint32_t(index), selectPmf, bsdf, sp, u1, u2, throughput, arrivalPdf,
                  rayKeyFor(scene, rng, kShadowRay), shadow);
@@ -215,16 +221,9 @@ CANDELA_HDI_ALWAYS bool survivesRoulette(uint32_t depth, SampleStream& rng, Path
 CANDELA_HDI void estimateDirectInMedium(const SceneView& scene, const Material& inside,
                                         const Vec3& p, const Vec3& travel, const Vec3& throughput,
                                         SampleStream& rng, ShadowQuery* shadow) {
-  float u1 = 0.0f, u2 = 0.0f, selectPmf = 1.0f;
-  uint32_t index = 0;
-  if (scene.loneDeltaLight) {
-    drawLightNumbers(rng, scene.lights[0], &u1, &u2);
-  } else {
-    rng.next2D(&u1, &u2);
-    const int picked = selectLightForSample(scene, p, Vec3(0.0f), rng, &u1, &selectPmf);
-    if (picked < 0) return;
-    index = uint32_t(picked);
-  }
+  float u1, u2, selectPmf;
+  const int index = pickLightSample(scene, p, Vec3(0.0f), rng, &u1, &u2, &selectPmf);
+  if (index < 0) return;
   const uint32_t key = rayKeyFor(scene, rng, kShadowRay);
   const Light& light = scene.lights[index];
   LightSample ls;
@@ -369,7 +368,7 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
   // cross it too, render/shadow_transmittance.h), and the crossing is not an interaction.
   if (isIndexMatched(m)) {
     st.throughput *= surfaceColor(scene, m, hit, sp);
-    st.medium = dot(st.ray.direction, sp.ng) < 0.0f && hasMedium(m) ? int32_t(met) : -1;
+    st.medium = mediumAlong(m, met, st.ray.direction, sp.ng);
     st.depth = depth;
     st.ray =
         spawnRay(sp, st.ray.direction, rayKeyFor(scene, rng, fromCamera ? kCameraRay : kBounceRay));
@@ -465,14 +464,13 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
       counters.shadow += shadow.active;
       if constexpr (kAovs) shadow.direct = depth == 1;
     }
-    // Each shadow ray starts in the medium on its side of the surface: glass's inside where it
-    // leaves into it, else outside every medium; past any other surface, the path's.
-    for (uint32_t k = 0; k < lights->count; ++k) {
-      ShadowQuery& q = lights->query[k];
-      q.medium = !boundsAnInside(m)                                   ? st.medium
-                 : dot(q.ray.direction, sp.ng) < 0.0f && hasMedium(m) ? int32_t(met)
-                                                                      : -1;
-    }
+    // Each shadow ray starts in the medium on its side of the surface (glass's, or past any other
+    // surface the path's); only shadow rays that cross index-matched glass read it.
+    if (scene.indexMatchedMedia)
+      for (uint32_t k = 0; k < lights->count; ++k) {
+        ShadowQuery& q = lights->query[k];
+        q.medium = boundsAnInside(m) ? mediumAlong(m, met, q.ray.direction, sp.ng) : st.medium;
+      }
     // "direct": the scattered ray below only gathers emission; nothing scatters after it.
     if (scene.settings.integrator == IntegratorType::Direct) st.maxDepth = depth;
   }
@@ -511,7 +509,7 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
   // A transmission enters the surface's inside, against its outward normal, or leaves it.
   const float outward = dot(bs.wi, sp.ng);
   if (boundsAnInside(m) && outward * dot(wo, sp.ng) < 0.0f)
-    st.medium = outward < 0.0f && hasMedium(m) ? int32_t(met) : -1;
+    st.medium = mediumAlong(m, met, bs.wi, sp.ng);
   st.specularBounce = bs.delta;
   st.bsdfPdf = bs.pdf;
   st.bouncePoint = sp.p;

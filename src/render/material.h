@@ -190,4 +190,11 @@ CANDELA_HDI bool hasMedium(const Material& m) {
   return !isBlack(m.absorption) || !isBlack(m.scattering);
 }
 
+// The medium (a material index, or -1 for none) that a ray leaving a surface of glass m (material
+// `index`) along w travels in: m's inside where w goes against the outward normal ng and m holds a
+// medium, else the outside, which holds none.
+CANDELA_HDI int32_t mediumAlong(const Material& m, uint32_t index, const Vec3& w, const Vec3& ng) {
+  return dot(w, ng) < 0.0f && hasMedium(m) ? int32_t(index) : -1;
+}
+
 }  // namespace candela

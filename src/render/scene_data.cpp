@@ -23,7 +23,6 @@ SceneView SceneData::view() const {
                               settings.lightPaths != LightPaths::Off
                           ? lightsStartingPaths
                           : 0;
-  v.areaLightPaths = v.lightPathLights > 0 && areaLightsStartPaths;
   v.glassSplitDepth = kGlassSplitDepth;
   v.infiniteLightShare = infiniteLightShare;
   v.sunDiscs = sunDiscs;

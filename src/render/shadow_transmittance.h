@@ -43,7 +43,7 @@ CANDELA_HDI Vec3 shadowTransmittance(const SceneView& scene, const Tracer& trace
     const Material& m = scene.materials[sp.material];
     if (!isIndexMatched(m) || crossing == kMostShadowCrossings) return Vec3(0.0f);
     kept *= surfaceColor(scene, m, hit, sp);
-    medium = dot(ray.direction, sp.ng) < 0.0f && hasMedium(m) ? int32_t(sp.material) : -1;
+    medium = mediumAlong(m, sp.material, ray.direction, sp.ng);
     const Vec3 origin = offsetRayOrigin(sp.p, sp.error, sp.ng, ray.direction);
     ray.tMax -= length(origin - ray.origin);
     ray.origin = origin;

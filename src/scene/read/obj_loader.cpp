@@ -485,6 +485,16 @@ void keepUsedVertices(MeshDesc* mesh) {
   std::vector<uint32_t> position(mesh->positions.size(), kUnused);
   std::vector<uint32_t> normal(mesh->normals.size(), kUnused), uv(mesh->uvs.size(), kUnused);
   MeshDesc kept;
+  // A corner's optional normal or uv (-1: none): the kept one's index, kept at its first use.
+  const auto renumber = [](int32_t* index, std::vector<uint32_t>& map, const auto& from, auto* to) {
+    if (*index < 0) return;
+    uint32_t& slot = map[size_t(*index)];
+    if (slot == kUnused) {
+      slot = uint32_t(to->size());
+      to->push_back(from[size_t(*index)]);
+    }
+    *index = int32_t(slot);
+  };
   const bool coloured = !mesh->colors.empty();
   for (MeshTriangle& triangle : mesh->triangles)
     for (int corner = 0; corner < 3; ++corner) {
@@ -495,22 +505,8 @@ void keepUsedVertices(MeshDesc* mesh) {
         if (coloured) kept.colors.push_back(mesh->colors[triangle.v[corner]]);
       }
       triangle.v[corner] = v;
-      if (triangle.n[corner] >= 0) {
-        uint32_t& n = normal[size_t(triangle.n[corner])];
-        if (n == kUnused) {
-          n = uint32_t(kept.normals.size());
-          kept.normals.push_back(mesh->normals[size_t(triangle.n[corner])]);
-        }
-        triangle.n[corner] = int32_t(n);
-      }
-      if (triangle.t[corner] >= 0) {
-        uint32_t& t = uv[size_t(triangle.t[corner])];
-        if (t == kUnused) {
-          t = uint32_t(kept.uvs.size());
-          kept.uvs.push_back(mesh->uvs[size_t(triangle.t[corner])]);
-        }
-        triangle.t[corner] = int32_t(t);
-      }
+      renumber(&triangle.n[corner], normal, mesh->normals, &kept.normals);
+      renumber(&triangle.t[corner], uv, mesh->uvs, &kept.uvs);
     }
   mesh->positions = std::move(kept.positions);
   mesh->colors = std::move(kept.colors);
