@@ -42,7 +42,8 @@ constexpr uint32_t kSeenEmitterTile = 8;
 
 // The samples per pixel with which the emitters seen in a render of `scene` are sampled again;
 // 0 where that gains nothing: the scene has no emitting surface, every sample of a pixel goes
-// through its centre (no antialiasing, a pinhole), or the render has as many samples already.
+// through its centre (no antialiasing, a pinhole, a still camera), or the render has as many
+// samples already.
 uint32_t seenEmitterSamples(const SceneData& scene);
 
 // The windows around the edges of the emitters that `emission` (an emission pass, 3 channels)

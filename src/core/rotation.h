@@ -57,6 +57,25 @@ inline Vec3 eulerDegrees(const Mat3& r) {
   return Vec3(float(x * degrees), float(y * degrees), float(z * degrees));
 }
 
+// The Euler angles of rotation r nearest `near` (host only): of the two triples that make r,
+// (x, y, z) and (x + 180, 180 - y, z + 180), each component moved by whole turns to within 180
+// degrees of near's, the one that differs from near least. Keys made so from a sequence of poses
+// (a glTF camera's, frame by frame) turn the short way between them, where tracks interpolate.
+inline Vec3 eulerDegreesNear(const Mat3& r, const Vec3& near) {
+  const Vec3 a = eulerDegrees(r);
+  const auto closest = [](float angle, float to) {
+    return angle + 360.0f * std::round((to - angle) / 360.0f);
+  };
+  const auto nearest = [&](const Vec3& e) {
+    return Vec3(closest(e.x, near.x), closest(e.y, near.y), closest(e.z, near.z));
+  };
+  const Vec3 first = nearest(a), second = nearest(Vec3(a.x + 180.0f, 180.0f - a.y, a.z + 180.0f));
+  const auto spread = [&](const Vec3& e) {
+    return std::fabs(e.x - near.x) + std::fabs(e.y - near.y) + std::fabs(e.z - near.z);
+  };
+  return spread(second) < spread(first) ? second : first;
+}
+
 // Inverse of a general 3x3 matrix (host only: used for K and normal transforms).
 // Returns false when the matrix is singular.
 inline bool invert(const Mat3& a, Mat3* out) {

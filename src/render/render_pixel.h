@@ -11,10 +11,10 @@
 namespace candela {
 
 // A sample's camera ray through pixel (x, y), from the first dimensions of its stream `rng`,
-// and in *jx, *jy its place relative to the pixel (within it for the box filter, around its
-// centre for the wider ones: render/pixel_filter.h).
+// in *jx, *jy its place relative to the pixel (within it for the box filter, around its centre for
+// the wider ones: render/pixel_filter.h), and in *eye the camera's centre at the sample's time.
 CANDELA_HDI Ray cameraSample(const SceneView& scene, uint32_t x, uint32_t y, SampleStream& rng,
-                             float* jx, float* jy) {
+                             float* jx, float* jy, Vec3* eye) {
   float lensU = 0.5f, lensV = 0.5f;
   *jx = *jy = 0.5f;
   if (scene.settings.antialiasing) {
@@ -25,25 +25,38 @@ CANDELA_HDI Ray cameraSample(const SceneView& scene, uint32_t x, uint32_t y, Sam
   // A pinhole camera passes over the lens dimension, as a point light does over its own.
   rng.next2DIfUsed(scene.camera.apertureRadius > 0.0f, &lensU, &lensV);
   const uint32_t stride = scene.camera.pixelStride, offset = stride / 2;
-  Ray ray =
-      generateCameraRay(scene.camera, float(scene.camera.windowX + x * stride + offset) + *jx,
-                        float(scene.camera.windowY + y * stride + offset) + *jy, lensU, lensV);
+  const float px = float(scene.camera.windowX + x * stride + offset) + *jx;
+  const float py = float(scene.camera.windowY + y * stride + offset) + *jy;
+  Ray ray;
+  // Only a camera that moves while the shutter is open draws a time, so that a still camera's
+  // samples keep the numbers they had before motion blur existed.
+  if (scene.cameraPoseCount > 1) {
+    const Camera posed =
+        cameraAtShutterTime(scene.camera, scene.cameraPoses, scene.cameraPoseCount, rng.next1D());
+    ray = generateCameraRay(posed, px, py, lensU, lensV);
+    *eye = posed.position;
+  } else {
+    ray = generateCameraRay(scene.camera, px, py, lensU, lensV);
+    *eye = scene.camera.position;
+  }
   ray.alphaKey = rayKeyFor(scene, rng, kCameraRay);
   return ray;
 }
 
-// Adds one sample's radiance L, whose camera ray is `ray` through (jx, jy) in the pixel, to
-// `sum` unless it is not finite; with kAovs its first hit `first` to `aov`.
+// Adds one sample's radiance L, whose camera ray is `ray` through (jx, jy) in the pixel from a
+// camera centred at `eye`, to `sum` unless it is not finite; with kAovs its first hit `first` to
+// `aov`.
 template <bool kAovs>
 CANDELA_HDI void addSample(const SceneView& scene, const Vec3& L, const Ray& ray, float jx,
-                           float jy, const FirstHit& first, Vec3* sum, AovPixel* aov) {
+                           float jy, const Vec3& eye, const FirstHit& first, Vec3* sum,
+                           AovPixel* aov) {
   // A non-finite sample (a degenerate mesh, say) would poison the pixel; it counts as black.
   const bool finite = isFinite(L);
   if (finite) *sum += L;
   if constexpr (kAovs) {
     Vec2 flow;
     const bool hasFlow = scene.flow.enabled && sampleFlow(scene, first, ray.direction, &flow);
-    addAovSample(aov, first, jx, jy, scene.camera.position, hasFlow, flow, finite);
+    addAovSample(aov, first, jx, jy, eye, hasFlow, flow, finite);
   }
 }
 
@@ -69,10 +82,11 @@ CANDELA_HDI void renderPacket(const SceneView& scene, const Tracer& tracer, uint
   PacketSlots<SampleStream, kWidth> rng;
   Ray rays[kWidth];
   float jx[kWidth], jy[kWidth];
+  Vec3 eyes[kWidth];
   if (table) table = table->serve(pixel.value, s, n, scene.settings.spp);
   for (uint32_t i = 0; i < n; ++i) {
     rng.emplace(i, pixel, s + i, scene.settings.spp, table, i);
-    rays[i] = cameraSample(scene, x, y, rng[i], &jx[i], &jy[i]);
+    rays[i] = cameraSample(scene, x, y, rng[i], &jx[i], &jy[i], &eyes[i]);
   }
   Hit hits[kWidth];
   tracer.closestPacket(rays, n, hits);
@@ -132,7 +146,7 @@ CANDELA_HDI void renderPacket(const SceneView& scene, const Tracer& tracer, uint
     FirstHit& f = first[kAovs ? i : 0];
     const Vec3 L = goesOn[i] ? finishPath<kAovs>(scene, tracer, &paths[i], rng[i], counters, &f)
                              : paths[i].radiance;
-    addSample<kAovs>(scene, L, rays[i], jx[i], jy[i], f, sum, aov);
+    addSample<kAovs>(scene, L, rays[i], jx[i], jy[i], eyes[i], f, sum, aov);
   }
 }
 
@@ -176,11 +190,12 @@ CANDELA_HDI Vec3 renderPixelSamples(const SceneView& scene, const Tracer& tracer
       }
       SampleStream rng(pixel, s, scene.settings.spp, lanesTable, s - tableStart);
       float jx, jy;
-      const Ray ray = cameraSample(scene, x, y, rng, &jx, &jy);
+      Vec3 eye;
+      const Ray ray = cameraSample(scene, x, y, rng, &jx, &jy, &eye);
       ++counters.camera;
       FirstHit first;
       const Vec3 L = traceRadiance<kAovs>(scene, tracer, ray, rng, counters, &first);
-      addSample<kAovs>(scene, L, ray, jx, jy, first, &sum, aov);
+      addSample<kAovs>(scene, L, ray, jx, jy, eye, first, &sum, aov);
     }
   }
   return sum;

@@ -11,6 +11,7 @@
 #include "core/vec3.h"
 #include "geometry/geometry_view.h"
 #include "render/camera.h"
+#include "render/camera_motion.h"
 #include "render/environment.h"
 #include "render/light.h"
 #include "render/light_tree.h"
@@ -37,6 +38,8 @@ namespace candela {
 // by roughness level where some sheen's roughness is textured (render/surface_layers.h), else
 // nothing. vertexColors is empty or parallel to
 // positions: the linear colour that tints a mesh vertex's materials (1 for vertices without).
+// cameraPoses is empty, or the camera's poses across the exposure of a motion-blurred frame
+// (render/camera_motion.h), at least two.
 #define CANDELA_SHADING_ARRAYS(X)                                            \
   X(Material, materials, materialCount, Values)                              \
   X(Light, lights, lightCount, Values)                                       \
@@ -52,7 +55,8 @@ namespace candela {
   X(uint32_t, infiniteLights, infiniteLightCount, Values)                    \
   X(float, plasticCoats, plasticCoatCount, Values)                           \
   X(float, sheenTables, sheenTableCount, Values)                             \
-  X(Vec3, vertexColors, vertexColorCount, Structure)
+  X(Vec3, vertexColors, vertexColorCount, Structure)                         \
+  X(CameraPose, cameraPoses, cameraPoseCount, Values)
 
 // Every array of the kernel's scene: SceneData, SceneData::view and the CUDA upload expand
 // this.

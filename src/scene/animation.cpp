@@ -2,6 +2,7 @@
 #include "scene/animation.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "render/material_prepare.h"
 
@@ -108,6 +109,46 @@ Vec3 evaluateTrack(const AnimTrack& track, uint32_t frame) {
   return a.value + (b.value - a.value) * t;  // exactly a.value at t = 0
 }
 
+Vec3 evaluateTrackAt(const AnimTrack& track, double time) {
+  const double whole = std::floor(time);
+  if (time == whole && whole >= 0.0 && whole <= double(kMaxFrames))
+    return evaluateTrack(track, uint32_t(whole));  // a frame's value, to the bit
+  const std::vector<AnimKey>& keys = track.keys;
+  if (time <= double(keys.front().frame)) return keys.front().value;
+  if (time >= double(keys.back().frame)) return keys.back().value;
+  const auto after = std::upper_bound(keys.begin(), keys.end(), time,
+                                      [](double t, const AnimKey& key) { return t < key.frame; });
+  const size_t k = size_t(after - keys.begin()) - 1;
+  const AnimKey& a = keys[k];
+  const AnimKey& b = keys[k + 1];
+  const float t = float((time - a.frame) / double(b.frame - a.frame));
+  return a.value + (b.value - a.value) * t;
+}
+
+CameraDesc cameraAtTime(const CameraDesc& camera, const AnimationDesc& animation, double time) {
+  CameraDesc result = camera;
+  for (const AnimTrack& track : animation.tracks)
+    if (track.target == AnimTarget::Camera)
+      applyToCamera(result, track.property, evaluateTrackAt(track, time));
+  return result;
+}
+
+std::vector<double> shutterTimes(const AnimationDesc& animation, uint32_t frame) {
+  const bool cameraMoves =
+      std::any_of(animation.tracks.begin(), animation.tracks.end(),
+                  [](const AnimTrack& t) { return t.target == AnimTarget::Camera; });
+  if (!(animation.shutterClose > animation.shutterOpen) || !cameraMoves) return {};
+  const double open = double(frame) + animation.shutterOpen;
+  const double close = double(frame) + animation.shutterClose;
+  std::vector<double> times;
+  for (uint32_t i = 0; i <= kShutterSegments; ++i)
+    times.push_back(i == kShutterSegments ? close : open + (close - open) * i / kShutterSegments);
+  for (double whole = std::floor(open) + 1; whole < close; ++whole) times.push_back(whole);
+  std::sort(times.begin(), times.end());
+  times.erase(std::unique(times.begin(), times.end()), times.end());
+  return times;
+}
+
 CameraDesc cameraAtFrame(const CameraDesc& camera, const AnimationDesc& animation,
                          uint32_t frame) {
   CameraDesc result = camera;
@@ -131,6 +172,10 @@ SceneDesc sceneAtFrame(const SceneDesc& scene, uint32_t frame) {
   result.animation.reset();
   result.render.seed = scene.render.seed + frame;
   if (!scene.animation) return result;
+  const std::vector<double> times = shutterTimes(*scene.animation, frame);
+  for (double time : times)
+    result.shutterCameras.push_back({float((time - times.front()) / (times.back() - times.front())),
+                                     cameraAtTime(scene.camera, *scene.animation, time)});
   for (const AnimTrack& track : scene.animation->tracks) {
     const Vec3 v = evaluateTrack(track, frame);
     switch (track.target) {

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
 #include "scene/scene_desc.h"
 
@@ -18,14 +19,29 @@ constexpr uint32_t kMaxFrames = 1000000;
 // The value of `track` at `frame` (scalars in all three components).
 Vec3 evaluateTrack(const AnimTrack& track, uint32_t frame);
 
+// The value of `track` at `time`, in frames (a fraction of the way between keys where it is not a
+// whole frame).
+Vec3 evaluateTrackAt(const AnimTrack& track, double time);
+
 // `camera` with the camera tracks of `animation` applied at `frame`.
 CameraDesc cameraAtFrame(const CameraDesc& camera, const AnimationDesc& animation, uint32_t frame);
+
+// `camera` with the camera tracks of `animation` applied at `time`, in frames.
+CameraDesc cameraAtTime(const CameraDesc& camera, const AnimationDesc& animation, double time);
+
+// The times, in frames, at which a motion-blurred frame `frame` takes its camera's pose: the
+// shutter's opening and closing, kShutterSegments steps between and every whole frame between
+// (where a track's keys may bend the motion), increasing. Empty where the frame is not blurred:
+// the shutter is an instant or no track moves the camera.
+constexpr uint32_t kShutterSegments = 16;
+std::vector<double> shutterTimes(const AnimationDesc& animation, uint32_t frame);
 
 // Light `index` of a scene, `light`, with its tracks in `animation` applied at `frame`.
 LightDesc lightAtFrame(const LightDesc& light, uint32_t index, const AnimationDesc& animation,
                        uint32_t frame);
 
-// The still scene at `frame`: every track applied, render.seed + frame, and no animation block.
+// The still scene at `frame`: every track applied, render.seed + frame, no animation block, and
+// the camera across the frame's exposure where it is motion-blurred (shutterCameras).
 // Works for scenes without animation too (only the seed changes). A colour track on an object
 // without a material of its own makes it diffuse with that colour, as a static "color" would.
 SceneDesc sceneAtFrame(const SceneDesc& scene, uint32_t frame);

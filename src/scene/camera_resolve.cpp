@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <optional>
 #include <string>
 
@@ -287,6 +288,25 @@ Camera resolveCamera(const CameraDesc& desc, const std::string& fileLabel) {
   if (const std::optional<CameraProblem> problem = makeCamera(desc, 0.0f, &cam))
     throw SceneError(fileLabel + ": " + problem->path + ": " + problem->message);
   return cam;
+}
+
+std::vector<CameraPose> shutterPoses(const SceneDesc& desc) {
+  std::vector<CameraPose> poses;
+  bool moves = false;
+  for (const ShutterCamera& shutter : desc.shutterCameras) {
+    const Camera cam = resolveCamera(shutter.camera, desc.file);
+    CameraPose pose;
+    pose.rotation = quaternionOf(cam.cameraToWorld);
+    pose.position = cam.position;
+    pose.time = shutter.time;
+    if (!poses.empty())
+      moves = moves || std::memcmp(&pose.position, &poses.front().position, sizeof(Vec3)) != 0 ||
+              std::memcmp(&pose.rotation, &poses.front().rotation, sizeof(Quaternion)) != 0;
+    poses.push_back(pose);
+  }
+  // A camera that holds still while the shutter is open draws no time for its samples.
+  if (!moves) poses.clear();
+  return poses;
 }
 
 namespace {

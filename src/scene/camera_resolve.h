@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "render/camera.h"
+#include "render/camera_motion.h"
 #include "render/pixel_filter.h"
 #include "scene/scene_desc.h"
 
@@ -33,6 +34,11 @@ std::optional<CameraProblem> cameraProblem(const CameraDesc& desc, float beyondE
 // The camera of `desc`; throws SceneError "file: path: message" for a cameraProblem (the image
 // not widened: a loaded scene's camera was checked with its filter's reach).
 Camera resolveCamera(const CameraDesc& desc, const std::string& fileLabel);
+
+// The camera's poses across a motion-blurred frame's exposure (render/camera_motion.h), from its
+// shutterCameras; empty where it has none or the camera holds still through them. Throws
+// SceneError as resolveCamera does.
+std::vector<CameraPose> shutterPoses(const SceneDesc& desc);
 
 // The intrinsic matrix K of a camera description (from fov or as given).
 Mat3 intrinsicMatrix(const CameraDesc& desc);

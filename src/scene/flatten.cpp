@@ -368,6 +368,7 @@ void addContents(SceneData& s, const SceneDesc& desc, bool geometry, bool textur
 
   flattenEnvironment(desc.environment, s);
   s.camera = resolveCamera(desc.camera, desc.file);
+  s.cameraPoses = shutterPoses(desc);
   s.settings = desc.render;
 }
 

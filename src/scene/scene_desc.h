@@ -223,6 +223,14 @@ struct AnimationDesc {
   uint32_t frames = 1;  // frames 0 .. frames-1
   float fps = 24;       // playback rate, frames per second (used for videos)
   std::vector<AnimTrack> tracks;
+  // Frame k's exposure: from k + shutterOpen to k + shutterClose, in frames (equal: an instant).
+  float shutterOpen = 0, shutterClose = 0;
+};
+
+// The camera at one time of a frame's exposure, from 0 (the shutter opens) to 1 (it closes).
+struct ShutterCamera {
+  float time = 0;
+  CameraDesc camera;
 };
 
 // An image texture as read (core/texture.h): RGBA texels from the top row, 8-bit for the 8-bit
@@ -257,6 +265,9 @@ struct SceneDesc {
   // The images materials name by TextureRef::index, each file read once; shared by frames.
   std::vector<std::shared_ptr<const TextureDesc>> textures;
   std::optional<AnimationDesc> animation;  // absent: a still image
+  // Empty, or the camera across the exposure where it moves while the shutter is open (at least
+  // two times, from 0 to 1; sceneAtFrame fills it): the image is motion-blurred.
+  std::vector<ShutterCamera> shutterCameras;
   // Messages on what the scene's files leave to a default, each prefixed like an error's (the
   // scene file, the JSON path); the scene renders. The command line prints them, Python warns.
   std::vector<std::string> warnings;

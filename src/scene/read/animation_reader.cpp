@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <map>
 
 #include "scene/along_up.h"
@@ -318,9 +319,7 @@ void checkCameraAtEveryFrame(const JsonValue& value, const AnimationDesc& animat
   for (const AnimTrack& t : animation.tracks)
     if (t.target == AnimTarget::Camera) cameraTracks.tracks.push_back(t);
   if (cameraTracks.tracks.empty()) return;
-  for (uint32_t frame = 0; frame < animation.frames; ++frame) {
-    const CameraDesc c = cameraAtFrame(scene.camera, cameraTracks, frame);
-    const std::string at = "at frame " + std::to_string(frame) + " ";
+  const auto check = [&](const CameraDesc& c, const std::string& at) {
     if (c.lookAt) {
       const Vec3 f = *c.lookAt - c.position;
       if (isBlack(f)) value.fail(at + "the camera looks at its own position");
@@ -329,7 +328,42 @@ void checkCameraAtEveryFrame(const JsonValue& value, const AnimationDesc& animat
     if (const std::optional<CameraProblem> problem =
             cameraProblem(c, samplesBeyondEdge(scene.render.filter)))
       value.fail(at + problem->path + " " + problem->message);
+  };
+  cameraTracks.shutterOpen = animation.shutterOpen;
+  cameraTracks.shutterClose = animation.shutterClose;
+  for (uint32_t frame = 0; frame < animation.frames; ++frame) {
+    check(cameraAtFrame(scene.camera, cameraTracks, frame),
+          "at frame " + std::to_string(frame) + " ");
+    // A motion-blurred frame's camera must be one at every time of its exposure too.
+    for (double time : shutterTimes(cameraTracks, frame)) {
+      char at[64];
+      std::snprintf(at, sizeof(at), "at time %g (frame %u's exposure) ", time, frame);
+      check(cameraAtTime(scene.camera, cameraTracks, time), at);
+    }
   }
+}
+
+// The shutter (docs/scene-format.md, *Motion blur*): a fraction of the frame interval centred on
+// the frame, or its opening and closing as offsets from the frame, in frames.
+void readShutter(const JsonValue& value, AnimationDesc& animation) {
+  if (value.json().is_array()) {
+    const std::string expectation =
+        "[open, close] with -1 <= open <= close <= 1 and close - open <= 1 (frames)";
+    if (value.json().size() != 2) value.failExpected(expectation);
+    std::vector<float> times;
+    for (const JsonValue& time : value.elements()) times.push_back(time.number());
+    if (!(times[0] >= -1.0f && times[1] <= 1.0f && times[0] <= times[1] &&
+          times[1] - times[0] <= 1.0f))
+      value.failExpected(expectation);
+    animation.shutterOpen = times[0];
+    animation.shutterClose = times[1];
+    return;
+  }
+  const float open =
+      value.unitNumber("a number in [0, 1] (the share of the frame interval, centred on the frame)",
+                       " or [open, close]");
+  animation.shutterOpen = -0.5f * open;
+  animation.shutterClose = 0.5f * open;
 }
 
 // A light's aim must make a direction at every frame: a spot or rectangle light aimed with
@@ -368,11 +402,12 @@ void checkAimsAtEveryFrame(const AnimationDesc& animation, const SceneDesc& scen
 }  // namespace
 
 AnimationDesc readAnimation(const JsonValue& value, const SceneDesc& scene) {
-  JsonObject fields(value, {"frames", "fps", "tracks"});
+  JsonObject fields(value, {"frames", "fps", "tracks", "shutter"});
   AnimationDesc animation;
   animation.frames =
       uint32_t(fields.require("frames").integer(1, kMaxFrames, "a positive integer"));
   if (std::optional<JsonValue> fps = fields.get("fps")) animation.fps = fps->positiveNumber();
+  if (std::optional<JsonValue> shutter = fields.get("shutter")) readShutter(*shutter, animation);
 
   const Targets targets(scene);
   std::map<std::pair<std::string, int>, std::string> animated;  // (target, property) -> track

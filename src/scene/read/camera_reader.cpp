@@ -338,7 +338,8 @@ void followGltfAnimation(SceneDesc& scene) {
     const Vec3 centre = -(cameraToWorld * poses[k].translation);
     const Mat3 node = cameraToWorld * Mat3::diagonal(Vec3(1.0f, -1.0f, -1.0f));
     position.keys.push_back({k, centre});
-    rotation.keys.push_back({k, eulerDegrees(node)});
+    rotation.keys.push_back(
+        {k, k == 0 ? eulerDegrees(node) : eulerDegreesNear(node, rotation.keys.back().value)});
   }
   camera.extrinsicsR.reset();
   camera.extrinsicsT.reset();

@@ -175,6 +175,26 @@ void loadMeshes(SceneDesc& scene, const std::vector<std::string>& writtenNames,
   shadeFacesWithoutNormals(scene);
 }
 
+// Motion blur covers the camera's motion only so far: an open shutter over something else that
+// moves shows it sharp, where it is at the frame's time.
+void warnOfMotionNotBlurred(SceneDesc& scene) {
+  if (!scene.animation || !(scene.animation->shutterClose > scene.animation->shutterOpen)) return;
+  for (const AnimTrack& track : scene.animation->tracks) {
+    const bool moves =
+        track.property == AnimProperty::Position || track.property == AnimProperty::Rotation ||
+        track.property == AnimProperty::Scale || track.property == AnimProperty::Radius ||
+        track.property == AnimProperty::Direction || track.property == AnimProperty::LookAt ||
+        track.property == AnimProperty::Up || track.property == AnimProperty::Size;
+    if (track.target == AnimTarget::Camera || !moves) continue;
+    scene.warnings.push_back(scene.file +
+                             ": animation.shutter: motion blur follows the camera "
+                             "alone; what " +
+                             track.where +
+                             " moves is shown sharp, where it is at each frame's time");
+    return;
+  }
+}
+
 }  // namespace
 
 SceneDesc parseSceneText(const std::string& text, const std::string& fileLabel,
@@ -226,6 +246,7 @@ SceneDesc parseSceneText(const std::string& text, const std::string& fileLabel,
   if (std::optional<JsonValue> animation = top.get("animation"))
     scene.animation = readAnimation(*animation, scene);
   followGltfAnimation(scene);
+  warnOfMotionNotBlurred(scene);
   const bool cameraAnimated =
       scene.animation && std::any_of(scene.animation->tracks.begin(), scene.animation->tracks.end(),
                                      [](const AnimTrack& t) { return t.target == AnimTarget::Camera; });
