@@ -165,6 +165,23 @@ TEST(CudaBackend, MatchesCpuThroughAnOrthographicCameraOnVertexColours) {
   EXPECT_EQ(cpu.rays.camera, gpu.rays.camera);
 }
 
+// A motion-blurred frame (render/camera_motion.h): a look-at camera sliding past the spheres under
+// an open shutter draws each sample's time and pose on the device as on the CPU.
+TEST(CudaBackend, MatchesCpuUnderMotionBlur) {
+  REQUIRE_GPU();
+  std::string json = sceneWithEverything(16);
+  json.erase(json.rfind('}'));
+  json += R"(, "animation": {"frames": 2, "shutter": [0, 1], "tracks": [
+      {"target": "camera", "property": "position", "keys": [[0, [-1, 1.5, 6]], [1, [1, 1.2, 5.5]]]}]}})";
+  const SceneDesc desc = parseSceneText(json, "test.json", ".");
+  const SceneData data = flattenScene(sceneAtFrame(desc, 0));
+  ASSERT_EQ(data.cameraPoses.size(), kShutterSegments + 1);
+  const RenderResult cpu = renderCpu(data.view(), RenderOptions{});
+  const RenderResult gpu = renderCuda(data);
+  EXPECT_LT(test::relMseAgainst(cpu.image.pixels, gpu.image.pixels), 1e-4);
+  EXPECT_EQ(cpu.rays.camera, gpu.rays.camera);
+}
+
 // Clear coats (render/bsdf_coat.h), smooth and rough, over diffuse, a rough metal, a mirror and
 // a plastic, and sheen (render/bsdf_sheen.h) under a coat and alone, lit by a lamp, a sphere
 // light and the sky: on the device as on the CPU.
