@@ -471,6 +471,44 @@ TEST_F(CliTest, SequenceOfFilesAndAnimationBlockGiveBitIdenticalFrames) {
   EXPECT_FALSE(fs::exists(path("a/frame_0003.pfm")));
 }
 
+// --frame N renders frame N of an animation as one image, the same as the sequence's frame file
+// (its seed render.seed + N, --seed the animation's), with its flow towards frame N + 1 and its
+// stats; what it cannot do is a usage error.
+TEST_F(CliTest, FrameOfAnAnimationRendersAsTheSequencesFrame) {
+  writeFile("anim.json", animatedScene(3, R"(
+      {"target": "ball", "property": "position", "keys": [[0, [0, 0, 0]], [2, [1, 0, 0]]]})"));
+  const RunResult seq = run("render anim.json -o s/ --format pfm --seed 9 --aov flow -q");
+  ASSERT_EQ(seq.exitCode, 0) << seq.err;
+  const RunResult one =
+      run("render anim.json --frame 1 -o one.pfm --seed 9 --aov flow --stats one.json -q");
+  ASSERT_EQ(one.exitCode, 0) << one.err;
+  EXPECT_EQ(slurp(path("one.pfm")), slurp(path("s/frame_0001.pfm")));
+  EXPECT_EQ(slurp(path("one.flow.pfm")), slurp(path("s/frame_0001.flow.pfm")));
+  EXPECT_NE(slurp(path("one.pfm")), slurp(path("s/frame_0000.pfm")));
+  EXPECT_TRUE(fs::exists(path("one.json")));
+
+  writeFile("still.json", kTinyScene);
+  const std::pair<const char*, const char*> refused[] = {
+      {"render anim.json --frame 3 -o x.png",
+       "candela: error: --frame 3: anim.json has 3 frames (0 to 2)\n"},
+      {"render still.json --frame 0 -o x.png",
+       "candela: error: --frame 0: still.json has no animation block\n"},
+      {"render anim.json --frame 1 -o x/",
+       "candela: error: -o x/: --frame renders one image, to a file (.png, .exr or .pfm)\n"},
+      {"render anim.json --frame 1 --frames 0:2 -o x.png",
+       "candela: error: --frame renders one image; --frames is for sequences\n"},
+      {"render anim.json anim.json --frame 1 -o x.png",
+       "candela: error: --frame renders one frame of one scene's animation; several scene "
+       "files are a sequence (--frames picks some of its frames)\n"}};
+  for (const auto& [command, message] : refused) {
+    const RunResult r = run(command);
+    EXPECT_EQ(r.exitCode, 2) << command;
+    EXPECT_EQ(r.err, message) << command;
+  }
+  EXPECT_FALSE(fs::exists(path("x.png")));
+  EXPECT_FALSE(fs::exists(path("x")));
+}
+
 // The device keeps a sequence's scene between frames and moves only what changed
 // (render/scene_change.h): an object, a light and the camera here, each frame as on the CPU.
 TEST_F(CliTest, SequenceOnTheGpuRendersEachFrameAsTheCpu) {

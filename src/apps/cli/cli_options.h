@@ -27,6 +27,8 @@ struct RenderCommandOptions {
   std::string aovs;    // --aov depth,normal,...: render passes (docs/aovs.md); empty: none
   bool denoise = false;  // --denoise: Open Image Denoise on the image (apps/cli/oidn_denoiser.h)
   bool noBvh = false;  // --no-bvh: brute force over all primitives (benchmarks only)
+  // --frame N: frame N of the scene's animation block as one image, as a still renders
+  std::optional<uint32_t> frame;
   // Sequences only (see sequence_command.h); `sequenceOptionGiven` says whether any was set.
   std::string format;               // png, exr or pfm; empty: png
   std::string frames;               // "A:B", start inclusive, end exclusive; empty: all

@@ -33,6 +33,7 @@
 #include "backends/thread_limit.h"
 #include "image/atomic_file.h"
 #include "image/image_io.h"
+#include "scene/animation.h"
 #include "scene/flatten.h"
 #include "scene/flow_motion.h"
 #include "scene/read/scene_loader.h"
@@ -74,7 +75,10 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-int renderStill(const RenderCommandOptions& options, SceneDesc desc, double loadSeconds);
+int renderStill(const RenderCommandOptions& options, SceneDesc desc, double loadSeconds,
+                const SceneDesc* next = nullptr);
+int renderFrame(const RenderCommandOptions& options, const std::vector<SceneDesc>& scenes,
+                double loadSeconds);
 
 }  // namespace
 
@@ -175,6 +179,10 @@ CLI::App* addRenderCommand(CLI::App& app, RenderCommandOptions* options) {
   cmd->add_flag("--no-bvh", options->noBvh,
                 "Benchmarks only: test every primitive for every ray instead of using the BVH")
       ->group("");  // hidden from --help
+  cmd->add_option_function<uint32_t>(
+         "--frame", [options](const uint32_t& v) { options->frame = v; },
+         "Render frame N of the scene's animation block as one image (to -o FILE), as a still")
+      ->transform(decimalInteger(false, UINT32_MAX));
   cmd->add_option("--format", options->format, "Frame format of a sequence (default: png)")
       ->check(CLI::IsMember({"png", "exr", "pfm"}));
   cmd->add_option("--frames", options->frames,
@@ -206,6 +214,7 @@ int runRender(const RenderCommandOptions& options) {
     printSceneWarnings(scenes.back());
   }
   const double loadSeconds = secondsSince(loadStart);
+  if (options.frame) return renderFrame(options, scenes, loadSeconds);
   const bool sequence = scenes.size() > 1 || scenes[0].animation || options.sequenceOptionGiven() ||
                         isFolderOutput(options.output);
   if (sequence && !options.stats.empty())
@@ -216,7 +225,40 @@ int runRender(const RenderCommandOptions& options) {
 
 namespace {
 
-int renderStill(const RenderCommandOptions& options, SceneDesc desc, double loadSeconds) {
+// --frame N: the still of frame N, its flow pass towards frame N + 1 as a sequence's.
+int renderFrame(const RenderCommandOptions& options, const std::vector<SceneDesc>& scenes,
+                double loadSeconds) {
+  const uint32_t frame = *options.frame;
+  if (scenes.size() > 1)
+    throw CliError(kExitUsage,
+                   "--frame renders one frame of one scene's animation; several scene files are a "
+                   "sequence (--frames picks some of its frames)");
+  if (const char* name = options.sequenceOptionName())
+    throw CliError(kExitUsage,
+                   std::string("--frame renders one image; ") + name + " is for sequences");
+  if (isFolderOutput(options.output))
+    throw CliError(kExitUsage, "-o " + options.output +
+                                   ": --frame renders one image, to a file (.png, .exr or .pfm)");
+  const SceneDesc& animated = scenes[0];
+  if (!animated.animation)
+    throw CliError(kExitUsage, "--frame " + std::to_string(frame) + ": " + options.scenes[0] +
+                                   " has no animation block");
+  const uint32_t frames = animated.animation->frames;
+  if (frame >= frames)
+    throw CliError(kExitUsage, "--frame " + std::to_string(frame) + ": " + options.scenes[0] +
+                                   " has " + std::to_string(frames) + " frames (0 to " +
+                                   std::to_string(frames - 1) + ")");
+  // --seed is the animation's seed, as in a sequence: the frame takes it + N.
+  SceneDesc seeded = animated;
+  if (options.seed) seeded.render.seed = *options.seed;
+  RenderCommandOptions stillOptions = options;
+  stillOptions.seed.reset();
+  const SceneDesc next = sceneAtFrame(seeded, frame + 1);
+  return renderStill(stillOptions, sceneAtFrame(seeded, frame), loadSeconds, &next);
+}
+
+int renderStill(const RenderCommandOptions& options, SceneDesc desc, double loadSeconds,
+                const SceneDesc* next) {
   const std::string& sceneFile = options.scenes[0];
   const std::string output = options.output.empty() ? defaultOutputPath(sceneFile) : options.output;
   checkOutputPath(output);
@@ -232,9 +274,10 @@ int renderStill(const RenderCommandOptions& options, SceneDesc desc, double load
   const std::unique_ptr<OidnDenoiser> denoiser = loadDenoiser(options);
   applyOverrides(options, backend, engine, &desc);
   const auto flattenStart = std::chrono::steady_clock::now();
-  // A still does not move: its flow pass is 0 (and NaN nowhere, as both cameras are one).
+  // A still does not move: its flow pass is 0 (and NaN nowhere, as both cameras are one). A
+  // frame of an animation moves towards the next.
   std::optional<FlowMotion> flow;
-  if (hasAov(passes.aovs, Aov::Flow)) flow = flowMotion(desc, desc);
+  if (hasAov(passes.aovs, Aov::Flow)) flow = flowMotion(desc, next ? *next : desc);
   SceneData scene = flattenScene(std::move(desc));  // it keeps all but the meshes, for the files
   if (flow) applyFlowMotion(scene, *flow);
   const double flattenSeconds = secondsSince(flattenStart);

@@ -1,11 +1,12 @@
 // `candela render SCENE [SCENE...] [-o OUT] [--spp N] [--seed N] [--max-depth N] [--threads N]
 //                 [--backend auto|cpu|cuda] [--quiet] [--stats FILE.json]
-//                 [--aov depth,normal,...] [--denoise] [--format png|exr|pfm] [--frames A:B]
-//                 [--overwrite] [--video OUT.mp4] [--fps N]`
+//                 [--aov depth,normal,...] [--denoise] [--frame N] [--format png|exr|pfm]
+//                 [--frames A:B] [--overwrite] [--video OUT.mp4] [--fps N]`
 //
 // One scene without an animation block and an image file (or nothing) for -o: one image, as
-// always. Several scenes, an animation block, a folder for -o (ending in '/' or existing) or any
-// of the sequence options: a sequence of frames (sequence_command.h).
+// always; with --frame N, frame N of its animation block likewise. Several scenes, an animation
+// block, a folder for -o (ending in '/' or existing) or any of the sequence options: a sequence of
+// frames (sequence_command.h).
 #pragma once
 
 #include <memory>
