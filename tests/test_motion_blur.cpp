@@ -197,43 +197,99 @@ std::string writeHalfPlane(const fs::path& dir) {
 }
 
 // The camera slides along x from -3 to 3 while the shutter is open, 7.5 before an emitter that
-// covers x >= 0: a pixel whose centre looks along (px - 20) / 20 sees it while the camera is at
-// x >= -7.5 (px - 20) / 20, for that share of the exposure. With antialiasing off every sample
-// passes through the pixel's centre, and the 64 samples' times are stratified, one in each
-// 64th of the exposure, so each pixel is within 1/64 of its share. The distance pass, from each
-// sample's own eye, does not depend on where the camera was.
-TEST(MotionBlur, SlidingCameraSeesAnEdgeForItsShareOfTheExposure) {
+// covers x >= 0, with antialiasing off so that every sample passes through its pixel's centre,
+// 64 samples a pixel. `extra` adds to the animation block; `height` rows.
+struct HalfPlaneRender {
+  RenderResult result;
+  std::vector<ImageLayer> layers;  // the distance pass
+};
+HalfPlaneRender renderPastHalfPlane(const std::string& extra, uint32_t height) {
   const fs::path dir = fs::temp_directory_path() / "candela_motion_blur";
-  const std::string json = R"({"camera": {"width": 40, "height": 4, "fov": 90, "spp": 64},
+  const std::string json = R"({"camera": {"width": 40, "height": )" + std::to_string(height) +
+                           R"(, "fov": 90, "spp": 64},
     "render": {"antialiasing": false, "max_depth": 1},
     "objects": [{"file": "half.obj", "position": [0, 0, -7.5],
                  "material": {"type": "emissive", "radiance": 1}}],
-    "animation": {"frames": 2, "shutter": [0, 1], "tracks": [
+    "animation": {"frames": 2, "shutter": [0, 1])" +
+                           extra + R"(, "tracks": [
       {"target": "camera", "property": "position", "keys": [[0, [-3, 0, 0]], [1, [3, 0, 0]]]}]}})";
   const SceneDesc still = sceneAtFrame(parse(json, writeHalfPlane(dir)), 0);
   fs::remove_all(dir);
   SceneData scene = flattenScene(still);
   RenderOptions options;
   options.aovs = true;
-  const RenderResult result = renderCpu(scene.view(), options);
-  const std::vector<ImageLayer> layers =
-      makeAovLayers(scene, parseAovList("distance"), result.aovs);
+  HalfPlaneRender r{renderCpu(scene.view(), options), {}};
+  r.layers = makeAovLayers(scene, parseAovList("distance"), r.result.aovs);
+  return r;
+}
+
+// The share of the exposure times [from, to] (as fractions of the shutter, from <= to) for which
+// the pixel centre (x + 0.5, y + 0.5) of the half-plane render sees the emitter: while the camera
+// is at x >= -7.5 (px - 20) / 20.
+double shareSeen(uint32_t x, double from, double to) {
+  const double dx = (x + 0.5 - 20) / 20;
+  const double a = -3 + 6 * from, b = -3 + 6 * to, edge = -7.5 * dx;
+  if (b == a) return a >= edge ? 1 : 0;
+  return std::min(1.0, std::max(0.0, (b - edge) / (b - a)));
+}
+
+// A global shutter: each pixel sees the emitter for its share of the whole exposure, within 1/64
+// as the 64 samples' times are stratified, one in each 64th of it. The distance pass, from each
+// sample's own eye, does not depend on where the camera was.
+TEST(MotionBlur, SlidingCameraSeesAnEdgeForItsShareOfTheExposure) {
+  const HalfPlaneRender r = renderPastHalfPlane("", 4);
   int ramp = 0;
   for (uint32_t y = 0; y < 4; ++y)
     for (uint32_t x = 0; x < 40; ++x) {
       const double dx = (x + 0.5 - 20) / 20, dy = (y + 0.5 - 2) / 20;
-      const double share = std::min(1.0, std::max(0.0, (3 + 7.5 * dx) / 6));
-      const float* rgb = &result.image.pixels[3 * (size_t(y) * 40 + x)];
+      const double share = shareSeen(x, 0, 1);
+      const float* rgb = &r.result.image.pixels[3 * (size_t(y) * 40 + x)];
       EXPECT_NEAR(rgb[0], share, 1.0 / 64 + 1e-5) << x << "," << y;
       EXPECT_EQ(rgb[0], rgb[2]);
       ramp += share > 0 && share < 1;
       if (share > 0) {
-        EXPECT_NEAR(layers[0].pixels[size_t(y) * 40 + x], 7.5 * std::sqrt(1 + dx * dx + dy * dy),
+        EXPECT_NEAR(r.layers[0].pixels[size_t(y) * 40 + x], 7.5 * std::sqrt(1 + dx * dx + dy * dy),
                     1e-4)
             << x << "," << y;
       }
     }
   EXPECT_EQ(ramp, 4 * 16);  // the edge spreads over 16 columns
+}
+
+// A rolling shutter reads its rows from the top: row y (its centre at y + 0.5 of 8) is open from
+// (y + 0.5) / 8 (1 - e) for a share e of the exposure. Each row instant (e = 0) sees the edge
+// sharp where the camera was then, a column further left every half row; e = 0.5 spreads each
+// row's edge over half the global shutter's ramp, the rows still apart.
+TEST(MotionBlur, RollingShutterReadsItsRowsFromTheTop) {
+  for (const double e : {0.0, 0.5}) {
+    const HalfPlaneRender r = renderPastHalfPlane(
+        R"(, "rolling_shutter": {"row_exposure": )" + std::to_string(e) + "}", 8);
+    for (uint32_t y = 0; y < 8; ++y) {
+      const double from = (y + 0.5) / 8 * (1 - e);
+      for (uint32_t x = 0; x < 40; ++x)
+        EXPECT_NEAR(r.result.image.pixels[3 * (size_t(y) * 40 + x)], shareSeen(x, from, from + e),
+                    e == 0 ? 1e-6 : 1.0 / 64 + 1e-5)
+            << "e " << e << " at " << x << "," << y;
+    }
+  }
+  // By default each row is an instant, a step: row 0 turns on at column 27, row 7 at 13.
+  const HalfPlaneRender sharp = renderPastHalfPlane(R"(, "rolling_shutter": {})", 8);
+  EXPECT_EQ(sharp.result.image.pixels[3 * 27], 1.0f);
+  EXPECT_EQ(sharp.result.image.pixels[3 * 26], 0.0f);
+  EXPECT_EQ(sharp.result.image.pixels[3 * (7 * 40 + 13)], 1.0f);
+  EXPECT_EQ(sharp.result.image.pixels[3 * (7 * 40 + 12)], 0.0f);
+}
+
+TEST(MotionBlur, RollingShutterErrors) {
+  EXPECT_EQ(error(slidingCamera(R"(, "rolling_shutter": {"row_exposure": 0.1})")),
+            "s.json: animation.rolling_shutter: a rolling shutter needs an open \"shutter\" to "
+            "read its rows over");
+  EXPECT_EQ(error(slidingCamera(R"(, "shutter": 1, "rolling_shutter": {"row_exposure": 1})")),
+            "s.json: animation.rolling_shutter.row_exposure: expected a number in [0, 1) (each "
+            "row's share of the exposure), got 1");
+  EXPECT_EQ(error(slidingCamera(R"(, "shutter": 1, "rolling_shutter": {"rows": 1})")),
+            "s.json: animation.rolling_shutter.rows: unknown key, expected one of "
+            "\"row_exposure\"");
 }
 
 // A camera that no track moves renders under an open shutter the image of a closed one, to the

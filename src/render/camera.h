@@ -34,6 +34,11 @@ struct Camera {
   Vec3 position;       // camera centre in world space
   float apertureRadius = 0;
   float focusDistance = 1;  // along camera +z
+  // Where the camera moves while the shutter is open (SceneView::cameraPoses): the time of the
+  // exposure at which a sample at image row py (in pixels) and shutter number u in [0, 1) is
+  // taken is py * shutterRowSlope + u * shutterRowShare. A global shutter has slope 0 and share 1;
+  // a rolling one reads its rows from the top, each open for a share of the exposure.
+  float shutterRowSlope = 0, shutterRowShare = 1;
   // Pixel (x, y) of the render is pixel (stride x + stride / 2, stride y + stride / 2) of this
   // camera's image: a sparse sample of its pixels (the light-path pilot's,
   // backends/light_path_pilot.h); 1 for every render of the image itself.

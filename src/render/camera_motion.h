@@ -17,10 +17,12 @@ struct CameraPose {
   float time = 0;
 };
 
-// `camera` at shutter time `u` in [0, 1] between `poses` (count >= 2, times increasing from 0 to
-// 1): the pose of the segment that holds u, interpolated.
+// `camera` at shutter time `u` between `poses` (count >= 2, times increasing from 0 to 1): the
+// pose of the segment that holds u, interpolated. A time outside [0, 1] (a wide pixel filter's
+// sample beyond the image's first or last row, under a rolling shutter) is the nearer end's.
 CANDELA_HDI Camera cameraAtShutterTime(const Camera& camera, const CameraPose* poses,
                                        uint32_t count, float u) {
+  u = u < 0.0f ? 0.0f : (u > 1.0f ? 1.0f : u);
   uint32_t i = 0;
   while (i + 2 < count && u >= poses[i + 1].time) ++i;
   const CameraPose& a = poses[i];

@@ -31,8 +31,10 @@ CANDELA_HDI Ray cameraSample(const SceneView& scene, uint32_t x, uint32_t y, Sam
   // Only a camera that moves while the shutter is open draws a time, so that a still camera's
   // samples keep the numbers they had before motion blur existed.
   if (scene.cameraPoseCount > 1) {
+    const float time =
+        py * scene.camera.shutterRowSlope + rng.next1D() * scene.camera.shutterRowShare;
     const Camera posed =
-        cameraAtShutterTime(scene.camera, scene.cameraPoses, scene.cameraPoseCount, rng.next1D());
+        cameraAtShutterTime(scene.camera, scene.cameraPoses, scene.cameraPoseCount, time);
     ray = generateCameraRay(posed, px, py, lensU, lensV);
     *eye = posed.position;
   } else {

@@ -176,6 +176,7 @@ SceneDesc sceneAtFrame(const SceneDesc& scene, uint32_t frame) {
   for (double time : times)
     result.shutterCameras.push_back({float((time - times.front()) / (times.back() - times.front())),
                                      cameraAtTime(scene.camera, *scene.animation, time)});
+  if (!times.empty()) result.shutterRowExposure = scene.animation->rowExposure;
   for (const AnimTrack& track : scene.animation->tracks) {
     const Vec3 v = evaluateTrack(track, frame);
     switch (track.target) {

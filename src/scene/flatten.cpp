@@ -369,6 +369,10 @@ void addContents(SceneData& s, const SceneDesc& desc, bool geometry, bool textur
   flattenEnvironment(desc.environment, s);
   s.camera = resolveCamera(desc.camera, desc.file);
   s.cameraPoses = shutterPoses(desc);
+  if (!s.cameraPoses.empty()) {
+    s.camera.shutterRowShare = desc.shutterRowExposure;
+    s.camera.shutterRowSlope = (1.0f - desc.shutterRowExposure) / float(s.camera.height);
+  }
   s.settings = desc.render;
 }
 

@@ -225,6 +225,9 @@ struct AnimationDesc {
   std::vector<AnimTrack> tracks;
   // Frame k's exposure: from k + shutterOpen to k + shutterClose, in frames (equal: an instant).
   float shutterOpen = 0, shutterClose = 0;
+  // A rolling shutter's rows, read from the top: each row's share of the exposure (1: a global
+  // shutter, every row open throughout).
+  float rowExposure = 1;
 };
 
 // The camera at one time of a frame's exposure, from 0 (the shutter opens) to 1 (it closes).
@@ -268,6 +271,7 @@ struct SceneDesc {
   // Empty, or the camera across the exposure where it moves while the shutter is open (at least
   // two times, from 0 to 1; sceneAtFrame fills it): the image is motion-blurred.
   std::vector<ShutterCamera> shutterCameras;
+  float shutterRowExposure = 1;  // AnimationDesc::rowExposure, where shutterCameras is not empty
   // Messages on what the scene's files leave to a default, each prefixed like an error's (the
   // scene file, the JSON path); the scene renders. The command line prints them, Python warns.
   std::vector<std::string> warnings;

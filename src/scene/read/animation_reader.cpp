@@ -399,15 +399,32 @@ void checkAimsAtEveryFrame(const AnimationDesc& animation, const SceneDesc& scen
   }
 }
 
+// A rolling shutter (docs/scene-format.md, *Motion blur*): {"row_exposure": e}, each row's share
+// of an open shutter's exposure, e in [0, 1) (0 by default: each row an instant).
+void readRollingShutter(const JsonValue& value, AnimationDesc& animation) {
+  JsonObject fields(value, {"row_exposure"});
+  animation.rowExposure = 0;
+  if (std::optional<JsonValue> e = fields.get("row_exposure")) {
+    const std::string expectation = "a number in [0, 1) (each row's share of the exposure)";
+    animation.rowExposure = e->unitNumber(expectation);
+    if (animation.rowExposure == 1.0f) e->failExpected(expectation);
+  }
+  fields.finish();
+  if (!(animation.shutterClose > animation.shutterOpen))
+    fields.fail("a rolling shutter needs an open \"shutter\" to read its rows over");
+}
+
 }  // namespace
 
 AnimationDesc readAnimation(const JsonValue& value, const SceneDesc& scene) {
-  JsonObject fields(value, {"frames", "fps", "tracks", "shutter"});
+  JsonObject fields(value, {"frames", "fps", "tracks", "shutter", "rolling_shutter"});
   AnimationDesc animation;
   animation.frames =
       uint32_t(fields.require("frames").integer(1, kMaxFrames, "a positive integer"));
   if (std::optional<JsonValue> fps = fields.get("fps")) animation.fps = fps->positiveNumber();
   if (std::optional<JsonValue> shutter = fields.get("shutter")) readShutter(*shutter, animation);
+  if (std::optional<JsonValue> rolling = fields.get("rolling_shutter"))
+    readRollingShutter(*rolling, animation);
 
   const Targets targets(scene);
   std::map<std::pair<std::string, int>, std::string> animated;  // (target, property) -> track
