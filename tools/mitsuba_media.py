@@ -16,14 +16,14 @@ renderer.
 Usage: /tmp/mi/bin/python tools/mitsuba_media.py [--candela build/candela] [--spp 256] [--seeds 4]
 """
 import argparse
-import json
 import math
 import os
-import subprocess
 import tempfile
 
 import mitsuba as mi
 import numpy as np
+
+import candela_run
 
 from mitsuba_shapes import report
 
@@ -76,13 +76,7 @@ def candela(binary, work, spp, seed):
                  {'shape': 'rectangle', 'position': lamp, 'rotation': [180, 0, 0],
                   'scale': [side, 1, side],
                   'material': {'type': 'emissive', 'radiance': radiance}}]}
-    path = os.path.join(work, 'media.json')
-    with open(path, 'w') as f:
-        json.dump(scene, f)
-    out = os.path.join(work, f'candela-{seed}.exr')
-    subprocess.run([binary, 'render', path, '-o', out, '-q', '--backend', 'cpu', '--seed',
-                    str(seed)], check=True)
-    return np.array(mi.Bitmap(out))[:, :, :3]
+    return candela_run.render(binary, scene, work, 'media', seed)[0]
 
 
 def rgb(value):
@@ -143,8 +137,7 @@ def mitsuba(spp, seed):
 def main():
     ap = argparse.ArgumentParser(description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument('--candela', default=os.path.join(os.path.dirname(__file__), '..', 'build',
-                                                      'candela'))
+    candela_run.add_candela_option(ap)
     ap.add_argument('--spp', type=int, default=256)
     ap.add_argument('--seeds', type=int, default=4)
     ap.add_argument('--save', help='folder for both renderers\' mean images (EXR)')

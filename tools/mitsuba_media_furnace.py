@@ -13,13 +13,12 @@ Usage: /tmp/mi/bin/python tools/mitsuba_media_furnace.py [--roughness 0.4] [--sc
            [--spp 256] [--candela build/candela]
 """
 import argparse
-import json
-import os
-import subprocess
 import tempfile
 
 import mitsuba as mi
 import numpy as np
+
+import candela_run
 
 IOR = 1.45
 G = 0.3
@@ -35,12 +34,7 @@ def candela(binary, work, roughness, scattering, spp, seed):
              'spheres': [{'position': [0, 0, 0], 'radius': 1,
                           'material': {'type': 'glass', 'ior': IOR, 'roughness': roughness,
                                        'scattering': scattering, 'scattering_anisotropy': G}}]}
-    path, out = os.path.join(work, 'furnace.json'), os.path.join(work, f'candela-{seed}.exr')
-    with open(path, 'w') as f:
-        json.dump(scene, f)
-    subprocess.run([binary, 'render', path, '-o', out, '-q', '--backend', 'cpu', '--seed',
-                    str(seed)], check=True)
-    return np.array(mi.Bitmap(out))[:, :, :3]
+    return candela_run.render(binary, scene, work, 'furnace', seed)[0]
 
 
 def mitsuba(roughness, scattering, spp, seed):
@@ -66,8 +60,7 @@ def mitsuba(roughness, scattering, spp, seed):
 def main():
     ap = argparse.ArgumentParser(description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument('--candela', default=os.path.join(os.path.dirname(__file__), '..', 'build',
-                                                      'candela'))
+    candela_run.add_candela_option(ap)
     ap.add_argument('--roughness', type=float, default=0.0)
     ap.add_argument('--scattering', type=float, nargs=3, default=[4.0, 3.0, 2.0])
     ap.add_argument('--spp', type=int, default=256)

@@ -15,13 +15,12 @@ Prints each renderer's mean, their difference over the image, and the difference
 Usage: /tmp/mi/bin/python tools/mitsuba_shapes.py [--candela build/candela] [--spp 256]
 """
 import argparse
-import json
-import os
-import subprocess
 import tempfile
 
 import mitsuba as mi
 import numpy as np
+
+import candela_run
 
 SIZE = (160, 120)
 FOV = 45
@@ -55,13 +54,7 @@ def candela(binary, work, spp, seed):
                         'look_at': target, 'up': up, 'spp': spp},
              'render': {'max_depth': MAX_DEPTH}, 'environment': {'color': SKY},
              'objects': objects}
-    path = os.path.join(work, 'shapes.json')
-    with open(path, 'w') as f:
-        json.dump(scene, f)
-    out = os.path.join(work, f'candela-{seed}.exr')
-    subprocess.run([binary, 'render', path, '-o', out, '-q', '--backend', 'cpu', '--seed',
-                    str(seed)], check=True)
-    return np.array(mi.Bitmap(out))[:, :, :3]
+    return candela_run.render(binary, scene, work, 'shapes', seed)[0]
 
 
 def placement(position, rotation, scale):
@@ -115,8 +108,7 @@ def block_means(image, block=8):
 def main():
     ap = argparse.ArgumentParser(description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument('--candela', default=os.path.join(os.path.dirname(__file__), '..', 'build',
-                                                      'candela'))
+    candela_run.add_candela_option(ap)
     ap.add_argument('--spp', type=int, default=256)
     args = ap.parse_args()
     mi.set_variant('scalar_rgb')

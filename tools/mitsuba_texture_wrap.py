@@ -34,9 +34,7 @@ renderer's total time. (With the nearest filter a sample that lands on a pixel's
 may read the texel beyond it after rounding: 1/spp of the step between the two texels.)
 """
 import argparse
-import json
 import os
-import subprocess
 import sys
 import tempfile
 import time
@@ -45,7 +43,7 @@ import mitsuba as mi
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from pfm import read_pfm  # noqa: E402
+import candela_run  # noqa: E402
 from png8 import png8  # noqa: E402
 
 # The image, rows from the top, 8-bit sRGB (no channel 0, so that every ratio is defined).
@@ -77,13 +75,7 @@ def candela(binary, work, wrap, filt, spp):
              'render': {'max_depth': 1, 'filter': 'box'},
              'objects': [{'file': 'quad.obj',
                           'material': {'type': 'emissive', 'radiance': texture}}]}
-    path = os.path.join(work, 'scene.json')
-    with open(path, 'w') as f:
-        json.dump(scene, f)
-    out = os.path.join(work, 'candela.pfm')
-    t = time.perf_counter()
-    subprocess.run([binary, 'render', path, '-o', out, '-q', '--backend', 'cpu'], check=True)
-    return read_pfm(out, np.float64), time.perf_counter() - t
+    return candela_run.render(binary, scene, work, 'candela', dtype=np.float64)
 
 
 def mitsuba(work, wrap, filt, spp):
@@ -168,8 +160,7 @@ def report(name, c, m, ref, keep):
 def main():
     ap = argparse.ArgumentParser(description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument('--candela', default=os.path.join(os.path.dirname(__file__), '..', 'build',
-                                                      'candela'))
+    candela_run.add_candela_option(ap)
     ap.add_argument('--spp', type=int, default=64)
     a = ap.parse_args()
     mi.set_variant('scalar_rgb')
