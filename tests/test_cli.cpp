@@ -302,6 +302,7 @@ TEST_F(CliTest, InfoPrintsTheSceneCounts) {
       << r.out;
   EXPECT_NE(r.out.find("image:      32x24, 8 spp\n"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("bvh:"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("animation:"), std::string::npos) << r.out;
 }
 
 TEST_F(CliTest, TinyRenderWritesTheImageAndASummary) {
@@ -422,6 +423,25 @@ std::string animatedScene(int frames, const std::string& tracks) {
   "lights": [{"id": "lamp", "position": [0, 3, 3], "intensity": 100}],
   "animation": {"frames": )" +
          std::to_string(frames) + R"(, "tracks": [)" + tracks + "]}}";
+}
+
+TEST_F(CliTest, InfoPrintsTheAnimationAndItsShutter) {
+  const std::string track =
+      R"({"target": "camera", "property": "position", "keys": [[0, [0, 0, 5]], [3, [1, 0, 5]]]})";
+  writeFile("anim.json", animatedScene(4, track));
+  RunResult r = run("info anim.json");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("animation:  4 frames at 24 fps, 1 track\n"), std::string::npos) << r.out;
+  std::string blurred = animatedScene(1, track);
+  blurred.replace(blurred.find(R"("tracks")"), 0,
+                  R"("fps": 30, "shutter": 0.5, "rolling_shutter": {"row_exposure": 0.1}, )");
+  writeFile("blurred.json", blurred);
+  r = run("info blurred.json");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("animation:  1 frame at 30 fps, 1 track; shutter open from -0.25 to +0.25 "
+                       "frames, rolling (each row 10% of it)\n"),
+            std::string::npos)
+      << r.out;
 }
 
 // A camera that becomes unusable at the last frame (fov -> 1e-38) is found before any frame is

@@ -1,5 +1,5 @@
 // `candela info`: loads and flattens the scene (building its BVH) and prints, one per line,
-// the scene's counts, world bounds, image size, samples and the BVH statistics.
+// the scene's counts, world bounds, image size, samples, its animation and the BVH statistics.
 #include "apps/cli/info_command.h"
 
 #include <cstdio>
@@ -10,6 +10,24 @@
 #include "scene/read/scene_loader.h"
 
 namespace candela::cli {
+namespace {
+
+// "animation:  48 frames at 24 fps, 2 tracks", and the shutter where it is open: its opening and
+// closing in frames about each frame, and a rolling shutter's rows.
+void printAnimation(const AnimationDesc& animation) {
+  const size_t tracks = animation.tracks.size();
+  std::printf("animation:  %u frame%s at %g fps, %zu track%s", animation.frames,
+              animation.frames == 1 ? "" : "s", animation.fps, tracks, tracks == 1 ? "" : "s");
+  if (animation.shutterClose > animation.shutterOpen) {
+    std::printf("; shutter open from %+g to %+g frames", animation.shutterOpen,
+                animation.shutterClose);
+    if (animation.rowExposure < 1.0f)
+      std::printf(", rolling (each row %g%% of it)", 100.0 * animation.rowExposure);
+  }
+  std::printf("\n");
+}
+
+}  // namespace
 
 CLI::App* addInfoCommand(CLI::App& app, InfoOptions* options) {
   CLI::App* cmd = app.add_subcommand("info", "Print a scene's contents and BVH statistics");
@@ -62,6 +80,7 @@ int runInfo(const InfoOptions& options) {
       scene.lights.size() - rectangles, points, spots, directional, rectangles, spheres, faces,
       environment ? ", the environment" : "");
   std::printf("materials:  %zu\n", scene.materials.size());
+  if (desc.animation) printAnimation(*desc.animation);
 
   Vec3 lo, hi;
   scene.bounds(&lo, &hi);
