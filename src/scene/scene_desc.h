@@ -82,6 +82,11 @@ struct ObjectDesc {
   // The glTF file's node whose meshes (with its children's) the object holds ("": the file's
   // scene), in the node's own frame.
   std::string gltfNode;
+  // "gltf_animation": the file's animation (by name, or else by number) whose motion of gltfNode
+  // the object follows; loading turns it into the object's position, rotation and scale tracks.
+  bool gltfAnimated = false;
+  std::string gltfAnimationName;
+  int gltfAnimationNumber = 0;
   // The OBJ file's group or object (the faces after a `g` or `o` of this name) the object holds
   // ("": all its faces).
   std::string objGroup;

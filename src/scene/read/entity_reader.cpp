@@ -162,8 +162,9 @@ SphereDesc readSphere(const JsonValue& value, const MaterialLibrary& library,
 
 namespace {
 
-// An object's "gltf_variant" and "gltf_node", which pick a glTF file's materials and nodes, and
-// its "obj_group", which picks an OBJ file's group; `name` is its file as written.
+// An object's "gltf_variant" and "gltf_node", which pick a glTF file's materials and nodes, its
+// "gltf_animation", whose motion of that node it follows, and its "obj_group", which picks an OBJ
+// file's group; `name` is its file as written.
 void readGltfSelection(JsonObject& fields, const std::string& name, ObjectDesc& object) {
   if (std::optional<JsonValue> variant = fields.get("gltf_variant")) {
     object.gltfVariant = variant->string();
@@ -183,6 +184,18 @@ void readGltfSelection(JsonObject& fields, const std::string& name, ObjectDesc& 
     if (!isGltfPath(object.file))
       node->fail("a glTF file's node, and \"" + name + "\" is not a glTF file");
   }
+  if (std::optional<JsonValue> animation = fields.get("gltf_animation")) {
+    if (object.gltfNode.empty())
+      animation->fail("needs \"gltf_node\": the node whose motion in the file the object follows");
+    object.gltfAnimated = true;
+    const std::string expectation = "an animation's name or number, from 0";
+    if (animation->json().is_string()) {
+      object.gltfAnimationName = animation->string();
+      if (object.gltfAnimationName.empty()) animation->failExpected(expectation);
+    } else {
+      object.gltfAnimationNumber = int(animation->integer(0, 1u << 30, expectation));
+    }
+  }
   if (std::optional<JsonValue> group = fields.get("obj_group")) {
     object.objGroup = group->string();
     if (object.objGroup.empty())
@@ -198,9 +211,9 @@ void readGltfSelection(JsonObject& fields, const std::string& name, ObjectDesc& 
 
 ObjectDesc readObject(const JsonValue& value, const MaterialLibrary& library,
                       const std::string& baseDir, TextureLoader& textures) {
-  JsonObject fields(
-      value, {"id", "file", "shape", "position", "rotation", "scale", "transform", "material",
-              "color", "ior", "smooth", "vertex_colors", "gltf_variant", "gltf_node", "obj_group"});
+  JsonObject fields(value, {"id", "file", "shape", "position", "rotation", "scale", "transform",
+                            "material", "color", "ior", "smooth", "vertex_colors", "gltf_variant",
+                            "gltf_node", "gltf_animation", "obj_group"});
   ObjectDesc object;
   object.where = value.path();
   object.id = readId(fields);

@@ -17,6 +17,7 @@
 #include "scene/read/environment_reader.h"
 #include "scene/read/gltf_loader.h"
 #include "scene/read/gltf_nodes.h"
+#include "scene/read/gltf_object_animation.h"
 #include "scene/read/gltf_scene.h"
 #include "scene/read/gltf_variants.h"
 #include "scene/read/json_parse.h"
@@ -246,6 +247,7 @@ SceneDesc parseSceneText(const std::string& text, const std::string& fileLabel,
   if (std::optional<JsonValue> animation = top.get("animation"))
     scene.animation = readAnimation(*animation, scene);
   followGltfAnimation(scene);
+  followGltfObjectAnimations(scene);
   warnOfMotionNotBlurred(scene);
   const bool cameraAnimated =
       scene.animation && std::any_of(scene.animation->tracks.begin(), scene.animation->tracks.end(),
