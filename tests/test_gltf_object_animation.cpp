@@ -6,6 +6,7 @@
 #include <cmath>
 #include <string>
 
+#include "core/constants.h"
 #include "core/rotation.h"
 #include "gltf_test_util.h"
 #include "scene/animation.h"
@@ -19,8 +20,6 @@ namespace {
 using test::GltfFile;
 using test::TempDir;
 
-constexpr double kPiD = 3.14159265358979323846;
-
 // A triangle node "car" at (0, 0, 5) under a parent at (1, 2, 3); its animation "drive" moves it
 // to (2, 0, 5) and turns it 90 degrees about +y over one second (LINEAR), and "spin" turns it a
 // whole turn about +y in four quarter-turn keys.
@@ -33,7 +32,7 @@ GltfFile animatedCar() {
   f.doc["scenes"] = {{{"nodes", {0}}}};
   const int times = f.addFloats({0, 1}, "SCALAR", 1);
   const int moves = f.addFloats({0, 0, 5, 2, 0, 5}, "VEC3", 3);
-  const double s = std::sin(kPiD / 4), c = std::cos(kPiD / 4);
+  const double s = std::sin(kPiDouble / 4), c = std::cos(kPiDouble / 4);
   const int turns = f.addFloats({0, 0, 0, 1, 0, float(s), 0, float(c)}, "VEC4", 4);
   const int quarters = f.addFloats({0, 1, 2, 3, 4}, "SCALAR", 1);
   const int spin = f.addFloats(
