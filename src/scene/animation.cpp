@@ -93,16 +93,21 @@ void applyToLight(LightDesc& light, AnimProperty property, const Vec3& v) {
   }
 }
 
+// The index k of the keys a and b = keys[k + 1] around `time`, strictly inside the keyed range:
+// keys[k].frame <= time < keys[k + 1].frame, by bisection.
+size_t keyBefore(const std::vector<AnimKey>& keys, double time) {
+  const auto after = std::upper_bound(keys.begin(), keys.end(), time,
+                                      [](double t, const AnimKey& key) { return t < key.frame; });
+  return size_t(after - keys.begin()) - 1;
+}
+
 }  // namespace
 
 Vec3 evaluateTrack(const AnimTrack& track, uint32_t frame) {
   const std::vector<AnimKey>& keys = track.keys;
   if (frame <= keys.front().frame) return keys.front().value;
   if (frame >= keys.back().frame) return keys.back().value;
-  // The last key at or before `frame`, by bisection: keys[k].frame <= frame < keys[k + 1].frame.
-  const auto after = std::upper_bound(keys.begin(), keys.end(), frame,
-                                      [](uint32_t f, const AnimKey& key) { return f < key.frame; });
-  const size_t k = size_t(after - keys.begin()) - 1;
+  const size_t k = keyBefore(keys, double(frame));
   const AnimKey& a = keys[k];
   const AnimKey& b = keys[k + 1];
   const float t = float(frame - a.frame) / float(b.frame - a.frame);
@@ -116,9 +121,7 @@ Vec3 evaluateTrackAt(const AnimTrack& track, double time) {
   const std::vector<AnimKey>& keys = track.keys;
   if (time <= double(keys.front().frame)) return keys.front().value;
   if (time >= double(keys.back().frame)) return keys.back().value;
-  const auto after = std::upper_bound(keys.begin(), keys.end(), time,
-                                      [](double t, const AnimKey& key) { return t < key.frame; });
-  const size_t k = size_t(after - keys.begin()) - 1;
+  const size_t k = keyBefore(keys, time);
   const AnimKey& a = keys[k];
   const AnimKey& b = keys[k + 1];
   const float t = float((time - a.frame) / double(b.frame - a.frame));
@@ -151,11 +154,7 @@ std::vector<double> shutterTimes(const AnimationDesc& animation, uint32_t frame)
 
 CameraDesc cameraAtFrame(const CameraDesc& camera, const AnimationDesc& animation,
                          uint32_t frame) {
-  CameraDesc result = camera;
-  for (const AnimTrack& track : animation.tracks)
-    if (track.target == AnimTarget::Camera)
-      applyToCamera(result, track.property, evaluateTrack(track, frame));
-  return result;
+  return cameraAtTime(camera, animation, double(frame));  // a whole time: each track's frame value
 }
 
 LightDesc lightAtFrame(const LightDesc& light, uint32_t index, const AnimationDesc& animation,
