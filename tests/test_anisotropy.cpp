@@ -146,7 +146,7 @@ TEST(Anisotropy, ALightVertexKeepsItsTangent) {
     SampleStream rng(1, i, 0, 1);
     RayCounters counters;
     LightVertex lv;
-    traceLightVertex(view, tracer, rng, counters, &lv);
+    traceLightVertex(view, tracer, rng, counters, 0.0f, &lv);
     if (!lv.valid) continue;
     ++valid;
     EXPECT_NEAR(std::fabs(dot(normalize(lv.tangent), expected)), 1.0f, 1e-5f) << i;

@@ -182,6 +182,26 @@ TEST(CudaBackend, MatchesCpuUnderMotionBlur) {
   EXPECT_EQ(cpu.rays.camera, gpu.rays.camera);
 }
 
+// Spheres and objects that move while the shutter is open (geometry/motion.h): the device traces
+// the motion BVH and poses the surfaces at each ray's time as the CPU does.
+TEST(CudaBackend, MatchesCpuWithMovingShapes) {
+  REQUIRE_GPU();
+  std::string json = sceneWithEverything(16);
+  json.replace(json.find(R"({"position": [-1.2, 0.5, 0])"), 1, R"({"id": "ball", )");
+  json.erase(json.rfind('}'));
+  json += R"(, "objects": [{"id": "box", "shape": "cube", "position": [0, 1.6, 0], "scale": 0.4}],
+    "animation": {"frames": 2, "shutter": [0, 1], "tracks": [
+      {"target": "ball", "property": "position", "keys": [[0, [-1.2, 0.5, 0]], [1, [-0.4, 0.9, 0]]]},
+      {"target": "box", "property": "rotation", "keys": [[0, [0, 0, 0]], [1, [30, 90, 0]]]}]}})";
+  const SceneData data = flattenScene(sceneAtFrame(parseSceneText(json, "test.json", "."), 0));
+  ASSERT_FALSE(data.motionNodes.empty());
+  ASSERT_TRUE(data.cameraPoses.empty());
+  const RenderResult cpu = renderCpu(data.view(), RenderOptions{});
+  const RenderResult gpu = renderCuda(data);
+  EXPECT_LT(test::relMseAgainst(cpu.image.pixels, gpu.image.pixels), 1e-4);
+  EXPECT_EQ(cpu.rays.camera, gpu.rays.camera);
+}
+
 // Clear coats (render/bsdf_coat.h), smooth and rough, over diffuse, a rough metal, a mirror and
 // a plastic, and sheen (render/bsdf_sheen.h) under a coat and alone, lit by a lamp, a sphere
 // light and the sky: on the device as on the CPU.

@@ -8,6 +8,7 @@
 #include "core/rng.h"
 #include "core/texture.h"
 #include "geometry/geometry_view.h"
+#include "geometry/motion.h"
 #include "geometry/ray.h"
 #include "geometry/surface_uv.h"
 
@@ -32,10 +33,10 @@ CANDELA_HDI float alphaThreshold(const GeometryView& scene, const Triangle& tri,
   return toUnitFloat(mix64(corners ^ ray.alphaKey));
 }
 
-// The alpha of triangle `tri` at barycentrics (b1, b2) for a ray along `direction`, in [0, 1];
-// the scene must have masks.
+// The alpha of triangle `tri` at barycentrics (b1, b2) for `ray`, in [0, 1]; the scene must have
+// masks.
 CANDELA_HDI float triangleAlpha(const GeometryView& scene, const Triangle& tri, float b1, float b2,
-                                const Vec3& direction) {
+                                const Ray& ray) {
   const AlphaMask& mask = scene.alphaMasks[tri.material];
   float alpha = mask.constant;
   if (mask.texture.index >= 0) {
@@ -44,8 +45,10 @@ CANDELA_HDI float triangleAlpha(const GeometryView& scene, const Triangle& tri, 
     alpha *= textureChannel(s, mask.channel);
   }
   if (mask.thinSheetIor > 0.0f) {
-    const Vec3 p0 = scene.positions[tri.v[0]];
-    const Vec3 normal = cross(scene.positions[tri.v[1]] - p0, scene.positions[tri.v[2]] - p0);
+    Vec3 p[3];
+    triangleCornersAt(scene, tri, ray.time, p);
+    const Vec3 normal = cross(p[1] - p[0], p[2] - p[0]);
+    const Vec3& direction = ray.direction;
     const float cosTheta = fabsf(dot(normal, direction)) / (length(normal) * length(direction));
     alpha *= thinSheetReflectance(minf(cosTheta, 1.0f), mask.thinSheetIor);
   }
@@ -56,7 +59,7 @@ CANDELA_HDI float triangleAlpha(const GeometryView& scene, const Triangle& tri, 
 // Out of line: inlined into traversal, it slowed scenes without any mask by a tenth.
 CANDELA_HD_COLD inline bool maskedAlphaKeepsHit(const GeometryView& scene, const Triangle& tri,
                                                 float b1, float b2, const Ray& ray) {
-  const float alpha = triangleAlpha(scene, tri, b1, b2, ray.direction);
+  const float alpha = triangleAlpha(scene, tri, b1, b2, ray);
   if (alpha >= 1.0f) return true;
   if (!(alpha > 0.0f)) return false;
   return alphaThreshold(scene, tri, ray) < alpha;

@@ -592,11 +592,13 @@ struct RootBounds {
 
 }  // namespace
 
-BvhBuildResult buildBvh(const Sphere* spheres, uint32_t sphereCount, const Vec3* positions,
-                        const Triangle* triangles, uint32_t triangleCount) {
+namespace {
+
+// The build over primCount primitives whose boxes and indices boxOf(p, &index) gives.
+template <class BoxOf>
+BvhBuildResult buildOver(uint32_t primCount, const BoxOf& boxOf) {
   const auto start = std::chrono::steady_clock::now();
   BvhBuildResult result;
-  const uint32_t primCount = sphereCount + triangleCount;
   if (primCount > 0) {
     // 1. Primitive bounds, root bounds and root centroid bounds in one parallel pass.
     // Default-initialised (not zeroed): the pass below writes every element, in parallel.
@@ -605,10 +607,9 @@ BvhBuildResult buildBvh(const Sphere* spheres, uint32_t sphereCount, const Vec3*
         tbb::blocked_range<uint32_t>(0, primCount, 4096), RootBounds(),
         [&](const tbb::blocked_range<uint32_t>& r, RootBounds acc) {
           for (uint32_t p = r.begin(); p < r.end(); ++p) {
-            const Bounds3 b = p < sphereCount
-                                  ? sphereBounds(spheres[p])
-                                  : triangleBounds(positions, triangles[p - sphereCount]);
-            prims[p] = BuildPrim(b, p);
+            uint32_t index;
+            const Bounds3 b = boxOf(p, &index);
+            prims[p] = BuildPrim(b, index);
             acc.bounds.grow(prims[p].lower(), prims[p].upper());
             acc.centroids.grow(prims[p].centroid2());
           }
@@ -641,6 +642,24 @@ BvhBuildResult buildBvh(const Sphere* spheres, uint32_t sphereCount, const Vec3*
   result.buildSeconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
+}
+
+}  // namespace
+
+BvhBuildResult buildBvh(const Sphere* spheres, uint32_t sphereCount, const Vec3* positions,
+                        const Triangle* triangles, uint32_t triangleCount) {
+  return buildOver(sphereCount + triangleCount, [&](uint32_t p, uint32_t* index) {
+    *index = p;
+    return p < sphereCount ? sphereBounds(spheres[p])
+                           : triangleBounds(positions, triangles[p - sphereCount]);
+  });
+}
+
+BvhBuildResult buildBvhOfBoxes(const Bounds3* boxes, const uint32_t* prims, uint32_t count) {
+  return buildOver(count, [&](uint32_t p, uint32_t* index) {
+    *index = prims[p];
+    return boxes[p];
+  });
 }
 
 }  // namespace candela

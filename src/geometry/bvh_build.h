@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "core/vec3.h"
+#include "geometry/aabb.h"
 #include "geometry/bvh_node.h"
 #include "geometry/shapes.h"
 
@@ -59,6 +60,11 @@ std::vector<BvhNode> collapseToWide(const BinaryBvhNode* binary, uint32_t nodeCo
 // result does not depend on the thread count.
 BvhBuildResult buildBvh(const Sphere* spheres, uint32_t sphereCount, const Vec3* positions,
                         const Triangle* triangles, uint32_t triangleCount);
+
+// Builds the BVH of `count` primitives of given boxes: primitive prims[i] (GeometryView numbering)
+// in boxes[i]. For a part of a scene's primitives (those that stand still, or those that move,
+// each in the box of its whole motion: geometry/motion.h).
+BvhBuildResult buildBvhOfBoxes(const Bounds3* boxes, const uint32_t* prims, uint32_t count);
 
 // A tree of one level for benchmarks that measure what the BVH buys: a chain of nodes whose
 // slots are leaves of up to 255 primitives, every box the bounds of the whole scene, so every ray

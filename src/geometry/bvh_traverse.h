@@ -12,9 +12,10 @@
 #include "core/check.h"
 #include "geometry/aabb.h"
 #include "geometry/alpha_test.h"
+#include "geometry/geometry_view.h"
+#include "geometry/motion.h"
 #include "geometry/ray.h"
 #include "geometry/sphere_intersect.h"
-#include "geometry/geometry_view.h"
 #include "geometry/triangle_intersect.h"
 
 namespace candela {
@@ -23,12 +24,20 @@ namespace candela {
 constexpr int kBvhStackSize = 3 * 63 + 1;
 
 // Intersects primitive `prim` (GeometryView numbering) for t in (0, tMax); fills `hit` on a hit.
-// A triangle hit that its material's alpha mask rejects (geometry/alpha_test.h) is no hit.
+// A triangle hit that its material's alpha mask rejects (geometry/alpha_test.h) is no hit. With
+// kMoving the primitive is taken where it stands at the ray's time (geometry/motion.h): the
+// motion BVH's leaves; the scene's BVH holds only primitives that stand still. `step` is
+// motionStepAt of the ray's time (read only with kMoving).
+template <bool kMoving = false>
 CANDELA_HDI bool intersectPrimitive(const GeometryView& scene, const Ray& ray, uint32_t prim,
-                                    float tMax, Hit* hit) {
+                                    float tMax, Hit* hit, MotionStep step = MotionStep()) {
   if (prim < scene.sphereCount) {
     float t;
-    if (!intersectSphere(scene.spheres[prim], ray, tMax, &t)) return false;
+    if constexpr (kMoving) {
+      if (!intersectSphere(sphereAt(scene, prim, step), ray, tMax, &t)) return false;
+    } else if (!intersectSphere(scene.spheres[prim], ray, tMax, &t)) {
+      return false;
+    }
     hit->t = t;
     hit->prim = prim;
     hit->b1 = hit->b2 = 0.0f;
@@ -36,8 +45,12 @@ CANDELA_HDI bool intersectPrimitive(const GeometryView& scene, const Ray& ray, u
   }
   const Triangle& tri = scene.triangles[prim - scene.sphereCount];
   TriangleHit th;
-  if (!intersectTriangle(scene.positions[tri.v[0]], scene.positions[tri.v[1]],
-                         scene.positions[tri.v[2]], ray, tMax, &th)) {
+  if constexpr (kMoving) {
+    Vec3 p[3];
+    triangleCornersAt(scene, tri, step, p);
+    if (!intersectTriangle(p[0], p[1], p[2], ray, tMax, &th)) return false;
+  } else if (!intersectTriangle(scene.positions[tri.v[0]], scene.positions[tri.v[1]],
+                                scene.positions[tri.v[2]], ray, tMax, &th)) {
     return false;
   }
   if (!alphaKeepsHit(scene, tri, th.b1, th.b2, ray)) return false;  // masked out: not a surface
@@ -66,23 +79,30 @@ namespace detail {
 // before its box (docs/performance.md has why they are not sorted); inner children that are hit
 // are visited nearest first, the others pushed with their entry distances, so that once a nearer
 // hit is known a popped subtree that starts beyond it is skipped without touching its node.
-CANDELA_HDI bool traverseBvh(const GeometryView& scene, const Ray& ray, bool anyHit, uint32_t skipPrim,
-                             Hit* hit) {
+// kMoving: the motion BVH (motionNodes over motionPrimIndices) with its primitives at the ray's
+// time, the ray only up to `tMax`; otherwise the scene's BVH up to ray.tMax.
+template <bool kMoving>
+CANDELA_HDI bool traverseBvh(const GeometryView& scene, const Ray& ray, bool anyHit,
+                             uint32_t skipPrim, float tMax, Hit* hit) {
+  const BvhNode* const nodes = kMoving ? scene.motionNodes : scene.nodes;
+  const uint32_t nodeCount = kMoving ? scene.motionNodeCount : scene.nodeCount;
+  const uint32_t* const primIndices = kMoving ? scene.motionPrimIndices : scene.primIndices;
   // A ray with a non-finite origin or direction hits nothing: its slab tests could make NaN,
   // which would count every slot of a node as hit, the empty ones (child kNoBvhChild) included.
   // With finite rays an empty slot's box (lo = +inf, hi = -inf) is always missed.
-  if (scene.nodeCount == 0 || !isFiniteRay(ray)) return false;
+  if (nodeCount == 0 || !isFiniteRay(ray)) return false;
   const RayBoxTester box(
       ray.origin, Vec3(1.0f / ray.direction.x, 1.0f / ray.direction.y, 1.0f / ray.direction.z));
-  float tMax = ray.tMax;
+  MotionStep step;
+  if constexpr (kMoving) step = motionStepAt(scene, ray.time);
   bool found = false;
   uint32_t stackNode[kBvhStackSize];
   float stackEntry[kBvhStackSize];
   int stackSize = 0;
   uint32_t current = 0;
   for (;;) {
-    CANDELA_DCHECK(current < scene.nodeCount);
-    const BvhNode& node = scene.nodes[current];
+    CANDELA_DCHECK(current < nodeCount);
+    const BvhNode& node = nodes[current];
     float entry[4];
     const int hitMask = box.hit4(node.lo, node.hi, tMax, entry);
     const int leafMask = (node.count[0] != 0) | (node.count[1] != 0) << 1 |
@@ -94,10 +114,9 @@ CANDELA_HDI bool traverseBvh(const GeometryView& scene, const Ray& ray, bool any
       const int c = lowestSetBit(uint32_t(leaves));
       if (entry[c] > tMax) continue;
       for (uint32_t i = 0; i < node.count[c]; ++i) {
-        CANDELA_DCHECK(node.child[c] + i < scene.primIndexCount);
-        const uint32_t prim = scene.primIndices[node.child[c] + i];
+        const uint32_t prim = primIndices[node.child[c] + i];
         if (prim == skipPrim) continue;
-        if (intersectPrimitive(scene, ray, prim, tMax, hit)) {
+        if (intersectPrimitive<kMoving>(scene, ray, prim, tMax, hit, step)) {
           if (anyHit) return true;
           found = true;
           tMax = hit->t;  // later candidates must be nearer
@@ -139,10 +158,15 @@ CANDELA_HDI bool traverseBvh(const GeometryView& scene, const Ray& ray, bool any
 
 }  // namespace detail
 
-// Nearest hit of `ray` for t in (0, ray.tMax). On a hit fills `hit` and returns true; on a miss
-// returns false and leaves `hit` untouched.
+// Nearest hit of `ray` for t in (0, ray.tMax), among the primitives that stand still and then
+// those that move (at the ray's time) up to the nearer hit. On a hit fills `hit` and returns true;
+// on a miss returns false and leaves `hit` untouched.
 CANDELA_HDI bool intersectClosest(const GeometryView& scene, const Ray& ray, Hit* hit) {
-  return detail::traverseBvh(scene, ray, false, 0xffffffffu, hit);
+  const bool found = detail::traverseBvh<false>(scene, ray, false, 0xffffffffu, ray.tMax, hit);
+  if (scene.motionNodeCount == 0) return found;
+  return detail::traverseBvh<true>(scene, ray, false, 0xffffffffu, found ? hit->t : ray.tMax,
+                                   hit) ||
+         found;
 }
 
 // Whether anything but primitive `skipPrim` (0xffffffff: none) blocks `ray` for t in
@@ -150,16 +174,34 @@ CANDELA_HDI bool intersectClosest(const GeometryView& scene, const Ray& ray, Hit
 // that light's own sphere.
 CANDELA_HDI bool intersectAny(const GeometryView& scene, const Ray& ray, uint32_t skipPrim) {
   Hit unused;
-  return detail::traverseBvh(scene, ray, true, skipPrim, &unused);
+  return detail::traverseBvh<false>(scene, ray, true, skipPrim, ray.tMax, &unused) ||
+         (scene.motionNodeCount != 0 &&
+          detail::traverseBvh<true>(scene, ray, true, skipPrim, ray.tMax, &unused));
 }
 
-// Nearest hit by testing every primitive, ignoring the BVH: the reference for tests and
-// benchmarks. Same contract as intersectClosest.
+// The moving primitives' part of intersectClosest, for an engine that traces the others itself:
+// the nearest hit of a moving primitive before `tMax`.
+CANDELA_HDI bool intersectClosestMoving(const GeometryView& scene, const Ray& ray, float tMax,
+                                        Hit* hit) {
+  return scene.motionNodeCount != 0 &&
+         detail::traverseBvh<true>(scene, ray, false, 0xffffffffu, tMax, hit);
+}
+
+// The moving primitives' part of intersectAny.
+CANDELA_HDI bool intersectAnyMoving(const GeometryView& scene, const Ray& ray, uint32_t skipPrim) {
+  Hit unused;
+  return scene.motionNodeCount != 0 &&
+         detail::traverseBvh<true>(scene, ray, true, skipPrim, ray.tMax, &unused);
+}
+
+// Nearest hit by testing every primitive (each where it stands at the ray's time), ignoring the
+// BVHs: the reference for tests and benchmarks. Same contract as intersectClosest.
 CANDELA_HDI bool intersectClosestBruteForce(const GeometryView& scene, const Ray& ray, Hit* hit) {
   float tMax = ray.tMax;
   bool found = false;
+  const MotionStep step = scene.motionTimeCount > 1 ? motionStepAt(scene, ray.time) : MotionStep();
   for (uint32_t prim = 0; prim < scene.primitiveCount(); ++prim) {
-    if (intersectPrimitive(scene, ray, prim, tMax, hit)) {
+    if (intersectPrimitive<true>(scene, ray, prim, tMax, hit, step)) {
       found = true;
       tMax = hit->t;
     }
@@ -170,8 +212,10 @@ CANDELA_HDI bool intersectClosestBruteForce(const GeometryView& scene, const Ray
 // Any-hit by testing every primitive; the reference for intersectAny.
 CANDELA_HDI bool intersectAnyBruteForce(const GeometryView& scene, const Ray& ray, uint32_t skipPrim) {
   Hit unused;
+  const MotionStep step = scene.motionTimeCount > 1 ? motionStepAt(scene, ray.time) : MotionStep();
   for (uint32_t prim = 0; prim < scene.primitiveCount(); ++prim)
-    if (prim != skipPrim && intersectPrimitive(scene, ray, prim, ray.tMax, &unused)) return true;
+    if (prim != skipPrim && intersectPrimitive<true>(scene, ray, prim, ray.tMax, &unused, step))
+      return true;
   return false;
 }
 

@@ -12,6 +12,13 @@
 //   traversal read it; `alphaMasks` is empty when no material is masked, else one per material.
 // - Primitive index p in [0, sphereCount) is spheres[p]; p >= sphereCount is triangle
 //   p - sphereCount. The BVH leaves index `primIndices`, which hold such primitive indices.
+// - Primitives that move while the shutter is open (motion blur: geometry/motion.h) are left out
+//   of that BVH and kept in one of their own, `motionNodes` over `motionPrimIndices`, whose boxes
+//   hold each primitive's whole sweep. Their arrays above hold them at the frame's time; at
+//   `motionTimes` (increasing from 0, the shutter's opening, to 1, its closing) a moving vertex v
+//   is at motionPositions[vertexMotions[v] + k] (with motionNormals parallel, where there are
+//   normals), a moving sphere s is motionSpheres[sphereMotions[s] + k]; kStill marks the others.
+//   All are empty in a scene where nothing moves.
 #pragma once
 
 #include <cstdint>
@@ -34,19 +41,27 @@ namespace candela {
 // change (the alpha masks follow the materials), Motion for what moving primitives change (a
 // refit), Structure for what only a rebuild changes, TexturePool for the pool, which changes with
 // the textures' contents alone (frames that keep them keep it, across rebuilds too).
-#define CANDELA_GEOMETRY_ARRAYS(X)                    \
-  X(Sphere, spheres, sphereCount, Motion)             \
-  X(Vec3, positions, positionCount, Motion)           \
-  X(OctNormal, normals, normalCount, Motion)          \
-  X(Vec2, uvs, uvCount, Structure)                    \
-  X(Triangle, triangles, triangleCount, Structure)    \
-  X(BvhNode, nodes, nodeCount, Motion)                \
-  X(uint32_t, primIndices, primIndexCount, Structure) \
-  X(AlphaMask, alphaMasks, alphaMaskCount, Values)    \
-  X(Texture, textures, textureCount, TexturePool)     \
-  X(uint8_t, texels8, texel8Count, TexturePool)       \
-  X(float, texelsF, texelFCount, TexturePool)         \
-  X(float, srgbToLinear, srgbToLinearCount, TexturePool)
+#define CANDELA_GEOMETRY_ARRAYS(X)                          \
+  X(Sphere, spheres, sphereCount, Motion)                   \
+  X(Vec3, positions, positionCount, Motion)                 \
+  X(OctNormal, normals, normalCount, Motion)                \
+  X(Vec2, uvs, uvCount, Structure)                          \
+  X(Triangle, triangles, triangleCount, Structure)          \
+  X(BvhNode, nodes, nodeCount, Motion)                      \
+  X(uint32_t, primIndices, primIndexCount, Structure)       \
+  X(AlphaMask, alphaMasks, alphaMaskCount, Values)          \
+  X(Texture, textures, textureCount, TexturePool)           \
+  X(uint8_t, texels8, texel8Count, TexturePool)             \
+  X(float, texelsF, texelFCount, TexturePool)               \
+  X(float, srgbToLinear, srgbToLinearCount, TexturePool)    \
+  X(float, motionTimes, motionTimeCount, Structure)         \
+  X(uint32_t, vertexMotions, vertexMotionCount, Structure)  \
+  X(Vec3, motionPositions, motionPositionCount, Structure)  \
+  X(OctNormal, motionNormals, motionNormalCount, Structure) \
+  X(uint32_t, sphereMotions, sphereMotionCount, Structure)  \
+  X(Sphere, motionSpheres, motionSphereCount, Structure)    \
+  X(BvhNode, motionNodes, motionNodeCount, Structure)       \
+  X(uint32_t, motionPrimIndices, motionPrimIndexCount, Structure)
 
 #define CANDELA_VIEW_ARRAY_FIELDS(Type, name, count, rewrittenBy) \
   const Type* name = nullptr;                                     \

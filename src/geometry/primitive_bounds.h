@@ -3,6 +3,8 @@
 
 #include "core/float_error.h"
 #include "geometry/aabb.h"
+#include "geometry/geometry_view.h"
+#include "geometry/motion.h"
 #include "geometry/shapes.h"
 
 namespace candela {
@@ -29,6 +31,24 @@ inline Bounds3 primitiveBounds(uint32_t p, const Sphere* spheres, uint32_t spher
                                const Vec3* positions, const Triangle* triangles) {
   return p < sphereCount ? sphereBounds(spheres[p])
                          : triangleBounds(positions, triangles[p - sphereCount]);
+}
+
+// The box of primitive p (GeometryView numbering) over its whole motion, every pose of it
+// (geometry/motion.h): between two poses each vertex moves on a line, which the two boxes hold.
+inline Bounds3 sweptBounds(const GeometryView& scene, uint32_t p) {
+  if (p < scene.sphereCount) {
+    if (!sphereMoves(scene, p)) return sphereBounds(scene.spheres[p]);
+    const Sphere* poses = scene.motionSpheres + scene.sphereMotions[p];
+    Bounds3 b = sphereBounds(poses[0]);
+    for (uint32_t k = 1; k < scene.motionTimeCount; ++k) b.grow(sphereBounds(poses[k]));
+    return b;
+  }
+  const Triangle& t = scene.triangles[p - scene.sphereCount];
+  if (!triangleMoves(scene, t)) return triangleBounds(scene.positions, t);
+  Bounds3 b(scene.motionPositions[scene.vertexMotions[t.v[0]]]);
+  for (uint32_t k = 0; k < scene.motionTimeCount; ++k)
+    for (int c = 0; c < 3; ++c) b.grow(scene.motionPositions[scene.vertexMotions[t.v[c]] + k]);
+  return b;
 }
 
 }  // namespace candela

@@ -16,6 +16,9 @@ struct Ray {
   // path casts it (SampleStream::rayKey), so that it does not depend on the ray's rounding; 0
   // in a scene without alpha masks, where nothing reads it (render/ray_kind.h, rayKeyFor).
   uint32_t alphaKey = 0;
+  // When the ray is cast, from 0 (the shutter opens) to 1 (it closes): where moving primitives
+  // stand for it (geometry/motion.h). Every ray of a sample's paths carries its camera ray's.
+  float time = 0.0f;
 };
 
 // What traversal reports: the nearest primitive and where on it. Surface data (normals, error

@@ -16,6 +16,7 @@
 #include "core/float_error.h"
 #include "core/vec3.h"
 #include "geometry/geometry_view.h"
+#include "geometry/motion.h"
 #include "geometry/ray.h"
 #include "geometry/surface_uv.h"
 
@@ -30,6 +31,8 @@ struct SurfacePoint {
   // describe (terminatorLift), on the side they face; zero elsewhere.
   Vec3 lift = Vec3(0.0f);
   uint32_t material;
+  // The time of the ray that found the point (Ray::time): the rays that leave it take it on.
+  float time = 0.0f;
 };
 
 // Hanika 2021, "Hacking the Shadow Terminator": p (barycentrics b of the face with vertices v
@@ -78,39 +81,54 @@ CANDELA_HDI SurfacePoint sphereSurfaceAt(const Sphere& s, const Ray& ray, float 
   return sp;
 }
 
+// The surface of triangle `tri` at barycentrics (b1, b2) at `time` (where it moves: geometry/
+// motion.h).
 CANDELA_HDI SurfacePoint triangleSurfaceAt(const GeometryView& scene, const Triangle& tri, float b1,
-                                           float b2) {
+                                           float b2, float time) {
   SurfacePoint sp;
-  const Vec3& p0 = scene.positions[tri.v[0]];
-  const Vec3& p1 = scene.positions[tri.v[1]];
-  const Vec3& p2 = scene.positions[tri.v[2]];
+  const bool moves = triangleMoves(scene, tri);
+  const MotionStep step = moves ? motionStepAt(scene, time) : MotionStep();
+  Vec3 p[3];
+  triangleCornersAt(scene, tri, step, p);
   const float b0 = 1.0f - b1 - b2;
-  sp.p = trianglePoint(p0, p1, p2, b1, b2, &sp.error);
-  sp.ng = normalize(cross(p1 - p0, p2 - p0));
+  sp.p = trianglePoint(p[0], p[1], p[2], b1, b2, &sp.error);
+  sp.ng = normalize(cross(p[1] - p[0], p[2] - p[0]));
   sp.ns = sp.ng;
   if (scene.normalCount != 0) {
     const OctNormal n0 = scene.normals[tri.v[0]];
     const OctNormal n1 = scene.normals[tri.v[1]];
     const OctNormal n2 = scene.normals[tri.v[2]];
     if (!n0.isNone() && !n1.isNone() && !n2.isNone()) {
-      const Vec3 d0 = decodeOctNormal(n0), d1 = decodeOctNormal(n1), d2 = decodeOctNormal(n2);
-      const Vec3 n = b0 * d0 + b1 * d1 + b2 * d2;
+      Vec3 d[3];
+      if (moves) {
+        for (int k = 0; k < 3; ++k) d[k] = movingNormal(scene, tri.v[k], step);
+      } else {
+        d[0] = decodeOctNormal(n0), d[1] = decodeOctNormal(n1), d[2] = decodeOctNormal(n2);
+      }
+      const Vec3 n = b0 * d[0] + b1 * d[1] + b2 * d[2];
       // Opposite vertex normals can cancel; the face normal is the only sensible fallback.
       if (lengthSquared(n) > 0.0f) sp.ns = faceForward(normalize(n), sp.ng);
       // Normals on both sides of the face describe no surface to raise the point to.
-      const float s0 = dot(d0, sp.ng), s1 = dot(d1, sp.ng), s2 = dot(d2, sp.ng);
+      const float s0 = dot(d[0], sp.ng), s1 = dot(d[1], sp.ng), s2 = dot(d[2], sp.ng);
       if ((s0 > 0.0f && s1 > 0.0f && s2 > 0.0f) || (s0 < 0.0f && s1 < 0.0f && s2 < 0.0f))
-        sp.lift = terminatorLift(sp.p, {p0, p1, p2}, {d0, d1, d2}, {b0, b1, b2});
+        sp.lift = terminatorLift(sp.p, p, d, {b0, b1, b2});
     }
   }
   sp.material = tri.material;
+  sp.time = time;
   return sp;
 }
 
-// The surface at `hit`, which `ray` found (intersectClosest or intersectPrimitive).
+// The surface at `hit`, which `ray` found (intersectClosest or intersectPrimitive), at the ray's
+// time.
 CANDELA_HDI SurfacePoint surfaceAt(const GeometryView& scene, const Ray& ray, const Hit& hit) {
-  if (hit.prim < scene.sphereCount) return sphereSurfaceAt(scene.spheres[hit.prim], ray, hit.t);
-  return triangleSurfaceAt(scene, scene.triangles[hit.prim - scene.sphereCount], hit.b1, hit.b2);
+  if (hit.prim < scene.sphereCount) {
+    SurfacePoint sp = sphereSurfaceAt(sphereAt(scene, hit.prim, ray.time), ray, hit.t);
+    sp.time = ray.time;
+    return sp;
+  }
+  return triangleSurfaceAt(scene, scene.triangles[hit.prim - scene.sphereCount], hit.b1, hit.b2,
+                           ray.time);
 }
 
 // The texture coordinates at `hit` (geometry/surface_uv.h), whose surface is `sp`: computed only

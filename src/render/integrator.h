@@ -48,6 +48,7 @@ CANDELA_HDI_ALWAYS Ray spawnRay(const SurfacePoint& sp, const Vec3& wi, uint32_t
   r.origin = offsetRayOrigin(sp.p, sp.error, sp.ng, wi);
   r.direction = wi;
   r.alphaKey = key;
+  r.time = sp.time;
   return r;
 }
 
@@ -262,6 +263,7 @@ CANDELA_HDI bool scatterInMedium(const SceneView& scene, const Material& inside,
     ShadowQuery& shadow = lights->query.emplace(0);
     lights->count = 1;
     estimateDirectInMedium(scene, inside, p, st.ray.direction, st.throughput, rng, &shadow);
+    shadow.ray.time = st.ray.time;
     shadow.medium = st.medium;
     counters.shadow += shadow.active;
     if constexpr (kAovs) shadow.direct = depth == 1;
@@ -589,7 +591,8 @@ CANDELA_HDI Vec3 traceRadiance(const SceneView& scene, const Tracer& tracer, con
                                SampleStream& rng, RayCounters& counters,
                                FirstHit* first = nullptr) {
   PathState path(scene, ray);
-  if (scene.lightPathLights > 0) traceLightVertex(scene, tracer, rng, counters, &path.lightVertex);
+  if (scene.lightPathLights > 0)
+    traceLightVertex(scene, tracer, rng, counters, ray.time, &path.lightVertex);
   return finishPath<kAovs>(scene, tracer, &path, rng, counters, first);
 }
 

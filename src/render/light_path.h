@@ -162,11 +162,11 @@ CANDELA_HDI uint32_t pickLightPathLight(const SceneView& scene, float u) {
 
 // Starts the sample's light subpath, from the stream's next dimensions (one for the pick where
 // more than one light may start it, two for the direction, and where lights with a surface start
-// subpaths two for the point, which a point light passes over), and records its first vertex in
-// *lv (valid only where that surface may be connected to).
+// subpaths two for the point, which a point light passes over), at the camera ray's `time`, and
+// records its first vertex in *lv (valid only where that surface may be connected to).
 template <class Tracer>
 CANDELA_HDI void traceLightVertex(const SceneView& scene, const Tracer& tracer, SampleStream& rng,
-                                  RayCounters& counters, LightVertex* lv) {
+                                  RayCounters& counters, float time, LightVertex* lv) {
   const float uPick = scene.lightPathLights > 1 ? rng.next1D() : 0.0f;
   float u1, u2;
   rng.next2D(&u1, &u2);
@@ -192,6 +192,7 @@ CANDELA_HDI void traceLightVertex(const SceneView& scene, const Tracer& tracer, 
                                         : sampleUniformCone(u1, u2, 2.0f);  // the whole sphere
   }
   ray.alphaKey = rayKeyFor(scene, rng, kLightRay);
+  ray.time = time;
   Hit hit;
   ++counters.bounce;
   if (!tracer.closest(ray, &hit)) return;
@@ -286,6 +287,7 @@ CANDELA_HDI void connectLightVertex(const SceneView& scene, LightVertex* vertex,
   query->ray.direction = span / length;
   query->ray.tMax = length * (1.0f - kShadowEpsilon);
   query->ray.alphaKey = key;
+  query->ray.time = sp.time;
   query->active = true;
 }
 

@@ -25,6 +25,9 @@ struct MeshInstance {
   // The MeshPrototype this object repeats (-1: its mesh is its own). Instances of one prototype
   // have the same triangles, up to a shift of their vertex indices by firstVertex.
   int32_t prototype = -1;
+  // Whether it moves while the shutter is open: its triangles are the motion BVH's
+  // (geometry/motion.h), not the engine's.
+  bool moves = false;
 };
 
 // A mesh that several objects repeat.

@@ -28,11 +28,12 @@ CANDELA_HDI Ray cameraSample(const SceneView& scene, uint32_t x, uint32_t y, Sam
   const float px = float(scene.camera.windowX + x * stride + offset) + *jx;
   const float py = float(scene.camera.windowY + y * stride + offset) + *jy;
   Ray ray;
-  // Only a camera that moves while the shutter is open draws a time, so that a still camera's
-  // samples keep the numbers they had before motion blur existed.
+  // Only a frame whose camera or geometry moves while the shutter is open draws a time, so that
+  // the samples of every other keep the numbers they had before motion blur existed.
+  float time = 0.0f;
+  if (scene.cameraPoseCount > 1 || scene.motionTimeCount > 1)
+    time = py * scene.camera.shutterRowSlope + rng.next1D() * scene.camera.shutterRowShare;
   if (scene.cameraPoseCount > 1) {
-    const float time =
-        py * scene.camera.shutterRowSlope + rng.next1D() * scene.camera.shutterRowShare;
     const Camera posed =
         cameraAtShutterTime(scene.camera, scene.cameraPoses, scene.cameraPoseCount, time);
     ray = generateCameraRay(posed, px, py, lensU, lensV);
@@ -41,6 +42,7 @@ CANDELA_HDI Ray cameraSample(const SceneView& scene, uint32_t x, uint32_t y, Sam
     ray = generateCameraRay(scene.camera, px, py, lensU, lensV);
     *eye = scene.camera.position;
   }
+  ray.time = time;
   ray.alphaKey = rayKeyFor(scene, rng, kCameraRay);
   return ray;
 }
@@ -103,7 +105,7 @@ CANDELA_HDI void renderPacket(const SceneView& scene, const Tracer& tracer, uint
     paths.emplace(i, scene, rays[i]);
     lights.emplace(i);
     if (scene.lightPathLights > 0)
-      traceLightVertex(scene, tracer, rng[i], counters, &paths[i].lightVertex);
+      traceLightVertex(scene, tracer, rng[i], counters, rays[i].time, &paths[i].lightVertex);
     ShadowQuery connect;
     goesOn[i] = interact<kAovs>(scene, &paths[i], hits[i].valid(), hits[i], rng[i], counters,
                                 &first[kAovs ? i : 0], &lights[i], &connect) ||

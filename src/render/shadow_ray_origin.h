@@ -44,6 +44,7 @@ CANDELA_HD_NOINLINE inline Ray raisedShadowRay(const SurfacePoint& sp, const Vec
   ray.origin = raisedShadowRayOrigin(sp, w);
   ray.direction = w;
   ray.alphaKey = key;
+  ray.time = sp.time;
   if (distance < kInfinity) {
     const Vec3 span = (sp.p + w * distance) - ray.origin;
     const float length = sqrtf(dot(span, span));

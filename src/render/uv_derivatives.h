@@ -26,7 +26,7 @@ CANDELA_HDI bool uvDerivatives(const SceneView& scene, const Hit& hit, const Sur
     const float sinTheta = length(*dpdu);
     if (!(sinTheta > 0.0f)) return false;
     if (exact) {
-      const float r = scene.spheres[hit.prim].radius;
+      const float r = sphereAt(scene, hit.prim, sp.time).radius;
       *dpdu = (2.0f * kPi * r) * *dpdu;
       *dpdv = (kPi * r / sinTheta) * *dpdv;
     }
@@ -34,9 +34,10 @@ CANDELA_HDI bool uvDerivatives(const SceneView& scene, const Hit& hit, const Sur
   }
   if (scene.uvCount == 0) return false;
   const Triangle& tri = scene.triangles[hit.prim - scene.sphereCount];
-  const Vec3& p0 = scene.positions[tri.v[0]];
+  Vec3 p[3];
+  triangleCornersAt(scene, tri, sp.time, p);
   const Vec2 &t0 = scene.uvs[tri.v[0]], &t1 = scene.uvs[tri.v[1]], &t2 = scene.uvs[tri.v[2]];
-  const Vec3 e1 = scene.positions[tri.v[1]] - p0, e2 = scene.positions[tri.v[2]] - p0;
+  const Vec3 e1 = p[1] - p[0], e2 = p[2] - p[0];
   const Vec2 d1(t1.x - t0.x, t1.y - t0.y), d2(t2.x - t0.x, t2.y - t0.y);
   const float det = d1.x * d2.y - d1.y * d2.x;
   if (!(fabsf(det) > 0.0f)) return false;

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "render/bsdf.h"
 #include "render/material_prepare.h"
 
 namespace candela {
@@ -136,11 +137,32 @@ CameraDesc cameraAtTime(const CameraDesc& camera, const AnimationDesc& animation
   return result;
 }
 
+namespace {
+
+// Whether `track` moves what an open shutter blurs: the camera, an object's placement, a sphere.
+bool blurs(const AnimTrack& track) {
+  switch (track.target) {
+    case AnimTarget::Camera:
+      return true;
+    case AnimTarget::Object:
+      return track.property == AnimProperty::Position || track.property == AnimProperty::Rotation ||
+             track.property == AnimProperty::Scale;
+    case AnimTarget::Sphere:
+      return track.property == AnimProperty::Position || track.property == AnimProperty::Radius;
+    case AnimTarget::Light:
+      return false;
+  }
+  return false;
+}
+
+bool same(const Vec3& a, const Vec3& b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
+
+}  // namespace
+
 std::vector<double> shutterTimes(const AnimationDesc& animation, uint32_t frame) {
-  const bool cameraMoves =
-      std::any_of(animation.tracks.begin(), animation.tracks.end(),
-                  [](const AnimTrack& t) { return t.target == AnimTarget::Camera; });
-  if (!(animation.shutterClose > animation.shutterOpen) || !cameraMoves) return {};
+  if (!(animation.shutterClose > animation.shutterOpen) ||
+      std::none_of(animation.tracks.begin(), animation.tracks.end(), blurs))
+    return {};
   const double open = double(frame) + animation.shutterOpen;
   const double close = double(frame) + animation.shutterClose;
   std::vector<double> times;
@@ -157,6 +179,25 @@ CameraDesc cameraAtFrame(const CameraDesc& camera, const AnimationDesc& animatio
   return cameraAtTime(camera, animation, double(frame));  // a whole time: each track's frame value
 }
 
+namespace {
+
+bool emits(const Material& m) { return isEmissive(m) || hasEmission(m); }
+
+bool anyEmits(const std::vector<Material>& materials) {
+  return std::any_of(materials.begin(), materials.end(), emits);
+}
+
+}  // namespace
+
+bool objectEmits(const ObjectDesc& object) {
+  if (object.material) return emits(*object.material) || anyEmits(object.mixParts);
+  return anyEmits(object.mesh->materials) || anyEmits(object.mesh->mixParts);
+}
+
+bool sphereEmits(const SphereDesc& sphere) {
+  return emits(sphere.material) || anyEmits(sphere.mixParts);
+}
+
 LightDesc lightAtFrame(const LightDesc& light, uint32_t index, const AnimationDesc& animation,
                        uint32_t frame) {
   LightDesc result = light;
@@ -166,16 +207,57 @@ LightDesc lightAtFrame(const LightDesc& light, uint32_t index, const AnimationDe
   return result;
 }
 
+namespace {
+
+// Gives the spheres and objects of `result` that the tracks of `animation` move across `times`
+// (in frames) their poses there; those that stay put, and emitters (whose light samples know one
+// place only), get none.
+void poseMovingShapes(const AnimationDesc& animation, const std::vector<double>& times,
+                      const SceneDesc& scene, SceneDesc& result) {
+  for (const AnimTrack& track : animation.tracks) {
+    if (!blurs(track) || track.target == AnimTarget::Camera) continue;
+    if (track.target == AnimTarget::Sphere) {
+      SphereDesc& sphere = result.spheres[track.index];
+      if (!sphere.shutterPoses.empty() || sphereEmits(sphere)) continue;
+      std::vector<SpherePose> poses;
+      for (double time : times) {
+        SphereDesc at = scene.spheres[track.index];
+        for (const AnimTrack& t : animation.tracks)
+          if (t.target == AnimTarget::Sphere && t.index == track.index)
+            applyToSphere(at, t.property, evaluateTrackAt(t, time));
+        poses.push_back({at.position, at.radius});
+      }
+      const auto samePose = [&](const SpherePose& p) {
+        return same(p.position, poses.front().position) && p.radius == poses.front().radius;
+      };
+      if (!std::all_of(poses.begin(), poses.end(), samePose)) sphere.shutterPoses = poses;
+    } else {
+      ObjectDesc& object = result.objects[track.index];
+      if (!object.shutterPoses.empty() || objectEmits(object)) continue;
+      std::vector<ObjectPose> poses;
+      for (double time : times) {
+        ObjectDesc at = scene.objects[track.index];
+        for (const AnimTrack& t : animation.tracks)
+          if (t.target == AnimTarget::Object && t.index == track.index)
+            applyToObject(at, t.property, evaluateTrackAt(t, time));
+        poses.push_back({at.position, at.rotation, at.scale});
+      }
+      const auto samePose = [&](const ObjectPose& p) {
+        return same(p.position, poses.front().position) &&
+               same(p.rotation, poses.front().rotation) && same(p.scale, poses.front().scale);
+      };
+      if (!std::all_of(poses.begin(), poses.end(), samePose)) object.shutterPoses = poses;
+    }
+  }
+}
+
+}  // namespace
+
 SceneDesc sceneAtFrame(const SceneDesc& scene, uint32_t frame) {
   SceneDesc result = scene;
   result.animation.reset();
   result.render.seed = scene.render.seed + frame;
   if (!scene.animation) return result;
-  const std::vector<double> times = shutterTimes(*scene.animation, frame);
-  for (double time : times)
-    result.shutterCameras.push_back({float((time - times.front()) / (times.back() - times.front())),
-                                     cameraAtTime(scene.camera, *scene.animation, time)});
-  if (!times.empty()) result.shutterRowExposure = scene.animation->rowExposure;
   for (const AnimTrack& track : scene.animation->tracks) {
     const Vec3 v = evaluateTrack(track, frame);
     switch (track.target) {
@@ -185,6 +267,17 @@ SceneDesc sceneAtFrame(const SceneDesc& scene, uint32_t frame) {
       case AnimTarget::Light: applyToLight(result.lights[track.index], track.property, v); break;
     }
   }
+  const std::vector<double> times = shutterTimes(*scene.animation, frame);
+  if (times.empty()) return result;
+  const double span = times.back() - times.front();
+  for (double time : times) result.shutterTimes.push_back(float((time - times.front()) / span));
+  if (std::any_of(scene.animation->tracks.begin(), scene.animation->tracks.end(),
+                  [](const AnimTrack& t) { return t.target == AnimTarget::Camera; }))
+    for (size_t k = 0; k < times.size(); ++k)
+      result.shutterCameras.push_back(
+          {result.shutterTimes[k], cameraAtTime(scene.camera, *scene.animation, times[k])});
+  result.shutterRowExposure = scene.animation->rowExposure;
+  poseMovingShapes(*scene.animation, times, scene, result);
   return result;
 }
 

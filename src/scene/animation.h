@@ -36,6 +36,11 @@ CameraDesc cameraAtTime(const CameraDesc& camera, const AnimationDesc& animation
 constexpr uint32_t kShutterSegments = 16;
 std::vector<double> shutterTimes(const AnimationDesc& animation, uint32_t frame);
 
+// Whether some material of `object` (or of `sphere`) emits light: motion blur leaves such emitters
+// sharp (their light samples know one place only).
+bool objectEmits(const ObjectDesc& object);
+bool sphereEmits(const SphereDesc& sphere);
+
 // Light `index` of a scene, `light`, with its tracks in `animation` applied at `frame`.
 LightDesc lightAtFrame(const LightDesc& light, uint32_t index, const AnimationDesc& animation,
                        uint32_t frame);

@@ -7,6 +7,8 @@
 
 #include "core/rotation.h"
 #include "geometry/bvh_build.h"
+#include "geometry/motion.h"
+#include "geometry/primitive_bounds.h"
 #include "render/bsdf_sheen.h"
 #include "render/material_prepare.h"
 #include "render/scene_change.h"
@@ -92,6 +94,48 @@ void reserveMeshes(SceneData& s, const SceneDesc& desc, MeshLayouts& layouts) {
   if (colors) s.vertexColors.reserve(vertices);
 }
 
+// The world-space positions of an object's vertices (the mesh's, then its splits) placed at
+// `position`, rotation r and `scale`, appended to *out.
+template <class Positions>
+void placeVertices(const MeshDesc& mesh, const MeshLayout& layout, const Vec3& position,
+                   const Mat3& r, const Vec3& scale, Positions* out) {
+  const size_t base = out->size();
+  for (const Vec3& p : mesh.positions) out->push_back(position + r * (scale * p));
+  for (uint32_t v : layout.splitSources) out->push_back((*out)[base + v]);
+}
+
+// The normal of an object's vertex of corner c (rotation r, `scale`): "none" without one.
+OctNormal placedNormal(const MeshDesc& mesh, const MeshLayout::Corner& c, const Mat3& r,
+                       const Vec3& scale) {
+  return c.n >= 0 ? encodeOctNormal(r * (mesh.normals[uint32_t(c.n)] / scale)) : OctNormal();
+}
+
+// An object that moves while the shutter is open (ObjectDesc::shutterPoses): its vertices from
+// `base` at each pose, vertex by vertex (geometry/geometry_view.h's motion arrays).
+void addObjectMotion(SceneData& s, const ObjectDesc& obj, const MeshLayout& layout, uint32_t base) {
+  const MeshDesc& mesh = *obj.mesh;
+  const uint32_t vertexCount = layout.vertexCount(mesh),
+                 poseCount = uint32_t(obj.shutterPoses.size());
+  const uint32_t first = uint32_t(s.motionPositions.size());
+  s.vertexMotions.resize(base, kStill);
+  for (uint32_t v = 0; v < vertexCount; ++v) s.vertexMotions.push_back(first + v * poseCount);
+  s.motionPositions.resize(first + size_t(vertexCount) * poseCount);
+  s.motionNormals.resize(s.motionPositions.size(), OctNormal());
+  std::vector<Vec3> placed;
+  for (uint32_t k = 0; k < poseCount; ++k) {
+    const ObjectPose& pose = obj.shutterPoses[k];
+    const Mat3 r = eulerRotation(pose.rotation);
+    placed.clear();
+    placeVertices(mesh, layout, pose.position, r, pose.scale, &placed);
+    for (uint32_t v = 0; v < vertexCount; ++v) {
+      s.motionPositions[first + v * poseCount + k] = placed[v];
+      if (layout.withNormals)
+        s.motionNormals[first + v * poseCount + k] =
+            placedNormal(mesh, layout.corners[v], r, pose.scale);
+    }
+  }
+}
+
 // Appends an object's mesh in world space: p' = position + R (scale * p). Normals transform by
 // the inverse transpose, R * (n / scale). A mirroring scale reverses the winding, so the vertex
 // order is swapped to keep each face's outside where it was.
@@ -113,8 +157,8 @@ void addObject(SceneData& s, const ObjectDesc& obj, bool geometry, MeshLayouts& 
   const MeshLayout& layout = layouts.of(obj);
   const Mat3 r = eulerRotation(obj.rotation);
   const uint32_t base = uint32_t(s.positions.size());
-  for (const Vec3& p : mesh.positions) s.positions.push_back(obj.position + r * (obj.scale * p));
-  for (uint32_t v : layout.splitSources) s.positions.push_back(s.positions[base + v]);
+  placeVertices(mesh, layout, obj.position, r, obj.scale, &s.positions);
+  if (!obj.shutterPoses.empty()) addObjectMotion(s, obj, layout, base);
   MeshInstance placed;
   placed.firstTriangle = uint32_t(s.triangles.size());
   placed.triangleCount = uint32_t(mesh.triangles.size());
@@ -123,6 +167,7 @@ void addObject(SceneData& s, const ObjectDesc& obj, bool geometry, MeshLayouts& 
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) placed.linear.m[i][j] = r.m[i][j] * obj.scale[j];
   placed.translation = obj.position;
+  placed.moves = !obj.shutterPoses.empty();
   s.meshInstances.objects.push_back(placed);
   flattened->mesh = &mesh;
   flattened->layout = &layout;
@@ -139,8 +184,7 @@ void addObject(SceneData& s, const ObjectDesc& obj, bool geometry, MeshLayouts& 
   if (layout.withNormals) {
     s.normals.resize(base, OctNormal());  // earlier vertices without normals
     for (const MeshLayout::Corner& c : layout.corners)
-      s.normals.push_back(c.n >= 0 ? encodeOctNormal(r * (mesh.normals[uint32_t(c.n)] / obj.scale))
-                                   : OctNormal());
+      s.normals.push_back(placedNormal(mesh, c, r, obj.scale));
   }
   if (layout.withUvs) {
     s.uvs.resize(base, Vec2());  // earlier vertices without uvs
@@ -261,6 +305,16 @@ void addTextureUses(SceneData& s) {
     for (const Material& m : s.materials) s.alphaMasks.push_back(m.alpha);
 }
 
+// The motion arrays' last touches where something moves while the shutter is open: the times,
+// and the vertices and spheres after the last moving one marked still.
+void addMotionTimes(SceneData& s, const SceneDesc& desc) {
+  if (s.vertexMotions.empty() && s.sphereMotions.empty()) return;
+  s.motionTimes.assign(desc.shutterTimes.begin(), desc.shutterTimes.end());
+  if (!s.vertexMotions.empty()) s.vertexMotions.resize(s.positions.size(), kStill);
+  if (!s.sphereMotions.empty()) s.sphereMotions.resize(s.spheres.size(), kStill);
+  if (s.normals.empty()) s.motionNormals.clear();
+}
+
 // The materials appended since the last call belong to instance `instance` (docs/aovs.md).
 void tagInstance(SceneData& s, uint32_t instance) {
   s.materialInstances.resize(s.materials.size(), instance);
@@ -276,6 +330,11 @@ void addInstances(SceneData& s, const SceneDesc& desc, bool geometry) {
     s.spheres.push_back(
         Sphere{sd.position, sd.radius, addMaterials(s, &sd.material, 1, sd.mixParts)});
     tagInstance(s, number.firstSphere + i);
+    if (!geometry || sd.shutterPoses.empty()) continue;
+    s.sphereMotions.resize(i, kStill);
+    s.sphereMotions.push_back(uint32_t(s.motionSpheres.size()));
+    for (const SpherePose& pose : sd.shutterPoses)
+      s.motionSpheres.push_back(Sphere{pose.position, pose.radius, s.spheres.back().material});
   }
   // Lights after plain spheres: sphere lights append their own emissive spheres.
   std::vector<uint32_t> lightMaterials;  // of each light, where it has one
@@ -306,6 +365,7 @@ void addInstances(SceneData& s, const SceneDesc& desc, bool geometry) {
   if (geometry && !s.normals.empty()) s.normals.resize(s.positions.size(), OctNormal());
   if (geometry && !s.uvs.empty()) s.uvs.resize(s.positions.size(), Vec2());
   if (geometry && !s.vertexColors.empty()) s.vertexColors.resize(s.positions.size(), Vec3(1.0f));
+  if (geometry) addMotionTimes(s, desc);
 }
 
 // The coat tables by roughness level, one per index of refraction, of the plastics whose
@@ -369,7 +429,7 @@ void addContents(SceneData& s, const SceneDesc& desc, bool geometry, bool textur
   flattenEnvironment(desc.environment, s);
   s.camera = resolveCamera(desc.camera, desc.file);
   s.cameraPoses = shutterPoses(desc);
-  if (!s.cameraPoses.empty()) {
+  if (!s.cameraPoses.empty() || !s.motionTimes.empty()) {
     s.camera.shutterRowShare = desc.shutterRowExposure;
     s.camera.shutterRowSlope = (1.0f - desc.shutterRowExposure) / float(s.camera.height);
   }
@@ -447,7 +507,8 @@ SceneData flattenSceneContents(const SceneDesc& desc, SceneData* previous) {
 
 // Renumbers the triangles in the order the BVH's leaves list them (primIndices, depth first), so
 // that a leaf's triangles share cache lines and leaves visited together lie together: the load of
-// a leaf's triangle was the hottest cache miss in traversal.
+// a leaf's triangle was the hottest cache miss in traversal. Triangles that move, which the BVH
+// leaves to the motion BVH, follow in their order.
 void orderTrianglesByLeaf(SceneData& s) {
   const uint32_t sphereCount = uint32_t(s.spheres.size());
   std::vector<Triangle> ordered;
@@ -457,17 +518,46 @@ void orderTrianglesByLeaf(SceneData& s) {
     ordered.push_back(s.triangles[prim - sphereCount]);
     prim = sphereCount + uint32_t(ordered.size() - 1);
   }
+  if (!s.vertexMotions.empty()) {
+    const GeometryView view = s.view();
+    for (const Triangle& t : s.triangles)
+      if (triangleMoves(view, t)) ordered.push_back(t);
+  }
   s.triangles = std::move(ordered);
 }
 
 namespace {
 
-// The BVH `kind` over a flattened scene's contents, then the triangles in its leaf order.
+// The boxes of the primitives that move (`moving`) or stand still, each over its whole motion,
+// and the primitives.
+void boxesOf(const SceneData& s, bool moving, std::vector<Bounds3>* boxes,
+             std::vector<uint32_t>* prims) {
+  const GeometryView view = s.view();
+  for (uint32_t p = 0; p < view.primitiveCount(); ++p) {
+    const bool moves = p < view.sphereCount
+                           ? sphereMoves(view, p)
+                           : triangleMoves(view, view.triangles[p - view.sphereCount]);
+    if (moves != moving) continue;
+    boxes->push_back(sweptBounds(view, p));
+    prims->push_back(p);
+  }
+}
+
+// The BVH `kind` over a flattened scene's contents (those that stand still, where some move),
+// then the triangles in its leaf order.
 void addBvh(SceneData& s, OwnBvh kind) {
   if (kind == OwnBvh::None) return;
-  BvhBuildResult bvh = (kind == OwnBvh::Flat ? buildFlatBvh : buildBvh)(
-      s.spheres.data(), uint32_t(s.spheres.size()), s.positions.data(), s.triangles.data(),
-      uint32_t(s.triangles.size()));
+  BvhBuildResult bvh;
+  if (s.motionTimes.empty()) {
+    bvh = (kind == OwnBvh::Flat ? buildFlatBvh : buildBvh)(
+        s.spheres.data(), uint32_t(s.spheres.size()), s.positions.data(), s.triangles.data(),
+        uint32_t(s.triangles.size()));
+  } else {  // the SAH build, whatever `kind` (a flat tree serves benchmarks of still scenes)
+    std::vector<Bounds3> boxes;
+    std::vector<uint32_t> prims;
+    boxesOf(s, false, &boxes, &prims);
+    bvh = buildBvhOfBoxes(boxes.data(), prims.data(), uint32_t(prims.size()));
+  }
   s.nodes = std::move(bvh.wideNodes);
   s.primIndices = std::move(bvh.primIndices);
   orderTrianglesByLeaf(s);
@@ -477,12 +567,27 @@ void addBvh(SceneData& s, OwnBvh kind) {
   s.bvh.buildSeconds = bvh.buildSeconds;
 }
 
+// The motion BVH over the primitives that move while the shutter is open (geometry/motion.h),
+// whatever engine traces the rest.
+void addMotionBvh(SceneData& s) {
+  s.motionNodes.clear();
+  s.motionPrimIndices.clear();
+  if (s.motionTimes.empty()) return;
+  std::vector<Bounds3> boxes;
+  std::vector<uint32_t> prims;
+  boxesOf(s, true, &boxes, &prims);
+  BvhBuildResult bvh = buildBvhOfBoxes(boxes.data(), prims.data(), uint32_t(prims.size()));
+  s.motionNodes = std::move(bvh.wideNodes);
+  s.motionPrimIndices = std::move(bvh.primIndices);
+}
+
 }  // namespace
 
 SceneData flattenScene(const SceneDesc& desc) { return flattenScene(desc, nullptr, nullptr); }
 
 void addBvhAndLights(SceneData& s, OwnBvh kind, PreviousLights* lights) {
   addBvh(s, kind);
+  addMotionBvh(s);
   addEmitterLights(s, lights);
 }
 

@@ -1,6 +1,7 @@
 // Reuse or rebuild of a frame's flattened scene; see frame_scene.h.
 #include "scene/frame_scene.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <unordered_map>
@@ -79,6 +80,14 @@ const SceneData& FrameScene::prepare(const SceneDesc& desc, const FlowMotion* fl
   const auto start = std::chrono::steady_clock::now();
   std::string geometry, structure;
   writeKeys(desc, &geometry, &structure);
+  // A frame whose spheres or objects move while the shutter is open is flattened and built
+  // afresh, and so is the frame after it: no keys, nothing to reuse.
+  const auto posed = [](const auto& shape) { return !shape.shutterPoses.empty(); };
+  if (std::any_of(desc.spheres.begin(), desc.spheres.end(), posed) ||
+      std::any_of(desc.objects.begin(), desc.objects.end(), posed)) {
+    geometry.clear();
+    structure.clear();
+  }
   if (!geometryKey_.empty() && geometry == geometryKey_) {
     refreshSceneValues(data_, desc);
     change_ = SceneChange::Values;

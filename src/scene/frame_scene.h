@@ -13,7 +13,8 @@
 // frame has just flattened, as for any other change. Textures enter the keys by their content
 // hashes: a frame with other texels is a new structure. Whatever the change, a frame keeps the last
 // frame's texture pool, environment map arrays and light tree where its textures, map and lights
-// are the same.
+// are the same. A frame where something moves while the shutter is open (motion blur) is
+// flattened and built afresh, and so is the one after it.
 #pragma once
 
 #include <string>

@@ -25,6 +25,12 @@
 
 namespace candela {
 
+// A sphere's place at one time of a frame's exposure (SceneDesc::shutterTimes).
+struct SpherePose {
+  Vec3 position;
+  float radius = 1;
+};
+
 struct SphereDesc {
   std::string id;     // may be empty
   std::string where;  // JSON path, e.g. "spheres[2]", for later messages
@@ -34,6 +40,8 @@ struct SphereDesc {
   // What its material mixes, where it is a mix (Material::mixParts index this; render/
   // material_mix.h).
   std::vector<Material> mixParts;
+  // Empty, or where it is at each of SceneDesc::shutterTimes: it moves while the shutter is open.
+  std::vector<SpherePose> shutterPoses;
 };
 
 // A triangle as the OBJ file indexes it: positions, normals and uvs separately.
@@ -62,6 +70,13 @@ struct MeshDesc {
   // What the file leaves to a default that its author may not have meant, "<file>:<line>: ..."
   // (an MTL file that cannot be read, a material that no MTL file defines).
   std::vector<std::string> warnings;
+};
+
+// An object's placement at one time of a frame's exposure (SceneDesc::shutterTimes).
+struct ObjectPose {
+  Vec3 position;
+  Vec3 rotation;  // degrees, R = Rz * Ry * Rx
+  Vec3 scale{1.0f};
 };
 
 struct ObjectDesc {
@@ -94,6 +109,9 @@ struct ObjectDesc {
   std::vector<Material> mixParts;    // what `material` mixes, where it is a mix
   // Read once per file: the objects that name one file share it (and so do frames).
   std::shared_ptr<const MeshDesc> mesh = std::make_shared<const MeshDesc>();
+  // Empty, or its placement at each of SceneDesc::shutterTimes: it moves while the shutter is
+  // open.
+  std::vector<ObjectPose> shutterPoses;
 };
 
 // A spot light's cone (render/spot_cone.h), angles in degrees from its axis.
@@ -276,7 +294,12 @@ struct SceneDesc {
   // Empty, or the camera across the exposure where it moves while the shutter is open (at least
   // two times, from 0 to 1; sceneAtFrame fills it): the image is motion-blurred.
   std::vector<ShutterCamera> shutterCameras;
-  float shutterRowExposure = 1;  // AnimationDesc::rowExposure, where shutterCameras is not empty
+  // Empty, or the times (from 0, the shutter's opening, to 1, its closing; at least two) at which
+  // the spheres and objects that move while the shutter is open have shutterPoses (sceneAtFrame
+  // fills them): the image is motion-blurred.
+  std::vector<float> shutterTimes;
+  // AnimationDesc::rowExposure, where shutterCameras or shutterTimes is not empty.
+  float shutterRowExposure = 1;
   // Messages on what the scene's files leave to a default, each prefixed like an error's (the
   // scene file, the JSON path); the scene renders. The command line prints them, Python warns.
   std::vector<std::string> warnings;

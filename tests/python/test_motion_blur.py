@@ -43,3 +43,28 @@ def test_blurred_samples_merge_over_sample_ranges_as_one_render():
 def test_bad_shutter_is_a_value_error_naming_the_path():
     with pytest.raises(ValueError, match=r"animation\.shutter: expected \[open, close\]"):
         candela.Scene.from_dict(sliding([0.5, 0.2]))
+
+
+def moving_sphere(shutter=None):
+    """A camera holding still before a lit sphere that slides along x from -1 (frame 0) to 1."""
+    animation = {"frames": 2, "tracks": [
+        {"target": "ball", "property": "position", "keys": [[0, [-1, 0, -5]], [1, [1, 0, -5]]]}]}
+    if shutter is not None:
+        animation["shutter"] = shutter
+    return {
+        "camera": {"width": 24, "height": 16, "fov": 40, "spp": 16},
+        "spheres": [{"id": "ball", "position": [0, 0, -5], "radius": 1, "color": 0.6}],
+        "lights": [{"position": [0, 4, 0], "intensity": 60}],
+        "animation": animation,
+    }
+
+
+def test_open_shutter_blurs_a_moving_sphere_and_its_samples_merge():
+    lit = lambda image: int((image.sum(axis=(0, 2)) > 1e-3 * image.sum()).sum())  # noqa: E731
+    closed = candela.Scene.from_dict(moving_sphere()).frame(0).render(backend="cpu")
+    scene = candela.Scene.from_dict(moving_sphere([0, 1])).frame(0)
+    blurred = scene.render(backend="cpu")
+    assert lit(blurred) > lit(closed) + 2
+    first = scene.render(backend="cpu", sample_range=(0, 6))
+    rest = scene.render(backend="cpu", sample_range=(6, 10))
+    np.testing.assert_allclose((6 * first + 10 * rest) / 16, blurred, rtol=1e-5, atol=1e-6)

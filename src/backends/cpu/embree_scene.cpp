@@ -7,6 +7,8 @@
 
 #include "backends/backend_error.h"
 #include "geometry/bvh_build.h"
+#include "geometry/motion.h"
+#include "geometry/primitive_bounds.h"
 
 namespace candela {
 
@@ -150,6 +152,8 @@ void EmbreeScene::update(const SceneData& scene, SceneChange change) {
   }
   // A frame of new values keeps the geometry, but its arrays may lie elsewhere.
   sphereView_.spheres = scene.spheres.data();
+  motionView_ = scene.view();
+  moving_ = scene.motionNodes.empty() ? nullptr : &motionView_;
   updateMasks(scene);
 }
 
@@ -181,7 +185,20 @@ void EmbreeScene::placeSpheres(const SceneData& scene) {
   sphereCount_ = uint32_t(scene.spheres.size());
   sphereNodes_.clear();
   spherePrims_.clear();
-  if (sphereCount_ <= kSphereBlocksUpTo) {
+  if (!scene.sphereMotions.empty()) {
+    // Those that move are the motion BVH's (geometry/motion.h): the others' BVH leaves them out.
+    sphereBlocks_.assign(nullptr, 0);
+    std::vector<Bounds3> boxes;
+    std::vector<uint32_t> still;
+    for (uint32_t i = 0; i < sphereCount_; ++i)
+      if (scene.sphereMotions[i] == kStill) {
+        boxes.push_back(sphereBounds(scene.spheres[i]));
+        still.push_back(i);
+      }
+    BvhBuildResult bvh = buildBvhOfBoxes(boxes.data(), still.data(), uint32_t(still.size()));
+    sphereNodes_ = std::move(bvh.wideNodes);
+    spherePrims_ = std::move(bvh.primIndices);
+  } else if (sphereCount_ <= kSphereBlocksUpTo) {
     sphereBlocks_.assign(scene.spheres.data(), sphereCount_);
   } else {
     sphereBlocks_.assign(nullptr, 0);
@@ -199,7 +216,8 @@ void EmbreeScene::placeSpheres(const SceneData& scene) {
 }
 
 bool EmbreeScene::placeTriangleBlocks(const SceneData& scene) {
-  if (scene.triangles.size() <= kTriangleBlocksUpTo && scene.alphaMasks.empty())
+  if (scene.triangles.size() <= kTriangleBlocksUpTo && scene.alphaMasks.empty() &&
+      scene.vertexMotions.empty())
     triangleBlocks_.assign(scene.positions.data(), scene.triangles.data(),
                            uint32_t(scene.triangles.size()));
   else
@@ -228,6 +246,13 @@ EmbreeScene::Plan EmbreeScene::planParts(const SceneData& scene) {
   };
   for (uint32_t i = 0; i < instances.objects.size(); ++i) {
     const MeshInstance& object = instances.objects[i];
+    if (object.moves) {  // the motion BVH's (geometry/motion.h): in no part
+      endRun(object.firstTriangle, object.firstVertex);
+      run = Part();
+      run.firstTriangle = object.firstTriangle + object.triangleCount;
+      run.firstVertex = object.firstVertex + object.vertexCount;
+      continue;
+    }
     if (object.prototype < 0 || traced[uint32_t(object.prototype)] < 0) continue;
     endRun(object.firstTriangle, object.firstVertex);
     Part part;

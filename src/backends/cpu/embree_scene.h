@@ -15,7 +15,9 @@
 // (backends/cpu/triangle_blocks.h). A frame whose primitives moved (SceneChange::Motion) shares
 // its vertices and refits Embree's BVHs, moves the instances, and places the spheres (their
 // blocks, or their BVH beyond 32 spheres) and the triangle blocks anew; a new structure rebuilds
-// both. Alpha-masked materials
+// both. Spheres and objects that move while the shutter is open are in none of these but in the
+// scene's motion BVH (geometry/motion.h), which the tracer traverses with candela's own code.
+// Alpha-masked materials
 // (geometry/alpha_mask.h) get intersection and occlusion filters on the triangles that apply the
 // same test as candela's own traversal. Embree picks the widest SIMD the CPU has at run time (SSE2
 // up to AVX-512).
@@ -60,9 +62,14 @@ class EmbreeScene {
   void update(const SceneData& scene, SceneChange change);
 
   EmbreeTracer tracer() const {
-    return EmbreeTracer{scene_,      firstTriangleOf_.data(), prototypes_.empty(),
-                        sphereView_, sphereBlocks_.view(),    sphereCount_,
-                        triangleBlocks_.view()};
+    return EmbreeTracer{scene_,
+                        firstTriangleOf_.data(),
+                        prototypes_.empty(),
+                        sphereView_,
+                        sphereBlocks_.view(),
+                        sphereCount_,
+                        triangleBlocks_.view(),
+                        moving_};
   }
   // How many objects Embree traces as instances of a repeated mesh.
   uint32_t instanceCount() const;
@@ -146,6 +153,9 @@ class EmbreeScene {
   // and whether the filter is installed: only while some material is masked.
   GeometryView maskView_;
   bool filtered_ = false;
+  // The scene given last, whose motion BVH the tracer traverses itself (null where nothing moves).
+  GeometryView motionView_;
+  const GeometryView* moving_ = nullptr;
 };
 
 }  // namespace candela

@@ -65,6 +65,9 @@ struct EmbreeTracer {
   SphereBlocksView sphereBlocks;  // the spheres in blocks, when they are few; else empty
   uint32_t sphereCount;
   TriangleBlocksView triangleBlocks;  // the triangles in blocks, when they are few; else empty
+  // The scene, whose motion BVH holds what moves while the shutter is open (geometry/motion.h),
+  // traced here before the triangles; null where nothing moves.
+  const GeometryView* moving = nullptr;
 
   bool closest(const Ray& ray, Hit* hit) const {
     if (!isFiniteRayCpu(ray)) return false;  // Embree's behaviour on NaN rays is undefined
@@ -195,12 +198,19 @@ struct EmbreeTracer {
                            : RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
   }
 
+  // The nearest sphere hit, or the nearer hit of a primitive that moves.
   bool closestSphereOf(const Ray& ray, Hit* hit) const {
-    if (sphereCount == 0) return false;
-    if (sphereBlocks.blockCount == 0) return intersectClosest(spheres, ray, hit);
-    if (!closestSphere(sphereBlocks, ray, ray.tMax, &hit->t, &hit->prim)) return false;
-    hit->b1 = hit->b2 = 0.0f;
-    return true;
+    bool found = false;
+    if (sphereCount != 0) {
+      if (sphereBlocks.blockCount == 0) {
+        found = intersectClosest(spheres, ray, hit);
+      } else if (closestSphere(sphereBlocks, ray, ray.tMax, &hit->t, &hit->prim)) {
+        hit->b1 = hit->b2 = 0.0f;
+        found = true;
+      }
+    }
+    if (moving && intersectClosestMoving(*moving, ray, found ? hit->t : ray.tMax, hit)) return true;
+    return found;
   }
 
   // The nearest of the sphere hit in *hit (where sphereFound) and a triangle hit in the blocks.
@@ -213,7 +223,9 @@ struct EmbreeTracer {
     return true;
   }
 
+  // Whether a sphere, or a primitive that moves, blocks the ray.
   bool anySphereOf(const Ray& ray, uint32_t skipPrim) const {
+    if (moving && intersectAnyMoving(*moving, ray, skipPrim)) return true;
     if (sphereCount == 0) return false;
     return sphereBlocks.blockCount != 0 ? anySphere(sphereBlocks, ray, skipPrim)
                                         : intersectAny(spheres, ray, skipPrim);
