@@ -173,7 +173,8 @@ TEST(ObjectMotion, SurfaceIsWhereTheShapeStandsAtTheRaysTime) {
   fs::remove_all(dir);
   ASSERT_EQ(data.motionTimes.size(), kShutterSegments + 1);
   ASSERT_FALSE(data.motionNodes.empty());
-  EXPECT_TRUE(data.nodes.empty());  // nothing stands still
+  EXPECT_EQ(data.motionRoots.size(), kShutterSegments);  // a BVH for each step between poses
+  EXPECT_TRUE(data.nodes.empty());                       // nothing stands still
   const GeometryView view = data.view();
   const float c = std::sqrt(0.5f);
   for (const float time : {0.0f, 0.5f}) {

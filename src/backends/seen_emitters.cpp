@@ -32,7 +32,7 @@ uint32_t seenEmitterSamples(const SceneData& scene) {
   const bool emitters = std::any_of(scene.materials.begin(), scene.materials.end(),
                                     [](const Material& m) { return hasEmission(m); });
   const bool spread = scene.settings.antialiasing || scene.camera.apertureRadius > 0.0f ||
-                      !scene.cameraPoses.empty();
+                      !scene.cameraPoses.empty() || !scene.motionTimes.empty();
   const uint64_t spp = scene.settings.spp;
   const uint32_t samples =
       uint32_t(std::min<uint64_t>(kSeenEmitterSampleFactor * spp, kMaxSeenEmitterSamples));

@@ -79,8 +79,9 @@ namespace detail {
 // before its box (docs/performance.md has why they are not sorted); inner children that are hit
 // are visited nearest first, the others pushed with their entry distances, so that once a nearer
 // hit is known a popped subtree that starts beyond it is skipped without touching its node.
-// kMoving: the motion BVH (motionNodes over motionPrimIndices) with its primitives at the ray's
-// time, the ray only up to `tMax`; otherwise the scene's BVH up to ray.tMax.
+// kMoving: the motion BVH of the step that holds the ray's time (motionNodes from
+// motionRoots[step], over motionPrimIndices), its primitives at that time; otherwise the scene's
+// BVH. Either up to `tMax`.
 template <bool kMoving>
 CANDELA_HDI bool traverseBvh(const GeometryView& scene, const Ray& ray, bool anyHit,
                              uint32_t skipPrim, float tMax, Hit* hit) {
@@ -94,12 +95,15 @@ CANDELA_HDI bool traverseBvh(const GeometryView& scene, const Ray& ray, bool any
   const RayBoxTester box(
       ray.origin, Vec3(1.0f / ray.direction.x, 1.0f / ray.direction.y, 1.0f / ray.direction.z));
   MotionStep step;
-  if constexpr (kMoving) step = motionStepAt(scene, ray.time);
+  uint32_t current = 0;
+  if constexpr (kMoving) {  // the BVH of the step that holds the ray's time
+    step = motionStepAt(scene, ray.time);
+    current = scene.motionRoots[step.step];
+  }
   bool found = false;
   uint32_t stackNode[kBvhStackSize];
   float stackEntry[kBvhStackSize];
   int stackSize = 0;
-  uint32_t current = 0;
   for (;;) {
     CANDELA_DCHECK(current < nodeCount);
     const BvhNode& node = nodes[current];

@@ -13,12 +13,13 @@
 // - Primitive index p in [0, sphereCount) is spheres[p]; p >= sphereCount is triangle
 //   p - sphereCount. The BVH leaves index `primIndices`, which hold such primitive indices.
 // - Primitives that move while the shutter is open (motion blur: geometry/motion.h) are left out
-//   of that BVH and kept in one of their own, `motionNodes` over `motionPrimIndices`, whose boxes
-//   hold each primitive's whole sweep. Their arrays above hold them at the frame's time; at
-//   `motionTimes` (increasing from 0, the shutter's opening, to 1, its closing) a moving vertex v
-//   is at motionPositions[vertexMotions[v] + k] (with motionNormals parallel, where there are
-//   normals), a moving sphere s is motionSpheres[sphereMotions[s] + k]; kStill marks the others.
-//   All are empty in a scene where nothing moves.
+//   of that BVH and kept in BVHs of their own, one for each step k between two of their poses,
+//   whose boxes hold each primitive's sweep over that step: its root is
+//   motionNodes[motionRoots[k]], its leaves index motionPrimIndices. Their arrays above hold them
+//   at the frame's time; at `motionTimes` (increasing from 0, the shutter's opening, to 1, its
+//   closing) a moving vertex v is at motionPositions[vertexMotions[v] + k] (with motionNormals
+//   parallel, where there are normals), a moving sphere s is motionSpheres[sphereMotions[s] + k];
+//   kStill marks the others. All are empty in a scene where nothing moves.
 #pragma once
 
 #include <cstdint>
@@ -61,6 +62,7 @@ namespace candela {
   X(uint32_t, sphereMotions, sphereMotionCount, Structure)  \
   X(Sphere, motionSpheres, motionSphereCount, Structure)    \
   X(BvhNode, motionNodes, motionNodeCount, Structure)       \
+  X(uint32_t, motionRoots, motionRootCount, Structure)      \
   X(uint32_t, motionPrimIndices, motionPrimIndexCount, Structure)
 
 #define CANDELA_VIEW_ARRAY_FIELDS(Type, name, count, rewrittenBy) \

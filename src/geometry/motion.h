@@ -21,13 +21,18 @@ struct MotionStep {
 };
 
 // A time outside [0, 1] (a wide pixel filter's sample beyond the first or last row under a
-// rolling shutter) takes the nearer end's pose, as the camera does (render/camera_motion.h).
+// rolling shutter) takes the nearer end's pose, as the camera does (render/camera_motion.h). The
+// times are even steps but for a whole frame here and there (scene/animation.h's shutterTimes),
+// so the step that an even spacing predicts is at most one or two off.
 CANDELA_HDI MotionStep motionStepAt(const GeometryView& scene, float time) {
   const float* times = scene.motionTimes;
-  const uint32_t count = scene.motionTimeCount;
+  const uint32_t last = scene.motionTimeCount - 2;  // the last step's first pose
   time = time < 0.0f ? 0.0f : (time > 1.0f ? 1.0f : time);
+  const float guess = time * float(last + 1);
   MotionStep s;
-  while (s.step + 2 < count && time >= times[s.step + 1]) ++s.step;
+  s.step = guess < float(last) ? uint32_t(guess) : last;
+  while (s.step > 0 && time < times[s.step]) --s.step;
+  while (s.step < last && time >= times[s.step + 1]) ++s.step;
   const float span = times[s.step + 1] - times[s.step];
   s.t = span > 0.0f ? (time - times[s.step]) / span : 0.0f;
   if (s.t > 1.0f) s.t = 1.0f;

@@ -33,21 +33,22 @@ inline Bounds3 primitiveBounds(uint32_t p, const Sphere* spheres, uint32_t spher
                          : triangleBounds(positions, triangles[p - sphereCount]);
 }
 
-// The box of primitive p (GeometryView numbering) over its whole motion, every pose of it
-// (geometry/motion.h): between two poses each vertex moves on a line, which the two boxes hold.
-inline Bounds3 sweptBounds(const GeometryView& scene, uint32_t p) {
+// The box of primitive p (GeometryView numbering) over step k of its motion, from pose k to pose
+// k + 1 (geometry/motion.h), or where it stands: between two poses each vertex moves on a line,
+// which the two poses' boxes hold.
+inline Bounds3 stepBounds(const GeometryView& scene, uint32_t p, uint32_t k) {
   if (p < scene.sphereCount) {
     if (!sphereMoves(scene, p)) return sphereBounds(scene.spheres[p]);
-    const Sphere* poses = scene.motionSpheres + scene.sphereMotions[p];
+    const Sphere* poses = scene.motionSpheres + scene.sphereMotions[p] + k;
     Bounds3 b = sphereBounds(poses[0]);
-    for (uint32_t k = 1; k < scene.motionTimeCount; ++k) b.grow(sphereBounds(poses[k]));
+    b.grow(sphereBounds(poses[1]));
     return b;
   }
   const Triangle& t = scene.triangles[p - scene.sphereCount];
   if (!triangleMoves(scene, t)) return triangleBounds(scene.positions, t);
-  Bounds3 b(scene.motionPositions[scene.vertexMotions[t.v[0]]]);
-  for (uint32_t k = 0; k < scene.motionTimeCount; ++k)
-    for (int c = 0; c < 3; ++c) b.grow(scene.motionPositions[scene.vertexMotions[t.v[c]] + k]);
+  Bounds3 b(scene.motionPositions[scene.vertexMotions[t.v[0]] + k]);
+  for (uint32_t pose = k; pose <= k + 1; ++pose)
+    for (int c = 0; c < 3; ++c) b.grow(scene.motionPositions[scene.vertexMotions[t.v[c]] + pose]);
   return b;
 }
 

@@ -528,9 +528,9 @@ void orderTrianglesByLeaf(SceneData& s) {
 
 namespace {
 
-// The boxes of the primitives that move (`moving`) or stand still, each over its whole motion,
-// and the primitives.
-void boxesOf(const SceneData& s, bool moving, std::vector<Bounds3>* boxes,
+// The boxes of the primitives that move (`moving`) or stand still, those that move over step k of
+// their motion, and the primitives.
+void boxesOf(const SceneData& s, bool moving, uint32_t k, std::vector<Bounds3>* boxes,
              std::vector<uint32_t>* prims) {
   const GeometryView view = s.view();
   for (uint32_t p = 0; p < view.primitiveCount(); ++p) {
@@ -538,7 +538,7 @@ void boxesOf(const SceneData& s, bool moving, std::vector<Bounds3>* boxes,
                            ? sphereMoves(view, p)
                            : triangleMoves(view, view.triangles[p - view.sphereCount]);
     if (moves != moving) continue;
-    boxes->push_back(sweptBounds(view, p));
+    boxes->push_back(stepBounds(view, p, k));
     prims->push_back(p);
   }
 }
@@ -555,7 +555,7 @@ void addBvh(SceneData& s, OwnBvh kind) {
   } else {  // the SAH build, whatever `kind` (a flat tree serves benchmarks of still scenes)
     std::vector<Bounds3> boxes;
     std::vector<uint32_t> prims;
-    boxesOf(s, false, &boxes, &prims);
+    boxesOf(s, false, 0, &boxes, &prims);
     bvh = buildBvhOfBoxes(boxes.data(), prims.data(), uint32_t(prims.size()));
   }
   s.nodes = std::move(bvh.wideNodes);
@@ -567,18 +567,34 @@ void addBvh(SceneData& s, OwnBvh kind) {
   s.bvh.buildSeconds = bvh.buildSeconds;
 }
 
-// The motion BVH over the primitives that move while the shutter is open (geometry/motion.h),
-// whatever engine traces the rest.
+// The motion BVHs over the primitives that move while the shutter is open (geometry/motion.h),
+// one for each step between two poses, whatever engine traces the rest: a box over the whole
+// exposure would hold a turning mesh's whole arc.
 void addMotionBvh(SceneData& s) {
   s.motionNodes.clear();
+  s.motionRoots.clear();
   s.motionPrimIndices.clear();
   if (s.motionTimes.empty()) return;
-  std::vector<Bounds3> boxes;
-  std::vector<uint32_t> prims;
-  boxesOf(s, true, &boxes, &prims);
-  BvhBuildResult bvh = buildBvhOfBoxes(boxes.data(), prims.data(), uint32_t(prims.size()));
-  s.motionNodes = std::move(bvh.wideNodes);
-  s.motionPrimIndices = std::move(bvh.primIndices);
+  for (uint32_t k = 0; k + 1 < s.motionTimes.size(); ++k) {
+    std::vector<Bounds3> boxes;
+    std::vector<uint32_t> prims;
+    boxesOf(s, true, k, &boxes, &prims);
+    const BvhBuildResult bvh = buildBvhOfBoxes(boxes.data(), prims.data(), uint32_t(prims.size()));
+    const uint32_t nodeBase = uint32_t(s.motionNodes.size());
+    const uint32_t primBase = uint32_t(s.motionPrimIndices.size());
+    s.motionRoots.push_back(nodeBase);
+    for (BvhNode node : bvh.wideNodes) {
+      for (int c = 0; c < 4; ++c) {
+        if (node.count[c] != 0)
+          node.child[c] += primBase;
+        else if (node.child[c] != kNoBvhChild)
+          node.child[c] += nodeBase;
+      }
+      s.motionNodes.push_back(node);
+    }
+    s.motionPrimIndices.insert(s.motionPrimIndices.end(), bvh.primIndices.begin(),
+                               bvh.primIndices.end());
+  }
 }
 
 }  // namespace

@@ -185,8 +185,9 @@ void EmbreeScene::placeSpheres(const SceneData& scene) {
   sphereCount_ = uint32_t(scene.spheres.size());
   sphereNodes_.clear();
   spherePrims_.clear();
-  if (!scene.sphereMotions.empty()) {
-    // Those that move are the motion BVH's (geometry/motion.h): the others' BVH leaves them out.
+  if (!scene.sphereMotions.empty() && sphereCount_ > kSphereBlocksUpTo) {
+    // Those that move are the motion BVH's (geometry/motion.h): the others' BVH leaves them out,
+    // as their blocks blank them.
     sphereBlocks_.assign(nullptr, 0);
     std::vector<Bounds3> boxes;
     std::vector<uint32_t> still;
@@ -199,7 +200,8 @@ void EmbreeScene::placeSpheres(const SceneData& scene) {
     sphereNodes_ = std::move(bvh.wideNodes);
     spherePrims_ = std::move(bvh.primIndices);
   } else if (sphereCount_ <= kSphereBlocksUpTo) {
-    sphereBlocks_.assign(scene.spheres.data(), sphereCount_);
+    sphereBlocks_.assign(scene.spheres.data(), sphereCount_, widestSphereBlock(),
+                         scene.sphereMotions.empty() ? nullptr : scene.sphereMotions.data());
   } else {
     sphereBlocks_.assign(nullptr, 0);
     BvhBuildResult bvh = buildBvh(scene.spheres.data(), sphereCount_, nullptr, nullptr, 0);

@@ -1,12 +1,15 @@
 #include "backends/cpu/sphere_blocks.h"
 
+#include "geometry/motion.h"
+
 #if !defined(__x86_64__)
 #include "geometry/sphere_intersect.h"
 #endif
 
 namespace candela {
 
-void SphereBlocks::assign(const Sphere* spheres, uint32_t count, uint32_t maxWidth) {
+void SphereBlocks::assign(const Sphere* spheres, uint32_t count, uint32_t maxWidth,
+                          const uint32_t* motions) {
   // The narrowest block that holds them all, within maxWidth: a wider block's lanes beyond the
   // spheres would only be tested in vain.
   width_ = 4;
@@ -22,12 +25,13 @@ void SphereBlocks::assign(const Sphere* spheres, uint32_t count, uint32_t maxWid
   for (size_t i = 0; i < lanes; ++i) {
     // A padding lane has radius -1: every ray passes farther than that from its centre. Its
     // squared radius, far below zero, makes blockHits's first look call it wide of every ray.
-    const Sphere s = i < count ? spheres[i] : Sphere{Vec3(0, 0, 0), -1.0f};
+    const bool blank = i >= count || (motions && motions[i] != kStill);
+    const Sphere s = blank ? Sphere{Vec3(0, 0, 0), -1.0f} : spheres[i];
     centerX[i] = s.center.x;
     centerY[i] = s.center.y;
     centerZ[i] = s.center.z;
     radius[i] = s.radius;
-    radiusSquared[i] = i < count ? s.radius * s.radius : -1e30f;
+    radiusSquared[i] = blank ? -1e30f : s.radius * s.radius;
   }
 }
 

@@ -42,8 +42,11 @@ uint32_t widestSphereBlock();
 
 class SphereBlocks {
  public:
-  // Blocks of at most `maxWidth` spheres (a width the CPU has; tests choose one).
-  void assign(const Sphere* spheres, uint32_t count, uint32_t maxWidth = widestSphereBlock());
+  // Blocks of at most `maxWidth` spheres (a width the CPU has; tests choose one). Where `motions`
+  // (GeometryView::sphereMotions, or null) says a sphere moves, its lane is a blank no ray hits:
+  // the motion BVH holds it (geometry/motion.h).
+  void assign(const Sphere* spheres, uint32_t count, uint32_t maxWidth = widestSphereBlock(),
+              const uint32_t* motions = nullptr);
   SphereBlocksView view() const;
   size_t bytes() const { return data_.size() * sizeof(float); }
 
