@@ -162,15 +162,30 @@ CANDELA_HDI bool traverseBvh(const GeometryView& scene, const Ray& ray, bool any
 
 }  // namespace detail
 
+// The moving primitives' part of a query (the motion BVH's; geometry/motion.h), also for an engine
+// that traces the others itself. Out of line: scenes where nothing moves keep their traversal as
+// it was. The nearest hit of a moving primitive before `tMax`:
+CANDELA_HD_NOINLINE inline bool intersectClosestMoving(const GeometryView& scene, const Ray& ray,
+                                                       float tMax, Hit* hit) {
+  return scene.motionNodeCount != 0 &&
+         detail::traverseBvh<true>(scene, ray, false, 0xffffffffu, tMax, hit);
+}
+
+// and whether a moving primitive other than `skipPrim` blocks the ray.
+CANDELA_HD_NOINLINE inline bool intersectAnyMoving(const GeometryView& scene, const Ray& ray,
+                                                   uint32_t skipPrim) {
+  Hit unused;
+  return scene.motionNodeCount != 0 &&
+         detail::traverseBvh<true>(scene, ray, true, skipPrim, ray.tMax, &unused);
+}
+
 // Nearest hit of `ray` for t in (0, ray.tMax), among the primitives that stand still and then
 // those that move (at the ray's time) up to the nearer hit. On a hit fills `hit` and returns true;
 // on a miss returns false and leaves `hit` untouched.
 CANDELA_HDI bool intersectClosest(const GeometryView& scene, const Ray& ray, Hit* hit) {
   const bool found = detail::traverseBvh<false>(scene, ray, false, 0xffffffffu, ray.tMax, hit);
   if (scene.motionNodeCount == 0) return found;
-  return detail::traverseBvh<true>(scene, ray, false, 0xffffffffu, found ? hit->t : ray.tMax,
-                                   hit) ||
-         found;
+  return intersectClosestMoving(scene, ray, found ? hit->t : ray.tMax, hit) || found;
 }
 
 // Whether anything but primitive `skipPrim` (0xffffffff: none) blocks `ray` for t in
@@ -178,24 +193,8 @@ CANDELA_HDI bool intersectClosest(const GeometryView& scene, const Ray& ray, Hit
 // that light's own sphere.
 CANDELA_HDI bool intersectAny(const GeometryView& scene, const Ray& ray, uint32_t skipPrim) {
   Hit unused;
-  return detail::traverseBvh<false>(scene, ray, true, skipPrim, ray.tMax, &unused) ||
-         (scene.motionNodeCount != 0 &&
-          detail::traverseBvh<true>(scene, ray, true, skipPrim, ray.tMax, &unused));
-}
-
-// The moving primitives' part of intersectClosest, for an engine that traces the others itself:
-// the nearest hit of a moving primitive before `tMax`.
-CANDELA_HDI bool intersectClosestMoving(const GeometryView& scene, const Ray& ray, float tMax,
-                                        Hit* hit) {
-  return scene.motionNodeCount != 0 &&
-         detail::traverseBvh<true>(scene, ray, false, 0xffffffffu, tMax, hit);
-}
-
-// The moving primitives' part of intersectAny.
-CANDELA_HDI bool intersectAnyMoving(const GeometryView& scene, const Ray& ray, uint32_t skipPrim) {
-  Hit unused;
-  return scene.motionNodeCount != 0 &&
-         detail::traverseBvh<true>(scene, ray, true, skipPrim, ray.tMax, &unused);
+  if (detail::traverseBvh<false>(scene, ray, true, skipPrim, ray.tMax, &unused)) return true;
+  return scene.motionNodeCount != 0 && intersectAnyMoving(scene, ray, skipPrim);
 }
 
 // Nearest hit by testing every primitive (each where it stands at the ray's time), ignoring the

@@ -81,15 +81,18 @@ CANDELA_HDI SurfacePoint sphereSurfaceAt(const Sphere& s, const Ray& ray, float 
   return sp;
 }
 
-// The surface of triangle `tri` at barycentrics (b1, b2) at `time` (where it moves: geometry/
-// motion.h).
+// The surface of triangle `tri` at barycentrics (b1, b2); with kMoving where it stands at step
+// `step` of its motion (geometry/motion.h), else where the scene's arrays have it.
+template <bool kMoving>
 CANDELA_HDI SurfacePoint triangleSurfaceAt(const GeometryView& scene, const Triangle& tri, float b1,
-                                           float b2, float time) {
+                                           float b2, MotionStep step = MotionStep()) {
   SurfacePoint sp;
-  const bool moves = triangleMoves(scene, tri);
-  const MotionStep step = moves ? motionStepAt(scene, time) : MotionStep();
   Vec3 p[3];
-  triangleCornersAt(scene, tri, step, p);
+  if constexpr (kMoving) {
+    for (int k = 0; k < 3; ++k) p[k] = movingPosition(scene, tri.v[k], step);
+  } else {
+    for (int k = 0; k < 3; ++k) p[k] = scene.positions[tri.v[k]];
+  }
   const float b0 = 1.0f - b1 - b2;
   sp.p = trianglePoint(p[0], p[1], p[2], b1, b2, &sp.error);
   sp.ng = normalize(cross(p[1] - p[0], p[2] - p[0]));
@@ -100,7 +103,7 @@ CANDELA_HDI SurfacePoint triangleSurfaceAt(const GeometryView& scene, const Tria
     const OctNormal n2 = scene.normals[tri.v[2]];
     if (!n0.isNone() && !n1.isNone() && !n2.isNone()) {
       Vec3 d[3];
-      if (moves) {
+      if constexpr (kMoving) {
         for (int k = 0; k < 3; ++k) d[k] = movingNormal(scene, tri.v[k], step);
       } else {
         d[0] = decodeOctNormal(n0), d[1] = decodeOctNormal(n1), d[2] = decodeOctNormal(n2);
@@ -115,20 +118,36 @@ CANDELA_HDI SurfacePoint triangleSurfaceAt(const GeometryView& scene, const Tria
     }
   }
   sp.material = tri.material;
-  sp.time = time;
   return sp;
 }
 
-// The surface at `hit`, which `ray` found (intersectClosest or intersectPrimitive), at the ray's
-// time.
-CANDELA_HDI SurfacePoint surfaceAt(const GeometryView& scene, const Ray& ray, const Hit& hit) {
-  if (hit.prim < scene.sphereCount) {
-    SurfacePoint sp = sphereSurfaceAt(sphereAt(scene, hit.prim, ray.time), ray, hit.t);
-    sp.time = ray.time;
-    return sp;
-  }
-  return triangleSurfaceAt(scene, scene.triangles[hit.prim - scene.sphereCount], hit.b1, hit.b2,
-                           ray.time);
+// The surface at `hit` of a primitive that moves, where it stands at the ray's time. Out of line:
+// scenes where nothing moves never call it.
+CANDELA_HD_COLD inline SurfacePoint movingSurfaceAt(const GeometryView& scene, const Ray& ray,
+                                                    const Hit& hit) {
+  const MotionStep step = motionStepAt(scene, ray.time);
+  if (hit.prim < scene.sphereCount)
+    return sphereSurfaceAt(sphereAt(scene, hit.prim, step), ray, hit.t);
+  return triangleSurfaceAt<true>(scene, scene.triangles[hit.prim - scene.sphereCount], hit.b1,
+                                 hit.b2, step);
+}
+
+// The surface at `hit`, which `ray` found (intersectClosest or intersectPrimitive), where it
+// stands at the ray's time.
+CANDELA_HDI_ALWAYS SurfacePoint surfaceAt(const GeometryView& scene, const Ray& ray,
+                                          const Hit& hit) {
+  SurfacePoint sp;
+  const bool sphere = hit.prim < scene.sphereCount;
+  if (sphere ? sphereMoves(scene, hit.prim)
+             : triangleMoves(scene, scene.triangles[hit.prim - scene.sphereCount]))
+    sp = movingSurfaceAt(scene, ray, hit);
+  else if (sphere)
+    sp = sphereSurfaceAt(scene.spheres[hit.prim], ray, hit.t);
+  else
+    sp = triangleSurfaceAt<false>(scene, scene.triangles[hit.prim - scene.sphereCount], hit.b1,
+                                  hit.b2);
+  sp.time = ray.time;
+  return sp;
 }
 
 // The texture coordinates at `hit` (geometry/surface_uv.h), whose surface is `sp`: computed only

@@ -225,10 +225,10 @@ struct EmbreeTracer {
 
   // Whether a sphere, or a primitive that moves, blocks the ray.
   bool anySphereOf(const Ray& ray, uint32_t skipPrim) const {
-    if (moving && intersectAnyMoving(*moving, ray, skipPrim)) return true;
-    if (sphereCount == 0) return false;
-    return sphereBlocks.blockCount != 0 ? anySphere(sphereBlocks, ray, skipPrim)
-                                        : intersectAny(spheres, ray, skipPrim);
+    if (sphereCount != 0 && (sphereBlocks.blockCount != 0 ? anySphere(sphereBlocks, ray, skipPrim)
+                                                          : intersectAny(spheres, ray, skipPrim)))
+      return true;
+    return moving && intersectAnyMoving(*moving, ray, skipPrim);
   }
 
   bool skipsTriangle(uint32_t skipPrim) const {
