@@ -43,6 +43,17 @@
 #define CANDELA_HD_GPU_CALL inline
 #endif
 
+// For a query that only some scenes make (the motion BVH's): out of line on the CPU, where GCC
+// inlining it slowed the queries every scene makes, and inlined on the GPU, where a call of its
+// own would add a traversal stack to every thread's frame.
+#if defined(__CUDA_ARCH__)
+#define CANDELA_HD_CPU_CALL __host__ __device__ inline
+#elif defined(__CUDACC__)
+#define CANDELA_HD_CPU_CALL __host__ __device__ __noinline__ inline
+#else
+#define CANDELA_HD_CPU_CALL inline __attribute__((noinline))
+#endif
+
 // For the rare branch of a hot loop (an alpha test in traversal): kept out of line, so that the
 // code every ray runs stays small.
 #if defined(__CUDACC__)

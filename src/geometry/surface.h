@@ -121,10 +121,10 @@ CANDELA_HDI SurfacePoint triangleSurfaceAt(const GeometryView& scene, const Tria
   return sp;
 }
 
-// The surface at `hit` of a primitive that moves, where it stands at the ray's time. Out of line:
-// scenes where nothing moves never call it.
-CANDELA_HD_COLD inline SurfacePoint movingSurfaceAt(const GeometryView& scene, const Ray& ray,
-                                                    const Hit& hit) {
+// The surface at `hit` of a primitive that moves, where it stands at the ray's time. Out of line on
+// the CPU: scenes where nothing moves never call it.
+CANDELA_HD_CPU_CALL SurfacePoint movingSurfaceAt(const GeometryView& scene, const Ray& ray,
+                                                 const Hit& hit) {
   const MotionStep step = motionStepAt(scene, ray.time);
   if (hit.prim < scene.sphereCount)
     return sphereSurfaceAt(sphereAt(scene, hit.prim, step), ray, hit.t);
