@@ -439,9 +439,33 @@ TEST_F(CliTest, InfoPrintsTheAnimationAndItsShutter) {
   r = run("info blurred.json");
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.out.find("animation:  1 frame at 30 fps, 1 track; shutter open from -0.25 to +0.25 "
-                       "frames, rolling (each row 10% of it)\n"),
+                       "frames, rolling (each row 10% of it); it blurs the camera\n"),
             std::string::npos)
       << r.out;
+}
+
+// What an open shutter blurs: the shapes that tracks move, but not emitters (they stay sharp).
+TEST_F(CliTest, InfoSaysWhatTheShutterBlurs) {
+  writeFile("quad.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 3\n");
+  writeFile("moving.json", R"({"camera": {"width": 8, "height": 8, "spp": 1},
+    "spheres": [{"id": "a", "position": [0, 0, -5], "radius": 1},
+                {"id": "b", "position": [2, 0, -5], "radius": 1},
+                {"id": "glow", "position": [0, 2, -5], "radius": 1,
+                 "material": {"type": "emissive", "radiance": 1}}],
+    "objects": [{"id": "q", "file": "quad.obj", "position": [0, -2, -5]}],
+    "animation": {"frames": 2, "shutter": 1, "tracks": [
+      {"target": "a", "property": "position", "keys": [[0, [0, 0, -5]], [1, [1, 0, -5]]]},
+      {"target": "a", "property": "radius", "keys": [[0, 1], [1, 2]]},
+      {"target": "b", "property": "radius", "keys": [[0, 1], [1, 2]]},
+      {"target": "glow", "property": "position", "keys": [[0, [0, 2, -5]], [1, [1, 2, -5]]]},
+      {"target": "q", "property": "rotation", "keys": [[0, [0, 0, 0]], [1, [0, 0, 90]]]}]}})");
+  RunResult r = run("info moving.json");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("; shutter open from -0.5 to +0.5 frames; it blurs 1 object and 2 "
+                       "spheres\n"),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.err.find("moves an emitter"), std::string::npos) << r.err;
 }
 
 // A camera that becomes unusable at the last frame (fov -> 1e-38) is found before any frame is

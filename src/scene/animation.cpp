@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 
 #include "render/bsdf.h"
 #include "render/material_prepare.h"
@@ -196,6 +197,23 @@ bool objectEmits(const ObjectDesc& object) {
 
 bool sphereEmits(const SphereDesc& sphere) {
   return emits(sphere.material) || anyEmits(sphere.mixParts);
+}
+
+ShutterBlur shutterBlur(const SceneDesc& scene) {
+  ShutterBlur blur;
+  if (!scene.animation) return blur;
+  std::set<uint32_t> objects, spheres;
+  for (const AnimTrack& track : scene.animation->tracks) {
+    if (!blurs(track)) continue;
+    if (track.target == AnimTarget::Camera) blur.camera = true;
+    if (track.target == AnimTarget::Object && !objectEmits(scene.objects[track.index]))
+      objects.insert(track.index);
+    if (track.target == AnimTarget::Sphere && !sphereEmits(scene.spheres[track.index]))
+      spheres.insert(track.index);
+  }
+  blur.objects = uint32_t(objects.size());
+  blur.spheres = uint32_t(spheres.size());
+  return blur;
 }
 
 LightDesc lightAtFrame(const LightDesc& light, uint32_t index, const AnimationDesc& animation,

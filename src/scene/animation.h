@@ -41,6 +41,14 @@ std::vector<double> shutterTimes(const AnimationDesc& animation, uint32_t frame)
 bool objectEmits(const ObjectDesc& object);
 bool sphereEmits(const SphereDesc& sphere);
 
+// What an open shutter blurs in `scene`, by its animation's tracks: whether they move the camera,
+// and how many objects and spheres they move (emitters, which stay sharp, left out).
+struct ShutterBlur {
+  bool camera = false;
+  uint32_t objects = 0, spheres = 0;
+};
+ShutterBlur shutterBlur(const SceneDesc& scene);
+
 // Light `index` of a scene, `light`, with its tracks in `animation` applied at `frame`.
 LightDesc lightAtFrame(const LightDesc& light, uint32_t index, const AnimationDesc& animation,
                        uint32_t frame);

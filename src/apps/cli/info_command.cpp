@@ -3,8 +3,11 @@
 #include "apps/cli/info_command.h"
 
 #include <cstdio>
+#include <string>
+#include <vector>
 
 #include "apps/cli/scene_warnings.h"
+#include "scene/animation.h"
 #include "scene/flatten.h"
 #include "scene/light_emission_desc.h"
 #include "scene/read/scene_loader.h"
@@ -12,9 +15,24 @@
 namespace candela::cli {
 namespace {
 
+// What `blur` says an open shutter blurs: "the camera, 2 objects and 1 sphere"; empty for nothing.
+std::string blurredList(const ShutterBlur& blur) {
+  std::vector<std::string> parts;
+  if (blur.camera) parts.push_back("the camera");
+  const auto count = [&parts](uint32_t n, const char* noun) {
+    if (n > 0) parts.push_back(std::to_string(n) + " " + noun + (n == 1 ? "" : "s"));
+  };
+  count(blur.objects, "object");
+  count(blur.spheres, "sphere");
+  std::string list;
+  for (size_t i = 0; i < parts.size(); ++i)
+    list += (i == 0 ? "" : i + 1 == parts.size() ? " and " : ", ") + parts[i];
+  return list;
+}
+
 // "animation:  48 frames at 24 fps, 2 tracks", and the shutter where it is open: its opening and
-// closing in frames about each frame, and a rolling shutter's rows.
-void printAnimation(const AnimationDesc& animation) {
+// closing in frames about each frame, a rolling shutter's rows, and what it blurs.
+void printAnimation(const AnimationDesc& animation, const ShutterBlur& blur) {
   const size_t tracks = animation.tracks.size();
   std::printf("animation:  %u frame%s at %g fps, %zu track%s", animation.frames,
               animation.frames == 1 ? "" : "s", animation.fps, tracks, tracks == 1 ? "" : "s");
@@ -23,6 +41,10 @@ void printAnimation(const AnimationDesc& animation) {
                 animation.shutterClose);
     if (animation.rowExposure < 1.0f)
       std::printf(", rolling (each row %g%% of it)", 100.0 * animation.rowExposure);
+    const std::string blurred = blurredList(blur);
+    std::printf("; it blurs %s", blurred.empty() ? "nothing (no track moves the camera, an object "
+                                                   "or a sphere)"
+                                                 : blurred.c_str());
   }
   std::printf("\n");
 }
@@ -80,7 +102,7 @@ int runInfo(const InfoOptions& options) {
       scene.lights.size() - rectangles, points, spots, directional, rectangles, spheres, faces,
       environment ? ", the environment" : "");
   std::printf("materials:  %zu\n", scene.materials.size());
-  if (desc.animation) printAnimation(*desc.animation);
+  if (desc.animation) printAnimation(*desc.animation, shutterBlur(desc));
 
   Vec3 lo, hi;
   scene.bounds(&lo, &hi);
