@@ -227,44 +227,57 @@ LightDesc lightAtFrame(const LightDesc& light, uint32_t index, const AnimationDe
 
 namespace {
 
+bool samePose(const SpherePose& a, const SpherePose& b) {
+  return same(a.position, b.position) && a.radius == b.radius;
+}
+
+bool samePose(const ObjectPose& a, const ObjectPose& b) {
+  return same(a.position, b.position) && same(a.rotation, b.rotation) && same(a.scale, b.scale);
+}
+
+// Shape `index` of `shapes` (the scene's spheres or objects, which tracks name as `target`) at each
+// of `times` (in frames), its tracks in `animation` applied by `apply`: the poses `poseOf` takes
+// of it, or none where they are all one.
+template <class Shape, class Apply, class PoseOf>
+auto shutterPosesOf(const std::vector<Shape>& shapes, uint32_t index, AnimTarget target,
+                    const AnimationDesc& animation, const std::vector<double>& times,
+                    const Apply& apply, const PoseOf& poseOf) {
+  std::vector<decltype(poseOf(shapes[index]))> poses;
+  for (double time : times) {
+    Shape at = shapes[index];
+    for (const AnimTrack& t : animation.tracks)
+      if (t.target == target && t.index == index) apply(at, t.property, evaluateTrackAt(t, time));
+    poses.push_back(poseOf(at));
+  }
+  if (std::all_of(poses.begin(), poses.end(),
+                  [&](const auto& pose) { return samePose(pose, poses.front()); }))
+    poses.clear();
+  return poses;
+}
+
 // Gives the spheres and objects of `result` that the tracks of `animation` move across `times`
 // (in frames) their poses there; those that stay put, and emitters (whose light samples know one
 // place only), get none.
 void poseMovingShapes(const AnimationDesc& animation, const std::vector<double>& times,
                       const SceneDesc& scene, SceneDesc& result) {
   for (const AnimTrack& track : animation.tracks) {
-    if (!blurs(track) || track.target == AnimTarget::Camera) continue;
+    if (!blurs(track)) continue;
     if (track.target == AnimTarget::Sphere) {
       SphereDesc& sphere = result.spheres[track.index];
-      if (!sphere.shutterPoses.empty() || sphereEmits(sphere)) continue;
-      std::vector<SpherePose> poses;
-      for (double time : times) {
-        SphereDesc at = scene.spheres[track.index];
-        for (const AnimTrack& t : animation.tracks)
-          if (t.target == AnimTarget::Sphere && t.index == track.index)
-            applyToSphere(at, t.property, evaluateTrackAt(t, time));
-        poses.push_back({at.position, at.radius});
-      }
-      const auto samePose = [&](const SpherePose& p) {
-        return same(p.position, poses.front().position) && p.radius == poses.front().radius;
-      };
-      if (!std::all_of(poses.begin(), poses.end(), samePose)) sphere.shutterPoses = poses;
-    } else {
+      if (sphere.shutterPoses.empty() && !sphereEmits(sphere))
+        sphere.shutterPoses =
+            shutterPosesOf(scene.spheres, track.index, AnimTarget::Sphere, animation, times,
+                           applyToSphere, [](const SphereDesc& s) {
+                             return SpherePose{s.position, s.radius};
+                           });
+    } else if (track.target == AnimTarget::Object) {
       ObjectDesc& object = result.objects[track.index];
-      if (!object.shutterPoses.empty() || objectEmits(object)) continue;
-      std::vector<ObjectPose> poses;
-      for (double time : times) {
-        ObjectDesc at = scene.objects[track.index];
-        for (const AnimTrack& t : animation.tracks)
-          if (t.target == AnimTarget::Object && t.index == track.index)
-            applyToObject(at, t.property, evaluateTrackAt(t, time));
-        poses.push_back({at.position, at.rotation, at.scale});
-      }
-      const auto samePose = [&](const ObjectPose& p) {
-        return same(p.position, poses.front().position) &&
-               same(p.rotation, poses.front().rotation) && same(p.scale, poses.front().scale);
-      };
-      if (!std::all_of(poses.begin(), poses.end(), samePose)) object.shutterPoses = poses;
+      if (object.shutterPoses.empty() && !objectEmits(object))
+        object.shutterPoses =
+            shutterPosesOf(scene.objects, track.index, AnimTarget::Object, animation, times,
+                           applyToObject, [](const ObjectDesc& o) {
+                             return ObjectPose{o.position, o.rotation, o.scale};
+                           });
     }
   }
 }
