@@ -98,6 +98,24 @@ TEST_P(ObjectMotionBlur, SlidingQuadBlocksEachPixelForItsShareOfTheExposure) {
   EXPECT_EQ(ramp, 16 * 24);  // the edge sweeps 24 of the 32 columns
 }
 
+// Under a rolling shutter whose rows are instants, a still camera sees the sliding quad sharp in
+// each row, where it stood when that row was read: row y at (y + 0.5) / 16 of the exposure.
+TEST_P(ObjectMotionBlur, RollingShutterReadsEachRowWhereTheQuadThenStood) {
+  const fs::path dir = fs::temp_directory_path() / "candela_object_motion_blur_rolling";
+  const std::string json = blockedSky(
+      16, R"("objects": [{"id": "slider", "file": "half.obj", "material": "black"}])",
+      R"({"target": "slider", "property": "position", "keys": [[0, [-3, 0, 0]], [1, [3, 0, 0]]]})",
+      R"("shutter": [0, 1], "rolling_shutter": {}, )");
+  const ImageRGB image = renderFrame(json, writeQuads(dir), GetParam());
+  fs::remove_all(dir);
+  for (uint32_t y = 0; y < 16; ++y) {
+    const double edge = -3 + 6 * (y + 0.5) / 16;
+    for (uint32_t x = 0; x < 16; ++x)
+      EXPECT_EQ(image.pixels[3 * (y * 16 + x)], centreX(x, 16) >= edge ? 0.0f : 1.0f)
+          << x << "," << y;
+  }
+}
+
 // A black half-plane x >= 0 turns a quarter about the view's axis while the shutter is open: the
 // pixel at angle phi is blocked while the half-plane's axis, at alpha, lies within 90 degrees of
 // it. The exposure's poses keep the share within 1/64; the first and last poses alone, their
