@@ -176,6 +176,117 @@ TEST_P(ObjectMotionBlur, ShapesHeldStillKeepTheImageOfAClosedShutter) {
 INSTANTIATE_TEST_SUITE_P(Engines, ObjectMotionBlur, ::testing::ValuesIn(test::builtCpuEngines()),
                          test::cpuEngineName);
 
+// A lit scene (a point light and, with `sky`, a sky; a white ball moving over a floor and a
+// turning cube, shadows, and with `sky` bounces and light subpaths), 24 x 24: `animation` its
+// animation block. Without the sky, one interaction and each sample through its pixel's centre:
+// a still renders every sample of a pixel alike.
+std::string litScene(uint32_t spp, bool sky, const std::string& animation) {
+  return R"({"camera": {"width": 24, "height": 24, "fov": 50, "position": [0, 2, 6],
+               "look_at": [0, 0.5, 0], "spp": )" +
+         std::to_string(spp) + R"(},
+    "render": )" +
+         (sky ? R"({"max_depth": 4}, "environment": {"color": [0.2, 0.25, 0.3]},)"
+              : R"({"max_depth": 1, "antialiasing": false},)") +
+         R"(
+    "spheres": [{"position": [0, -1000, 0], "radius": 1000, "color": 0.6},
+                {"id": "ball", "position": [-1.5, 0.6, 0], "radius": 0.6, "color": 0.9}],
+    "objects": [{"id": "box", "shape": "cube", "position": [1, 0.5, -0.5], "scale": 0.5,
+                 "color": [0.8, 0.4, 0.2]}],
+    "lights": [{"position": [1, 4, 3], "intensity": 60}],
+    "animation": )" +
+         animation + "}";
+}
+
+// Frames 1, 3, ..., 127 of an animation that makes over 128 frames the motion litScene's blurred
+// frame makes over its exposure: the stills at the midpoints of 64 even parts of it, and the
+// mean of their images (each with its seed shifted by `seedShift`).
+std::string motionTracks(int end) {
+  const std::string e = std::to_string(end);
+  return R"("tracks": [
+      {"target": "ball", "property": "position", "keys": [[0, [-1.5, 0.6, 0]], [)" +
+         e + R"(, [1.5, 0.6, 0.5]]]},
+      {"target": "box", "property": "rotation", "keys": [[0, [0, 0, 0]], [)" +
+         e + R"(, [0, 90, 30]]]}])";
+}
+std::vector<float> renderDesc(const SceneDesc& desc) {
+  return renderCpu(flattenScene(desc).view(), RenderOptions()).image.pixels;
+}
+std::vector<double> meanOfStills(uint32_t spp, bool sky, uint32_t seedShift,
+                                 std::vector<double>* range = nullptr) {
+  const SceneDesc stills = parseSceneText(
+      litScene(spp, sky, R"({"frames": 129, )" + motionTracks(128) + "}"), "s.json", ".");
+  std::vector<double> mean, lo, hi;
+  for (uint32_t frame = 1; frame < 128; frame += 2) {
+    SceneDesc still = sceneAtFrame(stills, frame);
+    still.render.seed += seedShift;
+    const std::vector<float> image = renderDesc(still);
+    mean.resize(image.size(), 0.0);
+    lo.resize(image.size(), 1e30);
+    hi.resize(image.size(), -1e30);
+    for (size_t i = 0; i < image.size(); ++i) {
+      mean[i] += image[i] / 64.0;
+      lo[i] = std::min(lo[i], double(image[i]));
+      hi[i] = std::max(hi[i], double(image[i]));
+    }
+  }
+  if (range)
+    for (size_t i = 0; i < mean.size(); ++i) range->push_back(hi[i] - lo[i]);
+  return mean;
+}
+SceneDesc blurredLitScene(uint32_t spp, bool sky) {
+  return sceneAtFrame(
+      parseSceneText(
+          litScene(spp, sky, R"({"frames": 2, "shutter": [0, 1], )" + motionTracks(1) + "}"),
+          "s.json", "."),
+      0);
+}
+
+// The blurred frame is the mean over its exposure of the still scene. Where a still renders each
+// pixel's samples alike (one interaction under a point light, every sample through the pixel's
+// centre), each pixel of the blurred frame (1024 samples, their times stratified) is within what
+// the stills at 64 midpoints leave of the exact mean: half a 64th of the pixel's range over the
+// exposure at each of its few jumps (the ball's and its shadow's edges, the cube's), or, where
+// an edge passes the pixel between two midpoints, a 64th of its value.
+TEST(ObjectMotion, BlurredFrameIsTheMeanOfTheStillsAcrossItsExposure) {
+  std::vector<double> range;
+  const std::vector<double> mean = meanOfStills(1, false, 0, &range);
+  const std::vector<float> blurred = renderDesc(blurredLitScene(1024, false));
+  const std::vector<float> sharp = renderDesc(sceneAtFrame(
+      parseSceneText(litScene(1, false, R"({"frames": 129, )" + motionTracks(128) + "}"), "s.json",
+                     "."),
+      64));
+  ASSERT_EQ(blurred.size(), mean.size());
+  size_t moving = 0, apart = 0;
+  for (size_t i = 0; i < mean.size(); ++i) {
+    EXPECT_NEAR(blurred[i], mean[i], std::max(range[i], mean[i]) * 2.0 / 64 + 1e-6) << i;
+    moving += range[i] > 0;
+    apart += std::fabs(sharp[i] - mean[i]) > range[i] * 4.0 / 64 + 1e-3;
+  }
+  EXPECT_GT(moving, mean.size() / 10);  // the motion covers a good part of the image
+  EXPECT_GT(apart, mean.size() / 20);   // and the frame's own still is far from the mean
+}
+
+// With a sky, bounces and light subpaths, the same holds within the noise: the blurred frame
+// (1024 samples) differs from the stills' mean (64 x 16 samples) by about what the two renders'
+// noises make together, each measured by a second render of other seeds. (The blurred frame's
+// stratified times make its noise lighter-tailed than the stills', so the bound is loose.)
+TEST(ObjectMotion, BlurredLitFrameIsTheMeanOfTheStillsWithinTheNoise) {
+  const std::vector<float> a = renderDesc(blurredLitScene(1024, true));
+  SceneDesc reseeded = blurredLitScene(1024, true);
+  reseeded.render.seed += 1000;
+  const std::vector<float> b = renderDesc(reseeded);
+  const std::vector<double> m = meanOfStills(16, true, 0), m2 = meanOfStills(16, true, 5000);
+  double blurNoise = 0, stillsNoise = 0, offMean = 0;
+  for (size_t i = 0; i < a.size(); ++i) {
+    blurNoise += std::fabs(a[i] - b[i]);
+    stillsNoise += std::fabs(m[i] - m2[i]);
+    offMean += std::fabs(a[i] - m[i]);
+  }
+  // Independent noises add in quadrature: what the difference of the two means is from noise.
+  const double noise = std::sqrt((blurNoise * blurNoise + stillsNoise * stillsNoise) / 2);
+  EXPECT_LT(offMean, 1.3 * noise) << offMean / noise;
+}
+
 // The surface a ray meets is where the shape stands at the ray's time: a quad with vertex normals
 // turning a quarter about y, met at mid-exposure where it has turned 45 degrees.
 TEST(ObjectMotion, SurfaceIsWhereTheShapeStandsAtTheRaysTime) {
