@@ -63,7 +63,7 @@ BvhBuildResult buildBvh(const Sphere* spheres, uint32_t sphereCount, const Vec3*
 
 // Builds the BVH of `count` primitives of given boxes: primitive prims[i] (GeometryView numbering)
 // in boxes[i]. For a part of a scene's primitives (those that stand still, or those that move,
-// each in the box of its whole motion: geometry/motion.h).
+// each in its box over one step of its motion: geometry/primitive_bounds.h, partBoxes).
 BvhBuildResult buildBvhOfBoxes(const Bounds3* boxes, const uint32_t* prims, uint32_t count);
 
 // A tree of one level for benchmarks that measure what the BVH buys: a chain of nodes whose

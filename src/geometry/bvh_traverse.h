@@ -163,20 +163,19 @@ CANDELA_HDI bool traverseBvh(const GeometryView& scene, const Ray& ray, bool any
 }  // namespace detail
 
 // The moving primitives' part of a query (the motion BVH's; geometry/motion.h), also for an engine
-// that traces the others itself. Out of line on the CPU: scenes where nothing moves keep their
-// traversal as it was. The nearest hit of a moving primitive before `tMax`:
+// that traces the others itself; the scene must have a motion BVH (motionNodeCount != 0). Out of
+// line on the CPU: scenes where nothing moves keep their traversal as it was. The nearest hit of a
+// moving primitive before `tMax`:
 CANDELA_HD_CPU_CALL bool intersectClosestMoving(const GeometryView& scene, const Ray& ray,
                                                 float tMax, Hit* hit) {
-  return scene.motionNodeCount != 0 &&
-         detail::traverseBvh<true>(scene, ray, false, 0xffffffffu, tMax, hit);
+  return detail::traverseBvh<true>(scene, ray, false, 0xffffffffu, tMax, hit);
 }
 
 // and whether a moving primitive other than `skipPrim` blocks the ray.
 CANDELA_HD_CPU_CALL bool intersectAnyMoving(const GeometryView& scene, const Ray& ray,
                                             uint32_t skipPrim) {
   Hit unused;
-  return scene.motionNodeCount != 0 &&
-         detail::traverseBvh<true>(scene, ray, true, skipPrim, ray.tMax, &unused);
+  return detail::traverseBvh<true>(scene, ray, true, skipPrim, ray.tMax, &unused);
 }
 
 // Nearest hit of `ray` for t in (0, ray.tMax), among the primitives that stand still and then

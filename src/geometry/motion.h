@@ -74,11 +74,8 @@ CANDELA_HDI void triangleCornersAt(const GeometryView& scene, const Triangle& tr
 
 CANDELA_HDI void triangleCornersAt(const GeometryView& scene, const Triangle& tri, float time,
                                    Vec3 (&p)[3]) {
-  if (!triangleMoves(scene, tri)) {
-    for (int k = 0; k < 3; ++k) p[k] = scene.positions[tri.v[k]];
-    return;
-  }
-  triangleCornersAt(scene, tri, motionStepAt(scene, time), p);
+  triangleCornersAt(scene, tri,
+                    triangleMoves(scene, tri) ? motionStepAt(scene, time) : MotionStep(), p);
 }
 
 // Sphere `sphere` at step `s`, moving or not.
@@ -92,8 +89,8 @@ CANDELA_HDI Sphere sphereAt(const GeometryView& scene, uint32_t sphere, MotionSt
 }
 
 CANDELA_HDI Sphere sphereAt(const GeometryView& scene, uint32_t sphere, float time) {
-  if (!sphereMoves(scene, sphere)) return scene.spheres[sphere];
-  return sphereAt(scene, sphere, motionStepAt(scene, time));
+  return sphereAt(scene, sphere,
+                  sphereMoves(scene, sphere) ? motionStepAt(scene, time) : MotionStep());
 }
 
 }  // namespace candela

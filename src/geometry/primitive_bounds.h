@@ -1,6 +1,8 @@
 // Bounding boxes of the scene's primitives, shared by the BVH build and the refit.
 #pragma once
 
+#include <vector>
+
 #include "core/float_error.h"
 #include "geometry/aabb.h"
 #include "geometry/geometry_view.h"
@@ -50,6 +52,20 @@ inline Bounds3 stepBounds(const GeometryView& scene, uint32_t p, uint32_t k) {
   for (uint32_t pose = k; pose <= k + 1; ++pose)
     for (int c = 0; c < 3; ++c) b.grow(scene.motionPositions[scene.vertexMotions[t.v[c]] + pose]);
   return b;
+}
+
+// The primitives of `scene` that move (`moving`) or stand still, appended to *prims, and their
+// boxes (stepBounds over step k) to *boxes: what a BVH over one part of the scene is built from.
+inline void partBoxes(const GeometryView& scene, bool moving, uint32_t k,
+                      std::vector<Bounds3>* boxes, std::vector<uint32_t>* prims) {
+  for (uint32_t p = 0; p < scene.primitiveCount(); ++p) {
+    const bool moves = p < scene.sphereCount
+                           ? sphereMoves(scene, p)
+                           : triangleMoves(scene, scene.triangles[p - scene.sphereCount]);
+    if (moves != moving) continue;
+    boxes->push_back(stepBounds(scene, p, k));
+    prims->push_back(p);
+  }
 }
 
 }  // namespace candela

@@ -528,21 +528,6 @@ void orderTrianglesByLeaf(SceneData& s) {
 
 namespace {
 
-// The boxes of the primitives that move (`moving`) or stand still, those that move over step k of
-// their motion, and the primitives.
-void boxesOf(const SceneData& s, bool moving, uint32_t k, std::vector<Bounds3>* boxes,
-             std::vector<uint32_t>* prims) {
-  const GeometryView view = s.view();
-  for (uint32_t p = 0; p < view.primitiveCount(); ++p) {
-    const bool moves = p < view.sphereCount
-                           ? sphereMoves(view, p)
-                           : triangleMoves(view, view.triangles[p - view.sphereCount]);
-    if (moves != moving) continue;
-    boxes->push_back(stepBounds(view, p, k));
-    prims->push_back(p);
-  }
-}
-
 // The BVH `kind` over a flattened scene's contents (those that stand still, where some move),
 // then the triangles in its leaf order.
 void addBvh(SceneData& s, OwnBvh kind) {
@@ -555,7 +540,7 @@ void addBvh(SceneData& s, OwnBvh kind) {
   } else {  // the SAH build, whatever `kind` (a flat tree serves benchmarks of still scenes)
     std::vector<Bounds3> boxes;
     std::vector<uint32_t> prims;
-    boxesOf(s, false, 0, &boxes, &prims);
+    partBoxes(s.view(), false, 0, &boxes, &prims);
     bvh = buildBvhOfBoxes(boxes.data(), prims.data(), uint32_t(prims.size()));
   }
   s.nodes = std::move(bvh.wideNodes);
@@ -578,7 +563,7 @@ void addMotionBvh(SceneData& s) {
   for (uint32_t k = 0; k + 1 < s.motionTimes.size(); ++k) {
     std::vector<Bounds3> boxes;
     std::vector<uint32_t> prims;
-    boxesOf(s, true, k, &boxes, &prims);
+    partBoxes(s.view(), true, k, &boxes, &prims);
     const BvhBuildResult bvh = buildBvhOfBoxes(boxes.data(), prims.data(), uint32_t(prims.size()));
     const uint32_t nodeBase = uint32_t(s.motionNodes.size());
     const uint32_t primBase = uint32_t(s.motionPrimIndices.size());

@@ -185,26 +185,17 @@ void EmbreeScene::placeSpheres(const SceneData& scene) {
   sphereCount_ = uint32_t(scene.spheres.size());
   sphereNodes_.clear();
   spherePrims_.clear();
-  if (!scene.sphereMotions.empty() && sphereCount_ > kSphereBlocksUpTo) {
-    // Those that move are the motion BVH's (geometry/motion.h): the others' BVH leaves them out,
-    // as their blocks blank them.
-    sphereBlocks_.assign(nullptr, 0);
-    std::vector<Bounds3> boxes;
-    std::vector<uint32_t> still;
-    for (uint32_t i = 0; i < sphereCount_; ++i)
-      if (scene.sphereMotions[i] == kStill) {
-        boxes.push_back(sphereBounds(scene.spheres[i]));
-        still.push_back(i);
-      }
-    BvhBuildResult bvh = buildBvhOfBoxes(boxes.data(), still.data(), uint32_t(still.size()));
-    sphereNodes_ = std::move(bvh.wideNodes);
-    spherePrims_ = std::move(bvh.primIndices);
-  } else if (sphereCount_ <= kSphereBlocksUpTo) {
+  if (sphereCount_ <= kSphereBlocksUpTo) {
     sphereBlocks_.assign(scene.spheres.data(), sphereCount_, widestSphereBlock(),
                          scene.sphereMotions.empty() ? nullptr : scene.sphereMotions.data());
-  } else {
+  } else {  // a BVH over those that stand still: those that move are the motion BVH's
     sphereBlocks_.assign(nullptr, 0);
-    BvhBuildResult bvh = buildBvh(scene.spheres.data(), sphereCount_, nullptr, nullptr, 0);
+    GeometryView spheres = scene.view();
+    spheres.triangleCount = 0;
+    std::vector<Bounds3> boxes;
+    std::vector<uint32_t> still;
+    partBoxes(spheres, false, 0, &boxes, &still);
+    BvhBuildResult bvh = buildBvhOfBoxes(boxes.data(), still.data(), uint32_t(still.size()));
     sphereNodes_ = std::move(bvh.wideNodes);
     spherePrims_ = std::move(bvh.primIndices);
   }
