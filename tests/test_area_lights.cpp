@@ -152,12 +152,12 @@ void expectTriangleSamplingAgreesWithCosineSampling(const std::string& name,
   double lightSum = 0, lightSum2 = 0, cosineSum = 0, cosineSum2 = 0;
   for (int i = 0; i < draws; ++i) {
     LightSample ls;
-    if (sampleLight(view, light, x, u(gen), u(gen), &ls)) {
+    if (sampleLight(view, light, x, 0.0f, u(gen), u(gen), &ls)) {
       const double v = ls.radiance.x * std::max(0.0f, dot(ls.wi, n)) / ls.pdf;
       lightSum += v;
       lightSum2 += v * v;
       // The pdf MIS uses for this direction when a scattered ray finds the same point.
-      const float pdf = emitterPdf(view, light, x, ls.wi, ls.distance, ng);
+      const float pdf = emitterPdf(view, light, x, 0.0f, ls.wi, ls.distance, ng);
       ASSERT_NEAR(pdf, ls.pdf, 1e-3f * ls.pdf) << i;
     }
     const Vec3 wi = Frame(n).toWorld(sampleCosineHemisphere(u(gen), u(gen)));
@@ -224,8 +224,9 @@ TEST(AreaLights, TriangleEmitsFromItsOutsideOnly) {
   const SceneData data = oneEmissiveTriangle("area_back.obj", "v -1 3 -1\nv 0 3 2\nv 2 3 -1\n");
   const SceneView view = data.view();
   LightSample ls;
-  EXPECT_TRUE(sampleLight(view, view.lights[0], Vec3(0, 5, 0), 0.3f, 0.6f, &ls));  // above: front
-  EXPECT_FALSE(sampleLight(view, view.lights[0], Vec3(0, 0, 0), 0.3f, 0.6f, &ls));
+  EXPECT_TRUE(
+      sampleLight(view, view.lights[0], Vec3(0, 5, 0), 0.0f, 0.3f, 0.6f, &ls));  // above: front
+  EXPECT_FALSE(sampleLight(view, view.lights[0], Vec3(0, 0, 0), 0.0f, 0.3f, 0.6f, &ls));
 }
 
 // Many emissive triangles: each is a light, found back from its primitive. Far along their

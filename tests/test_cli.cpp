@@ -444,7 +444,8 @@ TEST_F(CliTest, InfoPrintsTheAnimationAndItsShutter) {
       << r.out;
 }
 
-// What an open shutter blurs: the shapes that tracks move, but not emitters (they stay sharp).
+// What an open shutter blurs: the shapes that tracks move, those that emit too; a light that a
+// track moves stays sharp, with a warning.
 TEST_F(CliTest, InfoSaysWhatTheShutterBlurs) {
   writeFile("quad.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 3\n");
   writeFile("moving.json", R"({"camera": {"width": 8, "height": 8, "spp": 1},
@@ -453,7 +454,9 @@ TEST_F(CliTest, InfoSaysWhatTheShutterBlurs) {
                 {"id": "glow", "position": [0, 2, -5], "radius": 1,
                  "material": {"type": "emissive", "radiance": 1}}],
     "objects": [{"id": "q", "file": "quad.obj", "position": [0, -2, -5]}],
+    "lights": [{"id": "lamp", "position": [0, 5, 0], "intensity": 10}],
     "animation": {"frames": 2, "shutter": 1, "tracks": [
+      {"target": "lamp", "property": "position", "keys": [[0, [0, 5, 0]], [1, [1, 5, 0]]]},
       {"target": "a", "property": "position", "keys": [[0, [0, 0, -5]], [1, [1, 0, -5]]]},
       {"target": "a", "property": "radius", "keys": [[0, 1], [1, 2]]},
       {"target": "b", "property": "radius", "keys": [[0, 1], [1, 2]]},
@@ -461,11 +464,11 @@ TEST_F(CliTest, InfoSaysWhatTheShutterBlurs) {
       {"target": "q", "property": "rotation", "keys": [[0, [0, 0, 0]], [1, [0, 0, 90]]]}]}})");
   RunResult r = run("info moving.json");
   ASSERT_EQ(r.exitCode, 0) << r.err;
-  EXPECT_NE(r.out.find("; shutter open from -0.5 to +0.5 frames; it blurs 1 object and 2 "
+  EXPECT_NE(r.out.find("; shutter open from -0.5 to +0.5 frames; it blurs 1 object and 3 "
                        "spheres\n"),
             std::string::npos)
       << r.out;
-  EXPECT_NE(r.err.find("moves an emitter"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("animation.tracks[0] moves a light"), std::string::npos) << r.err;
 }
 
 // A camera that becomes unusable at the last frame (fov -> 1e-38) is found before any frame is

@@ -105,7 +105,7 @@ void expectMapSamplingConsistentWithItsPdf(uint32_t w, uint32_t h) {
   for (int i = 0; i < draws; ++i) {
     double mis = 0.0;
     LightSample ls;
-    if (sampleLight(view, light, Vec3(0.0f), u(gen), u(gen), &ls)) {
+    if (sampleLight(view, light, Vec3(0.0f), 0.0f, u(gen), u(gen), &ls)) {
       const double off = std::abs(environmentPdf(view, ls.wi) / ls.pdf - 1.0);
       worst = std::max(worst, off);
       if (off > 2e-3) ++offBy2e3;
@@ -230,7 +230,7 @@ TEST(Environment, LightSamplesOfASmallSunCarryNearlyEqualWeights) {
   double sum = 0.0, sum2 = 0.0;
   for (int i = 0; i < draws; ++i) {
     LightSample ls;
-    ASSERT_TRUE(sampleLight(view, light, Vec3(0.0f), u(gen), u(gen), &ls));
+    ASSERT_TRUE(sampleLight(view, light, Vec3(0.0f), 0.0f, u(gen), u(gen), &ls));
     const double e = ls.radiance.x * std::max(0.0f, dot(ls.wi, n)) / ls.pdf;
     sum += e;
     sum2 += e * e;

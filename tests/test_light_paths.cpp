@@ -95,11 +95,11 @@ TEST(LightPaths, EmissionPointsAreUniformOverTheLightsSurface) {
   for (uint32_t i = 0; i < view.lightCount; ++i) {
     const Light& light = view.lights[i];
     const bool sphere = light.type == LightType::Sphere;
-    EXPECT_NEAR(emissionAreaPdf(view, light), sphere ? 1.0f / kPi : 2.0f, 1e-5f);
+    EXPECT_NEAR(emissionAreaPdf(view, light, 0.0f), sphere ? 1.0f / kPi : 2.0f, 1e-5f);
     Vec3 mean(0.0f);
     const int n = 4096;
     for (int k = 0; k < n; ++k) {
-      const EmissionPoint e = sampleEmissionPoint(view, light, (k + 0.5f) / n,
+      const EmissionPoint e = sampleEmissionPoint(view, light, 0.0f, (k + 0.5f) / n,
                                                   float((k * 2654435761u) % 4096u) / 4096.0f);
       mean += e.p / float(n);
       if (sphere) {

@@ -72,10 +72,20 @@ CANDELA_HDI void triangleCornersAt(const GeometryView& scene, const Triangle& tr
   for (int k = 0; k < 3; ++k) p[k] = movingPosition(scene, tri.v[k], s);
 }
 
-CANDELA_HDI void triangleCornersAt(const GeometryView& scene, const Triangle& tri, float time,
-                                   Vec3 (&p)[3]) {
-  triangleCornersAt(scene, tri,
-                    triangleMoves(scene, tri) ? motionStepAt(scene, time) : MotionStep(), p);
+// The corners of moving triangle `tri` at `time`: out of line on the CPU, where only scenes with
+// motion call it (core/device.h).
+CANDELA_HD_CPU_CALL void movingCornersAt(const GeometryView& scene, const Triangle& tri, float time,
+                                         Vec3 (&p)[3]) {
+  triangleCornersAt(scene, tri, motionStepAt(scene, time), p);
+}
+
+CANDELA_HDI_ALWAYS void triangleCornersAt(const GeometryView& scene, const Triangle& tri,
+                                          float time, Vec3 (&p)[3]) {
+  if (!triangleMoves(scene, tri)) {
+    for (int k = 0; k < 3; ++k) p[k] = scene.positions[tri.v[k]];
+    return;
+  }
+  movingCornersAt(scene, tri, time, p);
 }
 
 // Sphere `sphere` at step `s`, moving or not.

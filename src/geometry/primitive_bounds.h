@@ -54,6 +54,14 @@ inline Bounds3 stepBounds(const GeometryView& scene, uint32_t p, uint32_t k) {
   return b;
 }
 
+// The box of primitive p (GeometryView numbering) over the whole exposure: every step's, or where
+// it stands.
+inline Bounds3 sweptBounds(const GeometryView& scene, uint32_t p) {
+  Bounds3 b = stepBounds(scene, p, 0);
+  for (uint32_t k = 1; k + 1 < scene.motionTimeCount; ++k) b.grow(stepBounds(scene, p, k));
+  return b;
+}
+
 // The primitives of `scene` that move (`moving`) or stand still, appended to *prims, and their
 // boxes (stepBounds over step k) to *boxes: what a BVH over one part of the scene is built from.
 inline void partBoxes(const GeometryView& scene, bool moving, uint32_t k,

@@ -65,7 +65,7 @@ CANDELA_HDI void sampleOneLight(const SceneView& scene, uint32_t index, float se
                                 ShadowQuery* shadow) {
   const Light& light = scene.lights[index];
   LightSample ls;
-  if (!sampleLight(scene, light, sp.p, u1, u2, &ls)) return;
+  if (!sampleLight(scene, light, sp.p, sp.time, u1, u2, &ls)) return;
   const bool raised = raisesShadowRay(scene, sp, bsdf.frame.n, ls.wi);
   float bsdfPdf;
   const Vec3 f =
@@ -85,9 +85,10 @@ CANDELA_HDI void sampleOneLight(const SceneView& scene, uint32_t index, float se
   const float lightPdf = selectPmf * ls.pdf;
   // A light with a surface is also reached by the light subpath's connection (none: density 0).
   const float weight =
-      !ls.isDelta ? misWeight3(lightPdf, bsdfPdf,
-                               lightSubpathSolidAnglePdf(scene, index, sp.ng, ls.wi, arrivalPdf),
-                               connectsLightSubpaths(scene, light))
+      !ls.isDelta
+          ? misWeight3(lightPdf, bsdfPdf,
+                       lightSubpathSolidAnglePdf(scene, index, sp.time, sp.ng, ls.wi, arrivalPdf),
+                       connectsLightSubpaths(scene, light))
       : arrivalPdf > 0.0f
           ? misWeight3(arrivalPdf * selectPmf, lightVertexPdf(scene, index, sp.p, sp.ng), 0.0f,
                        connectsLightSubpaths(scene, light))
@@ -217,18 +218,20 @@ CANDELA_HDI_ALWAYS bool survivesRoulette(uint32_t depth, SampleStream& rng, Path
 }
 
 // Direct light at point p in the medium of index-matched glass `inside`, where a path travelling
-// along `travel` scatters by its phase function, as the shadow query *shadow, which crosses the
-// glass (render/shadow_transmittance.h); its numbers drawn as estimateDirect draws them.
+// along `travel` at `time` scatters by its phase function, as the shadow query *shadow, which
+// crosses the glass (render/shadow_transmittance.h); its numbers drawn as estimateDirect draws
+// them.
 CANDELA_HDI void estimateDirectInMedium(const SceneView& scene, const Material& inside,
-                                        const Vec3& p, const Vec3& travel, const Vec3& throughput,
-                                        SampleStream& rng, ShadowQuery* shadow) {
+                                        const Vec3& p, const Vec3& travel, float time,
+                                        const Vec3& throughput, SampleStream& rng,
+                                        ShadowQuery* shadow) {
   float u1, u2, selectPmf;
   const int index = pickLightSample(scene, p, Vec3(0.0f), rng, &u1, &u2, &selectPmf);
   if (index < 0) return;
   const uint32_t key = rayKeyFor(scene, rng, kShadowRay);
   const Light& light = scene.lights[index];
   LightSample ls;
-  if (!sampleLight(scene, light, p, u1, u2, &ls)) return;
+  if (!sampleLight(scene, light, p, time, u1, u2, &ls)) return;
   const float phase = henyeyGreenstein(dot(travel, ls.wi), inside.scatteringAnisotropy);
   const float lightPdf = selectPmf * ls.pdf;
   const float weight = ls.isDelta ? 1.0f : powerHeuristic(lightPdf, phase);
@@ -262,7 +265,8 @@ CANDELA_HDI bool scatterInMedium(const SceneView& scene, const Material& inside,
   if (sampled) {
     ShadowQuery& shadow = lights->query.emplace(0);
     lights->count = 1;
-    estimateDirectInMedium(scene, inside, p, st.ray.direction, st.throughput, rng, &shadow);
+    estimateDirectInMedium(scene, inside, p, st.ray.direction, st.ray.time, st.throughput, rng,
+                           &shadow);
     shadow.ray.time = st.ray.time;
     shadow.medium = st.medium;
     counters.shadow += shadow.active;
@@ -406,9 +410,9 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
       // The ray may have left from an index-matched crossing after the bounce point.
       const float distance = scene.indexMatchedMedia ? length(sp.p - st.bouncePoint) : hit.t;
       const float neePdf = selectPmf * emitterPdf(scene, scene.lights[light], st.bouncePoint,
-                                                  st.ray.direction, distance, sp.ng);
-      const float subpathPdf = lightSubpathSolidAnglePdf(scene, uint32_t(light), st.bounceNormal,
-                                                         st.ray.direction, st.bounceArrivalPdf);
+                                                  sp.time, st.ray.direction, distance, sp.ng);
+      const float subpathPdf = lightSubpathSolidAnglePdf(
+          scene, uint32_t(light), sp.time, st.bounceNormal, st.ray.direction, st.bounceArrivalPdf);
       weight = misWeight3(st.bsdfPdf, neePdf, subpathPdf,
                           connectsLightSubpaths(scene, scene.lights[light]));
     }

@@ -7,6 +7,7 @@
 
 #include "core/constants.h"
 #include "core/sampling.h"
+#include "geometry/motion.h"
 #include "geometry/surface.h"
 #include "render/light.h"
 #include "render/scene_view.h"
@@ -20,29 +21,35 @@ struct EmissionPoint {
   Vec3 p, error, n, radiance;
 };
 
+// Whether area light `l`'s shape moves while the shutter is open (geometry/motion.h).
+CANDELA_HDI bool areaLightMoves(const SceneView& scene, const Light& l) {
+  return l.type == LightType::Sphere ? sphereMoves(scene, l.shape)
+                                     : triangleMoves(scene, scene.triangles[l.shape]);
+}
+
 // The density by area with which sampleEmissionPoint picks a point of area light `l` on one
-// side: one over its emitting area (a sphere's whole surface, a triangle's one side, or both
-// sides of a two-sided one).
-CANDELA_HDI float emissionAreaPdf(const SceneView& scene, const Light& l) {
+// side at `time`: one over its emitting area (a sphere's whole surface, a triangle's one side, or
+// both sides of a two-sided one).
+CANDELA_HDI float emissionAreaPdf(const SceneView& scene, const Light& l, float time) {
   if (l.type == LightType::Sphere) {
-    const float r = scene.spheres[l.shape].radius;
+    const float r = sphereAt(scene, l.shape, time).radius;
     return 1.0f / (4.0f * kPi * r * r);
   }
   const Triangle& tri = scene.triangles[l.shape];
-  const Vec3& p0 = scene.positions[tri.v[0]];
-  const float twiceArea =
-      length(cross(scene.positions[tri.v[1]] - p0, scene.positions[tri.v[2]] - p0));
+  Vec3 p[3];
+  triangleCornersAt(scene, tri, time, p);
+  const float twiceArea = length(cross(p[1] - p[0], p[2] - p[0]));
   const float sides = scene.materials[tri.material].twoSided ? 2.0f : 1.0f;
   return twiceArea > 0.0f ? 2.0f / (sides * twiceArea) : 0.0f;
 }
 
 // A point uniform over the emitting surface of area light `l` (a sphere, or a triangle's side:
-// of a two-sided one, either side alike) for (u1, u2) in [0, 1)^2.
-CANDELA_HDI EmissionPoint sampleEmissionPoint(const SceneView& scene, const Light& l, float u1,
-                                              float u2) {
+// of a two-sided one, either side alike) where it stands at `time`, for (u1, u2) in [0, 1)^2.
+CANDELA_HDI EmissionPoint sampleEmissionPoint(const SceneView& scene, const Light& l, float time,
+                                              float u1, float u2) {
   EmissionPoint e;
   if (l.type == LightType::Sphere) {
-    const Sphere& s = scene.spheres[l.shape];
+    const Sphere s = sphereAt(scene, l.shape, time);
     e.n = sampleUniformCone(u1, u2, 2.0f);  // the whole sphere of directions
     e.p = spherePoint(s, e.n * s.radius, &e.error);
     e.radiance = sphereRadiance(scene, scene.materials[s.material], s, e.p);
@@ -50,9 +57,9 @@ CANDELA_HDI EmissionPoint sampleEmissionPoint(const SceneView& scene, const Ligh
   }
   const Triangle& tri = scene.triangles[l.shape];
   const Material& m = scene.materials[tri.material];
-  const Vec3& p0 = scene.positions[tri.v[0]];
-  const Vec3& p1 = scene.positions[tri.v[1]];
-  const Vec3& p2 = scene.positions[tri.v[2]];
+  Vec3 corners[3];
+  triangleCornersAt(scene, tri, time, corners);
+  const Vec3 &p0 = corners[0], &p1 = corners[1], &p2 = corners[2];
   // A two-sided triangle's side: u1's lower half the outside, its upper half the back, each
   // half stretched over [0, 1) again for the point.
   const bool back = m.twoSided && u1 >= 0.5f;

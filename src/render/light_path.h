@@ -84,8 +84,8 @@ CANDELA_HDI float lightVertexNeePdf(const SceneView& scene, LightVertex* lv) {
   const float pick =
       lightSelectPmf(scene, lv->light, lv->sp.p, reflectingHemisphere(m, lv->toLight, lv->sp.ng));
   lv->neePdf = !lv->area ? pick
-                         : pick * emitterPdf(scene, scene.lights[lv->light], lv->sp.p, lv->toLight,
-                                             lv->distance, lv->lightNormal);
+                         : pick * emitterPdf(scene, scene.lights[lv->light], lv->sp.p, lv->sp.time,
+                                             lv->toLight, lv->distance, lv->lightNormal);
   return lv->neePdf;
 }
 
@@ -113,15 +113,27 @@ CANDELA_HDI float lightVertexPdf(const SceneView& scene, uint32_t index, const V
   return pmf * density * fabsf(dot(ng, d)) / (r2 * sqrtf(r2));
 }
 
+// Light `index`'s pathAreaPdf at `time`: for a light whose shape moves (and may grow), its pick
+// over its area then.
+CANDELA_HDI_ALWAYS float lightPathAreaPdf(const SceneView& scene, uint32_t index, float time) {
+  const Light& l = scene.lights[index];
+  if (scene.motionTimeCount == 0) return l.pathAreaPdf;
+  const bool area = l.type == LightType::Sphere || l.type == LightType::Triangle;
+  if (!area || l.pathPmf == 0.0f || !areaLightMoves(scene, l)) return l.pathAreaPdf;
+  return l.pathPmf * emissionAreaPdf(scene, l, time);
+}
+
 // Where next-event estimation at p (geometric normal ng, found by a BSDF sample of density
 // `arrivalPdf` by area) reaches a point of area light `index` in direction wi, the density with
 // which a light subpath would have made that path instead, in the measure of next-event
 // estimation's own density (solid angle at p, the densities of p cancelled):
-// pathPick / area |cos_p| / (pi arrivalPdf). 0 for a light that starts no subpath.
-CANDELA_HDI float lightSubpathSolidAnglePdf(const SceneView& scene, uint32_t index,
+// pathPick / area |cos_p| / (pi arrivalPdf), the area at `time`. 0 for a light that starts no
+// subpath.
+CANDELA_HDI float lightSubpathSolidAnglePdf(const SceneView& scene, uint32_t index, float time,
                                             const Vec3& ng, const Vec3& wi, float arrivalPdf) {
-  const float start = scene.lights[index].pathAreaPdf;
-  if (start == 0.0f || !(arrivalPdf > 0.0f)) return 0.0f;
+  if (!(arrivalPdf > 0.0f)) return 0.0f;
+  const float start = lightPathAreaPdf(scene, index, time);
+  if (start == 0.0f) return 0.0f;
   return start * fabsf(dot(ng, wi)) * kInvPi / arrivalPdf;
 }
 
@@ -180,7 +192,7 @@ CANDELA_HDI void traceLightVertex(const SceneView& scene, const Tracer& tracer, 
   EmissionPoint e;
   float emitCos = 0.0f;
   if (area) {
-    e = sampleEmissionPoint(scene, light, v1, v2);
+    e = sampleEmissionPoint(scene, light, time, v1, v2);
     const Vec3 local = sampleCosineHemisphere(u1, u2);
     emitCos = local.z;
     if (!(emitCos > 0.0f) || isBlack(e.radiance)) return;
@@ -226,7 +238,7 @@ CANDELA_HDI void traceLightVertex(const SceneView& scene, const Tracer& tracer, 
     // The subpath's density: pick / area at L, cos_L / pi towards the vertex, carried to its
     // surface by |cos_y| / d^2. What the light sends over it, less the geometry term, is then
     // radiance pi / (pick / area).
-    const float startPdf = light.pathAreaPdf;
+    const float startPdf = lightPathAreaPdf(scene, index, time);
     const Vec3 span = e.p - sp.p;
     const float dist2 = dot(span, span);
     lv->distance = sqrtf(dist2);

@@ -13,6 +13,7 @@
 #include "core/check.h"
 #include "core/frame.h"
 #include "core/sampling.h"
+#include "geometry/motion.h"
 #include "geometry/spherical_triangle.h"
 #include "render/scene_view.h"
 #include "render/surface_color.h"
@@ -134,11 +135,11 @@ CANDELA_HDI bool sampleDirectionalLight(const Light& l, float u1, float u2, Ligh
 }
 
 // A point on sphere light `l` seen from p, uniform over the cone the sphere subtends there, with
-// the radiance of its texture (if any) at that point.
-CANDELA_HDI bool sampleSphereLight(const SceneView& scene, const Light& l, const Vec3& p, float u1,
-                                   float u2, LightSample* s) {
+// the radiance of its texture (if any) at that point; the sphere where it stands at `time`.
+CANDELA_HDI bool sampleSphereLight(const SceneView& scene, const Light& l, const Vec3& p,
+                                   float time, float u1, float u2, LightSample* s) {
   CANDELA_DCHECK(l.shape < scene.sphereCount);
-  const Sphere& sphere = scene.spheres[l.shape];
+  const Sphere sphere = sphereAt(scene, l.shape, time);
   const Vec3 toCenter = sphere.center - p;
   const float dist2 = lengthSquared(toCenter);
   const float r2 = sphere.radius * sphere.radius;
@@ -177,17 +178,17 @@ CANDELA_HDI bool sampledBySolidAngle(const Vec3& p0, const Vec3& p1, const Vec3&
 
 // A point on triangle light `l`: uniform over the solid angle it subtends at p where
 // sampledBySolidAngle says so (pdf 1 / solid angle), else uniform by area (pdf
-// d^2 / (cos_light area)). The
-// triangle emits from its outside (render/bsdf.h's convention for ng), and from its back too
-// where its material is two-sided.
-CANDELA_HDI bool sampleTriangleLight(const SceneView& scene, const Light& l, const Vec3& p, float u1,
-                                     float u2, LightSample* s) {
+// d^2 / (cos_light area)), where the triangle stands at `time`. The triangle emits from its
+// outside (render/bsdf.h's convention for ng), and from its back too where its material is
+// two-sided.
+CANDELA_HDI bool sampleTriangleLight(const SceneView& scene, const Light& l, const Vec3& p,
+                                     float time, float u1, float u2, LightSample* s) {
   CANDELA_DCHECK(l.shape < scene.triangleCount);
   const Triangle& tri = scene.triangles[l.shape];
   const Material& m = scene.materials[tri.material];
-  const Vec3& p0 = scene.positions[tri.v[0]];
-  const Vec3& p1 = scene.positions[tri.v[1]];
-  const Vec3& p2 = scene.positions[tri.v[2]];
+  Vec3 corners[3];
+  triangleCornersAt(scene, tri, time, corners);
+  const Vec3 &p0 = corners[0], &p1 = corners[1], &p2 = corners[2];
   Vec3 n = cross(p1 - p0, p2 - p0);
   const float side = dot(n, p - p0);
   // p behind the plane sees the triangle's back: a two-sided one's emits (n then turned towards
@@ -266,17 +267,18 @@ CANDELA_HDI bool sampleEnvironmentLight(const SceneView& scene, float u1, float 
   return true;
 }
 
-// A sample of light `l` as seen from p, from the uniform numbers (u1, u2) (a delta light uses
-// neither); false when the light shows p nothing.
-CANDELA_HDI bool sampleLight(const SceneView& scene, const Light& l, const Vec3& p, float u1,
-                             float u2, LightSample* s) {
+// A sample of light `l` as seen from p at `time` (where a light with a moving shape then stands),
+// from the uniform numbers (u1, u2) (a delta light uses neither); false when the light shows p
+// nothing.
+CANDELA_HDI bool sampleLight(const SceneView& scene, const Light& l, const Vec3& p, float time,
+                             float u1, float u2, LightSample* s) {
   switch (l.type) {
     case LightType::Point:
       return samplePointLight(scene, l, p, s);
     case LightType::Sphere:
-      return sampleSphereLight(scene, l, p, u1, u2, s);
+      return sampleSphereLight(scene, l, p, time, u1, u2, s);
     case LightType::Triangle:
-      return sampleTriangleLight(scene, l, p, u1, u2, s);
+      return sampleTriangleLight(scene, l, p, time, u1, u2, s);
     case LightType::Environment:
       return sampleEnvironmentLight(scene, u1, u2, s);
     case LightType::Directional:
@@ -285,18 +287,17 @@ CANDELA_HDI bool sampleLight(const SceneView& scene, const Light& l, const Vec3&
   return false;
 }
 
-// The solid-angle pdf with which sampleLight, from point `from`, samples the direction `wi` that
-// reached area light `l` at distance t, where the surface's geometric normal is ng.
-CANDELA_HDI float emitterPdf(const SceneView& scene, const Light& l, const Vec3& from,
+// The solid-angle pdf with which sampleLight, from point `from` at `time`, samples the direction
+// `wi` that reached area light `l` at distance t, where the surface's geometric normal is ng.
+CANDELA_HDI float emitterPdf(const SceneView& scene, const Light& l, const Vec3& from, float time,
                              const Vec3& wi, float t, const Vec3& ng) {
   switch (l.type) {
     case LightType::Sphere:
-      return sphereLightPdf(scene.spheres[l.shape], from);
+      return sphereLightPdf(sphereAt(scene, l.shape, time), from);
     case LightType::Triangle: {
-      const Triangle& tri = scene.triangles[l.shape];
-      const Vec3& p0 = scene.positions[tri.v[0]];
-      const Vec3& p1 = scene.positions[tri.v[1]];
-      const Vec3& p2 = scene.positions[tri.v[2]];
+      Vec3 corners[3];
+      triangleCornersAt(scene, scene.triangles[l.shape], time, corners);
+      const Vec3 &p0 = corners[0], &p1 = corners[1], &p2 = corners[2];
       const float area = 0.5f * length(cross(p1 - p0, p2 - p0));
       float solidAngle = 0.0f;
       if (sampledBySolidAngle(p0, p1, p2, area, from, &solidAngle)) return 1.0f / solidAngle;

@@ -180,25 +180,6 @@ CameraDesc cameraAtFrame(const CameraDesc& camera, const AnimationDesc& animatio
   return cameraAtTime(camera, animation, double(frame));  // a whole time: each track's frame value
 }
 
-namespace {
-
-bool emits(const Material& m) { return isEmissive(m) || hasEmission(m); }
-
-bool anyEmits(const std::vector<Material>& materials) {
-  return std::any_of(materials.begin(), materials.end(), emits);
-}
-
-}  // namespace
-
-bool objectEmits(const ObjectDesc& object) {
-  if (object.material) return emits(*object.material) || anyEmits(object.mixParts);
-  return anyEmits(object.mesh->materials) || anyEmits(object.mesh->mixParts);
-}
-
-bool sphereEmits(const SphereDesc& sphere) {
-  return emits(sphere.material) || anyEmits(sphere.mixParts);
-}
-
 ShutterBlur shutterBlur(const SceneDesc& scene) {
   ShutterBlur blur;
   if (!scene.animation) return blur;
@@ -206,10 +187,8 @@ ShutterBlur shutterBlur(const SceneDesc& scene) {
   for (const AnimTrack& track : scene.animation->tracks) {
     if (!blurs(track)) continue;
     if (track.target == AnimTarget::Camera) blur.camera = true;
-    if (track.target == AnimTarget::Object && !objectEmits(scene.objects[track.index]))
-      objects.insert(track.index);
-    if (track.target == AnimTarget::Sphere && !sphereEmits(scene.spheres[track.index]))
-      spheres.insert(track.index);
+    if (track.target == AnimTarget::Object) objects.insert(track.index);
+    if (track.target == AnimTarget::Sphere) spheres.insert(track.index);
   }
   blur.objects = uint32_t(objects.size());
   blur.spheres = uint32_t(spheres.size());
@@ -256,15 +235,14 @@ auto shutterPosesOf(const std::vector<Shape>& shapes, uint32_t index, AnimTarget
 }
 
 // Gives the spheres and objects of `result` that the tracks of `animation` move across `times`
-// (in frames) their poses there; those that stay put, and emitters (whose light samples know one
-// place only), get none.
+// (in frames) their poses there; those that stay put get none.
 void poseMovingShapes(const AnimationDesc& animation, const std::vector<double>& times,
                       const SceneDesc& scene, SceneDesc& result) {
   for (const AnimTrack& track : animation.tracks) {
     if (!blurs(track)) continue;
     if (track.target == AnimTarget::Sphere) {
       SphereDesc& sphere = result.spheres[track.index];
-      if (sphere.shutterPoses.empty() && !sphereEmits(sphere))
+      if (sphere.shutterPoses.empty())
         sphere.shutterPoses =
             shutterPosesOf(scene.spheres, track.index, AnimTarget::Sphere, animation, times,
                            applyToSphere, [](const SphereDesc& s) {
@@ -272,7 +250,7 @@ void poseMovingShapes(const AnimationDesc& animation, const std::vector<double>&
                            });
     } else if (track.target == AnimTarget::Object) {
       ObjectDesc& object = result.objects[track.index];
-      if (object.shutterPoses.empty() && !objectEmits(object))
+      if (object.shutterPoses.empty())
         object.shutterPoses =
             shutterPosesOf(scene.objects, track.index, AnimTarget::Object, animation, times,
                            applyToObject, [](const ObjectDesc& o) {

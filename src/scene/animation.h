@@ -36,13 +36,9 @@ CameraDesc cameraAtTime(const CameraDesc& camera, const AnimationDesc& animation
 constexpr uint32_t kShutterSegments = 16;
 std::vector<double> shutterTimes(const AnimationDesc& animation, uint32_t frame);
 
-// Whether some material of `object` (or of `sphere`) emits light: motion blur leaves such emitters
-// sharp (their light samples know one place only).
-bool objectEmits(const ObjectDesc& object);
-bool sphereEmits(const SphereDesc& sphere);
-
 // What an open shutter blurs in `scene`, by its animation's tracks: whether they move the camera,
-// and how many objects and spheres they move (emitters, which stay sharp, left out).
+// and how many objects and spheres they move (those that emit included: every light sample and
+// light subpath finds them where they stand at its time).
 struct ShutterBlur {
   bool camera = false;
   uint32_t objects = 0, spheres = 0;

@@ -28,9 +28,10 @@ Vec3 emittedRadiance(const SceneData& s, uint32_t material) {
 // What the light tree knows of light l: its box, the cone of its emitting normals, and the power
 // it weighs the light by, the sum of its RGB power (a surface of radiance L and area A emits
 // pi A L, from one side of a triangle, from all of a sphere; a two-sided triangle twice that, its
-// cone every direction). The lights at infinity, picked
-// apart from the tree (SceneView::infiniteLightShare), have no power there.
-LightBounds lightBounds(const SceneData& s, const Light& l) {
+// cone every direction). A shape that moves while the shutter is open is bounded over all it
+// sweeps, its cone every direction (it may turn); its power is the frame's pose's. The lights at
+// infinity, picked apart from the tree (SceneView::infiniteLightShare), have no power there.
+LightBounds lightBounds(const SceneData& s, const SceneView& view, const Light& l) {
   LightBounds b;
   switch (l.type) {
     case LightType::Point:
@@ -44,7 +45,7 @@ LightBounds lightBounds(const SceneData& s, const Light& l) {
       break;
     case LightType::Sphere: {
       const Sphere& sphere = s.spheres[l.shape];
-      const Bounds3 box = sphereBounds(sphere);
+      const Bounds3 box = sweptBounds(view, l.shape);
       b.lo = box.lo;
       b.hi = box.hi;
       b.anchor = sphere.center;
@@ -55,14 +56,14 @@ LightBounds lightBounds(const SceneData& s, const Light& l) {
     }
     case LightType::Triangle: {
       const Triangle& t = s.triangles[l.shape];
-      const Bounds3 box = triangleBounds(s.positions.data(), t);
+      const Bounds3 box = sweptBounds(view, view.sphereCount + l.shape);
       b.lo = box.lo;
       b.hi = box.hi;
       const Vec3& p0 = s.positions[t.v[0]];
       b.axis = cross(s.positions[t.v[1]] - p0, s.positions[t.v[2]] - p0);  // the emitting side
       b.anchor = (p0 + s.positions[t.v[1]] + s.positions[t.v[2]]) / 3.0f;
       const bool twoSided = s.materials[t.material].twoSided;
-      b.cosThetaO = twoSided ? -1.0 : 1.0;
+      b.cosThetaO = twoSided || triangleMoves(view, t) ? -1.0 : 1.0;
       const double sides = twoSided ? 2.0 : 1.0;
       b.power =
           kPi * 0.5 * sides * double(length(b.axis)) * componentSum(emittedRadiance(s, t.material));
@@ -152,7 +153,8 @@ void setLightPathPicks(SceneData& s, const std::vector<LightBounds>& bounds) {
     l.pathPmf = float(powers[i] / total);
     l.pathCdf = float(sum / total);
     const bool area = l.type == LightType::Sphere || l.type == LightType::Triangle;
-    l.pathAreaPdf = area ? l.pathPmf * emissionAreaPdf(view, l) : 0.0f;
+    // (A light whose shape moves takes its own at each ray's time: lightPathAreaPdf.)
+    l.pathAreaPdf = area ? l.pathPmf * emissionAreaPdf(view, l, 0.0f) : 0.0f;
     if (startsLightSubpaths(l)) {
       ++s.lightsStartingPaths;
       s.areaLightsStartPaths |= area;
@@ -226,7 +228,8 @@ void addEmitterLights(SceneData& s, PreviousLights* previous) {
   s.loneDeltaLight = isLoneDeltaLight(s.lights.data(), s.lights.size());
   s.firstHitDeltaLights = firstHitDeltaLights(s.lights.data(), s.lights.size());
   std::vector<LightBounds> bounds;
-  for (const Light& l : s.lights) bounds.push_back(lightBounds(s, l));
+  const SceneView view = s.view();
+  for (const Light& l : s.lights) bounds.push_back(lightBounds(s, view, l));
   setLightPathPicks(s, bounds);
   s.lightTree.clear();
   s.lightTreeHash = 0;

@@ -177,9 +177,8 @@ void loadMeshes(SceneDesc& scene, const std::vector<std::string>& writtenNames,
   shadeFacesWithoutNormals(scene);
 }
 
-// Motion blur covers the camera, the objects and the spheres: an open shutter over a light that
-// moves, or over an emitter (whose light samples know one place only), shows it sharp, where it
-// is at the frame's time.
+// Motion blur covers the camera, the objects and the spheres (those that emit too): an open
+// shutter over a light that moves shows it sharp, where it is at the frame's time.
 void warnOfMotionNotBlurred(SceneDesc& scene) {
   if (!scene.animation || !(scene.animation->shutterClose > scene.animation->shutterOpen)) return;
   for (const AnimTrack& track : scene.animation->tracks) {
@@ -188,15 +187,10 @@ void warnOfMotionNotBlurred(SceneDesc& scene) {
         track.property == AnimProperty::Scale || track.property == AnimProperty::Radius ||
         track.property == AnimProperty::Direction || track.property == AnimProperty::LookAt ||
         track.property == AnimProperty::Up || track.property == AnimProperty::Size;
-    if (!moves || track.target == AnimTarget::Camera) continue;
-    bool sharp = track.target == AnimTarget::Light;
-    if (track.target == AnimTarget::Sphere) sharp = sphereEmits(scene.spheres[track.index]);
-    if (track.target == AnimTarget::Object) sharp = objectEmits(scene.objects[track.index]);
-    if (!sharp) continue;
-    scene.warnings.push_back(scene.file + ": animation.shutter: " + track.where + " moves " +
-                             (track.target == AnimTarget::Light ? "a light" : "an emitter") +
-                             ", which motion blur does not follow: it is shown sharp, where it "
-                             "is at each frame's time");
+    if (!moves || track.target != AnimTarget::Light) continue;
+    scene.warnings.push_back(scene.file + ": animation.shutter: " + track.where +
+                             " moves a light, which motion blur does not follow: it is shown "
+                             "sharp, where it is at each frame's time");
     return;
   }
 }
