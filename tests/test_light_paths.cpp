@@ -67,7 +67,7 @@ TEST(LightPaths, EveryLightButTheEnvironmentStartsSubpathsByPower) {
   EXPECT_EQ(pickLightPathLight(view, 0.93f), 3u);
   EXPECT_EQ(pickLightPathLight(view, 0.99999994f), 3u);  // the largest float below 1
   // The density of the vertex straight below light 2, at distance 2: pick 1/7, 1 / (4 pi 2^2).
-  EXPECT_FLOAT_EQ(lightVertexPdf(view, 2, Vec3(1, -1, 0), Vec3(0, 1, 0)),
+  EXPECT_FLOAT_EQ(lightVertexPdf(view, 2, 0.0f, Vec3(1, -1, 0), Vec3(0, 1, 0)),
                   (1.0f / 7.0f) / (4.0f * kPi * 4.0f));
 }
 

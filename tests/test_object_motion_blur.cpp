@@ -16,6 +16,7 @@
 #include "geometry/bvh_traverse.h"
 #include "geometry/surface.h"
 #include "render/light_emission.h"
+#include "render/light_path.h"
 #include "render/light_sample.h"
 #include "render/light_selection.h"
 #include "scene/animation.h"
@@ -184,7 +185,8 @@ INSTANTIATE_TEST_SUITE_P(Engines, ObjectMotionBlur, ::testing::ValuesIn(test::bu
 // turning cube, shadows, and with `sky` bounces and light subpaths), 24 x 24: `animation` its
 // animation block. Without the sky, one interaction and each sample through its pixel's centre:
 // a still renders every sample of a pixel alike. `glowing`: the ball and the cube emit (and are
-// lights that next-event estimation samples and light subpaths start from).
+// lights that next-event estimation samples and light subpaths start from), and a spot, a
+// rectangle and a sphere light take the point light's place.
 std::string litScene(uint32_t spp, bool sky, const std::string& animation, bool glowing = false) {
   const std::string ball = glowing ? R"({"type": "emissive", "radiance": [3, 2.5, 2]})" : "0.9";
   const std::string box =
@@ -204,7 +206,15 @@ std::string litScene(uint32_t spp, bool sky, const std::string& animation, bool 
          material(ball) + R"(}],
     "objects": [{"id": "box", "shape": "cube", "position": [1, 0.5, -0.5], "scale": 0.5, )" +
          material(box) + R"(}],
-    "lights": [{"position": [1, 4, 3], "intensity": 60}],
+    "lights": )" +
+         (glowing ? R"([{"id": "lamp", "type": "spot", "position": [1, 4, 3], "look_at": [0, 0, 0],
+                 "intensity": 200, "cutoff_angle": 35},
+                {"id": "panel", "type": "rectangle", "position": [-1, 3, 1], "look_at": [0, 0, 0],
+                 "size": [1, 0.5], "intensity": 40, "visible": false},
+                {"id": "bulb", "type": "sphere", "position": [0, 1.8, 1.5], "radius": 0.2,
+                 "intensity": 40, "visible": false}])"
+                  : R"([{"position": [1, 4, 3], "intensity": 60}])") +
+         R"(,
     "animation": )" +
          animation + "}";
 }
@@ -212,13 +222,21 @@ std::string litScene(uint32_t spp, bool sky, const std::string& animation, bool 
 // Frames 1, 3, ..., 127 of an animation that makes over 128 frames the motion litScene's blurred
 // frame makes over its exposure: the stills at the midpoints of 64 even parts of it, and the
 // mean of their images (each with its seed shifted by `seedShift`).
-std::string motionTracks(int end) {
+// With `glowing`, litScene's lights move too (the spot turning to keep its aim).
+std::string motionTracks(int end, bool glowing = false) {
   const std::string e = std::to_string(end);
-  return R"("tracks": [
-      {"target": "ball", "property": "position", "keys": [[0, [-1.5, 0.6, 0]], [)" +
-         e + R"(, [1.5, 0.6, 0.5]]]},
-      {"target": "box", "property": "rotation", "keys": [[0, [0, 0, 0]], [)" +
-         e + R"(, [0, 90, 30]]]}])";
+  const auto track = [&e](const char* target, const char* property, const char* from,
+                          const char* to) {
+    return std::string(R"({"target": ")") + target + R"(", "property": ")" + property +
+           R"(", "keys": [[0, )" + from + "], [" + e + ", " + to + "]]}";
+  };
+  std::string tracks = track("ball", "position", "[-1.5, 0.6, 0]", "[1.5, 0.6, 0.5]") + ", " +
+                       track("box", "rotation", "[0, 0, 0]", "[0, 90, 30]");
+  if (glowing)
+    tracks += ", " + track("lamp", "position", "[1, 4, 3]", "[-1, 4, 2]") + ", " +
+              track("panel", "position", "[-1, 3, 1]", "[1, 3, 0]") + ", " +
+              track("bulb", "position", "[0, 1.8, 1.5]", "[1.2, 1.6, 1]");
+  return R"("tracks": [)" + tracks + "]";
 }
 std::vector<float> renderDesc(const SceneDesc& desc) {
   return renderCpu(flattenScene(desc).view(), RenderOptions()).image.pixels;
@@ -226,7 +244,8 @@ std::vector<float> renderDesc(const SceneDesc& desc) {
 std::vector<double> meanOfStills(uint32_t spp, bool sky, uint32_t seedShift,
                                  std::vector<double>* range = nullptr, bool glowing = false) {
   const SceneDesc stills = parseSceneText(
-      litScene(spp, sky, R"({"frames": 129, )" + motionTracks(128) + "}", glowing), "s.json", ".");
+      litScene(spp, sky, R"({"frames": 129, )" + motionTracks(128, glowing) + "}", glowing),
+      "s.json", ".");
   std::vector<double> mean, lo, hi;
   for (uint32_t frame = 1; frame < 128; frame += 2) {
     SceneDesc still = sceneAtFrame(stills, frame);
@@ -246,12 +265,12 @@ std::vector<double> meanOfStills(uint32_t spp, bool sky, uint32_t seedShift,
   return mean;
 }
 SceneDesc blurredLitScene(uint32_t spp, bool sky, bool glowing = false) {
-  return sceneAtFrame(
-      parseSceneText(
-          litScene(spp, sky, R"({"frames": 2, "shutter": [0, 1], )" + motionTracks(1) + "}",
-                   glowing),
-          "s.json", "."),
-      0);
+  return sceneAtFrame(parseSceneText(litScene(spp, sky,
+                                              R"({"frames": 2, "shutter": [0, 1], )" +
+                                                  motionTracks(1, glowing) + "}",
+                                              glowing),
+                                     "s.json", "."),
+                      0);
 }
 
 // The blurred frame is the mean over its exposure of the still scene. Where a still renders each
@@ -283,11 +302,18 @@ TEST(ObjectMotion, BlurredFrameIsTheMeanOfTheStillsAcrossItsExposure) {
 // the two renders' noises make together, each measured by a second render of other seeds. (The
 // blurred frame's stratified times make its noise lighter-tailed than the stills', so the bound
 // is loose.)
-void expectBlurredFrameIsTheMeanOfTheStillsWithinTheNoise(bool glowing) {
-  const std::vector<float> a = renderDesc(blurredLitScene(1024, true, glowing));
+void expectBlurredFrameIsTheMeanOfTheStillsWithinTheNoise(bool glowing, CpuEngine engine) {
+  const auto render = [engine](SceneDesc desc) {
+    if (engine == CpuEngine::Embree) desc.ownBvh = OwnBvh::None;
+    const SceneData data = flattenScene(desc);
+    CpuRenderer renderer(engine);
+    renderer.setScene(data, SceneChange::Structure);
+    return renderer.render(RenderOptions{}).image.pixels;
+  };
+  const std::vector<float> a = render(blurredLitScene(1024, true, glowing));
   SceneDesc reseeded = blurredLitScene(1024, true, glowing);
   reseeded.render.seed += 1000;
-  const std::vector<float> b = renderDesc(reseeded);
+  const std::vector<float> b = render(reseeded);
   const std::vector<double> m = meanOfStills(16, true, 0, nullptr, glowing),
                             m2 = meanOfStills(16, true, 5000, nullptr, glowing);
   double blurNoise = 0, stillsNoise = 0, offMean = 0;
@@ -303,15 +329,16 @@ void expectBlurredFrameIsTheMeanOfTheStillsWithinTheNoise(bool glowing) {
 
 // With a sky, bounces and light subpaths, the blurred frame is the mean of the stills within the
 // noise.
-TEST(ObjectMotion, BlurredLitFrameIsTheMeanOfTheStillsWithinTheNoise) {
-  expectBlurredFrameIsTheMeanOfTheStillsWithinTheNoise(false);
+TEST_P(ObjectMotionBlur, BlurredLitFrameIsTheMeanOfTheStillsWithinTheNoise) {
+  expectBlurredFrameIsTheMeanOfTheStillsWithinTheNoise(false, GetParam());
 }
 
-// So it is where the moving shapes emit: next-event estimation samples each where it stands at
-// the shading point's time, light subpaths leave it from there, and the densities that weigh the
-// strategies against one another are taken there too.
-TEST(ObjectMotion, MovingEmittersLightTheSceneAsTheStillsDo) {
-  expectBlurredFrameIsTheMeanOfTheStillsWithinTheNoise(true);
+// So it is where the moving shapes emit and the lights move (the spot turning to keep its aim):
+// next-event estimation samples each where it stands at the shading point's time, light subpaths
+// leave it from there, and the densities that weigh the strategies against one another are taken
+// there too.
+TEST_P(ObjectMotionBlur, MovingEmittersAndLightsLightTheSceneAsTheStillsDo) {
+  expectBlurredFrameIsTheMeanOfTheStillsWithinTheNoise(true, GetParam());
 }
 
 // The surface a ray meets is where the shape stands at the ray's time: a quad with vertex normals
@@ -363,33 +390,43 @@ TEST(ObjectMotion, SurfaceIsWhereTheShapeStandsAtTheRaysTime) {
   EXPECT_FALSE(intersectAny(view, late, 0xffffffffu));
 }
 
-// Lights that move are left sharp under an open shutter, with a warning; a shape that moves is
-// blurred without one, one that emits too.
-TEST(ObjectMotion, MovingLightsStaySharpWithAWarningAndEmittersBlur) {
-  const auto warnings = [](const std::string& scene, const std::string& target) {
-    return parseSceneText(
-               blockedSky(4, scene, R"({"target": ")" + target + R"(", "property": "position",
-                              "keys": [[0, [0, 0, 0]], [1, [1, 0, 0]]]})"),
-               "s.json", ".")
-        .warnings;
+// Shapes and lights that move are blurred without a warning, those that emit too, but a
+// directional light, which an open shutter leaves as it is at the frame's time, with one.
+TEST(ObjectMotion, OnlyDirectionalLightsThatTurnStaySharpWithAWarning) {
+  const auto scene = [](const std::string& shapes, const std::string& target,
+                        const std::string& property = "position") {
+    return parseSceneText(blockedSky(4, shapes,
+                                     R"({"target": ")" + target + R"(", "property": ")" + property +
+                                         R"(", "keys": [[0, [0, 0, 1]], [1, [1, 0, 1]]]})"),
+                          "s.json", ".");
   };
   const std::string ball =
       R"("spheres": [{"id": "ball", "position": [0, 0, 0], "radius": 1, "material": "black"}])";
-  EXPECT_TRUE(warnings(ball, "ball").empty());
-  const std::vector<std::string> light = warnings(
+  EXPECT_TRUE(scene(ball, "ball").warnings.empty());
+  const SceneDesc lamp = scene(
       ball + R"(, "lights": [{"id": "lamp", "position": [0, 5, 0], "intensity": 1}])", "lamp");
-  ASSERT_EQ(light.size(), 1u);
-  EXPECT_EQ(light[0],
-            "s.json: animation.shutter: animation.tracks[0] moves a light, which motion blur does "
-            "not follow: it is shown sharp, where it is at each frame's time");
+  EXPECT_TRUE(lamp.warnings.empty());
+  const SceneData lit = flattenScene(sceneAtFrame(lamp, 0));
+  ASSERT_EQ(lit.lights.size(), 2u);  // the lamp and the sky
+  EXPECT_TRUE(lit.lights[0].moves);
+  EXPECT_EQ(lit.lightPoses.size(), kShutterSegments + 1);
+  EXPECT_EQ(lit.motionTimes.size(), kShutterSegments + 1);
+  EXPECT_TRUE(lit.motionNodes.empty());  // no primitive moves
+  const std::vector<std::string> sun =
+      scene(ball + R"(, "lights": [{"id": "sun", "type": "directional", "direction": [0, -1, 0],
+                                    "intensity": 1}])",
+            "sun", "direction")
+          .warnings;
+  ASSERT_EQ(sun.size(), 1u);
+  EXPECT_EQ(
+      sun[0],
+      "s.json: animation.shutter: animation.tracks[0] turns a directional light, which motion "
+      "blur does not follow: it shines as it does at each frame's time");
   const std::string glowing = R"("spheres": [{"id": "ball", "position": [0, 0, 0], "radius": 1,
                                               "material": {"type": "emissive", "radiance": 1}}])";
-  EXPECT_TRUE(warnings(glowing, "ball").empty());
-  const SceneDesc frame = sceneAtFrame(
-      parseSceneText(blockedSky(4, glowing, R"({"target": "ball", "property": "position",
-                                               "keys": [[0, [0, 0, 0]], [1, [1, 0, 0]]]})"),
-                     "s.json", "."),
-      0);
+  const SceneDesc glow = scene(glowing, "ball");
+  EXPECT_TRUE(glow.warnings.empty());
+  const SceneDesc frame = sceneAtFrame(glow, 0);
   EXPECT_EQ(frame.spheres[0].shutterPoses.size(), kShutterSegments + 1);
   const SceneData data = flattenScene(frame);
   EXPECT_EQ(data.motionTimes.size(), kShutterSegments + 1);
@@ -452,6 +489,39 @@ TEST(ObjectMotion, LightSamplesFindMovingEmittersWhereTheyStandAtTheirTime) {
                 1e-4f * ls.pdf);
     EXPECT_NEAR(emissionAreaPdf(view, half, 0.5f), 2.0f, 1e-4f);  // it turns, not grows
   }
+}
+
+// A spot light that moves is sampled where it stands at the shading point's time, its cone
+// aimed as it then is: one sliding from above the origin to 4 along x, aimed at the origin
+// throughout, with a cone of 10 degrees.
+TEST(ObjectMotion, MovingSpotLightShinesFromWhereItStandsAtEachTime) {
+  const std::string scene =
+      R"("spheres": [{"position": [0, -100, 0], "radius": 1, "material": "black"}],
+    "lights": [{"id": "lamp", "type": "spot", "position": [0, 5, 0], "look_at": [0, 0, 0],
+                "intensity": 100, "cutoff_angle": 10}])";
+  const SceneData data = flattenScene(
+      sceneAtFrame(parseSceneText(blockedSky(4, scene, R"({"target": "lamp", "property": "position",
+                                              "keys": [[0, [0, 5, 0]], [1, [4, 5, 0]]]})"),
+                                  "s.json", "."),
+                   0));
+  const SceneView view = data.view();
+  const Light& lamp = view.lights[0];
+  ASSERT_TRUE(lamp.moves);
+  const Vec3 origin(0.0f), aside(4.0f, 0.0f, 0.0f), up(0.0f, 1.0f, 0.0f);
+  LightSample ls;
+  // Halfway, at (2, 5, 0): the origin lies on its axis.
+  ASSERT_TRUE(sampleLight(view, lamp, origin, 0.5f, 0.0f, 0.0f, &ls));
+  EXPECT_NEAR(ls.distance, std::sqrt(29.0f), 1e-4f);
+  EXPECT_NEAR(ls.wi.x, 2.0f / std::sqrt(29.0f), 1e-5f);
+  EXPECT_NEAR(ls.wi.y, 5.0f / std::sqrt(29.0f), 1e-5f);
+  EXPECT_GT(lightVertexPdf(view, 0, 0.5f, origin, up), 0.0f);
+  // At the close, above (4, 0, 0) but aimed at the origin: that point is 39 degrees off its axis,
+  // as it is at the opening from straight above the origin.
+  EXPECT_FALSE(sampleLight(view, lamp, aside, 1.0f, 0.0f, 0.0f, &ls));
+  EXPECT_FALSE(sampleLight(view, lamp, aside, 0.0f, 0.0f, 0.0f, &ls));
+  EXPECT_EQ(lightVertexPdf(view, 0, 1.0f, aside, up), 0.0f);
+  ASSERT_TRUE(sampleLight(view, lamp, origin, 0.0f, 0.0f, 0.0f, &ls));
+  EXPECT_NEAR(ls.distance, 5.0f, 1e-4f);
 }
 
 }  // namespace

@@ -209,6 +209,12 @@ TEST(SpotLight, TheSceneFormatRefusesWhatASpotCannotBe) {
                         R"(, "animation": {"frames": 3, "tracks": [{"target": "lamp",
                        "property": "position", "keys": [[0, [0, 2, 0]], [2, [0, -2, 0]]]}]})"),
             "s.json: animation.tracks[0]: at frame 1 the spot light looks at its own position");
+  // Under an open shutter, at every time of a frame's exposure too (the light is blurred).
+  EXPECT_EQ(lightsError("{" + at + R"(, "id": "lamp", "look_at": [0, 0, 0]})",
+                        R"(, "animation": {"frames": 2, "shutter": [0, 1], "tracks": [{"target":
+                       "lamp", "property": "position", "keys": [[0, [0, 2, 0]], [1, [0, -2, 0]]]}]})"),
+            "s.json: animation.tracks[0]: at time 0.5 (frame 0's exposure) the spot light looks at "
+            "its own position");
   EXPECT_EQ(lightsError("{" + at + R"(, "id": "lamp", "direction": [0, -1, 0]})",
                         R"(, "animation": {"frames": 3, "tracks": [{"target": "lamp",
                        "property": "radius", "keys": [[0, 1]]}]})"),

@@ -90,8 +90,8 @@ CANDELA_HDI void sampleOneLight(const SceneView& scene, uint32_t index, float se
                        lightSubpathSolidAnglePdf(scene, index, sp.time, sp.ng, ls.wi, arrivalPdf),
                        connectsLightSubpaths(scene, light))
       : arrivalPdf > 0.0f
-          ? misWeight3(arrivalPdf * selectPmf, lightVertexPdf(scene, index, sp.p, sp.ng), 0.0f,
-                       connectsLightSubpaths(scene, light))
+          ? misWeight3(arrivalPdf * selectPmf, lightVertexPdf(scene, index, sp.time, sp.p, sp.ng),
+                       0.0f, connectsLightSubpaths(scene, light))
           : 1.0f;
   shadow->contribution = throughput * (f * ls.radiance * (weight / lightPdf));
   shadow->active = true;

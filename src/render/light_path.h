@@ -95,14 +95,12 @@ CANDELA_HDI float lightPathPmf(const SceneView& scene, uint32_t index) {
   return scene.lights[index].pathPmf;
 }
 
-// The density, in area measure, with which a light subpath from point light `index` reaches the
-// point p of geometric normal ng as its first vertex: its pick, times its uniform emission
-// 1 / (4 pi) (a spot's: uniform within its cone, 0 outside) carried to p's surface.
-CANDELA_HDI float lightVertexPdf(const SceneView& scene, uint32_t index, const Vec3& p,
-                                 const Vec3& ng) {
-  const float pmf = lightPathPmf(scene, index);
-  if (pmf == 0.0f) return 0.0f;
-  const Light& light = scene.lights[index];
+// The density, in area measure, with which a light subpath from point light `light` (picked with
+// `pmf`, as it stands at the path's time) reaches the point p of geometric normal ng as its first
+// vertex: its pick, times its uniform emission 1 / (4 pi) (a spot's: uniform within its cone, 0
+// outside) carried to p's surface.
+CANDELA_HDI float pointLightVertexPdf(const Light& light, float pmf, const Vec3& p,
+                                      const Vec3& ng) {
   const Vec3 d = light.position - p;
   const float r2 = dot(d, d);
   float density = 0.25f * kInvPi;
@@ -111,6 +109,17 @@ CANDELA_HDI float lightVertexPdf(const SceneView& scene, uint32_t index, const V
     density = uniformConePdf(coneOneMinusCos(light.spot));
   }
   return pmf * density * fabsf(dot(ng, d)) / (r2 * sqrtf(r2));
+}
+
+// pointLightVertexPdf of point light `index` at `time`.
+CANDELA_HDI float lightVertexPdf(const SceneView& scene, uint32_t index, float time, const Vec3& p,
+                                 const Vec3& ng) {
+  const float pmf = lightPathPmf(scene, index);
+  if (pmf == 0.0f) return 0.0f;
+  const Light& light = scene.lights[index];
+  if (light.moves)
+    return pointLightVertexPdf(posedPointLight(scene, scene.lightPoses, light, time), pmf, p, ng);
+  return pointLightVertexPdf(light, pmf, p, ng);
 }
 
 // Light `index`'s pathAreaPdf at `time`: for a light whose shape moves (and may grow), its pick
@@ -183,7 +192,11 @@ CANDELA_HDI void traceLightVertex(const SceneView& scene, const Tracer& tracer, 
   float u1, u2;
   rng.next2D(&u1, &u2);
   const uint32_t index = pickLightPathLight(scene, uPick);
-  const Light& light = scene.lights[index];
+  Light posed;  // a moving point light, where it stands at `time`
+  const Light& light =
+      scene.lights[index].moves
+          ? (posed = posedPointLight(scene, scene.lightPoses, scene.lights[index], time))
+          : scene.lights[index];
   // A point light or a light with a surface: the lights at infinity start none (pathPmf 0).
   const bool area = light.type == LightType::Sphere || light.type == LightType::Triangle;
   float v1 = 0.0f, v2 = 0.0f;
@@ -233,7 +246,7 @@ CANDELA_HDI void traceLightVertex(const SceneView& scene, const Tracer& tracer, 
     // A profile's directions are drawn uniformly (within the cone) and weighted by it.
     if (light.profile.texture >= 0)
       lv->power *= profileLookup(scene.texturePool(), light.profile, ray.direction);
-    lv->pdfArea = lightVertexPdf(scene, index, sp.p, sp.ng);
+    lv->pdfArea = pointLightVertexPdf(light, lightPathPmf(scene, index), sp.p, sp.ng);
   } else {
     // The subpath's density: pick / area at L, cos_L / pi towards the vertex, carried to its
     // surface by |cos_y| / d^2. What the light sends over it, less the geometry term, is then

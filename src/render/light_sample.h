@@ -274,6 +274,8 @@ CANDELA_HDI bool sampleLight(const SceneView& scene, const Light& l, const Vec3&
                              float u1, float u2, LightSample* s) {
   switch (l.type) {
     case LightType::Point:
+      if (l.moves)
+        return samplePointLight(scene, posedPointLight(scene, scene.lightPoses, l, time), p, s);
       return samplePointLight(scene, l, p, s);
     case LightType::Sphere:
       return sampleSphereLight(scene, l, p, time, u1, u2, s);

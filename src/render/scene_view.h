@@ -14,6 +14,7 @@
 #include "render/camera_motion.h"
 #include "render/environment.h"
 #include "render/light.h"
+#include "render/light_motion.h"
 #include "render/light_tree.h"
 #include "render/material.h"
 #include "render/motion.h"
@@ -38,11 +39,14 @@ namespace candela {
 // by roughness level where some sheen's roughness is textured (render/surface_layers.h), else
 // nothing. vertexColors is empty or parallel to
 // positions: the linear colour that tints a mesh vertex's materials (1 for vertices without).
+// lightPoses holds the poses of the point lights that move while the shutter is open, each
+// light's at every motionTimes from its Light::shape on (render/light_motion.h).
 // cameraPoses is empty, or the camera's poses across the exposure of a motion-blurred frame
 // (render/camera_motion.h), at least two.
 #define CANDELA_SHADING_ARRAYS(X)                                            \
   X(Material, materials, materialCount, Values)                              \
   X(Light, lights, lightCount, Values)                                       \
+  X(LightPose, lightPoses, lightPoseCount, Values)                           \
   X(LightTreeNode, lightTree, lightTreeNodeCount, LightTree)                 \
   X(Vec3, envTexels, envTexelCount, EnvironmentMap)                          \
   X(float, envConditionalCdf, envConditionalCdfCount, EnvironmentMap)        \

@@ -151,7 +151,10 @@ bool blurs(const AnimTrack& track) {
     case AnimTarget::Sphere:
       return track.property == AnimProperty::Position || track.property == AnimProperty::Radius;
     case AnimTarget::Light:
-      return false;
+      return track.property == AnimProperty::Position ||
+             track.property == AnimProperty::Direction || track.property == AnimProperty::LookAt ||
+             track.property == AnimProperty::Up || track.property == AnimProperty::Radius ||
+             track.property == AnimProperty::Size;
   }
   return false;
 }
@@ -180,27 +183,37 @@ CameraDesc cameraAtFrame(const CameraDesc& camera, const AnimationDesc& animatio
   return cameraAtTime(camera, animation, double(frame));  // a whole time: each track's frame value
 }
 
+bool blursLight(const LightDesc& light) { return light.type != LightType::Directional; }
+
 ShutterBlur shutterBlur(const SceneDesc& scene) {
   ShutterBlur blur;
   if (!scene.animation) return blur;
-  std::set<uint32_t> objects, spheres;
+  std::set<uint32_t> objects, spheres, lights;
   for (const AnimTrack& track : scene.animation->tracks) {
     if (!blurs(track)) continue;
     if (track.target == AnimTarget::Camera) blur.camera = true;
     if (track.target == AnimTarget::Object) objects.insert(track.index);
     if (track.target == AnimTarget::Sphere) spheres.insert(track.index);
+    if (track.target == AnimTarget::Light && blursLight(scene.lights[track.index]))
+      lights.insert(track.index);
   }
   blur.objects = uint32_t(objects.size());
   blur.spheres = uint32_t(spheres.size());
+  blur.lights = uint32_t(lights.size());
   return blur;
 }
 
 LightDesc lightAtFrame(const LightDesc& light, uint32_t index, const AnimationDesc& animation,
                        uint32_t frame) {
+  return lightAtTime(light, index, animation, double(frame));  // a whole time: each key's value
+}
+
+LightDesc lightAtTime(const LightDesc& light, uint32_t index, const AnimationDesc& animation,
+                      double time) {
   LightDesc result = light;
   for (const AnimTrack& track : animation.tracks)
     if (track.target == AnimTarget::Light && track.index == index)
-      applyToLight(result, track.property, evaluateTrack(track, frame));
+      applyToLight(result, track.property, evaluateTrackAt(track, time));
   return result;
 }
 
@@ -212,6 +225,21 @@ bool samePose(const SpherePose& a, const SpherePose& b) {
 
 bool samePose(const ObjectPose& a, const ObjectPose& b) {
   return same(a.position, b.position) && same(a.rotation, b.rotation) && same(a.scale, b.scale);
+}
+
+bool samePose(const LightDesc& a, const LightDesc& b) {
+  const auto sameUp = [](const LightDesc& x, const LightDesc& y) {
+    const std::optional<Vec3> none;
+    const std::optional<Vec3>& u = x.rectangle ? x.rectangle->up : none;
+    const std::optional<Vec3>& v = y.rectangle ? y.rectangle->up : none;
+    return u.has_value() == v.has_value() && (!u || same(*u, *v));
+  };
+  const bool sameSize = !a.rectangle || (a.rectangle->size.x == b.rectangle->size.x &&
+                                         a.rectangle->size.y == b.rectangle->size.y);
+  return same(a.position, b.position) && same(a.direction, b.direction) &&
+         a.lookAt.has_value() == b.lookAt.has_value() &&
+         (!a.lookAt || same(*a.lookAt, *b.lookAt)) && a.radius == b.radius && sameSize &&
+         sameUp(a, b);
 }
 
 // Shape `index` of `shapes` (the scene's spheres or objects, which tracks name as `target`) at each
@@ -234,8 +262,9 @@ auto shutterPosesOf(const std::vector<Shape>& shapes, uint32_t index, AnimTarget
   return poses;
 }
 
-// Gives the spheres and objects of `result` that the tracks of `animation` move across `times`
-// (in frames) their poses there; those that stay put get none.
+// Gives the spheres, objects and lights of `result` that the tracks of `animation` move across
+// `times` (in frames) their poses there; those that stay put get none, and so do directional
+// lights (blursLight).
 void poseMovingShapes(const AnimationDesc& animation, const std::vector<double>& times,
                       const SceneDesc& scene, SceneDesc& result) {
   for (const AnimTrack& track : animation.tracks) {
@@ -256,6 +285,12 @@ void poseMovingShapes(const AnimationDesc& animation, const std::vector<double>&
                            applyToObject, [](const ObjectDesc& o) {
                              return ObjectPose{o.position, o.rotation, o.scale};
                            });
+    } else if (track.target == AnimTarget::Light) {
+      LightDesc& light = result.lights[track.index];
+      if (light.shutterPoses.empty() && blursLight(light))
+        light.shutterPoses =
+            shutterPosesOf(scene.lights, track.index, AnimTarget::Light, animation, times,
+                           applyToLight, [](const LightDesc& l) { return l; });
     }
   }
 }

@@ -37,17 +37,24 @@ constexpr uint32_t kShutterSegments = 16;
 std::vector<double> shutterTimes(const AnimationDesc& animation, uint32_t frame);
 
 // What an open shutter blurs in `scene`, by its animation's tracks: whether they move the camera,
-// and how many objects and spheres they move (those that emit included: every light sample and
-// light subpath finds them where they stand at its time).
+// and how many objects, spheres and lights they move (every light sample and light subpath finds
+// what emits where it stands at its time).
 struct ShutterBlur {
   bool camera = false;
-  uint32_t objects = 0, spheres = 0;
+  uint32_t objects = 0, spheres = 0, lights = 0;
 };
 ShutterBlur shutterBlur(const SceneDesc& scene);
+
+// Whether motion blur follows `light` where tracks move it: a point, spot, sphere or rectangle
+// light; a directional light (at infinity) stays as it is at the frame's time.
+bool blursLight(const LightDesc& light);
 
 // Light `index` of a scene, `light`, with its tracks in `animation` applied at `frame`.
 LightDesc lightAtFrame(const LightDesc& light, uint32_t index, const AnimationDesc& animation,
                        uint32_t frame);
+// The same at `time`, in frames (between frames: within a motion-blurred frame's exposure).
+LightDesc lightAtTime(const LightDesc& light, uint32_t index, const AnimationDesc& animation,
+                      double time);
 
 // The still scene at `frame`: every track applied, render.seed + frame, no animation block, and
 // the camera across the frame's exposure where it is motion-blurred (shutterCameras).

@@ -206,11 +206,23 @@ Material emitterOf(const Vec3& radiance) {
   return emitter;
 }
 
+// A point light that moves while the shutter is open (LightDesc::shutterPoses): its poses, from
+// light->shape on in s.lightPoses (render/light_motion.h).
+void addPointLightMotion(SceneData& s, const LightDesc& d, Light* light) {
+  light->moves = true;
+  light->shape = uint32_t(s.lightPoses.size());
+  for (const LightDesc& pose : d.shutterPoses) {
+    const LightProfile profile = lightProfile(pose);
+    s.lightPoses.push_back(
+        LightPose{pose.position, spotCone(pose).axis, profile.axis, profile.c0, profile.c90});
+  }
+}
+
 // A point light (a spot light: with a cone), a directional light, or a sphere light: an
 // emissive sphere (of sphereLightRadiance) that names the light, which in turn names the sphere.
 // A rectangle light appends only its material here: its triangles are geometry
 // (addRectangleLight), made lights with every emissive triangle (addEmitterLights).
-void addLight(SceneData& s, const LightDesc& d) {
+void addLight(SceneData& s, const LightDesc& d, bool geometry) {
   if (d.rectangle) {
     Material emitter = emitterOf(rectangleLightRadiance(d));
     emitter.twoSided = d.rectangle->twoSided;
@@ -226,6 +238,7 @@ void addLight(SceneData& s, const LightDesc& d) {
     light.power = lightPower(d);
     light.spot = spotCone(d);
     light.profile = lightProfile(d);
+    if (!d.shutterPoses.empty()) addPointLightMotion(s, d, &light);
   } else if (d.type == LightType::Directional) {
     light = directionalLight(d);
   } else {
@@ -234,6 +247,12 @@ void addLight(SceneData& s, const LightDesc& d) {
     emitter.hiddenFromCamera = !d.visible;
     s.spheres.push_back(
         Sphere{d.position, d.radius, addMaterial(s, emitter), int32_t(s.lights.size())});
+    if (geometry && !d.shutterPoses.empty()) {
+      s.sphereMotions.resize(light.shape, kStill);
+      s.sphereMotions.push_back(uint32_t(s.motionSpheres.size()));
+      for (const LightDesc& pose : d.shutterPoses)
+        s.motionSpheres.push_back(Sphere{pose.position, pose.radius, s.spheres.back().material});
+    }
   }
   s.lights.push_back(light);
 }
@@ -252,6 +271,18 @@ void addRectangleLight(SceneData& s, const LightDesc& d, uint32_t material) {
   }
   s.triangles.push_back(Triangle{{base, base + 1, base + 2}, material});
   s.triangles.push_back(Triangle{{base, base + 2, base + 3}, material});
+  if (d.shutterPoses.empty()) return;
+  // One that moves while the shutter is open: its corners at each pose.
+  const uint32_t poseCount = uint32_t(d.shutterPoses.size());
+  const uint32_t first = uint32_t(s.motionPositions.size());
+  s.vertexMotions.resize(base, kStill);
+  for (uint32_t v = 0; v < 4; ++v) s.vertexMotions.push_back(first + v * poseCount);
+  s.motionPositions.resize(first + 4 * poseCount);
+  s.motionNormals.resize(s.motionPositions.size(), OctNormal());
+  for (uint32_t k = 0; k < poseCount; ++k) {
+    rectangleCorners(d.shutterPoses[k], corners);
+    for (uint32_t v = 0; v < 4; ++v) s.motionPositions[first + v * poseCount + k] = corners[v];
+  }
 }
 
 // The texture pool and its sRGB table (only when used).
@@ -308,7 +339,7 @@ void addTextureUses(SceneData& s) {
 // The motion arrays' last touches where something moves while the shutter is open: the times,
 // and the vertices and spheres after the last moving one marked still.
 void addMotionTimes(SceneData& s, const SceneDesc& desc) {
-  if (s.vertexMotions.empty() && s.sphereMotions.empty()) return;
+  if (s.vertexMotions.empty() && s.sphereMotions.empty() && s.lightPoses.empty()) return;
   s.motionTimes.assign(desc.shutterTimes.begin(), desc.shutterTimes.end());
   if (!s.vertexMotions.empty()) s.vertexMotions.resize(s.positions.size(), kStill);
   if (!s.sphereMotions.empty()) s.sphereMotions.resize(s.spheres.size(), kStill);
@@ -340,7 +371,7 @@ void addInstances(SceneData& s, const SceneDesc& desc, bool geometry) {
   std::vector<uint32_t> lightMaterials;  // of each light, where it has one
   for (uint32_t i = 0; i < desc.lights.size(); ++i) {
     lightMaterials.push_back(uint32_t(s.materials.size()));
-    addLight(s, desc.lights[i]);
+    addLight(s, desc.lights[i], geometry);
     tagInstance(s, number.firstLight + i);
   }
   std::vector<FlattenedObject> flattened(desc.objects.size());
@@ -559,7 +590,8 @@ void addMotionBvh(SceneData& s) {
   s.motionNodes.clear();
   s.motionRoots.clear();
   s.motionPrimIndices.clear();
-  if (s.motionTimes.empty()) return;
+  // (Where only point lights move, no primitive does.)
+  if (s.motionTimes.empty() || (s.vertexMotions.empty() && s.sphereMotions.empty())) return;
   for (uint32_t k = 0; k + 1 < s.motionTimes.size(); ++k) {
     std::vector<Bounds3> boxes;
     std::vector<uint32_t> prims;

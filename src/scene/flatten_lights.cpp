@@ -28,19 +28,25 @@ Vec3 emittedRadiance(const SceneData& s, uint32_t material) {
 // What the light tree knows of light l: its box, the cone of its emitting normals, and the power
 // it weighs the light by, the sum of its RGB power (a surface of radiance L and area A emits
 // pi A L, from one side of a triangle, from all of a sphere; a two-sided triangle twice that, its
-// cone every direction). A shape that moves while the shutter is open is bounded over all it
-// sweeps, its cone every direction (it may turn); its power is the frame's pose's. The lights at
-// infinity, picked apart from the tree (SceneView::infiniteLightShare), have no power there.
+// cone every direction). A light or shape that moves while the shutter is open is bounded over
+// all it sweeps, its cone every direction (it may turn); its power is the frame's pose's. The
+// lights at infinity, picked apart from the tree (SceneView::infiniteLightShare), have no power
+// there.
 LightBounds lightBounds(const SceneData& s, const SceneView& view, const Light& l) {
   LightBounds b;
   switch (l.type) {
     case LightType::Point:
       b.lo = b.hi = b.anchor = l.position;
       b.cosThetaO = -1.0;  // every direction
-      if (hasCone(l.spot)) {  // the tree's cones widen by 90 degrees: a bound, if a loose one
+      if (hasCone(l.spot) && !l.moves) {  // the tree's cones widen by 90 degrees: a bound
         b.axis = l.spot.axis;
         b.cosThetaO = l.spot.cosCutoff;
       }
+      if (l.moves)  // its poses, between which it moves on straight lines
+        for (uint32_t k = 0; k < view.motionTimeCount; ++k) {
+          b.lo = min(b.lo, s.lightPoses[l.shape + k].position);
+          b.hi = max(b.hi, s.lightPoses[l.shape + k].position);
+        }
       b.power = std::max(0.0, componentSum(l.power));
       break;
     case LightType::Sphere: {

@@ -80,11 +80,12 @@ const SceneData& FrameScene::prepare(const SceneDesc& desc, const FlowMotion* fl
   const auto start = std::chrono::steady_clock::now();
   std::string geometry, structure;
   writeKeys(desc, &geometry, &structure);
-  // A frame whose spheres or objects move while the shutter is open is flattened and built
-  // afresh, and so is the frame after it: no keys, nothing to reuse.
+  // A frame whose spheres, objects or lights move while the shutter is open is flattened and
+  // built afresh, and so is the frame after it: no keys, nothing to reuse.
   const auto posed = [](const auto& shape) { return !shape.shutterPoses.empty(); };
   if (std::any_of(desc.spheres.begin(), desc.spheres.end(), posed) ||
-      std::any_of(desc.objects.begin(), desc.objects.end(), posed)) {
+      std::any_of(desc.objects.begin(), desc.objects.end(), posed) ||
+      std::any_of(desc.lights.begin(), desc.lights.end(), posed)) {
     geometry.clear();
     structure.clear();
   }

@@ -171,6 +171,10 @@ struct LightDesc {
   bool visible = true;
   // The glTF file the light came from ({"gltf": ...} in "lights", resolved), or empty.
   std::string gltfFile;
+  // Empty, or the light at each of SceneDesc::shutterTimes where its tracks move it while the
+  // shutter is open (a point, spot, sphere or rectangle light; sceneAtFrame fills it), each pose
+  // without poses of its own.
+  std::vector<LightDesc> shutterPoses;
 };
 
 struct CameraDesc {
@@ -295,8 +299,8 @@ struct SceneDesc {
   // two times, from 0 to 1; sceneAtFrame fills it): the image is motion-blurred.
   std::vector<ShutterCamera> shutterCameras;
   // Empty, or the times (from 0, the shutter's opening, to 1, its closing; at least two) at which
-  // the spheres and objects that move while the shutter is open have shutterPoses (sceneAtFrame
-  // fills them): the image is motion-blurred.
+  // the spheres, objects and lights that move while the shutter is open have shutterPoses
+  // (sceneAtFrame fills them): the image is motion-blurred.
   std::vector<float> shutterTimes;
   // AnimationDesc::rowExposure, where shutterCameras or shutterTimes is not empty.
   float shutterRowExposure = 1;

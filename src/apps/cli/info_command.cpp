@@ -24,6 +24,7 @@ std::string blurredList(const ShutterBlur& blur) {
   };
   count(blur.objects, "object");
   count(blur.spheres, "sphere");
+  count(blur.lights, "light");
   std::string list;
   for (size_t i = 0; i < parts.size(); ++i)
     list += (i == 0 ? "" : i + 1 == parts.size() ? " and " : ", ") + parts[i];
@@ -42,8 +43,8 @@ void printAnimation(const AnimationDesc& animation, const ShutterBlur& blur) {
     if (animation.rowExposure < 1.0f)
       std::printf(", rolling (each row %g%% of it)", 100.0 * animation.rowExposure);
     const std::string blurred = blurredList(blur);
-    std::printf("; it blurs %s", blurred.empty() ? "nothing (no track moves the camera, an object "
-                                                   "or a sphere)"
+    std::printf("; it blurs %s", blurred.empty() ? "nothing (no track moves the camera, an object, "
+                                                   "a sphere or a light)"
                                                  : blurred.c_str());
   }
   std::printf("\n");

@@ -260,6 +260,16 @@ EmbreeScene::Plan EmbreeScene::planParts(const SceneData& scene) {
     run.firstTriangle = object.firstTriangle + object.triangleCount;
     run.firstVertex = object.firstVertex + object.vertexCount;
   }
+  // After the objects, the rectangle lights' quads, those that move left to the motion BVH.
+  if (!scene.vertexMotions.empty())
+    for (uint32_t t = run.firstTriangle; t < scene.triangles.size(); ++t) {
+      const uint32_t* v = scene.triangles[t].v;
+      if (scene.vertexMotions[v[0]] == kStill) continue;
+      endRun(t, std::min({v[0], v[1], v[2]}));
+      run = Part();
+      run.firstTriangle = t + 1;
+      run.firstVertex = std::max({v[0], v[1], v[2]}) + 1;
+    }
   endRun(uint32_t(scene.triangles.size()), uint32_t(scene.positions.size()));
   return plan;
 }

@@ -366,7 +366,8 @@ void readShutter(const JsonValue& value, AnimationDesc& animation) {
   animation.shutterClose = 0.5f * open;
 }
 
-// A light's aim must make a direction at every frame: a spot or rectangle light aimed with
+// A light's aim must make a direction at every frame (and every time of a blurred frame's
+// exposure): a spot or rectangle light aimed with
 // look_at must not reach that point as either moves, an animated direction must not pass through
 // zero between its keys, and a rectangle light's up must not run along its aim. The fault is put
 // on the light's last track of position, look_at, direction or up.
@@ -382,9 +383,7 @@ void checkAimsAtEveryFrame(const AnimationDesc& animation, const SceneDesc& scen
            t.property == AnimProperty::Direction || t.property == AnimProperty::Up))
         aim = &t;
     if (!aim) continue;
-    for (uint32_t frame = 0; frame < animation.frames; ++frame) {
-      const LightDesc at = lightAtFrame(light, i, animation, frame);
-      const std::string when = "at frame " + std::to_string(frame);
+    const auto check = [&](const LightDesc& at, const std::string& when) {
       if (at.lookAt) {
         if (isBlack(*at.lookAt - at.position))
           failAt(file, aim->where,
@@ -395,6 +394,16 @@ void checkAimsAtEveryFrame(const AnimationDesc& animation, const SceneDesc& scen
       }
       if (at.rectangle && at.rectangle->up && alongUp(lightAxis(at), *at.rectangle->up))
         failAt(file, aim->where, when + " the rectangle light points along its up");
+    };
+    for (uint32_t frame = 0; frame < animation.frames; ++frame) {
+      check(lightAtFrame(light, i, animation, frame), "at frame " + std::to_string(frame));
+      if (!blursLight(light)) continue;
+      // A motion-blurred frame's light must make one at every time of its exposure too.
+      for (double time : shutterTimes(animation, frame)) {
+        char when[64];
+        std::snprintf(when, sizeof(when), "at time %g (frame %u's exposure)", time, frame);
+        check(lightAtTime(light, i, animation, time), when);
+      }
     }
   }
 }

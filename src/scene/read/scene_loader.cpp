@@ -177,20 +177,17 @@ void loadMeshes(SceneDesc& scene, const std::vector<std::string>& writtenNames,
   shadeFacesWithoutNormals(scene);
 }
 
-// Motion blur covers the camera, the objects and the spheres (those that emit too): an open
-// shutter over a light that moves shows it sharp, where it is at the frame's time.
+// Motion blur covers the camera, the objects, the spheres and the lights but directional ones: an
+// open shutter over a directional light that turns shows it as it is at the frame's time.
 void warnOfMotionNotBlurred(SceneDesc& scene) {
   if (!scene.animation || !(scene.animation->shutterClose > scene.animation->shutterOpen)) return;
   for (const AnimTrack& track : scene.animation->tracks) {
-    const bool moves =
-        track.property == AnimProperty::Position || track.property == AnimProperty::Rotation ||
-        track.property == AnimProperty::Scale || track.property == AnimProperty::Radius ||
-        track.property == AnimProperty::Direction || track.property == AnimProperty::LookAt ||
-        track.property == AnimProperty::Up || track.property == AnimProperty::Size;
-    if (!moves || track.target != AnimTarget::Light) continue;
+    if (track.target != AnimTarget::Light || blursLight(scene.lights[track.index]) ||
+        track.property != AnimProperty::Direction)
+      continue;
     scene.warnings.push_back(scene.file + ": animation.shutter: " + track.where +
-                             " moves a light, which motion blur does not follow: it is shown "
-                             "sharp, where it is at each frame's time");
+                             " turns a directional light, which motion blur does not follow: it "
+                             "shines as it does at each frame's time");
     return;
   }
 }
