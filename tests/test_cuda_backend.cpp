@@ -195,14 +195,16 @@ TEST(CudaBackend, MatchesCpuUnderMotionBlur) {
       [](const SceneData& data) { ASSERT_EQ(data.cameraPoses.size(), kShutterSegments + 1); });
 }
 
-// Spheres and objects that move while the shutter is open (geometry/motion.h), one of them
-// emitting: the device traces the motion BVHs, poses the surfaces at each ray's time and samples
-// the moving emitter where it then stands, as the CPU does.
+// Spheres, objects and a point light that move while the shutter is open (geometry/motion.h,
+// render/light_motion.h), one of the objects emitting: the device traces the motion BVHs, poses
+// the surfaces at each ray's time and samples the moving emitter and light where they then stand,
+// as the CPU does.
 TEST(CudaBackend, MatchesCpuWithMovingShapes) {
   REQUIRE_GPU();
   expectFrameZeroMatchesCpu(
       [](std::string& json) {
         json.replace(json.find(R"({"position": [-1.2, 0.5, 0])"), 1, R"({"id": "ball", )");
+        json.replace(json.find(R"({"position": [2, 4, 3])"), 1, R"({"id": "lamp", )");
         json +=
             R"(, "objects": [{"id": "box", "shape": "cube", "position": [0, 1.6, 0], "scale": 0.4},
                 {"id": "glow", "shape": "cube", "position": [1.2, 1.4, 0.6], "scale": 0.2,
@@ -210,10 +212,12 @@ TEST(CudaBackend, MatchesCpuWithMovingShapes) {
     "animation": {"frames": 2, "shutter": [0, 1], "tracks": [
       {"target": "ball", "property": "position", "keys": [[0, [-1.2, 0.5, 0]], [1, [-0.4, 0.9, 0]]]},
       {"target": "box", "property": "rotation", "keys": [[0, [0, 0, 0]], [1, [30, 90, 0]]]},
-      {"target": "glow", "property": "position", "keys": [[0, [1.2, 1.4, 0.6]], [1, [0.4, 1.1, 0.9]]]}]})";
+      {"target": "glow", "property": "position", "keys": [[0, [1.2, 1.4, 0.6]], [1, [0.4, 1.1, 0.9]]]},
+      {"target": "lamp", "property": "position", "keys": [[0, [2, 4, 3]], [1, [-1, 4, 2]]]}]})";
       },
       [](const SceneData& data) {
         ASSERT_FALSE(data.motionNodes.empty());
+        ASSERT_FALSE(data.lightPoses.empty());
         ASSERT_TRUE(data.cameraPoses.empty());
       });
 }
