@@ -186,7 +186,7 @@ INSTANTIATE_TEST_SUITE_P(Engines, ObjectMotionBlur, ::testing::ValuesIn(test::bu
 // animation block. Without the sky, one interaction and each sample through its pixel's centre:
 // a still renders every sample of a pixel alike. `glowing`: the ball and the cube emit (and are
 // lights that next-event estimation samples and light subpaths start from), and a spot, a
-// rectangle and a sphere light take the point light's place.
+// rectangle and a sphere light and a sun with a disc take the point light's place.
 std::string litScene(uint32_t spp, bool sky, const std::string& animation, bool glowing = false) {
   const std::string ball = glowing ? R"({"type": "emissive", "radiance": [3, 2.5, 2]})" : "0.9";
   const std::string box =
@@ -212,7 +212,9 @@ std::string litScene(uint32_t spp, bool sky, const std::string& animation, bool 
                 {"id": "panel", "type": "rectangle", "position": [-1, 3, 1], "look_at": [0, 0, 0],
                  "size": [1, 0.5], "intensity": 40, "visible": false},
                 {"id": "bulb", "type": "sphere", "position": [0, 1.8, 1.5], "radius": 0.2,
-                 "intensity": 40, "visible": false}])"
+                 "intensity": 40, "visible": false},
+                {"id": "sun", "type": "directional", "direction": [-0.3, -1, -0.4],
+                 "intensity": 1.5, "angle": 4}])"
                   : R"([{"position": [1, 4, 3], "intensity": 60}])") +
          R"(,
     "animation": )" +
@@ -222,7 +224,7 @@ std::string litScene(uint32_t spp, bool sky, const std::string& animation, bool 
 // Frames 1, 3, ..., 127 of an animation that makes over 128 frames the motion litScene's blurred
 // frame makes over its exposure: the stills at the midpoints of 64 even parts of it, and the
 // mean of their images (each with its seed shifted by `seedShift`).
-// With `glowing`, litScene's lights move too (the spot turning to keep its aim).
+// With `glowing`, litScene's lights move too (the spot turning to keep its aim, the sun turning).
 std::string motionTracks(int end, bool glowing = false) {
   const std::string e = std::to_string(end);
   const auto track = [&e](const char* target, const char* property, const char* from,
@@ -235,7 +237,8 @@ std::string motionTracks(int end, bool glowing = false) {
   if (glowing)
     tracks += ", " + track("lamp", "position", "[1, 4, 3]", "[-1, 4, 2]") + ", " +
               track("panel", "position", "[-1, 3, 1]", "[1, 3, 0]") + ", " +
-              track("bulb", "position", "[0, 1.8, 1.5]", "[1.2, 1.6, 1]");
+              track("bulb", "position", "[0, 1.8, 1.5]", "[1.2, 1.6, 1]") + ", " +
+              track("sun", "direction", "[-0.3, -1, -0.4]", "[0.5, -1, -0.2]");
   return R"("tracks": [)" + tracks + "]";
 }
 std::vector<float> renderDesc(const SceneDesc& desc) {
@@ -333,7 +336,8 @@ TEST_P(ObjectMotionBlur, BlurredLitFrameIsTheMeanOfTheStillsWithinTheNoise) {
   expectBlurredFrameIsTheMeanOfTheStillsWithinTheNoise(false, GetParam());
 }
 
-// So it is where the moving shapes emit and the lights move (the spot turning to keep its aim):
+// So it is where the moving shapes emit and the lights move (the spot turning to keep its aim, the
+// sun turning, its disc seen by the rays that leave the scene where it then stands):
 // next-event estimation samples each where it stands at the shading point's time, light subpaths
 // leave it from there, and the densities that weigh the strategies against one another are taken
 // there too.
@@ -390,38 +394,33 @@ TEST(ObjectMotion, SurfaceIsWhereTheShapeStandsAtTheRaysTime) {
   EXPECT_FALSE(intersectAny(view, late, 0xffffffffu));
 }
 
-// Shapes and lights that move are blurred without a warning, those that emit too, but a
-// directional light, which an open shutter leaves as it is at the frame's time, with one.
-TEST(ObjectMotion, OnlyDirectionalLightsThatTurnStaySharpWithAWarning) {
+// Shapes and lights that move are blurred without a warning, those that emit too, and a
+// directional light that turns.
+TEST(ObjectMotion, ShapesAndLightsThatMoveBlurWithoutAWarning) {
   const auto scene = [](const std::string& shapes, const std::string& target,
                         const std::string& property = "position") {
     return parseSceneText(blockedSky(4, shapes,
                                      R"({"target": ")" + target + R"(", "property": ")" + property +
-                                         R"(", "keys": [[0, [0, 0, 1]], [1, [1, 0, 1]]]})"),
+                                         R"(", "keys": [[0, [0, -1, 1]], [1, [1, -1, 1]]]})"),
                           "s.json", ".");
   };
   const std::string ball =
       R"("spheres": [{"id": "ball", "position": [0, 0, 0], "radius": 1, "material": "black"}])";
   EXPECT_TRUE(scene(ball, "ball").warnings.empty());
-  const SceneDesc lamp = scene(
-      ball + R"(, "lights": [{"id": "lamp", "position": [0, 5, 0], "intensity": 1}])", "lamp");
-  EXPECT_TRUE(lamp.warnings.empty());
-  const SceneData lit = flattenScene(sceneAtFrame(lamp, 0));
-  ASSERT_EQ(lit.lights.size(), 2u);  // the lamp and the sky
-  EXPECT_TRUE(lit.lights[0].moves);
-  EXPECT_EQ(lit.lightPoses.size(), kShutterSegments + 1);
-  EXPECT_EQ(lit.motionTimes.size(), kShutterSegments + 1);
-  EXPECT_TRUE(lit.motionNodes.empty());  // no primitive moves
-  const std::vector<std::string> sun =
-      scene(ball + R"(, "lights": [{"id": "sun", "type": "directional", "direction": [0, -1, 0],
-                                    "intensity": 1}])",
-            "sun", "direction")
-          .warnings;
-  ASSERT_EQ(sun.size(), 1u);
-  EXPECT_EQ(
-      sun[0],
-      "s.json: animation.shutter: animation.tracks[0] turns a directional light, which motion "
-      "blur does not follow: it shines as it does at each frame's time");
+  for (const std::string light : {R"({"id": "lamp", "position": [0, 5, 0], "intensity": 1})",
+                                  R"({"id": "lamp", "type": "directional", "direction": [0, -1, 0],
+                                      "intensity": 1})"}) {
+    const bool sun = light.find("directional") != std::string::npos;
+    const SceneDesc lamp =
+        scene(ball + R"(, "lights": [)" + light + "]", "lamp", sun ? "direction" : "position");
+    EXPECT_TRUE(lamp.warnings.empty()) << lamp.warnings.front();
+    const SceneData lit = flattenScene(sceneAtFrame(lamp, 0));
+    ASSERT_EQ(lit.lights.size(), 2u);  // the lamp and the sky
+    EXPECT_TRUE(lit.lights[0].moves);
+    EXPECT_EQ(lit.lightPoses.size(), kShutterSegments + 1);
+    EXPECT_EQ(lit.motionTimes.size(), kShutterSegments + 1);
+    EXPECT_TRUE(lit.motionNodes.empty());  // no primitive moves
+  }
   const std::string glowing = R"("spheres": [{"id": "ball", "position": [0, 0, 0], "radius": 1,
                                               "material": {"type": "emissive", "radiance": 1}}])";
   const SceneDesc glow = scene(glowing, "ball");
@@ -522,6 +521,33 @@ TEST(ObjectMotion, MovingSpotLightShinesFromWhereItStandsAtEachTime) {
   EXPECT_EQ(lightVertexPdf(view, 0, 1.0f, aside, up), 0.0f);
   ASSERT_TRUE(sampleLight(view, lamp, origin, 0.0f, 0.0f, 0.0f, &ls));
   EXPECT_NEAR(ls.distance, 5.0f, 1e-4f);
+}
+
+// A directional light that turns shines from its direction at the shading point's time: a sun
+// of a 2-degree disc turning from straight down to 45 degrees towards +x.
+TEST(ObjectMotion, TurningSunShinesFromItsDirectionAtEachTime) {
+  const std::string scene =
+      R"("spheres": [{"position": [0, -100, 0], "radius": 1, "material": "black"}],
+    "lights": [{"id": "sun", "type": "directional", "direction": [0, -1, 0], "intensity": 1,
+                "angle": 2}])";
+  const SceneData data = flattenScene(
+      sceneAtFrame(parseSceneText(blockedSky(4, scene, R"({"target": "sun", "property": "direction",
+                                              "keys": [[0, [0, -1, 0]], [1, [1, -1, 0]]]})"),
+                                  "s.json", "."),
+                   0));
+  const SceneView view = data.view();
+  const Light& sun = view.lights[0];
+  ASSERT_TRUE(sun.moves);
+  for (const float time : {0.0f, 0.5f, 1.0f}) {
+    // The keys' unit directions, blended, reversed.
+    const Vec3 toSun =
+        -normalize(Vec3(0, -1, 0) + (normalize(Vec3(1, -1, 0)) - Vec3(0, -1, 0)) * time);
+    for (int k = 0; k < 8; ++k) {
+      LightSample ls;
+      ASSERT_TRUE(sampleLight(view, sun, Vec3(0.0f), time, (k + 0.5f) / 8, 0.3f, &ls));
+      EXPECT_GT(dot(ls.wi, toSun), std::cos(1.001f * kPi / 180)) << time;  // within the disc
+    }
+  }
 }
 
 }  // namespace

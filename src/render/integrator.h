@@ -189,20 +189,28 @@ struct PathState {
       : ray(cameraRay), maxDepth(scene.settings.maxDepth) {}
 };
 
-// The radiance of the suns' discs (directional lights with an angle) that a ray leaving the scene
-// along `st.ray` sees, each weighted against next-event estimation's sample of it as the
-// environment is; a camera ray (`fromCamera`) does not see those hidden from the camera.
+// The radiance of directional light l's disc that a ray leaving the scene along `st.ray` sees (0
+// where l has none or the ray misses it), weighted against next-event estimation's sample of it
+// as the environment is; a camera ray (`fromCamera`) does not see a disc hidden from the camera.
+CANDELA_HDI Vec3 sunDiscSeen(const SceneView& scene, const Light& l, const PathState& st,
+                             bool fromCamera) {
+  if (!hasSunDisc(l) || !inSunDisc(l, st.ray.direction)) return Vec3(0.0f);
+  if (fromCamera && l.hiddenFromCamera) return Vec3(0.0f);
+  const float weight =
+      st.specularBounce
+          ? 1.0f
+          : powerHeuristic(st.bsdfPdf, scene.infiniteLightShare * uniformConePdf(l.sunOneMinusCos));
+  return sunRadiance(l) * weight;
+}
+
+// What the suns' discs send along `st.ray` (sunDiscSeen), each where it stands at the ray's time.
 CANDELA_HDI Vec3 sunDiscsSeen(const SceneView& scene, const PathState& st, bool fromCamera) {
   Vec3 sum(0.0f);
   for (uint32_t k = 0; k < scene.infiniteLightCount; ++k) {
     const Light& l = scene.lights[scene.infiniteLights[k]];
-    if (!hasSunDisc(l) || !inSunDisc(l, st.ray.direction)) continue;
-    if (fromCamera && l.hiddenFromCamera) continue;
-    const float weight = st.specularBounce
-                             ? 1.0f
-                             : powerHeuristic(st.bsdfPdf, scene.infiniteLightShare *
-                                                              uniformConePdf(l.sunOneMinusCos));
-    sum += sunRadiance(l) * weight;
+    sum += l.moves ? sunDiscSeen(scene, posedLight(scene, scene.lightPoses, l, st.ray.time), st,
+                                 fromCamera)
+                   : sunDiscSeen(scene, l, st, fromCamera);
   }
   return sum;
 }

@@ -47,7 +47,7 @@ struct Light {
   // sends the same radiance; 0 for a delta light, of one direction.
   float sunOneMinusCos = 0.0f;
   bool hiddenFromCamera = false;  // directional lights: camera rays do not see its disc
-  // Point lights: whether it moves while the shutter is open, its poses then from
+  // Point and directional lights: whether it moves while the shutter is open, its poses then from
   // SceneView::lightPoses[shape] on (render/light_motion.h).
   bool moves = false;
   // Named, so that no byte of a light is left unset (frames compare lights byte by byte).
@@ -55,8 +55,8 @@ struct Light {
   // A spot light is a point light limited to a cone; its power is the point light's it would be
   // without one (its intensity within the beam is that light's).
   SpotCone spot;
-  // Area lights: index into the scene's spheres or triangles, by type; a point light that moves:
-  // its first pose in SceneView::lightPoses.
+  // Area lights: index into the scene's spheres or triangles, by type; a point or directional light
+  // that moves: its first pose in SceneView::lightPoses.
   uint32_t shape = 0;
   // The light's path in the light tree (render/light_tree.h): its slot at each level, 3 bits
   // a level from the lowest, the root's first.

@@ -118,7 +118,7 @@ CANDELA_HDI float lightVertexPdf(const SceneView& scene, uint32_t index, float t
   if (pmf == 0.0f) return 0.0f;
   const Light& light = scene.lights[index];
   if (light.moves)
-    return pointLightVertexPdf(posedPointLight(scene, scene.lightPoses, light, time), pmf, p, ng);
+    return pointLightVertexPdf(posedLight(scene, scene.lightPoses, light, time), pmf, p, ng);
   return pointLightVertexPdf(light, pmf, p, ng);
 }
 
@@ -192,10 +192,10 @@ CANDELA_HDI void traceLightVertex(const SceneView& scene, const Tracer& tracer, 
   float u1, u2;
   rng.next2D(&u1, &u2);
   const uint32_t index = pickLightPathLight(scene, uPick);
-  Light posed;  // a moving point light, where it stands at `time`
+  PosedLightSlot posed;  // a moving point light, where it stands at `time`
   const Light& light =
       scene.lights[index].moves
-          ? (posed = posedPointLight(scene, scene.lightPoses, scene.lights[index], time))
+          ? (posed.light = posedLight(scene, scene.lightPoses, scene.lights[index], time))
           : scene.lights[index];
   // A point light or a light with a surface: the lights at infinity start none (pathPmf 0).
   const bool area = light.type == LightType::Sphere || light.type == LightType::Triangle;

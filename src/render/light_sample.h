@@ -275,7 +275,7 @@ CANDELA_HDI bool sampleLight(const SceneView& scene, const Light& l, const Vec3&
   switch (l.type) {
     case LightType::Point:
       if (l.moves)
-        return samplePointLight(scene, posedPointLight(scene, scene.lightPoses, l, time), p, s);
+        return samplePointLight(scene, posedLight(scene, scene.lightPoses, l, time), p, s);
       return samplePointLight(scene, l, p, s);
     case LightType::Sphere:
       return sampleSphereLight(scene, l, p, time, u1, u2, s);
@@ -284,6 +284,8 @@ CANDELA_HDI bool sampleLight(const SceneView& scene, const Light& l, const Vec3&
     case LightType::Environment:
       return sampleEnvironmentLight(scene, u1, u2, s);
     case LightType::Directional:
+      if (l.moves)
+        return sampleDirectionalLight(posedLight(scene, scene.lightPoses, l, time), u1, u2, s);
       return sampleDirectionalLight(l, u1, u2, s);
   }
   return false;

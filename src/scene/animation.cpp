@@ -183,8 +183,6 @@ CameraDesc cameraAtFrame(const CameraDesc& camera, const AnimationDesc& animatio
   return cameraAtTime(camera, animation, double(frame));  // a whole time: each track's frame value
 }
 
-bool blursLight(const LightDesc& light) { return light.type != LightType::Directional; }
-
 ShutterBlur shutterBlur(const SceneDesc& scene) {
   ShutterBlur blur;
   if (!scene.animation) return blur;
@@ -194,8 +192,7 @@ ShutterBlur shutterBlur(const SceneDesc& scene) {
     if (track.target == AnimTarget::Camera) blur.camera = true;
     if (track.target == AnimTarget::Object) objects.insert(track.index);
     if (track.target == AnimTarget::Sphere) spheres.insert(track.index);
-    if (track.target == AnimTarget::Light && blursLight(scene.lights[track.index]))
-      lights.insert(track.index);
+    if (track.target == AnimTarget::Light) lights.insert(track.index);
   }
   blur.objects = uint32_t(objects.size());
   blur.spheres = uint32_t(spheres.size());
@@ -263,8 +260,7 @@ auto shutterPosesOf(const std::vector<Shape>& shapes, uint32_t index, AnimTarget
 }
 
 // Gives the spheres, objects and lights of `result` that the tracks of `animation` move across
-// `times` (in frames) their poses there; those that stay put get none, and so do directional
-// lights (blursLight).
+// `times` (in frames) their poses there; those that stay put get none.
 void poseMovingShapes(const AnimationDesc& animation, const std::vector<double>& times,
                       const SceneDesc& scene, SceneDesc& result) {
   for (const AnimTrack& track : animation.tracks) {
@@ -287,7 +283,7 @@ void poseMovingShapes(const AnimationDesc& animation, const std::vector<double>&
                            });
     } else if (track.target == AnimTarget::Light) {
       LightDesc& light = result.lights[track.index];
-      if (light.shutterPoses.empty() && blursLight(light))
+      if (light.shutterPoses.empty())
         light.shutterPoses =
             shutterPosesOf(scene.lights, track.index, AnimTarget::Light, animation, times,
                            applyToLight, [](const LightDesc& l) { return l; });

@@ -45,10 +45,6 @@ struct ShutterBlur {
 };
 ShutterBlur shutterBlur(const SceneDesc& scene);
 
-// Whether motion blur follows `light` where tracks move it: a point, spot, sphere or rectangle
-// light; a directional light (at infinity) stays as it is at the frame's time.
-bool blursLight(const LightDesc& light);
-
 // Light `index` of a scene, `light`, with its tracks in `animation` applied at `frame`.
 LightDesc lightAtFrame(const LightDesc& light, uint32_t index, const AnimationDesc& animation,
                        uint32_t frame);

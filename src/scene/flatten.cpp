@@ -206,12 +206,17 @@ Material emitterOf(const Vec3& radiance) {
   return emitter;
 }
 
-// A point light that moves while the shutter is open (LightDesc::shutterPoses): its poses, from
-// light->shape on in s.lightPoses (render/light_motion.h).
-void addPointLightMotion(SceneData& s, const LightDesc& d, Light* light) {
+// A point or directional light that moves while the shutter is open (LightDesc::shutterPoses): its
+// poses, from light->shape on in s.lightPoses (render/light_motion.h).
+void addLightMotion(SceneData& s, const LightDesc& d, Light* light) {
   light->moves = true;
   light->shape = uint32_t(s.lightPoses.size());
   for (const LightDesc& pose : d.shutterPoses) {
+    if (d.type == LightType::Directional) {
+      s.lightPoses.push_back(LightPose{Vec3(0.0f), directionalLight(pose).direction, Vec3(0.0f),
+                                       Vec3(0.0f), Vec3(0.0f)});
+      continue;
+    }
     const LightProfile profile = lightProfile(pose);
     s.lightPoses.push_back(
         LightPose{pose.position, spotCone(pose).axis, profile.axis, profile.c0, profile.c90});
@@ -238,9 +243,10 @@ void addLight(SceneData& s, const LightDesc& d, bool geometry) {
     light.power = lightPower(d);
     light.spot = spotCone(d);
     light.profile = lightProfile(d);
-    if (!d.shutterPoses.empty()) addPointLightMotion(s, d, &light);
+    if (!d.shutterPoses.empty()) addLightMotion(s, d, &light);
   } else if (d.type == LightType::Directional) {
     light = directionalLight(d);
+    if (!d.shutterPoses.empty()) addLightMotion(s, d, &light);
   } else {
     light.shape = uint32_t(s.spheres.size());
     Material emitter = emitterOf(sphereLightRadiance(d));

@@ -397,7 +397,6 @@ void checkAimsAtEveryFrame(const AnimationDesc& animation, const SceneDesc& scen
     };
     for (uint32_t frame = 0; frame < animation.frames; ++frame) {
       check(lightAtFrame(light, i, animation, frame), "at frame " + std::to_string(frame));
-      if (!blursLight(light)) continue;
       // A motion-blurred frame's light must make one at every time of its exposure too.
       for (double time : shutterTimes(animation, frame)) {
         char when[64];

@@ -8,7 +8,6 @@
 #include <tuple>
 #include <vector>
 
-#include "scene/animation.h"
 #include "scene/camera_resolve.h"
 #include "scene/mesh_layout.h"
 #include "scene/mesh_order.h"
@@ -177,21 +176,6 @@ void loadMeshes(SceneDesc& scene, const std::vector<std::string>& writtenNames,
   shadeFacesWithoutNormals(scene);
 }
 
-// Motion blur covers the camera, the objects, the spheres and the lights but directional ones: an
-// open shutter over a directional light that turns shows it as it is at the frame's time.
-void warnOfMotionNotBlurred(SceneDesc& scene) {
-  if (!scene.animation || !(scene.animation->shutterClose > scene.animation->shutterOpen)) return;
-  for (const AnimTrack& track : scene.animation->tracks) {
-    if (track.target != AnimTarget::Light || blursLight(scene.lights[track.index]) ||
-        track.property != AnimProperty::Direction)
-      continue;
-    scene.warnings.push_back(scene.file + ": animation.shutter: " + track.where +
-                             " turns a directional light, which motion blur does not follow: it "
-                             "shines as it does at each frame's time");
-    return;
-  }
-}
-
 }  // namespace
 
 SceneDesc parseSceneText(const std::string& text, const std::string& fileLabel,
@@ -244,7 +228,6 @@ SceneDesc parseSceneText(const std::string& text, const std::string& fileLabel,
     scene.animation = readAnimation(*animation, scene);
   followGltfAnimation(scene);
   followGltfObjectAnimations(scene);
-  warnOfMotionNotBlurred(scene);
   const bool cameraAnimated =
       scene.animation && std::any_of(scene.animation->tracks.begin(), scene.animation->tracks.end(),
                                      [](const AnimTrack& t) { return t.target == AnimTarget::Camera; });
