@@ -110,17 +110,36 @@ OctNormal placedNormal(const MeshDesc& mesh, const MeshLayout::Corner& c, const 
   return c.n >= 0 ? encodeOctNormal(r * (mesh.normals[uint32_t(c.n)] / scale)) : OctNormal();
 }
 
-// An object that moves while the shutter is open (ObjectDesc::shutterPoses): its vertices from
-// `base` at each pose, vertex by vertex (geometry/geometry_view.h's motion arrays).
-void addObjectMotion(SceneData& s, const ObjectDesc& obj, const MeshLayout& layout, uint32_t base) {
-  const MeshDesc& mesh = *obj.mesh;
-  const uint32_t vertexCount = layout.vertexCount(mesh),
-                 poseCount = uint32_t(obj.shutterPoses.size());
+// Room in the motion arrays (geometry/geometry_view.h) for `vertexCount` vertices from `base`
+// that move while the shutter is open, at `poseCount` poses each, vertex by vertex: returns
+// where the first vertex's poses begin (vertex v's pose k at first + v * poseCount + k).
+uint32_t addVertexMotion(SceneData& s, uint32_t base, uint32_t vertexCount, uint32_t poseCount) {
   const uint32_t first = uint32_t(s.motionPositions.size());
   s.vertexMotions.resize(base, kStill);
   for (uint32_t v = 0; v < vertexCount; ++v) s.vertexMotions.push_back(first + v * poseCount);
   s.motionPositions.resize(first + size_t(vertexCount) * poseCount);
   s.motionNormals.resize(s.motionPositions.size(), OctNormal());
+  return first;
+}
+
+// The last sphere of s, which moves while the shutter is open: its place and radius at each of
+// `poses` (anything with a position and a radius).
+template <class Pose>
+void addSphereMotion(SceneData& s, const std::vector<Pose>& poses) {
+  const Sphere& sphere = s.spheres.back();
+  s.sphereMotions.resize(s.spheres.size() - 1, kStill);
+  s.sphereMotions.push_back(uint32_t(s.motionSpheres.size()));
+  for (const Pose& pose : poses)
+    s.motionSpheres.push_back(Sphere{pose.position, pose.radius, sphere.material});
+}
+
+// An object that moves while the shutter is open (ObjectDesc::shutterPoses): its vertices from
+// `base` at each pose.
+void addObjectMotion(SceneData& s, const ObjectDesc& obj, const MeshLayout& layout, uint32_t base) {
+  const MeshDesc& mesh = *obj.mesh;
+  const uint32_t vertexCount = layout.vertexCount(mesh),
+                 poseCount = uint32_t(obj.shutterPoses.size());
+  const uint32_t first = addVertexMotion(s, base, vertexCount, poseCount);
   std::vector<Vec3> placed;
   for (uint32_t k = 0; k < poseCount; ++k) {
     const ObjectPose& pose = obj.shutterPoses[k];
@@ -253,12 +272,7 @@ void addLight(SceneData& s, const LightDesc& d, bool geometry) {
     emitter.hiddenFromCamera = !d.visible;
     s.spheres.push_back(
         Sphere{d.position, d.radius, addMaterial(s, emitter), int32_t(s.lights.size())});
-    if (geometry && !d.shutterPoses.empty()) {
-      s.sphereMotions.resize(light.shape, kStill);
-      s.sphereMotions.push_back(uint32_t(s.motionSpheres.size()));
-      for (const LightDesc& pose : d.shutterPoses)
-        s.motionSpheres.push_back(Sphere{pose.position, pose.radius, s.spheres.back().material});
-    }
+    if (geometry && !d.shutterPoses.empty()) addSphereMotion(s, d.shutterPoses);
   }
   s.lights.push_back(light);
 }
@@ -280,11 +294,7 @@ void addRectangleLight(SceneData& s, const LightDesc& d, uint32_t material) {
   if (d.shutterPoses.empty()) return;
   // One that moves while the shutter is open: its corners at each pose.
   const uint32_t poseCount = uint32_t(d.shutterPoses.size());
-  const uint32_t first = uint32_t(s.motionPositions.size());
-  s.vertexMotions.resize(base, kStill);
-  for (uint32_t v = 0; v < 4; ++v) s.vertexMotions.push_back(first + v * poseCount);
-  s.motionPositions.resize(first + 4 * poseCount);
-  s.motionNormals.resize(s.motionPositions.size(), OctNormal());
+  const uint32_t first = addVertexMotion(s, base, 4, poseCount);
   for (uint32_t k = 0; k < poseCount; ++k) {
     rectangleCorners(d.shutterPoses[k], corners);
     for (uint32_t v = 0; v < 4; ++v) s.motionPositions[first + v * poseCount + k] = corners[v];
@@ -367,11 +377,7 @@ void addInstances(SceneData& s, const SceneDesc& desc, bool geometry) {
     s.spheres.push_back(
         Sphere{sd.position, sd.radius, addMaterials(s, &sd.material, 1, sd.mixParts)});
     tagInstance(s, number.firstSphere + i);
-    if (!geometry || sd.shutterPoses.empty()) continue;
-    s.sphereMotions.resize(i, kStill);
-    s.sphereMotions.push_back(uint32_t(s.motionSpheres.size()));
-    for (const SpherePose& pose : sd.shutterPoses)
-      s.motionSpheres.push_back(Sphere{pose.position, pose.radius, s.spheres.back().material});
+    if (geometry && !sd.shutterPoses.empty()) addSphereMotion(s, sd.shutterPoses);
   }
   // Lights after plain spheres: sphere lights append their own emissive spheres.
   std::vector<uint32_t> lightMaterials;  // of each light, where it has one
@@ -596,7 +602,7 @@ void addMotionBvh(SceneData& s) {
   s.motionNodes.clear();
   s.motionRoots.clear();
   s.motionPrimIndices.clear();
-  // (Where only point lights move, no primitive does.)
+  // (Where only point and directional lights move, no primitive does.)
   if (s.motionTimes.empty() || (s.vertexMotions.empty() && s.sphereMotions.empty())) return;
   for (uint32_t k = 0; k + 1 < s.motionTimes.size(); ++k) {
     std::vector<Bounds3> boxes;

@@ -172,8 +172,7 @@ struct LightDesc {
   // The glTF file the light came from ({"gltf": ...} in "lights", resolved), or empty.
   std::string gltfFile;
   // Empty, or the light at each of SceneDesc::shutterTimes where its tracks move it while the
-  // shutter is open (a point, spot, sphere or rectangle light; sceneAtFrame fills it), each pose
-  // without poses of its own.
+  // shutter is open (sceneAtFrame fills it), each pose without poses of its own.
   std::vector<LightDesc> shutterPoses;
 };
 

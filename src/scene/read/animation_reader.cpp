@@ -367,10 +367,10 @@ void readShutter(const JsonValue& value, AnimationDesc& animation) {
 }
 
 // A light's aim must make a direction at every frame (and every time of a blurred frame's
-// exposure): a spot or rectangle light aimed with
-// look_at must not reach that point as either moves, an animated direction must not pass through
-// zero between its keys, and a rectangle light's up must not run along its aim. The fault is put
-// on the light's last track of position, look_at, direction or up.
+// exposure): a spot or rectangle light aimed with look_at must not reach that point as either
+// moves, an animated direction must not pass through zero between its keys, and a rectangle
+// light's up must not run along its aim. The fault is put on the light's last track of position,
+// look_at, direction or up.
 void checkAimsAtEveryFrame(const AnimationDesc& animation, const SceneDesc& scene,
                            const std::string& file) {
   for (uint32_t i = 0; i < scene.lights.size(); ++i) {
