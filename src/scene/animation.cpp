@@ -165,7 +165,8 @@ bool same(const Vec3& a, const Vec3& b) { return a.x == b.x && a.y == b.y && a.z
 
 std::vector<double> shutterTimes(const AnimationDesc& animation, uint32_t frame) {
   if (!(animation.shutterClose > animation.shutterOpen) ||
-      std::none_of(animation.tracks.begin(), animation.tracks.end(), blurs))
+      (std::none_of(animation.tracks.begin(), animation.tracks.end(), blurs) &&
+       !animation.meshesMove))
     return {};
   const double open = double(frame) + animation.shutterOpen;
   const double close = double(frame) + animation.shutterClose;
@@ -194,6 +195,8 @@ ShutterBlur shutterBlur(const SceneDesc& scene) {
     if (track.target == AnimTarget::Sphere) spheres.insert(track.index);
     if (track.target == AnimTarget::Light) lights.insert(track.index);
   }
+  for (uint32_t i = 0; i < scene.objects.size(); ++i)
+    if (scene.objects[i].meshMotion) objects.insert(i);
   blur.objects = uint32_t(objects.size());
   blur.spheres = uint32_t(spheres.size());
   blur.lights = uint32_t(lights.size());
@@ -221,7 +224,37 @@ bool samePose(const SpherePose& a, const SpherePose& b) {
 }
 
 bool samePose(const ObjectPose& a, const ObjectPose& b) {
-  return same(a.position, b.position) && same(a.rotation, b.rotation) && same(a.scale, b.scale);
+  return same(a.position, b.position) && same(a.rotation, b.rotation) && same(a.scale, b.scale) &&
+         a.mesh == b.mesh;
+}
+
+// Whether two meshes of one motion have their vertices and normals in the same places.
+bool samePlaces(const MeshDesc& a, const MeshDesc& b) {
+  const auto equal = [](const std::vector<Vec3>& u, const std::vector<Vec3>& v) {
+    return u.size() == v.size() &&
+           std::equal(u.begin(), u.end(), v.begin(),
+                      [](const Vec3& x, const Vec3& y) { return same(x, y); });
+  };
+  return equal(a.positions, b.positions) && equal(a.normals, b.normals);
+}
+
+// Gives the objects of `result` whose meshes move (ObjectDesc::meshMotion) their meshes at each
+// of `times` (in frames) in their shutter poses, beside the placements their tracks give them
+// there; an object whose mesh and placement stay put while the shutter is open gets none.
+void poseMovingMeshes(const AnimationDesc& animation, const std::vector<double>& times,
+                      SceneDesc& result) {
+  for (ObjectDesc& object : result.objects) {
+    if (!object.meshMotion) continue;
+    std::vector<ObjectPose> poses = object.shutterPoses;
+    if (poses.empty())
+      poses.assign(times.size(), ObjectPose{object.position, object.rotation, object.scale});
+    bool moves = !object.shutterPoses.empty();
+    for (size_t k = 0; k < times.size(); ++k) {
+      poses[k].mesh = object.meshMotion->meshAt(times[k] / double(animation.fps));
+      moves = moves || !samePlaces(*poses[k].mesh, *poses[0].mesh);
+    }
+    object.shutterPoses = moves ? std::move(poses) : std::vector<ObjectPose>();
+  }
 }
 
 bool samePose(const LightDesc& a, const LightDesc& b) {
@@ -298,6 +331,9 @@ SceneDesc sceneAtFrame(const SceneDesc& scene, uint32_t frame) {
   result.animation.reset();
   result.render.seed = scene.render.seed + frame;
   if (!scene.animation) return result;
+  for (ObjectDesc& object : result.objects)
+    if (object.meshMotion)
+      object.mesh = object.meshMotion->meshAt(frame / double(scene.animation->fps));
   for (const AnimTrack& track : scene.animation->tracks) {
     const Vec3 v = evaluateTrack(track, frame);
     switch (track.target) {
@@ -318,6 +354,7 @@ SceneDesc sceneAtFrame(const SceneDesc& scene, uint32_t frame) {
           {result.shutterTimes[k], cameraAtTime(scene.camera, *scene.animation, times[k])});
   result.shutterRowExposure = scene.animation->rowExposure;
   poseMovingShapes(*scene.animation, times, scene, result);
+  poseMovingMeshes(*scene.animation, times, result);
   return result;
 }
 

@@ -143,14 +143,17 @@ void addObjectMotion(SceneData& s, const ObjectDesc& obj, const MeshLayout& layo
   std::vector<Vec3> placed;
   for (uint32_t k = 0; k < poseCount; ++k) {
     const ObjectPose& pose = obj.shutterPoses[k];
+    // A mesh that moves has its vertices where they are then; its triangles, and so its layout,
+    // are the mesh's at every time.
+    const MeshDesc& posed = pose.mesh ? *pose.mesh : mesh;
     const Mat3 r = eulerRotation(pose.rotation);
     placed.clear();
-    placeVertices(mesh, layout, pose.position, r, pose.scale, &placed);
+    placeVertices(posed, layout, pose.position, r, pose.scale, &placed);
     for (uint32_t v = 0; v < vertexCount; ++v) {
       s.motionPositions[first + v * poseCount + k] = placed[v];
       if (layout.withNormals)
         s.motionNormals[first + v * poseCount + k] =
-            placedNormal(mesh, layout.corners[v], r, pose.scale);
+            placedNormal(posed, layout.corners[v], r, pose.scale);
     }
   }
 }

@@ -22,6 +22,7 @@
 #include "render/light.h"
 #include "render/material.h"
 #include "render/render_settings.h"
+#include "scene/mesh_motion.h"
 
 namespace candela {
 
@@ -77,6 +78,8 @@ struct ObjectPose {
   Vec3 position;
   Vec3 rotation;  // degrees, R = Rz * Ry * Rx
   Vec3 scale{1.0f};
+  // Its mesh then, where the mesh moves (ObjectDesc::meshMotion); null: the object's.
+  std::shared_ptr<const MeshDesc> mesh;
 };
 
 struct ObjectDesc {
@@ -97,8 +100,9 @@ struct ObjectDesc {
   // The glTF file's node whose meshes (with its children's) the object holds ("": the file's
   // scene), in the node's own frame.
   std::string gltfNode;
-  // "gltf_animation": the file's animation (by name, or else by number) whose motion of gltfNode
-  // the object follows; loading turns it into the object's position, rotation and scale tracks.
+  // "gltf_animation": the file's animation (by name, or else by number) that the object plays:
+  // loading turns its motion of gltfNode into the object's position, rotation and scale tracks,
+  // and gives what it moves below (nodes, morph weights, skins' joints) as meshMotion.
   bool gltfAnimated = false;
   std::string gltfAnimationName;
   int gltfAnimationNumber = 0;
@@ -109,6 +113,8 @@ struct ObjectDesc {
   std::vector<Material> mixParts;    // what `material` mixes, where it is a mix
   // Read once per file: the objects that name one file share it (and so do frames).
   std::shared_ptr<const MeshDesc> mesh = std::make_shared<const MeshDesc>();
+  // Null, or what moves the mesh's vertices with time (sceneAtFrame puts each frame's in mesh).
+  std::shared_ptr<const MeshMotion> meshMotion;
   // Empty, or its placement at each of SceneDesc::shutterTimes: it moves while the shutter is
   // open.
   std::vector<ObjectPose> shutterPoses;
@@ -254,6 +260,8 @@ struct AnimationDesc {
   // A rolling shutter's rows, read from the top: each row's share of the exposure (1: a global
   // shutter, every row open throughout).
   float rowExposure = 1;
+  // Whether an object's mesh moves (ObjectDesc::meshMotion): the shutter blurs it too.
+  bool meshesMove = false;
 };
 
 // The camera at one time of a frame's exposure, from 0 (the shutter opens) to 1 (it closes).

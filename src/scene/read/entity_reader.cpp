@@ -163,8 +163,8 @@ SphereDesc readSphere(const JsonValue& value, const MaterialLibrary& library,
 namespace {
 
 // An object's "gltf_variant" and "gltf_node", which pick a glTF file's materials and nodes, its
-// "gltf_animation", whose motion of that node it follows, and its "obj_group", which picks an OBJ
-// file's group; `name` is its file as written.
+// "gltf_animation", which it plays, and its "obj_group", which picks an OBJ file's group; `name`
+// is its file as written.
 void readGltfSelection(JsonObject& fields, const std::string& name, ObjectDesc& object) {
   if (std::optional<JsonValue> variant = fields.get("gltf_variant")) {
     object.gltfVariant = variant->string();
@@ -185,8 +185,10 @@ void readGltfSelection(JsonObject& fields, const std::string& name, ObjectDesc& 
       node->fail("a glTF file's node, and \"" + name + "\" is not a glTF file");
   }
   if (std::optional<JsonValue> animation = fields.get("gltf_animation")) {
-    if (object.gltfNode.empty())
-      animation->fail("needs \"gltf_node\": the node whose motion in the file the object follows");
+    if (!object.shape.empty())
+      animation->fail("a glTF file's animation, and the object is a " + object.shape);
+    if (!isGltfPath(object.file))
+      animation->fail("a glTF file's animation, and \"" + name + "\" is not a glTF file");
     object.gltfAnimated = true;
     const std::string expectation = "an animation's name or number, from 0";
     if (animation->json().is_string()) {

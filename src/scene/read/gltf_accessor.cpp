@@ -18,6 +18,8 @@ const char* typeName(int components) {
       return "VEC2";
     case 3:
       return "VEC3";
+    case 16:
+      return "MAT4";
     default:
       return "VEC4";
   }
@@ -160,10 +162,11 @@ std::vector<T> readElements(const tinygltf::Model& model, const tinygltf::Access
 }
 
 void requireType(const tinygltf::Accessor& a, int index, int components, const std::string& where) {
-  const int expected = components == 1   ? TINYGLTF_TYPE_SCALAR
-                       : components == 2 ? TINYGLTF_TYPE_VEC2
-                       : components == 3 ? TINYGLTF_TYPE_VEC3
-                                         : TINYGLTF_TYPE_VEC4;
+  const int expected = components == 1    ? TINYGLTF_TYPE_SCALAR
+                       : components == 2  ? TINYGLTF_TYPE_VEC2
+                       : components == 3  ? TINYGLTF_TYPE_VEC3
+                       : components == 16 ? TINYGLTF_TYPE_MAT4
+                                          : TINYGLTF_TYPE_VEC4;
   if (a.type != expected)
     throw SceneError(where + ": accessor " + std::to_string(index) + " is not of type " +
                      typeName(components));

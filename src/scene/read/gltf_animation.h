@@ -1,5 +1,5 @@
-// A glTF animation's channels that move nodes (translation, rotation and scale; morph weights are
-// not read), sampled at a time in seconds as glTF says: before its first key the first value,
+// A glTF animation's channels (a node's translation, rotation and scale, and its mesh's morph
+// target weights), sampled at a time in seconds as glTF says: before its first key the first value,
 // after its last the last; STEP holds each key, LINEAR interpolates (a rotation by spherical
 // interpolation along the shorter arc), CUBICSPLINE follows the cubic Hermite spline of the keys'
 // tangents (a rotation normalized after). Every accessor is checked as the mesh loader checks its
@@ -24,15 +24,27 @@ class GltfAnimation {
   // node has it), or false.
   bool localAt(int index, const tinygltf::Node& node, double t, GltfMatrix* local) const;
 
+  // The morph target weights of node `index`'s mesh at time t where this animation sets them
+  // (*weights gets one per target), or false.
+  bool weightsAt(int index, double t, std::vector<double>* weights) const;
+
+  // Whether a channel moves node `index` (its translation, rotation or scale).
+  bool moves(int index) const { return nodes_.count(index) > 0; }
+  // Whether a channel sets node `index`'s morph target weights.
+  bool weighs(int index) const { return weights_.count(index) > 0; }
+
  private:
   struct Channel {
     enum class Mode { Step, Linear, Cubic } mode = Mode::Linear;
     std::vector<float> times, values;  // values: a key's components (CUBICSPLINE: in, value, out)
     int components = 3;
+    bool rotation = false;                 // a unit quaternion: spherically interpolated
+    void at(double t, double* out) const;  // `components` numbers
     std::array<double, 4> at(double t) const;
   };
   // node -> its translation's, rotation's and scale's channel in channels_ (-1: none)
   std::map<int, std::array<int, 3>> nodes_;
+  std::map<int, int> weights_;  // node -> its weights' channel in channels_
   std::vector<Channel> channels_;
 };
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <set>
 #include <vector>
 
@@ -23,21 +24,40 @@ class MeshBuilder {
  public:
   // `variant`: the index of the KHR_materials_variants variant that picks the materials (-1:
   // the primitives' own), among `variantCount`.
+  // `rig` poses the vertices (at `rest`); with `keep` it keeps the primitives, for an animation.
   MeshBuilder(const tinygltf::Model& model, const std::string& label, const std::string& folder,
               const std::map<int, std::string>& embedded, TextureLoader& textures, int variant,
-              size_t variantCount)
+              size_t variantCount, GltfRig& rig, const GltfPose& rest, bool keep)
       : model_(model),
         label_(label),
         materials_(model, label, folder, embedded, textures, &mesh_.warnings),
         variant_(variant),
-        variantCount_(variantCount) {}
+        variantCount_(variantCount),
+        rig_(rig),
+        rest_(rest),
+        keep_(keep) {}
 
-  void addNode(int index, const tinygltf::Node& node, const GltfMatrix& world) {
+  void addNode(int index, const tinygltf::Node& node) {
     const std::string where = "nodes[" + std::to_string(index) + "]";
-    if (node.skin >= 0) warn("skins are not applied: skinned meshes keep their rest pose");
     if (node.mesh < 0) return;
-    for (const GltfMatrix& placed : meshPlacements(model_, index, node, world, label_))
-      addMesh(node.mesh, placed, where + ".mesh");
+    if (node.skin >= int(model_.skins.size()))
+      throw SceneError(label_ + ": " + where + ".skin: skin " + std::to_string(node.skin) +
+                       " does not exist (" + std::to_string(model_.skins.size()) + " skins)");
+    // An instanced node's placements under it (none: the node's own transform alone).
+    std::vector<std::optional<GltfMatrix>> instances{std::nullopt};
+    if (node.extensions.count("EXT_mesh_gpu_instancing")) {
+      instances.clear();
+      const GltfMatrix identity = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+      for (const GltfMatrix& m : meshPlacements(model_, index, node, identity, label_))
+        instances.push_back(m);
+    }
+    int skin = node.skin;
+    if (skin >= 0 && instances.front()) {
+      warn("skins of instanced meshes are not applied: they keep their rest pose (" + where + ")");
+      skin = -1;
+    }
+    for (const std::optional<GltfMatrix>& instance : instances)
+      addMesh(node.mesh, index, instance, skin, where + ".mesh");
   }
 
   MeshDesc finish() {
@@ -46,10 +66,10 @@ class MeshBuilder {
     mesh_.holdsCameras = !model_.cameras.empty();
     mesh_.holdsLights = !model_.lights.empty();
     if (!mesh_.colors.empty()) mesh_.colors.resize(mesh_.positions.size(), Vec3(1.0f));
-    if (!model_.animations.empty())
+    if (!model_.animations.empty() && !keep_)
       warn(
-          "the file's animations do not move the object (the scene's keyframes do; a camera "
-          "taken from the file may follow one, with \"gltf_animation\")");
+          "the file's animations do not move the object (it plays one with "
+          "\"gltf_animation\"; a camera taken from the file may follow one too)");
     return std::move(mesh_);
   }
 
@@ -72,25 +92,25 @@ class MeshBuilder {
     return made;
   }
 
-  void addMesh(int index, const GltfMatrix& world, const std::string& where) {
+  void addMesh(int index, int node, const std::optional<GltfMatrix>& instance, int skin,
+               const std::string& where) {
     if (index < 0 || size_t(index) >= model_.meshes.size())
       throw SceneError(label_ + ": " + where + ": mesh " + std::to_string(index) +
                        " does not exist (" + std::to_string(model_.meshes.size()) + " meshes)");
     const tinygltf::Mesh& m = model_.meshes[size_t(index)];
     for (size_t p = 0; p < m.primitives.size(); ++p)
-      addPrimitive(m.primitives[p], world,
+      addPrimitive(m.primitives[p], node, instance, skin,
                    "meshes[" + std::to_string(index) + "].primitives[" + std::to_string(p) + "]");
   }
 
-  void addPrimitive(const tinygltf::Primitive& primitive, const GltfMatrix& world,
-                    const std::string& where) {
+  void addPrimitive(const tinygltf::Primitive& primitive, int node,
+                    const std::optional<GltfMatrix>& instance, int skin, const std::string& where) {
     const int mode = primitive.mode < 0 ? TINYGLTF_MODE_TRIANGLES : primitive.mode;
     if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
         mode != TINYGLTF_MODE_TRIANGLE_FAN) {
       warn("points and lines are not rendered (" + where + " is one)");
       return;
     }
-    if (!primitive.targets.empty()) warn("morph targets are not applied (" + where + ")");
     const std::string at = label_ + ": " + where;
     const auto attribute = [&](const char* name) {
       const auto found = primitive.attributes.find(name);
@@ -98,10 +118,16 @@ class MeshBuilder {
     };
     const int positionAccessor = attribute("POSITION");
     if (positionAccessor < 0) throw SceneError(at + ".attributes: expected a POSITION");
-    const std::vector<float> positions =
+    GltfRigPrimitive rigged;
+    rigged.node = node;
+    rigged.instance = instance;
+    rigged.skin = skin;
+    std::vector<float>& positions = rigged.positions;
+    std::vector<float>& normals = rigged.normals;
+    positions =
         readFloatAccessor(model_, positionAccessor, 3, kAnyEncoding, at + ".attributes.POSITION");
     const size_t vertices = positions.size() / 3;
-    std::vector<float> normals, uvs;
+    std::vector<float> uvs;
     if (attribute("NORMAL") >= 0)
       normals = readFloatAccessor(model_, attribute("NORMAL"), 3, kFloats | kSignedNormalized,
                                   at + ".attributes.NORMAL");
@@ -140,8 +166,40 @@ class MeshBuilder {
       for (size_t v = 0; v < vertices; ++v)
         mesh_.colors.push_back(Vec3(colors[3 * v], colors[3 * v + 1], colors[3 * v + 2]));
     }
-    const Placed placed = appendVertices(positions, normals, uvs, world);
+    readTargets(primitive, at, &rigged);
+    if (skin >= 0 && rig_.readInfluences(model_, primitive, at, &rigged) > 0)
+      warn("vertices without skin weights stay with their node (" + where + ")");
+    const Placed placed = appendVertices(rigged, uvs);
     appendTriangles(mode, indices, placed, material);
+    if (keep_) rig_.primitives.push_back(std::move(rigged));
+  }
+
+  // A primitive's morph targets: what each adds to its positions and normals (their texture
+  // coordinates and colours are not read).
+  void readTargets(const tinygltf::Primitive& primitive, const std::string& at,
+                   GltfRigPrimitive* rigged) {
+    const size_t vertices = rigged->positions.size() / 3;
+    for (size_t k = 0; k < primitive.targets.size(); ++k) {
+      const std::string where = at + ".targets[" + std::to_string(k) + "]";
+      const std::map<std::string, int>& target = primitive.targets[k];
+      const auto read = [&](const char* name, unsigned encodings, bool wanted) {
+        const auto found = target.find(name);
+        if (found == target.end() || !wanted) return std::vector<float>();
+        std::vector<float> values =
+            readFloatAccessor(model_, found->second, 3, encodings, where + "." + name);
+        if (values.size() != 3 * vertices)
+          throw SceneError(where + "." + name + ": expected as many elements as POSITION (" +
+                           std::to_string(vertices) + "), got " +
+                           std::to_string(values.size() / 3));
+        return values;
+      };
+      rigged->targetPositions.push_back(read("POSITION", kAnyEncoding, true));
+      rigged->targetNormals.push_back(
+          read("NORMAL", kFloats | kSignedNormalized, !rigged->normals.empty()));
+      for (const auto& [name, accessor] : target)
+        if (name != "POSITION" && name != "NORMAL" && name != "TANGENT")
+          warn("morph targets' " + name + " is not applied (" + where + ")");
+    }
   }
 
   // A primitive's vertex colours (COLOR_0, linear RGB or RGBA, whose alpha is not used) as RGB,
@@ -173,39 +231,20 @@ class MeshBuilder {
     bool mirrored = false;  // by a transform of negative determinant
   };
 
-  // Positions by the node's transform, normals by its inverse transpose (the cofactors, times
-  // the determinant's sign), uvs turned to candela's v.
-  Placed appendVertices(const std::vector<float>& positions, const std::vector<float>& normals,
-                        const std::vector<float>& uvs, const GltfMatrix& world) {
+  // Positions and normals as the rig poses them at rest (scene/read/gltf_rig.h), uvs turned to
+  // candela's v.
+  Placed appendVertices(GltfRigPrimitive& rigged, const std::vector<float>& uvs) {
     Placed placed;
     placed.base = uint32_t(mesh_.positions.size());
-    for (size_t v = 0; v < positions.size() / 3; ++v) {
-      const double x = positions[3 * v], y = positions[3 * v + 1], z = positions[3 * v + 2];
-      Vec3 p;
-      for (int r = 0; r < 3; ++r)
-        p[r] = float(world[size_t(r)] * x + world[size_t(4 + r)] * y + world[size_t(8 + r)] * z +
-                     world[size_t(12 + r)]);
-      mesh_.positions.push_back(p);
+    rigged.base = placed.base;
+    mesh_.positions.resize(mesh_.positions.size() + rigged.positions.size() / 3);
+    if (!rigged.normals.empty()) {
+      placed.normalBase = int32_t(mesh_.normals.size());
+      rigged.normalBase = placed.normalBase;
+      mesh_.normals.resize(mesh_.normals.size() + rigged.normals.size() / 3);
     }
-    const auto at3 = [&](int c, int r) { return world[size_t(4 * c + r)]; };
-    double cof[3][3];
-    for (int r = 0; r < 3; ++r)
-      for (int c = 0; c < 3; ++c)
-        cof[r][c] = at3((c + 1) % 3, (r + 1) % 3) * at3((c + 2) % 3, (r + 2) % 3) -
-                    at3((c + 2) % 3, (r + 1) % 3) * at3((c + 1) % 3, (r + 2) % 3);
-    const double det = at3(0, 0) * cof[0][0] + at3(1, 0) * cof[0][1] + at3(2, 0) * cof[0][2];
-    placed.mirrored = det < 0;
-    if (!normals.empty()) placed.normalBase = int32_t(mesh_.normals.size());
-    for (size_t v = 0; v < normals.size() / 3; ++v) {
-      Vec3 n;
-      for (int r = 0; r < 3; ++r)
-        n[r] = float(cof[r][0] * normals[3 * v] + cof[r][1] * normals[3 * v + 1] +
-                     cof[r][2] * normals[3 * v + 2]);
-      if (placed.mirrored) n = -n;
-      const float length = std::sqrt(dot(n, n));
-      placed.usableNormal.push_back(length > 0.0f && std::isfinite(length));
-      mesh_.normals.push_back(placed.usableNormal.back() ? n / length : Vec3(0.0f, 0.0f, 1.0f));
-    }
+    rig_.place(rigged, rest_, &mesh_.positions, &mesh_.normals, &placed.usableNormal);
+    placed.mirrored = rig_.mirrored(rigged, rest_);
     if (!uvs.empty()) placed.uvBase = int32_t(mesh_.uvs.size());
     for (size_t v = 0; v < uvs.size() / 2; ++v)
       mesh_.uvs.push_back(Vec2(uvs[2 * v], 1.0f - uvs[2 * v + 1]));
@@ -251,6 +290,9 @@ class MeshBuilder {
   std::set<std::string> warned_;
   int variant_;
   size_t variantCount_;
+  GltfRig& rig_;
+  const GltfPose& rest_;
+  bool keep_;
 };
 
 }  // namespace
@@ -262,19 +304,24 @@ bool isGltfPath(const std::string& path) {
 }
 
 MeshDesc loadGltfFile(const std::string& path, const std::string& label, TextureLoader& textures,
-                      const std::string& variant, const std::string& nodeName) {
+                      const std::string& variant, const std::string& nodeName,
+                      std::shared_ptr<GltfRig>* rig) {
   const std::unique_ptr<GltfFile> file = readGltfFile(path, label);
   const int root = nodeName.empty() ? -1 : gltfNodeIndex(file->model, nodeName);
   const std::vector<std::string> variants = gltfVariantNames(file->model, label);
+  auto posing = std::make_shared<GltfRig>(file->model, label, root);
+  const GltfPose rest = posing->pose(nullptr, 0.0);
   MeshBuilder builder(file->model, label, file->folder, file->embedded, textures,
-                      variant.empty() ? -1 : gltfVariantIndex(variants, variant), variants.size());
+                      variant.empty() ? -1 : gltfVariantIndex(variants, variant), variants.size(),
+                      *posing, rest, rig != nullptr);
   forEachPlacedNode(
       file->model, label,
-      [&](int index, const tinygltf::Node& node, const GltfMatrix& world) {
-        builder.addNode(index, node, world);
+      [&](int index, const tinygltf::Node& node, const GltfMatrix&) {
+        builder.addNode(index, node);
       },
       {}, root);
   MeshDesc mesh = builder.finish();
+  if (rig) *rig = std::move(posing);
   for (const tinygltf::Buffer& buffer : file->model.buffers)
     if (!buffer.uri.empty() && !isDataUri(buffer.uri))
       mesh.bufferFiles.push_back(gltfUriPath(buffer.uri, file->folder));

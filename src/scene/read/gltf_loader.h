@@ -9,8 +9,10 @@
 // meshopt may have compressed (gltf_draco.h, gltf_meshopt.h); each glTF material is mapped to
 // candela's (gltf_materials.h), picked by a KHR_materials_variants variant where one is asked for
 // (gltf_variants.h); a primitive without one takes glTF's default material. Triangles, strips and
-// fans are read; points and lines are skipped with a warning, as are what else candela does not use
-// (skins, morph targets, animations); whether it holds cameras and lights is noted
+// fans are read; points and lines are skipped with a warning. Morph targets (their positions and
+// normals, at the node's or the mesh's weights) and skins (JOINTS_n and WEIGHTS_n, the joints at
+// their nodes' transforms) pose the vertices as the file rests (gltf_rig.h); whether it holds
+// cameras and lights is noted
 // (MeshDesc::holdsCameras, holdsLights) for the scene to say where its camera or lights take none
 // of them. A node whose transform mirrors keeps its faces' outsides (their winding is reversed, as
 // glTF says).
@@ -19,8 +21,10 @@
 // ("meshes[0].primitives[1].indices: accessor 4 ...").
 #pragma once
 
+#include <memory>
 #include <string>
 
+#include "scene/read/gltf_rig.h"
 #include "scene/read/texture_reader.h"
 #include "scene/scene_desc.h"
 
@@ -30,8 +34,12 @@ namespace candela {
 // their own); one the file does not have throws GltfVariantError (gltf_variants.h). `node`: the
 // name of the one node whose meshes (with its children's) make the mesh, in the node's own frame
 // ("": the file's scene); one the file does not have throws GltfNodeError (gltf_nodes.h).
+// With `rig`, *rig gets what poses the mesh's vertices, with its primitives, for an object that
+// plays one of the file's animations (scene/read/gltf_mesh_motion.h); the mesh then warns of no
+// animation.
 MeshDesc loadGltfFile(const std::string& path, const std::string& label, TextureLoader& textures,
-                      const std::string& variant = "", const std::string& node = "");
+                      const std::string& variant = "", const std::string& node = "",
+                      std::shared_ptr<GltfRig>* rig = nullptr);
 
 // Whether a mesh file is read as glTF: its name ends in ".gltf" or ".glb", in any case.
 bool isGltfPath(const std::string& path);

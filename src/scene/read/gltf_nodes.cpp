@@ -13,8 +13,9 @@ namespace {
 
 GltfMatrix identity() { return {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}; }
 
-// A node's own transform: its matrix, or translation * rotation * scale.
-GltfMatrix localTransform(const tinygltf::Node& node, const std::string& where) {
+}  // namespace
+
+GltfMatrix gltfLocalTransform(const tinygltf::Node& node, const std::string& where) {
   auto finite = [&](const std::vector<double>& values, size_t count, const char* key) {
     if (!values.empty() && values.size() != count)
       throw SceneError(where + "." + key + ": expected " + std::to_string(count) + " numbers");
@@ -39,6 +40,28 @@ GltfMatrix localTransform(const tinygltf::Node& node, const std::string& where) 
     throw SceneError(where + ".rotation: expected a unit quaternion, got 0");
   return gltfTrs(t, q, scale);
 }
+
+bool gltfInvert(const GltfMatrix& m, GltfMatrix* inverse) {
+  const auto at = [&](int r, int c) { return m[size_t(4 * c + r)]; };
+  double cof[3][3];  // cof[r][c]: the cofactor of element (r, c)
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c)
+      cof[r][c] = at((r + 1) % 3, (c + 1) % 3) * at((r + 2) % 3, (c + 2) % 3) -
+                  at((r + 1) % 3, (c + 2) % 3) * at((r + 2) % 3, (c + 1) % 3);
+  const double det = at(0, 0) * cof[0][0] + at(0, 1) * cof[0][1] + at(0, 2) * cof[0][2];
+  if (!(std::abs(det) > 0) || !std::isfinite(det)) return false;
+  GltfMatrix r{};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) r[size_t(4 * j + i)] = cof[j][i] / det;  // the adjugate / det
+  for (int i = 0; i < 3; ++i)
+    r[size_t(12 + i)] =
+        -(r[size_t(i)] * m[12] + r[size_t(4 + i)] * m[13] + r[size_t(8 + i)] * m[14]);
+  r[15] = 1;
+  *inverse = r;
+  return true;
+}
+
+namespace {
 
 // The nodes the file's scene places, outermost first.
 std::vector<int> rootNodes(const tinygltf::Model& model, const std::string& label) {
@@ -118,7 +141,7 @@ void forEachPlacedNode(const tinygltf::Model& model, const std::string& label,
     const tinygltf::Node& node = model.nodes[size_t(index)];
     // The node's own transform is checked (its arrays' sizes, finite numbers) even where an
     // animation moves it: the override copies the parts it leaves from the node.
-    GltfMatrix local = localTransform(node, label + ": " + where);
+    GltfMatrix local = gltfLocalTransform(node, label + ": " + where);
     if (moved) moved(index, node, &local);
     if (index == root) local = identity();
     const GltfMatrix world = gltfMultiply(parent, local);

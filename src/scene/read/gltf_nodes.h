@@ -41,6 +41,14 @@ class GltfNodeError : public SceneError {
 // likely one meant) where none or several have that name.
 int gltfNodeIndex(const tinygltf::Model& model, const std::string& name);
 
+// A node's own transform: its matrix, or translation * rotation * scale. Throws SceneError
+// "<where>.<key>: <reason>" for arrays of the wrong size, numbers that are not finite or a zero
+// quaternion.
+GltfMatrix gltfLocalTransform(const tinygltf::Node& node, const std::string& where);
+
+// The inverse of an affine transform (its last row 0 0 0 1), or false where it has none.
+bool gltfInvert(const GltfMatrix& m, GltfMatrix* inverse);
+
 // a * b (column-major).
 GltfMatrix gltfMultiply(const GltfMatrix& a, const GltfMatrix& b);
 

@@ -122,7 +122,7 @@ void follow(SceneDesc& scene, uint32_t index) {
 
 void followGltfObjectAnimations(SceneDesc& scene) {
   for (uint32_t i = 0; i < scene.objects.size(); ++i)
-    if (scene.objects[i].gltfAnimated) follow(scene, i);
+    if (scene.objects[i].gltfAnimated && !scene.objects[i].gltfNode.empty()) follow(scene, i);
 }
 
 }  // namespace candela

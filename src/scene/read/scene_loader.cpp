@@ -16,6 +16,7 @@
 #include "scene/read/entity_reader.h"
 #include "scene/read/environment_reader.h"
 #include "scene/read/gltf_loader.h"
+#include "scene/read/gltf_mesh_motion.h"
 #include "scene/read/gltf_nodes.h"
 #include "scene/read/gltf_object_animation.h"
 #include "scene/read/gltf_scene.h"
@@ -74,6 +75,26 @@ void shadeFacesWithoutNormals(SceneDesc& scene) {
   }
 }
 
+// Object `index` that plays a glTF animation gets the motion of its mesh, where the animation
+// moves any vertex of it (its motion of the object's node is the object's tracks:
+// gltf_object_animation.h); `rig` poses the mesh as loaded.
+void playGltfAnimation(SceneDesc& scene, size_t index, const std::string& writtenName,
+                       const std::shared_ptr<GltfRig>& rig) {
+  ObjectDesc& object = scene.objects[index];
+  if (!object.gltfAnimated) return;
+  const std::string where = memberPath(object.where, "gltf_animation");
+  if (!scene.animation)
+    failAt(scene.file, where,
+           "needs an \"animation\" block, whose frames and fps give the times at which the "
+           "file's animation is played");
+  try {
+    object.meshMotion = gltfMeshMotion(object, writtenName, object.mesh, rig);
+  } catch (const SceneError& error) {
+    failAt(scene.file, where, error.what());
+  }
+  if (object.meshMotion) scene.animation->meshesMove = true;
+}
+
 // Whether two paths name one file (as far as they exist; else as written).
 bool sameFile(const std::string& a, const std::string& b) {
   if (a.empty() || b.empty()) return false;
@@ -88,25 +109,31 @@ bool sameFile(const std::string& a, const std::string& b) {
 // at the object's "file" key, with the file as the scene wrote it.
 void loadMeshes(SceneDesc& scene, const std::vector<std::string>& writtenNames,
                 TextureLoader& textures) {
-  // (resolved path, glTF variant, glTF node or OBJ group, shape) -> its mesh
-  std::map<std::tuple<std::string, std::string, std::string, std::string>,
-           std::shared_ptr<const MeshDesc>>
-      loaded;
+  // (resolved path, glTF variant, glTF node or OBJ group, shape, played) -> its mesh, and for one
+  // that an object plays an animation of, what poses it
+  struct Loaded {
+    std::shared_ptr<const MeshDesc> mesh;
+    std::shared_ptr<GltfRig> rig;
+  };
+  std::map<std::tuple<std::string, std::string, std::string, std::string, bool>, Loaded> loaded;
   for (size_t i = 0; i < scene.objects.size(); ++i) {
     ObjectDesc& object = scene.objects[i];
-    const auto key = std::make_tuple(object.file, object.gltfVariant,
-                                     object.gltfNode + object.objGroup, object.shape);
+    const auto key =
+        std::make_tuple(object.file, object.gltfVariant, object.gltfNode + object.objGroup,
+                        object.shape, object.gltfAnimated);
     const auto previous = loaded.find(key);
     if (previous != loaded.end()) {
-      object.mesh = previous->second;
+      object.mesh = previous->second.mesh;
+      playGltfAnimation(scene, i, writtenNames[i], previous->second.rig);
       continue;
     }
+    std::shared_ptr<GltfRig> rig;
     try {
       MeshDesc mesh = !object.shape.empty()    ? shapeMesh(object.shape)
                       : isPlyPath(object.file) ? loadPlyFile(object.file, writtenNames[i])
                       : isGltfPath(object.file)
                           ? loadGltfFile(object.file, writtenNames[i], textures, object.gltfVariant,
-                                         object.gltfNode)
+                                         object.gltfNode, object.gltfAnimated ? &rig : nullptr)
                           : loadObjFile(object.file, writtenNames[i], textures, object.objGroup);
       orderTrianglesSpatially(&mesh);
       object.mesh = std::make_shared<const MeshDesc>(std::move(mesh));
@@ -122,7 +149,8 @@ void loadMeshes(SceneDesc& scene, const std::vector<std::string>& writtenNames,
     } catch (const SceneError& error) {
       failAt(scene.file, memberPath(object.where, "file"), error.what());
     }
-    loaded.emplace(key, object.mesh);
+    loaded.emplace(key, Loaded{object.mesh, rig});
+    playGltfAnimation(scene, i, writtenNames[i], rig);
   }
   // A mesh's warnings concern its own materials: each is given once, at the first object that
   // takes its materials from the file.
