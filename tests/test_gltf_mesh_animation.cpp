@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/constants.h"
+#include "flow_test_util.h"
 #include "gltf_test_util.h"
 #include "render_test_util.h"
 #include "scene/animation.h"
@@ -346,6 +347,43 @@ TEST(GltfMeshAnimation, BlurredFrameIsTheMeanOfTheStillsAcrossItsExposure) {
     moving += range > 0;
   }
   EXPECT_GT(moving, mean.size() / 20);  // the arm sweeps a good part of the image
+}
+
+// The flow pass follows each point of a mesh that moves apart: a square whose morph target
+// stretches it along x, its weight from 0 to 1 over a second (8 frames of it), moves each point
+// (x, y) of frame 3 to (x 1.5 / 1.375, y) at frame 4.
+TEST(GltfMeshAnimation, TheFlowPassFollowsTheVerticesOfAMovingMesh) {
+  TempDir dir;
+  GltfFile f;
+  const int p = f.addFloats({-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0}, "VEC3", 3);
+  const int dp = f.addFloats({-1, 0, 0, 1, 0, 0, 1, 0, 0, -1, 0, 0}, "VEC3", 3);
+  const int indices = f.addAccessor(std::vector<uint16_t>{0, 1, 2, 0, 2, 3}, 5123, "SCALAR", 6);
+  nlohmann::json primitive = {{"attributes", {{"POSITION", p}}}, {"indices", indices}};
+  primitive["targets"] = nlohmann::json::array({{{"POSITION", dp}}});
+  f.doc["meshes"] = {{{"primitives", nlohmann::json::array({primitive})}}};
+  f.doc["nodes"] = {{{"mesh", 0}}};
+  f.doc["animations"] = {{{"channels", {channel(0, 0, "weights")}},
+                          {"samplers", {linearSampler(f, {0, 1}, "SCALAR", 1)}}}};
+  dir.write("stretch.gltf", f.gltf());
+  const test::FlowRender r = test::renderFlow(R"({
+    "camera": {"width": 16, "height": 12, "fov": 60, "spp": 1, "position": [0, 0, 4]},
+    "render": {"antialiasing": false},
+    "objects": [{"file": "stretch.gltf", "gltf_animation": 0}],
+    "lights": [{"position": [0, 0, 4], "intensity": 10}],
+    "animation": {"frames": 8, "fps": 8}})",
+                                              3, dir.path());
+  const float focal = 8.0f / std::tan(30.0f * kPi / 180.0f);
+  int covered = 0;
+  for (uint32_t y = 0; y < 12; ++y)
+    for (uint32_t x = 0; x < 16; ++x) {
+      if (r.at("instance", x, y) == 0.0f) continue;
+      ++covered;
+      const Vec3 q(r.at("position", x, y, 0) * 1.5f / 1.375f, r.at("position", x, y, 1), 0.0f);
+      const float u = focal * q.x / 4.0f + 8.0f, v = -focal * q.y / 4.0f + 6.0f;
+      EXPECT_NEAR(r.at("flow", x, y, 0), u - (x + 0.5f), 2e-3f) << x << "," << y;
+      EXPECT_NEAR(r.at("flow", x, y, 1), v - (y + 0.5f), 2e-3f) << x << "," << y;
+    }
+  EXPECT_GT(covered, 20);
 }
 
 std::string error(const GltfFile& file, const std::string& object,

@@ -31,6 +31,8 @@ struct FirstHit {
   Vec3 direct{0.0f};
   Vec3 emission{0.0f};
   uint32_t material = 0;  // flattened material index, valid when `hit`
+  uint32_t prim = 0;      // the primitive hit and where on it (geometry/ray.h), when `hit`
+  float b1 = 0, b2 = 0;
   bool hit = false;
   bool albedoDone = false;
 };

@@ -52,7 +52,14 @@ CANDELA_HDI bool sampleFlow(const SceneView& scene, const FirstHit& first, const
   if (first.hit) {
     const InstanceMotion& m = scene.materialMotions[first.material];
     fromNow = now.worldToCamera * (first.position - now.position);
-    fromNext = next.worldToCamera * (m.linear * first.position + m.offset - next.position);
+    Vec3 moved = m.linear * first.position + m.offset;
+    if (m.perVertex && first.prim >= scene.sphereCount) {
+      // The same point of the triangle, between its vertices where they stand next.
+      const Triangle& t = scene.triangles[first.prim - scene.sphereCount];
+      moved = (1.0f - first.b1 - first.b2) * scene.flowVertices[t.v[0]] +
+              first.b1 * scene.flowVertices[t.v[1]] + first.b2 * scene.flowVertices[t.v[2]];
+    }
+    fromNext = next.worldToCamera * (moved - next.position);
   } else {
     // A point at infinity is no one pixel of an orthographic camera, which sees it everywhere.
     if (now.projection == CameraProjection::Orthographic ||

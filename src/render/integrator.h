@@ -397,6 +397,9 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
       first->position = sp.p;
       first->normal = facingNormal(wo, sp.ng, sp.ns);
       first->material = sp.material;
+      first->prim = hit.prim;
+      first->b1 = hit.b1;
+      first->b2 = hit.b2;
     }
     if (!first->albedoDone && (isEmissive(m) || hasSmoothLobe(m))) {
       first->albedoDone = true;

@@ -9,10 +9,13 @@
 
 namespace candela {
 
-// An instance's motion to the next frame: a world point p of it moves to linear * p + offset.
+// An instance's motion to the next frame: a world point p of it moves to linear * p + offset, or,
+// for a mesh whose vertices move apart (`perVertex`), to where its triangle's vertices go
+// (SceneView::flowVertices).
 struct InstanceMotion {
   Mat3 linear = Mat3::diagonal(Vec3(1.0f));
   Vec3 offset{0.0f};
+  bool perVertex = false;
 };
 
 // A camera's projection: world point p -> pixel of K * the distorted (x / z, y / z, 1) of

@@ -70,6 +70,9 @@ struct SceneData {
   std::vector<uint32_t> materialInstances;
   // Host only: the objects that repeat a mesh, for an engine that traces them as instances.
   MeshInstances meshInstances;
+  // Host only: where each object's vertices begin in positions, in file order (the flow pass
+  // places those of a mesh that moves apart: scene/flow_motion.h).
+  std::vector<uint32_t> objectFirstVertex;
 
   SceneView view() const;
   // Moves the arrays of keyed group `group` (RewrittenBy::EnvironmentMap or TexturePool), its

@@ -30,7 +30,8 @@ namespace candela {
 // envConditionalCdf/envMarginalCdf with their guide tables and the weights at its cells' corners
 // (envCellCorners) its sampling distribution (core/distribution2d.h). materialMotions, parallel
 // to materials, is the motion of each material's instance to the next frame; only renders with
-// the flow pass have it.
+// the flow pass have it. flowVertices, empty or parallel to positions, holds where each vertex of a
+// mesh that moves apart (InstanceMotion::perVertex) stands in the next frame.
 // lightPathOrder lists the lights in the order their light-subpath picks are laid out over
 // [0, 1) (render/light_path.h, pickLightPathLight). infiniteLights lists the lights at infinity
 // that next-event estimation picks, each in a share of its own (render/light_selection.h).
@@ -55,6 +56,7 @@ namespace candela {
   X(uint32_t, envMarginalGuide, envMarginalGuideCount, EnvironmentMap)       \
   X(float, envCellCorners, envCellCornerCount, EnvironmentMap)               \
   X(InstanceMotion, materialMotions, materialMotionCount, Values)            \
+  X(Vec3, flowVertices, flowVertexCount, Values)                             \
   X(uint32_t, lightPathOrder, lightPathOrderCount, Values)                   \
   X(uint32_t, infiniteLights, infiniteLightCount, Values)                    \
   X(float, plasticCoats, plasticCoatCount, Values)                           \

@@ -180,6 +180,7 @@ void addObject(SceneData& s, const ObjectDesc& obj, bool geometry, MeshLayouts& 
   const Mat3 r = eulerRotation(obj.rotation);
   const uint32_t base = uint32_t(s.positions.size());
   placeVertices(mesh, layout, obj.position, r, obj.scale, &s.positions);
+  s.objectFirstVertex.push_back(base);
   if (!obj.shutterPoses.empty()) addObjectMotion(s, obj, layout, base);
   MeshInstance placed;
   placed.firstTriangle = uint32_t(s.triangles.size());
@@ -650,6 +651,13 @@ SceneData flattenScene(SceneDesc&& desc) {
   for (ObjectDesc& object : desc.objects) object.mesh = std::make_shared<const MeshDesc>();
   addBvhAndLights(s, desc.ownBvh, nullptr);
   return s;
+}
+
+std::vector<Vec3> placedVertices(const ObjectDesc& obj) {
+  const MeshLayout layout = layOutMesh(*obj.mesh, usesNormals(obj), usesUvs(obj));
+  std::vector<Vec3> placed;
+  placeVertices(*obj.mesh, layout, obj.position, eulerRotation(obj.rotation), obj.scale, &placed);
+  return placed;
 }
 
 }  // namespace candela

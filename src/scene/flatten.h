@@ -64,4 +64,8 @@ SceneData flattenPassContext(const SceneDesc& desc);
 // when that is valid.
 void refreshSceneValues(SceneData& scene, const SceneDesc& desc);
 
+// The world-space vertices of object `obj` as flattenScene places them (its mesh's, then their
+// splits: scene/mesh_layout.h).
+std::vector<Vec3> placedVertices(const ObjectDesc& obj);
+
 }  // namespace candela

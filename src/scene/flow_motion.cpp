@@ -5,6 +5,7 @@
 
 #include "core/rotation.h"
 #include "scene/camera_resolve.h"
+#include "scene/flatten.h"
 #include "scene/instance_poses.h"
 #include "scene/scene_error.h"
 
@@ -81,8 +82,14 @@ FlowMotion flowMotion(const SceneDesc& now, const SceneDesc& next) {
   for (size_t k = 0; k < now.spheres.size(); ++k, ++i)
     f.instances[i] = sphereMotion(now.spheres[k].position, now.spheres[k].radius,
                                   next.spheres[k].position, next.spheres[k].radius);
-  for (size_t k = 0; k < now.objects.size(); ++k, ++i)
+  f.objectVertices.resize(now.objects.size());
+  for (size_t k = 0; k < now.objects.size(); ++k, ++i) {
     f.instances[i] = objectMotion(now.objects[k], next.objects[k]);
+    if (now.objects[k].meshMotion) {
+      f.objectVertices[k] = placedVertices(next.objects[k]);
+      f.instances[i].perVertex = true;
+    }
+  }
   for (size_t k = 0; k < now.lights.size(); ++k, ++i)
     f.instances[i] = now.lights[k].rectangle
                          ? rectangleMotion(now.lights[k], next.lights[k])
@@ -100,11 +107,24 @@ void applyFlowMotion(SceneData& scene, const FlowMotion& motion) {
     const uint32_t instance = scene.materialInstances[m];
     if (instance < motion.instances.size()) scene.materialMotions[m] = motion.instances[instance];
   }
+  scene.flowVertices.clear();
+  for (size_t k = 0; k < motion.objectVertices.size(); ++k) {
+    const std::vector<Vec3>& next = motion.objectVertices[k];
+    if (next.empty()) continue;
+    // Flattened alike (the same mesh's layout): the object's vertices, as many in either frame.
+    const uint32_t first = scene.objectFirstVertex[k];
+    if (first + next.size() > scene.positions.size())
+      throw SceneError("the flow pass's next frame places more vertices of objects[" +
+                       std::to_string(k) + "] than this frame has");
+    scene.flowVertices.resize(scene.positions.size(), Vec3(0.0f));
+    std::copy(next.begin(), next.end(), scene.flowVertices.begin() + first);
+  }
   scene.flow = motion.frames;
 }
 
 void clearFlowMotion(SceneData& scene) {
   scene.materialMotions.clear();
+  scene.flowVertices.clear();
   scene.flow = FlowFrames();
 }
 

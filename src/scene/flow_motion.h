@@ -12,6 +12,9 @@ namespace candela {
 
 struct FlowMotion {
   std::vector<InstanceMotion> instances;  // by instance number (docs/aovs.md); [0] unused
+  // By object: where the vertices of one whose mesh moves (ObjectDesc::meshMotion) stand in the
+  // next frame, flattened as this frame's are; empty for the others.
+  std::vector<std::vector<Vec3>> objectVertices;
   FlowFrames frames;
 };
 
