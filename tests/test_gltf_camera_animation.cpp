@@ -168,7 +168,11 @@ TEST(GltfCameraAnimation, RefusesWhatItCannotPlay) {
             "test.json: camera.gltf_animation: needs an \"animation\" block, whose frames and fps "
             "give the times at which the file's animation is played");
   EXPECT_EQ(error(sceneWith("\"walk\"")),
-            "test.json: camera.gltf_animation: cam.gltf: no animation is named \"walk\"");
+            "test.json: camera.gltf_animation: cam.gltf: no animation is named \"walk\"; its "
+            "animations: \"fly\", \"step\", \"cubic\"");
+  EXPECT_EQ(error(sceneWith("\"flz\"")),
+            "test.json: camera.gltf_animation: cam.gltf: no animation is named \"flz\" (did you "
+            "mean \"fly\"?); its animations: \"fly\", \"step\", \"cubic\"");
   EXPECT_EQ(error(sceneWith("3")),
             "test.json: camera.gltf_animation: cam.gltf: animation 3 is asked for, but the file "
             "has 3 animations");

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "scene/read/did_you_mean.h"
 #include "scene/read/gltf_accessor.h"
 #include "scene/scene_error.h"
 
@@ -228,9 +229,18 @@ bool GltfAnimation::localAt(int index, const tinygltf::Node& node, double t,
 size_t findGltfAnimation(const tinygltf::Model& model, const std::string& label,
                          const std::string& name, int number) {
   if (!name.empty()) {
-    for (size_t i = 0; i < model.animations.size(); ++i)
+    std::vector<std::string> names;
+    for (size_t i = 0; i < model.animations.size(); ++i) {
       if (model.animations[i].name == name) return i;
-    throw SceneError(label + ": no animation is named \"" + name + "\"");
+      if (!model.animations[i].name.empty()) names.push_back(model.animations[i].name);
+    }
+    if (names.empty())
+      throw SceneError(label + ": no animation is named \"" + name + "\" (the file's " +
+                       std::to_string(model.animations.size()) + " have no names)");
+    const std::string close = closestMatch(name, names);
+    throw SceneError(label + ": no animation is named \"" + name + "\"" +
+                     (close.empty() ? "" : " (did you mean \"" + close + "\"?)") +
+                     "; its animations: " + quotedNames(names));
   }
   if (number < 0 || size_t(number) >= model.animations.size())
     throw SceneError(label + ": animation " + std::to_string(number) +
