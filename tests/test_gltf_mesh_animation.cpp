@@ -132,6 +132,38 @@ TEST(GltfMeshAnimation, ASkinFollowsItsJointsAtEachFramesTime) {
   for (size_t v = 0; v < 3; ++v) expectNear(last.positions[v], bentArm(kPiDouble / 2)[v], "held");
 }
 
+// An object of the skinned node alone sees the joints (outside the node) from the node's frame,
+// and is placed where the node stands: the file's pose again.
+TEST(GltfMeshAnimation, AnObjectOfTheSkinnedNodeSeesItsJointsFromTheNode) {
+  TempDir dir;
+  dir.write("arm.gltf", skinnedArm().gltf());
+  const SceneDesc scene = parseSceneText(
+      sceneWith(R"({"file": "arm.gltf", "gltf_node": "arm", "gltf_animation": "bend"})",
+                kThirtyFrames),
+      "test.json", dir.path());
+  const SceneDesc at = sceneAtFrame(scene, 12);
+  expectNear(at.objects[0].position, Vec3(5, 0, 0), "the node's place");
+  const std::vector<Vec3> want = bentArm(kPiDouble / 4);
+  for (size_t v = 0; v < 3; ++v)
+    expectNear(at.objects[0].mesh->positions[v], want[v] - Vec3(5, 0, 0),
+               "vertex " + std::to_string(v));
+}
+
+// A vertex without skin weights stays with its node, with a warning.
+TEST(GltfMeshAnimation, AVertexWithoutWeightsStaysWithItsNode) {
+  TempDir dir;
+  GltfFile arm = skinnedArm();
+  const int none = arm.addFloats({1, 0, 0, 0, 0, 0, 0, 0, 0.5f, 0.5f, 0, 0}, "VEC4", 4);
+  arm.doc["meshes"][0]["primitives"][0]["attributes"]["WEIGHTS_0"] = none;
+  dir.write("arm.gltf", arm.gltf());
+  const MeshDesc mesh = test::loadGltfMesh(dir.file("arm.gltf"), "arm.gltf");
+  expectNear(mesh.positions[1], Vec3(7, 0, 0), "B at the node's (5, 0, 0)");
+  EXPECT_NE(std::find(mesh.warnings.begin(), mesh.warnings.end(),
+                      "arm.gltf: vertices without skin weights stay with their node "
+                      "(meshes[0].primitives[0])"),
+            mesh.warnings.end());
+}
+
 // A triangle whose third vertex a morph target lifts by (0, 0, 1) and whose normals it tilts
 // towards +x; the mesh's weight is 0.25, and node "lid" draws it, node "copy" too, 10 to the right
 // with weight 0.5 of its own. Animation "open" takes lid's weight from 0 to 1 over one second.
