@@ -3,7 +3,7 @@
 // a .glb's own buffer are what the seeds use), its cameras are read as a scene's camera would
 // take them (the first also following the file's first animation), the file is rendered as a scene
 // of its own (as `candela render m.gltf` does), and a file with lights is rendered again by them
-// ({"gltf": file} in "lights"). See docs/fuzzing.md.
+// ({"gltf": file} in "lights"); an object plays its first animation. See docs/fuzzing.md.
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -29,6 +29,14 @@ const char* const kLitScene = R"({
   "objects": [{"file": "m.gltf", "rotation": [10, 20, 30], "smooth": 60}]
 })";
 
+// Playing its first animation (nodes, morph weights, skins) over three frames, each blurred.
+const char* const kPlayedScene = R"({
+  "camera": {"width": 8, "height": 8, "fov": 60, "position": [0, 0, 5], "look_at": [0, 0, 0]},
+  "lights": [{"position": [1, 2, 5], "intensity": 10}],
+  "objects": [{"file": "m.gltf", "gltf_animation": 0, "smooth": 60}],
+  "animation": {"frames": 3, "fps": 2, "shutter": 0.5}
+})";
+
 std::string folder;  // makeInputFolder's
 
 }  // namespace
@@ -42,6 +50,7 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   candela::fuzz::writeInput(folder + "/m.gltf", data, size);
   candela::fuzz::loadAndTrace(kScene, folder);
+  candela::fuzz::loadAndTrace(kPlayedScene, folder);
   // Its first and second cameras, as a scene's camera would take them ("gltf").
   for (const uint32_t number : {0u, 1u}) {
     try {

@@ -447,6 +447,13 @@ TEST(GltfMeshAnimation, Refusals) {
   EXPECT_EQ(error(fewBinds, R"({"file": "m.gltf"})"),
             "test.json: objects[0].file: m.gltf: skins[0].inverseBindMatrices: expected 3 "
             "matrices, one per joint, got 2");
+  // A broken skin that no node uses is left alone.
+  GltfFile unusedSkin = skinnedArm();
+  unusedSkin.doc["skins"].push_back({{"joints", nlohmann::json::array()}});
+  EXPECT_EQ(error(unusedSkin, R"({"file": "m.gltf"})"), "(no SceneError)");
+  unusedSkin.doc["nodes"][0]["skin"] = 1;
+  EXPECT_EQ(error(unusedSkin, R"({"file": "m.gltf"})"),
+            "test.json: objects[0].file: m.gltf: skins[1].joints: expected at least one joint");
   GltfFile weighsNothing = skinnedArm();
   weighsNothing.doc["animations"][0]["channels"][0]["target"]["path"] = "weights";
   const std::string nothing = error(weighsNothing, R"({"file": "m.gltf", "gltf_animation": 0})");

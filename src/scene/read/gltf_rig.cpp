@@ -56,32 +56,42 @@ GltfRig::GltfRig(const tinygltf::Model& model, const std::string& label, int roo
     const size_t targets = mesh.primitives.empty() ? 0 : mesh.primitives[0].targets.size();
     restWeights_[i].resize(targets, 0.0);
   }
+  // A skin that no placed node uses may be broken: its fault is told where a node uses it.
   for (size_t s = 0; s < model.skins.size(); ++s) {
-    const tinygltf::Skin& skin = model.skins[s];
-    const std::string where = label + ": skins[" + std::to_string(s) + "]";
     Skin made;
-    for (size_t j = 0; j < skin.joints.size(); ++j) {
-      const int joint = skin.joints[j];
-      if (joint < 0 || size_t(joint) >= model.nodes.size())
-        throw SceneError(where + ".joints[" + std::to_string(j) + "]: node " +
-                         std::to_string(joint) + " does not exist (" +
-                         std::to_string(model.nodes.size()) + " nodes)");
-      made.joints.push_back(joint);
-    }
-    if (made.joints.empty()) throw SceneError(where + ".joints: expected at least one joint");
-    made.inverseBinds.assign(made.joints.size(), kIdentity);
-    if (skin.inverseBindMatrices >= 0) {
-      const std::vector<float> m = readFloatAccessor(model, skin.inverseBindMatrices, 16, kFloats,
-                                                     where + ".inverseBindMatrices");
-      if (m.size() != 16 * made.joints.size())
-        throw SceneError(where + ".inverseBindMatrices: expected " +
-                         std::to_string(made.joints.size()) + " matrices, one per joint, got " +
-                         std::to_string(m.size() / 16));
-      for (size_t j = 0; j < made.joints.size(); ++j)
-        for (size_t k = 0; k < 16; ++k) made.inverseBinds[j][k] = m[16 * j + k];
+    try {
+      made = readSkin(model, label + ": skins[" + std::to_string(s) + "]", model.skins[s]);
+    } catch (const SceneError& error) {
+      made = Skin();
+      made.fault = error.what();
     }
     skins_.push_back(std::move(made));
   }
+}
+
+GltfRig::Skin GltfRig::readSkin(const tinygltf::Model& model, const std::string& where,
+                                const tinygltf::Skin& skin) {
+  Skin made;
+  for (size_t j = 0; j < skin.joints.size(); ++j) {
+    const int joint = skin.joints[j];
+    if (joint < 0 || size_t(joint) >= model.nodes.size())
+      throw SceneError(where + ".joints[" + std::to_string(j) + "]: node " + std::to_string(joint) +
+                       " does not exist (" + std::to_string(model.nodes.size()) + " nodes)");
+    made.joints.push_back(joint);
+  }
+  if (made.joints.empty()) throw SceneError(where + ".joints: expected at least one joint");
+  made.inverseBinds.assign(made.joints.size(), kIdentity);
+  if (skin.inverseBindMatrices >= 0) {
+    const std::vector<float> m = readFloatAccessor(model, skin.inverseBindMatrices, 16, kFloats,
+                                                   where + ".inverseBindMatrices");
+    if (m.size() != 16 * made.joints.size())
+      throw SceneError(where + ".inverseBindMatrices: expected " +
+                       std::to_string(made.joints.size()) + " matrices, one per joint, got " +
+                       std::to_string(m.size() / 16));
+    for (size_t j = 0; j < made.joints.size(); ++j)
+      for (size_t k = 0; k < 16; ++k) made.inverseBinds[j][k] = m[16 * j + k];
+  }
+  return made;
 }
 
 GltfPose GltfRig::pose(const GltfAnimation* animation, double t) const {
@@ -155,7 +165,9 @@ GltfPose GltfRig::pose(const GltfAnimation* animation, double t) const {
 size_t GltfRig::readInfluences(const tinygltf::Model& model, const tinygltf::Primitive& source,
                                const std::string& where, GltfRigPrimitive* p) const {
   const size_t vertices = p->positions.size() / 3;
-  const size_t jointCount = skins_[size_t(p->skin)].joints.size();
+  const Skin& skin = skins_[size_t(p->skin)];
+  if (!skin.fault.empty()) throw SceneError(skin.fault);
+  const size_t jointCount = skin.joints.size();
   std::vector<std::vector<float>> joints, weights;
   for (int set = 0;; ++set) {
     const auto j = source.attributes.find("JOINTS_" + std::to_string(set));

@@ -45,8 +45,7 @@ struct GltfPose {
 class GltfRig {
  public:
   // The file's nodes, skins and default weights, for the object that holds node `root` (-1: the
-  // file's scene). Throws SceneError "<label>: skins[i]...: <reason>" for a skin whose joints or
-  // inverse bind matrices do not exist or do not match.
+  // file's scene).
   GltfRig(const tinygltf::Model& model, const std::string& label, int root);
 
   // Where the nodes stand and what weights their meshes take at time t (seconds) of `animation`,
@@ -56,7 +55,8 @@ class GltfRig {
   // Reads the skin weights of a primitive with a skin (JOINTS_n and WEIGHTS_n) into *primitive,
   // each vertex's made to sum to 1, and returns how many vertices have none (they stay with their
   // node, as if it had no skin). Throws SceneError "<where>.attributes...: <reason>" for a joint
-  // past the skin's, a negative weight or attributes that do not match.
+  // past the skin's, a negative weight or attributes that do not match, and "<label>: skins[i]...:
+  // <reason>" for a skin whose joints or inverse bind matrices do not exist or do not match.
   size_t readInfluences(const tinygltf::Model& model, const tinygltf::Primitive& source,
                         const std::string& where, GltfRigPrimitive* primitive) const;
 
@@ -81,7 +81,10 @@ class GltfRig {
   struct Skin {
     std::vector<int> joints;
     std::vector<GltfMatrix> inverseBinds;
+    std::string fault;  // why it cannot be read (SceneError's message), or empty
   };
+  static Skin readSkin(const tinygltf::Model& model, const std::string& where,
+                       const tinygltf::Skin& skin);
   tinygltf::Model skeleton_;  // the file's nodes and scenes alone: what places them
   std::string label_;
   int root_;
