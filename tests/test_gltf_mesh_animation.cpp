@@ -418,6 +418,33 @@ TEST(GltfMeshAnimation, TheFlowPassFollowsTheVerticesOfAMovingMesh) {
   EXPECT_GT(covered, 20);
 }
 
+// The animation's clock: a start, a speed (backwards too) and a loop, for the mesh's motion and
+// for the object's placement by its node alike.
+TEST(GltfMeshAnimation, AnObjectSetsTheAnimationsClock) {
+  TempDir dir;
+  dir.write("arm.gltf", skinnedArm().gltf());
+  dir.write("car.gltf", drivingCar().gltf());
+  const auto elbowAt = [&](const std::string& clock, uint32_t frame) {
+    const SceneDesc scene = parseSceneText(
+        sceneWith(R"({"file": "arm.gltf", "gltf_animation": )" + clock + "}", kThirtyFrames),
+        "test.json", dir.path());
+    return sceneAtFrame(scene, frame).objects[0].mesh->positions[1];
+  };
+  const auto bentAt = [](double seconds) { return bentArm(seconds * kPiDouble / 2)[1]; };
+  // Looped, 1.25 seconds in is 0.25 seconds into the one-second animation.
+  expectNear(elbowAt(R"({"name": "bend", "loop": true})", 30), bentAt(0.25), "looped");
+  expectNear(elbowAt(R"({"name": "bend"})", 30), bentAt(1), "held");
+  expectNear(elbowAt(R"({"index": 0, "start": 0.5, "speed": 2})", 6), bentAt(1), "sped up");
+  expectNear(elbowAt(R"({"name": "bend", "start": 1, "speed": -1})", 12), bentAt(0.5), "backwards");
+  // A node the object follows keeps the same clock.
+  const SceneDesc car = parseSceneText(sceneWith(R"({"file": "car.gltf", "gltf_node": "car",
+                    "gltf_animation": {"name": "drive", "loop": true, "start": 0.5}})",
+                                                 kThirtyFrames),
+                                       "test.json", dir.path());
+  const ObjectDesc driven = sceneAtFrame(car, 18).objects[0];  // 0.75 s on: 1.25, looped 0.25
+  expectNear(driven.position, Vec3(1 + 2 * 0.25f, 2, 8), "the car's node");
+}
+
 std::string error(const GltfFile& file, const std::string& object,
                   const std::string& animation = kThirtyFrames) {
   TempDir dir;
@@ -460,6 +487,12 @@ TEST(GltfMeshAnimation, Refusals) {
   EXPECT_EQ(nothing,
             "test.json: objects[0].gltf_animation: m.gltf: animations[0].channels[0].target: node "
             "2 has no mesh with morph targets, whose weights the channel could set");
+  EXPECT_EQ(error(skinnedArm(), R"({"file": "m.gltf", "gltf_animation": {"loop": true}})"),
+            "test.json: objects[0].gltf_animation: expected its \"name\" or its \"index\"");
+  EXPECT_EQ(error(skinnedArm(), R"({"file": "m.gltf", "gltf_animation": {"name": "bend",
+                                    "speed": 0}})"),
+            "test.json: objects[0].gltf_animation.speed: expected a speed other than 0 (negative "
+            "plays it backwards), got 0");
   EXPECT_EQ(error(skinnedArm(), R"({"file": "m.gltf", "gltf_animation": "bend"})", ""),
             "test.json: objects[0].gltf_animation: needs an \"animation\" block, whose frames and "
             "fps give the times at which the file's animation is played");

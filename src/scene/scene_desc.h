@@ -5,6 +5,7 @@
 // scene/camera_resolve.h turns them into the renderer's Camera.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -73,6 +74,20 @@ struct MeshDesc {
   std::vector<std::string> warnings;
 };
 
+// When an object plays a glTF animation: at s seconds of the scene it shows the animation's time
+// start + speed s, wrapped into the animation's length where it loops (else held before its first
+// key and after its last, as glTF says).
+struct GltfClock {
+  double start = 0, speed = 1;
+  bool loop = false;
+  double at(double seconds, double length) const {
+    const double t = start + speed * seconds;
+    if (!loop || !(length > 0)) return t;
+    const double wrapped = std::fmod(t, length);
+    return wrapped < 0 ? wrapped + length : wrapped;
+  }
+};
+
 // An object's placement at one time of a frame's exposure (SceneDesc::shutterTimes).
 struct ObjectPose {
   Vec3 position;
@@ -106,6 +121,7 @@ struct ObjectDesc {
   bool gltfAnimated = false;
   std::string gltfAnimationName;
   int gltfAnimationNumber = 0;
+  GltfClock gltfClock;
   // The OBJ file's group or object (the faces after a `g` or `o` of this name) the object holds
   // ("": all its faces).
   std::string objGroup;

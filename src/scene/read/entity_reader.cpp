@@ -190,12 +190,34 @@ void readGltfSelection(JsonObject& fields, const std::string& name, ObjectDesc& 
     if (!isGltfPath(object.file))
       animation->fail("a glTF file's animation, and \"" + name + "\" is not a glTF file");
     object.gltfAnimated = true;
+    // A name or a number, or {"name" or "index", "start", "speed", "loop"}: its clock.
+    std::optional<JsonValue> pick = animation;
+    std::optional<JsonObject> clock;
+    if (animation->json().is_object()) {
+      clock.emplace(*animation, std::vector<std::string>{"name", "index", "start", "speed", "loop"},
+                    "an animation's name or number, from 0, or an object of its \"name\" or "
+                    "\"index\", \"start\", \"speed\" and \"loop\"");
+      clock->exclusive("name", "index");
+      pick = clock->has("name") ? clock->get("name") : clock->get("index");
+      if (!pick) clock->fail("expected its \"name\" or its \"index\"");
+      if (std::optional<JsonValue> start = clock->get("start"))
+        object.gltfClock.start = start->number("the time in the animation, in seconds, at frame 0");
+      if (std::optional<JsonValue> speed = clock->get("speed")) {
+        object.gltfClock.speed =
+            speed->number("how fast the animation plays (1: as the file says)");
+        if (!(object.gltfClock.speed != 0.0))
+          speed->failExpected("a speed other than 0 (negative plays it backwards)");
+      }
+      if (std::optional<JsonValue> loop = clock->get("loop"))
+        object.gltfClock.loop = loop->boolean();
+      clock->finish();
+    }
     const std::string expectation = "an animation's name or number, from 0";
-    if (animation->json().is_string()) {
-      object.gltfAnimationName = animation->string();
-      if (object.gltfAnimationName.empty()) animation->failExpected(expectation);
+    if (pick->json().is_string()) {
+      object.gltfAnimationName = pick->string();
+      if (object.gltfAnimationName.empty()) pick->failExpected(expectation);
     } else {
-      object.gltfAnimationNumber = int(animation->integer(0, 1u << 30, expectation));
+      object.gltfAnimationNumber = int(pick->integer(0, 1u << 30, expectation));
     }
   }
   if (std::optional<JsonValue> group = fields.get("obj_group")) {

@@ -176,6 +176,7 @@ GltfAnimation::GltfAnimation(const tinygltf::Model& model, size_t index, const s
                        " elements for " + std::to_string(c.times.size()) + " key times" +
                        (path == 3 ? " of " + std::to_string(c.components) + " morph targets" : "") +
                        ", got " + std::to_string(c.values.size() / element));
+    length_ = std::max(length_, double(c.times.back()));
     channels_.push_back(std::move(c));
     targets.push_back({channel.target_node, path});
   }

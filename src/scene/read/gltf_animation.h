@@ -28,6 +28,9 @@ class GltfAnimation {
   // (*weights gets one per target), or false.
   bool weightsAt(int index, double t, std::vector<double>* weights) const;
 
+  // The time of its last key (seconds): how long it lasts from time 0.
+  double length() const { return length_; }
+
   // Whether a channel moves node `index` (its translation, rotation or scale).
   bool moves(int index) const { return nodes_.count(index) > 0; }
   // Whether a channel sets node `index`'s morph target weights.
@@ -45,6 +48,7 @@ class GltfAnimation {
   // node -> its translation's, rotation's and scale's channel in channels_ (-1: none)
   std::map<int, std::array<int, 3>> nodes_;
   std::map<int, int> weights_;  // node -> its weights' channel in channels_
+  double length_ = 0;
   std::vector<Channel> channels_;
 };
 

@@ -54,11 +54,12 @@ class GltfMeshMotion : public MeshMotion {
   // With `creaseDegrees`, the faces without normals of the file get them as at rest
   // (withComputedNormals).
   GltfMeshMotion(std::shared_ptr<const MeshDesc> mesh, std::shared_ptr<const GltfRig> rig,
-                 GltfAnimation animation, float creaseDegrees)
+                 GltfAnimation animation, const GltfClock& clock, float creaseDegrees)
       : rest_(creaseDegrees > 0 ? withComputedNormals(*mesh, creaseDegrees) : *mesh),
         fileNormals_(mesh->normals.size()),
         rig_(std::move(rig)),
-        animation_(std::move(animation)) {}
+        animation_(std::move(animation)),
+        clock_(clock) {}
 
   std::shared_ptr<const MeshDesc> meshAt(double seconds) const override {
     {
@@ -67,7 +68,7 @@ class GltfMeshMotion : public MeshMotion {
         if (time == seconds) return mesh;
     }
     MeshDesc posed = rest_;
-    const GltfPose pose = rig_->pose(&animation_, seconds);
+    const GltfPose pose = rig_->pose(&animation_, clock_.at(seconds, animation_.length()));
     for (const GltfRigPrimitive& p : rig_->primitives)
       rig_->place(p, pose, &posed.positions, &posed.normals);
     reshade(&posed, fileNormals_);
@@ -85,6 +86,7 @@ class GltfMeshMotion : public MeshMotion {
   size_t fileNormals_;  // how many of its normals are the file's
   std::shared_ptr<const GltfRig> rig_;
   GltfAnimation animation_;
+  GltfClock clock_;
   mutable std::mutex mutex_;
   mutable std::deque<std::pair<double, std::shared_ptr<const MeshDesc>>> recent_;
 };
@@ -103,6 +105,7 @@ std::shared_ptr<const MeshMotion> gltfMeshMotion(const ObjectDesc& object, const
                                std::any_of(mesh->triangles.begin(), mesh->triangles.end(),
                                            [](const MeshTriangle& t) { return t.n[0] < 0; });
   return std::make_shared<GltfMeshMotion>(std::move(mesh), std::move(rig), std::move(animation),
+                                          object.gltfClock,
                                           computesNormals ? object.creaseDegrees : 0.0f);
 }
 

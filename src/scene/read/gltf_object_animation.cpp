@@ -28,7 +28,8 @@ std::vector<GltfMatrix> nodeWorlds(const ObjectDesc& object, const std::vector<d
       findGltfAnimation(file->model, label, object.gltfAnimationName, object.gltfAnimationNumber);
   const GltfAnimation animation(file->model, index, label);
   std::vector<GltfMatrix> worlds;
-  for (double t : times) {
+  for (double seconds : times) {
+    const double t = object.gltfClock.at(seconds, animation.length());
     std::optional<GltfMatrix> world;
     forEachPlacedNode(
         file->model, label,
