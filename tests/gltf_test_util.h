@@ -102,6 +102,24 @@ struct GltfFile {
   }
 };
 
+// A square (x, y in [-1, 1], z = 0, two triangles) whose morph target stretches it along x to
+// twice its width; its one animation takes the target's weight from 0 to 1 over one second.
+inline GltfFile stretchingSquare() {
+  GltfFile f;
+  const int p = f.addFloats({-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0}, "VEC3", 3);
+  const int dp = f.addFloats({-1, 0, 0, 1, 0, 0, 1, 0, 0, -1, 0, 0}, "VEC3", 3);
+  const int indices = f.addAccessor(std::vector<uint16_t>{0, 1, 2, 0, 2, 3}, 5123, "SCALAR", 6);
+  const int times = f.addFloats({0, 1}, "SCALAR", 1), weights = f.addFloats({0, 1}, "SCALAR", 1);
+  nlohmann::json primitive = {{"attributes", {{"POSITION", p}}}, {"indices", indices}};
+  primitive["targets"] = nlohmann::json::array({{{"POSITION", dp}}});
+  f.doc["meshes"] = {{{"primitives", nlohmann::json::array({primitive})}}};
+  f.doc["nodes"] = {{{"mesh", 0}}};
+  f.doc["animations"] = {
+      {{"channels", {{{"sampler", 0}, {"target", {{"node", 0}, {"path", "weights"}}}}}},
+       {"samplers", {{{"input", times}, {"output", weights}}}}}};
+  return f;
+}
+
 // The mesh of the glTF file at `path`, named `label` in messages (its textures not kept).
 inline MeshDesc loadGltfMesh(const std::string& path, const std::string& label) {
   std::vector<std::shared_ptr<const TextureDesc>> textures;

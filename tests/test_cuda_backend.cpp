@@ -13,10 +13,12 @@
 #include <vector>
 
 #include "core/constants.h"
+#include "gltf_test_util.h"
 #include "image/image_io.h"
 #include "image_difference.h"
 #include "render_test_util.h"
 #include "require_gpu.h"
+#include "temp_dir.h"
 #include "texture_test_util.h"
 
 #if defined(CANDELA_HAS_CUDA)
@@ -524,6 +526,48 @@ TEST(CudaBackend, PassesMatchCpuWithinRounding) {
     differingText += " " + name + ": " + std::to_string(count);
   EXPECT_GT(flowing, cpu.aovs.size() / 2);  // the flow pass has motion to agree on
   EXPECT_LT(differing, cpu.aovs.size() / 100) << "pixels differing in" << differingText;
+}
+
+// The flow pass on a mesh that its glTF animation stretches (each point between its triangle's
+// next vertices, SceneView::flowVertices) and the stretching mesh blurred by an open shutter: the
+// device's passes and image against the CPU's.
+TEST(CudaBackend, MeshesThatMoveApartMatchCpu) {
+  REQUIRE_GPU();
+  test::TempDir dir;
+  dir.write("stretch.gltf", test::stretchingSquare().gltf());
+  const auto scene = [&](const char* shutter) {
+    return parseSceneText(R"({"camera": {"width": 32, "height": 24, "fov": 60, "spp": 4,
+      "position": [0, 0, 4]}, "lights": [{"position": [0, 1, 4], "intensity": 10}],
+      "environment": {"color": [0.2, 0.2, 0.2]},
+      "objects": [{"file": "stretch.gltf", "gltf_animation": 0}],
+      "animation": {"frames": 8, "fps": 8)" +
+                              std::string(shutter) + "}}",
+                          "test.json", dir.path());
+  };
+  const SceneDesc still = scene("");
+  const SceneDesc now = sceneAtFrame(still, 3);
+  SceneData data = flattenScene(now);
+  applyFlowMotion(data, flowMotion(now, sceneAtFrame(still, 4)));
+  RenderOptions options;
+  options.aovs = true;
+  const RenderResult cpu = renderCpu(data.view(), options);
+  const RenderResult gpu = renderCuda(data, true);
+  ASSERT_EQ(gpu.aovs.size(), cpu.aovs.size());
+  size_t flowing = 0, differing = 0;
+  for (size_t i = 0; i < cpu.aovs.size(); ++i) {
+    const AovPixel &c = cpu.aovs[i], &g = gpu.aovs[i];
+    flowing += c.flowSum.x != 0;
+    differing += c.flowSamples != g.flowSamples ||
+                 std::fabs(c.flowSum.x - g.flowSum.x) > 1e-3f * (std::fabs(c.flowSum.x) + 1) ||
+                 std::fabs(c.flowSum.y - g.flowSum.y) > 1e-3f * (std::fabs(c.flowSum.y) + 1);
+  }
+  EXPECT_GT(flowing, cpu.aovs.size() / 4);  // the square stretches under much of the image
+  EXPECT_LT(differing, cpu.aovs.size() / 100);
+  const SceneData blurred = flattenScene(sceneAtFrame(scene(R"(, "shutter": [0, 1])"), 3));
+  ASSERT_FALSE(blurred.motionPositions.empty());
+  const RenderResult cpuBlur = renderCpu(blurred.view(), RenderOptions());
+  const RenderResult gpuBlur = renderCuda(blurred);
+  EXPECT_LT(test::relMseAgainst(cpuBlur.image.pixels, gpuBlur.image.pixels), 1e-4);
 }
 
 // A window of the image on the device (the emitters seen, sampled again: backends/

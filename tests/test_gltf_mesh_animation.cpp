@@ -386,17 +386,7 @@ TEST(GltfMeshAnimation, BlurredFrameIsTheMeanOfTheStillsAcrossItsExposure) {
 // (x, y) of frame 3 to (x 1.5 / 1.375, y) at frame 4.
 TEST(GltfMeshAnimation, TheFlowPassFollowsTheVerticesOfAMovingMesh) {
   TempDir dir;
-  GltfFile f;
-  const int p = f.addFloats({-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0}, "VEC3", 3);
-  const int dp = f.addFloats({-1, 0, 0, 1, 0, 0, 1, 0, 0, -1, 0, 0}, "VEC3", 3);
-  const int indices = f.addAccessor(std::vector<uint16_t>{0, 1, 2, 0, 2, 3}, 5123, "SCALAR", 6);
-  nlohmann::json primitive = {{"attributes", {{"POSITION", p}}}, {"indices", indices}};
-  primitive["targets"] = nlohmann::json::array({{{"POSITION", dp}}});
-  f.doc["meshes"] = {{{"primitives", nlohmann::json::array({primitive})}}};
-  f.doc["nodes"] = {{{"mesh", 0}}};
-  f.doc["animations"] = {{{"channels", {channel(0, 0, "weights")}},
-                          {"samplers", {linearSampler(f, {0, 1}, "SCALAR", 1)}}}};
-  dir.write("stretch.gltf", f.gltf());
+  dir.write("stretch.gltf", test::stretchingSquare().gltf());
   const test::FlowRender r = test::renderFlow(R"({
     "camera": {"width": 16, "height": 12, "fov": 60, "spp": 1, "position": [0, 0, 4]},
     "render": {"antialiasing": false},
