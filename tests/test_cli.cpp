@@ -470,6 +470,25 @@ TEST_F(CliTest, InfoSaysWhatTheShutterBlurs) {
   EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;
 }
 
+// `info` lists a glTF file's animations, and which one the object plays.
+TEST_F(CliTest, InfoListsAGltfFilesAnimations) {
+  candela::test::GltfFile square = candela::test::stretchingSquare();
+  square.doc["animations"][0]["name"] = "stretch";
+  square.doc["animations"].push_back(square.doc["animations"][0]);
+  square.doc["animations"][1]["name"] = "again";
+  writeFile("square.gltf", square.gltf());
+  writeFile("played.json", R"({"camera": {"width": 8, "height": 8, "spp": 1},
+    "objects": [{"file": "square.gltf", "position": [0, 0, -5], "gltf_animation": "stretch"},
+                {"file": "square.gltf", "position": [3, 0, -5]}],
+    "animation": {"frames": 2}})");
+  RunResult r = run("info played.json");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("animations: objects[0]: \"stretch\" (1 s, played), \"again\" (1 s)\n"
+                       "animations: objects[1]: \"stretch\" (1 s), \"again\" (1 s)\n"),
+            std::string::npos)
+      << r.out;
+}
+
 // A camera that becomes unusable at the last frame (fov -> 1e-38) is found before any frame is
 // written, and `info` reports the same error (regression: frames 0-2 were written, then exit 2).
 TEST_F(CliTest, SequenceWithABadLastFrameWritesNothing) {

@@ -10,6 +10,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/mat3.h"
@@ -67,6 +68,9 @@ struct MeshDesc {
   std::vector<Material> mixParts;   // what its mixes mix (Material::mixParts index this)
   std::vector<std::string> materialFiles;  // the MTL files read, beside the OBJ file
   std::vector<std::string> bufferFiles;    // a glTF file's buffers read from files of their own
+  // A glTF file's animations, for `candela info`: each one's name and length in seconds (the time
+  // of its last key; -1 where it cannot be played).
+  std::vector<std::pair<std::string, double>> animations;
   bool holdsCameras = false;  // a glTF file with cameras (the scene's camera may take one)
   bool holdsLights = false;   // a glTF file with lights (the scene's lights may take them)
   // What the file leaves to a default that its author may not have meant, "<file>:<line>: ..."

@@ -50,6 +50,30 @@ void printAnimation(const AnimationDesc& animation, const ShutterBlur& blur) {
   std::printf("\n");
 }
 
+// Per object of a glTF file with animations: `animations: objects[0]: "Walk" (1.2 s, played),
+// "Run" (0.8 s)`, so that the names "gltf_animation" takes are at hand.
+void printGltfAnimations(const SceneDesc& desc) {
+  for (const ObjectDesc& object : desc.objects) {
+    const auto& animations = object.mesh->animations;
+    if (animations.empty()) continue;
+    std::printf("animations: %s:", object.where.c_str());
+    for (size_t i = 0; i < animations.size(); ++i) {
+      const auto& [name, length] = animations[i];
+      const bool played = object.gltfAnimated &&
+                          (object.gltfAnimationName.empty() ? int(i) == object.gltfAnimationNumber
+                                                            : name == object.gltfAnimationName);
+      const std::string shown = name.empty() ? "#" + std::to_string(i) : "\"" + name + "\"";
+      std::printf("%s %s (", i == 0 ? "" : ",", shown.c_str());
+      if (length >= 0)
+        std::printf("%g s", length);
+      else
+        std::printf("cannot be played");
+      std::printf("%s)", played ? ", played" : "");
+    }
+    std::printf("\n");
+  }
+}
+
 }  // namespace
 
 CLI::App* addInfoCommand(CLI::App& app, InfoOptions* options) {
@@ -104,6 +128,7 @@ int runInfo(const InfoOptions& options) {
       environment ? ", the environment" : "");
   std::printf("materials:  %zu\n", scene.materials.size());
   if (desc.animation) printAnimation(*desc.animation, shutterBlur(desc));
+  printGltfAnimations(desc);
 
   Vec3 lo, hi;
   scene.bounds(&lo, &hi);

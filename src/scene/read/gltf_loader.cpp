@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "scene/read/gltf_accessor.h"
+#include "scene/read/gltf_animation.h"
 #include "scene/read/gltf_file.h"
 #include "scene/read/gltf_instancing.h"
 #include "scene/read/gltf_materials.h"
@@ -322,6 +323,14 @@ MeshDesc loadGltfFile(const std::string& path, const std::string& label, Texture
       {}, root);
   MeshDesc mesh = builder.finish();
   if (rig) *rig = std::move(posing);
+  for (size_t i = 0; i < file->model.animations.size(); ++i) {
+    double length = -1;  // an animation no object plays may be broken: it is only listed
+    try {
+      length = GltfAnimation(file->model, i, label).length();
+    } catch (const SceneError&) {
+    }
+    mesh.animations.emplace_back(file->model.animations[i].name, length);
+  }
   for (const tinygltf::Buffer& buffer : file->model.buffers)
     if (!buffer.uri.empty() && !isDataUri(buffer.uri))
       mesh.bufferFiles.push_back(gltfUriPath(buffer.uri, file->folder));
