@@ -70,19 +70,20 @@ AnimTrack trackOf(uint32_t index, AnimProperty property, const std::string& wher
 void follow(SceneDesc& scene, uint32_t index) {
   ObjectDesc& object = scene.objects[index];
   const std::string where = memberPath(object.where, "gltf_animation");
-  if (!scene.animation)
-    failAt(scene.file, where,
-           "needs an \"animation\" block, whose frames and fps give the times at which the "
-           "file's animation is played");
-  AnimationDesc& animation = *scene.animation;
-  for (const AnimTrack& t : animation.tracks)
-    if (t.target == AnimTarget::Object && t.index == index &&
-        (t.property == AnimProperty::Position || t.property == AnimProperty::Rotation ||
-         t.property == AnimProperty::Scale))
-      failAt(scene.file, t.where,
-             "the object follows its \"gltf_animation\", which places it at every frame");
-  std::vector<double> times(animation.frames);
-  for (uint32_t k = 0; k < animation.frames; ++k) times[k] = double(k) / double(animation.fps);
+  // Without an animation block the scene is a still: the node as the animation has it at time 0
+  // of the object's clock (its start).
+  const bool still = !scene.animation;
+  const uint32_t frames = still ? 1 : scene.animation->frames;
+  if (!still)
+    for (const AnimTrack& t : scene.animation->tracks)
+      if (t.target == AnimTarget::Object && t.index == index &&
+          (t.property == AnimProperty::Position || t.property == AnimProperty::Rotation ||
+           t.property == AnimProperty::Scale))
+        failAt(scene.file, t.where,
+               "the object follows its \"gltf_animation\", which places it at every frame");
+  std::vector<double> times(frames, 0.0);
+  for (uint32_t k = 0; k < frames; ++k)
+    times[k] = still ? 0.0 : double(k) / double(scene.animation->fps);
   std::vector<GltfMatrix> worlds;
   try {
     worlds = nodeWorlds(object, times);
@@ -93,7 +94,7 @@ void follow(SceneDesc& scene, uint32_t index) {
   AnimTrack position = trackOf(index, AnimProperty::Position, where);
   AnimTrack rotation = trackOf(index, AnimProperty::Rotation, where);
   AnimTrack scale = trackOf(index, AnimProperty::Scale, where);
-  for (uint32_t k = 0; k < animation.frames; ++k) {
+  for (uint32_t k = 0; k < frames; ++k) {
     const GltfMatrix m = gltfMultiply(placed, worlds[k]);
     std::array<double, 12> rows;
     for (int i = 0; i < 3; ++i)
@@ -115,8 +116,9 @@ void follow(SceneDesc& scene, uint32_t index) {
   object.position = position.keys[0].value;
   object.rotation = rotation.keys[0].value;
   object.scale = scale.keys[0].value;
+  if (still) return;
   for (AnimTrack* track : {&position, &rotation, &scale})
-    animation.tracks.push_back(std::move(*track));
+    scene.animation->tracks.push_back(std::move(*track));
 }
 
 }  // namespace

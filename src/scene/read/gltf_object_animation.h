@@ -9,10 +9,11 @@
 namespace candela {
 
 // Turns each such object's animation into its position, rotation and scale tracks, keyed at every
-// frame, its static placement that of frame 0. Throws SceneError "<scene>: <path>: ..." where the
-// scene has no animation block, a track of the scene animates what the file's does, the file has
-// no such animation or node, or the node's placement at some frame is no rotation times a scale
-// (a shear) or mirrors where frame 0's does not.
+// frame, its static placement that of frame 0; in a scene without an animation block (a still),
+// into its placement at time 0 of its clock alone. Throws SceneError "<scene>: <path>: ..." where
+// a track of the scene animates what the file's does, the file has no such animation or node, or
+// the node's placement at some frame is no rotation times a scale (a shear) or mirrors where frame
+// 0's does not.
 void followGltfObjectAnimations(SceneDesc& scene);
 
 }  // namespace candela

@@ -77,22 +77,26 @@ void shadeFacesWithoutNormals(SceneDesc& scene) {
 
 // Object `index` that plays a glTF animation gets the motion of its mesh, where the animation
 // moves any vertex of it (its motion of the object's node is the object's tracks:
-// gltf_object_animation.h); `rig` poses the mesh as loaded.
+// gltf_object_animation.h); `rig` poses the mesh as loaded. In a scene without an animation
+// block it takes the mesh as posed at its clock's start instead.
 void playGltfAnimation(SceneDesc& scene, size_t index, const std::string& writtenName,
                        const std::shared_ptr<GltfRig>& rig) {
   ObjectDesc& object = scene.objects[index];
   if (!object.gltfAnimated) return;
   const std::string where = memberPath(object.where, "gltf_animation");
-  if (!scene.animation)
-    failAt(scene.file, where,
-           "needs an \"animation\" block, whose frames and fps give the times at which the "
-           "file's animation is played");
   try {
     object.meshMotion = gltfMeshMotion(object, writtenName, object.mesh, rig);
   } catch (const SceneError& error) {
     failAt(scene.file, where, error.what());
   }
-  if (object.meshMotion) scene.animation->meshesMove = true;
+  if (!object.meshMotion) return;
+  if (scene.animation) {
+    scene.animation->meshesMove = true;
+    return;
+  }
+  // A still scene: the mesh as the animation has it at time 0 of the object's clock (its start).
+  object.mesh = object.meshMotion->meshAt(0.0);
+  object.meshMotion.reset();
 }
 
 // Whether two paths name one file (as far as they exist; else as written).
