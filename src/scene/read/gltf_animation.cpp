@@ -227,27 +227,34 @@ bool GltfAnimation::localAt(int index, const tinygltf::Node& node, double t,
   return true;
 }
 
-size_t findGltfAnimation(const tinygltf::Model& model, const std::string& label,
+size_t findGltfAnimation(const std::vector<std::string>& names, const std::string& label,
                          const std::string& name, int number) {
   if (!name.empty()) {
-    std::vector<std::string> names;
-    for (size_t i = 0; i < model.animations.size(); ++i) {
-      if (model.animations[i].name == name) return i;
-      if (!model.animations[i].name.empty()) names.push_back(model.animations[i].name);
+    std::vector<std::string> named;
+    for (size_t i = 0; i < names.size(); ++i) {
+      if (names[i] == name) return i;
+      if (!names[i].empty()) named.push_back(names[i]);
     }
-    if (names.empty())
+    if (named.empty())
       throw SceneError(label + ": no animation is named \"" + name + "\" (the file's " +
-                       std::to_string(model.animations.size()) + " have no names)");
-    const std::string close = closestMatch(name, names);
+                       std::to_string(names.size()) + " have no names)");
+    const std::string close = closestMatch(name, named);
     throw SceneError(label + ": no animation is named \"" + name + "\"" +
                      (close.empty() ? "" : " (did you mean \"" + close + "\"?)") +
-                     "; its animations: " + quotedNames(names));
+                     "; its animations: " + quotedNames(named));
   }
-  if (number < 0 || size_t(number) >= model.animations.size())
+  if (number < 0 || size_t(number) >= names.size())
     throw SceneError(label + ": animation " + std::to_string(number) +
-                     " is asked for, but the file has " + std::to_string(model.animations.size()) +
-                     (model.animations.size() == 1 ? " animation" : " animations"));
+                     " is asked for, but the file has " + std::to_string(names.size()) +
+                     (names.size() == 1 ? " animation" : " animations"));
   return size_t(number);
+}
+
+size_t findGltfAnimation(const tinygltf::Model& model, const std::string& label,
+                         const std::string& name, int number) {
+  std::vector<std::string> names;
+  for (const tinygltf::Animation& animation : model.animations) names.push_back(animation.name);
+  return findGltfAnimation(names, label, name, number);
 }
 
 }  // namespace candela

@@ -56,5 +56,8 @@ class GltfAnimation {
 // ..." where the file has none such.
 size_t findGltfAnimation(const tinygltf::Model& model, const std::string& label,
                          const std::string& name, int number);
+// The same among animations of these `names`, in the file's order.
+size_t findGltfAnimation(const std::vector<std::string>& names, const std::string& label,
+                         const std::string& name, int number);
 
 }  // namespace candela

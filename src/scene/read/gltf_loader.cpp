@@ -322,15 +322,20 @@ MeshDesc loadGltfFile(const std::string& path, const std::string& label, Texture
       },
       {}, root);
   MeshDesc mesh = builder.finish();
-  if (rig) *rig = std::move(posing);
+  // Every animation, read once: listed with its length, and kept for the objects that play one.
+  // One that no object plays may be broken: it is only listed.
   for (size_t i = 0; i < file->model.animations.size(); ++i) {
-    double length = -1;  // an animation no object plays may be broken: it is only listed
+    GltfRig::Animation animation{file->model.animations[i].name, std::nullopt, ""};
     try {
-      length = GltfAnimation(file->model, i, label).length();
-    } catch (const SceneError&) {
+      animation.played.emplace(file->model, i, label);
+    } catch (const SceneError& error) {
+      animation.fault = error.what();
     }
-    mesh.animations.emplace_back(file->model.animations[i].name, length);
+    mesh.animations.emplace_back(animation.name,
+                                 animation.played ? animation.played->length() : -1.0);
+    if (rig) posing->animations.push_back(std::move(animation));
   }
+  if (rig) *rig = std::move(posing);
   for (const tinygltf::Buffer& buffer : file->model.buffers)
     if (!buffer.uri.empty() && !isDataUri(buffer.uri))
       mesh.bufferFiles.push_back(gltfUriPath(buffer.uri, file->folder));

@@ -34,9 +34,9 @@ namespace candela {
 // their own); one the file does not have throws GltfVariantError (gltf_variants.h). `node`: the
 // name of the one node whose meshes (with its children's) make the mesh, in the node's own frame
 // ("": the file's scene); one the file does not have throws GltfNodeError (gltf_nodes.h).
-// With `rig`, *rig gets what poses the mesh's vertices, with its primitives, for an object that
-// plays one of the file's animations (scene/read/gltf_mesh_motion.h); the mesh then warns of no
-// animation.
+// With `rig`, *rig gets what poses the mesh's vertices, with its primitives and the file's
+// animations, for an object that plays one of them (scene/read/gltf_mesh_motion.h); the mesh then
+// warns of no animation. MeshDesc::animations lists the file's animations either way.
 MeshDesc loadGltfFile(const std::string& path, const std::string& label, TextureLoader& textures,
                       const std::string& variant = "", const std::string& node = "",
                       std::shared_ptr<GltfRig>* rig = nullptr);

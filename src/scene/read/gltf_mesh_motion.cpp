@@ -9,7 +9,6 @@
 
 #include "scene/dvec3.h"
 #include "scene/read/gltf_animation.h"
-#include "scene/read/gltf_file.h"
 #include "scene/vertex_normals.h"
 
 namespace candela {
@@ -96,15 +95,17 @@ class GltfMeshMotion : public MeshMotion {
 std::shared_ptr<const MeshMotion> gltfMeshMotion(const ObjectDesc& object, const std::string& label,
                                                  std::shared_ptr<const MeshDesc> mesh,
                                                  std::shared_ptr<const GltfRig> rig) {
-  const std::unique_ptr<GltfFile> file = readGltfFile(object.file, label);
-  const size_t index =
-      findGltfAnimation(file->model, label, object.gltfAnimationName, object.gltfAnimationNumber);
-  GltfAnimation animation(file->model, index, label);
+  std::vector<std::string> names;
+  for (const GltfRig::Animation& a : rig->animations) names.push_back(a.name);
+  const GltfRig::Animation& picked = rig->animations[findGltfAnimation(
+      names, label, object.gltfAnimationName, object.gltfAnimationNumber)];
+  if (!picked.played) throw SceneError(picked.fault);
+  const GltfAnimation& animation = *picked.played;
   if (!rig->movedBy(animation)) return nullptr;
   const bool computesNormals = object.smooth && object.creaseDegrees > 0 &&
                                std::any_of(mesh->triangles.begin(), mesh->triangles.end(),
                                            [](const MeshTriangle& t) { return t.n[0] < 0; });
-  return std::make_shared<GltfMeshMotion>(std::move(mesh), std::move(rig), std::move(animation),
+  return std::make_shared<GltfMeshMotion>(std::move(mesh), std::move(rig), animation,
                                           object.gltfClock,
                                           computesNormals ? object.creaseDegrees : 0.0f);
 }

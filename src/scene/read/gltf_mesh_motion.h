@@ -12,8 +12,8 @@
 
 namespace candela {
 
-// The motion of `mesh`, as `rig` (with its primitives) poses it, under the animation that
-// `object` names; null where the animation moves none of its vertices. Throws SceneError
+// The motion of `mesh`, as `rig` (with its primitives and the file's animations) poses it, under
+// the animation that `object` names; null where it moves none of its vertices. Throws SceneError
 // "<label>: <reason>" where the file has no such animation or cannot play it.
 std::shared_ptr<const MeshMotion> gltfMeshMotion(const ObjectDesc& object, const std::string& label,
                                                  std::shared_ptr<const MeshDesc> mesh,

@@ -41,18 +41,22 @@ GltfMatrix gltfLocalTransform(const tinygltf::Node& node, const std::string& whe
   return gltfTrs(t, q, scale);
 }
 
-bool gltfInvert(const GltfMatrix& m, GltfMatrix* inverse) {
-  const auto at = [&](int r, int c) { return m[size_t(4 * c + r)]; };
-  double cof[3][3];  // cof[r][c]: the cofactor of element (r, c)
+GltfCofactors::GltfCofactors(const GltfMatrix& m) {
+  const auto at = [&](int r, int k) { return m[size_t(4 * k + r)]; };
   for (int r = 0; r < 3; ++r)
-    for (int c = 0; c < 3; ++c)
-      cof[r][c] = at((r + 1) % 3, (c + 1) % 3) * at((r + 2) % 3, (c + 2) % 3) -
-                  at((r + 1) % 3, (c + 2) % 3) * at((r + 2) % 3, (c + 1) % 3);
-  const double det = at(0, 0) * cof[0][0] + at(0, 1) * cof[0][1] + at(0, 2) * cof[0][2];
+    for (int k = 0; k < 3; ++k)
+      c[r][k] = at((r + 1) % 3, (k + 1) % 3) * at((r + 2) % 3, (k + 2) % 3) -
+                at((r + 1) % 3, (k + 2) % 3) * at((r + 2) % 3, (k + 1) % 3);
+  det = at(0, 0) * c[0][0] + at(0, 1) * c[0][1] + at(0, 2) * c[0][2];
+}
+
+bool gltfInvert(const GltfMatrix& m, GltfMatrix* inverse) {
+  const GltfCofactors cof(m);
+  const double det = cof.det;
   if (!(std::abs(det) > 0) || !std::isfinite(det)) return false;
   GltfMatrix r{};
   for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) r[size_t(4 * j + i)] = cof[j][i] / det;  // the adjugate / det
+    for (int j = 0; j < 3; ++j) r[size_t(4 * j + i)] = cof.c[j][i] / det;  // the adjugate / det
   for (int i = 0; i < 3; ++i)
     r[size_t(12 + i)] =
         -(r[size_t(i)] * m[12] + r[size_t(4 + i)] * m[13] + r[size_t(8 + i)] * m[14]);

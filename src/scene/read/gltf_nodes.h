@@ -46,6 +46,14 @@ int gltfNodeIndex(const tinygltf::Model& model, const std::string& name);
 // quaternion.
 GltfMatrix gltfLocalTransform(const tinygltf::Node& node, const std::string& where);
 
+// The cofactors of an affine transform's linear part, c[r][k] that of element (r, k) (so c is the
+// inverse transpose times the determinant: what carries normals), and the determinant.
+struct GltfCofactors {
+  double c[3][3];
+  double det;
+  explicit GltfCofactors(const GltfMatrix& m);
+};
+
 // The inverse of an affine transform (its last row 0 0 0 1), or false where it has none.
 bool gltfInvert(const GltfMatrix& m, GltfMatrix* inverse);
 

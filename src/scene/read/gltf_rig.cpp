@@ -11,21 +11,6 @@ namespace {
 
 const GltfMatrix kIdentity = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
 
-// The cofactors of m's linear part (the inverse transpose times the determinant), and the
-// determinant.
-struct Cofactors {
-  double c[3][3];
-  double det;
-  explicit Cofactors(const GltfMatrix& m) {
-    const auto at3 = [&](int col, int row) { return m[size_t(4 * col + row)]; };
-    for (int r = 0; r < 3; ++r)
-      for (int k = 0; k < 3; ++k)
-        c[r][k] = at3((k + 1) % 3, (r + 1) % 3) * at3((k + 2) % 3, (r + 2) % 3) -
-                  at3((k + 2) % 3, (r + 1) % 3) * at3((k + 1) % 3, (r + 2) % 3);
-    det = at3(0, 0) * c[0][0] + at3(1, 0) * c[0][1] + at3(2, 0) * c[0][2];
-  }
-};
-
 // Vertex v's own position or normal, moved by the morph targets' `weights`.
 void morphed(const std::vector<float>& own, const std::vector<std::vector<float>>& targets,
              const std::vector<double>& weights, size_t v, double out[3]) {
@@ -226,14 +211,14 @@ bool GltfRig::mirrored(const GltfRigPrimitive& p, const GltfPose& pose) const {
   if (p.skin >= 0) return false;  // glTF ignores the node's transform, and no joint decides
   const GltfMatrix world = p.instance ? gltfMultiply(pose.worlds[size_t(p.node)], *p.instance)
                                       : pose.worlds[size_t(p.node)];
-  return Cofactors(world).det < 0;
+  return GltfCofactors(world).det < 0;
 }
 
 void GltfRig::place(const GltfRigPrimitive& p, const GltfPose& pose, std::vector<Vec3>* positions,
                     std::vector<Vec3>* normals, std::vector<bool>* usable) const {
   const GltfMatrix nodeWorld = p.instance ? gltfMultiply(pose.worlds[size_t(p.node)], *p.instance)
                                           : pose.worlds[size_t(p.node)];
-  const Cofactors nodeCofactors(nodeWorld);
+  const GltfCofactors nodeCofactors(nodeWorld);
   const std::vector<double>& weights = pose.weights[size_t(p.node)];
   const size_t vertices = p.positions.size() / 3;
   const bool withNormals = p.normalBase >= 0 && !p.normals.empty();
@@ -263,7 +248,7 @@ void GltfRig::place(const GltfRigPrimitive& p, const GltfPose& pose, std::vector
       placed[int(r)] = float(m[r] * x[0] + m[4 + r] * x[1] + m[8 + r] * x[2] + m[12 + r]);
     (*positions)[p.base + v] = placed;
     if (!withNormals) continue;
-    const Cofactors own = world == &nodeWorld ? nodeCofactors : Cofactors(m);
+    const GltfCofactors own = world == &nodeWorld ? nodeCofactors : GltfCofactors(m);
     double nx[3];
     morphed(p.normals, p.targetNormals, weights, v, nx);
     Vec3 n;

@@ -76,6 +76,14 @@ class GltfRig {
 
   // The primitives, kept for an object that plays an animation.
   std::vector<GltfRigPrimitive> primitives;
+  // The file's animations as loading read them, in its order, for the objects that play one: each
+  // with its name, and the reason it cannot be played where it cannot (SceneError's message).
+  struct Animation {
+    std::string name;
+    std::optional<GltfAnimation> played;
+    std::string fault;
+  };
+  std::vector<Animation> animations;
 
  private:
   struct Skin {
