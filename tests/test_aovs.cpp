@@ -39,7 +39,7 @@ struct AovRender {
 };
 
 const char* kAll =
-    "depth,distance,normal,normal_camera,albedo,position,instance,material,direct,emission";
+    "depth,distance,normal,normal_camera,albedo,position,instance,material,direct,emission,alpha";
 
 AovRender renderAovs(const std::string& json, const std::string& baseDir = ".", int threads = 0,
                      const char* passes = kAll) {
@@ -75,7 +75,7 @@ TEST(Aovs, UnknownPassNamesAreRefusedWithTheKnownOnes) {
   } catch (const std::invalid_argument& e) {
     EXPECT_EQ(std::string(e.what()),
               "unknown render pass \"normals\"; the passes are: depth, distance, normal, "
-              "normal_camera, albedo, position, instance, material, flow, direct, emission");
+              "normal_camera, albedo, position, instance, material, flow, direct, emission, alpha");
   }
   const std::vector<Aov> aovs = parseAovList(" normal , depth,normal");
   ASSERT_EQ(aovs.size(), 2u);

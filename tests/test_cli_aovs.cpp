@@ -131,6 +131,37 @@ TEST_F(CliAovTest, PngGetsSiblingPfmFiles) {
   EXPECT_EQ(fs::file_size(path("img/out.depth.pfm")), std::string("Pf\n15 15\n-1.0\n").size() + 4 * 225);
 }
 
+// The alpha pass is the image's own alpha: a PNG's fourth channel (no sibling file), an EXR's A;
+// beside a PFM, which has none, a sibling file. The scene has no environment, so its background
+// is transparent and its sphere opaque.
+TEST_F(CliAovTest, AlphaIsThePngsAlphaChannelAndTheExrsA) {
+  ASSERT_EQ(run("render s.json -q -o plain.png"), 0);
+  ASSERT_EQ(run("render s.json -q -o out.png --aov alpha,depth"), 0);
+  EXPECT_TRUE(fs::exists(path("out.depth.pfm")));
+  EXPECT_FALSE(fs::exists(path("out.alpha.pfm")));
+  const candela::ImageRgba png = candela::readImageRgba(path("out.png").string());
+  ASSERT_EQ(png.channels, 4u);
+  const size_t centre = 7 * 15 + 7;
+  EXPECT_EQ(png.pixels8[4 * centre + 3], 255);
+  EXPECT_EQ(png.pixels8[3], 0);
+  // Where alpha is 1 the colour is the plain render's.
+  const candela::ImageRgba plain = candela::readImageRgba(path("plain.png").string());
+  for (int c = 0; c < 3; ++c)
+    EXPECT_EQ(png.pixels8[4 * centre + c], plain.pixels8[4 * centre + c]) << c;
+
+  ASSERT_EQ(run("render s.json -q -o out.exr --aov alpha"), 0);
+  const candela::ExrChannels exr = candela::readExrChannels(path("out.exr").string());
+  ASSERT_NE(channel(exr, "A"), nullptr);
+  EXPECT_EQ(channel(exr, "alpha.A"), nullptr);
+  EXPECT_EQ(channel(exr, "A")->pixels[centre], 1.0f);
+  EXPECT_EQ(channel(exr, "A")->pixels[0], 0.0f);
+
+  ASSERT_EQ(run("render s.json -q -o out.pfm --aov alpha"), 0);
+  const candela::ImageRGB alpha = candela::readImage(path("out.alpha.pfm").string());
+  EXPECT_EQ(alpha.at(7, 7).x, 1.0f);
+  EXPECT_EQ(alpha.at(0, 0).x, 0.0f);
+}
+
 std::string fileText(const fs::path& file) { return candela::readFileBytes(file.string()); }
 
 // The instance pass comes with the names of its numbers (as scene.instances in Python): by JSON
@@ -168,11 +199,12 @@ TEST_F(CliAovTest, InstanceNamesAreWrittenBesideTheInstancePass) {
 TEST_F(CliAovTest, UnknownPassIsAUsageErrorListingTheKnownOnes) {
   std::string err;
   EXPECT_EQ(run("render s.json -o out.png --aov depth,nromal", &err), 2);
-  EXPECT_EQ(err,
-            "candela: error: --aov: unknown render pass \"nromal\"; the passes are: depth, "
-            "distance, normal, normal_camera, albedo, position, instance, material, flow, "
-            "direct, emission; and beside the image camera (the camera's matrices) and poses "
-            "(each instance's pose)\n");
+  EXPECT_EQ(
+      err,
+      "candela: error: --aov: unknown render pass \"nromal\"; the passes are: depth, "
+      "distance, normal, normal_camera, albedo, position, instance, material, flow, "
+      "direct, emission, alpha; and beside the image camera (the camera's matrices) and poses "
+      "(each instance's pose)\n");
   EXPECT_FALSE(fs::exists(path("out.png")));
 }
 

@@ -504,6 +504,7 @@ TEST(CudaBackend, PassesMatchCpuWithinRounding) {
     // where the device fuses its multiply-add; the sample it picks is the same.
     const std::pair<const char*, bool> fields[] = {
         {"hits", c.hits == g.hits},
+        {"covered", c.covered == g.covered},
         {"flowSamples", c.flowSamples == g.flowSamples},
         {"nearestMaterial", c.nearestMaterial == g.nearestMaterial},
         {"nearestDistance2", close(c.nearestDistance2, g.nearestDistance2)},

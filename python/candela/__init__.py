@@ -181,8 +181,9 @@ class Scene:
 
         aovs: render passes to return as well (docs/aovs.md): "depth", "distance", "normal",
         "normal_camera", "albedo", "position", "instance", "material", "flow", "direct",
-        "emission". With aovs the result is a dict: "image" the radiance, and one array per pass,
-        (height, width) float32 for depth and distance, (height, width, 2) float32 for flow,
+        "emission", "alpha". With aovs the result is a dict: "image" the radiance, and one array
+        per pass, (height, width) float32 for depth, distance and alpha, (height, width, 2)
+        float32 for flow,
         (height, width, 3) float32 for the others, (height, width) uint32 for the ids. An unknown
         pass name raises ValueError.
 
@@ -327,13 +328,20 @@ TONE_MAPS = ("clamp", "reinhard", "aces")  # as the scene's render.tone_map name
 
 
 def write_image(path: str | os.PathLike, img: Any, gamma: float | str = 2.2,
-                exposure: float = 0.0, tone_map: str = "clamp") -> None:
+                exposure: float = 0.0, tone_map: str = "clamp", alpha: Any = None) -> None:
     """Writes a linear (H, W, 3) image as the CLI does: .png (exposure in stops, then the tone map,
     "clamp", "reinhard" or "aces", then gamma, or gamma="srgb"), .exr or .pfm (linear float),
-    creating the folders it goes in. The file is replaced atomically."""
+    creating the folders it goes in. The file is replaced atomically. With `alpha`, an (H, W)
+    render's "alpha" pass, by which the image is premultiplied: a .png is RGBA of straight colour
+    (the image divided by alpha), an .exr has A beside R, G, B; a .pfm has no alpha channel."""
     arr = np.ascontiguousarray(img, dtype=np.float32)
     if arr.ndim != 3 or arr.shape[2] != 3:
         raise ValueError(f"expected an image of shape (H, W, 3), got {arr.shape}")
+    if alpha is not None:
+        alpha = np.ascontiguousarray(alpha, dtype=np.float32)
+        if alpha.shape != arr.shape[:2]:
+            raise ValueError(f"expected alpha of the image's shape {arr.shape[:2]}, "
+                             f"got {alpha.shape}")
     srgb = isinstance(gamma, str)
     if srgb and gamma.lower() != "srgb":
         raise ValueError(f"gamma must be a number or 'srgb', got {gamma!r}")
@@ -345,4 +353,4 @@ def write_image(path: str | os.PathLike, img: Any, gamma: float | str = 2.2,
     except OSError:
         pass  # a file where a folder should be: the writer below names it
     _candela.write_image(path, arr, srgb, 2.2 if srgb else float(gamma), float(exposure),
-                         TONE_MAPS.index(tone_map))
+                         TONE_MAPS.index(tone_map), alpha)

@@ -87,7 +87,8 @@ std::string encodeExr(const ImageRGB& image, const std::vector<ImageLayer>& laye
       }
       const Imf::PixelType type = layer.integer ? Imf::UINT : Imf::FLOAT;
       for (size_t c = 0; c < n; ++c) {
-        const std::string name = layer.name + "." + layer.channels[c];
+        const std::string name =
+            layer.ofImage ? layer.channels[c] : layer.name + "." + layer.channels[c];
         header.channels().insert(name, Imf::Channel(type));
         frame.insert(name, Imf::Slice(type, data + c * 4, n * 4, n * 4 * image.width));
       }

@@ -17,6 +17,10 @@ namespace candela {
 
 // 8-bit RGB PNG, tone curve and exposure from `output` (see encode8bit).
 std::string encodePng(const ImageRGB& image, const OutputDesc& output);
+// 8-bit RGBA PNG of an image premultiplied by `alpha` (one value per pixel in [0, 1]): each
+// colour divided by its alpha before the tone curve (PNG's alpha is straight), 0 where alpha is.
+std::string encodePng(const ImageRGB& image, const OutputDesc& output,
+                      const std::vector<float>& alpha);
 
 // OpenEXR, three 32-bit FLOAT channels R, G, B, lossless ZIP compression, linear values.
 std::string encodeExr(const ImageRGB& image);

@@ -69,26 +69,41 @@ void requireTextureImagePath(const std::string& path) {
     unsupported(path, ".png, .jpg, .jpeg, .webp, .exr, .pfm or .hdr");
 }
 
-void writeImage(const std::string& path, const ImageRGB& image, const OutputDesc& output) {
-  writeFileAtomically(path, encodeImage(path, image, output));
+void writeImage(const std::string& path, const ImageRGB& image, const OutputDesc& output,
+                const ImageLayer* alpha) {
+  writeFileAtomically(path, encodeImage(path, image, output, alpha));
 }
 
-std::string encodeImage(const std::string& path, const ImageRGB& image, const OutputDesc& output) {
+std::string encodeImage(const std::string& path, const ImageRGB& image, const OutputDesc& output,
+                        const ImageLayer* alpha) {
   const ImageFormat format = formatOf(path);
   if (format == ImageFormat::Unknown || format == ImageFormat::Hdr)
     unsupported(path, ".png, .exr or .pfm");
   if (image.width == 0 || image.height == 0) throw ImageWriteError(path + ": the image is empty");
   if (image.pixels.size() != size_t(3) * image.width * image.height)
     throw ImageWriteError(path + ": pixel buffer does not match the image size");
+  if (alpha &&
+      (alpha->channels.size() != 1 || alpha->width != image.width ||
+       alpha->height != image.height ||
+       alpha->pixels.size() != alpha->channels.size() * size_t(alpha->width) * alpha->height))
+    throw ImageWriteError(path + ": the alpha channel does not match the image size");
+  if (alpha && format == ImageFormat::Pfm)
+    throw ImageWriteError(path + ": a .pfm has no alpha channel; expected .png or .exr");
 
   std::string bytes;
   try {
     switch (format) {
       case ImageFormat::Png:
-        bytes = encodePng(image, output);
+        bytes = alpha ? encodePng(image, output, alpha->pixels) : encodePng(image, output);
         break;
       case ImageFormat::Exr:
-        bytes = encodeExr(image);
+        if (alpha) {
+          ImageLayer a = *alpha;
+          a.ofImage = true;
+          bytes = encodeExr(image, {a});
+        } else {
+          bytes = encodeExr(image);
+        }
         break;
       case ImageFormat::Pfm:
         bytes = encodePfm(image);

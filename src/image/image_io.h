@@ -32,10 +32,15 @@ bool isFloatImagePath(const std::string& path);
 void requireTextureImagePath(const std::string& path);
 
 // Throws ImageWriteError (naming the path and the reason) on failure; leaves no partial file.
-void writeImage(const std::string& path, const ImageRGB& image, const OutputDesc& output);
+// With `alpha` (the alpha pass, one channel: the image is premultiplied by it), a .png is 8-bit
+// RGBA of straight colour (the image divided by alpha, as PNG stores it) and an .exr has A beside
+// R, G, B; a .pfm, which has no alpha channel, is refused.
+void writeImage(const std::string& path, const ImageRGB& image, const OutputDesc& output,
+                const ImageLayer* alpha = nullptr);
 
 // The bytes writeImage writes, in the format of `path`'s extension; throws ImageWriteError.
-std::string encodeImage(const std::string& path, const ImageRGB& image, const OutputDesc& output);
+std::string encodeImage(const std::string& path, const ImageRGB& image, const OutputDesc& output,
+                        const ImageLayer* alpha = nullptr);
 
 // A multi-layer .exr: the image as R, G, B and each layer's channels beside them (render passes);
 // throws ImageWriteError, also for a path that is not .exr.

@@ -12,6 +12,9 @@ struct ImageLayer {
   std::string name;                   // "depth", "normal", ...
   std::vector<std::string> channels;  // "Z", or "X", "Y", "Z"; in the EXR "depth.Z"
   bool integer = false;  // whole numbers in [0, 2^24] (ids): stored as EXR UINT channels
+  // The image's own channel, its alpha: in the EXR "A" beside R, G, B (the RGBA image every
+  // reader composites), not "alpha.A".
+  bool ofImage = false;
   uint32_t width = 0, height = 0;
   std::vector<float> pixels;  // channels.size() * width * height, interleaved, rows from the top
 

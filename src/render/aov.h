@@ -23,7 +23,9 @@ namespace candela {
 // clamped to [0, 1]; `albedoDone` says it was found. `direct` is the part of the sample's
 // radiance that the path gathered by at most one scattering: what it would carry at max_depth 1
 // (emitters and the environment seen at its first two hits, next-event estimation at its first);
-// `emission` the radiance of an emitting surface that is its first hit.
+// `emission` the radiance of an emitting surface that is its first hit. `seesNothing`: the camera
+// ray left the scene where the camera sees no backdrop (no environment, or one hidden from it),
+// so the sample is transparent in the alpha pass.
 struct FirstHit {
   Vec3 position{0.0f};  // world space
   Vec3 normal{0.0f};    // world-space shading normal, turned to face the incoming ray
@@ -35,6 +37,7 @@ struct FirstHit {
   float b1 = 0, b2 = 0;
   bool hit = false;
   bool albedoDone = false;
+  bool seesNothing = false;
 };
 
 // What a pass uses as the colour of a material whose colour (texture included) is `color` and
@@ -58,6 +61,7 @@ struct AovPixel {
   Vec2 flowSum;              // over samples whose flow is defined (render/flow.h)
   uint32_t flowSamples = 0;
   uint32_t hits = 0;
+  uint32_t covered = 0;  // samples that saw something, the alpha pass's (not seesNothing)
   uint32_t samples = 0;
   // The id passes' sample: the one nearest the pixel centre, the earliest of equals.
   float nearestDistance2 = 3.0f;  // above any squared jitter offset, so sample 0 always wins
@@ -85,6 +89,7 @@ inline Vec3 meanOverSamples(const AovPixel& pixel, const Vec3& sum) {
   X(flowSum, "flow_sum", float, 2, Added)                     \
   X(flowSamples, "flow_samples", uint32_t, 1, Added)          \
   X(hits, "hits", uint32_t, 1, Added)                         \
+  X(covered, "covered", uint32_t, 1, Added)                   \
   X(samples, "samples", uint32_t, 1, Added)                   \
   X(nearestDistance2, "nearest_distance2", float, 1, Nearest) \
   X(nearestMaterial, "nearest_material", int32_t, 1, Nearest)
@@ -110,6 +115,7 @@ CANDELA_HDI void addAovSample(AovPixel* pixel, const FirstHit& first, float jx, 
     ++pixel->flowSamples;
   }
   pixel->albedoSum += first.albedo;
+  if (!first.seesNothing) ++pixel->covered;
   if (first.hit) {
     pixel->positionSum += first.position;
     pixel->normalSum += first.normal;

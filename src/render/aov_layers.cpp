@@ -30,6 +30,7 @@ const std::vector<AovInfo>& aovTable() {
       {Aov::Flow, "flow", {"X", "Y"}, false},
       {Aov::Direct, "direct", {"R", "G", "B"}, false},
       {Aov::Emission, "emission", {"R", "G", "B"}, false},
+      {Aov::Alpha, "alpha", {"A"}, false},
   };
   return table;
 }
@@ -99,6 +100,9 @@ void resolvePixel(Aov aov, const SceneData& scene, const AovPixel& p, float* out
       return put(meanOverSamples(p, p.directSum));
     case Aov::Emission:
       return put(meanOverSamples(p, p.emissionSum));
+    case Aov::Alpha:
+      out[0] = p.samples > 0 ? float(p.covered) / float(p.samples) : 0.0f;
+      return;
   }
 }
 
@@ -155,6 +159,7 @@ std::vector<ImageLayer> makeAovLayers(const SceneData& scene, const std::vector<
   for (Aov aov : aovs) {
     const AovInfo& info = infoOf(aov);
     ImageLayer layer(info.name, info.channels, info.integer, width, height);
+    layer.ofImage = aov == Aov::Alpha;
     const size_t n = info.channels.size();
     for (size_t i = 0; i < pixels.size(); ++i)
       resolvePixel(aov, scene, pixels[i], layer.pixels.data() + n * i);

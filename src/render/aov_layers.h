@@ -23,7 +23,8 @@ enum class Aov {
   Material,
   Flow,
   Direct,
-  Emission
+  Emission,
+  Alpha
 };
 
 // "depth", "normal_camera", ...

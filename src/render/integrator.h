@@ -349,12 +349,17 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
                           ? Vec3(0.0f)
                           : environmentRadiance(scene, st.ray.direction);
     Vec3 seen = st.throughput * background * weight;
+    Vec3 suns(0.0f);
     if (scene.sunDiscs) {
-      const Vec3 suns = sunDiscsSeen(scene, st, fromCamera);
+      suns = sunDiscsSeen(scene, st, fromCamera);
       background += suns;
       seen += st.throughput * suns;
     }
     if constexpr (kAovs) {
+      // A black environment is none; a black texel of a visible map is still a backdrop.
+      if (fromCamera)
+        first->seesNothing =
+            (scene.environment.light < 0 || scene.environment.hiddenFromCamera) && isBlack(suns);
       if (!first->albedoDone) {
         first->albedoDone = true;
         first->albedo = clampUnit(background);

@@ -58,7 +58,7 @@ def test_flow_of_an_animated_frame_is_an_h_w_2_array_in_pixels():
 
 
 ALL_PASSES = ["depth", "distance", "normal", "normal_camera", "albedo", "position", "instance",
-              "material", "flow", "direct", "emission"]
+              "material", "flow", "direct", "emission", "alpha"]
 
 
 @pytest.mark.parametrize("animated", [True, False], ids=["animation frame", "still scene"])
@@ -237,3 +237,33 @@ def test_poses_map_what_each_pixel_sees_back_onto_its_instances_model(tmp_path):
             np.testing.assert_allclose(on_model(q), 0, atol=2e-4)
             if number == 2:
                 assert np.abs(q[:, :2]).max() <= 1 + 1e-4
+
+
+def test_alpha_is_the_share_of_samples_that_saw_something_and_goes_into_the_file(tmp_path):
+    # An emitter of radiance 1 over nothing (no environment): the image is its alpha, and the
+    # antialiased edge pixels lie between 0 and 1; sample ranges merge into the same alpha.
+    from candela.distributed import _render_slice, merge_pass_sums, split_samples
+
+    spec = dict(SCENE, render={"antialiasing": True}, lights=[])
+    spec["spheres"] = [{"position": [0, 0, 0], "radius": 1,
+                        "material": {"type": "emissive", "radiance": 1}}]
+    scene = candela.Scene.from_dict(spec)
+    res = scene.render(spp=16, backend="cpu", aovs=["alpha"])
+    alpha = res["alpha"]
+    assert alpha.shape == (15, 15) and alpha.dtype == np.float32
+    np.testing.assert_allclose(res["image"][..., 0], alpha, atol=1e-6)
+    assert alpha[7, 7] == 1 and alpha[0, 0] == 0 and ((alpha > 0) & (alpha < 1)).any()
+    parts = [_render_slice(scene.spec, 16, None, first, count, "cpu", 0, ["alpha"])
+             for first, count in split_samples(16, 3)]
+    merged = scene._core.passes_from_sums(merge_pass_sums([p["sums"] for p in parts]), ["alpha"])
+    np.testing.assert_allclose(merged["alpha"], alpha, atol=1e-6)
+
+    candela.write_image(tmp_path / "cut.png", res["image"], alpha=alpha)
+    header = (tmp_path / "cut.png").read_bytes()[:26]
+    assert header[25] == 6  # the IHDR's colour type: RGBA
+    candela.write_image(tmp_path / "plain.png", res["image"])
+    assert (tmp_path / "plain.png").read_bytes()[25] == 2  # RGB
+    with pytest.raises(ValueError, match="alpha of the image's shape"):
+        candela.write_image(tmp_path / "bad.png", res["image"], alpha=alpha[:, :3])
+    with pytest.raises(Exception, match="a .pfm has no alpha channel"):
+        candela.write_image(tmp_path / "cut.pfm", res["image"], alpha=alpha)

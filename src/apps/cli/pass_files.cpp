@@ -63,6 +63,12 @@ std::string matrixText(const Rows& rows, const std::string& indent) {
   return text + "\n" + indent + "]";
 }
 
+// Whether pass `aov` of `image` goes into a sibling .pfm: every pass of a .png or .pfm but a
+// .png's alpha, which is the PNG's own (an .exr holds them all).
+bool inSiblingFile(const std::string& image, Aov aov) {
+  return !isExrPath(image) && !(aov == Aov::Alpha && !isFloatImagePath(image));
+}
+
 }  // namespace
 
 PassFiles parsePassFiles(const std::string& list) {
@@ -88,8 +94,8 @@ PassFiles parsePassFiles(const std::string& list) {
 
 std::vector<std::string> passFilePaths(const std::string& image, const PassFiles& files) {
   std::vector<std::string> paths;
-  if (!isExrPath(image))
-    for (Aov aov : files.aovs) paths.push_back(siblingPath(image, aovName(aov), ".pfm"));
+  for (Aov aov : files.aovs)
+    if (inSiblingFile(image, aov)) paths.push_back(siblingPath(image, aovName(aov), ".pfm"));
   if (hasAov(files.aovs, Aov::Instance)) paths.push_back(instanceNamesPath(image));
   if (files.camera) paths.push_back(cameraPath(image));
   if (files.poses) paths.push_back(posesPath(image));
@@ -154,10 +160,15 @@ std::vector<std::pair<std::string, std::string>> encodeWithPasses(const std::str
     if (isExrPath(image)) {
       out.emplace_back(image, encodeLayeredExr(image, result.image, layers));
     } else {
-      out.emplace_back(image, encodeImage(image, result.image, desc.output));
-      const std::vector<std::string> paths = passFilePaths(image, files);
+      const ImageLayer* alpha = nullptr;
       for (size_t i = 0; i < layers.size(); ++i)
-        out.emplace_back(paths[i], encodeLayerPfm(paths[i], layers[i]));
+        if (files.aovs[i] == Aov::Alpha && !inSiblingFile(image, Aov::Alpha)) alpha = &layers[i];
+      out.emplace_back(image, encodeImage(image, result.image, desc.output, alpha));
+      for (size_t i = 0; i < layers.size(); ++i) {
+        if (!inSiblingFile(image, files.aovs[i])) continue;
+        const std::string path = siblingPath(image, aovName(files.aovs[i]), ".pfm");
+        out.emplace_back(path, encodeLayerPfm(path, layers[i]));
+      }
     }
   }
   if (hasAov(files.aovs, Aov::Instance))

@@ -1,5 +1,6 @@
 // Where a render's passes (--aov) are written: inside a multi-layer .exr beside R, G, B, or, for
-// a .png or .pfm image, as sibling .pfm files named after it, out.png -> out.depth.pfm; with the
+// a .png or .pfm image, as sibling .pfm files named after it, out.png -> out.depth.pfm (but a
+// .png's alpha, which is its own alpha channel; an .exr's is its A); with the
 // instance pass, the names of its numbers beside it, out.instances.json; with `camera`, the
 // camera's matrices, out.camera.json; with `poses`, each instance's pose, out.poses.json
 // (docs/aovs.md).

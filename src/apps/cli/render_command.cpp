@@ -169,7 +169,8 @@ CLI::App* addRenderCommand(CLI::App& app, RenderCommandOptions* options) {
   cmd->add_option("--aov", options->aovs,
                   "Render passes to write beside the image, comma-separated: depth, distance, "
                   "normal, normal_camera, albedo, position, instance, material, flow, direct, "
-                  "emission (in an .exr as layers, else as sibling .pfm files: out.depth.pfm); "
+                  "emission, alpha (in an .exr as layers, else as sibling .pfm files: "
+                  "out.depth.pfm; alpha as the image's A channel, in a .png too); "
                   "camera and poses write the camera's K and [R|t] and each instance's pose "
                   "beside them (out.camera.json, out.poses.json)");
   cmd->add_flag("--denoise", options->denoise,

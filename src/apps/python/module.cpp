@@ -50,6 +50,7 @@ namespace {
 
 using ImageArray = nb::ndarray<nb::numpy, float, nb::shape<-1, -1, 3>, nb::c_contig>;
 using ImageInput = nb::ndarray<const float, nb::shape<-1, -1, 3>, nb::c_contig, nb::device::cpu>;
+using PassInput = nb::ndarray<const float, nb::shape<-1, -1>, nb::c_contig, nb::device::cpu>;
 
 // What the renders of one loaded scene share, whichever of its frames they render: the last
 // frame's flattened scene (FrameScene reuses or refits it for the next, as the CLI does) and the
@@ -310,18 +311,28 @@ nb::dict passesFromSums(const Scene& scene, const nb::dict& sums,
 }
 
 void writeImageArray(const std::string& path, const ImageInput& img, bool srgb, float gamma,
-                     float exposure, int toneMap) {
+                     float exposure, int toneMap, const std::optional<PassInput>& alphaPass) {
   if (!isSupportedImagePath(path))
     throw std::invalid_argument(path + ": unsupported image format, expected .png, .exr or .pfm");
   ImageRGB image(uint32_t(img.shape(1)), uint32_t(img.shape(0)));
   std::memcpy(image.pixels.data(), img.data(), image.pixels.size() * sizeof(float));
+  std::optional<ImageLayer> alpha;
+  if (alphaPass) {
+    if (alphaPass->shape(0) != img.shape(0) || alphaPass->shape(1) != img.shape(1))
+      throw std::invalid_argument(
+          "alpha must be of the image's shape (" + std::to_string(img.shape(0)) + ", " +
+          std::to_string(img.shape(1)) + "), got (" + std::to_string(alphaPass->shape(0)) + ", " +
+          std::to_string(alphaPass->shape(1)) + ")");
+    alpha.emplace("alpha", std::vector<std::string>{"A"}, false, image.width, image.height);
+    std::memcpy(alpha->pixels.data(), alphaPass->data(), alpha->pixels.size() * sizeof(float));
+  }
   OutputDesc output;
   output.curve = srgb ? GammaCurve::Srgb : GammaCurve::Power;
   output.gamma = gamma;
   output.exposure = exposure;
   output.toneMap = ToneMap(toneMap);
   nb::gil_scoped_release release;
-  writeImage(path, image, output);
+  writeImage(path, image, output, alpha ? &*alpha : nullptr);
 }
 
 // Open Image Denoise from the library file `library`, loaded once and kept for the process:
@@ -464,7 +475,7 @@ NB_MODULE(_candela, m) {
   m.def("check_aovs", [](const std::vector<std::string>& names) { aovsFromNames(names); },
         "names"_a);
   m.def("write_image", &writeImageArray, "path"_a, "img"_a, "srgb"_a, "gamma"_a, "exposure"_a,
-        "tone_map"_a);
+        "tone_map"_a, "alpha"_a = nb::none());
   m.def("denoise", &denoiseArrays, "library"_a, "image"_a, "albedo"_a, "normal"_a,
         "direct"_a = nb::none(), "emission"_a = nb::none(), "seen_emission"_a = nb::none(),
         "threads"_a = 0);
