@@ -20,6 +20,7 @@
 
 #include "backends/renderer.h"
 #include "gltf_test_util.h"
+#include "image/atomic_file.h"
 #include "image/image_io.h"
 #include "image_difference.h"
 #include "require_gpu.h"
@@ -303,6 +304,14 @@ TEST_F(CliTest, InfoPrintsTheSceneCounts) {
   EXPECT_NE(r.out.find("image:      32x24, 8 spp\n"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("bvh:"), std::string::npos) << r.out;
   EXPECT_EQ(r.out.find("animation:"), std::string::npos) << r.out;
+  // A crop is part of the image, which info names as the whole.
+  std::string cropped = candela::readFileBytes(path("mesh.json").string());
+  cropped.replace(cropped.find(R"("height": 24)"), 12, R"("height": 24, "crop": [2, 3, 10, 5])");
+  writeFile("cropped.json", cropped);
+  const RunResult c = run("info cropped.json");
+  ASSERT_EQ(c.exitCode, 0) << c.err;
+  EXPECT_NE(c.out.find("image:      32x24, 8 spp, crop [2, 3, 10, 5]\n"), std::string::npos)
+      << c.out;
 }
 
 TEST_F(CliTest, TinyRenderWritesTheImageAndASummary) {

@@ -164,6 +164,44 @@ TEST_F(CliAovTest, AlphaIsThePngsAlphaChannelAndTheExrsA) {
 
 std::string fileText(const fs::path& file) { return candela::readFileBytes(file.string()); }
 
+// --crop renders that part of the image, each pixel and pass as the whole image's render has
+// it, and the camera file says which part; frames of a sequence likewise.
+TEST_F(CliAovTest, CropWritesThatPartOfTheImageItsPassesAndCamera) {
+  ASSERT_EQ(run("render s.json -q -o whole.exr --aov depth,instance --seed 3"), 0);
+  ASSERT_EQ(run("render s.json -q -o crop.exr --aov depth,instance,camera --seed 3 --crop 4,6,9,5"),
+            0);
+  const candela::ExrChannels whole = candela::readExrChannels(path("whole.exr").string());
+  const candela::ExrChannels crop = candela::readExrChannels(path("crop.exr").string());
+  ASSERT_EQ(crop.width, 9u);
+  ASSERT_EQ(crop.height, 5u);
+  for (const char* name : {"R", "G", "B", "depth.Z", "instance.id"})
+    for (uint32_t y = 0; y < 5; ++y)
+      for (uint32_t x = 0; x < 9; ++x)
+        ASSERT_EQ(channel(crop, name)->pixels[y * 9 + x],
+                  channel(whole, name)->pixels[(y + 6) * 15 + x + 4])
+            << name << " " << x << "," << y;
+  const nlohmann::json camera = nlohmann::json::parse(fileText(path("crop.camera.json")));
+  EXPECT_EQ(camera["width"], 15);
+  EXPECT_EQ(camera["crop"], nlohmann::json::array({4, 6, 9, 5}));
+
+  std::string err;
+  EXPECT_EQ(run("render s.json -q -o bad.png --crop 10,0,6,15", &err), 2);
+  EXPECT_NE(err.find("--crop: s.json: the crop [10, 0, 6, 15] reaches past the 15 x 15 image"),
+            std::string::npos)
+      << err;
+  EXPECT_EQ(run("render s.json -q -o bad.png --crop 1,2,3", &err), 2);
+  EXPECT_NE(err.find("--crop: expected X,Y,WIDTH,HEIGHT"), std::string::npos) << err;
+  EXPECT_FALSE(fs::exists(path("bad.png")));
+
+  // Every frame of a sequence is cropped.
+  ASSERT_EQ(run("render s.json s.json -q -o frames --format pfm --crop 0,0,4,3"), 0);
+  for (const char* frame : {"frames/frame_0000.pfm", "frames/frame_0001.pfm"}) {
+    const candela::ImageRGB image = candela::readImage(path(frame).string());
+    EXPECT_EQ(image.width, 4u) << frame;
+    EXPECT_EQ(image.height, 3u) << frame;
+  }
+}
+
 // The instance pass comes with the names of its numbers (as scene.instances in Python): by JSON
 // id, else by place in the file; beside an .exr too, per frame of a sequence, and only with it.
 TEST_F(CliAovTest, InstanceNamesAreWrittenBesideTheInstancePass) {

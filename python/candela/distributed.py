@@ -202,12 +202,13 @@ def render_image(scene: Union[Scene, str], spp: Optional[int] = None, chunks: in
     slices = split_samples(spp, chunks)
     refs = [task.remote(scene.spec, spp, seed, first, count, backend, threads, passes, max_depth)
             for first, count in slices]
-    total = np.zeros((scene.height, scene.width, 3), dtype=np.float64)
+    total = None  # of the image's size, or its crop's
     sums = None
     for (first, count), ref in zip(slices, refs):  # in range order, one part held at a time
         part = ray.get(ref)
         image = part if passes is None else part["image"]
-        total += image.astype(np.float64) * count
+        weighted = image.astype(np.float64) * count
+        total = weighted if total is None else total + weighted
         if passes is not None:
             sums = _merge_into(sums, part["sums"])
     image = (total / spp).astype(np.float32)

@@ -24,7 +24,10 @@ enum class CameraProjection : uint32_t {
 };
 
 struct Camera {
-  uint32_t width = 512, height = 512;
+  uint32_t width = 512, height = 512;  // of the render: the image, or a window of it (below)
+  // The whole image's, over which an equirectangular camera's angles span, whatever part of it a
+  // render takes (a window, or the pilot's sparse pixels).
+  uint32_t panoramaWidth = 512, panoramaHeight = 512;
   CameraProjection projection = CameraProjection::Perspective;
   // Pixel (u, v, 1) -> camera-space direction with z = 1 (distorted); orthographic: -> the point
   // (x, y) of the camera's plane z = 0 (with a 1 for z).
@@ -43,9 +46,9 @@ struct Camera {
   // camera's image: a sparse sample of its pixels (the light-path pilot's,
   // backends/light_path_pilot.h); 1 for every render of the image itself.
   uint32_t pixelStride = 1;
-  // Or pixel (windowX + x, windowY + y): a window of the image (backends/seen_emitters.h) whose
-  // pixels take the samples they have in the whole image, `imageWidth` wide (0: the render is the
-  // whole image).
+  // Or pixel (windowX + x, windowY + y): a window of the image (a crop, CameraDesc::crop, or
+  // backends/seen_emitters.h's) whose pixels take the samples they have in the whole image,
+  // `imageWidth` wide (0: the render is the whole image).
   uint32_t windowX = 0, windowY = 0, imageWidth = 0;
 };
 

@@ -15,7 +15,8 @@ namespace candela {
 CANDELA_HD_NOINLINE inline Ray panoramaRay(const Camera& cam, float px, float py) {
   Ray ray;
   ray.origin = cam.position;
-  ray.direction = normalize(cam.cameraToWorld * panoramaDirection(px, py, cam.width, cam.height));
+  ray.direction = normalize(cam.cameraToWorld *
+                            panoramaDirection(px, py, cam.panoramaWidth, cam.panoramaHeight));
   return ray;
 }
 

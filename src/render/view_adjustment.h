@@ -19,7 +19,7 @@ struct ViewAdjustment {
   // The render's pixels are every stride-th pixel of the camera's image in x and y, from the
   // middle of each stride x stride block (Camera::pixelStride).
   uint32_t pixelStride = 1;
-  // Where width > 0 (and the stride is 1), the render's pixels are this window of the image, each
+  // Where width > 0 (and the stride is 1), the render's pixels are this window of its pixels, each
   // drawing the samples it has in the whole image's render.
   PixelWindow window;
   bool lightPaths = true;  // false: no light subpaths, whatever the scene allows
@@ -38,9 +38,10 @@ inline SceneView adjustedView(SceneView view, const ViewAdjustment& adjust) {
     view.camera.height /= s;
     view.camera.pixelStride = s;
   } else if (adjust.window.width > 0) {
-    view.camera.imageWidth = view.camera.width;
-    view.camera.windowX = adjust.window.x;
-    view.camera.windowY = adjust.window.y;
+    // The window is of the render's pixels, which may be a window (a crop) of the image already.
+    if (view.camera.imageWidth == 0) view.camera.imageWidth = view.camera.width;
+    view.camera.windowX += adjust.window.x;
+    view.camera.windowY += adjust.window.y;
     view.camera.width = adjust.window.width;
     view.camera.height = adjust.window.height;
   }

@@ -242,8 +242,8 @@ namespace {
 
 std::optional<CameraProblem> makeCamera(const CameraDesc& desc, float beyondEdge, Camera* out) {
   Camera& cam = *out;
-  cam.width = desc.width;
-  cam.height = desc.height;
+  cam.width = cam.panoramaWidth = desc.width;
+  cam.height = cam.panoramaHeight = desc.height;
   cam.projection = desc.projection;
   if (!invert(intrinsicMatrix(desc), &cam.inverseK))
     return CameraProblem{intrinsicsPath(desc),

@@ -464,6 +464,16 @@ void addSheenTables(SceneData& s, const SceneDesc& desc) {
   if (first < kSheenLevels) s.sheenTables = sheenLevelTables(first, last);
 }
 
+// The render's pixels are the crop's, each drawing the samples it has in the whole image.
+void cropCamera(const std::optional<CameraCrop>& crop, Camera& camera) {
+  if (!crop) return;
+  camera.imageWidth = camera.width;
+  camera.windowX = crop->x;
+  camera.windowY = crop->y;
+  camera.width = crop->width;
+  camera.height = crop->height;
+}
+
 // Everything but the BVH; mesh vertices and triangles only with `geometry`, the texture pool
 // only with `texturePool`.
 void addContents(SceneData& s, const SceneDesc& desc, bool geometry, bool texturePool) {
@@ -480,6 +490,7 @@ void addContents(SceneData& s, const SceneDesc& desc, bool geometry, bool textur
     s.camera.shutterRowShare = desc.shutterRowExposure;
     s.camera.shutterRowSlope = (1.0f - desc.shutterRowExposure) / float(s.camera.height);
   }
+  cropCamera(desc.camera.crop, s.camera);
   s.settings = desc.render;
 }
 
@@ -512,6 +523,7 @@ SceneData flattenPassContext(const SceneDesc& desc) {
   SceneData s;
   addInstances(s, desc, false);
   s.camera = resolveCamera(desc.camera, desc.file);
+  cropCamera(desc.camera.crop, s.camera);
   s.settings = desc.render;
   return s;
 }

@@ -202,8 +202,16 @@ struct LightDesc {
   std::vector<LightDesc> shutterPoses;
 };
 
+// Pixels [x, x + width) x [y, y + height) of a camera's image.
+struct CameraCrop {
+  uint32_t x = 0, y = 0, width = 0, height = 0;
+};
+
 struct CameraDesc {
   uint32_t width = 512, height = 512;
+  // The part of the image rendered, each pixel as in the whole image's render ("crop"); none:
+  // all of it.
+  std::optional<CameraCrop> crop;
   float fov = 60;                  // horizontal, degrees; used when `intrinsics` is absent
   // An orthographic camera's: the world width its image spans (pixels square, the principal
   // point at the image's centre), when `intrinsics` is absent.

@@ -144,3 +144,13 @@ def test_auto_tasks_take_the_clusters_gpus_where_it_has_any():
     assert distributed._task_options(with_gpus, 3, 1, "cuda")["num_gpus"] == 1
     assert "num_gpus" not in distributed._task_options(with_gpus, 3, 1, "cpu")
     assert distributed._task_options(without, 3, 1, "cpu")["num_cpus"] == 3
+
+
+def test_render_image_of_a_crop_is_that_part_of_the_image(local_ray):
+    # The merged image takes the crop's size from the tasks' parts, not the camera's.
+    spec = tiny_scene(spp=4, size=20)
+    spec["camera"]["crop"] = [3, 4, 9, 6]
+    scene = candela.Scene.from_dict(spec)
+    merged = distributed.render_image(scene, chunks=2, backend="cpu")
+    assert merged.shape == (6, 9, 3)
+    np.testing.assert_allclose(merged, scene.render(backend="cpu"), rtol=1e-5, atol=1e-6)

@@ -19,6 +19,7 @@ struct RenderCommandOptions {
   std::optional<uint32_t> spp;
   std::optional<uint64_t> seed;
   std::optional<uint32_t> maxDepth;
+  std::string crop;  // --crop X,Y,W,H: that part of the image (CameraDesc::crop); empty: all
   int threads = 0;  // 0: all cores
   Backend backend = Backend::Auto;
   CpuEngine cpuEngine = CpuEngine::Auto;

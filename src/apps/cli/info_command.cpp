@@ -8,6 +8,7 @@
 
 #include "apps/cli/scene_warnings.h"
 #include "scene/animation.h"
+#include "scene/camera_crop.h"
 #include "scene/flatten.h"
 #include "scene/light_emission_desc.h"
 #include "scene/read/scene_loader.h"
@@ -90,8 +91,9 @@ int runInfo(const InfoOptions& options) {
   const SceneData scene = flattenScene(desc);
 
   std::printf("scene:      %s\n", options.scene.c_str());
-  std::printf("image:      %ux%u, %u spp\n", scene.camera.width, scene.camera.height,
-              scene.settings.spp);
+  std::printf("image:      %ux%u, %u spp%s\n", desc.camera.width, desc.camera.height,
+              scene.settings.spp,
+              desc.camera.crop ? (", crop " + cropText(*desc.camera.crop)).c_str() : "");
   std::printf("spheres:    %zu\n", desc.spheres.size());
   std::printf("objects:    %zu\n", desc.objects.size());
   std::printf("triangles:  %zu\n", scene.triangles.size());

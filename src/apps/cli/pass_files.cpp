@@ -4,12 +4,13 @@
 #include <array>
 #include <cstdint>
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <string>
 #include <vector>
-#include <nlohmann/json.hpp>
 
 #include "image/image_io.h"
+#include "scene/camera_crop.h"
 #include "scene/camera_resolve.h"
 #include "scene/flatten.h"
 #include "scene/instance_poses.h"
@@ -115,6 +116,7 @@ std::string encodeCamera(const SceneDesc& desc) {
     intrinsics[i] = {c.intrinsics.m[i][0], c.intrinsics.m[i][1], c.intrinsics.m[i][2]};
   std::string text =
       "{\n  \"width\": " + std::to_string(c.width) + ",\n  \"height\": " + std::to_string(c.height);
+  if (desc.camera.crop) text += ",\n  \"crop\": " + cropText(*desc.camera.crop);
   if (c.projection != CameraProjection::Perspective)
     text += ",\n  \"projection\": \"" + std::string(projectionName(c.projection)) + "\"";
   if (c.projection != CameraProjection::Equirectangular)

@@ -34,6 +34,7 @@
 #include "image/atomic_file.h"
 #include "image/image_io.h"
 #include "scene/animation.h"
+#include "scene/camera_crop.h"
 #include "scene/flatten.h"
 #include "scene/flow_motion.h"
 #include "scene/read/scene_loader.h"
@@ -116,8 +117,35 @@ PassFiles choosePassFiles(const RenderCommandOptions& options) {
   }
 }
 
+// --crop's "X,Y,W,H"; a usage error where it is not four whole numbers.
+CameraCrop parseCrop(const std::string& text) {
+  const std::vector<std::string> parts = splitPassList(text);
+  uint32_t values[4];
+  bool ok = parts.size() == 4;
+  for (size_t i = 0; ok && i < 4; ++i) {
+    const std::string& part = parts[i];
+    ok = !part.empty() && part.size() <= 10 &&
+         part.find_first_not_of("0123456789") == std::string::npos &&
+         std::stoull(part) <= UINT32_MAX;
+    if (ok) values[i] = uint32_t(std::stoull(part));
+  }
+  if (!ok)
+    throw CliError(kExitUsage,
+                   "--crop: expected X,Y,WIDTH,HEIGHT in whole pixels (such as "
+                   "128,64,256,256), got '" +
+                       text + "'");
+  return {values[0], values[1], values[2], values[3]};
+}
+
 void applyOverrides(const RenderCommandOptions& options, Backend backend, CpuEngine engine,
                     SceneDesc* desc) {
+  if (!options.crop.empty()) {
+    const CameraCrop crop = parseCrop(options.crop);
+    if (const std::optional<std::string> problem =
+            cropProblem(crop, desc->camera.width, desc->camera.height))
+      throw CliError(kExitUsage, "--crop: " + desc->file + ": " + *problem);
+    desc->camera.crop = crop;
+  }
   if (options.spp) desc->render.spp = *options.spp;
   if (options.seed) desc->render.seed = *options.seed;
   if (options.maxDepth) desc->render.maxDepth = *options.maxDepth;
@@ -162,6 +190,9 @@ CLI::App* addRenderCommand(CLI::App& app, RenderCommandOptions* options) {
          "Ray engine of the CPU backend: auto (Embree where the build has it), embree, or bvh "
          "(candela's own, the GPU's)")
       ->check(cpuEngineChoice());
+  cmd->add_option("--crop", options->crop,
+                  "Render only pixels X to X+W-1 and Y to Y+H-1 of the image (X,Y,W,H), each as "
+                  "in the whole image's render; passes, camera file and frames likewise");
   cmd->add_flag("-q,--quiet", options->quiet, "No progress bar and no summary");
   cmd->add_option("--stats", options->stats,
                   "Also write the render's measured figures (load, BVH build, memory, rays, "

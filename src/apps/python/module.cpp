@@ -426,6 +426,8 @@ NB_MODULE(_candela, m) {
         nb::dict camera;
         camera["width"] = c.width;
         camera["height"] = c.height;
+        if (const std::optional<CameraCrop>& crop = frame.camera.crop)
+          camera["crop"] = nb::make_tuple(crop->x, crop->y, crop->width, crop->height);
         if (c.projection != CameraProjection::Perspective)
           camera["projection"] = projectionName(c.projection);
         if (c.projection != CameraProjection::Equirectangular) camera["intrinsics"] = intrinsics;

@@ -12,6 +12,7 @@
 #include "core/rotation.h"
 #include "scene/along_up.h"
 #include "scene/animation.h"
+#include "scene/camera_crop.h"
 #include "scene/camera_resolve.h"
 #include "scene/read/gltf_camera.h"
 #include "scene/read/resolve_path.h"
@@ -234,6 +235,21 @@ void checkImageSize(JsonObject& fields, const CameraDesc& camera) {
                           " pixels (16384 x 16384)");
 }
 
+// "crop": [x, y, width, height], pixels of the camera's image.
+CameraCrop readCrop(const JsonValue& value, const CameraDesc& camera) {
+  const char* expected = "an array [x, y, width, height] of pixels";
+  const std::vector<JsonValue> elements = value.elements(expected);
+  if (elements.size() != 4) value.failExpected(expected);
+  CameraCrop crop;
+  crop.x = uint32_t(elements[0].integer(0, kMaxUint32, "a non-negative integer"));
+  crop.y = uint32_t(elements[1].integer(0, kMaxUint32, "a non-negative integer"));
+  crop.width = uint32_t(elements[2].integer(1, kMaxUint32, "a positive integer"));
+  crop.height = uint32_t(elements[3].integer(1, kMaxUint32, "a positive integer"));
+  if (const std::optional<std::string> problem = cropProblem(crop, camera.width, camera.height))
+    value.fail(*problem);
+  return crop;
+}
+
 }  // namespace
 
 float readFov(const JsonValue& value, CameraProjection projection) {
@@ -265,7 +281,8 @@ CameraDesc readCamera(const JsonValue& value, RenderSettings& render, const std:
                             "gltf",
                             "gltf_camera",
                             "view_width",
-                            "gltf_animation"});
+                            "gltf_animation",
+                            "crop"});
   CameraDesc camera;
   if (std::optional<JsonValue> width = fields.get("width"))
     camera.width = static_cast<uint32_t>(width->integer(1, kMaxUint32, "a positive integer"));
@@ -273,6 +290,7 @@ CameraDesc readCamera(const JsonValue& value, RenderSettings& render, const std:
     camera.height = static_cast<uint32_t>(height->integer(1, kMaxUint32, "a positive integer"));
 
   checkImageSize(fields, camera);
+  if (std::optional<JsonValue> crop = fields.get("crop")) camera.crop = readCrop(*crop, camera);
 
   if (std::optional<JsonValue> projection = fields.get("projection"))
     readProjection(fields, *projection, camera);
