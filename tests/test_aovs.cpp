@@ -75,7 +75,8 @@ TEST(Aovs, UnknownPassNamesAreRefusedWithTheKnownOnes) {
   } catch (const std::invalid_argument& e) {
     EXPECT_EQ(std::string(e.what()),
               "unknown render pass \"normals\"; the passes are: depth, distance, normal, "
-              "normal_camera, albedo, position, instance, material, flow, direct, emission, alpha");
+              "normal_camera, albedo, position, instance, material, flow, backward_flow, direct, "
+              "emission, alpha");
   }
   const std::vector<Aov> aovs = parseAovList(" normal , depth,normal");
   ASSERT_EQ(aovs.size(), 2u);

@@ -237,12 +237,11 @@ TEST_F(CliAovTest, InstanceNamesAreWrittenBesideTheInstancePass) {
 TEST_F(CliAovTest, UnknownPassIsAUsageErrorListingTheKnownOnes) {
   std::string err;
   EXPECT_EQ(run("render s.json -o out.png --aov depth,nromal", &err), 2);
-  EXPECT_EQ(
-      err,
-      "candela: error: --aov: unknown render pass \"nromal\"; the passes are: depth, "
-      "distance, normal, normal_camera, albedo, position, instance, material, flow, "
-      "direct, emission, alpha; and beside the image camera (the camera's matrices) and poses "
-      "(each instance's pose)\n");
+  EXPECT_EQ(err,
+            "candela: error: --aov: unknown render pass \"nromal\"; the passes are: depth, "
+            "distance, normal, normal_camera, albedo, position, instance, material, flow, "
+            "backward_flow, direct, emission, alpha; and beside the image camera (the camera's "
+            "matrices) and poses (each instance's pose)\n");
   EXPECT_FALSE(fs::exists(path("out.png")));
 }
 
@@ -446,10 +445,34 @@ TEST_F(CliAovTest, AnimationsWriteTheirFlowPerFrame) {
   EXPECT_EQ(pfm.at(7, 7).z, 0.0f);
 }
 
+// The backward flow of each frame of a sequence, and of one frame alone (--frame), is from the
+// frame before; frame 0's, which has none, is 0.
+TEST_F(CliAovTest, AnimationsWriteTheirBackwardFlowPerFrame) {
+  dir_.write("moving.json", candela::test::kMovingSphereScene);
+  ASSERT_EQ(run("render moving.json -q -o f/ --format exr --aov flow,backward_flow"), 0);
+  const float f = 7.5f / std::tan(15.0f * 3.14159265f / 180.0f);
+  const float depth = 5.0f - std::sqrt(1.0f - 0.0625f);  // of frame 1's centre pixel
+  const candela::ExrChannels first = candela::readExrChannels(path("f/frame_0000.exr").string());
+  EXPECT_EQ(channel(first, "backward_flow.X")->pixels[7 * 15 + 7], 0.0f);
+  const candela::ExrChannels second = candela::readExrChannels(path("f/frame_0001.exr").string());
+  EXPECT_NEAR(channel(second, "backward_flow.X")->pixels[7 * 15 + 7], -f * 0.25f / depth, 1e-4f);
+  EXPECT_NEAR(channel(second, "flow.X")->pixels[7 * 15 + 7], f * 0.25f / depth, 1e-4f);
+
+  ASSERT_EQ(run("render moving.json -q --frame 1 -o one.pfm --aov backward_flow"), 0);
+  const candela::ImageRGB pfm = candela::readImage(path("one.backward_flow.pfm").string());
+  EXPECT_EQ(pfm.at(7, 7).x, channel(second, "backward_flow.X")->pixels[7 * 15 + 7]);
+
+  std::string err;
+  EXPECT_EQ(run("render s.json s.json -q -o seq/ --aov backward_flow", &err), 2);
+  EXPECT_NE(err.find("--aov backward_flow: the flow passes are the motion of one animated scene"),
+            std::string::npos)
+      << err;
+}
+
 TEST_F(CliAovTest, FlowOfSeveralSceneFilesIsAUsageError) {
   std::string err;
   EXPECT_EQ(run("render s.json s.json -o f/ --aov flow", &err), 2);
-  EXPECT_NE(err.find("--aov flow: the flow pass is the motion of one animated scene"),
+  EXPECT_NE(err.find("--aov flow: the flow passes are the motion of one animated scene"),
             std::string::npos)
       << err;
   EXPECT_FALSE(fs::exists(path("f/frame_0000.png")));

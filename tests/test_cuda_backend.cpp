@@ -480,6 +480,8 @@ TEST(CudaBackend, PassesMatchCpuWithinRounding) {
   const SceneDesc now = sceneAtFrame(desc, 0);
   SceneData data = flattenScene(now);
   applyFlowMotion(data, flowMotion(now, sceneAtFrame(desc, 1)));
+  // The backward pass's arithmetic, with frame 1 standing in for a frame before.
+  applyFlowMotion(data, flowMotion(now, sceneAtFrame(desc, 1)), FlowDirection::Backward);
   RenderOptions options;
   options.aovs = true;
   const RenderResult cpu = renderCpu(data.view(), options);
@@ -514,7 +516,10 @@ TEST(CudaBackend, PassesMatchCpuWithinRounding) {
         {"directSum", close3(c.directSum, g.directSum)},
         {"emissionSum", close3(c.emissionSum, g.emissionSum)},
         {"distanceSum", close(c.distanceSum, g.distanceSum)},
-        {"flowSum", close(c.flowSum.x, g.flowSum.x) && close(c.flowSum.y, g.flowSum.y)}};
+        {"flowSum", close(c.flowSum.x, g.flowSum.x) && close(c.flowSum.y, g.flowSum.y)},
+        {"backwardFlowSamples", c.backwardFlowSamples == g.backwardFlowSamples},
+        {"backwardFlowSum", close(c.backwardFlowSum.x, g.backwardFlowSum.x) &&
+                                close(c.backwardFlowSum.y, g.backwardFlowSum.y)}};
     bool same = true;
     for (const auto& [name, equal] : fields) {
       if (!equal) ++fieldsDiffering[name];

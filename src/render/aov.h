@@ -60,6 +60,8 @@ struct AovPixel {
   float distanceSum = 0.0f;  // |position - camera centre|, over samples that hit
   Vec2 flowSum;              // over samples whose flow is defined (render/flow.h)
   uint32_t flowSamples = 0;
+  Vec2 backwardFlowSum;  // likewise, towards the previous frame
+  uint32_t backwardFlowSamples = 0;
   uint32_t hits = 0;
   uint32_t covered = 0;  // samples that saw something, the alpha pass's (not seesNothing)
   uint32_t samples = 0;
@@ -79,19 +81,21 @@ inline Vec3 meanOverSamples(const AovPixel& pixel, const Vec3& sum) {
 // sums of two sample ranges of a pixel merge: Added, or Nearest, the id passes' sample, taken
 // from the later range only where its nearestDistance2 is strictly smaller (as addAovSample
 // keeps the earliest of equals).
-#define CANDELA_AOV_PIXEL_FIELDS(X)                           \
-  X(positionSum, "position_sum", float, 3, Added)             \
-  X(normalSum, "normal_sum", float, 3, Added)                 \
-  X(albedoSum, "albedo_sum", float, 3, Added)                 \
-  X(directSum, "direct_sum", float, 3, Added)                 \
-  X(emissionSum, "emission_sum", float, 3, Added)             \
-  X(distanceSum, "distance_sum", float, 1, Added)             \
-  X(flowSum, "flow_sum", float, 2, Added)                     \
-  X(flowSamples, "flow_samples", uint32_t, 1, Added)          \
-  X(hits, "hits", uint32_t, 1, Added)                         \
-  X(covered, "covered", uint32_t, 1, Added)                   \
-  X(samples, "samples", uint32_t, 1, Added)                   \
-  X(nearestDistance2, "nearest_distance2", float, 1, Nearest) \
+#define CANDELA_AOV_PIXEL_FIELDS(X)                                   \
+  X(positionSum, "position_sum", float, 3, Added)                     \
+  X(normalSum, "normal_sum", float, 3, Added)                         \
+  X(albedoSum, "albedo_sum", float, 3, Added)                         \
+  X(directSum, "direct_sum", float, 3, Added)                         \
+  X(emissionSum, "emission_sum", float, 3, Added)                     \
+  X(distanceSum, "distance_sum", float, 1, Added)                     \
+  X(flowSum, "flow_sum", float, 2, Added)                             \
+  X(flowSamples, "flow_samples", uint32_t, 1, Added)                  \
+  X(backwardFlowSum, "backward_flow_sum", float, 2, Added)            \
+  X(backwardFlowSamples, "backward_flow_samples", uint32_t, 1, Added) \
+  X(hits, "hits", uint32_t, 1, Added)                                 \
+  X(covered, "covered", uint32_t, 1, Added)                           \
+  X(samples, "samples", uint32_t, 1, Added)                           \
+  X(nearestDistance2, "nearest_distance2", float, 1, Nearest)         \
   X(nearestMaterial, "nearest_material", int32_t, 1, Nearest)
 
 #define CANDELA_AOV_FIELD_BYTES(member, name, Scalar, channels, merge) \
@@ -100,19 +104,29 @@ static_assert(sizeof(AovPixel) == 0 CANDELA_AOV_PIXEL_FIELDS(CANDELA_AOV_FIELD_B
               "CANDELA_AOV_PIXEL_FIELDS lists every field of AovPixel, without padding");
 #undef CANDELA_AOV_FIELD_BYTES
 
+// A sample's optical flow towards the next frame and the previous, each where it is defined.
+struct SampleFlows {
+  Vec2 forward, backward;
+  bool hasForward = false, hasBackward = false;
+};
+
 // Adds sample `first` taken at jitter (jx, jy) in the pixel, by a camera centred at `eye`, and
-// its optical flow `flow` where `hasFlow`; its direct light and emission only where its
-// radiance was finite (and so counted).
+// its optical flows; its direct light and emission only where its radiance was finite (and so
+// counted).
 CANDELA_HDI void addAovSample(AovPixel* pixel, const FirstHit& first, float jx, float jy,
-                              const Vec3& eye, bool hasFlow, const Vec2& flow, bool finite) {
+                              const Vec3& eye, const SampleFlows& flows, bool finite) {
   ++pixel->samples;
   if (finite) {
     pixel->directSum += first.direct;
     pixel->emissionSum += first.emission;
   }
-  if (hasFlow) {
-    pixel->flowSum = pixel->flowSum + flow;
+  if (flows.hasForward) {
+    pixel->flowSum = pixel->flowSum + flows.forward;
     ++pixel->flowSamples;
+  }
+  if (flows.hasBackward) {
+    pixel->backwardFlowSum = pixel->backwardFlowSum + flows.backward;
+    ++pixel->backwardFlowSamples;
   }
   pixel->albedoSum += first.albedo;
   if (!first.seesNothing) ++pixel->covered;

@@ -28,6 +28,7 @@ const std::vector<AovInfo>& aovTable() {
       {Aov::Instance, "instance", {"id"}, true},
       {Aov::Material, "material", {"id"}, true},
       {Aov::Flow, "flow", {"X", "Y"}, false},
+      {Aov::BackwardFlow, "backward_flow", {"X", "Y"}, false},
       {Aov::Direct, "direct", {"R", "G", "B"}, false},
       {Aov::Emission, "emission", {"R", "G", "B"}, false},
       {Aov::Alpha, "alpha", {"A"}, false},
@@ -41,6 +42,17 @@ std::string trimmed(const std::string& s) {
   const size_t first = s.find_first_not_of(" \t");
   if (first == std::string::npos) return "";
   return s.substr(first, s.find_last_not_of(" \t") - first + 1);
+}
+
+// A flow pass's mean over the samples where it is defined; undefined (no sample's point in front
+// of both cameras): NaN, not a made-up motion.
+void putFlow(const Vec2& sum, uint32_t samples, float* out) {
+  if (samples == 0) {
+    out[0] = out[1] = std::nanf("");
+    return;
+  }
+  out[0] = sum.x / float(samples);
+  out[1] = sum.y / float(samples);
 }
 
 // The value of pass `aov` at one pixel, into `out` (its channel count of floats).
@@ -86,16 +98,10 @@ void resolvePixel(Aov aov, const SceneData& scene, const AovPixel& p, float* out
     case Aov::Material:
       out[0] = float(p.nearestMaterial + 1);
       return;
-    case Aov::Flow: {
-      // Undefined (no sample's point in front of both cameras): NaN, not a made-up motion.
-      if (p.flowSamples == 0) {
-        out[0] = out[1] = std::nanf("");
-        return;
-      }
-      out[0] = p.flowSum.x / float(p.flowSamples);
-      out[1] = p.flowSum.y / float(p.flowSamples);
-      return;
-    }
+    case Aov::Flow:
+      return putFlow(p.flowSum, p.flowSamples, out);
+    case Aov::BackwardFlow:
+      return putFlow(p.backwardFlowSum, p.backwardFlowSamples, out);
     case Aov::Direct:
       return put(meanOverSamples(p, p.directSum));
     case Aov::Emission:

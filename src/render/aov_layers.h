@@ -22,6 +22,7 @@ enum class Aov {
   Instance,
   Material,
   Flow,
+  BackwardFlow,
   Direct,
   Emission,
   Alpha

@@ -1,5 +1,5 @@
-// The optical flow pass: where a camera sample's first hit moves on the image from this frame to
-// the next (docs/aovs.md).
+// The optical flow passes: where a camera sample's first hit moves on the image from this frame to
+// the next, and to the previous (docs/aovs.md).
 #pragma once
 
 #include "core/vec2.h"
@@ -39,25 +39,43 @@ CANDELA_HDI bool projectToPixel(const FlowCamera& camera, const Vec3& c, Vec2* p
   return true;
 }
 
-// The forward flow of one sample in pixels: the first hit carried by its instance's motion and
-// projected by the next frame's camera, minus its projection by this frame's; a sample that saw
-// the background follows its ray's direction, a point at infinity, so only the cameras' turning
-// moves it. False where either projection is undefined (the point behind a camera, the
-// background of an orthographic camera).
-CANDELA_HDI bool sampleFlow(const SceneView& scene, const FirstHit& first, const Vec3& rayDirection,
-                            Vec2* flow) {
-  const FlowCamera& now = scene.flow.now;
-  const FlowCamera& next = scene.flow.next;
+// One direction of the flow: this frame's and the other frame's cameras, and each material's
+// instance's motion to the other frame (by material), with where the vertices of meshes that
+// move apart stand there.
+struct FlowTarget {
+  const FlowFrames* frames;
+  const InstanceMotion* motions;
+  const Vec3* vertices;
+};
+
+CANDELA_HDI FlowTarget forwardFlow(const SceneView& scene) {
+  return {&scene.flow, scene.materialMotions, scene.flowVertices};
+}
+
+CANDELA_HDI FlowTarget backwardFlow(const SceneView& scene) {
+  return {&scene.backwardFlow, scene.backwardMotions, scene.backwardFlowVertices};
+}
+
+// The flow of one sample in pixels towards `target`'s other frame (the next: forward flow; the
+// previous: backward flow): the first hit carried by its instance's motion and projected by the
+// other frame's camera, minus its projection by this frame's; a sample that saw the background
+// follows its ray's direction, a point at infinity, so only the cameras' turning moves it. False
+// where either projection is undefined (the point behind a camera, the background of an
+// orthographic camera).
+CANDELA_HDI bool sampleFlow(const SceneView& scene, const FlowTarget& target, const FirstHit& first,
+                            const Vec3& rayDirection, Vec2* flow) {
+  const FlowCamera& now = target.frames->now;
+  const FlowCamera& next = target.frames->next;
   Vec3 fromNow, fromNext;
   if (first.hit) {
-    const InstanceMotion& m = scene.materialMotions[first.material];
+    const InstanceMotion& m = target.motions[first.material];
     fromNow = now.worldToCamera * (first.position - now.position);
     Vec3 moved = m.linear * first.position + m.offset;
     if (m.perVertex && first.prim >= scene.sphereCount) {
       // The same point of the triangle, between its vertices where they stand next.
       const Triangle& t = scene.triangles[first.prim - scene.sphereCount];
-      moved = (1.0f - first.b1 - first.b2) * scene.flowVertices[t.v[0]] +
-              first.b1 * scene.flowVertices[t.v[1]] + first.b2 * scene.flowVertices[t.v[2]];
+      moved = (1.0f - first.b1 - first.b2) * target.vertices[t.v[0]] +
+              first.b1 * target.vertices[t.v[1]] + first.b2 * target.vertices[t.v[2]];
     }
     fromNext = next.worldToCamera * (moved - next.position);
   } else {

@@ -58,9 +58,12 @@ CANDELA_HDI void addSample(const SceneView& scene, const Vec3& L, const Ray& ray
   const bool finite = isFinite(L);
   if (finite) *sum += L;
   if constexpr (kAovs) {
-    Vec2 flow;
-    const bool hasFlow = scene.flow.enabled && sampleFlow(scene, first, ray.direction, &flow);
-    addAovSample(aov, first, jx, jy, eye, hasFlow, flow, finite);
+    SampleFlows flows;
+    flows.hasForward = scene.flow.enabled &&
+                       sampleFlow(scene, forwardFlow(scene), first, ray.direction, &flows.forward);
+    flows.hasBackward = scene.backwardFlow.enabled && sampleFlow(scene, backwardFlow(scene), first,
+                                                                 ray.direction, &flows.backward);
+    addAovSample(aov, first, jx, jy, eye, flows, finite);
   }
 }
 

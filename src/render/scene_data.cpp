@@ -41,6 +41,7 @@ SceneView SceneData::view() const {
   v.camera = camera;
   v.settings = settings;
   v.flow = flow;
+  v.backwardFlow = backwardFlow;
   return v;
 }
 

@@ -64,6 +64,7 @@ struct SceneData {
   Camera camera;
   RenderSettings settings;
   FlowFrames flow;
+  FlowFrames backwardFlow;
   BvhStats bvh;
   // Host only: the instance number (docs/aovs.md) of the entity each material belongs to; every
   // sphere, object and sphere light appends materials of its own, so a material names one.

@@ -31,7 +31,8 @@ namespace candela {
 // (envCellCorners) its sampling distribution (core/distribution2d.h). materialMotions, parallel
 // to materials, is the motion of each material's instance to the next frame; only renders with
 // the flow pass have it. flowVertices, empty or parallel to positions, holds where each vertex of a
-// mesh that moves apart (InstanceMotion::perVertex) stands in the next frame.
+// mesh that moves apart (InstanceMotion::perVertex) stands in the next frame. backwardMotions and
+// backwardFlowVertices are the same towards the previous frame, for the backward flow pass.
 // lightPathOrder lists the lights in the order their light-subpath picks are laid out over
 // [0, 1) (render/light_path.h, pickLightPathLight). infiniteLights lists the lights at infinity
 // that next-event estimation picks, each in a share of its own (render/light_selection.h).
@@ -57,6 +58,8 @@ namespace candela {
   X(float, envCellCorners, envCellCornerCount, EnvironmentMap)               \
   X(InstanceMotion, materialMotions, materialMotionCount, Values)            \
   X(Vec3, flowVertices, flowVertexCount, Values)                             \
+  X(InstanceMotion, backwardMotions, backwardMotionCount, Values)            \
+  X(Vec3, backwardFlowVertices, backwardFlowVertexCount, Values)             \
   X(uint32_t, lightPathOrder, lightPathOrderCount, Values)                   \
   X(uint32_t, infiniteLights, infiniteLightCount, Values)                    \
   X(float, plasticCoats, plasticCoatCount, Values)                           \
@@ -105,7 +108,8 @@ struct SceneView : GeometryView {
   bool reflectorsEmit = false;
   Camera camera;
   RenderSettings settings;
-  FlowFrames flow;  // the flow pass's cameras (render/flow.h)
+  FlowFrames flow;          // the flow pass's cameras (render/flow.h)
+  FlowFrames backwardFlow;  // the backward flow pass's: `next` is the previous frame's camera
 };
 static_assert(std::is_trivially_copyable<SceneView>::value, "SceneView must be trivially copyable");
 

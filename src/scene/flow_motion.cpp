@@ -101,31 +101,38 @@ FlowMotion flowMotion(const SceneDesc& now, const SceneDesc& next) {
   return f;
 }
 
-void applyFlowMotion(SceneData& scene, const FlowMotion& motion) {
-  scene.materialMotions.assign(scene.materials.size(), InstanceMotion());
+void applyFlowMotion(SceneData& scene, const FlowMotion& motion, FlowDirection direction) {
+  const bool forward = direction == FlowDirection::Forward;
+  std::vector<InstanceMotion>& motions = forward ? scene.materialMotions : scene.backwardMotions;
+  auto& vertices = forward ? scene.flowVertices : scene.backwardFlowVertices;
+  motions.assign(scene.materials.size(), InstanceMotion());
   for (size_t m = 0; m < scene.materials.size() && m < scene.materialInstances.size(); ++m) {
     const uint32_t instance = scene.materialInstances[m];
-    if (instance < motion.instances.size()) scene.materialMotions[m] = motion.instances[instance];
+    if (instance < motion.instances.size()) motions[m] = motion.instances[instance];
   }
-  scene.flowVertices.clear();
+  vertices.clear();
   for (size_t k = 0; k < motion.objectVertices.size(); ++k) {
     const std::vector<Vec3>& next = motion.objectVertices[k];
     if (next.empty()) continue;
     // Flattened alike (the same mesh's layout): the object's vertices, as many in either frame.
     const uint32_t first = scene.objectFirstVertex[k];
     if (first + next.size() > scene.positions.size())
-      throw SceneError("the flow pass's next frame places more vertices of objects[" +
-                       std::to_string(k) + "] than this frame has");
-    scene.flowVertices.resize(scene.positions.size(), Vec3(0.0f));
-    std::copy(next.begin(), next.end(), scene.flowVertices.begin() + first);
+      throw SceneError(std::string("the flow pass's ") + (forward ? "next" : "previous") +
+                       " frame places more vertices of objects[" + std::to_string(k) +
+                       "] than this frame has");
+    vertices.resize(scene.positions.size(), Vec3(0.0f));
+    std::copy(next.begin(), next.end(), vertices.begin() + first);
   }
-  scene.flow = motion.frames;
+  (forward ? scene.flow : scene.backwardFlow) = motion.frames;
 }
 
 void clearFlowMotion(SceneData& scene) {
   scene.materialMotions.clear();
   scene.flowVertices.clear();
+  scene.backwardMotions.clear();
+  scene.backwardFlowVertices.clear();
   scene.flow = FlowFrames();
+  scene.backwardFlow = FlowFrames();
 }
 
 }  // namespace candela

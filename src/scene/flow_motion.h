@@ -24,10 +24,15 @@ struct FlowMotion {
 // entities.
 FlowMotion flowMotion(const SceneDesc& now, const SceneDesc& next);
 
-// Gives `scene` (flattened from `now`) the flow pass's motions and cameras.
-void applyFlowMotion(SceneData& scene, const FlowMotion& motion);
+// Which flow pass a FlowMotion serves: towards the next frame (flow), or the previous
+// (backward_flow, from flowMotion(now, previous)).
+enum class FlowDirection { Forward, Backward };
 
-// Takes them away again: a render without the flow pass.
+// Gives `scene` (flattened from `now`) the flow pass's motions and cameras.
+void applyFlowMotion(SceneData& scene, const FlowMotion& motion,
+                     FlowDirection direction = FlowDirection::Forward);
+
+// Takes them away again (both directions): a render without the flow passes.
 void clearFlowMotion(SceneData& scene);
 
 }  // namespace candela

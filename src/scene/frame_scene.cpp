@@ -76,7 +76,8 @@ void writeKeys(const SceneDesc& desc, std::string* geometry, std::string* struct
 
 }  // namespace
 
-const SceneData& FrameScene::prepare(const SceneDesc& desc, const FlowMotion* flow) {
+const SceneData& FrameScene::prepare(const SceneDesc& desc, const FlowMotion* flow,
+                                     const FlowMotion* backwardFlow) {
   const auto start = std::chrono::steady_clock::now();
   std::string geometry, structure;
   writeKeys(desc, &geometry, &structure);
@@ -131,11 +132,9 @@ const SceneData& FrameScene::prepare(const SceneDesc& desc, const FlowMotion* fl
     geometryKey_ = std::move(geometry);
     structureKey_ = std::move(structure);
   }
-  if (flow) {
-    applyFlowMotion(data_, *flow);
-  } else {
-    clearFlowMotion(data_);
-  }
+  clearFlowMotion(data_);
+  if (flow) applyFlowMotion(data_, *flow);
+  if (backwardFlow) applyFlowMotion(data_, *backwardFlow, FlowDirection::Backward);
   seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return data_;
 }

@@ -32,8 +32,10 @@ constexpr double kRefitCostLimit = 1.5;
 class FrameScene {
  public:
   // The renderable scene of `desc` (a still, e.g. from sceneAtFrame); valid until the next call.
-  // With `flow` (flowMotion of this frame and the next) it carries the flow pass's motions.
-  const SceneData& prepare(const SceneDesc& desc, const FlowMotion* flow = nullptr);
+  // With `flow` (flowMotion of this frame and the next) it carries the flow pass's motions, with
+  // `backwardFlow` (of this frame and the previous) the backward flow pass's.
+  const SceneData& prepare(const SceneDesc& desc, const FlowMotion* flow = nullptr,
+                           const FlowMotion* backwardFlow = nullptr);
 
   // About the last prepare(): what may differ from the frame before (Values: the geometry and
   // BVH were reused; Motion: refitted; Structure: flattened and built afresh), and how long it

@@ -55,10 +55,19 @@ def test_flow_of_an_animated_frame_is_an_h_w_2_array_in_pixels():
     # A still scene does not move at all.
     still = candela.Scene.from_dict(SCENE).render(backend="cpu", aovs=["flow"])
     assert not still["flow"].any()
+    # Backward: frame 1's centre pixel sees the sphere 0.25 off the axis, a point 5 - sqrt(1 -
+    # 0.25^2) away that stood 0.25 to its left in frame 0; frame 0 has no frame before it.
+    anim = candela.Scene.from_dict(moving)
+    back = anim.frame(1).render(backend="cpu", aovs=["backward_flow", "flow"])
+    assert back["backward_flow"].shape == (15, 15, 2)
+    depth = 5 - np.sqrt(1 - 0.25**2)
+    np.testing.assert_allclose(back["backward_flow"][7, 7], [-f * 0.25 / depth, 0], atol=1e-4)
+    np.testing.assert_allclose(back["flow"][7, 7], [f * 0.25 / depth, 0], atol=1e-4)
+    assert not anim.frame(0).render(backend="cpu", aovs=["backward_flow"])["backward_flow"].any()
 
 
 ALL_PASSES = ["depth", "distance", "normal", "normal_camera", "albedo", "position", "instance",
-              "material", "flow", "direct", "emission", "alpha"]
+              "material", "flow", "backward_flow", "direct", "emission", "alpha"]
 
 
 @pytest.mark.parametrize("animated", [True, False], ids=["animation frame", "still scene"])

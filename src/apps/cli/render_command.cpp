@@ -77,7 +77,7 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 }
 
 int renderStill(const RenderCommandOptions& options, SceneDesc desc, double loadSeconds,
-                const SceneDesc* next = nullptr);
+                const SceneDesc* next = nullptr, const SceneDesc* previous = nullptr);
 int renderFrame(const RenderCommandOptions& options, const std::vector<SceneDesc>& scenes,
                 double loadSeconds);
 
@@ -199,9 +199,9 @@ CLI::App* addRenderCommand(CLI::App& app, RenderCommandOptions* options) {
                   "samples/s, peak RSS) to this JSON file; single stills only");
   cmd->add_option("--aov", options->aovs,
                   "Render passes to write beside the image, comma-separated: depth, distance, "
-                  "normal, normal_camera, albedo, position, instance, material, flow, direct, "
-                  "emission, alpha (in an .exr as layers, else as sibling .pfm files: "
-                  "out.depth.pfm; alpha as the image's A channel, in a .png too); "
+                  "normal, normal_camera, albedo, position, instance, material, flow, "
+                  "backward_flow, direct, emission, alpha (in an .exr as layers, else as sibling "
+                  ".pfm files: out.depth.pfm; alpha as the image's A channel, in a .png too); "
                   "camera and poses write the camera's K and [R|t] and each instance's pose "
                   "beside them (out.camera.json, out.poses.json)");
   cmd->add_flag("--denoise", options->denoise,
@@ -286,11 +286,13 @@ int renderFrame(const RenderCommandOptions& options, const std::vector<SceneDesc
   RenderCommandOptions stillOptions = options;
   stillOptions.seed.reset();
   const SceneDesc next = sceneAtFrame(seeded, frame + 1);
-  return renderStill(stillOptions, sceneAtFrame(seeded, frame), loadSeconds, &next);
+  // Frame 0 has none before it: its backward flow is that of a still, 0.
+  const SceneDesc previous = sceneAtFrame(seeded, frame > 0 ? frame - 1 : 0);
+  return renderStill(stillOptions, sceneAtFrame(seeded, frame), loadSeconds, &next, &previous);
 }
 
 int renderStill(const RenderCommandOptions& options, SceneDesc desc, double loadSeconds,
-                const SceneDesc* next) {
+                const SceneDesc* next, const SceneDesc* previous) {
   const std::string& sceneFile = options.scenes[0];
   const std::string output = options.output.empty() ? defaultOutputPath(sceneFile) : options.output;
   checkOutputPath(output);
@@ -306,12 +308,15 @@ int renderStill(const RenderCommandOptions& options, SceneDesc desc, double load
   const std::unique_ptr<OidnDenoiser> denoiser = loadDenoiser(options);
   applyOverrides(options, backend, engine, &desc);
   const auto flattenStart = std::chrono::steady_clock::now();
-  // A still does not move: its flow pass is 0 (and NaN nowhere, as both cameras are one). A
-  // frame of an animation moves towards the next.
-  std::optional<FlowMotion> flow;
+  // A still does not move: its flow passes are 0 (and NaN nowhere, as both cameras are one). A
+  // frame of an animation moves towards the next, and from the previous.
+  std::optional<FlowMotion> flow, backwardFlow;
   if (hasAov(passes.aovs, Aov::Flow)) flow = flowMotion(desc, next ? *next : desc);
+  if (hasAov(passes.aovs, Aov::BackwardFlow))
+    backwardFlow = flowMotion(desc, previous ? *previous : desc);
   SceneData scene = flattenScene(std::move(desc));  // it keeps all but the meshes, for the files
   if (flow) applyFlowMotion(scene, *flow);
+  if (backwardFlow) applyFlowMotion(scene, *backwardFlow, FlowDirection::Backward);
   const double flattenSeconds = secondsSince(flattenStart);
 
   // Also covers the write: a late Ctrl-C must not leave a temporary file behind.

@@ -207,12 +207,14 @@ int runSequence(const RenderCommandOptions& options, std::vector<SceneDesc> scen
   const FrameRange range = parseFrames(options.frames, count);
   const PassFiles passes = choosePassFiles(options);
   const bool wantsFlow = hasAov(passes.aovs, Aov::Flow);
-  // The flow pass follows one scene's animation to its next frame; separate files say nothing
-  // of how their entities correspond.
-  if (wantsFlow && scenes.size() > 1)
-    throw CliError(kExitUsage,
-                   "--aov flow: the flow pass is the motion of one animated scene; a sequence of "
-                   "several scene files has none (render them one by one, or as one animation)");
+  const bool wantsBackwardFlow = hasAov(passes.aovs, Aov::BackwardFlow);
+  // The flow passes follow one scene's animation to its next (or previous) frame; separate files
+  // say nothing of how their entities correspond.
+  if ((wantsFlow || wantsBackwardFlow) && scenes.size() > 1)
+    throw CliError(kExitUsage, std::string("--aov ") + (wantsFlow ? "flow" : "backward_flow") +
+                                   ": the flow passes are the motion of one animated scene; a "
+                                   "sequence of several scene files has none (render them one "
+                                   "by one, or as one animation)");
   const std::vector<std::string> suffixes = frameSuffixes(format, passes);
   const std::unique_ptr<OidnDenoiser> denoiser = loadDenoiser(options);
   const Backend backend = chooseBackend(options.backend);
@@ -256,9 +258,13 @@ int runSequence(const RenderCommandOptions& options, std::vector<SceneDesc> scen
   for (size_t k = 0; k < todo.size(); ++k) {
     const uint32_t frame = todo[k];
     const SceneDesc still = sceneAtFrame(animated ? scenes[0] : scenes[frame], frame);
-    std::optional<FlowMotion> flow;
+    std::optional<FlowMotion> flow, backwardFlow;
     if (wantsFlow) flow = flowMotion(still, sceneAtFrame(scenes[0], frame + 1));
-    const SceneData& data = frameScene.prepare(still, flow ? &*flow : nullptr);
+    // Frame 0 has none before it: its backward flow is that of a still, 0.
+    if (wantsBackwardFlow)
+      backwardFlow = flowMotion(still, sceneAtFrame(scenes[0], frame > 0 ? frame - 1 : 0));
+    const SceneData& data =
+        frameScene.prepare(still, flow ? &*flow : nullptr, backwardFlow ? &*backwardFlow : nullptr);
     if (bar)
       bar->startFrame("frame " + std::to_string(frame) + " (" + std::to_string(k + 1) + "/" +
                           std::to_string(todo.size()) + ")",

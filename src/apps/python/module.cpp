@@ -185,11 +185,11 @@ nb::dict passSumMerges() {
 // The still `desc` of a scene flattened into `cache` and given to its renderer on `chosen`, made
 // anew where it has none or one on another backend. The caller holds cache.mutex.
 const SceneData& prepareRenderer(RenderCache& cache, SceneDesc& desc, Backend chosen,
-                                 const FlowMotion* flow) {
+                                 const FlowMotion* flow, const FlowMotion* backwardFlow = nullptr) {
   const CpuEngine engine =
       resolveCpuEngine(CpuEngine::Auto, false, triangleCount(desc), sphereCount(desc));
   if (!needsOwnBvh(chosen, engine)) desc.ownBvh = OwnBvh::None;
-  const SceneData& data = cache.frames.prepare(desc, flow);
+  const SceneData& data = cache.frames.prepare(desc, flow, backwardFlow);
   SceneChange change = cache.frames.change();
   if (!cache.renderer || cache.backend != chosen) {
     cache.renderer.reset();  // a GPU's copy is freed before the next is made
@@ -243,10 +243,14 @@ nb::object render(const Scene& scene, std::optional<uint32_t> spp, std::optional
   RenderCache& cache = *scene.cache;
   runInterruptible([&](const std::atomic<bool>& cancel) {
     std::lock_guard<std::mutex> lock(cache.mutex);
-    std::optional<FlowMotion> flow;
-    if (hasAov(aovs, Aov::Flow))
-      flow = flowMotion(desc, sceneAtFrame(*scene.desc, scene.frame.value_or(0) + 1));
-    const SceneData& data = prepareRenderer(cache, desc, chosen, flow ? &*flow : nullptr);
+    std::optional<FlowMotion> flow, backwardFlow;
+    const uint32_t frame = scene.frame.value_or(0);
+    if (hasAov(aovs, Aov::Flow)) flow = flowMotion(desc, sceneAtFrame(*scene.desc, frame + 1));
+    // Frame 0 has none before it: its backward flow is that of a still, 0.
+    if (hasAov(aovs, Aov::BackwardFlow))
+      backwardFlow = flowMotion(desc, sceneAtFrame(*scene.desc, frame > 0 ? frame - 1 : 0));
+    const SceneData& data = prepareRenderer(cache, desc, chosen, flow ? &*flow : nullptr,
+                                            backwardFlow ? &*backwardFlow : nullptr);
     options.cancel = &cancel;
     result = renderChoosingLightPaths(*cache.renderer, data, options);
     if (!result.cancelled && aovNames && !passSums)
