@@ -85,6 +85,48 @@ SlidingCameraErrors slidingCameraErrors(const FlowRender& r, uint32_t width, uin
   return e;
 }
 
+// A card (quad.obj scaled to 20 across, writeQuad) at (2, 0, 0) spinning 10 degrees a frame about
+// its own vertical axis, seen from (0, 0, 40) on a 16 x 12 image of 60 degrees, without
+// antialiasing.
+constexpr const char* kSpinningCardScene = R"({
+    "camera": {"width": 16, "height": 12, "fov": 60, "spp": 1, "position": [0, 0, 40]},
+    "render": {"antialiasing": false},
+    "objects": [{"id": "card", "file": "quad.obj", "position": [2, 0, 0], "scale": 0.1}],
+    "lights": [{"position": [0, 0, 30], "intensity": 1000}],
+    "animation": {"frames": 8, "tracks": [
+      {"target": "card", "property": "rotation", "keys": [[0, [0, 0, 0]], [7, [0, 70, 0]]]}]}
+  })";
+
+// A square whose morph target stretches it along x (stretch.gltf, gltf_test_util.h's
+// stretchingSquare), 1 + k / 8 times its width at frame k, seen from (0, 0, 4) on a 16 x 12
+// image of 60 degrees, without antialiasing.
+constexpr const char* kStretchingSquareScene = R"({
+    "camera": {"width": 16, "height": 12, "fov": 60, "spp": 1, "position": [0, 0, 4]},
+    "render": {"antialiasing": false},
+    "objects": [{"file": "stretch.gltf", "gltf_animation": 0}],
+    "lights": [{"position": [0, 0, 4], "intensity": 10}],
+    "animation": {"frames": 8, "fps": 8}})";
+
+// Expects each pixel of a 16 x 12 render of 60 degrees from (0, 0, eyeZ) down -z (the scenes
+// above) that sees an instance to have as its `pass` the projection of its position-pass point
+// moved by `move`, minus the pixel centre (to 2e-3 pixels); returns how many pixels did.
+template <class Move>
+int expectFlowFollows(const FlowRender& r, const char* pass, float eyeZ, Move move) {
+  const float focal = 8.0f / std::tan(30.0f * 3.14159265f / 180.0f);
+  int covered = 0;
+  for (uint32_t y = 0; y < 12; ++y)
+    for (uint32_t x = 0; x < 16; ++x) {
+      if (r.at("instance", x, y) == 0.0f) continue;
+      ++covered;
+      const Vec3 q = move(
+          Vec3(r.at("position", x, y, 0), r.at("position", x, y, 1), r.at("position", x, y, 2)));
+      const float u = focal * q.x / (eyeZ - q.z) + 8.0f, v = -focal * q.y / (eyeZ - q.z) + 6.0f;
+      EXPECT_NEAR(r.at(pass, x, y, 0), u - (x + 0.5f), 2e-3f) << pass << " " << x << "," << y;
+      EXPECT_NEAR(r.at(pass, x, y, 1), v - (y + 0.5f), 2e-3f) << pass << " " << x << "," << y;
+    }
+  return covered;
+}
+
 // Writes quad.obj, a square 200 across in the plane z = 0, into `dir`; returns the folder.
 inline std::string writeQuad(const std::filesystem::path& dir) {
   std::filesystem::create_directories(dir);

@@ -77,29 +77,12 @@ TEST(BackwardFlow, SphereMovingBeforeAStillCamera) {
 // minus the pixel centre.
 TEST(BackwardFlow, SpinningObjectFollowsItsRotationBack) {
   const fs::path dir = fs::temp_directory_path() / "candela_backward_flow_spin";
-  const test::FlowRender r = renderFlows(R"({
-    "camera": {"width": 16, "height": 12, "fov": 60, "spp": 1, "position": [0, 0, 40]},
-    "render": {"antialiasing": false},
-    "objects": [{"id": "card", "file": "quad.obj", "position": [2, 0, 0], "scale": 0.1}],
-    "lights": [{"position": [0, 0, 30], "intensity": 1000}],
-    "animation": {"frames": 8, "tracks": [
-      {"target": "card", "property": "rotation", "keys": [[0, [0, 0, 0]], [7, [0, 70, 0]]]}]}
-  })",
-                                         3, writeQuad(dir));
-  const float f = 8.0f / std::tan(30.0f * kPi / 180.0f);
+  const test::FlowRender r = renderFlows(test::kSpinningCardScene, 3, writeQuad(dir));
   const Mat3 turn = eulerRotation(Vec3(0, 20, 0)) * eulerRotation(Vec3(0, 30, 0)).transposed();
-  int covered = 0;
-  for (uint32_t y = 0; y < 12; ++y)
-    for (uint32_t x = 0; x < 16; ++x) {
-      if (r.at("instance", x, y) == 0.0f) continue;
-      ++covered;
-      const Vec3 p(r.at("position", x, y, 0), r.at("position", x, y, 1), r.at("position", x, y, 2));
-      const Vec3 q = turn * (p - Vec3(2, 0, 0)) + Vec3(2, 0, 0);
-      const float u = f * q.x / (40.0f - q.z) + 8.0f, v = -f * q.y / (40.0f - q.z) + 6.0f;
-      EXPECT_NEAR(r.at("backward_flow", x, y, 0), u - (x + 0.5f), 2e-3f) << x << "," << y;
-      EXPECT_NEAR(r.at("backward_flow", x, y, 1), v - (y + 0.5f), 2e-3f) << x << "," << y;
-    }
-  EXPECT_GT(covered, 10);
+  EXPECT_GT(test::expectFlowFollows(
+                r, "backward_flow", 40.0f,
+                [&](const Vec3& p) { return turn * (p - Vec3(2, 0, 0)) + Vec3(2, 0, 0); }),
+            10);
   fs::remove_all(dir);
 }
 
@@ -108,25 +91,11 @@ TEST(BackwardFlow, SpinningObjectFollowsItsRotationBack) {
 TEST(BackwardFlow, FollowsTheVerticesOfAMovingMeshBack) {
   test::TempDir dir;
   dir.write("stretch.gltf", test::stretchingSquare().gltf());
-  const test::FlowRender r = renderFlows(R"({
-    "camera": {"width": 16, "height": 12, "fov": 60, "spp": 1, "position": [0, 0, 4]},
-    "render": {"antialiasing": false},
-    "objects": [{"file": "stretch.gltf", "gltf_animation": 0}],
-    "lights": [{"position": [0, 0, 4], "intensity": 10}],
-    "animation": {"frames": 8, "fps": 8}})",
-                                         3, dir.path());
-  const float focal = 8.0f / std::tan(30.0f * kPi / 180.0f);
-  int covered = 0;
-  for (uint32_t y = 0; y < 12; ++y)
-    for (uint32_t x = 0; x < 16; ++x) {
-      if (r.at("instance", x, y) == 0.0f) continue;
-      ++covered;
-      const Vec3 q(r.at("position", x, y, 0) * 1.25f / 1.375f, r.at("position", x, y, 1), 0.0f);
-      const float u = focal * q.x / 4.0f + 8.0f, v = -focal * q.y / 4.0f + 6.0f;
-      EXPECT_NEAR(r.at("backward_flow", x, y, 0), u - (x + 0.5f), 2e-3f) << x << "," << y;
-      EXPECT_NEAR(r.at("backward_flow", x, y, 1), v - (y + 0.5f), 2e-3f) << x << "," << y;
-    }
-  EXPECT_GT(covered, 20);
+  const test::FlowRender r = renderFlows(test::kStretchingSquareScene, 3, dir.path());
+  EXPECT_GT(
+      test::expectFlowFollows(r, "backward_flow", 4.0f,
+                              [](const Vec3& p) { return Vec3(p.x * 1.25f / 1.375f, p.y, 0.0f); }),
+      20);
 }
 
 // Each direction has its own motions: the forward flow beside the backward one is bit for bit the
