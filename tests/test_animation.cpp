@@ -516,10 +516,51 @@ TEST(FrameScene, ObjectTransformChangeRefitsAndMeshChangeRebuilds) {
   expectSameContents(frames.prepare(scene), flattenScene(scene));
   EXPECT_EQ(frames.change(), SceneChange::Motion);
   auto other = std::make_shared<MeshDesc>(*mesh);
-  other->positions[2] = Vec3(0, 2, 0);  // same transform, other mesh
+  other->triangles[0].v[2] = 1;  // same transform, other triangles
+  other->positions.push_back(Vec3(0, 2, 0));
+  other->triangles.push_back(MeshTriangle{{0, 2, 3}, {-1, -1, -1}, 0});
   scene.objects[0].mesh = other;
   expectSameScene(frames.prepare(scene), flattenScene(scene));
   EXPECT_EQ(frames.change(), SceneChange::Structure);
+}
+
+// A mesh whose vertices move (a glTF animation's pose) over the same triangles is a motion, as a
+// transform is: refitted, with the moved normals; a mesh with other texture coordinates is a new
+// structure (they decide its vertices' layout).
+TEST(FrameScene, AMeshPosedAnewRefitsAndOtherUvsRebuild) {
+  SceneDesc scene;
+  auto mesh = std::make_shared<MeshDesc>();
+  for (int i = 0; i < 8; ++i)
+    mesh->positions.push_back(Vec3(float(i & 1), float((i >> 1) & 1), float(i >> 2)));
+  mesh->normals = {Vec3(0, 0, 1)};
+  for (uint32_t i = 0; i < 6; ++i)
+    mesh->triangles.push_back(MeshTriangle{{i, i + 1, i + 2}, {0, 0, 0}, 0});
+  mesh->materials = {Material{}};
+  ObjectDesc object;
+  object.mesh = mesh;
+  object.smooth = true;
+  scene.objects.push_back(object);
+  for (OwnBvh kind : {OwnBvh::Sah, OwnBvh::None}) {
+    SCOPED_TRACE(kind == OwnBvh::None ? "no own BVH" : "own BVH");
+    scene.ownBvh = kind;
+    scene.objects[0].mesh = mesh;
+    FrameScene frames;
+    frames.prepare(scene);
+    auto posed = std::make_shared<MeshDesc>(*mesh);
+    for (Vec3& p : posed->positions) p = Vec3(p.x + 0.3f * p.z, p.y * 1.5f, p.z);
+    posed->normals = {normalize(Vec3(0.2f, 0, 1))};
+    scene.objects[0].mesh = posed;
+    const SceneData& moved = frames.prepare(scene);
+    EXPECT_EQ(frames.change(), SceneChange::Motion);
+    expectSameContents(moved, flattenScene(scene));
+    if (kind != OwnBvh::None) expectBvhFindsNearestHits(moved);
+
+    auto unwrapped = std::make_shared<MeshDesc>(*posed);
+    unwrapped->uvs = {Vec2(0.5f, 0.5f)};
+    scene.objects[0].mesh = unwrapped;
+    expectSameScene(frames.prepare(scene), flattenScene(scene));
+    EXPECT_EQ(frames.change(), SceneChange::Structure);
+  }
 }
 
 // A frame whose object's material begins to read the mesh's uvs lays the mesh out anew (its seams

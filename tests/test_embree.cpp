@@ -439,6 +439,34 @@ TEST(Embree, AnimationFramesRenderAsFreshBuilds) {
   EXPECT_TRUE(sawMotion);
 }
 
+// The glTF example's skinned and morphed meshes, posed anew each frame (its shutter closed): each
+// frame after the first is a refit on both engines, and renders as a renderer built for that
+// frame alone does.
+TEST(Embree, PosedMeshFramesRefitAndRenderAsFreshBuilds) {
+  SceneDesc example =
+      loadSceneFile(std::string(CANDELA_SOURCE_DIR) + "/scenes/examples/gltf_animation.json");
+  example.camera.width = 40;
+  example.camera.height = 30;
+  example.render.spp = 2;
+  example.animation->shutterOpen = example.animation->shutterClose = 0.0f;
+  for (CpuEngine engine : {CpuEngine::Embree, CpuEngine::Bvh}) {
+    SCOPED_TRACE(engine == CpuEngine::Embree ? "Embree" : "own BVH");
+    example.ownBvh = engine == CpuEngine::Embree ? OwnBvh::None : OwnBvh::Sah;
+    FrameScene frames;
+    CpuRenderer resident(engine);
+    int motions = 0;
+    for (uint32_t f = 10; f < 14; ++f) {
+      const SceneDesc still = sceneAtFrame(example, f);
+      resident.setScene(frames.prepare(still), frames.change());
+      motions += frames.change() == SceneChange::Motion;
+      const ImageRGB image = resident.render(RenderOptions{}).image;
+      const ImageRGB fresh = renderWith(engine, still).image;
+      EXPECT_LT(relMse(image, fresh), 1e-6) << "frame " << f;
+    }
+    EXPECT_EQ(motions, 3);
+  }
+}
+
 // Of 500 random rays, how many find the primitive through `embree` that testing every
 // primitive of `scene` finds (or nothing where that finds nothing).
 int agreeingHits(const EmbreeScene& embree, const SceneData& scene, std::mt19937& gen) {

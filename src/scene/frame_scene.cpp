@@ -46,7 +46,10 @@ void writeKeys(const SceneDesc& desc, std::string* geometry, std::string* struct
     }
   }
   both(desc.objects.size());
-  std::unordered_map<const MeshDesc*, uint64_t> meshHashes;
+  struct MeshHashes {
+    uint64_t topology = 0, pose = 0;
+  };
+  std::unordered_map<const MeshDesc*, MeshHashes> meshHashes;
   for (const ObjectDesc& o : desc.objects) {
     full.add(o.position);
     full.add(o.rotation);
@@ -58,15 +61,19 @@ void writeKeys(const SceneDesc& desc, std::string* geometry, std::string* struct
     both(o.mixParts.size());
     both(o.mesh->materials.size());
     both(o.mesh->mixParts.size());
-    // Objects that name one file share its mesh: it is hashed once.
-    const auto [hash, fresh] = meshHashes.try_emplace(o.mesh.get(), 0);
+    // Objects that name one file share its mesh: it is hashed once. Its triangles, texture
+    // coordinates and colours are its structure; where its vertices stand (a glTF animation's
+    // pose) is a motion, which a refit follows as it follows a transform.
+    const auto [hashes, fresh] = meshHashes.try_emplace(o.mesh.get(), MeshHashes{});
     if (fresh) {
       const MeshDesc& m = *o.mesh;
-      hash->second = hashVector(
-          m.colors, hashVector(m.triangles,
-                               hashVector(m.uvs, hashVector(m.normals, hashVector(m.positions)))));
+      hashes->second.topology = hashVector(m.colors, hashVector(m.triangles, hashVector(m.uvs)));
+      hashes->second.pose = hashVector(m.normals, hashVector(m.positions));
     }
-    both(hash->second);
+    both(hashes->second.topology);
+    both(o.mesh->positions.size());
+    both(o.mesh->normals.size());
+    full.add(hashes->second.pose);
   }
   both(desc.textures.size());
   for (const std::shared_ptr<const TextureDesc>& t : desc.textures) both(textureHash(*t));

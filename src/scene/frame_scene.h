@@ -6,9 +6,10 @@
 // SceneData is kept, with its world-space meshes and its BVH, and only the camera, settings,
 // environment, materials and lights are replaced: a moving camera or a dimming light costs
 // little (the light tree is kept while the lights' bounds and powers are, else built). When only
-// transforms changed (objects, spheres or sphere lights moved, turned, scaled or resized, with
-// the same meshes), the vertices are transformed again and the BVH is
-// refitted in linear time, unless refitting has made the tree's SAH cost grow past
+// transforms or poses changed (objects, spheres or sphere lights moved, turned, scaled or resized;
+// a mesh's vertices and normals moved by its glTF animation, with the same triangles, texture
+// coordinates and colours), the vertices are transformed again and the BVH is refitted in linear
+// time, unless refitting has made the tree's SAH cost grow past
 // kRefitCostLimit times that of its last build: then a new BVH is built over the contents the
 // frame has just flattened, as for any other change. Textures enter the keys by their content
 // hashes: a frame with other texels is a new structure. Whatever the change, a frame keeps the last
