@@ -481,7 +481,7 @@ TEST(FrameScene, CameraAndLightChangesReuseTheBvhAndARadiusChangeRefitsIt) {
       {"target": "camera", "property": "position", "keys": [[0, [0, 0, 9]], [2, [1, 0, 9]]]},
       {"target": "lamp", "property": "intensity", "keys": [[0, 10], [3, 40]]},
       {"target": "ball", "property": "color", "keys": [[0, 0.5], [3, 0.9]]},
-      {"target": "ball", "property": "radius", "keys": [[3, 1], [5, 2]]}]})"));
+      {"target": "ball", "property": "radius", "keys": [[3, 1], [5, 1.3]]}]})"));
   FrameScene frames;
   using P = SceneChange;
   const P expected[6] = {P::Structure, P::Values, P::Values, P::Values, P::Motion, P::Motion};
@@ -744,6 +744,58 @@ TEST(FrameScene, RefitUnlessTheTreeDegradesThenRebuild) {
   fresh.envConditionalCdf[0] = -1.0f;
   expectSameScene(frames.prepare(scene), fresh);
   EXPECT_EQ(frames.change(), SceneChange::Structure);
+}
+
+// The same move under a ground sphere of radius 1000, whose box dwarfs the grids': the root's
+// cost barely moves, but that of the grids' part of the tree grows, and the refit is rejected.
+TEST(FrameScene, ADegradedSubtreeIsRebuiltUnderAHugeSphere) {
+  auto grid = std::make_shared<MeshDesc>();
+  for (int i = 0; i <= 10; ++i)
+    for (int j = 0; j <= 10; ++j) grid->positions.push_back(Vec3(float(i), float(j), 0.0f));
+  for (uint32_t i = 0; i < 10; ++i)
+    for (uint32_t j = 0; j < 10; ++j) {
+      const uint32_t a = i * 11 + j, b = a + 11;
+      grid->triangles.push_back(MeshTriangle{{a, b, a + 1}, {-1, -1, -1}, 0});
+      grid->triangles.push_back(MeshTriangle{{b, b + 1, a + 1}, {-1, -1, -1}, 0});
+    }
+  grid->materials = {Material{}};
+  SceneDesc scene;
+  SphereDesc ground;
+  ground.position = Vec3(0, -1000, 0);
+  ground.radius = 1000;
+  scene.spheres.push_back(ground);
+  for (float x : {-60.0f, 50.0f}) {
+    ObjectDesc object;
+    object.mesh = grid;
+    object.position = Vec3(x, 0, 0);
+    scene.objects.push_back(object);
+  }
+  FrameScene frames;
+  const std::vector<BvhNode> built = frames.prepare(scene).nodes;
+  const BvhCostProfile profile = bvhCostProfile(built);
+  ASSERT_GT(profile.parts.size(), 1u);
+
+  scene.objects[0].position = Vec3(0, 0, 0);
+  scene.objects[1].position = Vec3(5, 0, -5);
+  scene.objects[1].rotation = Vec3(0, 90, 0);
+  const SceneData& moved = frames.prepare(scene);
+  EXPECT_EQ(frames.change(), SceneChange::Structure);
+  expectSameScene(moved, flattenScene(scene));
+  // The tree refitted over the grids' new places: the root's cost alone would have let it stand.
+  SceneData refitted = flattenSceneContents(scene);
+  std::vector<BvhNode> nodes = built;
+  const SceneData first = [&] {
+    SceneDesc before = scene;
+    before.objects[0].position = Vec3(-60, 0, 0);
+    before.objects[1].position = Vec3(50, 0, 0);
+    before.objects[1].rotation = Vec3(0, 0, 0);
+    return flattenScene(before);
+  }();
+  refitBvh(nodes, first.primIndices, refitted.spheres.data(), uint32_t(refitted.spheres.size()),
+           refitted.positions.data(), first.triangles.data());
+  const BvhCostProfile rootOnly{{profile.parts[0]}};
+  EXPECT_LT(bvhCostGrowth(nodes, rootOnly), 1.01);
+  EXPECT_GT(bvhCostGrowth(nodes, profile), kRefitCostLimit);
 }
 
 }  // namespace

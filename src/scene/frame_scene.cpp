@@ -123,7 +123,7 @@ const SceneData& FrameScene::prepare(const SceneDesc& desc, const FlowMotion* fl
       moved.bvh = data_.bvh;
       refitBvh(moved.nodes, moved.primIndices, moved.spheres.data(),
                uint32_t(moved.spheres.size()), moved.positions.data(), moved.triangles.data());
-      refitted = bvhSahCost(moved.nodes) <= kRefitCostLimit * builtCost_;
+      refitted = bvhCostGrowth(moved.nodes, builtCosts_) <= kRefitCostLimit;
       if (refitted) {
         addEmitterLights(moved, &previous);
       } else {  // the refitted tree degraded: a new one over the same contents
@@ -134,7 +134,7 @@ const SceneData& FrameScene::prepare(const SceneDesc& desc, const FlowMotion* fl
     } else {
       data_ = flattenScene(desc, &data_, &previous);
     }
-    if (!refitted) builtCost_ = bvhSahCost(data_.nodes);
+    if (!refitted) builtCosts_ = bvhCostProfile(data_.nodes);
     change_ = refitted ? SceneChange::Motion : SceneChange::Structure;
     geometryKey_ = std::move(geometry);
     structureKey_ = std::move(structure);

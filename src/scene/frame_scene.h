@@ -9,7 +9,7 @@
 // transforms or poses changed (objects, spheres or sphere lights moved, turned, scaled or resized;
 // a mesh's vertices and normals moved by its glTF animation, with the same triangles, texture
 // coordinates and colours), the vertices are transformed again and the BVH is refitted in linear
-// time, unless refitting has made the tree's SAH cost grow past
+// time, unless refitting has made the SAH cost of the tree, or of a large subtree, grow past
 // kRefitCostLimit times that of its last build: then a new BVH is built over the contents the
 // frame has just flattened, as for any other change. Textures enter the keys by their content
 // hashes: a frame with other texels is a new structure. Whatever the change, a frame keeps the last
@@ -20,6 +20,7 @@
 
 #include <string>
 
+#include "geometry/bvh_refit.h"
 #include "render/scene_change.h"
 #include "render/scene_data.h"
 #include "scene/flow_motion.h"
@@ -27,7 +28,8 @@
 
 namespace candela {
 
-// A refitted tree is rebuilt once its SAH cost exceeds this multiple of the cost at its build.
+// A refitted tree is rebuilt once its SAH cost, or a large subtree's (bvhCostProfile), exceeds
+// this multiple of the cost at its build.
 constexpr double kRefitCostLimit = 1.5;
 
 class FrameScene {
@@ -48,7 +50,7 @@ class FrameScene {
   SceneData data_;
   std::string geometryKey_;   // the bytes that must match for reuse; empty before the first frame
   std::string structureKey_;  // the bytes that must match for a refit
-  double builtCost_ = 0;      // SAH cost of the BVH when it was last built
+  BvhCostProfile builtCosts_;  // SAH costs of the BVH when it was last built
   SceneChange change_ = SceneChange::Structure;
   double seconds_ = 0;
 };
