@@ -171,8 +171,14 @@ class Scene:
     def render(self, spp: Optional[int] = None, seed: Optional[int] = None,
                backend: str = "auto", sample_range: Optional[Tuple[int, int]] = None,
                threads: int = 0, aovs: Optional[Sequence[str]] = None, denoise: bool = False,
-               max_depth: Optional[int] = None) -> np.ndarray | Dict[str, np.ndarray]:
+               max_depth: Optional[int] = None,
+               crop: Optional[Sequence[int]] = None) -> np.ndarray | Dict[str, np.ndarray]:
         """Renders to a float32 array (height, width, 3) of linear radiance.
+
+        crop=(x, y, width, height): render only pixels x to x + width - 1 and y to
+        y + height - 1 of the camera's image, each as the whole image's render has it, passes
+        and denoising too (the scene's own camera "crop" is replaced; docs/scene-format.md,
+        *Crops*); ValueError where it reaches past the image or is empty.
 
         denoise: run Intel Open Image Denoise (PyPI `pyoidn`) on the result's direct and
         indirect light, guided by the albedo and normal passes (candela.denoise);
@@ -206,13 +212,16 @@ class Scene:
             sample_range = (_whole(sample_range[0], "sample_range's first", 0, _U32),
                             _whole(sample_range[1], "sample_range's count", 0, _U32))
         threads = _whole(threads, "threads", 0, 2**31 - 1)
+        crop = _crop(crop)
         aovs = _pass_names(aovs)
         result = self._core.render(spp, seed, backend, sample_range, threads,
-                                   _passes_to_render(aovs, denoise), max_depth=max_depth)
+                                   _passes_to_render(aovs, denoise), max_depth=max_depth,
+                                   crop=crop)
         if not denoise:
             return result
         return _denoised(result, aovs, threads,
-                         self._core.seen_emitters(result["emission"], spp, seed, backend, threads))
+                         self._core.seen_emitters(result["emission"], spp, seed, backend, threads,
+                                                  crop=crop))
 
     def __repr__(self) -> str:
         frame = "" if self.frame_index is None else f", frame {self.frame_index}"
@@ -240,6 +249,18 @@ def _render_counts(spp, seed, max_depth) -> tuple:
     return (None if spp is None else _whole(spp, "spp", 1, _U32),
             None if seed is None else _whole(seed, "seed", 0, 2**64 - 1),
             None if max_depth is None else _whole(max_depth, "max_depth", 1, _U32))
+
+
+def _crop(crop: Optional[Sequence[int]]) -> Optional[tuple]:
+    """render()'s crop as a tuple of four whole numbers (None: none); TypeError where it is no
+    sequence of four integers."""
+    if crop is None:
+        return None
+    if isinstance(crop, (str, bytes)) or not isinstance(crop, (Sequence, np.ndarray)) \
+            or len(crop) != 4:
+        raise TypeError(f"crop must be (x, y, width, height), four integers, got {crop!r}")
+    return tuple(_whole(v, f"crop's {name}", 0, _U32)
+                 for v, name in zip(crop, ("x", "y", "width", "height")))
 
 
 def _plain_json(value: Any, path: str) -> Any:

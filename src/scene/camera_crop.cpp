@@ -18,4 +18,12 @@ std::string cropText(const CameraCrop& crop) {
          std::to_string(crop.width) + ", " + std::to_string(crop.height) + "]";
 }
 
+uint32_t renderedWidth(const CameraDesc& camera) {
+  return camera.crop ? camera.crop->width : camera.width;
+}
+
+uint32_t renderedHeight(const CameraDesc& camera) {
+  return camera.crop ? camera.crop->height : camera.height;
+}
+
 }  // namespace candela

@@ -188,3 +188,22 @@ def test_cli_reports_the_denoisers_time(tmp_path):
         else:
             assert seconds == 0
             assert "denoised" not in done.stdout, done.stdout
+
+
+def test_a_cropped_denoised_render_is_that_part_of_the_denoised_image():
+    scene = candela.Scene.from_dict(with_emitter(32))
+    part = (slice(6, 22), slice(4, 24))
+    reference = scene.render(spp=1024, seed=1)[part]
+    whole = scene.render(spp=4, seed=3, denoise=True)[part]
+    crop = scene.render(spp=4, seed=3, denoise=True, crop=(4, 6, 20, 16))
+    noisy = scene.render(spp=4, seed=3, crop=(4, 6, 20, 16))
+    assert crop.shape == (16, 20, 3) and np.all(np.isfinite(crop))
+    # The filter sees less around the crop's edges, so the two differ, but far less than the
+    # noise it takes away; and the crop is as clean as that part of the whole denoised image.
+    spec = with_emitter(32)
+    spec["camera"]["crop"] = [4, 6, 20, 16]
+    by_camera = candela.Scene.from_dict(spec).render(spp=4, seed=3, denoise=True)
+    np.testing.assert_array_equal(by_camera, crop)
+    assert relmse(crop, whole) < 0.25 * relmse(noisy, whole)
+    assert relmse(crop, reference) < 0.5 * relmse(noisy, reference)
+    assert relmse(crop, reference) < 1.25 * relmse(whole, reference)
