@@ -162,6 +162,24 @@ TEST_F(CliAovTest, AlphaIsThePngsAlphaChannelAndTheExrsA) {
   EXPECT_EQ(alpha.at(0, 0).x, 0.0f);
 }
 
+// The uv pass: an EXR's layer "uv" of channels U and V, a PNG's sibling .uv.pfm (U, V and a
+// third channel of 0). The sphere's equator, seen at the centre pixel, has v = 0.5.
+TEST_F(CliAovTest, UvIsALayerOfUAndVOrASiblingFile) {
+  ASSERT_EQ(run("render s.json -q -o out.exr --aov uv"), 0);
+  const candela::ExrChannels exr = candela::readExrChannels(path("out.exr").string());
+  ASSERT_NE(channel(exr, "uv.U"), nullptr);
+  ASSERT_NE(channel(exr, "uv.V"), nullptr);
+  const size_t centre = 7 * 15 + 7;
+  EXPECT_NEAR(channel(exr, "uv.V")->pixels[centre], 0.5f, 1e-4f);
+  EXPECT_EQ(channel(exr, "uv.V")->pixels[0], 0.0f);
+
+  ASSERT_EQ(run("render s.json -q -o out.png --aov uv"), 0);
+  const candela::ImageRGB uv = candela::readImage(path("out.uv.pfm").string());
+  EXPECT_EQ(uv.at(7, 7).x, channel(exr, "uv.U")->pixels[centre]);
+  EXPECT_EQ(uv.at(7, 7).y, channel(exr, "uv.V")->pixels[centre]);
+  EXPECT_EQ(uv.at(7, 7).z, 0.0f);
+}
+
 std::string fileText(const fs::path& file) { return candela::readFileBytes(file.string()); }
 
 // --crop renders that part of the image, each pixel and pass as the whole image's render has
@@ -240,7 +258,8 @@ TEST_F(CliAovTest, UnknownPassIsAUsageErrorListingTheKnownOnes) {
   EXPECT_EQ(err,
             "candela: error: --aov: unknown render pass \"nromal\"; the passes are: depth, "
             "distance, normal, normal_camera, albedo, position, instance, material, flow, "
-            "backward_flow, direct, emission, alpha; and beside the image camera (the camera's "
+            "backward_flow, direct, emission, alpha, uv; and beside the image camera (the "
+            "camera's "
             "matrices) and poses (each instance's pose)\n");
   EXPECT_FALSE(fs::exists(path("out.png")));
 }

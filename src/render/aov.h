@@ -32,6 +32,7 @@ struct FirstHit {
   Vec3 albedo{0.0f};
   Vec3 direct{0.0f};
   Vec3 emission{0.0f};
+  Vec2 uv;                // texture coordinates (geometry/surface_uv.h), when `hit`
   uint32_t material = 0;  // flattened material index, valid when `hit`
   uint32_t prim = 0;      // the primitive hit and where on it (geometry/ray.h), when `hit`
   float b1 = 0, b2 = 0;
@@ -58,6 +59,7 @@ struct AovPixel {
   Vec3 directSum{0.0f};    // over all samples, as the radiance (a non-finite sample adds 0)
   Vec3 emissionSum{0.0f};  // likewise
   float distanceSum = 0.0f;  // |position - camera centre|, over samples that hit
+  Vec2 uvSum;                // over samples that hit
   Vec2 flowSum;              // over samples whose flow is defined (render/flow.h)
   uint32_t flowSamples = 0;
   Vec2 backwardFlowSum;  // likewise, towards the previous frame
@@ -88,6 +90,7 @@ inline Vec3 meanOverSamples(const AovPixel& pixel, const Vec3& sum) {
   X(directSum, "direct_sum", float, 3, Added)                         \
   X(emissionSum, "emission_sum", float, 3, Added)                     \
   X(distanceSum, "distance_sum", float, 1, Added)                     \
+  X(uvSum, "uv_sum", float, 2, Added)                                 \
   X(flowSum, "flow_sum", float, 2, Added)                             \
   X(flowSamples, "flow_samples", uint32_t, 1, Added)                  \
   X(backwardFlowSum, "backward_flow_sum", float, 2, Added)            \
@@ -134,6 +137,7 @@ CANDELA_HDI void addAovSample(AovPixel* pixel, const FirstHit& first, float jx, 
     pixel->positionSum += first.position;
     pixel->normalSum += first.normal;
     pixel->distanceSum += length(first.position - eye);
+    pixel->uvSum = pixel->uvSum + first.uv;
     ++pixel->hits;
   }
   const float dx = jx - 0.5f, dy = jy - 0.5f, d2 = dx * dx + dy * dy;

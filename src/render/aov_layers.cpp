@@ -32,6 +32,7 @@ const std::vector<AovInfo>& aovTable() {
       {Aov::Direct, "direct", {"R", "G", "B"}, false},
       {Aov::Emission, "emission", {"R", "G", "B"}, false},
       {Aov::Alpha, "alpha", {"A"}, false},
+      {Aov::Uv, "uv", {"U", "V"}, false},
   };
   return table;
 }
@@ -108,6 +109,10 @@ void resolvePixel(Aov aov, const SceneData& scene, const AovPixel& p, float* out
       return put(meanOverSamples(p, p.emissionSum));
     case Aov::Alpha:
       out[0] = p.samples > 0 ? float(p.covered) / float(p.samples) : 0.0f;
+      return;
+    case Aov::Uv:
+      out[0] = p.uvSum.x * invHits;
+      out[1] = p.uvSum.y * invHits;
       return;
   }
 }

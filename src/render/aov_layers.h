@@ -25,7 +25,8 @@ enum class Aov {
   BackwardFlow,
   Direct,
   Emission,
-  Alpha
+  Alpha,
+  Uv
 };
 
 // "depth", "normal_camera", ...

@@ -401,6 +401,7 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
       first->hit = true;
       first->position = sp.p;
       first->normal = facingNormal(wo, sp.ng, sp.ns);
+      first->uv = surfaceUv(scene, hit, sp);
       first->material = sp.material;
       first->prim = hit.prim;
       first->b1 = hit.b1;

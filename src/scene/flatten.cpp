@@ -665,8 +665,8 @@ SceneData flattenScene(SceneDesc&& desc) {
   return s;
 }
 
-std::vector<Vec3> placedVertices(const ObjectDesc& obj) {
-  const MeshLayout layout = layOutMesh(*obj.mesh, usesNormals(obj), usesUvs(obj));
+std::vector<Vec3> placedVertices(const ObjectDesc& obj, const ObjectDesc& laidOutAs) {
+  const MeshLayout layout = layOutMesh(*obj.mesh, usesNormals(laidOutAs), usesUvs(laidOutAs));
   std::vector<Vec3> placed;
   placeVertices(*obj.mesh, layout, obj.position, eulerRotation(obj.rotation), obj.scale, &placed);
   return placed;

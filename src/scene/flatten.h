@@ -65,7 +65,8 @@ SceneData flattenPassContext(const SceneDesc& desc);
 void refreshSceneValues(SceneData& scene, const SceneDesc& desc);
 
 // The world-space vertices of object `obj` as flattenScene places them (its mesh's, then their
-// splits: scene/mesh_layout.h).
-std::vector<Vec3> placedVertices(const ObjectDesc& obj);
+// splits: scene/mesh_layout.h), split as `laidOutAs` (the same object in the frame flattened, whose
+// materials and passes decided its splits) splits them.
+std::vector<Vec3> placedVertices(const ObjectDesc& obj, const ObjectDesc& laidOutAs);
 
 }  // namespace candela

@@ -86,7 +86,7 @@ FlowMotion flowMotion(const SceneDesc& now, const SceneDesc& next) {
   for (size_t k = 0; k < now.objects.size(); ++k, ++i) {
     f.instances[i] = objectMotion(now.objects[k], next.objects[k]);
     if (now.objects[k].meshMotion) {
-      f.objectVertices[k] = placedVertices(next.objects[k]);
+      f.objectVertices[k] = placedVertices(next.objects[k], now.objects[k]);
       f.instances[i].perVertex = true;
     }
   }

@@ -27,7 +27,11 @@ bool anyMaterialOf(const ObjectDesc& obj, bool (*test)(const Material&)) {
 }
 
 bool usesUvs(const ObjectDesc& obj) {
-  return !obj.mesh->uvs.empty() && anyMaterialOf(obj, readsUvs);
+  return !obj.mesh->uvs.empty() && (obj.uvPass || anyMaterialOf(obj, readsUvs));
+}
+
+void keepUvsForPass(SceneDesc& desc) {
+  for (ObjectDesc& object : desc.objects) object.uvPass = true;
 }
 
 bool usesVertexColors(const ObjectDesc& obj) {

@@ -47,9 +47,13 @@ bool anyMaterialOf(const ObjectDesc& obj, bool (*test)(const Material&));
 // Whether an object uses its mesh's normals: it is smooth and the file has them.
 bool usesNormals(const ObjectDesc& obj);
 // Whether an object uses its mesh's uvs: the file has them and one of the object's materials reads
-// them (a texture or an alpha mask's). Uvs that nothing reads would split vertices at every seam
-// for nothing (Sponza's file: 69,013 vertices for 39,999 positions).
+// them (a texture or an alpha mask's), or the uv pass shows them (ObjectDesc::uvPass). Uvs that
+// nothing reads would split vertices at every seam for nothing (Sponza's file: 69,013 vertices for
+// 39,999 positions).
 bool usesUvs(const ObjectDesc& obj);
+// Marks every object of `desc` for the uv pass (render/aov_layers.h, Aov::Uv): their meshes'
+// uvs are kept.
+void keepUvsForPass(SceneDesc& desc);
 // Whether an object's vertices carry its mesh's colours: the file has them and the object does
 // not leave them ("vertex_colors": false).
 bool usesVertexColors(const ObjectDesc& obj);

@@ -67,7 +67,7 @@ def test_flow_of_an_animated_frame_is_an_h_w_2_array_in_pixels():
 
 
 ALL_PASSES = ["depth", "distance", "normal", "normal_camera", "albedo", "position", "instance",
-              "material", "flow", "backward_flow", "direct", "emission", "alpha"]
+              "material", "flow", "backward_flow", "direct", "emission", "alpha", "uv"]
 
 
 @pytest.mark.parametrize("animated", [True, False], ids=["animation frame", "still scene"])
@@ -276,3 +276,22 @@ def test_alpha_is_the_share_of_samples_that_saw_something_and_goes_into_the_file
         candela.write_image(tmp_path / "bad.png", res["image"], alpha=alpha[:, :3])
     with pytest.raises(Exception, match="a .pfm has no alpha channel"):
         candela.write_image(tmp_path / "cut.pfm", res["image"], alpha=alpha)
+
+
+def test_uv_is_the_first_hits_texture_coordinates(tmp_path):
+    # A quad whose corners' uvs run from (0, 0) to (1, 1), seen whole and head-on, under a plain
+    # colour that reads no uvs: the pass keeps them and shows the coordinates through each pixel.
+    (tmp_path / "quad.obj").write_text("v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\n"
+                                       "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nf 1/1 2/2 3/3 4/4\n")
+    scene = candela.Scene.from_dict({
+        "camera": {"width": 16, "height": 16, "position": [0, 0, 5], "spp": 1,
+                   "projection": "orthographic", "view_width": 2},
+        "render": {"antialiasing": False},
+        "objects": [{"file": "quad.obj", "color": 0.5}],
+        "lights": [{"position": [0, 0, 3], "intensity": 10}]}, base_dir=tmp_path)
+    uv = scene.render(backend="cpu", aovs=["uv"])["uv"]
+    assert uv.shape == (16, 16, 2) and uv.dtype == np.float32
+    centres = (np.arange(16) + 0.5) / 16
+    np.testing.assert_allclose(uv[..., 0], np.tile(centres, (16, 1)), atol=1e-5)
+    np.testing.assert_allclose(uv[..., 1], np.tile(centres[::-1, None], (1, 16)), atol=1e-5)
+

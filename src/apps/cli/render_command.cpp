@@ -37,6 +37,7 @@
 #include "scene/camera_crop.h"
 #include "scene/flatten.h"
 #include "scene/flow_motion.h"
+#include "scene/mesh_layout.h"
 #include "scene/read/scene_loader.h"
 
 namespace fs = std::filesystem;
@@ -149,6 +150,7 @@ void applyOverrides(const RenderCommandOptions& options, Backend backend, CpuEng
   if (options.spp) desc->render.spp = *options.spp;
   if (options.seed) desc->render.seed = *options.seed;
   if (options.maxDepth) desc->render.maxDepth = *options.maxDepth;
+  if (hasAov(choosePassFiles(options).aovs, Aov::Uv)) keepUvsForPass(*desc);
   if (options.noBvh)
     desc->ownBvh = OwnBvh::Flat;
   else if (!needsOwnBvh(backend, engine))

@@ -40,6 +40,7 @@
 #include "scene/flatten.h"
 #include "scene/frame_scene.h"
 #include "scene/instance_poses.h"
+#include "scene/mesh_layout.h"
 #include "scene/read/scene_loader.h"
 #include "scene/scene_error.h"
 
@@ -239,6 +240,7 @@ nb::object render(const Scene& scene, std::optional<uint32_t> spp, std::optional
   if (passSums && !aovNames) aovNames.emplace();
   const std::vector<Aov> aovs = aovNames ? aovsFromNames(*aovNames) : std::vector<Aov>();
   SceneDesc desc = stillWith(scene, spp, seed, maxDepth, crop);
+  if (hasAov(aovs, Aov::Uv)) keepUvsForPass(desc);
   SampleRange samples;
   if (range) {
     samples = {std::get<0>(*range), std::get<1>(*range)};
