@@ -76,7 +76,7 @@ TEST(Aovs, UnknownPassNamesAreRefusedWithTheKnownOnes) {
     EXPECT_EQ(std::string(e.what()),
               "unknown render pass \"normals\"; the passes are: depth, distance, normal, "
               "normal_camera, albedo, position, instance, material, flow, backward_flow, direct, "
-              "emission, alpha, uv");
+              "emission, alpha, uv, object_coordinates");
   }
   const std::vector<Aov> aovs = parseAovList(" normal , depth,normal");
   ASSERT_EQ(aovs.size(), 2u);

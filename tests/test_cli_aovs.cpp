@@ -180,6 +180,21 @@ TEST_F(CliAovTest, UvIsALayerOfUAndVOrASiblingFile) {
   EXPECT_EQ(uv.at(7, 7).z, 0.0f);
 }
 
+// The object coordinates pass: an EXR's layer "object_coordinates" of X, Y and Z. The sphere's
+// point facing the camera, (0, 0, 1) on its unit sphere, is (0.5, 0.5, 1) over its box.
+TEST_F(CliAovTest, ObjectCoordinatesAreALayerOfXYAndZ) {
+  ASSERT_EQ(run("render s.json -q -o out.exr --aov object_coordinates"), 0);
+  const candela::ExrChannels exr = candela::readExrChannels(path("out.exr").string());
+  const size_t centre = 7 * 15 + 7;
+  const char* names[] = {"object_coordinates.X", "object_coordinates.Y", "object_coordinates.Z"};
+  const float expected[] = {0.5f, 0.5f, 1.0f};
+  for (int k = 0; k < 3; ++k) {
+    ASSERT_NE(channel(exr, names[k]), nullptr) << names[k];
+    EXPECT_NEAR(channel(exr, names[k])->pixels[centre], expected[k], 1e-4f) << names[k];
+    EXPECT_EQ(channel(exr, names[k])->pixels[0], 0.0f) << names[k];
+  }
+}
+
 std::string fileText(const fs::path& file) { return candela::readFileBytes(file.string()); }
 
 // --crop renders that part of the image, each pixel and pass as the whole image's render has
@@ -258,8 +273,8 @@ TEST_F(CliAovTest, UnknownPassIsAUsageErrorListingTheKnownOnes) {
   EXPECT_EQ(err,
             "candela: error: --aov: unknown render pass \"nromal\"; the passes are: depth, "
             "distance, normal, normal_camera, albedo, position, instance, material, flow, "
-            "backward_flow, direct, emission, alpha, uv; and beside the image camera (the "
-            "camera's "
+            "backward_flow, direct, emission, alpha, uv, object_coordinates; and beside the "
+            "image camera (the camera's "
             "matrices) and poses (each instance's pose)\n");
   EXPECT_FALSE(fs::exists(path("out.png")));
 }

@@ -28,7 +28,7 @@ struct UvRender {
 // line and Python do when the pass is asked for).
 UvRender renderUv(const std::string& json, const std::string& baseDir, bool forPass = true) {
   SceneDesc desc = parseSceneText(json, "test.json", baseDir);
-  if (forPass) keepUvsForPass(desc);
+  if (forPass) layOutForPasses(desc, {Aov::Uv});
   UvRender r{flattenScene(desc), ImageLayer()};
   RenderOptions options;
   options.aovs = true;
@@ -117,7 +117,7 @@ TEST(UvPass, TheNextFramesVerticesAreLaidOutAsTheFlattenedFrames) {
     "objects": [{"file": "quad.obj", "color": 0.5}]})",
                                   "test.json", dir.path());
   const SceneDesc next = desc;
-  keepUvsForPass(desc);
+  layOutForPasses(desc, {Aov::Uv});
   EXPECT_EQ(placedVertices(next.objects[0], desc.objects[0]).size(),
             flattenScene(desc).positions.size());
   EXPECT_EQ(placedVertices(next.objects[0], next.objects[0]).size(), 6u);

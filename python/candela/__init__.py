@@ -187,9 +187,9 @@ class Scene:
 
         aovs: render passes to return as well (docs/aovs.md): "depth", "distance", "normal",
         "normal_camera", "albedo", "position", "instance", "material", "flow", "direct",
-        "emission", "alpha", "backward_flow", "uv". With aovs the result is a dict: "image" the
-        radiance, and one array per pass, (height, width) float32 for depth, distance and alpha,
-        (height, width, 2) float32 for flow, backward_flow and uv,
+        "emission", "alpha", "backward_flow", "uv", "object_coordinates". With aovs the result
+        is a dict: "image" the radiance, and one array per pass, (height, width) float32 for
+        depth, distance and alpha, (height, width, 2) float32 for flow, backward_flow and uv,
         (height, width, 3) float32 for the others, (height, width) uint32 for the ids. An unknown
         pass name raises ValueError.
 

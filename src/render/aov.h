@@ -33,6 +33,7 @@ struct FirstHit {
   Vec3 direct{0.0f};
   Vec3 emission{0.0f};
   Vec2 uv;                // texture coordinates (geometry/surface_uv.h), when `hit`
+  Vec3 objectCoordinates{0.0f};  // render/object_coordinates.h, when `hit`
   uint32_t material = 0;  // flattened material index, valid when `hit`
   uint32_t prim = 0;      // the primitive hit and where on it (geometry/ray.h), when `hit`
   float b1 = 0, b2 = 0;
@@ -60,6 +61,7 @@ struct AovPixel {
   Vec3 emissionSum{0.0f};  // likewise
   float distanceSum = 0.0f;  // |position - camera centre|, over samples that hit
   Vec2 uvSum;                // over samples that hit
+  Vec3 objectCoordinatesSum{0.0f};  // over samples that hit
   Vec2 flowSum;              // over samples whose flow is defined (render/flow.h)
   uint32_t flowSamples = 0;
   Vec2 backwardFlowSum;  // likewise, towards the previous frame
@@ -91,6 +93,7 @@ inline Vec3 meanOverSamples(const AovPixel& pixel, const Vec3& sum) {
   X(emissionSum, "emission_sum", float, 3, Added)                     \
   X(distanceSum, "distance_sum", float, 1, Added)                     \
   X(uvSum, "uv_sum", float, 2, Added)                                 \
+  X(objectCoordinatesSum, "object_coordinates_sum", float, 3, Added)  \
   X(flowSum, "flow_sum", float, 2, Added)                             \
   X(flowSamples, "flow_samples", uint32_t, 1, Added)                  \
   X(backwardFlowSum, "backward_flow_sum", float, 2, Added)            \
@@ -138,6 +141,7 @@ CANDELA_HDI void addAovSample(AovPixel* pixel, const FirstHit& first, float jx, 
     pixel->normalSum += first.normal;
     pixel->distanceSum += length(first.position - eye);
     pixel->uvSum = pixel->uvSum + first.uv;
+    pixel->objectCoordinatesSum += first.objectCoordinates;
     ++pixel->hits;
   }
   const float dx = jx - 0.5f, dy = jy - 0.5f, d2 = dx * dx + dy * dy;

@@ -33,6 +33,7 @@ const std::vector<AovInfo>& aovTable() {
       {Aov::Emission, "emission", {"R", "G", "B"}, false},
       {Aov::Alpha, "alpha", {"A"}, false},
       {Aov::Uv, "uv", {"U", "V"}, false},
+      {Aov::ObjectCoordinates, "object_coordinates", {"X", "Y", "Z"}, false},
   };
   return table;
 }
@@ -114,6 +115,8 @@ void resolvePixel(Aov aov, const SceneData& scene, const AovPixel& p, float* out
       out[0] = p.uvSum.x * invHits;
       out[1] = p.uvSum.y * invHits;
       return;
+    case Aov::ObjectCoordinates:
+      return put(p.objectCoordinatesSum * invHits);
   }
 }
 

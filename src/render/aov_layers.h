@@ -26,7 +26,8 @@ enum class Aov {
   Direct,
   Emission,
   Alpha,
-  Uv
+  Uv,
+  ObjectCoordinates
 };
 
 // "depth", "normal_camera", ...

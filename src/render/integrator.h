@@ -26,6 +26,7 @@
 #include "render/material_mix.h"
 #include "render/medium.h"
 #include "render/normal_map.h"
+#include "render/object_coordinates.h"
 #include "render/path_branch.h"
 #include "render/phase_function.h"
 #include "render/ray_counters.h"
@@ -402,6 +403,7 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
       first->position = sp.p;
       first->normal = facingNormal(wo, sp.ng, sp.ns);
       first->uv = surfaceUv(scene, hit, sp);
+      first->objectCoordinates = objectCoordinatesAt(scene, hit, sp);
       first->material = sp.material;
       first->prim = hit.prim;
       first->b1 = hit.b1;

@@ -41,6 +41,9 @@ namespace candela {
 // by roughness level where some sheen's roughness is textured (render/surface_layers.h), else
 // nothing. vertexColors is empty or parallel to
 // positions: the linear colour that tints a mesh vertex's materials (1 for vertices without).
+// objectCoordinates is empty or parallel to positions: each vertex's place in its object's frame,
+// normalised to [0, 1] over the object's box, for the object_coordinates pass
+// (render/object_coordinates.h).
 // lightPoses holds the poses of the point lights that move while the shutter is open, each
 // light's at every motionTimes from its Light::shape on (render/light_motion.h).
 // cameraPoses is empty, or the camera's poses across the exposure of a motion-blurred frame
@@ -65,6 +68,7 @@ namespace candela {
   X(float, plasticCoats, plasticCoatCount, Values)                           \
   X(float, sheenTables, sheenTableCount, Values)                             \
   X(Vec3, vertexColors, vertexColorCount, Structure)                         \
+  X(Vec3, objectCoordinates, objectCoordinateCount, Structure)               \
   X(CameraPose, cameraPoses, cameraPoseCount, Values)
 
 // Every array of the kernel's scene: SceneData, SceneData::view and the CUDA upload expand

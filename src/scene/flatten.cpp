@@ -104,6 +104,25 @@ void placeVertices(const MeshDesc& mesh, const MeshLayout& layout, const Vec3& p
   for (uint32_t v : layout.splitSources) out->push_back((*out)[base + v]);
 }
 
+// Where each vertex of `mesh` laid out by `layout` (its own, then its splits) lies in the mesh's
+// box, from 0 to 1 along each axis (0.5 along an axis the box is flat in), appended to *out: the
+// object_coordinates pass's (render/object_coordinates.h).
+void addObjectCoordinates(const MeshDesc& mesh, const MeshLayout& layout, PaddedVector<Vec3>* out) {
+  Vec3 lo(0.0f), hi(0.0f);
+  for (size_t i = 0; i < mesh.positions.size(); ++i) {
+    lo = i == 0 ? mesh.positions[i] : min(lo, mesh.positions[i]);
+    hi = i == 0 ? mesh.positions[i] : max(hi, mesh.positions[i]);
+  }
+  const size_t base = out->size();
+  for (const Vec3& p : mesh.positions) {
+    Vec3 c(0.5f);
+    for (int axis = 0; axis < 3; ++axis)
+      if (hi[axis] > lo[axis]) c[axis] = (p[axis] - lo[axis]) / (hi[axis] - lo[axis]);
+    out->push_back(c);
+  }
+  for (uint32_t v : layout.splitSources) out->push_back((*out)[base + v]);
+}
+
 // The normal of an object's vertex of corner c (rotation r, `scale`): "none" without one.
 OctNormal placedNormal(const MeshDesc& mesh, const MeshLayout::Corner& c, const Mat3& r,
                        const Vec3& scale) {
@@ -168,8 +187,8 @@ void addObjectMotion(SceneData& s, const ObjectDesc& obj, const MeshLayout& layo
 // leaves them) the colour 1. With `geometry` false only the object's materials are appended (see
 // refreshSceneValues); with it, the object's place (s.meshInstances) too, and in *flattened its
 // mesh and layout (which `layouts` keeps).
-void addObject(SceneData& s, const ObjectDesc& obj, bool geometry, MeshLayouts& layouts,
-               FlattenedObject* flattened) {
+void addObject(SceneData& s, const ObjectDesc& obj, bool geometry, bool objectCoordinates,
+               MeshLayouts& layouts, FlattenedObject* flattened) {
   const MeshDesc& mesh = *obj.mesh;
   const uint32_t materialBase =
       obj.material ? addMaterials(s, &*obj.material, 1, obj.mixParts)
@@ -213,6 +232,10 @@ void addObject(SceneData& s, const ObjectDesc& obj, bool geometry, MeshLayouts& 
     s.uvs.resize(base, Vec2());  // earlier vertices without uvs
     for (const MeshLayout::Corner& c : layout.corners)
       s.uvs.push_back(c.t >= 0 ? mesh.uvs[uint32_t(c.t)] : Vec2());
+  }
+  if (objectCoordinates) {  // in the mesh as its file binds it, however an animation poses it
+    s.objectCoordinates.resize(base, Vec3(0.0f));
+    addObjectCoordinates(obj.restMesh ? *obj.restMesh : mesh, layout, &s.objectCoordinates);
   }
   if (usesVertexColors(obj)) {
     s.vertexColors.resize(base, Vec3(1.0f));  // earlier vertices without colours
@@ -281,8 +304,10 @@ void addLight(SceneData& s, const LightDesc& d, bool geometry) {
   s.lights.push_back(light);
 }
 
-// A rectangle light's two triangles, of its material (`material`, as addLight appended it).
-void addRectangleLight(SceneData& s, const LightDesc& d, uint32_t material) {
+// A rectangle light's two triangles, of its material (`material`, as addLight appended it); with
+// `objectCoordinates`, its corners' places in its square (0.5 across it).
+void addRectangleLight(SceneData& s, const LightDesc& d, uint32_t material,
+                       bool objectCoordinates) {
   const uint32_t base = uint32_t(s.positions.size());
   Vec3 corners[4];
   rectangleCorners(d, corners);
@@ -292,6 +317,12 @@ void addRectangleLight(SceneData& s, const LightDesc& d, uint32_t material) {
     s.uvs.resize(base, Vec2());  // earlier vertices without uvs
     s.uvs.insert(s.uvs.end(),
                  {Vec2(0.0f, 0.0f), Vec2(1.0f, 0.0f), Vec2(1.0f, 1.0f), Vec2(0.0f, 1.0f)});
+  }
+  if (objectCoordinates) {
+    s.objectCoordinates.resize(base, Vec3(0.0f));
+    s.objectCoordinates.insert(s.objectCoordinates.end(),
+                               {Vec3(0.0f, 0.0f, 0.5f), Vec3(1.0f, 0.0f, 0.5f),
+                                Vec3(1.0f, 1.0f, 0.5f), Vec3(0.0f, 1.0f, 0.5f)});
   }
   s.triangles.push_back(Triangle{{base, base + 1, base + 2}, material});
   s.triangles.push_back(Triangle{{base, base + 2, base + 3}, material});
@@ -394,12 +425,13 @@ void addInstances(SceneData& s, const SceneDesc& desc, bool geometry) {
   MeshLayouts layouts;  // kept until the repeats are found: `flattened` points into it
   if (geometry) reserveMeshes(s, desc, layouts);
   for (uint32_t i = 0; i < desc.objects.size(); ++i) {
-    addObject(s, desc.objects[i], geometry, layouts, &flattened[i]);
+    addObject(s, desc.objects[i], geometry, desc.objectCoordinatesPass, layouts, &flattened[i]);
     tagInstance(s, number.firstObject + i);
   }
   if (geometry)  // after the objects', which the objects' places (s.meshInstances) count from
     for (uint32_t i = 0; i < desc.lights.size(); ++i)
-      if (desc.lights[i].rectangle) addRectangleLight(s, desc.lights[i], lightMaterials[i]);
+      if (desc.lights[i].rectangle)
+        addRectangleLight(s, desc.lights[i], lightMaterials[i], desc.objectCoordinatesPass);
   // Only where no own BVH will reorder the triangles (which voids the objects' places): an
   // engine of its own traces the scene.
   if (geometry) {
@@ -412,6 +444,8 @@ void addInstances(SceneData& s, const SceneDesc& desc, bool geometry) {
   if (geometry && !s.normals.empty()) s.normals.resize(s.positions.size(), OctNormal());
   if (geometry && !s.uvs.empty()) s.uvs.resize(s.positions.size(), Vec2());
   if (geometry && !s.vertexColors.empty()) s.vertexColors.resize(s.positions.size(), Vec3(1.0f));
+  if (geometry && desc.objectCoordinatesPass)
+    s.objectCoordinates.resize(s.positions.size(), Vec3(0.0f));
   if (geometry) addMotionTimes(s, desc);
 }
 

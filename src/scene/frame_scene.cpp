@@ -26,6 +26,7 @@ void writeKeys(const SceneDesc& desc, std::string* geometry, std::string* struct
     shape.add(value);
   };
   both(desc.ownBvh);
+  both(desc.objectCoordinatesPass);
   both(desc.spheres.size());
   for (const SphereDesc& s : desc.spheres) {
     full.add(s.position);

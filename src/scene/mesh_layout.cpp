@@ -30,8 +30,10 @@ bool usesUvs(const ObjectDesc& obj) {
   return !obj.mesh->uvs.empty() && (obj.uvPass || anyMaterialOf(obj, readsUvs));
 }
 
-void keepUvsForPass(SceneDesc& desc) {
-  for (ObjectDesc& object : desc.objects) object.uvPass = true;
+void layOutForPasses(SceneDesc& desc, const std::vector<Aov>& aovs) {
+  if (hasAov(aovs, Aov::Uv))
+    for (ObjectDesc& object : desc.objects) object.uvPass = true;
+  if (hasAov(aovs, Aov::ObjectCoordinates)) desc.objectCoordinatesPass = true;
 }
 
 bool usesVertexColors(const ObjectDesc& obj) {

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "geometry/shapes.h"
+#include "render/aov_layers.h"
 #include "scene/scene_desc.h"
 
 namespace candela {
@@ -51,9 +52,10 @@ bool usesNormals(const ObjectDesc& obj);
 // nothing reads would split vertices at every seam for nothing (Sponza's file: 69,013 vertices for
 // 39,999 positions).
 bool usesUvs(const ObjectDesc& obj);
-// Marks every object of `desc` for the uv pass (render/aov_layers.h, Aov::Uv): their meshes'
-// uvs are kept.
-void keepUvsForPass(SceneDesc& desc);
+// Marks `desc` for the passes of `aovs` that need more laid out than the image does: the uv pass
+// every object's uvs (ObjectDesc::uvPass), the object_coordinates pass each vertex's place in its
+// object (SceneDesc::objectCoordinatesPass).
+void layOutForPasses(SceneDesc& desc, const std::vector<Aov>& aovs);
 // Whether an object's vertices carry its mesh's colours: the file has them and the object does
 // not leave them ("vertex_colors": false).
 bool usesVertexColors(const ObjectDesc& obj);

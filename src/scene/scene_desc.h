@@ -138,6 +138,9 @@ struct ObjectDesc {
   std::shared_ptr<const MeshDesc> mesh = std::make_shared<const MeshDesc>();
   // Null, or what moves the mesh's vertices with time (sceneAtFrame puts each frame's in mesh).
   std::shared_ptr<const MeshMotion> meshMotion;
+  // Null, or where a glTF animation poses `mesh`: the mesh as its file binds it, the frame of the
+  // object_coordinates pass (docs/aovs.md), which stays on the surface however it is posed.
+  std::shared_ptr<const MeshDesc> restMesh;
   // Empty, or its placement at each of SceneDesc::shutterTimes: it moves while the shutter is
   // open.
   std::vector<ObjectPose> shutterPoses;
@@ -325,6 +328,9 @@ struct SceneDesc {
   RenderSettings render;  // the file's camera.spp is render.spp
   // Which of candela's own BVHs flattening builds (images are the same with each).
   OwnBvh ownBvh = OwnBvh::Sah;
+  // The object_coordinates pass is rendered: flattening lays out each vertex's place in its
+  // object's frame (layOutForPasses).
+  bool objectCoordinatesPass = false;
   OutputDesc output;
   std::vector<SphereDesc> spheres;
   std::vector<ObjectDesc> objects;

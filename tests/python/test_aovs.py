@@ -67,7 +67,8 @@ def test_flow_of_an_animated_frame_is_an_h_w_2_array_in_pixels():
 
 
 ALL_PASSES = ["depth", "distance", "normal", "normal_camera", "albedo", "position", "instance",
-              "material", "flow", "backward_flow", "direct", "emission", "alpha", "uv"]
+              "material", "flow", "backward_flow", "direct", "emission", "alpha", "uv",
+              "object_coordinates"]
 
 
 @pytest.mark.parametrize("animated", [True, False], ids=["animation frame", "still scene"])
@@ -294,4 +295,32 @@ def test_uv_is_the_first_hits_texture_coordinates(tmp_path):
     centres = (np.arange(16) + 0.5) / 16
     np.testing.assert_allclose(uv[..., 0], np.tile(centres, (16, 1)), atol=1e-5)
     np.testing.assert_allclose(uv[..., 1], np.tile(centres[::-1, None], (1, 16)), atol=1e-5)
+
+
+def test_object_coordinates_stay_on_the_object_wherever_it_moves(tmp_path):
+    # The same quad, moved and scaled between two frames: each pixel's coordinates are its
+    # point taken back into the quad's file and over its box, whatever the frame's placement.
+    (tmp_path / "quad.obj").write_text("v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nf 1 2 3 4\n")
+    scene = candela.Scene.from_dict({
+        "camera": {"width": 16, "height": 16, "position": [0, 0, 5], "spp": 1,
+                   "projection": "orthographic", "view_width": 4},
+        "render": {"antialiasing": False},
+        "objects": [{"id": "quad", "file": "quad.obj", "color": 0.5}],
+        "animation": {"frames": 2, "tracks": [
+            {"target": "quad", "property": "position", "keys": [[0, [0, 0, 0]], [1, [1, 0, 0]]]},
+            {"target": "quad", "property": "scale", "keys": [[0, 1], [1, 0.5]]}]}},
+        base_dir=tmp_path)
+    first = scene.frame(0).render(backend="cpu", aovs=["object_coordinates"])
+    second = scene.frame(1).render(backend="cpu", aovs=["object_coordinates"])
+    assert first["object_coordinates"].shape == (16, 16, 3)
+    # Pixel centres at x = -1.875 + 0.25 i: frame 0's quad spans pixels 4-11, frame 1's 10-13;
+    # pixel 12's point, x = 1.125, lies outside frame 0's quad (the background's 0), and at
+    # (1.125 - 1) / 0.5 = 0.25 in frame 1's, (0.25 + 1) / 2 = 0.625 over its box.
+    oc0, oc1 = first["object_coordinates"], second["object_coordinates"]
+    np.testing.assert_allclose(oc0[8, 4:12, 0], (np.arange(4, 12) * 0.25 - 1.875 + 1) / 2,
+                               atol=1e-5)
+    np.testing.assert_allclose(oc1[8, 10:14, 0], ((np.arange(10, 14) * 0.25 - 1.875 - 1) / 0.5
+                                                  + 1) / 2, atol=1e-5)
+    assert oc0[8, 12].tolist() == [0, 0, 0]
+    np.testing.assert_allclose(oc1[8, 12], [0.625, oc1[8, 12, 1], 0.5], atol=1e-5)
 

@@ -150,7 +150,7 @@ void applyOverrides(const RenderCommandOptions& options, Backend backend, CpuEng
   if (options.spp) desc->render.spp = *options.spp;
   if (options.seed) desc->render.seed = *options.seed;
   if (options.maxDepth) desc->render.maxDepth = *options.maxDepth;
-  if (hasAov(choosePassFiles(options).aovs, Aov::Uv)) keepUvsForPass(*desc);
+  layOutForPasses(*desc, choosePassFiles(options).aovs);
   if (options.noBvh)
     desc->ownBvh = OwnBvh::Flat;
   else if (!needsOwnBvh(backend, engine))

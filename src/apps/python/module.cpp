@@ -240,7 +240,7 @@ nb::object render(const Scene& scene, std::optional<uint32_t> spp, std::optional
   if (passSums && !aovNames) aovNames.emplace();
   const std::vector<Aov> aovs = aovNames ? aovsFromNames(*aovNames) : std::vector<Aov>();
   SceneDesc desc = stillWith(scene, spp, seed, maxDepth, crop);
-  if (hasAov(aovs, Aov::Uv)) keepUvsForPass(desc);
+  layOutForPasses(desc, aovs);
   SampleRange samples;
   if (range) {
     samples = {std::get<0>(*range), std::get<1>(*range)};

@@ -90,6 +90,7 @@ void playGltfAnimation(SceneDesc& scene, size_t index, const std::string& writte
     failAt(scene.file, where, error.what());
   }
   if (!object.meshMotion) return;
+  object.restMesh = object.mesh;
   if (scene.animation) {
     scene.animation->meshesMove = true;
     return;
