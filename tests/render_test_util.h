@@ -72,6 +72,20 @@ inline std::array<double, 3> pixelCentreDirection(uint32_t width, uint32_t heigh
   return {d[0] / n, d[1] / n, d[2] / n};
 }
 
+// Where, as a unit direction from the sphere's centre, the ray through the centre of pixel (x, y)
+// of a camera `width` x `height` pixels, `fovDegrees` across, at (distance, 0, 0) looking at the
+// origin (up +y) meets a sphere of `radius` at the origin, in double precision. The camera looks
+// along the world's -x with its right along -z: the pixel's direction (cx, cy, cz) in the
+// camera's axes is (cz, cy, -cx) in the world's.
+inline std::array<double, 3> sphereHitSeenFromPlusX(uint32_t width, uint32_t height,
+                                                    double fovDegrees, double distance,
+                                                    double radius, uint32_t x, uint32_t y) {
+  const std::array<double, 3> c = pixelCentreDirection(width, height, fovDegrees, x, y);
+  const double b = distance * c[2];
+  const double t = -b - std::sqrt(b * b - (distance * distance - radius * radius));
+  return {(distance + t * c[2]) / radius, t * c[1] / radius, -t * c[0] / radius};
+}
+
 // The length of the chord that the line from `origin` along the unit direction `d` cuts through
 // the ball of `centre` and `radius` (0 where it misses), in double precision.
 inline double chordThroughBall(const std::array<double, 3>& origin, const std::array<double, 3>& d,

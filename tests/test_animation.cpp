@@ -702,9 +702,8 @@ TEST(SceneUpdate, KeyedGroupsAreRewrittenByTheirOwnChangesOnly) {
   EXPECT_TRUE(mayRewrite(SceneUpdate{}, R::TexturePool));
 }
 
-// Two grids of triangles far apart, then moved into each other: refitting would leave boxes that
-// overlap almost entirely, so the SAH cost says rebuild; a small move is refitted.
-TEST(FrameScene, RefitUnlessTheTreeDegradesThenRebuild) {
+// A 10 x 10 grid of unit squares in the plane z = 0, two triangles each.
+std::shared_ptr<const MeshDesc> gridOfTriangles() {
   auto grid = std::make_shared<MeshDesc>();
   for (int i = 0; i <= 10; ++i)
     for (int j = 0; j <= 10; ++j) grid->positions.push_back(Vec3(float(i), float(j), 0.0f));
@@ -715,6 +714,13 @@ TEST(FrameScene, RefitUnlessTheTreeDegradesThenRebuild) {
       grid->triangles.push_back(MeshTriangle{{b, b + 1, a + 1}, {-1, -1, -1}, 0});
     }
   grid->materials = {Material{}};
+  return grid;
+}
+
+// Two grids of triangles far apart, then moved into each other: refitting would leave boxes that
+// overlap almost entirely, so the SAH cost says rebuild; a small move is refitted.
+TEST(FrameScene, RefitUnlessTheTreeDegradesThenRebuild) {
+  const std::shared_ptr<const MeshDesc> grid = gridOfTriangles();
   SceneDesc scene;
   auto map = std::make_shared<ImageRGB>(4, 2);
   map->set(2, 1, Vec3(1, 2, 3));
@@ -749,16 +755,7 @@ TEST(FrameScene, RefitUnlessTheTreeDegradesThenRebuild) {
 // The same move under a ground sphere of radius 1000, whose box dwarfs the grids': the root's
 // cost barely moves, but that of the grids' part of the tree grows, and the refit is rejected.
 TEST(FrameScene, ADegradedSubtreeIsRebuiltUnderAHugeSphere) {
-  auto grid = std::make_shared<MeshDesc>();
-  for (int i = 0; i <= 10; ++i)
-    for (int j = 0; j <= 10; ++j) grid->positions.push_back(Vec3(float(i), float(j), 0.0f));
-  for (uint32_t i = 0; i < 10; ++i)
-    for (uint32_t j = 0; j < 10; ++j) {
-      const uint32_t a = i * 11 + j, b = a + 11;
-      grid->triangles.push_back(MeshTriangle{{a, b, a + 1}, {-1, -1, -1}, 0});
-      grid->triangles.push_back(MeshTriangle{{b, b + 1, a + 1}, {-1, -1, -1}, 0});
-    }
-  grid->materials = {Material{}};
+  const std::shared_ptr<const MeshDesc> grid = gridOfTriangles();
   SceneDesc scene;
   SphereDesc ground;
   ground.position = Vec3(0, -1000, 0);

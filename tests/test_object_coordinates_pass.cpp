@@ -82,12 +82,8 @@ TEST(ObjectCoordinatesPass, ASpheresPointsAreOnItsUnitSpheresBox) {
                                                 ".");
   for (uint32_t y : {3u, 7u, 10u})
     for (uint32_t x : {4u, 7u, 11u}) {
-      // The camera looks along the world's -x with its right along -z: the pixel's direction
-      // (cx, cy, cz) in the camera's axes is (cz, cy, -cx) in the world's.
-      const std::array<double, 3> c = test::pixelCentreDirection(size, size, fov, x, y);
-      const double b = distance * c[2];
-      const double t = -b - std::sqrt(b * b - (distance * distance - radius * radius));
-      const double d[3] = {(distance + t * c[2]) / radius, t * c[1] / radius, -t * c[0] / radius};
+      const std::array<double, 3> d =
+          test::sphereHitSeenFromPlusX(size, size, fov, distance, radius, x, y);
       for (int k = 0; k < 3; ++k) EXPECT_NEAR(r.at(x, y)[k], 0.5 * (d[k] + 1.0), 1e-4) << x << y;
     }
   EXPECT_NEAR(r.at(7, 7).x, 1.0f, 1e-4f);

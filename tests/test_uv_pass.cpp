@@ -90,14 +90,10 @@ TEST(UvPass, ASpheresUvsFollowItsMapping) {
                               ".");
   for (uint32_t y : {3u, 7u, 9u})
     for (uint32_t x : {4u, 7u, 10u}) {
-      // The camera looks along the world's -x with its right along -z: the pixel's direction
-      // (cx, cy, cz) in the camera's axes is (cz, cy, -cx) in the world's.
-      const std::array<double, 3> c = test::pixelCentreDirection(size, size, fov, x, y);
-      const double t = distance * -c[2] -
-                       std::sqrt(distance * distance * c[2] * c[2] - (distance * distance - 1.0));
-      const double px = distance + t * c[2], py = t * c[1], pz = -t * c[0];
-      const double u = 0.5 + std::atan2(px, -pz) / (2.0 * 3.14159265358979323846);
-      const double v = 1.0 - std::acos(py) / 3.14159265358979323846;
+      const std::array<double, 3> d =
+          test::sphereHitSeenFromPlusX(size, size, fov, distance, 1.0, x, y);
+      const double u = 0.5 + std::atan2(d[0], -d[2]) / (2.0 * 3.14159265358979323846);
+      const double v = 1.0 - std::acos(d[1]) / 3.14159265358979323846;
       EXPECT_NEAR(r.at(x, y).x, u, 2e-4) << x << "," << y;
       EXPECT_NEAR(r.at(x, y).y, v, 2e-4) << x << "," << y;
     }
