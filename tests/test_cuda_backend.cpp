@@ -29,6 +29,7 @@
 #include "scene/animation.h"
 #include "scene/flow_motion.h"
 #include "scene/frame_scene.h"
+#include "scene/mesh_layout.h"
 #include "scene/read/scene_loader.h"
 #endif
 
@@ -477,7 +478,8 @@ TEST(CudaBackend, PassesMatchCpuWithinRounding) {
       {"target": "camera", "property": "position", "keys": [[0, [0, 1.5, 6]], [1, [0.2, 1.4, 6]]]},
       {"target": "ball", "property": "position", "keys": [[0, [-1.2, 0.5, 0]], [1, [-1, 0.7, 0.1]]]}]})");
   const SceneDesc desc = parseSceneText(json, "test.json", ".");
-  const SceneDesc now = sceneAtFrame(desc, 0);
+  SceneDesc now = sceneAtFrame(desc, 0);
+  layOutForPasses(now, {Aov::Uv, Aov::ObjectCoordinates});
   SceneData data = flattenScene(now);
   applyFlowMotion(data, flowMotion(now, sceneAtFrame(desc, 1)));
   // The backward pass's arithmetic, with frame 1 standing in for a frame before.
@@ -516,6 +518,8 @@ TEST(CudaBackend, PassesMatchCpuWithinRounding) {
         {"directSum", close3(c.directSum, g.directSum)},
         {"emissionSum", close3(c.emissionSum, g.emissionSum)},
         {"distanceSum", close(c.distanceSum, g.distanceSum)},
+        {"uvSum", close(c.uvSum.x, g.uvSum.x) && close(c.uvSum.y, g.uvSum.y)},
+        {"objectCoordinatesSum", close3(c.objectCoordinatesSum, g.objectCoordinatesSum)},
         {"flowSum", close(c.flowSum.x, g.flowSum.x) && close(c.flowSum.y, g.flowSum.y)},
         {"backwardFlowSamples", c.backwardFlowSamples == g.backwardFlowSamples},
         {"backwardFlowSum", close(c.backwardFlowSum.x, g.backwardFlowSum.x) &&
