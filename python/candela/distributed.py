@@ -16,7 +16,8 @@ from typing import Dict, Iterable, List, Optional, Sequence, Union
 
 import numpy as np
 
-from . import Scene, _candela, _denoised, _pass_names, _passes_to_render, _render_counts
+from . import (Scene, _candela, _crop, _denoised, _pass_names, _passes_to_render,
+               _render_counts)
 
 
 def _ray():
@@ -74,15 +75,17 @@ def _render_frame(spec: dict, path: str, spp, backend: str, threads: int,
 
 
 def _render_slice(spec: dict, spp: int, seed, first: int, count: int, backend: str,
-                  threads: int, passes: Optional[list] = None, max_depth: Optional[int] = None):
-    """Task body: samples [first, first + count) of the image; with passes, {"image", "sums"}:
-    the mean image and the passes' per-pixel sums, which merge_pass_sums adds."""
+                  threads: int, passes: Optional[list] = None, max_depth: Optional[int] = None,
+                  crop: Optional[tuple] = None):
+    """Task body: samples [first, first + count) of the image (of its crop); with passes,
+    {"image", "sums"}: the mean image and the passes' per-pixel sums, which merge_pass_sums
+    adds."""
     scene = Scene.from_spec(spec)
     if passes is None:
         return scene.render(spp=spp, seed=seed, backend=backend, sample_range=(first, count),
-                            threads=threads, max_depth=max_depth)
+                            threads=threads, max_depth=max_depth, crop=crop)
     return scene._core.render(spp, seed, backend, (first, count), threads, passes, True,
-                              max_depth=max_depth)
+                              max_depth=max_depth, crop=crop)
 
 
 # How each per-pixel sum merges over sample ranges (render/aov.h's CANDELA_AOV_PIXEL_FIELDS):
@@ -178,10 +181,11 @@ def render_image(scene: Union[Scene, str], spp: Optional[int] = None, chunks: in
                  address: Optional[str] = None, *, seed: Optional[int] = None,
                  backend: str = "auto", max_retries: int = 3, cpus_per_task: int = 1,
                  aovs: Optional[Sequence[str]] = None, denoise: bool = False,
-                 max_depth: Optional[int] = None) -> Union[np.ndarray, Dict[str, np.ndarray]]:
+                 max_depth: Optional[int] = None,
+                 crop: Optional[Sequence[int]] = None) -> Union[np.ndarray, Dict[str, np.ndarray]]:
     """Renders one image as `chunks` Ray tasks, each a slice of the sample indices, and merges
-    them weighted by sample count: equal to scene.render(spp, seed, max_depth=max_depth) to
-    float rounding.
+    them weighted by sample count: equal to scene.render(spp, seed, max_depth=max_depth,
+    crop=crop) to float rounding.
 
     aovs and denoise as in Scene.render, with the same result: the tasks return their passes'
     per-pixel sums (merge_pass_sums), which merge as one render's would, so the filtered passes
@@ -193,6 +197,7 @@ def render_image(scene: Union[Scene, str], spp: Optional[int] = None, chunks: in
     names = _pass_names(aovs)
     passes = _passes_to_render(names, denoise)
     spp, seed, max_depth = _render_counts(spp, seed, max_depth)
+    crop = _crop(crop)
     spp = scene.spp if spp is None else spp
     ray = _connect(address)
     backend = _task_backend(ray, backend)
@@ -200,7 +205,8 @@ def render_image(scene: Union[Scene, str], spp: Optional[int] = None, chunks: in
     threads = 0 if "num_gpus" in options else cpus_per_task
     task = ray.remote(_render_slice).options(**options)
     slices = split_samples(spp, chunks)
-    refs = [task.remote(scene.spec, spp, seed, first, count, backend, threads, passes, max_depth)
+    refs = [task.remote(scene.spec, spp, seed, first, count, backend, threads, passes, max_depth,
+                        crop)
             for first, count in slices]
     total = None  # of the image's size, or its crop's
     sums = None
@@ -215,10 +221,10 @@ def render_image(scene: Union[Scene, str], spp: Optional[int] = None, chunks: in
     if passes is None:
         return image
     result = {"image": image}
-    result.update(scene._core.passes_from_sums(sums, passes))
+    result.update(scene._core.passes_from_sums(sums, passes, crop=crop))
     if not denoise:
         return result
     # The emitters seen are sampled again here, as Scene.render does: camera rays alone, a small
     # part of the render's work (backends/seen_emitters.h).
     return _denoised(result, names, seen_emission=scene._core.seen_emitters(
-        result["emission"], spp, seed, "auto", 0))
+        result["emission"], spp, seed, "auto", 0, crop=crop))

@@ -154,3 +154,11 @@ def test_render_image_of_a_crop_is_that_part_of_the_image(local_ray):
     merged = distributed.render_image(scene, chunks=2, backend="cpu")
     assert merged.shape == (6, 9, 3)
     np.testing.assert_allclose(merged, scene.render(backend="cpu"), rtol=1e-5, atol=1e-6)
+    # The keyword takes the scene's whole image's part, passes too, as Scene.render's does.
+    whole = candela.Scene.from_dict(tiny_scene(spp=4, size=20))
+    parts = distributed.render_image(whole, chunks=2, backend="cpu", crop=(3, 4, 9, 6),
+                                     aovs=["depth", "instance"])
+    single = whole.render(backend="cpu", crop=(3, 4, 9, 6), aovs=["depth", "instance"])
+    np.testing.assert_allclose(parts["image"], merged, rtol=1e-5, atol=1e-6)
+    np.testing.assert_allclose(parts["depth"], single["depth"], rtol=1e-5, atol=1e-6)
+    np.testing.assert_array_equal(parts["instance"], single["instance"])

@@ -317,11 +317,13 @@ nb::object seenEmitters(const Scene& scene, const ImageInput& emission, std::opt
 // The layers of passes `aovNames` from per-pixel sums (sumsToDict's, possibly added over sample
 // ranges) of a render of this scene.
 nb::dict passesFromSums(const Scene& scene, const nb::dict& sums,
-                        const std::vector<std::string>& aovNames) {
+                        const std::vector<std::string>& aovNames, CropArgument crop) {
   const std::vector<Aov> aovs = aovsFromNames(aovNames);
-  // A still scene's description as loaded; only an animation's frame is made (and copied).
+  // A still scene's description as loaded; only an animation's frame, or a crop, is made (and
+  // copied).
   std::optional<SceneDesc> frame;
-  if (scene.desc->animation) frame = scene.still();
+  if (scene.desc->animation || crop)
+    frame = stillWith(scene, std::nullopt, std::nullopt, std::nullopt, crop);
   const SceneData data = flattenPassContext(frame ? *frame : *scene.desc);
   nb::dict out;
   addLayers(makeAovLayers(data, aovs, sumsFromDict(sums, data.camera.height, data.camera.width)),
@@ -506,7 +508,7 @@ NB_MODULE(_candela, m) {
       .def("render", &render, "spp"_a = nb::none(), "seed"_a = nb::none(), "backend"_a = "auto",
            "sample_range"_a = nb::none(), "threads"_a = 0, "aovs"_a = nb::none(),
            "pass_sums"_a = false, "max_depth"_a = nb::none(), "crop"_a = nb::none())
-      .def("passes_from_sums", &passesFromSums, "sums"_a, "aovs"_a)
+      .def("passes_from_sums", &passesFromSums, "sums"_a, "aovs"_a, "crop"_a = nb::none())
       .def("seen_emitters", &seenEmitters, "emission"_a, "spp"_a = nb::none(),
            "seed"_a = nb::none(), "backend"_a = "auto", "threads"_a = 0, "crop"_a = nb::none());
 
