@@ -200,12 +200,11 @@ CLI::App* addRenderCommand(CLI::App& app, RenderCommandOptions* options) {
                   "Also write the render's measured figures (load, BVH build, memory, rays, "
                   "samples/s, peak RSS) to this JSON file; single stills only");
   cmd->add_option("--aov", options->aovs,
-                  "Render passes to write beside the image, comma-separated: depth, distance, "
-                  "normal, normal_camera, albedo, position, instance, material, flow, "
-                  "backward_flow, direct, emission, alpha (in an .exr as layers, else as sibling "
-                  ".pfm files: out.depth.pfm; alpha as the image's A channel, in a .png too); "
-                  "camera and poses write the camera's K and [R|t] and each instance's pose "
-                  "beside them (out.camera.json, out.poses.json)");
+                  "Render passes to write beside the image, comma-separated: " + knownAovNames() +
+                      " (in an .exr as layers, else as sibling .pfm files: out.depth.pfm; alpha "
+                      "as the image's A channel, in a .png too); "
+                      "camera and poses write the camera's K and [R|t] and each instance's pose "
+                      "beside them (out.camera.json, out.poses.json)");
   cmd->add_flag("--denoise", options->denoise,
                 "Denoise the image with Intel Open Image Denoise, its direct and indirect light "
                 "apart, guided by the albedo and normal passes (needs OIDN 2: pip install "
