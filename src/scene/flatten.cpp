@@ -186,7 +186,8 @@ void addObjectMotion(SceneData& s, const ObjectDesc& obj, const MeshLayout& layo
 // uvs the uv (0, 0); one without vertex colours (of a mesh without them, or of an object that
 // leaves them) the colour 1. With `geometry` false only the object's materials are appended (see
 // refreshSceneValues); with it, the object's place (s.meshInstances) too, and in *flattened its
-// mesh and layout (which `layouts` keeps).
+// mesh and layout (which `layouts` keeps). With `objectCoordinates` (the pass is rendered), each
+// vertex's place in its object's box too.
 void addObject(SceneData& s, const ObjectDesc& obj, bool geometry, bool objectCoordinates,
                MeshLayouts& layouts, FlattenedObject* flattened) {
   const MeshDesc& mesh = *obj.mesh;
