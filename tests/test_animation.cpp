@@ -717,20 +717,25 @@ std::shared_ptr<const MeshDesc> gridOfTriangles() {
   return grid;
 }
 
-// Two grids of triangles far apart, then moved into each other: refitting would leave boxes that
-// overlap almost entirely, so the SAH cost says rebuild; a small move is refitted.
-TEST(FrameScene, RefitUnlessTheTreeDegradesThenRebuild) {
+// Two of gridOfTriangles's grids, at x = -60 and x = 50.
+void addTwoGridsApart(SceneDesc& scene) {
   const std::shared_ptr<const MeshDesc> grid = gridOfTriangles();
-  SceneDesc scene;
-  auto map = std::make_shared<ImageRGB>(4, 2);
-  map->set(2, 1, Vec3(1, 2, 3));
-  scene.environment.image = map;
   for (float x : {-60.0f, 50.0f}) {
     ObjectDesc object;
     object.mesh = grid;
     object.position = Vec3(x, 0, 0);
     scene.objects.push_back(object);
   }
+}
+
+// Two grids of triangles far apart, then moved into each other: refitting would leave boxes that
+// overlap almost entirely, so the SAH cost says rebuild; a small move is refitted.
+TEST(FrameScene, RefitUnlessTheTreeDegradesThenRebuild) {
+  SceneDesc scene;
+  auto map = std::make_shared<ImageRGB>(4, 2);
+  map->set(2, 1, Vec3(1, 2, 3));
+  scene.environment.image = map;
+  addTwoGridsApart(scene);
   FrameScene frames;
   frames.prepare(scene);
   EXPECT_EQ(frames.change(), SceneChange::Structure);
@@ -755,18 +760,12 @@ TEST(FrameScene, RefitUnlessTheTreeDegradesThenRebuild) {
 // The same move under a ground sphere of radius 1000, whose box dwarfs the grids': the root's
 // cost barely moves, but that of the grids' part of the tree grows, and the refit is rejected.
 TEST(FrameScene, ADegradedSubtreeIsRebuiltUnderAHugeSphere) {
-  const std::shared_ptr<const MeshDesc> grid = gridOfTriangles();
   SceneDesc scene;
   SphereDesc ground;
   ground.position = Vec3(0, -1000, 0);
   ground.radius = 1000;
   scene.spheres.push_back(ground);
-  for (float x : {-60.0f, 50.0f}) {
-    ObjectDesc object;
-    object.mesh = grid;
-    object.position = Vec3(x, 0, 0);
-    scene.objects.push_back(object);
-  }
+  addTwoGridsApart(scene);
   FrameScene frames;
   const std::vector<BvhNode> built = frames.prepare(scene).nodes;
   const BvhCostProfile profile = bvhCostProfile(built);

@@ -108,10 +108,10 @@ void placeVertices(const MeshDesc& mesh, const MeshLayout& layout, const Vec3& p
 // box, from 0 to 1 along each axis (0.5 along an axis the box is flat in), appended to *out: the
 // object_coordinates pass's (render/object_coordinates.h).
 void addObjectCoordinates(const MeshDesc& mesh, const MeshLayout& layout, PaddedVector<Vec3>* out) {
-  Vec3 lo(0.0f), hi(0.0f);
-  for (size_t i = 0; i < mesh.positions.size(); ++i) {
-    lo = i == 0 ? mesh.positions[i] : min(lo, mesh.positions[i]);
-    hi = i == 0 ? mesh.positions[i] : max(hi, mesh.positions[i]);
+  Vec3 lo = mesh.positions.empty() ? Vec3(0.0f) : mesh.positions[0], hi = lo;
+  for (const Vec3& p : mesh.positions) {
+    lo = min(lo, p);
+    hi = max(hi, p);
   }
   const size_t base = out->size();
   for (const Vec3& p : mesh.positions) {

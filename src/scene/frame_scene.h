@@ -9,7 +9,7 @@
 // transforms or poses changed (objects, spheres or sphere lights moved, turned, scaled or resized;
 // a mesh's vertices and normals moved by its glTF animation, with the same triangles, texture
 // coordinates and colours), the vertices are transformed again and the BVH is refitted in linear
-// time, unless refitting has made the SAH cost of the tree, or of a large subtree, grow past
+// time, unless refitting has made the SAH cost of the tree, or of a large part of it, grow past
 // kRefitCostLimit times that of its last build: then a new BVH is built over the contents the
 // frame has just flattened, as for any other change. Textures enter the keys by their content
 // hashes: a frame with other texels is a new structure. Whatever the change, a frame keeps the last
@@ -28,8 +28,8 @@
 
 namespace candela {
 
-// A refitted tree is rebuilt once its SAH cost, or a large subtree's (bvhCostProfile), exceeds
-// this multiple of the cost at its build.
+// A refitted tree is rebuilt once its SAH cost, or a large part's (bvhCostProfile), exceeds this
+// multiple of the cost at its build.
 constexpr double kRefitCostLimit = 1.5;
 
 class FrameScene {

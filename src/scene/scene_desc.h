@@ -112,7 +112,7 @@ struct ObjectDesc {
   bool smooth = true;
   bool vertexColors = true;  // whether the mesh's vertex colours tint its materials
   // The uv pass is rendered: the mesh's uvs are kept though no material reads them
-  // (keepUvsForPass).
+  // (layOutForPasses).
   bool uvPass = false;
   // Above 0 (degrees): the faces the file gives no normals get them computed, smoothed across
   // edges up to this angle (scene/vertex_normals.h); 0: such faces are flat.

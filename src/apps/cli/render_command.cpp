@@ -139,7 +139,7 @@ CameraCrop parseCrop(const std::string& text) {
 }
 
 void applyOverrides(const RenderCommandOptions& options, Backend backend, CpuEngine engine,
-                    SceneDesc* desc) {
+                    const std::vector<Aov>& aovs, SceneDesc* desc) {
   if (!options.crop.empty()) {
     const CameraCrop crop = parseCrop(options.crop);
     if (const std::optional<std::string> problem =
@@ -150,7 +150,7 @@ void applyOverrides(const RenderCommandOptions& options, Backend backend, CpuEng
   if (options.spp) desc->render.spp = *options.spp;
   if (options.seed) desc->render.seed = *options.seed;
   if (options.maxDepth) desc->render.maxDepth = *options.maxDepth;
-  layOutForPasses(*desc, choosePassFiles(options).aovs);
+  layOutForPasses(*desc, aovs);
   if (options.noBvh)
     desc->ownBvh = OwnBvh::Flat;
   else if (!needsOwnBvh(backend, engine))
@@ -307,7 +307,7 @@ int renderStill(const RenderCommandOptions& options, SceneDesc desc, double load
   const CpuEngine engine = chooseCpuEngine(options, triangleCount(desc), sphereCount(desc));
 
   const std::unique_ptr<OidnDenoiser> denoiser = loadDenoiser(options);
-  applyOverrides(options, backend, engine, &desc);
+  applyOverrides(options, backend, engine, passes.aovs, &desc);
   const auto flattenStart = std::chrono::steady_clock::now();
   // A still does not move: its flow passes are 0 (and NaN nowhere, as both cameras are one). A
   // frame of an animation moves towards the next, and from the previous.

@@ -47,9 +47,10 @@ std::unique_ptr<OidnDenoiser> loadDenoiser(const RenderCommandOptions& options);
 double denoiseTimed(const OidnDenoiser* denoiser, RenderResult& result, const SceneData& scene,
                     Renderer& renderer, const RenderOptions& render);
 
-// Command-line values win over the scene file's (spp, seed, max depth); candela's own BVH is
-// left out where the renderer (`backend` with `engine`) does not trace it.
+// Command-line values win over the scene file's (spp, seed, max depth, crop); candela's own BVH
+// is left out where the renderer (`backend` with `engine`) does not trace it, and what the passes
+// `aovs` need laid out is (layOutForPasses).
 void applyOverrides(const RenderCommandOptions& options, Backend backend, CpuEngine engine,
-                    SceneDesc* desc);
+                    const std::vector<Aov>& aovs, SceneDesc* desc);
 
 }  // namespace candela::cli

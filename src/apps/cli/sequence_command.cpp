@@ -224,7 +224,7 @@ int runSequence(const RenderCommandOptions& options, std::vector<SceneDesc> scen
     spheres = std::max(spheres, sphereCount(scene));
   }
   const CpuEngine engine = chooseCpuEngine(options, triangles, spheres);
-  for (SceneDesc& scene : scenes) applyOverrides(options, backend, engine, &scene);
+  for (SceneDesc& scene : scenes) applyOverrides(options, backend, engine, passes.aovs, &scene);
 
   const int digits = frameDigits(count);
   checkSequenceOutputs(options, scenes, dir, range, digits, suffixes);

@@ -408,109 +408,94 @@ NB_MODULE(_candela, m) {
   nb::exception<ImageWriteError>(m, "ImageWriteError", PyExc_OSError);
   nb::exception<BackendError>(m, "BackendError", PyExc_RuntimeError);
 
+  // The bindings as written, one a line or a lambda each.
+  // clang-format off
   nb::class_<Scene>(m, "_Scene")
-      .def_static(
-          "load",
-          [](const std::string& path) {
-            return Scene{std::make_shared<const SceneDesc>(loadSceneFile(path)), std::nullopt};
-          },
-          "path"_a)
-      .def_static(
-          "from_text",
-          [](const std::string& text, const std::string& label, const std::string& baseDir) {
-            return Scene{std::make_shared<const SceneDesc>(parseSceneText(text, label, baseDir)),
-                         std::nullopt};
-          },
-          "text"_a, "label"_a, "base_dir"_a)
+      .def_static("load", [](const std::string& path) {
+        return Scene{std::make_shared<const SceneDesc>(loadSceneFile(path)), std::nullopt};
+      }, "path"_a)
+      .def_static("from_text", [](const std::string& text, const std::string& label,
+                                  const std::string& baseDir) {
+        return Scene{std::make_shared<const SceneDesc>(parseSceneText(text, label, baseDir)),
+                     std::nullopt};
+      }, "text"_a, "label"_a, "base_dir"_a)
       .def_prop_ro("frames", &Scene::frameCount)
       .def_prop_ro("warnings", [](const Scene& s) { return s.desc->warnings; })
       .def_prop_ro("frame_index", [](const Scene& s) { return s.frame; })
-      .def_prop_ro(
-          "fps", [](const Scene& s) { return s.desc->animation ? s.desc->animation->fps : 24.0f; })
+      .def_prop_ro("fps", [](const Scene& s) {
+        return s.desc->animation ? s.desc->animation->fps : 24.0f;
+      })
       .def_prop_ro("width", [](const Scene& s) { return s.desc->camera.width; })
       .def_prop_ro("height", [](const Scene& s) { return s.desc->camera.height; })
       .def_prop_ro("spp", [](const Scene& s) { return s.desc->render.spp; })
       .def_prop_ro("seed", [](const Scene& s) { return s.still().render.seed; })
-      .def_prop_ro("output",
-                   [](const Scene& s) {
-                     const OutputDesc& o = s.desc->output;
-                     return std::make_tuple(o.curve == GammaCurve::Srgb, o.gamma, o.exposure,
-                                            int(o.toneMap));
-                   })
-      .def_prop_ro("instances",
-                   [](const Scene& s) {
-                     nb::dict names;
-                     // The same in every frame.
-                     for (const auto& [number, name] : instanceNames(*s.desc))
-                       names[nb::int_(number)] = name;
-                     return names;
-                   })
-      .def_prop_ro("_camera",
-                   [](const Scene& s) {
-                     // Rows of K and of [R t; 0 1] (docs/aovs.md, *The camera file*), as the CLI
-                     // writes them.
-                     const SceneDesc frame = s.still();
-                     const CameraMatrices c = cameraMatrices(frame.camera, frame.file);
-                     nb::list intrinsics;
-                     for (const auto& row : c.intrinsics.m)
-                       intrinsics.append(nb::make_tuple(row[0], row[1], row[2]));
-                     nb::dict camera;
-                     camera["width"] = c.width;
-                     camera["height"] = c.height;
-                     if (const std::optional<CameraCrop>& crop = frame.camera.crop)
-                       camera["crop"] = nb::make_tuple(crop->x, crop->y, crop->width, crop->height);
-                     if (c.projection != CameraProjection::Perspective)
-                       camera["projection"] = projectionName(c.projection);
-                     if (c.projection != CameraProjection::Equirectangular)
-                       camera["intrinsics"] = intrinsics;
-                     camera["extrinsics"] = affineRows(c.rotation, c.translation);
-                     if (c.apertureRadius > 0.0f) {
-                       camera["aperture_radius"] = c.apertureRadius;
-                       camera["focus_distance"] = c.focusDistance;
-                     }
-                     if (!c.distortion.empty()) camera["distortion"] = c.distortion;
-                     return camera;
-                   })
-      .def_prop_ro("_poses",
-                   [](const Scene& s) {
-                     // (number, name, rows of [linear position] to the world and to the camera), as
-                     // the CLI's poses file (docs/aovs.md, *Instance poses*).
-                     const SceneDesc frame = s.still();
-                     const CameraMatrices camera = cameraMatrices(frame.camera, frame.file);
-                     nb::list poses;
-                     for (const InstancePose& pose : instancePoses(frame)) {
-                       const InstancePose seen = poseInCamera(pose, camera);
-                       poses.append(nb::make_tuple(pose.number, pose.name,
-                                                   affineRows(pose.linear, pose.position),
-                                                   affineRows(seen.linear, seen.position)));
-                     }
-                     return poses;
-                   })
-      .def_prop_ro("_last_change",
-                   [](const Scene& s) -> std::optional<std::string> {
-                     // What the last render of this scene (or of any of its frames) did with the
-                     // flattened scene: "values" (reused), "motion" (refitted) or "structure"
-                     // (built); None before any.
-                     std::lock_guard<std::mutex> lock(s.cache->mutex);
-                     if (!s.cache->renderer) return std::nullopt;
-                     return std::string(sceneChangeName(s.cache->frames.change()));
-                   })
-      .def(
-          "frame",
-          [](const Scene& s, uint32_t i) {
-            if (i >= s.frameCount())
-              throw nb::index_error(("frame " + std::to_string(i) + " out of range (" +
-                                     std::to_string(s.frameCount()) + " frames)")
-                                        .c_str());
-            return Scene{s.desc, i, s.cache};
-          },
-          "index"_a)
+      .def_prop_ro("output", [](const Scene& s) {
+        const OutputDesc& o = s.desc->output;
+        return std::make_tuple(o.curve == GammaCurve::Srgb, o.gamma, o.exposure, int(o.toneMap));
+      })
+      .def_prop_ro("instances", [](const Scene& s) {
+        nb::dict names;
+        // The same in every frame.
+        for (const auto& [number, name] : instanceNames(*s.desc)) names[nb::int_(number)] = name;
+        return names;
+      })
+      .def_prop_ro("_camera", [](const Scene& s) {
+        // Rows of K and of [R t; 0 1] (docs/aovs.md, *The camera file*), as the CLI writes them.
+        const SceneDesc frame = s.still();
+        const CameraMatrices c = cameraMatrices(frame.camera, frame.file);
+        nb::list intrinsics;
+        for (const auto& row : c.intrinsics.m)
+          intrinsics.append(nb::make_tuple(row[0], row[1], row[2]));
+        nb::dict camera;
+        camera["width"] = c.width;
+        camera["height"] = c.height;
+        if (const std::optional<CameraCrop>& crop = frame.camera.crop)
+          camera["crop"] = nb::make_tuple(crop->x, crop->y, crop->width, crop->height);
+        if (c.projection != CameraProjection::Perspective)
+          camera["projection"] = projectionName(c.projection);
+        if (c.projection != CameraProjection::Equirectangular) camera["intrinsics"] = intrinsics;
+        camera["extrinsics"] = affineRows(c.rotation, c.translation);
+        if (c.apertureRadius > 0.0f) {
+          camera["aperture_radius"] = c.apertureRadius;
+          camera["focus_distance"] = c.focusDistance;
+        }
+        if (!c.distortion.empty()) camera["distortion"] = c.distortion;
+        return camera;
+      })
+      .def_prop_ro("_poses", [](const Scene& s) {
+        // (number, name, rows of [linear position] to the world and to the camera), as the
+        // CLI's poses file (docs/aovs.md, *Instance poses*).
+        const SceneDesc frame = s.still();
+        const CameraMatrices camera = cameraMatrices(frame.camera, frame.file);
+        nb::list poses;
+        for (const InstancePose& pose : instancePoses(frame)) {
+          const InstancePose seen = poseInCamera(pose, camera);
+          poses.append(nb::make_tuple(pose.number, pose.name,
+                                      affineRows(pose.linear, pose.position),
+                                      affineRows(seen.linear, seen.position)));
+        }
+        return poses;
+      })
+      .def_prop_ro("_last_change", [](const Scene& s) -> std::optional<std::string> {
+        // What the last render of this scene (or of any of its frames) did with the flattened
+        // scene: "values" (reused), "motion" (refitted) or "structure" (built); None before any.
+        std::lock_guard<std::mutex> lock(s.cache->mutex);
+        if (!s.cache->renderer) return std::nullopt;
+        return std::string(sceneChangeName(s.cache->frames.change()));
+      })
+      .def("frame", [](const Scene& s, uint32_t i) {
+        if (i >= s.frameCount())
+          throw nb::index_error(("frame " + std::to_string(i) + " out of range (" +
+                                 std::to_string(s.frameCount()) + " frames)").c_str());
+        return Scene{s.desc, i, s.cache};
+      }, "index"_a)
       .def("render", &render, "spp"_a = nb::none(), "seed"_a = nb::none(), "backend"_a = "auto",
            "sample_range"_a = nb::none(), "threads"_a = 0, "aovs"_a = nb::none(),
            "pass_sums"_a = false, "max_depth"_a = nb::none(), "crop"_a = nb::none())
       .def("passes_from_sums", &passesFromSums, "sums"_a, "aovs"_a, "crop"_a = nb::none())
       .def("seen_emitters", &seenEmitters, "emission"_a, "spp"_a = nb::none(),
            "seed"_a = nb::none(), "backend"_a = "auto", "threads"_a = 0, "crop"_a = nb::none());
+  // clang-format on
 
   m.attr("PASS_SUM_MERGES") = passSumMerges();
   m.def("check_aovs", [](const std::vector<std::string>& names) { aovsFromNames(names); },
