@@ -364,7 +364,7 @@ TEST_F(CliAovTest, CameraFileIsACameraThatRendersTheSameImage) {
 
 // `--aov poses` writes each instance's placement, numbered as the instance pass: the model (the
 // unit sphere; the OBJ's own coordinates) to the world, and to the camera as the camera file's
-// extrinsics times that.
+// extrinsics times that; and the box the model spans.
 TEST_F(CliAovTest, PosesFileHoldsEachInstancesPlacementInTheWorldAndTheCamera) {
   dir_.write("tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
   dir_.write("posed.json", R"({
@@ -398,6 +398,16 @@ TEST_F(CliAovTest, PosesFileHoldsEachInstancesPlacementInTheWorldAndTheCamera) {
             << n + 1 << " " << i << " " << j;
       }
   }
+  // Each model's box: the unit sphere's for the sphere and the sphere light, the triangle's
+  // as its file has it (before the placement) for the object.
+  const double boxes[3][2][3] = {
+      {{-1, -1, -1}, {1, 1, 1}}, {{0, 0, 0}, {1, 1, 0}}, {{-1, -1, -1}, {1, 1, 1}}};
+  for (int n = 0; n < 3; ++n)
+    for (int corner = 0; corner < 2; ++corner)
+      for (int k = 0; k < 3; ++k)
+        EXPECT_EQ(poses[std::to_string(n + 1)]["model_box"][corner][k].get<double>(),
+                  boxes[n][corner][k])
+            << n + 1 << " " << corner << " " << k;
   // Per frame of a sequence too.
   ASSERT_EQ(run("render posed.json posed.json -q --spp 1 -o f/ --aov poses"), 0);
   EXPECT_EQ(fileText(path("f/frame_0001.poses.json")), fileText(path("a.poses.json")));
@@ -411,6 +421,8 @@ TEST_F(CliAovTest, PosesOfAimedLightsTurnTheirModelsZToWhereTheyShine) {
                {"type": "directional", "direction": [0, 0, -2], "intensity": 1}]})");
   ASSERT_EQ(run("render aimed.json -q --spp 1 -o a.png --aov poses"), 0);
   const nlohmann::json poses = nlohmann::json::parse(fileText(path("a.poses.json")));
+  EXPECT_FALSE(poses["1"].contains("model_box"));  // lights without an extent have no box
+  EXPECT_FALSE(poses["2"].contains("model_box"));
   const double axes[2][3] = {{0, -0.6, 0.8}, {0, 0, -1}};
   const double places[2][3] = {{1, 2, 3}, {0, 0, 0}};
   for (int n = 0; n < 2; ++n) {

@@ -5,11 +5,13 @@
 #include <array>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "render/aov_layers.h"
 #include "render_test_util.h"
 #include "scene/animation.h"
 #include "scene/flatten.h"
+#include "scene/instance_poses.h"
 #include "scene/mesh_layout.h"
 #include "scene/read/scene_loader.h"
 #include "temp_dir.h"
@@ -87,6 +89,58 @@ TEST(ObjectCoordinatesPass, ASpheresPointsAreOnItsUnitSpheresBox) {
       for (int k = 0; k < 3; ++k) EXPECT_NEAR(r.at(x, y)[k], 0.5 * (d[k] + 1.0), 1e-4) << x << y;
     }
   EXPECT_NEAR(r.at(7, 7).x, 1.0f, 1e-4f);
+}
+
+// The poses' model box takes each pixel's object coordinates back to a point of its model, and
+// the pose takes that on to the world: the point the position pass saw there (the 2D-3D
+// correspondence of docs/aovs.md), for a turned, scaled box off its file's origin, a sphere and a
+// rectangle light.
+TEST(ObjectCoordinatesPass, ThePosesModelBoxTakesEachPixelBackToTheWorld) {
+  test::TempDir dir;
+  dir.write("box.obj",
+            "v 1 -2 0.5\nv 3 -2 0.5\nv 3 0 0.5\nv 1 0 0.5\n"
+            "v 1 -2 1.5\nv 3 -2 1.5\nv 3 0 1.5\nv 1 0 1.5\n"
+            "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n");
+  SceneDesc desc = parseSceneText(R"({
+    "camera": {"width": 40, "height": 30, "fov": 70, "spp": 1, "position": [0, 0, 0],
+               "look_at": [0, 0, -1]},
+    "render": {"antialiasing": false},
+    "objects": [{"file": "box.obj", "position": [-5, 1.5, -9], "rotation": [25, 40, -15],
+                 "scale": [1.5, 0.8, 1.2], "color": 0.5}],
+    "spheres": [{"position": [2.5, -1, -9], "radius": 1.5, "color": 0.5}],
+    "lights": [{"type": "rectangle", "position": [1, 3, -10], "direction": [0.2, -0.3, 1],
+                "size": [2.5, 1.5], "intensity": 1}]
+  })",
+                                  "test.json", dir.path());
+  const std::vector<Aov> aovs = {Aov::Instance, Aov::Position, Aov::ObjectCoordinates};
+  layOutForPasses(desc, aovs);
+  const SceneData scene = flattenScene(desc);
+  RenderOptions options;
+  options.aovs = true;
+  const std::vector<ImageLayer> layers =
+      makeAovLayers(scene, aovs, renderCpu(scene.view(), options).aovs);
+  const std::vector<InstancePose> poses = instancePoses(desc);
+
+  std::vector<int> seen(poses.size() + 1, 0);
+  for (size_t i = 0; i < size_t(40 * 30); ++i) {
+    const uint32_t number = uint32_t(layers[0].pixels[i]);
+    ++seen[number];
+    if (number == 0) continue;
+    const InstancePose& pose = poses[number - 1];
+    ASSERT_EQ(pose.number, number);
+    ASSERT_TRUE(pose.modelBox) << pose.name;
+    Vec3 model;
+    for (int k = 0; k < 3; ++k) {
+      const float c = layers[2].pixels[3 * i + k];
+      model[k] = pose.modelBox->lo[k] + c * (pose.modelBox->hi[k] - pose.modelBox->lo[k]);
+    }
+    const Vec3 world = pose.linear * model + pose.position;
+    for (int k = 0; k < 3; ++k)
+      EXPECT_NEAR(world[k], layers[1].pixels[3 * i + k], 2e-3f) << pose.name << " at " << i;
+  }
+  for (size_t number = 1; number < seen.size(); ++number)
+    EXPECT_GT(seen[number], 15) << poses[number - 1].name;
+  EXPECT_GT(seen[0], 100);
 }
 
 // The glTF example's tentacle and flower, posed anew each frame by their animation: their

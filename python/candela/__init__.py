@@ -162,11 +162,19 @@ class Scene:
         the unit sphere for a sphere or sphere light, the origin for a point light, a rotation
         turning +z to where it shines for a spot or directional light, the unit square of the xy
         plane for a rectangle light, which shines along +z) to world space, and to
-        OpenCV's camera axes (the camera's extrinsics times the first)."""
-        return {number: {"name": name,
-                         "object_to_world": np.array(world, dtype=np.float64),
-                         "object_to_camera": np.array(seen, dtype=np.float64)}
-                for number, name, world, seen in self._core._poses}
+        OpenCV's camera axes (the camera's extrinsics times the first). Every instance with an
+        extent also has "model_box", a (2, 3) float64 array of the lowest and highest corner of
+        the box its model spans (an object's mesh's vertices as its file binds them; [-1, 1]^3
+        for a sphere): the box over which the "object_coordinates" pass runs from 0 to 1, so
+        that lo + c * (hi - lo) is the model's point where that pass reads c."""
+        poses = {}
+        for number, name, world, seen, box in self._core._poses:
+            poses[number] = {"name": name,
+                             "object_to_world": np.array(world, dtype=np.float64),
+                             "object_to_camera": np.array(seen, dtype=np.float64)}
+            if box is not None:
+                poses[number]["model_box"] = np.array(box, dtype=np.float64)
+        return poses
 
     def render(self, spp: Optional[int] = None, seed: Optional[int] = None,
                backend: str = "auto", sample_range: Optional[Tuple[int, int]] = None,

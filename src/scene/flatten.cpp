@@ -18,6 +18,7 @@
 #include "scene/light_emission_desc.h"
 #include "scene/mesh_layout.h"
 #include "scene/mesh_repeats.h"
+#include "scene/model_box.h"
 #include "scene/read/texture_reader.h"
 
 namespace candela {
@@ -108,11 +109,8 @@ void placeVertices(const MeshDesc& mesh, const MeshLayout& layout, const Vec3& p
 // box, from 0 to 1 along each axis (0.5 along an axis the box is flat in), appended to *out: the
 // object_coordinates pass's (render/object_coordinates.h).
 void addObjectCoordinates(const MeshDesc& mesh, const MeshLayout& layout, PaddedVector<Vec3>* out) {
-  Vec3 lo = mesh.positions.empty() ? Vec3(0.0f) : mesh.positions[0], hi = lo;
-  for (const Vec3& p : mesh.positions) {
-    lo = min(lo, p);
-    hi = max(hi, p);
-  }
+  const Bounds3 box = meshBox(mesh);  // as the poses file gives it (scene/model_box.h)
+  const Vec3 lo = box.lo, hi = box.hi;
   const size_t base = out->size();
   for (const Vec3& p : mesh.positions) {
     Vec3 c(0.5f);

@@ -6,6 +6,7 @@
 #include "core/rotation.h"
 #include "scene/flatten.h"
 #include "scene/light_emission_desc.h"
+#include "scene/model_box.h"
 
 namespace candela {
 
@@ -33,19 +34,25 @@ std::vector<InstancePose> instancePoses(const SceneDesc& desc) {
   size_t i = 0;
   for (const SphereDesc& s : desc.spheres) {
     poses[i].linear = Mat3::diagonal(Vec3(s.radius));
+    poses[i].modelBox = sphereModelBox();
     poses[i++].position = s.position;
   }
   for (const ObjectDesc& o : desc.objects) {
     poses[i].linear = eulerRotation(o.rotation) * Mat3::diagonal(o.scale);
+    poses[i].modelBox = objectModelBox(o);
     poses[i++].position = o.position;
   }
   for (const LightDesc& l : desc.lights) {
     poses[i].linear = lightModel(l);
+    poses[i].modelBox = lightModelBox(l);
     poses[i++].position = l.position;  // a directional light's: the origin
   }
-  for (InstancePose& pose : poses)  // -0 as 0, for the files
+  for (InstancePose& pose : poses) {  // -0 as 0, for the files
     for (auto& row : pose.linear.m)
       for (float& v : row) v += 0.0f;
+    if (pose.modelBox)
+      pose.modelBox = Bounds3(pose.modelBox->lo + Vec3(0.0f), pose.modelBox->hi + Vec3(0.0f));
+  }
   return poses;
 }
 

@@ -3,11 +3,13 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "core/mat3.h"
 #include "core/vec3.h"
+#include "geometry/aabb.h"
 #include "scene/camera_resolve.h"
 #include "scene/scene_desc.h"
 
@@ -22,6 +24,9 @@ struct InstancePose {
   std::string name;  // as instanceNames gives it
   Mat3 linear;
   Vec3 position;
+  // The box the model spans in its own frame (scene/model_box.h), over which the
+  // object_coordinates pass runs from 0 to 1; none for a point, spot or directional light.
+  std::optional<Bounds3> modelBox;
 };
 
 // A light's model's linear part: a sphere light's and a rectangle light's as above; for a spot or

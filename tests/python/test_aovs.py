@@ -249,6 +249,38 @@ def test_poses_map_what_each_pixel_sees_back_onto_its_instances_model(tmp_path):
                 assert np.abs(q[:, :2]).max() <= 1 + 1e-4
 
 
+def test_object_coordinates_through_the_model_box_and_pose_land_where_the_pixel_looked(tmp_path):
+    # docs/aovs.md's 2D-3D correspondence: lo + c * (hi - lo) over the pose's model_box is the
+    # model's point, and object_to_world takes it to what the position pass saw, for a mesh off
+    # its file's origin (turned and scaled) and a sphere; a point light has no box.
+    (tmp_path / "block.obj").write_text(
+        "v 1 -2 0.5\nv 3 -2 0.5\nv 3 0 0.5\nv 1 0 0.5\nv 1 -2 1.5\nv 3 -2 1.5\nv 3 0 1.5\n"
+        "v 1 0 1.5\nf 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n")
+    spec = {
+        "camera": {"width": 40, "height": 30, "fov": 70, "position": [0, 0, 0],
+                   "look_at": [0, 0, -1], "spp": 1},
+        "render": {"antialiasing": False},
+        "spheres": [{"id": "ball", "position": [2.5, -1, -9], "radius": 1.5}],
+        "objects": [{"id": "block", "file": "block.obj", "position": [-5, 1.5, -9],
+                     "rotation": [25, 40, -15], "scale": [1.5, 0.8, 1.2]}],
+        "lights": [{"position": [0, 4, 4], "intensity": 300}],
+    }
+    scene = candela.Scene.from_dict(spec, base_dir=tmp_path)
+    poses = scene.poses
+    np.testing.assert_array_equal(poses[2]["model_box"], [[1, -2, 0.5], [3, 0, 1.5]])
+    np.testing.assert_array_equal(poses[1]["model_box"], [[-1, -1, -1], [1, 1, 1]])
+    assert "model_box" not in poses[3]
+    res = scene.render(backend="cpu", aovs=["position", "instance", "object_coordinates"])
+    for number in (1, 2):
+        lo, hi = poses[number]["model_box"]
+        hit = res["instance"] == number
+        assert hit.sum() > 15
+        model = lo + res["object_coordinates"][hit].astype(np.float64) * (hi - lo)
+        world = poses[number]["object_to_world"]
+        np.testing.assert_allclose(model @ world[:3, :3].T + world[:3, 3],
+                                   res["position"][hit], atol=2e-3)
+
+
 def test_alpha_is_the_share_of_samples_that_saw_something_and_goes_into_the_file(tmp_path):
     # An emitter of radiance 1 over nothing (no environment): the image is its alpha, and the
     # antialiased edge pixels lie between 0 and 1; sample ranges merge into the same alpha.

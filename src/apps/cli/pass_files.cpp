@@ -144,7 +144,13 @@ std::string encodePoses(const SceneDesc& desc) {
             ",\n    \"object_to_world\": " +
             matrixText(affineRows(pose.linear, pose.position), "    ") +
             ",\n    \"object_to_camera\": " +
-            matrixText(affineRows(seen.linear, seen.position), "    ") + "\n  }";
+            matrixText(affineRows(seen.linear, seen.position), "    ");
+    if (const std::optional<Bounds3>& box = pose.modelBox)
+      text += ",\n    \"model_box\": " +
+              matrixText(std::array<std::array<float, 3>, 2>{{{box->lo.x, box->lo.y, box->lo.z},
+                                                              {box->hi.x, box->hi.y, box->hi.z}}},
+                         "    ");
+    text += "\n  }";
   }
   return text + "\n}\n";
 }

@@ -315,7 +315,8 @@ int renderStill(const RenderCommandOptions& options, SceneDesc desc, double load
   if (hasAov(passes.aovs, Aov::Flow)) flow = flowMotion(desc, next ? *next : desc);
   if (hasAov(passes.aovs, Aov::BackwardFlow))
     backwardFlow = flowMotion(desc, previous ? *previous : desc);
-  SceneData scene = flattenScene(std::move(desc));  // it keeps all but the meshes, for the files
+  // Flattening lets go of the meshes but for the poses file, which gives each model's box.
+  SceneData scene = passes.poses ? flattenScene(desc) : flattenScene(std::move(desc));
   if (flow) applyFlowMotion(scene, *flow);
   if (backwardFlow) applyFlowMotion(scene, *backwardFlow, FlowDirection::Backward);
   const double flattenSeconds = secondsSince(flattenStart);

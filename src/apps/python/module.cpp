@@ -463,16 +463,20 @@ NB_MODULE(_candela, m) {
         return camera;
       })
       .def_prop_ro("_poses", [](const Scene& s) {
-        // (number, name, rows of [linear position] to the world and to the camera), as the
-        // CLI's poses file (docs/aovs.md, *Instance poses*).
+        // (number, name, rows of [linear position] to the world and to the camera, the model's
+        // box as (lo, hi) or None), as the CLI's poses file (docs/aovs.md, *Instance poses*).
         const SceneDesc frame = s.still();
         const CameraMatrices camera = cameraMatrices(frame.camera, frame.file);
         nb::list poses;
         for (const InstancePose& pose : instancePoses(frame)) {
           const InstancePose seen = poseInCamera(pose, camera);
+          nb::object box = nb::none();
+          if (const std::optional<Bounds3>& b = pose.modelBox)
+            box = nb::make_tuple(nb::make_tuple(b->lo.x, b->lo.y, b->lo.z),
+                                 nb::make_tuple(b->hi.x, b->hi.y, b->hi.z));
           poses.append(nb::make_tuple(pose.number, pose.name,
                                       affineRows(pose.linear, pose.position),
-                                      affineRows(seen.linear, seen.position)));
+                                      affineRows(seen.linear, seen.position), box));
         }
         return poses;
       })
