@@ -318,7 +318,8 @@ TEST(Bsdf, AnisotropicLobeFollowsTheTangent) {
   const float along = evalBsdf(b, alongTangent, &pdf).x;
   const float across = evalBsdf(b, acrossTangent, &pdf).x;
   EXPECT_GT(along, 5.0f * across);
-  const Bsdf isotropic = untexturedBsdf(conductor(0.4f, false), kUp, kUp, kUp, tangent);
+  const Material plain = conductor(0.4f, false);
+  const Bsdf isotropic = untexturedBsdf(plain, kUp, kUp, kUp, tangent);
   EXPECT_FLOAT_EQ(evalBsdf(isotropic, alongTangent, &pdf).x,
                   evalBsdf(isotropic, acrossTangent, &pdf).x);
 

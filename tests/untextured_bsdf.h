@@ -11,5 +11,8 @@ inline Bsdf untexturedBsdf(const Material& m, const Vec3& wo, const Vec3& ng, co
   return makeBsdf(SceneView(), m, m.color, m.transmittance, m.roughness, tangent,
                   untexturedLayers(m), wo, ng, ns, kAllChannels);
 }
+// A Bsdf points at its material, so it must not be made of a temporary one.
+Bsdf untexturedBsdf(Material&& m, const Vec3& wo, const Vec3& ng, const Vec3& ns,
+                    const Vec3& tangent = Vec3(0.0f)) = delete;
 
 }  // namespace candela
