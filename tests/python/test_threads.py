@@ -78,11 +78,12 @@ def busy_threads(scene_path, **options):
     return sum(ns >= 20e6 for ns in json.loads(run.stdout).values())
 
 
-def most_busy_threads(scene_path, tries=3, **options):
+def most_busy_threads(scene_path, tries=6, **options):
     """busy_threads with all cores, the most of up to `tries` runs, stopping at the first with two
     or more: that several threads *can* share the work needs one run that shows it, and on a
     shared virtual machine whose other core the host lends elsewhere for a moment, one run in CI
-    saw only one busy thread (the same commit showed two in five runs after it)."""
+    saw only one busy thread (the same commit showed two in five runs after it); session 75's CI
+    saw one in three runs in a row (three reruns then showed two), so up to six are tried."""
     most = 0
     for _ in range(tries):
         most = max(most, busy_threads(scene_path, **options))
