@@ -234,7 +234,7 @@ void addObject(SceneData& s, const ObjectDesc& obj, bool geometry, bool objectCo
   }
   if (objectCoordinates) {  // in the mesh as its file binds it, however an animation poses it
     s.objectCoordinates.resize(base, Vec3(0.0f));
-    addObjectCoordinates(obj.restMesh ? *obj.restMesh : mesh, layout, &s.objectCoordinates);
+    addObjectCoordinates(modelMesh(obj), layout, &s.objectCoordinates);
   }
   if (usesVertexColors(obj)) {
     s.vertexColors.resize(base, Vec3(1.0f));  // earlier vertices without colours

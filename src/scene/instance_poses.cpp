@@ -1,5 +1,6 @@
 #include "scene/instance_poses.h"
 
+#include <unordered_map>
 #include <utility>
 
 #include "core/frame.h"
@@ -37,9 +38,13 @@ std::vector<InstancePose> instancePoses(const SceneDesc& desc) {
     poses[i].modelBox = sphereModelBox();
     poses[i++].position = s.position;
   }
+  std::unordered_map<const MeshDesc*, Bounds3> meshBoxes;  // objects that name one file share it
   for (const ObjectDesc& o : desc.objects) {
     poses[i].linear = eulerRotation(o.rotation) * Mat3::diagonal(o.scale);
-    poses[i].modelBox = objectModelBox(o);
+    const MeshDesc& model = modelMesh(o);
+    const auto [box, fresh] = meshBoxes.try_emplace(&model);
+    if (fresh) box->second = meshBox(model);
+    poses[i].modelBox = box->second;
     poses[i++].position = o.position;
   }
   for (const LightDesc& l : desc.lights) {

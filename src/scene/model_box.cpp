@@ -9,8 +9,8 @@ Bounds3 meshBox(const MeshDesc& mesh) {
   return box;
 }
 
-Bounds3 objectModelBox(const ObjectDesc& obj) {
-  return meshBox(obj.restMesh ? *obj.restMesh : *obj.mesh);
+const MeshDesc& modelMesh(const ObjectDesc& obj) {
+  return obj.restMesh ? *obj.restMesh : *obj.mesh;
 }
 
 Bounds3 sphereModelBox() { return Bounds3(Vec3(-1.0f), Vec3(1.0f)); }

@@ -13,9 +13,9 @@ namespace candela {
 // The box of a mesh's positions as its file has them; the origin's point for a mesh without any.
 Bounds3 meshBox(const MeshDesc& mesh);
 
-// An object's: its mesh's as its file binds it, however an animation poses it
-// (ObjectDesc::restMesh).
-Bounds3 objectModelBox(const ObjectDesc& obj);
+// An object's model: its mesh as its file binds it, however an animation poses it
+// (ObjectDesc::restMesh); its box is the object's.
+const MeshDesc& modelMesh(const ObjectDesc& obj);
 
 // A sphere's and a sphere light's: the unit sphere's, [-1, 1]^3.
 Bounds3 sphereModelBox();
