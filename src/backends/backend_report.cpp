@@ -9,7 +9,9 @@
 #include <utility>
 #include <vector>
 
+#include "backends/backend_error.h"
 #include "backends/cpu/cpu_engine.h"
+#include "backends/cpu/tile_renderer.h"
 #include "backends/renderer.h"
 #include "backends/thread_limit.h"
 
@@ -47,6 +49,15 @@ const char* widestSimd() {
 #endif
 }
 
+// The instruction set the render loop runs in (backends/cpu/tile_renderer.h), or why none does.
+std::string renderLoopIsa() {
+  try {
+    return tileRenderer().isa;
+  } catch (const BackendError& e) {
+    return e.what();
+  }
+}
+
 std::string cpuSummary(int threads) {
   const ThreadLimit limit(threads);
   const int used = int(std::min(
@@ -55,7 +66,7 @@ std::string cpuSummary(int threads) {
   const std::string model = cpuModel();
   std::string text = (model.empty() ? std::string("this processor") : model) + ", " +
                      std::to_string(used) + (used == 1 ? " thread, " : " threads, ") +
-                     widestSimd() + "; ray engines: ";
+                     widestSimd() + "; render loop: " + renderLoopIsa() + "; ray engines: ";
   if (embreeAvailable()) text += std::string("Embree ") + embreeVersion() + ", ";
   return text + "candela's own BVH";
 }

@@ -39,6 +39,9 @@ struct AccelerationStats {
   const char* engine = "bvh";  // "bvh": candela's own, built with the scene (SceneData::bvh)
   double buildSeconds = 0;     // the engine's own build in the last setScene (0 for "bvh")
   uint64_t bytes = 0;          // the engine's own memory (0 for "bvh")
+  // The instruction set the CPU backend's render loop runs in (backends/cpu/tile_renderer.h):
+  // "x86-64" or "x86-64-v4"; "" on the GPU.
+  const char* isa = "";
 };
 
 class Renderer {

@@ -60,6 +60,7 @@ std::string renderStatsJson(const RenderStats& info, const SceneData& scene,
   o["load_seconds"] = finiteOrZero(info.loadSeconds);
   o["flatten_seconds"] = finiteOrZero(info.flattenSeconds);
   o["engine"] = info.acceleration.engine;
+  o["cpu_isa"] = info.acceleration.isa;
   o["bvh_build_seconds"] = finiteOrZero(buildSeconds);
   o["bvh_mtris_per_second"] = finiteOrZero(rate(double(triangles), buildSeconds) / 1e6);
   o["triangles"] = triangles;

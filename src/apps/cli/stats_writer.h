@@ -6,6 +6,8 @@
 //   load_seconds       reading and validating the scene file (meshes included)
 //   flatten_seconds    flattenScene: meshes to world space (+ candela's own BVH build)
 //   engine             the ray engine: "bvh" (candela's own) or "embree" (the CPU's, when built)
+//   cpu_isa            the instruction set of the CPU backend's render loop: "x86-64" or
+//                      "x86-64-v4" (backends/cpu/tile_renderer.h); "" on the GPU
 //   bvh_build_seconds  the engine's BVH build alone (SceneData::bvh.buildSeconds, or Embree's)
 //   bvh_mtris_per_second  triangles / bvh_build_seconds / 1e6
 //   triangles, spheres, bvh_nodes, bvh_leaves, bvh_max_depth (the own BVH's; 0 with Embree)

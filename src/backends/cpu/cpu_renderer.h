@@ -10,12 +10,14 @@
 #include <memory>
 
 #include "backends/cpu/cpu_engine.h"
+#include "backends/cpu/tile_renderer.h"
 #include "backends/renderer.h"
 #include "render/scene_view.h"
 
 namespace candela {
 
-// Renders with candela's own BVH (the scene's nodes).
+// Renders with candela's own BVH (the scene's nodes), in the widest instruction set the CPU runs
+// (backends/cpu/tile_renderer.h).
 RenderResult renderCpu(const SceneView& scene, const RenderOptions& options);
 
 class EmbreeScene;
@@ -25,8 +27,10 @@ class EmbreeScene;
 // Embree's copy (a refit when primitives only moved).
 class CpuRenderer final : public Renderer {
  public:
-  // `engine` must not be Auto: resolveCpuEngine first.
-  explicit CpuRenderer(CpuEngine engine);
+  // `engine` must not be Auto: resolveCpuEngine first. `tiles` is the render loop to run, by
+  // default the widest the CPU has (tileRenderer, which throws BackendError where
+  // CANDELA_CPU_ISA names one the CPU cannot run).
+  explicit CpuRenderer(CpuEngine engine, TileRenderer tiles = tileRenderer());
   ~CpuRenderer() override;
 
   void setScene(const SceneData& scene, SceneChange change) override;
@@ -35,6 +39,7 @@ class CpuRenderer final : public Renderer {
 
  private:
   CpuEngine engine_;
+  TileRenderer tiles_;
   SceneView view_;
   std::unique_ptr<EmbreeScene> embree_;
 };

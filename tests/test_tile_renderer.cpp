@@ -1,0 +1,143 @@
+// The CPU backend's render loop in each instruction set it is built for
+// (backends/cpu/tile_renderer.h): the x86-64-v4 loop renders the baseline's image up to rounding
+// on every shipped scene, with either ray engine; the choice at run time follows the CPU and
+// CANDELA_CPU_ISA.
+#include <gtest/gtest.h>
+#include <stdlib.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "backends/backend_error.h"
+#include "backends/cpu/cpu_renderer.h"
+#include "backends/cpu/tile_renderer.h"
+#include "cpu_engines.h"
+#include "scene/animation.h"
+#include "scene/flatten.h"
+#include "scene/read/scene_loader.h"
+
+namespace candela {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Sets an environment variable for one scope, and puts back what it was.
+class ScopedEnv {
+ public:
+  ScopedEnv(const char* name, const char* value) : name_(name) {
+    if (const char* old = getenv(name)) old_ = old, had_ = true;
+    setenv(name, value, 1);
+  }
+  ~ScopedEnv() { had_ ? setenv(name_, old_.c_str(), 1) : unsetenv(name_); }
+
+ private:
+  const char* name_;
+  std::string old_;
+  bool had_ = false;
+};
+
+std::vector<std::string> exampleScenes() {
+  std::vector<std::string> files;
+  for (const char* folder : {"/scenes", "/scenes/examples"})
+    for (const fs::directory_entry& e :
+         fs::directory_iterator(std::string(CANDELA_SOURCE_DIR) + folder))
+      if (e.path().extension() == ".json") files.push_back(e.path().string());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+RenderResult renderIn(const TileRenderer& tiles, CpuEngine engine, const SceneData& data,
+                      bool aovs = false) {
+  CpuRenderer renderer(engine, tiles);
+  renderer.setScene(data, SceneChange::Structure);
+  RenderOptions options;
+  options.aovs = aovs;
+  return renderer.render(options);
+}
+
+TEST(TileRenderer, TheBaselineRunsEverywhereAndIsNamed) {
+  TileRenderer named{};
+  const TileRenderer baseline = baselineTileRenderer();
+  ASSERT_TRUE(tileRendererByName(baseline.isa, &named));
+  EXPECT_EQ(named.withBvh, baseline.withBvh);
+  EXPECT_EQ(baseline.withEmbree != nullptr, embreeAvailable());
+  EXPECT_FALSE(tileRendererByName("x86-64-v9", &named));
+}
+
+TEST(TileRenderer, TheWidestTheCpuRunsIsPickedUnlessTheEnvironmentNamesOne) {
+#if defined(CANDELA_X86_64_V4_LOOP)
+  const bool v4 = __builtin_cpu_supports("x86-64-v4");
+#else
+  const bool v4 = false;
+#endif
+  EXPECT_STREQ(tileRenderer().isa, v4 ? "x86-64-v4" : baselineTileRenderer().isa);
+  {
+    const ScopedEnv env("CANDELA_CPU_ISA", baselineTileRenderer().isa);
+    EXPECT_EQ(tileRenderer().withBvh, baselineTileRenderer().withBvh);
+    EXPECT_STREQ(CpuRenderer(CpuEngine::Bvh).acceleration().isa, baselineTileRenderer().isa);
+  }
+  const ScopedEnv env("CANDELA_CPU_ISA", "sse9");
+  try {
+    tileRenderer();
+    FAIL() << "an unknown instruction set was accepted";
+  } catch (const BackendError& e) {
+    EXPECT_NE(std::string(e.what()).find("CANDELA_CPU_ISA=sse9: expected x86-64"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+// Mean over pixels and channels of (a - b)^2 / (b^2 + 0.01), compare.py's relMSE.
+double relMse(const ImageRGB& a, const ImageRGB& b) {
+  double sum = 0;
+  for (size_t i = 0; i < a.pixels.size(); ++i) {
+    const double d = double(a.pixels[i]) - b.pixels[i];
+    sum += d * d / (double(b.pixels[i]) * b.pixels[i] + 0.01);
+  }
+  return sum / double(a.pixels.size());
+}
+
+// The x86-64-v4 loop fuses multiply-adds, so a path can part from the baseline's where a
+// rounding tips a choice (a refraction's total reflection, a light pick): the two images agree
+// far below the noise between two seeds, as the two ray engines do (test_embree.cpp).
+TEST(TileRenderer, X86_64V4RendersTheBaselinesImageUpToRoundingOnEveryShippedScene) {
+  TileRenderer v4{};
+  if (!tileRendererByName("x86-64-v4", &v4))
+    GTEST_SKIP() << "this CPU (or build) has no x86-64-v4 (AVX-512): nothing to compare";
+  const TileRenderer baseline = baselineTileRenderer();
+  const std::vector<std::string> files = exampleScenes();
+  EXPECT_GE(files.size(), 40u);
+  double worst = 0;
+  for (const std::string& file : files) {
+    SceneDesc desc = sceneAtFrame(loadSceneFile(file), 0);
+    desc.camera.width = 40;
+    desc.camera.height = 30;
+    desc.camera.intrinsics.reset();
+    desc.render.spp = 8;
+    for (CpuEngine engine : test::builtCpuEngines()) {
+      SCOPED_TRACE(file + (engine == CpuEngine::Embree ? ", Embree" : ", own BVH"));
+      SceneDesc forEngine = desc;
+      if (engine == CpuEngine::Embree) forEngine.ownBvh = OwnBvh::None;
+      const SceneData data = flattenScene(forEngine);
+      const ImageRGB a = renderIn(baseline, engine, data).image;
+      forEngine.render.seed += 1;
+      const ImageRGB otherSeed = renderIn(baseline, engine, flattenScene(forEngine)).image;
+      const double noise = relMse(otherSeed, a);
+      // Both of each loop's instances: without passes, and with them.
+      for (bool aovs : {false, true}) {
+        const RenderResult b = renderIn(v4, engine, data, aovs);
+        ASSERT_EQ(a.pixels.size(), b.image.pixels.size());
+        EXPECT_EQ(b.aovs.size(), aovs ? a.pixels.size() / 3 : 0u);
+        EXPECT_LE(relMse(b.image, a), 0.05 * noise) << "noise between seeds " << noise;
+        if (noise > 0) worst = std::max(worst, relMse(b.image, a) / noise);
+      }
+    }
+  }
+  std::printf("the largest difference: %.2g of the noise between seeds\n", worst);
+}
+
+}  // namespace
+}  // namespace candela
