@@ -1,9 +1,9 @@
 // The CPU backend's render loop (backends/cpu/render_tiles.h) compiled for more than one
 // instruction set, and the choice among them at run time, as Embree chooses its kernels.
 //
-// The integrator is scalar code, but on a CPU with AVX-512 its build for x86-64-v4 renders 4-9%
-// faster (docs/performance.md: more vector registers for a path's state, and fused
-// multiply-adds), while the rest of candela stays plain x86-64 and runs anywhere. The two copies
+// The integrator is scalar code, but on a CPU with AVX-512 its build for x86-64-v4 renders 4-13%
+// faster (docs/performance.md; a build for AVX2 and FMA alone, x86-64-v3, gained 1%), while the
+// rest of candela stays plain x86-64 and runs anywhere. The two copies
 // render the same image up to rounding: the x86-64-v4 one fuses multiply-adds, as nvcc does for
 // the GPU. Each runs the same on any thread count, so one machine's images stay reproducible.
 //
