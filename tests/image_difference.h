@@ -1,5 +1,5 @@
 // How far an image is from one it should equal up to rounding: the GPU's renders held against
-// the CPU's.
+// the CPU's, one CPU ray engine's or render loop's against another's.
 #pragma once
 
 #include <cstddef>

@@ -9,6 +9,7 @@
 
 #include "backends/cpu/cpu_engine.h"
 #include "backends/cpu/cpu_renderer.h"
+#include "image_difference.h"
 #include "render_test_util.h"
 #include "scene/animation.h"
 #include "scene/frame_scene.h"
@@ -289,16 +290,6 @@ TEST(Embree, EmptySceneIsAllMiss) {
   EXPECT_FALSE(embree.tracer().occluded(ray, kNone));
 }
 
-// Mean over pixels and channels of (a - b)^2 / (b^2 + 0.01), compare.py's relMSE.
-double relMse(const ImageRGB& a, const ImageRGB& b) {
-  double sum = 0;
-  for (size_t i = 0; i < a.pixels.size(); ++i) {
-    const double d = double(a.pixels[i]) - b.pixels[i];
-    sum += d * d / (double(b.pixels[i]) * b.pixels[i] + 0.01);
-  }
-  return sum / double(a.pixels.size());
-}
-
 RenderResult renderWith(CpuEngine engine, const SceneDesc& scene) {
   SceneDesc desc = scene;
   if (engine == CpuEngine::Embree) desc.ownBvh = OwnBvh::None;
@@ -315,9 +306,10 @@ void expectEnginesAgree(SceneDesc scene) {
   const ImageRGB embree = renderWith(CpuEngine::Embree, scene).image;
   scene.render.seed = 99;
   const ImageRGB otherSeed = renderWith(CpuEngine::Bvh, scene).image;
-  const double noise = relMse(otherSeed, own);
+  const double noise = test::relMseAgainst(own.pixels, otherSeed.pixels);
   EXPECT_GT(noise, 0.0);
-  EXPECT_LT(relMse(embree, own), 0.05 * noise) << "noise between seeds " << noise;
+  EXPECT_LT(test::relMseAgainst(own.pixels, embree.pixels), 0.05 * noise)
+      << "noise between seeds " << noise;
 }
 
 // A ball of 8 x 6 quads (96 triangles, enough to be traced as instances) whose lower half is
@@ -434,7 +426,7 @@ TEST(Embree, AnimationFramesRenderAsFreshBuilds) {
     sawMotion = sawMotion || frames.change() == SceneChange::Motion;
     const ImageRGB image = resident.render(RenderOptions{}).image;
     const ImageRGB fresh = renderWith(CpuEngine::Embree, still).image;
-    EXPECT_LT(relMse(image, fresh), 1e-6) << "frame " << f;
+    EXPECT_LT(test::relMseAgainst(fresh.pixels, image.pixels), 1e-6) << "frame " << f;
   }
   EXPECT_TRUE(sawMotion);
 }
@@ -461,7 +453,7 @@ TEST(Embree, PosedMeshFramesRefitAndRenderAsFreshBuilds) {
       motions += frames.change() == SceneChange::Motion;
       const ImageRGB image = resident.render(RenderOptions{}).image;
       const ImageRGB fresh = renderWith(engine, still).image;
-      EXPECT_LT(relMse(image, fresh), 1e-6) << "frame " << f;
+      EXPECT_LT(test::relMseAgainst(fresh.pixels, image.pixels), 1e-6) << "frame " << f;
     }
     EXPECT_EQ(motions, 3);
   }
@@ -617,7 +609,7 @@ TEST(Embree, AnimatedInstancesRenderAsFreshBuilds) {
     motions += frames.change() == SceneChange::Motion;
     const ImageRGB image = resident.render(RenderOptions{}).image;
     const ImageRGB fresh = renderWith(CpuEngine::Embree, still).image;
-    EXPECT_LT(relMse(image, fresh), 1e-6) << "frame " << f;
+    EXPECT_LT(test::relMseAgainst(fresh.pixels, image.pixels), 1e-6) << "frame " << f;
   }
   EXPECT_EQ(motions, 3);
 }

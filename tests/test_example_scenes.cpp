@@ -3,8 +3,6 @@
 // warning, so that no example goes stale as the format grows.
 #include <gtest/gtest.h>
 
-#include <algorithm>
-#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -12,24 +10,13 @@
 #include "scene/animation.h"
 #include "scene/flatten.h"
 #include "scene/read/scene_loader.h"
+#include "shipped_scenes.h"
 
 namespace candela {
 namespace {
 
-namespace fs = std::filesystem;
-
-std::vector<std::string> shippedScenes() {
-  std::vector<std::string> files;
-  for (const char* folder : {"/scenes", "/scenes/examples"})
-    for (const fs::directory_entry& e :
-         fs::directory_iterator(std::string(CANDELA_SOURCE_DIR) + folder))
-      if (e.path().extension() == ".json") files.push_back(e.path().string());
-  std::sort(files.begin(), files.end());
-  return files;
-}
-
 TEST(ExampleScenes, EachLoadsWithoutWarningsAndRenders) {
-  const std::vector<std::string> files = shippedScenes();
+  const std::vector<std::string> files = test::shippedScenes();
   EXPECT_GE(files.size(), 12u);
   for (const std::string& file : files) {
     SCOPED_TRACE(file);

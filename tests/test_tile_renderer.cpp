@@ -7,7 +7,6 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -15,14 +14,14 @@
 #include "backends/cpu/cpu_renderer.h"
 #include "backends/cpu/tile_renderer.h"
 #include "cpu_engines.h"
+#include "image_difference.h"
 #include "scene/animation.h"
 #include "scene/flatten.h"
 #include "scene/read/scene_loader.h"
+#include "shipped_scenes.h"
 
 namespace candela {
 namespace {
-
-namespace fs = std::filesystem;
 
 // Sets an environment variable for one scope, and puts back what it was.
 class ScopedEnv {
@@ -38,16 +37,6 @@ class ScopedEnv {
   std::string old_;
   bool had_ = false;
 };
-
-std::vector<std::string> exampleScenes() {
-  std::vector<std::string> files;
-  for (const char* folder : {"/scenes", "/scenes/examples"})
-    for (const fs::directory_entry& e :
-         fs::directory_iterator(std::string(CANDELA_SOURCE_DIR) + folder))
-      if (e.path().extension() == ".json") files.push_back(e.path().string());
-  std::sort(files.begin(), files.end());
-  return files;
-}
 
 RenderResult renderIn(const TileRenderer& tiles, CpuEngine engine, const SceneData& data,
                       bool aovs = false) {
@@ -90,16 +79,6 @@ TEST(TileRenderer, TheWidestTheCpuRunsIsPickedUnlessTheEnvironmentNamesOne) {
   }
 }
 
-// Mean over pixels and channels of (a - b)^2 / (b^2 + 0.01), compare.py's relMSE.
-double relMse(const ImageRGB& a, const ImageRGB& b) {
-  double sum = 0;
-  for (size_t i = 0; i < a.pixels.size(); ++i) {
-    const double d = double(a.pixels[i]) - b.pixels[i];
-    sum += d * d / (double(b.pixels[i]) * b.pixels[i] + 0.01);
-  }
-  return sum / double(a.pixels.size());
-}
-
 // The x86-64-v4 loop fuses multiply-adds, so a path can part from the baseline's where a
 // rounding tips a choice (a refraction's total reflection, a light pick): the two images agree
 // far below the noise between two seeds, as the two ray engines do (test_embree.cpp).
@@ -108,7 +87,7 @@ TEST(TileRenderer, X86_64V4RendersTheBaselinesImageUpToRoundingOnEveryShippedSce
   if (!tileRendererByName("x86-64-v4", &v4))
     GTEST_SKIP() << "this CPU (or build) has no x86-64-v4 (AVX-512): nothing to compare";
   const TileRenderer baseline = baselineTileRenderer();
-  const std::vector<std::string> files = exampleScenes();
+  const std::vector<std::string> files = test::shippedScenes();
   EXPECT_GE(files.size(), 40u);
   double worst = 0;
   for (const std::string& file : files) {
@@ -125,14 +104,15 @@ TEST(TileRenderer, X86_64V4RendersTheBaselinesImageUpToRoundingOnEveryShippedSce
       const ImageRGB a = renderIn(baseline, engine, data).image;
       forEngine.render.seed += 1;
       const ImageRGB otherSeed = renderIn(baseline, engine, flattenScene(forEngine)).image;
-      const double noise = relMse(otherSeed, a);
+      const double noise = test::relMseAgainst(a.pixels, otherSeed.pixels);
       // Both of each loop's instances: without passes, and with them.
       for (bool aovs : {false, true}) {
         const RenderResult b = renderIn(v4, engine, data, aovs);
         ASSERT_EQ(a.pixels.size(), b.image.pixels.size());
         EXPECT_EQ(b.aovs.size(), aovs ? a.pixels.size() / 3 : 0u);
-        EXPECT_LE(relMse(b.image, a), 0.05 * noise) << "noise between seeds " << noise;
-        if (noise > 0) worst = std::max(worst, relMse(b.image, a) / noise);
+        const double difference = test::relMseAgainst(a.pixels, b.image.pixels);
+        EXPECT_LE(difference, 0.05 * noise) << "noise between seeds " << noise;
+        if (noise > 0) worst = std::max(worst, difference / noise);
       }
     }
   }
