@@ -11,41 +11,33 @@ demangled names of the functions it may export. Exits 1, listing what else it ex
 import subprocess
 import sys
 
+# The personality routine's reference: data that every C++ object with exceptions exports.
+ALWAYS_EXPORTED = {'DW.ref.__gxx_personality_v0'}
+
+
+def run(*command):
+    return subprocess.run(command, check=True, capture_output=True, text=True).stdout
+
 
 def main(argv):
     if len(argv) < 4:
-        print(__doc__.strip().splitlines()[-4], file=sys.stderr)
+        print('usage: check_isa_object.py ARCHIVE MEMBER ENTRY...', file=sys.stderr)
         return 2
     archive, member, entries = argv[1], argv[2], set(argv[3:])
-    out = subprocess.run(['nm', '-A', '-C', '-g', '--defined-only', archive], check=True,
-                         capture_output=True, text=True).stdout
-    found = False
+    if member not in run('ar', 't', archive).split():
+        print(f'{archive} has no member {member}', file=sys.stderr)
+        return 1
     exported = []
-    for line in out.splitlines():
-        # libcandela_backends.a:render_tiles_x86_64_v4.cpp.o:0000000000000000 T name(args)
-        head, _, rest = line.partition(':')
+    # Lines such as "libcandela_backends.a:render_tiles_x86_64_v4.cpp.o:0000000000000000 T name".
+    for line in run('nm', '-A', '-C', '-g', '--defined-only', archive).splitlines():
+        _, _, rest = line.partition(':')
         name_of_member, _, symbol = rest.partition(':')
-        if name_of_member != member:
-            continue
-        found = True
         fields = symbol.split(' ', 2)
-        if len(fields) < 3:
+        if name_of_member != member or len(fields) < 3:
             continue
         kind, name = fields[1], fields[2]
-        # Code (T, W, i) or data that code could be reached through (V: a weak object, u: a
-        # unique global). The personality routine's reference is data every C++ object exports.
-        if name == 'DW.ref.__gxx_personality_v0':
-            continue
-        if name not in entries:
+        if name not in entries and name not in ALWAYS_EXPORTED:
             exported.append(f'{kind} {name}')
-    if not found:
-        # An object that defines nothing global does not appear; nm lists every member it reads
-        # only with symbols, so look for the member itself.
-        members = subprocess.run(['ar', 't', archive], check=True, capture_output=True,
-                                 text=True).stdout.split()
-        if member not in members:
-            print(f'{archive} has no member {member}', file=sys.stderr)
-            return 1
     if exported:
         print(f'{member} exports more than {", ".join(sorted(entries))}:', file=sys.stderr)
         for e in exported:

@@ -62,7 +62,10 @@ TEST(TileRenderer, TheWidestTheCpuRunsIsPickedUnlessTheEnvironmentNamesOne) {
 #else
   const bool v4 = false;
 #endif
-  EXPECT_STREQ(tileRenderer().isa, v4 ? "x86-64-v4" : baselineTileRenderer().isa);
+  {
+    const ScopedEnv unset("CANDELA_CPU_ISA", "");  // empty: as if unset
+    EXPECT_STREQ(tileRenderer().isa, v4 ? "x86-64-v4" : baselineTileRenderer().isa);
+  }
   {
     const ScopedEnv env("CANDELA_CPU_ISA", baselineTileRenderer().isa);
     EXPECT_EQ(tileRenderer().withBvh, baselineTileRenderer().withBvh);

@@ -44,9 +44,7 @@ TileRenderer tileRenderer() {
                          ", the instruction sets this build has that this CPU runs");
     return renderer;
   }
-#if defined(CANDELA_X86_64_V4_LOOP)
-  if (cpuRunsX86_64V4()) renderer = x86_64V4TileRenderer();
-#endif
+  tileRendererByName("x86-64-v4", &renderer);  // the widest, where the CPU runs it
   return renderer;
 }
 
