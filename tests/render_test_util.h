@@ -131,6 +131,33 @@ inline std::string writePlaneObj(const std::string& name, double half) {
   return path;
 }
 
+// Writes a torus about the y axis at `centre` (radii `major` and `minor`, rings x sides quads, two
+// triangles each, wound counter-clockwise seen from outside) as an OBJ file `name` in the test's
+// temporary folder, as writePlaneObj does; returns its path. A lamp of many small emitters, as
+// the bench's lamp room's.
+inline std::string writeTorusObj(const std::string& name, double cx, double cy, double cz,
+                                 double major, double minor, int rings, int sides) {
+  const std::string path = ::testing::TempDir() + name;
+  const std::string own = path + "." + std::to_string(getpid()) + ".tmp";
+  {
+    std::ofstream f(own);
+    const double tau = 6.283185307179586;
+    for (int i = 0; i < rings; ++i)
+      for (int j = 0; j < sides; ++j) {
+        const double u = tau * i / rings, v = tau * j / sides, r = major + minor * std::cos(v);
+        f << "v " << cx + r * std::cos(u) << " " << cy + minor * std::sin(v) << " "
+          << cz + r * std::sin(u) << "\n";
+      }
+    const auto at = [&](int i, int j) { return (i % rings) * sides + (j % sides) + 1; };
+    for (int i = 0; i < rings; ++i)
+      for (int j = 0; j < sides; ++j)
+        f << "f " << at(i, j) << " " << at(i, j + 1) << " " << at(i + 1, j + 1) << "\nf "
+          << at(i, j) << " " << at(i + 1, j + 1) << " " << at(i + 1, j) << "\n";
+  }
+  std::rename(own.c_str(), path.c_str());
+  return path;
+}
+
 // Mean and standard deviation of one channel over a pixel rectangle [x0,x1) x [y0,y1).
 struct RegionStats {
   double mean = 0, stddev = 0;

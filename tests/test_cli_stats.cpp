@@ -119,6 +119,7 @@ TEST_P(CliStatsEngineTest, WritesEveryKeyWithSaneNumbers) {
                           "antialiasing",
                           "filter",
                           "light_paths",
+                          "first_hit_light_samples",
                           "use_bvh",
                           "engine",
                           "load_seconds",
@@ -153,7 +154,7 @@ TEST_P(CliStatsEngineTest, WritesEveryKeyWithSaneNumbers) {
   EXPECT_EQ(s["filter"], json({{"type", "box"}}));
   EXPECT_EQ(s["use_bvh"], true);
   EXPECT_EQ(s["denoise_seconds"], 0.0);  // no --denoise
-  // Too small a render for the light-path pilot (backends/light_path_pilot.h): they stay on.
+  // Too small a render for the light-path pilot (backends/render_pilot.h): they stay on.
   EXPECT_EQ(s["light_paths"]["setting"], "auto");
   EXPECT_EQ(s["light_paths"]["on"], true);
   EXPECT_EQ(s["light_paths"]["piloted"], false);
@@ -231,7 +232,7 @@ TEST_F(CliStatsTest, ReportsThePixelFilterAsTheSceneWritesIt) {
 }
 
 // Large enough a render for the light-path pilot, of a scene where it turns them off (a lamp high
-// above an open floor: tests/test_light_path_pilot.cpp).
+// above an open floor: tests/test_render_pilot.cpp).
 TEST_F(CliStatsTest, APilotedRenderReportsItsChoiceAndCountsItsTime) {
   std::ofstream(dir_ / "open.json") << R"({
     "camera": {"width": 256, "height": 256, "fov": 50, "position": [0, 3, 8],
@@ -251,6 +252,11 @@ TEST_F(CliStatsTest, APilotedRenderReportsItsChoiceAndCountsItsTime) {
   EXPECT_GT(lp["pilot_seconds"].get<double>(), 0);
   EXPECT_GE(s["render_seconds"].get<double>(), lp["pilot_seconds"].get<double>());
   EXPECT_EQ(s["rays"]["camera"], 256 * 256 * 16);  // the image's rays alone
+  // Its lone point light is sampled without a pick: one light sample, no pilot for them.
+  const json& samples = s["first_hit_light_samples"];
+  EXPECT_EQ(samples["setting"], "auto");
+  EXPECT_EQ(samples["count"], 1);
+  EXPECT_EQ(samples["piloted"], false);
 }
 
 // A scene path that is not UTF-8 (Linux allows any bytes) still gives valid JSON: the bad byte

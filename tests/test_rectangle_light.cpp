@@ -80,15 +80,18 @@ const Rect kOverThePlane{{0.3, 1.4, -0.2}, {0.3, -1, 0.2}, {1, 0.2, 0.4}, 2.4, 0
 
 // The plane y = 0 seen from above through pixel centres, lit only by `rect` above it, one bounce:
 // every pixel is rho E / pi, E by Lambert's formula, within the noise of two seeds (light paths
-// on or off: the estimate is the same, only its noise differs).
-void expectPlaneUnderTheRectangle(const std::string& lightPaths, const Rect& rect = kOverThePlane) {
+// on or off, one light sample at the first hit or more: the estimate is the same, only its noise
+// differs).
+void expectPlaneUnderTheRectangle(const std::string& lightPaths, const Rect& rect = kOverThePlane,
+                                  int firstHitLightSamples = 1) {
   const std::string obj = test::writePlaneObj("rectangle_plane.obj", 100);
   const double rho = 0.7;
   const std::string scene = R"({
     "camera": {"width": 48, "height": 32, "fov": 100, "position": [0, 1, 0],
                "look_at": [0, 0, 0.001], "up": [0, 0, -1], "spp": 64},
     "render": {"antialiasing": false, "max_depth": 2, "light_paths": ")" +
-                            lightPaths + R"(", "seed": SEED},
+                            lightPaths + R"(", "seed": SEED, "first_hit_light_samples": )" +
+                            std::to_string(firstHitLightSamples) + R"(},
     "objects": [{"file": ")" +
                             obj + R"(", "color": )" + num(rho) +
                             R"(}],
@@ -129,6 +132,14 @@ TEST(RectangleLight, ThePlaneUnderItIsLambertsIrradianceOfAPolygon) {
 }
 
 TEST(RectangleLight, ThePlaneUnderItIsTheSameWithLightPaths) { expectPlaneUnderTheRectangle("on"); }
+
+// Four light samples at the first hit, each weighed as one of four against the BSDF's sample
+// that finds the rectangle (render.first_hit_light_samples): weighed as one, the plane would be
+// several percent too bright near the light.
+TEST(RectangleLight, ThePlaneUnderItIsTheSameWithFourLightSamplesAtTheFirstHit) {
+  expectPlaneUnderTheRectangle("off", kOverThePlane, 4);
+  expectPlaneUnderTheRectangle("on", kOverThePlane, 4);
+}
 
 // Turned to shine up, away from the plane, a two-sided rectangle lights the plane from its back
 // with half its power: every pixel is rho E / pi for the radiance P / (2 pi w h), with and without

@@ -44,7 +44,7 @@ struct Camera {
   float shutterRowSlope = 0, shutterRowShare = 1;
   // Pixel (x, y) of the render is pixel (stride x + stride / 2, stride y + stride / 2) of this
   // camera's image: a sparse sample of its pixels (the light-path pilot's,
-  // backends/light_path_pilot.h); 1 for every render of the image itself.
+  // backends/render_pilot.h); 1 for every render of the image itself.
   uint32_t pixelStride = 1;
   // Or pixel (windowX + x, windowY + y): a window of the image (a crop, CameraDesc::crop, or
   // backends/seen_emitters.h's) whose pixels take the samples they have in the whole image,

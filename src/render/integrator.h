@@ -55,15 +55,18 @@ CANDELA_HDI_ALWAYS Ray spawnRay(const SurfacePoint& sp, const Vec3& wi, uint32_t
 
 // Direct light at a point with a smooth BSDF lobe from light `index`, as the shadow ray
 // `*shadow` whose contribution is throughput times the light's share, weighted by the probability
-// selectPmf of sampling that light; no query where the light shows the point nothing.
+// selectPmf of sampling that light; no query where the light shows the point nothing. `samples`
+// is how many light samples the point takes (SceneView::firstHitLightSamples): each is weighed as
+// one of that many (Veach's multi-sample MIS, the strategy's density times its count) and adds
+// its share of their mean.
 // `arrivalPdf` is the density in area measure with which the path's last BSDF sample found this
 // point where a light vertex could have been connected to instead (0 where not): the light's
 // share is then weighted against that connection too (render/light_path.h). The shadow ray is
 // keyed `key`.
 CANDELA_HDI void sampleOneLight(const SceneView& scene, uint32_t index, float selectPmf,
                                 const Bsdf& bsdf, const SurfacePoint& sp, float u1, float u2,
-                                const Vec3& throughput, float arrivalPdf, uint32_t key,
-                                ShadowQuery* shadow) {
+                                const Vec3& throughput, float arrivalPdf, float samples,
+                                uint32_t key, ShadowQuery* shadow) {
   const Light& light = scene.lights[index];
   LightSample ls;
   if (!sampleLight(scene, light, sp.p, sp.time, u1, u2, &ls)) return;
@@ -83,17 +86,17 @@ CANDELA_HDI void sampleOneLight(const SceneView& scene, uint32_t index, float se
     }
   }
   shadow->skipPrim = lightPrimitive(scene, light);
-  const float lightPdf = selectPmf * ls.pdf;
+  const float lightPdf = samples * selectPmf * ls.pdf;
   // A light with a surface is also reached by the light subpath's connection (none: density 0).
   const float weight =
       !ls.isDelta
           ? misWeight3(lightPdf, bsdfPdf,
                        lightSubpathSolidAnglePdf(scene, index, sp.time, sp.ng, ls.wi, arrivalPdf),
                        connectsLightSubpaths(scene, light))
-      : arrivalPdf > 0.0f
-          ? misWeight3(arrivalPdf * selectPmf, lightVertexPdf(scene, index, sp.time, sp.p, sp.ng),
-                       0.0f, connectsLightSubpaths(scene, light))
-          : 1.0f;
+      : arrivalPdf > 0.0f ? misWeight3(samples * arrivalPdf * selectPmf,
+                                       lightVertexPdf(scene, index, sp.time, sp.p, sp.ng), 0.0f,
+                                       connectsLightSubpaths(scene, light))
+                          : 1.0f;
   shadow->contribution = throughput * (f * ls.radiance * (weight / lightPdf));
   shadow->active = true;
 }
@@ -127,15 +130,15 @@ CANDELA_HDI int pickLightSample(const SceneView& scene, const Vec3& p, const Vec
 // `hemisphere` (reflectingHemisphere: zero where the surface also transmits), as a shadow query
 // (sampleOneLight, which `arrivalPdf` is passed to): from the scene's lone delta light
 // (render/light.h, isLoneDeltaLight), else from one light picked by its importance here
-// (render/light_selection.h).
+// (render/light_selection.h); one of `samples` such samples the point takes.
 CANDELA_HDI void estimateDirect(const SceneView& scene, const Bsdf& bsdf, const Vec3& hemisphere,
                                 const SurfacePoint& sp, const Vec3& throughput, float arrivalPdf,
-                                SampleStream& rng, ShadowQuery* shadow) {
+                                float samples, SampleStream& rng, ShadowQuery* shadow) {
   float u1, u2, selectPmf;  // as pickLightSample draws them
   const int index = pickLightSample(scene, sp.p, hemisphere, rng, &u1, &u2, &selectPmf);
   if (index < 0) return;
   sampleOneLight(scene, uint32_t(index), selectPmf, bsdf, sp, u1, u2, throughput, arrivalPdf,
-                 rayKeyFor(scene, rng, kShadowRay), shadow);
+                 samples, rayKeyFor(scene, rng, kShadowRay), shadow);
 }
 
 // Direct light at a path's first interaction in a scene of a few delta lights
@@ -146,10 +149,11 @@ CANDELA_HDI void estimateDirectFromEach(const SceneView& scene, const Bsdf& bsdf
                                         const SurfacePoint& sp, const Vec3& throughput,
                                         SampleStream& rng, LightQueries* lights) {
   static_assert(kEachDeltaLightUpTo <= kMaxLightQueries, "a query for each light");
+  static_assert(kMaxFirstHitLightSamples <= kMaxLightQueries, "a query for each light sample");
   rng.skip();  // the pick's pair of numbers (a delta light uses none)
   rng.skip();  // the stand-in for the pick's place
   for (uint32_t i = 0; i < scene.firstHitDeltaLights; ++i)
-    sampleOneLight(scene, i, 1.0f, bsdf, sp, 0.0f, 0.0f, throughput, 0.0f,
+    sampleOneLight(scene, i, 1.0f, bsdf, sp, 0.0f, 0.0f, throughput, 0.0f, 1.0f,
                    rayKeyFor(scene, rng, RayKind(kEachLightRay + i)), &lights->query.emplace(i));
   lights->count = scene.firstHitDeltaLights;
 }
@@ -179,6 +183,9 @@ struct PathState {
   // an emitter the last bounce finds is then weighted against that connection.
   Vec3 bounceNormal = Vec3(0.0f);
   float bounceArrivalPdf = 0.0f;
+  // How many light samples next-event estimation took at the last bounce (estimateDirect's
+  // `samples`): what the bounce's BSDF sample finds is weighed against that many.
+  float bounceLightSamples = 1.0f;
   // The sample's light vertex (render/light_path.h), and whether the last interaction may be
   // connected to one, so that the next weighs its next-event estimation against that.
   LightVertex lightVertex;
@@ -200,7 +207,8 @@ CANDELA_HDI Vec3 sunDiscSeen(const SceneView& scene, const Light& l, const PathS
   const float weight =
       st.specularBounce
           ? 1.0f
-          : powerHeuristic(st.bsdfPdf, scene.infiniteLightShare * uniformConePdf(l.sunOneMinusCos));
+          : powerHeuristic(st.bsdfPdf, st.bounceLightSamples * scene.infiniteLightShare *
+                                           uniformConePdf(l.sunOneMinusCos));
   return sunRadiance(l) * weight;
 }
 
@@ -293,6 +301,7 @@ CANDELA_HDI bool scatterInMedium(const SceneView& scene, const Material& inside,
   st.bounceHemisphere = Vec3(0.0f);  // light comes from every side
   st.bounceNormal = Vec3(0.0f);
   st.bounceArrivalPdf = 0.0f;
+  st.bounceLightSamples = 1.0f;
   st.connectable = false;
   if (!survivesRoulette(depth, rng, &st)) return false;
   st.ray.origin = p;
@@ -342,10 +351,12 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
   if (!found) {
     const int32_t light = st.specularBounce ? -1 : scene.environment.light;
     const float weight =
-        light < 0 ? 1.0f
-                  : powerHeuristic(st.bsdfPdf, lightSelectPmf(scene, uint32_t(light),
-                                                              st.bouncePoint, st.bounceHemisphere) *
-                                                   environmentPdf(scene, st.ray.direction));
+        light < 0
+            ? 1.0f
+            : powerHeuristic(st.bsdfPdf, st.bounceLightSamples *
+                                             lightSelectPmf(scene, uint32_t(light), st.bouncePoint,
+                                                            st.bounceHemisphere) *
+                                             environmentPdf(scene, st.ray.direction));
     Vec3 background = fromCamera && scene.environment.hiddenFromCamera
                           ? Vec3(0.0f)
                           : environmentRadiance(scene, st.ray.direction);
@@ -428,8 +439,9 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
           lightSelectPmf(scene, uint32_t(light), st.bouncePoint, st.bounceHemisphere);
       // The ray may have left from an index-matched crossing after the bounce point.
       const float distance = scene.indexMatchedMedia ? length(sp.p - st.bouncePoint) : hit.t;
-      const float neePdf = selectPmf * emitterPdf(scene, scene.lights[light], st.bouncePoint,
-                                                  sp.time, st.ray.direction, distance, sp.ng);
+      const float neePdf = st.bounceLightSamples * selectPmf *
+                           emitterPdf(scene, scene.lights[light], st.bouncePoint, sp.time,
+                                      st.ray.direction, distance, sp.ng);
       const float subpathPdf = lightSubpathSolidAnglePdf(
           scene, uint32_t(light), sp.time, st.bounceNormal, st.ray.direction, st.bounceArrivalPdf);
       weight = misWeight3(st.bsdfPdf, neePdf, subpathPdf,
@@ -470,6 +482,7 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
   const Vec3 hemisphere = reflectingHemisphere(bsdf);
   const bool smooth = hasSmoothLobe(m);
   float arrivalPdf = 0.0f;
+  float lightSamples = 1.0f;  // taken here by next-event estimation
   if (smooth) {
     if (st.connectable && !st.specularBounce && holdsLightVertex(m)) {
       const Vec3 back = st.bouncePoint - sp.p;
@@ -483,11 +496,17 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
         if constexpr (kAovs) lights->query[k].direct = true;
       }
     } else {
-      ShadowQuery& shadow = lights->query.emplace(0);
-      lights->count = 1;
-      estimateDirect(scene, bsdf, hemisphere, sp, st.throughput, arrivalPdf, rng, &shadow);
-      counters.shadow += shadow.active;
-      if constexpr (kAovs) shadow.direct = depth == 1;
+      // Several light samples at the first interaction where the scene asks for them, one
+      // elsewhere.
+      lights->count = depth == 1 ? scene.firstHitLightSamples : 1;
+      lightSamples = float(lights->count);
+      for (uint32_t k = 0; k < lights->count; ++k) {
+        ShadowQuery& shadow = lights->query.emplace(k);
+        estimateDirect(scene, bsdf, hemisphere, sp, st.throughput, arrivalPdf, lightSamples, rng,
+                       &shadow);
+        counters.shadow += shadow.active;
+        if constexpr (kAovs) shadow.direct = depth == 1;
+      }
     }
     // Each shadow ray starts in the medium on its side of the surface (glass's, or past any other
     // surface the path's); only shadow rays that cross index-matched glass read it.
@@ -541,6 +560,7 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
   st.bounceHemisphere = hemisphere;
   st.bounceNormal = sp.ng;
   st.bounceArrivalPdf = arrivalPdf;
+  st.bounceLightSamples = lightSamples;
 
   if (!survivesRoulette(depth, rng, &st)) return false;
   st.ray = spawnRay(sp, bs.wi, rayKeyFor(scene, rng, kBounceRay));
@@ -564,6 +584,7 @@ CANDELA_HDI bool resumeBranch(PathState* path, SampleStream* rng) {
   path->specularBounce = true;  // a delta lobe: what it finds counts fully
   path->bsdfPdf = 0.0f;
   path->bounceArrivalPdf = 0.0f;
+  path->bounceLightSamples = 1.0f;
   path->connectable = false;
   *rng = b.rng;
   return true;

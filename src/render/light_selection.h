@@ -10,6 +10,14 @@
 
 namespace candela {
 
+// Whether next-event estimation picks a light at a path's first interaction, so that more than
+// one light sample there (SceneView::firstHitLightSamples) may draw different lights: not in a
+// scene without lights, nor where its lone point light, or each of its few delta lights, is
+// sampled without a pick (render/light.h).
+CANDELA_HDI bool takesFirstHitLightSamples(const SceneView& scene) {
+  return scene.lightCount > 0 && !scene.loneDeltaLight && scene.firstHitDeltaLights == 0;
+}
+
 // The light picked at p, whose reflecting hemisphere is around n (zero where the surface also
 // transmits), for uniform u in [0, 1), and in *pmf the probability of that pick, in *remapped
 // u's place within the picked light's share of [0, 1), again uniform in [0, 1); -1 when no

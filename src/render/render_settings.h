@@ -10,13 +10,17 @@ namespace candela {
 enum class IntegratorType : uint32_t { Path = 0, Direct = 1 };
 
 // Whether samples start light subpaths from point lights (render/light_path.h): `Auto` lets a
-// pilot render decide for each render (backends/light_path_pilot.h).
+// pilot render decide for each render (backends/render_pilot.h).
 enum class LightPaths : uint32_t { Auto = 0, On = 1, Off = 2 };
 
 // "auto", "on" or "off", as the scene file spells it.
 constexpr const char* lightPathsName(LightPaths lightPaths) {
   return lightPaths == LightPaths::Auto ? "auto" : lightPaths == LightPaths::On ? "on" : "off";
 }
+
+// The most light samples a path's first interaction takes (RenderSettings::firstHitLightSamples;
+// render/shadow_query.h holds that many queries).
+constexpr uint32_t kMaxFirstHitLightSamples = 4;
 
 struct RenderSettings {
   uint32_t spp = 64;  // samples per pixel (the scene's camera.spp)
@@ -25,6 +29,9 @@ struct RenderSettings {
   bool antialiasing = true;  // false: every sample through the pixel centre, whatever the filter
   PixelFilter filter;
   LightPaths lightPaths = LightPaths::Auto;
+  // How many lights next-event estimation samples at a path's first interaction, 1 to
+  // kMaxFirstHitLightSamples; 0 ("auto"): a pilot render decides (backends/render_pilot.h).
+  uint32_t firstHitLightSamples = 0;
   // Next-event estimation at smooth-shaded faces follows their smooth surface near the shadow
   // terminator (render/shadow_ray_origin.h).
   bool smoothTerminator = true;

@@ -1,10 +1,12 @@
 #include "render/scene_data.h"
 
+#include <algorithm>
 #include <limits>
 #include <utility>
 
 #include "core/check.h"
 #include "render/index_matched.h"
+#include "render/light_selection.h"
 #include "render/path_branch.h"
 
 namespace candela {
@@ -19,6 +21,8 @@ SceneView SceneData::view() const {
   v.firstTriangleLight = firstTriangleLight;
   v.loneDeltaLight = loneDeltaLight;
   v.firstHitDeltaLights = firstHitDeltaLights;
+  v.firstHitLightSamples =
+      takesFirstHitLightSamples(v) ? std::max(settings.firstHitLightSamples, 1u) : 1u;
   v.lightPathLights = settings.integrator == IntegratorType::Path && settings.maxDepth >= 2 &&
                               settings.lightPaths != LightPaths::Off
                           ? lightsStartingPaths

@@ -85,6 +85,10 @@ struct SceneView : GeometryView {
   // How many point lights a path's first interaction samples each of (render/light.h,
   // firstHitDeltaLights); 0: one light is picked there too.
   uint32_t firstHitDeltaLights = 0;
+  // How many lights next-event estimation picks, each with its own shadow ray, at a path's
+  // first interaction (RenderSettings::firstHitLightSamples, resolved): more than one only where
+  // a light is picked there (takesFirstHitLightSamples).
+  uint32_t firstHitLightSamples = 1;
   // How many lights start light subpaths (render/light_path.h): those with power but the lights
   // at infinity, where the integrator is "path" and a path may have two interactions; 0 for
   // none. Where some of them have a surface, each subpath draws two numbers for its point.

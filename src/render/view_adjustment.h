@@ -1,11 +1,12 @@
-// What one render changes of the scene's view for itself alone: the light-path pilot's coarse,
-// reseeded images and the choice it makes (backends/light_path_pilot.h), and the windows in which
+// What one render changes of the scene's view for itself alone: the pilot's coarse, reseeded
+// images and the choices it makes (backends/render_pilot.h), and the windows in which
 // the emitters seen are sampled again (backends/seen_emitters.h), with the scene given to the
 // renderer left as it is.
 #pragma once
 
 #include <cstdint>
 
+#include "render/light_selection.h"
 #include "render/scene_view.h"
 
 namespace candela {
@@ -23,6 +24,9 @@ struct ViewAdjustment {
   // drawing the samples it has in the whole image's render.
   PixelWindow window;
   bool lightPaths = true;  // false: no light subpaths, whatever the scene allows
+  // > 0: the light samples of a path's first interaction, instead of the scene's, where a light is
+  // picked there (takesFirstHitLightSamples).
+  uint32_t firstHitLightSamples = 0;
   bool reseed = false;     // true: render with `seed` instead of the scene's
   uint64_t seed = 0;
   uint32_t spp = 0;  // > 0: the render's samples per pixel instead of the scene's
@@ -46,6 +50,8 @@ inline SceneView adjustedView(SceneView view, const ViewAdjustment& adjust) {
     view.camera.height = adjust.window.height;
   }
   if (!adjust.lightPaths || adjust.seenOnly) view.lightPathLights = 0;
+  if (adjust.firstHitLightSamples > 0 && takesFirstHitLightSamples(view))
+    view.firstHitLightSamples = adjust.firstHitLightSamples;
   if (adjust.seenOnly) view.settings.maxDepth = 0;
   if (adjust.reseed) view.settings.seed = adjust.seed;
   if (adjust.spp > 0) view.settings.spp = adjust.spp;

@@ -29,7 +29,7 @@
 #include "apps/cli/stats_writer.h"
 #include "apps/cli/summary.h"
 #include "apps/denoise/oidn_denoiser.h"
-#include "backends/light_path_pilot.h"
+#include "backends/render_pilot.h"
 #include "backends/thread_limit.h"
 #include "image/atomic_file.h"
 #include "image/image_io.h"
@@ -334,8 +334,8 @@ int renderStill(const RenderCommandOptions& options, SceneDesc desc, double load
   if (bar) render.progress = [&bar](double fraction) { bar->update(fraction); };
   const std::unique_ptr<Renderer> renderer = makeRenderer(backend, engine);
   renderer->setScene(scene, SceneChange::Structure);
-  LightPathChoice lightPaths;
-  RenderResult result = renderChoosingLightPaths(*renderer, scene, render, &lightPaths);
+  PilotChoice pilot;
+  RenderResult result = renderWithPilot(*renderer, scene, render, &pilot);
   if (bar) bar->clear();
   const double denoiseSeconds = denoiseTimed(denoiser.get(), result, scene, *renderer, render);
 
@@ -358,7 +358,7 @@ int renderStill(const RenderCommandOptions& options, SceneDesc desc, double load
     info.flattenSeconds = flattenSeconds;
     info.denoiseSeconds = denoiseSeconds;
     info.acceleration = renderer->acceleration();
-    info.lightPaths = lightPaths;
+    info.pilot = pilot;
     createParentDirectories(options.stats);
     stats.emplace(options.stats, renderStatsJson(info, scene, result));
   }

@@ -8,9 +8,8 @@
 #include <fstream>
 #include <list>
 #include <memory>
-#include <optional>
-
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "apps/cli/cli_error.h"
 #include "apps/cli/interrupt.h"
@@ -21,7 +20,7 @@
 #include "apps/cli/summary.h"
 #include "apps/cli/video.h"
 #include "apps/denoise/oidn_denoiser.h"
-#include "backends/light_path_pilot.h"
+#include "backends/render_pilot.h"
 #include "image/atomic_file.h"
 #include "image/image_io.h"
 #include "scene/animation.h"
@@ -276,7 +275,7 @@ int runSequence(const RenderCommandOptions& options, std::vector<SceneDesc> scen
     render.aovs = !passes.aovs.empty() || denoiser;
     if (bar) render.progress = [&bar](double fraction) { bar->update(fraction); };
     renderer->setScene(data, frameScene.change());
-    RenderResult result = renderChoosingLightPaths(*renderer, data, render);
+    RenderResult result = renderWithPilot(*renderer, data, render);
     if (bar) bar->clear();
     const double denoiseSeconds = denoiseTimed(denoiser.get(), result, data, *renderer, render);
     if (result.cancelled) {

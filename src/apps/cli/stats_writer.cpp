@@ -72,14 +72,22 @@ std::string renderStatsJson(const RenderStats& info, const SceneData& scene,
                        {"normals", normals}, {"triangles", tris},     {"engine", engine},
                        {"total", total}};
   o["bytes_per_triangle"] = finiteOrZero(triangles ? double(total) / double(triangles) : 0);
-  const LightPathChoice& lp = info.lightPaths;
+  const PilotChoice& pilot = info.pilot;
+  // The pilot's seconds and rays are those of all it rendered, for both choices.
   o["light_paths"] = {{"setting", lightPathsName(s.lightPaths)},
-                      {"on", lp.lightPaths},
-                      {"piloted", lp.piloted},
-                      {"pilot_seconds", finiteOrZero(lp.seconds)},
-                      {"pilot_rays", lp.rays.total()},
-                      {"pilot_with", finiteOrZero(lp.withLightPaths)},
-                      {"pilot_without", finiteOrZero(lp.withoutLightPaths)}};
+                      {"on", pilot.lightPaths},
+                      {"piloted", pilot.piloted},
+                      {"pilot_seconds", finiteOrZero(pilot.seconds)},
+                      {"pilot_rays", pilot.rays.total()},
+                      {"pilot_with", finiteOrZero(pilot.withLightPaths)},
+                      {"pilot_without", finiteOrZero(pilot.withoutLightPaths)}};
+  o["first_hit_light_samples"] = {
+      {"setting", s.firstHitLightSamples == 0 ? nlohmann::ordered_json("auto")
+                                              : nlohmann::ordered_json(s.firstHitLightSamples)},
+      {"count", pilot.firstHitLightSamples},
+      {"piloted", pilot.lightSamplesPiloted},
+      {"pilot_one", finiteOrZero(pilot.oneLightSample)},
+      {"pilot_two", finiteOrZero(pilot.twoLightSamples)}};
   o["render_seconds"] = finiteOrZero(result.seconds);
   o["samples"] = samples;
   o["samples_per_second"] = finiteOrZero(rate(double(samples), result.seconds));

@@ -15,7 +15,7 @@
 //                      what Embree holds (its BVH; it shares the scene's vertices)
 //   bytes_per_triangle  memory_bytes.total / triangles (0 without triangles)
 //   light_paths {setting, on, piloted, pilot_seconds, pilot_rays, pilot_with, pilot_without}:
-//                      whether samples started light subpaths (backends/light_path_pilot.h);
+//                      whether samples started light subpaths (backends/render_pilot.h);
 //                      pilot_with and pilot_without are the pilot's variance x cost of either
 //   render_seconds, samples, samples_per_second (render_seconds includes pilot_seconds; rays
 //                      and rays_per_second count the image's rays alone)
@@ -26,7 +26,7 @@
 
 #include <string>
 
-#include "backends/light_path_pilot.h"
+#include "backends/render_pilot.h"
 #include "backends/renderer.h"
 #include "render/render_result.h"
 #include "render/scene_data.h"
@@ -42,7 +42,7 @@ struct RenderStats {
   double flattenSeconds = 0;
   double denoiseSeconds = 0;
   AccelerationStats acceleration;  // the renderer's ray engine
-  LightPathChoice lightPaths;      // and whether its samples started light subpaths
+  PilotChoice pilot;  // what its pilot chose: light subpaths, the first interaction's light samples
 };
 
 // The JSON text (one object, trailing newline).

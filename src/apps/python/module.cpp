@@ -28,7 +28,7 @@
 #include "apps/denoise/oidn_denoiser.h"
 #include "apps/python/interruptible.h"
 #include "backends/backend_report.h"
-#include "backends/light_path_pilot.h"
+#include "backends/render_pilot.h"
 #include "backends/renderer.h"
 #include "backends/seen_emitters.h"
 #include "backends/thread_limit.h"
@@ -266,7 +266,7 @@ nb::object render(const Scene& scene, std::optional<uint32_t> spp, std::optional
     const SceneData& data = prepareRenderer(cache, desc, chosen, flow ? &*flow : nullptr,
                                             backwardFlow ? &*backwardFlow : nullptr);
     options.cancel = &cancel;
-    result = renderChoosingLightPaths(*cache.renderer, data, options);
+    result = renderWithPilot(*cache.renderer, data, options);
     if (!result.cancelled && aovNames && !passSums)
       layers = makeAovLayers(data, aovs, result.aovs);
   });

@@ -54,8 +54,9 @@ PixelFilter readFilter(const JsonValue& value) {
 }  // namespace
 
 void readRender(const JsonValue& value, RenderSettings& render, OutputDesc& output) {
-  JsonObject fields(value, {"max_depth", "integrator", "light_paths", "antialiasing", "filter",
-                            "smooth_terminator", "seed", "gamma", "exposure", "tone_map"});
+  JsonObject fields(
+      value, {"max_depth", "integrator", "light_paths", "first_hit_light_samples", "antialiasing",
+              "filter", "smooth_terminator", "seed", "gamma", "exposure", "tone_map"});
   if (std::optional<JsonValue> depth = fields.get("max_depth"))
     render.maxDepth = static_cast<uint32_t>(depth->integer(1, UINT32_MAX, "a positive integer"));
   if (std::optional<JsonValue> integrator = fields.get("integrator"))
@@ -63,6 +64,12 @@ void readRender(const JsonValue& value, RenderSettings& render, OutputDesc& outp
         integrator->choice({"path", "direct"}) == 0 ? IntegratorType::Path : IntegratorType::Direct;
   if (std::optional<JsonValue> lightPaths = fields.get("light_paths"))
     render.lightPaths = LightPaths(lightPaths->choice({"auto", "on", "off"}));
+  if (std::optional<JsonValue> samples = fields.get("first_hit_light_samples"))
+    render.firstHitLightSamples =
+        samples->json().is_string() && samples->string() == "auto"
+            ? 0u
+            : uint32_t(samples->integer(1, kMaxFirstHitLightSamples,
+                                        "\"auto\" or an integer from 1 to 4"));
   if (std::optional<JsonValue> antialiasing = fields.get("antialiasing"))
     render.antialiasing = antialiasing->boolean();
   if (std::optional<JsonValue> filter = fields.get("filter")) {

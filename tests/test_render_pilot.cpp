@@ -1,12 +1,13 @@
-// The light-path pilot (backends/light_path_pilot.h): the sparse pixels it renders, the choice it
-// makes where connections clearly pay and where they clearly do not, that the choice is the same
-// on any thread count, and when it is skipped.
+// The pilot render (backends/render_pilot.h): the sparse pixels it renders, the choice it makes
+// where connections clearly pay and where they clearly do not, and of light samples at the first
+// interaction where a second pays and where it does not, that the choices are the same on any
+// thread count, and when it is skipped.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <string>
 
-#include "backends/light_path_pilot.h"
+#include "backends/render_pilot.h"
 #include "render/render_pixel.h"
 #include "render_test_util.h"
 
@@ -36,12 +37,12 @@ std::string lampHighAboveAnOpenFloor(const std::string& render = "") {
     "lights": [{"position": [0, 50, 0], "intensity": 4000}]})";
 }
 
-LightPathChoice choose(const SceneData& scene, int threads = 0) {
+PilotChoice choose(const SceneData& scene, int threads = 0) {
   CpuRenderer renderer(CpuEngine::Bvh);
   renderer.setScene(scene, SceneChange::Structure);
   RenderOptions options;
   options.threads = threads;
-  return chooseLightPaths(renderer, scene, options);
+  return choosePilot(renderer, scene, options);
 }
 
 TEST(ViewAdjustment, AStrideRendersTheMiddlePixelOfEachBlock) {
@@ -135,7 +136,7 @@ TEST(LightPathPilot, TurnsThemOffOnlyWhereClearlyCheaperWithout) {
 }
 
 TEST(LightPathPilot, KeepsLightPathsWhereALampLightsTheCeilingOfASmallRoom) {
-  const LightPathChoice c = choose(test::loadTestScene(lampUnderTheCeiling(256, 16)));
+  const PilotChoice c = choose(test::loadTestScene(lampUnderTheCeiling(256, 16)));
   EXPECT_TRUE(c.piloted);
   EXPECT_TRUE(c.lightPaths);
   EXPECT_LT(c.withLightPaths, 0.5 * c.withoutLightPaths);
@@ -149,7 +150,7 @@ TEST(LightPathPilot, KeepsLightPathsWhereALampLightsTheCeilingOfASmallRoom) {
 // relMSE weighs it, 0.92.
 TEST(LightPathPilot, KeepsThemForTheCornellBoxWhoseLampIsSeen) {
   const std::string cornell = std::string(CANDELA_SOURCE_DIR) + "/scenes/meshes/cornell/";
-  const LightPathChoice c = choose(test::loadTestScene(R"({
+  const PilotChoice c = choose(test::loadTestScene(R"({
     "camera": {"width": 128, "height": 128, "fov": 39.3, "position": [2.78, 2.73, -8.0],
                "look_at": [2.78, 2.73, 0], "spp": 64},
     "render": {"max_depth": 5, "seed": 11},
@@ -163,7 +164,7 @@ TEST(LightPathPilot, KeepsThemForTheCornellBoxWhoseLampIsSeen) {
 }
 
 TEST(LightPathPilot, TurnsThemOffUnderALampHighAboveAnOpenFloor) {
-  const LightPathChoice c = choose(test::loadTestScene(lampHighAboveAnOpenFloor()));
+  const PilotChoice c = choose(test::loadTestScene(lampHighAboveAnOpenFloor()));
   EXPECT_TRUE(c.piloted);
   EXPECT_FALSE(c.lightPaths);
   EXPECT_GT(c.withLightPaths, 1.2 * c.withoutLightPaths);
@@ -171,7 +172,7 @@ TEST(LightPathPilot, TurnsThemOffUnderALampHighAboveAnOpenFloor) {
 
 TEST(LightPathPilot, ChoosesAlikeOnAnyThreadCount) {
   const SceneData scene = test::loadTestScene(lampHighAboveAnOpenFloor());
-  const LightPathChoice one = choose(scene, 1), two = choose(scene, 2), three = choose(scene, 3);
+  const PilotChoice one = choose(scene, 1), two = choose(scene, 2), three = choose(scene, 3);
   EXPECT_EQ(one.withLightPaths, two.withLightPaths);
   EXPECT_EQ(one.withoutLightPaths, two.withoutLightPaths);
   EXPECT_EQ(one.withLightPaths, three.withLightPaths);
@@ -180,7 +181,7 @@ TEST(LightPathPilot, ChoosesAlikeOnAnyThreadCount) {
 
 TEST(LightPathPilot, TheSceneSettingDecidesWithoutAPilot) {
   for (const char* setting : {"on", "off"}) {
-    const LightPathChoice c = choose(test::loadTestScene(
+    const PilotChoice c = choose(test::loadTestScene(
         lampHighAboveAnOpenFloor(std::string(R"(, "light_paths": ")") + setting + "\"")));
     EXPECT_FALSE(c.piloted) << setting;
     EXPECT_EQ(c.lightPaths, std::string(setting) == "on");
@@ -199,7 +200,7 @@ TEST(LightPathPilot, TheSceneSettingDecidesWithoutAPilot) {
 
 TEST(LightPathPilot, IsSkippedWhereItWouldCostMoreThanASixteenthOfTheRender) {
   // 128 x 128 at 16 spp is 262,144 samples, of which the pilot's 4 x 16,384 would be a quarter.
-  const LightPathChoice small = choose(test::loadTestScene(lampUnderTheCeiling(128, 16)));
+  const PilotChoice small = choose(test::loadTestScene(lampUnderTheCeiling(128, 16)));
   EXPECT_FALSE(small.piloted);
   EXPECT_TRUE(small.lightPaths);
   EXPECT_EQ(small.rays.total(), 0u);
@@ -208,20 +209,91 @@ TEST(LightPathPilot, IsSkippedWhereItWouldCostMoreThanASixteenthOfTheRender) {
 }
 
 TEST(LightPathPilot, IsSkippedWhereNoLightStartsASubpath) {
-  const LightPathChoice c = choose(test::loadTestScene(R"({
+  const PilotChoice c = choose(test::loadTestScene(R"({
     "camera": {"width": 256, "height": 256, "spp": 64},
+    "render": {"first_hit_light_samples": 1},
     "environment": {"color": 0.5},
     "spheres": [{"position": [0, -1000, 0], "radius": 999, "color": 0.5}]})"));
   EXPECT_FALSE(c.piloted);  // the environment, its only light, starts none
   EXPECT_EQ(c.rays.total(), 0u);
 }
 
+// The small room lit by a torus of 3,072 emitting triangles under its ceiling (the bench's lamp
+// room in small): a second light sample at the first interaction cuts the noise of picking
+// among them for a shadow ray more (the pilot measured 0.85 of the variance x cost).
+std::string roomUnderATorusLamp(const std::string& render = "") {
+  const std::string torus = test::writeTorusObj("pilot_torus.obj", 0, 3, -1, 2, 0.5, 64, 24);
+  return R"({
+    "camera": {"fov": 70, "position": [0, 2, 9], "look_at": [0, 2, 0], "width": 256,
+               "height": 256, "spp": 32},
+    "render": {"max_depth": 4, "seed": 3)" +
+         render + R"(},
+    "spheres": [)" +
+         std::string(test::kSmallRoomWalls) +
+         R"(, {"position": [1, 1, -1], "radius": 1, "color": 0.5}],
+    "objects": [{"file": ")" +
+         torus + R"(", "material": {"type": "emissive", "radiance": 20}}]})";
+}
+
+TEST(LightSamplePilot, TakesTwoWhereATorusOfManyTrianglesLightsARoom) {
+  const PilotChoice c = choose(test::loadTestScene(roomUnderATorusLamp()));
+  EXPECT_TRUE(c.lightSamplesPiloted);
+  EXPECT_EQ(c.firstHitLightSamples, 2u);
+  EXPECT_LT(c.twoLightSamples, 0.95 * c.oneLightSample);
+}
+
+// Two spheres on a floor under a uniform sky: a second light sample costs a shadow ray for little
+// (the pilot measured about 2 times the variance x cost with it).
+TEST(LightSamplePilot, KeepsOneUnderASky) {
+  const PilotChoice c = choose(test::loadTestScene(R"({
+    "camera": {"width": 256, "height": 256, "fov": 50, "position": [0, 3, 8],
+               "look_at": [0, 0.8, 0], "spp": 16},
+    "render": {"max_depth": 4, "seed": 1},
+    "environment": {"color": [0.4, 0.5, 0.7]},
+    "spheres": [{"position": [0, -1000, 0], "radius": 1000, "color": 0.6},
+                {"position": [0, 1, 0], "radius": 1, "color": [0.7, 0.5, 0.3]},
+                {"position": [-1.8, 0.6, 0.5], "radius": 0.6, "color": 0.8}]})"));
+  EXPECT_TRUE(c.lightSamplesPiloted);
+  EXPECT_EQ(c.firstHitLightSamples, 1u);
+  EXPECT_GT(c.twoLightSamples, 1.3 * c.oneLightSample);
+}
+
+TEST(LightSamplePilot, IsSkippedWhereTheSceneSetsThemOrNoLightIsPicked) {
+  const PilotChoice set = choose(test::loadTestScene(
+      roomUnderATorusLamp(R"(, "first_hit_light_samples": 3, "light_paths": "on")")));
+  EXPECT_FALSE(set.lightSamplesPiloted);
+  EXPECT_EQ(set.firstHitLightSamples, 3u);
+  EXPECT_EQ(set.rays.total(), 0u);
+  // A lone point light is sampled without a pick.
+  const PilotChoice lone = choose(test::loadTestScene(lampHighAboveAnOpenFloor()));
+  EXPECT_FALSE(lone.lightSamplesPiloted);
+  EXPECT_EQ(lone.firstHitLightSamples, 1u);
+}
+
+TEST(LightSamplePilot, TheRenderTakesTheChosenSamples) {
+  const SceneData scene = test::loadTestScene(roomUnderATorusLamp());
+  CpuRenderer renderer(CpuEngine::Bvh);
+  renderer.setScene(scene, SceneChange::Structure);
+  PilotChoice choice;
+  RenderOptions small;
+  small.samples = {0, 2};
+  const RenderResult chosen = renderWithPilot(renderer, scene, small, &choice);
+  ASSERT_EQ(choice.firstHitLightSamples, 2u);
+  RenderOptions two = small;
+  two.adjust.lightPaths = choice.lightPaths;
+  two.adjust.firstHitLightSamples = 2;
+  const RenderResult plain = renderer.render(two);
+  EXPECT_EQ(chosen.image.pixels, plain.image.pixels);
+  two.adjust.firstHitLightSamples = 1;
+  EXPECT_LT(renderer.render(two).rays.shadow, plain.rays.shadow);
+}
+
 TEST(LightPathPilot, TheRenderFollowsTheChoiceAndCountsThePilot) {
   const SceneData scene = test::loadTestScene(lampHighAboveAnOpenFloor());
   CpuRenderer renderer(CpuEngine::Bvh);
   renderer.setScene(scene, SceneChange::Structure);
-  LightPathChoice choice;
-  const RenderResult chosen = renderChoosingLightPaths(renderer, scene, {}, &choice);
+  PilotChoice choice;
+  const RenderResult chosen = renderWithPilot(renderer, scene, {}, &choice);
   ASSERT_TRUE(choice.piloted);
   ASSERT_FALSE(choice.lightPaths);
   RenderOptions without;

@@ -1,19 +1,29 @@
-// Whether a render's samples start light subpaths, decided by a pilot render.
+// How a render's samples are drawn where the scene leaves it to candela, decided by a pilot
+// render: whether they start light subpaths, and how many lights they sample at their first
+// interaction.
 //
 // Light-vertex connections (render/light_path.h) cut the noise of indirect light where a light
 // brightens small patches (a lamp beside a wall) and cost a sample about half again as many
 // rays. Where the lights hang far from every surface, BSDF samples find what they light and the
-// connections cost more than they save. Which holds is the scene's, so for `light_paths: "auto"`
-// (the default) a pilot renders a sparse sample of the image's pixels (every stride-th in x and
+// connections cost more than they save. A second light sample at a path's first interaction
+// (SceneView::firstHitLightSamples) halves the noise of picking one light among many there,
+// which is most of the image's where a lamp of thousands of triangles lights a room, and costs
+// a light-tree walk and a shadow ray, wasted where one light sample already does well. Which
+// holds is the scene's, so for `light_paths: "auto"` and `first_hit_light_samples: "auto"` (the
+// defaults) a pilot renders a sparse sample of the image's pixels (every stride-th in x and
 // y, about 16k) with and without light subpaths, twice each with seeds of its own, and keeps the
 // estimator of lower variance times cost: variance from the two seeds' difference, each pixel's
 // relative to its value as the bench's relMSE weighs it, and cost the rays traced (those a light
 // subpath adds weigh kLightPathRayCost, for the shading each connection also does), with a
-// margin (kPilotOffMargin) for the connections. The pilot is a
+// margin (kPilotOffMargin) for the connections; then, with the light paths so chosen, twice with
+// two light samples at the first interaction, kept where their variance times cost is the lower
+// (the shadow ray each adds, with its light-tree walk and light sample, cost about one ray's
+// time: 0.5-1.2 on four scenes, docs/performance.md). The pilot is a
 // function of the scene and its seed, so the image is the same on every run and thread count,
 // on either backend (up to rounding where the two estimators tie) and in every sample range of a
 // distributed render. Where the pilot's samples would exceed a sixteenth of the render's it is
-// skipped and light subpaths stay on. docs/performance.md has the measurements.
+// skipped: light subpaths stay on, and one light sample is taken. docs/performance.md has the
+// measurements.
 #pragma once
 
 #include <initializer_list>
@@ -28,8 +38,9 @@ namespace candela {
 
 // The pilot's image has at most this many pixels, and this many samples each time it renders.
 constexpr uint32_t kPilotPixels = 16384;
-// The pilot renders four times; it runs only where those samples are at most this share of the
-// render's.
+// The pilot renders four times for the light paths and twice more for the light samples (four
+// where the light paths are not its to choose); each part runs only where the pilot's samples
+// are at most this share of the render's.
 constexpr double kPilotShare = 1.0 / 16.0;
 // The cost of a ray a light subpath adds, relative to the others: its connection's two BSDF
 // evaluations and weight come with it.
@@ -40,13 +51,18 @@ constexpr double kLightPathRayCost = 1.25;
 // performance.md), since the stratification that helps a pixel's many samples is not there.
 constexpr double kPilotOffMargin = 0.9;
 
-struct LightPathChoice {
+struct PilotChoice {
   bool lightPaths = true;  // what the render should do (RenderOptions::adjust.lightPaths)
   bool piloted = false;    // whether a pilot decided it
-  double seconds = 0;      // the pilot's render time
-  RayCounters rays;        // and the rays it traced
+  // The light samples of a path's first interaction the render takes
+  // (RenderOptions::adjust.firstHitLightSamples; SceneView::firstHitLightSamples).
+  uint32_t firstHitLightSamples = 1;
+  bool lightSamplesPiloted = false;  // whether a pilot decided them
+  double seconds = 0;                // the pilot's render time
+  RayCounters rays;                  // and the rays it traced
   // With a pilot: each estimator's relative variance per sample times its cost per sample.
   double withLightPaths = 0, withoutLightPaths = 0;
+  double oneLightSample = 0, twoLightSamples = 0;
 };
 
 // Each pixel channel's weight in the relative MSE that the bench judges images by (images over
@@ -68,14 +84,18 @@ bool pilotKeepsLightPaths(double withLightPaths, double withoutLightPaths);
 
 // Decides for the scene last given to `renderer` (it must be `scene`), whose render will take
 // `options` (threads and cancellation are the pilot's too). No pilot unless the scene's
-// light_paths is "auto" and it has lights that start subpaths.
-LightPathChoice chooseLightPaths(Renderer& renderer, const SceneData& scene,
-                                 const RenderOptions& options);
+// light_paths is "auto" and it has lights that start subpaths, or its first_hit_light_samples is
+// "auto" and a light is picked at the first interaction (takesFirstHitLightSamples).
+PilotChoice choosePilot(Renderer& renderer, const SceneData& scene, const RenderOptions& options);
 
-// Renders the scene last given to `renderer` (it must be `scene`) as chooseLightPaths decides,
+// Whether two light samples at the first interaction win: their variance times cost under
+// one's (a NaN, an image without light, keeps one).
+bool pilotTakesTwoLightSamples(double oneLightSample, double twoLightSamples);
+
+// Renders the scene last given to `renderer` (it must be `scene`) as choosePilot decides,
 // which it returns in *choice where given. The pilot's seconds count in the result's (its rays,
 // in the choice, do not: the result's are those of the image).
-RenderResult renderChoosingLightPaths(Renderer& renderer, const SceneData& scene,
-                                      RenderOptions options, LightPathChoice* choice = nullptr);
+RenderResult renderWithPilot(Renderer& renderer, const SceneData& scene, RenderOptions options,
+                             PilotChoice* choice = nullptr);
 
 }  // namespace candela

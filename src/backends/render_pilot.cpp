@@ -1,0 +1,167 @@
+// The pilot render; see render_pilot.h.
+#include "backends/render_pilot.h"
+
+#include <algorithm>
+#include <vector>
+
+#include "core/rng.h"
+#include "render/light_selection.h"
+
+namespace candela {
+
+namespace {
+
+// relMSE's floor under each pixel's squared value, as a share of the image's squared mean
+// (bench/compare.py's 0.01): a black pixel weighs 100 times one of the mean value, not without
+// bound.
+constexpr double kRelativeErrorFloor = 0.01;
+
+// The smallest stride at which the camera's image has at most kPilotPixels pixels.
+uint32_t pilotStride(uint32_t width, uint32_t height) {
+  uint32_t s = 1;
+  while (uint64_t(width / s) * (height / s) > kPilotPixels) ++s;
+  return s;
+}
+
+struct PilotImages {
+  RenderResult a, b;  // two seeds
+};
+
+double raysPerPixel(const PilotImages& p) {
+  const double pixels = double(p.a.image.width) * p.a.image.height;
+  return double(p.a.rays.total() + p.b.rays.total()) / (2 * pixels);
+}
+
+}  // namespace
+
+std::vector<double> relativeErrorWeights(std::initializer_list<const ImageRGB*> images) {
+  const uint32_t w = (*images.begin())->width, h = (*images.begin())->height;
+  std::vector<double> mean(size_t(3) * w * h, 0.0);
+  for (const ImageRGB* image : images)
+    for (size_t i = 0; i < mean.size(); ++i)
+      mean[i] += double(image->pixels[i]) / double(images.size());
+  double total = 0;
+  for (const double v : mean) total += v;
+  const double m = total / double(mean.size());
+  std::vector<double> weights(mean.size());
+  for (uint32_t y = 0; y < h; ++y)
+    for (uint32_t x = 0; x < w; ++x)
+      for (uint32_t c = 0; c < 3; ++c) {
+        double sum = 0;
+        int count = 0;
+        for (uint32_t j = y > 0 ? y - 1 : 0; j <= std::min(y + 1, h - 1); ++j)
+          for (uint32_t i = x > 0 ? x - 1 : 0; i <= std::min(x + 1, w - 1); ++i, ++count)
+            sum += mean[3 * (size_t(j) * w + i) + c];
+        const double v = sum / count;
+        weights[3 * (size_t(y) * w + x) + c] = 1.0 / (v * v + kRelativeErrorFloor * m * m);
+      }
+  return weights;
+}
+
+double relativeVariance(const ImageRGB& a, const ImageRGB& b, const std::vector<double>& weights) {
+  double sum = 0;
+  for (size_t i = 0; i < a.pixels.size(); ++i) {
+    const double d = double(a.pixels[i]) - double(b.pixels[i]);
+    sum += d * d * weights[i];
+  }
+  return sum / (2 * double(a.pixels.size()));
+}
+
+bool pilotKeepsLightPaths(double withLightPaths, double withoutLightPaths) {
+  return !(withoutLightPaths < kPilotOffMargin * withLightPaths);
+}
+
+bool pilotTakesTwoLightSamples(double oneLightSample, double twoLightSamples) {
+  return twoLightSamples < oneLightSample;
+}
+
+PilotChoice choosePilot(Renderer& renderer, const SceneData& scene, const RenderOptions& options) {
+  PilotChoice choice;
+  const RenderSettings& settings = scene.settings;
+  const SceneView view = scene.view();
+  if (settings.lightPaths != LightPaths::Auto)
+    choice.lightPaths = settings.lightPaths == LightPaths::On;
+  choice.firstHitLightSamples = view.firstHitLightSamples;
+  const bool pilotsLightPaths = settings.lightPaths == LightPaths::Auto && view.lightPathLights > 0;
+  bool pilotsLightSamples = settings.firstHitLightSamples == 0 && takesFirstHitLightSamples(view);
+  if (!pilotsLightPaths && !pilotsLightSamples) return choice;
+  const uint32_t width = scene.camera.width, height = scene.camera.height;
+  const uint32_t stride = pilotStride(width, height);
+  const uint64_t pixels = uint64_t(width / stride) * (height / stride);
+  if (pixels == 0) return choice;  // a sliver of an image, too thin to sample
+  const uint32_t spp = uint32_t((kPilotPixels + pixels - 1) / pixels);
+  const double renderSamples = double(width) * height * settings.spp;
+  const auto fits = [&](int renders) {
+    return spp <= settings.spp && renders * double(pixels) * spp <= kPilotShare * renderSamples;
+  };
+  if (!fits(4)) return choice;
+  pilotsLightSamples = pilotsLightSamples && fits(pilotsLightPaths ? 6 : 4);
+
+  RenderOptions pilot;
+  pilot.threads = options.threads;
+  pilot.cancel = options.cancel;
+  pilot.sceneLabel = options.sceneLabel;
+  pilot.samples = {0, spp};
+  pilot.adjust.pixelStride = stride;
+  pilot.adjust.reseed = true;
+  // Renders the pilot's view twice, with seeds of its own, with light subpaths or without and
+  // `lightSamples` at the first interaction; false where cancelled.
+  const auto renderTwice = [&](bool lightPaths, uint32_t lightSamples, PilotImages* images) {
+    for (int k = 0; k < 2; ++k) {
+      pilot.adjust.seed = mix64(settings.seed + 0x9e3779b97f4a7c15ull * uint64_t(k + 1));
+      pilot.adjust.lightPaths = lightPaths;
+      pilot.adjust.firstHitLightSamples = lightSamples;
+      RenderResult r = renderer.render(pilot);
+      choice.seconds += r.seconds;
+      choice.rays += r.rays;
+      if (r.cancelled) return false;  // the render itself stops at once
+      (k == 0 ? images->a : images->b) = std::move(r);
+    }
+    return true;
+  };
+
+  PilotImages with, without;
+  if (pilotsLightPaths) {
+    if (!renderTwice(true, 1, &with) || !renderTwice(false, 1, &without)) return choice;
+    const double raysWith = raysPerPixel(with), raysWithout = raysPerPixel(without);
+    const double costWith = raysWith + (kLightPathRayCost - 1) * (raysWith - raysWithout);
+    choice.piloted = true;
+    const std::vector<double> weights =
+        relativeErrorWeights({&with.a.image, &with.b.image, &without.a.image, &without.b.image});
+    choice.withLightPaths = relativeVariance(with.a.image, with.b.image, weights) * costWith;
+    choice.withoutLightPaths =
+        relativeVariance(without.a.image, without.b.image, weights) * raysWithout;
+    choice.lightPaths = pilotKeepsLightPaths(choice.withLightPaths, choice.withoutLightPaths);
+  }
+  if (!pilotsLightSamples) return choice;
+  PilotImages one, two;
+  if (pilotsLightPaths) {
+    one = std::move(choice.lightPaths ? with : without);
+  } else if (!renderTwice(choice.lightPaths, 1, &one)) {
+    return choice;
+  }
+  if (!renderTwice(choice.lightPaths, 2, &two)) return choice;
+  const double raysOne = raysPerPixel(one), raysTwo = raysPerPixel(two);
+  choice.lightSamplesPiloted = true;
+  const std::vector<double> weights =
+      relativeErrorWeights({&one.a.image, &one.b.image, &two.a.image, &two.b.image});
+  choice.oneLightSample = relativeVariance(one.a.image, one.b.image, weights) * raysOne;
+  choice.twoLightSamples = relativeVariance(two.a.image, two.b.image, weights) * raysTwo;
+  choice.firstHitLightSamples =
+      pilotTakesTwoLightSamples(choice.oneLightSample, choice.twoLightSamples) ? 2 : 1;
+  return choice;
+}
+
+RenderResult renderWithPilot(Renderer& renderer, const SceneData& scene, RenderOptions options,
+                             PilotChoice* choice) {
+  const PilotChoice chosen = choosePilot(renderer, scene, options);
+  options.adjust.lightPaths = options.adjust.lightPaths && chosen.lightPaths;
+  if (options.adjust.firstHitLightSamples == 0)
+    options.adjust.firstHitLightSamples = chosen.firstHitLightSamples;
+  RenderResult result = renderer.render(options);
+  result.seconds += chosen.seconds;
+  if (choice) *choice = chosen;
+  return result;
+}
+
+}  // namespace candela
