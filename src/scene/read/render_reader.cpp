@@ -64,12 +64,18 @@ void readRender(const JsonValue& value, RenderSettings& render, OutputDesc& outp
         integrator->choice({"path", "direct"}) == 0 ? IntegratorType::Path : IntegratorType::Direct;
   if (std::optional<JsonValue> lightPaths = fields.get("light_paths"))
     render.lightPaths = LightPaths(lightPaths->choice({"auto", "on", "off"}));
-  if (std::optional<JsonValue> samples = fields.get("first_hit_light_samples"))
-    render.firstHitLightSamples =
-        samples->json().is_string() && samples->string() == "auto"
-            ? 0u
-            : uint32_t(samples->integer(1, kMaxFirstHitLightSamples,
-                                        "\"auto\" or an integer from 1 to 4"));
+  if (std::optional<JsonValue> samples = fields.get("first_hit_light_samples")) {
+    const std::string expected =
+        "\"auto\" or an integer from 1 to " + std::to_string(kMaxFirstHitLightSamples);
+    if (samples->json().is_string() && samples->string() == "auto") {
+      render.firstHitLightSamples = 0;
+    } else {
+      // Checked against the top here, so that a count too large names the same range.
+      const uint64_t count = samples->integer(1, UINT64_MAX, expected);
+      if (count > kMaxFirstHitLightSamples) samples->failExpected(expected);
+      render.firstHitLightSamples = uint32_t(count);
+    }
+  }
   if (std::optional<JsonValue> antialiasing = fields.get("antialiasing"))
     render.antialiasing = antialiasing->boolean();
   if (std::optional<JsonValue> filter = fields.get("filter")) {
