@@ -207,6 +207,23 @@ inline std::string lampUnderTheCeiling(const std::string& camera, const std::str
     "lights": [{"position": [-3, 5.5, -3], "intensity": 400}]})";
 }
 
+// The same room lit instead by a torus of 3,072 emitting triangles under its ceiling (the bench's
+// lamp room in small), where two light samples at the first interaction pay
+// (render.first_hit_light_samples); `camera` and `render` as for lampUnderTheCeiling.
+inline std::string torusUnderTheCeiling(const std::string& camera, const std::string& render) {
+  const std::string torus = writeTorusObj("torus_lamp.obj", 0, 3, -1, 2, 0.5, 64, 24);
+  return R"({
+    "camera": {"fov": 70, "position": [0, 2, 9], "look_at": [0, 2, 0], )" +
+         camera + R"(},
+    "render": {)" +
+         render + R"(},
+    "spheres": [)" +
+         kSmallRoomWalls + R"(,
+                {"position": [1, 1, -1], "radius": 1, "color": 0.5}],
+    "objects": [{"file": ")" +
+         torus + R"(", "material": {"type": "emissive", "radiance": 20}}]})";
+}
+
 // One estimator's renders of an image with two seeds.
 struct SeedPair {
   RenderResult a, b;

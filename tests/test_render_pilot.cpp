@@ -218,21 +218,12 @@ TEST(LightPathPilot, IsSkippedWhereNoLightStartsASubpath) {
   EXPECT_EQ(c.rays.total(), 0u);
 }
 
-// The small room lit by a torus of 3,072 emitting triangles under its ceiling (the bench's lamp
-// room in small): a second light sample at the first interaction cuts the noise of picking
-// among them for a shadow ray more (the pilot measured 0.85 of the variance x cost).
+// The room of test::torusUnderTheCeiling (the bench's lamp room in small): a second light sample
+// at the first interaction cuts the noise of picking among the torus's triangles for a shadow
+// ray more (the pilot measured 0.85 of the variance x cost).
 std::string roomUnderATorusLamp(const std::string& render = "") {
-  const std::string torus = test::writeTorusObj("pilot_torus.obj", 0, 3, -1, 2, 0.5, 64, 24);
-  return R"({
-    "camera": {"fov": 70, "position": [0, 2, 9], "look_at": [0, 2, 0], "width": 256,
-               "height": 256, "spp": 32},
-    "render": {"max_depth": 4, "seed": 3)" +
-         render + R"(},
-    "spheres": [)" +
-         std::string(test::kSmallRoomWalls) +
-         R"(, {"position": [1, 1, -1], "radius": 1, "color": 0.5}],
-    "objects": [{"file": ")" +
-         torus + R"(", "material": {"type": "emissive", "radiance": 20}}]})";
+  return test::torusUnderTheCeiling(R"("width": 256, "height": 256, "spp": 32)",
+                                    R"("max_depth": 4, "seed": 3)" + render);
 }
 
 TEST(LightSamplePilot, TakesTwoWhereATorusOfManyTrianglesLightsARoom) {
