@@ -41,6 +41,28 @@ inline uint32_t withoutSkippedLane(uint32_t hitBits, uint32_t skip, uint32_t blo
   return hitBits & ~(uint32_t(lane < W) << (lane % W));
 }
 
+// 0, 1, ..., W - 1.
+template <int W>
+inline typename Lanes<W>::I laneIndices() {
+  typename Lanes<W>::I v;
+  for (int i = 0; i < W; ++i) v[i] = i;
+  return v;
+}
+
+// The least of v's lanes, in every lane (float or int lanes; of floats, none NaN).
+template <int W, typename V>
+inline V minAcrossLanes(V v) {
+  const auto lesser = [](V a, V b) { return a < b ? a : b; };
+  if constexpr (W == 8) {
+    v = lesser(v, __builtin_shufflevector(v, v, 4, 5, 6, 7, 0, 1, 2, 3));
+    v = lesser(v, __builtin_shufflevector(v, v, 2, 3, 0, 1, 6, 7, 4, 5));
+    return lesser(v, __builtin_shufflevector(v, v, 1, 0, 3, 2, 5, 4, 7, 6));
+  } else {
+    v = lesser(v, __builtin_shufflevector(v, v, 2, 3, 0, 1));
+    return lesser(v, __builtin_shufflevector(v, v, 1, 0, 3, 2));
+  }
+}
+
 // x in every lane, -0 included (adding x to a zero vector would turn -0 into +0).
 template <int W>
 inline typename Lanes<W>::F splat(float x) {

@@ -76,7 +76,6 @@ bool closestTriangleInLanes(const TriangleBlocksView& blocks, const Ray& ray, fl
   I nearestBlock = I{};
   for (uint32_t block = 0; block < blocks.blockCount; ++block) {
     const BlockTest<W> test = testBlock<W>(blocks, block, lanes, far);
-    if (laneBits<W>(test.hit) == 0) continue;
     const F distances = test.t / test.absDet;
     const I nearer = (distances < nearest) & test.hit;
     nearest = nearer ? distances : nearest;
