@@ -252,11 +252,33 @@ TEST_F(CliStatsTest, APilotedRenderReportsItsChoiceAndCountsItsTime) {
   EXPECT_GT(lp["pilot_seconds"].get<double>(), 0);
   EXPECT_GE(s["render_seconds"].get<double>(), lp["pilot_seconds"].get<double>());
   EXPECT_EQ(s["rays"]["camera"], 256 * 256 * 16);  // the image's rays alone
+  // Without connections there is no depth of theirs to choose.
+  EXPECT_EQ(lp["depth_setting"], "auto");
+  EXPECT_EQ(lp["depth"], "all");
+  EXPECT_EQ(lp["depth_piloted"], false);
   // Its lone point light is sampled without a pick: one light sample, no pilot for them.
   const json& samples = s["first_hit_light_samples"];
   EXPECT_EQ(samples["setting"], "auto");
   EXPECT_EQ(samples["count"], 1);
   EXPECT_EQ(samples["piloted"], false);
+}
+
+// The scene's own light path depth is reported as it set it, with no pilot for it.
+TEST_F(CliStatsTest, ASetLightPathDepthIsReported) {
+  for (const std::string depth : {"3", "\"all\""}) {
+    std::ofstream(dir_ / "deep.json") << R"({
+      "camera": {"width": 16, "height": 12, "spp": 4},
+      "render": {"light_paths": "on", "light_path_depth": )" +
+                                             depth + R"(},
+      "spheres": [{"position": [0, -1000, 0], "radius": 999, "color": 0.6}],
+      "lights": [{"position": [0, 5, 0], "intensity": 40}]})";
+    ASSERT_EQ(run("deep.json -o out.pfm -q --stats stats.json"), 0) << stderrText();
+    const json lp = readJson("stats.json")["light_paths"];
+    EXPECT_EQ(lp["depth_setting"], depth == "3" ? json(3) : json("all"));
+    EXPECT_EQ(lp["depth"], lp["depth_setting"]);
+    EXPECT_EQ(lp["depth_piloted"], false);
+    EXPECT_EQ(lp["on"], true);
+  }
 }
 
 // A scene path that is not UTF-8 (Linux allows any bytes) still gives valid JSON: the bad byte

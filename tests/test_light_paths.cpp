@@ -1,7 +1,7 @@
-// Light-vertex connections (render/light_path.h): which lights start subpaths, and that a room lit
-// by a point light renders the same image with them as without, with less noise. The closed forms
-// of test_render_closed_form.cpp (the furnace inside a lit sphere, the lit plane) run with them
-// too.
+// Light-vertex connections (render/light_path.h): which lights start subpaths, that a room lit
+// by a point light renders the same image with them as without, with less noise, and the same
+// image with them at the first interactions alone (render.light_path_depth). The closed forms of
+// test_render_closed_form.cpp (the furnace inside a lit sphere, the lit plane) run with them too.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -199,6 +199,66 @@ TEST(LightPaths, ARoomLitByASurfaceRendersTheSameImageWithLessNoise) {
     const auto [noiseWith, noiseWithout] =
         test::expectSameImage(renderPair(true), renderPair(false), 16);
     EXPECT_LT(noiseWith * 2, noiseWithout);
+  }
+}
+
+// Connections at a path's first one or two interactions alone (render.light_path_depth, the
+// pilot's other choice): the rest of the path weighs its next-event estimation and BSDF samples
+// against no connection from an interaction that makes none, so the image stays the same as with
+// connections at every interaction; in the room lit by a point light near its ceiling and in the
+// one lit by a sphere light under it (whose BSDF-sampled hits are weighed against the
+// connections too), 16 x 16 blocks over two seeds each, max_depth 5.
+TEST(LightPaths, ConnectionsAtTheFirstInteractionsAloneRenderTheSameImage) {
+  const std::string lamps[] = {
+      R"([{"position": [-3, 5.5, -3], "intensity": 400}])",
+      R"([{"type": "sphere", "position": [-3, 4, -3], "radius": 0.5, "intensity": 400}])"};
+  for (const std::string& lamp : lamps) {
+    SCOPED_TRACE(lamp);
+    const auto renderPair = [&](const char* depth) {
+      test::SeedPair p;
+      for (int seed : {1, 2}) {
+        const SceneData data =
+            test::loadTestScene(R"({
+          "camera": {"fov": 70, "position": [0, 2, 9], "look_at": [0, 2, 0], "width": 48,
+                     "height": 32, "spp": 32},
+          "render": {"max_depth": 5, "light_paths": "on", "light_path_depth": )" +
+                                std::string(depth) + R"(, "seed": )" + std::to_string(seed) + R"(},
+          "spheres": [)" + std::string(test::kSmallRoomWalls) +
+                                R"(,
+                      {"position": [1, 1, -1], "radius": 1, "color": 0.5}],
+          "lights": )" + lamp + "}");
+        (seed == 1 ? p.a : p.b) = renderCpu(data.view(), RenderOptions{});
+      }
+      return p;
+    };
+    const test::SeedPair every = renderPair("\"all\"");
+    for (const char* depth : {"1", "2"}) {
+      SCOPED_TRACE(depth);
+      const test::SeedPair first = renderPair(depth);
+      EXPECT_NE(first.a.rays.shadow, every.a.rays.shadow);  // fewer connections were made
+      test::expectSameImage(every, first, 16);
+    }
+  }
+}
+
+// render.light_path_depth: "auto" (the pilot's), "all", or the deepest interaction connected;
+// anything else is one error naming the field and what it takes.
+TEST(LightPaths, TheSceneSetsTheirDepth) {
+  const auto withDepth = [](const std::string& depth) {
+    return R"({"camera": {"width": 4, "height": 4, "spp": 1}, "render": {"light_path_depth": )" +
+           depth + R"(}, "lights": [{"position": [0, 1, 0], "intensity": 10}]})";
+  };
+  EXPECT_EQ(test::loadTestScene(withDepth("\"auto\"")).settings.lightPathDepth, 0u);
+  EXPECT_EQ(test::loadTestScene(withDepth("\"auto\"")).view().lightPathDepth, kEveryInteraction);
+  EXPECT_EQ(test::loadTestScene(withDepth("\"all\"")).view().lightPathDepth, kEveryInteraction);
+  EXPECT_EQ(test::loadTestScene(withDepth("2")).view().lightPathDepth, 2u);
+  EXPECT_EQ(test::loadTestScene(withDepth("1e12")).view().lightPathDepth, kEveryInteraction);
+  for (const char* bad : {"0", "-1", "1.5", "\"every\"", "true", "[2]"}) {
+    const std::string error = test::loadError(withDepth(bad), ".");
+    EXPECT_NE(error.find("render.light_path_depth"), std::string::npos) << bad << ": " << error;
+    EXPECT_NE(error.find("expected \"auto\", \"all\" or a positive integer, got "),
+              std::string::npos)
+        << bad << ": " << error;
   }
 }
 

@@ -16,20 +16,21 @@ namespace {
 // bound.
 constexpr double kRelativeErrorFloor = 0.01;
 
-// The smallest stride at which the camera's image has at most kPilotPixels pixels.
-uint32_t pilotStride(uint32_t width, uint32_t height) {
+// The smallest stride at which the camera's image has at most `most` pixels.
+uint32_t pilotStride(uint32_t width, uint32_t height, uint64_t most) {
   uint32_t s = 1;
-  while (uint64_t(width / s) * (height / s) > kPilotPixels) ++s;
+  while (uint64_t(width / s) * (height / s) > most) ++s;
   return s;
 }
 
 struct PilotImages {
   RenderResult a, b;  // two seeds
+  uint32_t spp = 1;   // the samples per pixel of each
 };
 
-double raysPerPixel(const PilotImages& p) {
-  const double pixels = double(p.a.image.width) * p.a.image.height;
-  return double(p.a.rays.total() + p.b.rays.total()) / (2 * pixels);
+double raysPerSample(const PilotImages& p) {
+  const double samples = double(p.a.image.width) * p.a.image.height * p.spp;
+  return double(p.a.rays.total() + p.b.rays.total()) / (2 * samples);
 }
 
 }  // namespace
@@ -75,6 +76,10 @@ bool pilotTakesTwoLightSamples(double oneLightSample, double twoLightSamples) {
   return twoLightSamples < oneLightSample;
 }
 
+bool pilotLimitsLightPathDepth(double everyInteraction, double firstInteractions) {
+  return firstInteractions < everyInteraction;
+}
+
 PilotChoice choosePilot(Renderer& renderer, const SceneData& scene, const RenderOptions& options) {
   PilotChoice choice;
   const RenderSettings& settings = scene.settings;
@@ -82,20 +87,27 @@ PilotChoice choosePilot(Renderer& renderer, const SceneData& scene, const Render
   if (settings.lightPaths != LightPaths::Auto)
     choice.lightPaths = settings.lightPaths == LightPaths::On;
   choice.firstHitLightSamples = view.firstHitLightSamples;
+  choice.lightPathDepth = view.lightPathDepth;
   const bool pilotsLightPaths = settings.lightPaths == LightPaths::Auto && view.lightPathLights > 0;
+  // Connections at the first two interactions alone differ from connections at every one only
+  // where a path has a fourth (its last interaction connects to none).
+  bool pilotsDepth = settings.lightPathDepth == 0 && view.lightPathLights > 0 &&
+                     settings.maxDepth > kPilotLightPathDepth + 1;
   bool pilotsLightSamples = settings.firstHitLightSamples == 0 && takesFirstHitLightSamples(view);
-  if (!pilotsLightPaths && !pilotsLightSamples) return choice;
+  if (!pilotsLightPaths && !pilotsDepth && !pilotsLightSamples) return choice;
   const uint32_t width = scene.camera.width, height = scene.camera.height;
-  const uint32_t stride = pilotStride(width, height);
+  const uint32_t stride = pilotStride(width, height, kPilotPixels);
   const uint64_t pixels = uint64_t(width / stride) * (height / stride);
   if (pixels == 0) return choice;  // a sliver of an image, too thin to sample
   const uint32_t spp = uint32_t((kPilotPixels + pixels - 1) / pixels);
   const double renderSamples = double(width) * height * settings.spp;
+  // Whether `renders` more renders of the pilot's usual size (pixels x spp) keep it in its share.
+  double used = 0;  // in such renders
   const auto fits = [&](int renders) {
-    return spp <= settings.spp && renders * double(pixels) * spp <= kPilotShare * renderSamples;
+    return spp <= settings.spp &&
+           (used + renders) * double(pixels) * spp <= kPilotShare * renderSamples;
   };
   if (!fits(4)) return choice;
-  pilotsLightSamples = pilotsLightSamples && fits(pilotsLightPaths ? 6 : 4);
 
   RenderOptions pilot;
   pilot.threads = options.threads;
@@ -104,14 +116,19 @@ PilotChoice choosePilot(Renderer& renderer, const SceneData& scene, const Render
   pilot.samples = {0, spp};
   pilot.adjust.pixelStride = stride;
   pilot.adjust.reseed = true;
-  // Renders the pilot's view twice, with seeds of its own, with light subpaths or without and
-  // `lightSamples` at the first interaction; false where cancelled.
-  const auto renderTwice = [&](bool lightPaths, uint32_t lightSamples, PilotImages* images) {
+  // Renders the pilot's view twice, with seeds of its own, with light subpaths or without,
+  // connected at interactions up to `depth` (0: the scene's) and `lightSamples` at the first
+  // interaction; false where cancelled.
+  const auto renderTwice = [&](const RenderOptions& base, bool lightPaths, uint32_t depth,
+                               uint32_t lightSamples, PilotImages* images) {
+    RenderOptions o = base;
+    images->spp = o.samples.count;
     for (int k = 0; k < 2; ++k) {
-      pilot.adjust.seed = mix64(settings.seed + 0x9e3779b97f4a7c15ull * uint64_t(k + 1));
-      pilot.adjust.lightPaths = lightPaths;
-      pilot.adjust.firstHitLightSamples = lightSamples;
-      RenderResult r = renderer.render(pilot);
+      o.adjust.seed = mix64(settings.seed + 0x9e3779b97f4a7c15ull * uint64_t(k + 1));
+      o.adjust.lightPaths = lightPaths;
+      o.adjust.lightPathDepth = depth;
+      o.adjust.firstHitLightSamples = lightSamples;
+      RenderResult r = renderer.render(o);
       choice.seconds += r.seconds;
       choice.rays += r.rays;
       if (r.cancelled) return false;  // the render itself stops at once
@@ -122,8 +139,10 @@ PilotChoice choosePilot(Renderer& renderer, const SceneData& scene, const Render
 
   PilotImages with, without;
   if (pilotsLightPaths) {
-    if (!renderTwice(true, 1, &with) || !renderTwice(false, 1, &without)) return choice;
-    const double raysWith = raysPerPixel(with), raysWithout = raysPerPixel(without);
+    if (!renderTwice(pilot, true, 0, 1, &with) || !renderTwice(pilot, false, 0, 1, &without))
+      return choice;
+    used += 4;
+    const double raysWith = raysPerSample(with), raysWithout = raysPerSample(without);
     const double costWith = raysWith + (kLightPathRayCost - 1) * (raysWith - raysWithout);
     choice.piloted = true;
     const std::vector<double> weights =
@@ -133,22 +152,52 @@ PilotChoice choosePilot(Renderer& renderer, const SceneData& scene, const Render
         relativeVariance(without.a.image, without.b.image, weights) * raysWithout;
     choice.lightPaths = pilotKeepsLightPaths(choice.withLightPaths, choice.withoutLightPaths);
   }
-  if (!pilotsLightSamples) return choice;
-  PilotImages one, two;
-  if (pilotsLightPaths) {
-    one = std::move(choice.lightPaths ? with : without);
-  } else if (!renderTwice(choice.lightPaths, 1, &one)) {
-    return choice;
+
+  if (pilotsLightSamples && fits(pilotsLightPaths ? 2 : 4)) {
+    PilotImages one, two;
+    if (pilotsLightPaths) {
+      one = std::move(choice.lightPaths ? with : without);
+    } else if (!renderTwice(pilot, choice.lightPaths, 0, 1, &one)) {
+      return choice;
+    }
+    if (!renderTwice(pilot, choice.lightPaths, 0, 2, &two)) return choice;
+    used += pilotsLightPaths ? 2 : 4;
+    const double raysOne = raysPerSample(one), raysTwo = raysPerSample(two);
+    choice.lightSamplesPiloted = true;
+    const std::vector<double> weights =
+        relativeErrorWeights({&one.a.image, &one.b.image, &two.a.image, &two.b.image});
+    choice.oneLightSample = relativeVariance(one.a.image, one.b.image, weights) * raysOne;
+    choice.twoLightSamples = relativeVariance(two.a.image, two.b.image, weights) * raysTwo;
+    choice.firstHitLightSamples =
+        pilotTakesTwoLightSamples(choice.oneLightSample, choice.twoLightSamples) ? 2 : 1;
   }
-  if (!renderTwice(choice.lightPaths, 2, &two)) return choice;
-  const double raysOne = raysPerPixel(one), raysTwo = raysPerPixel(two);
-  choice.lightSamplesPiloted = true;
-  const std::vector<double> weights =
-      relativeErrorWeights({&one.a.image, &one.b.image, &two.a.image, &two.b.image});
-  choice.oneLightSample = relativeVariance(one.a.image, one.b.image, weights) * raysOne;
-  choice.twoLightSamples = relativeVariance(two.a.image, two.b.image, weights) * raysTwo;
-  choice.firstHitLightSamples =
-      pilotTakesTwoLightSamples(choice.oneLightSample, choice.twoLightSamples) ? 2 : 1;
+
+  // With the light samples so chosen.
+  pilotsDepth = pilotsDepth && choice.lightPaths && fits(4);
+  if (pilotsDepth) {
+    // As many samples, over fewer pixels: the render's own per pixel, up to kPilotDepthSamples.
+    const uint32_t deepSpp = std::min(settings.spp, kPilotDepthSamples);
+    const uint32_t deepStride = pilotStride(width, height, kPilotPixels / deepSpp);
+    RenderOptions deep = pilot;
+    deep.adjust.pixelStride = deepStride;
+    deep.samples = {0, deepSpp};
+    PilotImages every, first;
+    if (!renderTwice(deep, true, kEveryInteraction, choice.firstHitLightSamples, &every) ||
+        !renderTwice(deep, true, kPilotLightPathDepth, choice.firstHitLightSamples, &first))
+      return choice;
+    used += 4;
+    const double raysEvery = raysPerSample(every), raysFirst = raysPerSample(first);
+    // The rays the deeper connections add are theirs, each with its two BSDF evaluations.
+    const double costEvery = raysEvery + (kLightPathRayCost - 1) * (raysEvery - raysFirst);
+    choice.depthPiloted = true;
+    const std::vector<double> weights =
+        relativeErrorWeights({&every.a.image, &every.b.image, &first.a.image, &first.b.image});
+    choice.everyInteraction = relativeVariance(every.a.image, every.b.image, weights) * costEvery;
+    choice.firstInteractions = relativeVariance(first.a.image, first.b.image, weights) * raysFirst;
+    if (pilotLimitsLightPathDepth(choice.everyInteraction, choice.firstInteractions))
+      choice.lightPathDepth = kPilotLightPathDepth;
+  }
+
   return choice;
 }
 
@@ -156,6 +205,7 @@ RenderResult renderWithPilot(Renderer& renderer, const SceneData& scene, RenderO
                              PilotChoice* choice) {
   const PilotChoice chosen = choosePilot(renderer, scene, options);
   options.adjust.lightPaths = options.adjust.lightPaths && chosen.lightPaths;
+  if (options.adjust.lightPathDepth == 0) options.adjust.lightPathDepth = chosen.lightPathDepth;
   if (options.adjust.firstHitLightSamples == 0)
     options.adjust.firstHitLightSamples = chosen.firstHitLightSamples;
   RenderResult result = renderer.render(options);

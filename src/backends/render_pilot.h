@@ -15,10 +15,19 @@
 // estimator of lower variance times cost: variance from the two seeds' difference, each pixel's
 // relative to its value as the bench's relMSE weighs it, and cost the rays traced (those a light
 // subpath adds weigh kLightPathRayCost, for the shading each connection also does), with a
-// margin (kPilotOffMargin) for the connections; then, with the light paths so chosen, twice with
-// two light samples at the first interaction, kept where their variance times cost is the lower
-// (the shadow ray each adds, with its light-tree walk and light sample, cost about one ray's
-// time: 0.5-1.2 on four scenes, docs/performance.md). The pilot is a
+// margin (kPilotOffMargin) for the connections. With the connections on and
+// `light_path_depth: "auto"` (the default), a third part renders twice with them at every
+// interaction and twice at the first two alone, and keeps the cheaper:
+// connections deeper in a path pay where a light brightens patches of the walls that paths
+// reach after bounces (a point light beside a wall) and cost a tenth of the rays where they do
+// not (lights hung in the open). What the deeper connections gain depends on what the
+// stratification of a pixel's many samples leaves them (one sample a pixel shows them a third
+// to a half less useful than a 16-spp render finds them), so this part renders fewer pixels
+// with the render's samples per pixel, up to kPilotDepthSamples. Then, with the
+// light paths so chosen, twice with two light samples at the first interaction, kept where
+// their variance times cost is the lower (the shadow ray each adds, with its light-tree walk and
+// light sample, cost about one ray's time: 0.5-1.2 on four scenes, docs/performance.md). The
+// pilot is a
 // function of the scene and its seed, so the image is the same on every run and thread count,
 // on either backend (up to rounding where the two estimators tie) and in every sample range of a
 // distributed render. Where the pilot's samples would exceed a sixteenth of the render's it is
@@ -38,10 +47,16 @@ namespace candela {
 
 // The pilot's image has at most this many pixels, and this many samples each time it renders.
 constexpr uint32_t kPilotPixels = 16384;
-// The pilot renders four times for the light paths and twice more for the light samples (four
-// where the light paths are not its to choose); each part runs only where the pilot's samples
-// are at most this share of the render's.
+// The pilot renders four times for the light paths, four times for their depth (as many samples
+// each) and twice more for the light samples (four where the light paths are not its to choose);
+// each part runs only where the pilot's samples so far are at most this share of the render's.
 constexpr double kPilotShare = 1.0 / 16.0;
+// The depth part's images have the render's samples per pixel, up to this many, over as many
+// fewer pixels (kPilotPixels samples in all).
+constexpr uint32_t kPilotDepthSamples = 16;
+// The deepest interaction connected where the depth part limits them.
+constexpr uint32_t kPilotLightPathDepth = 2;
+
 // The cost of a ray a light subpath adds, relative to the others: its connection's two BSDF
 // evaluations and weight come with it.
 constexpr double kLightPathRayCost = 1.25;
@@ -63,6 +78,11 @@ struct PilotChoice {
   // With a pilot: each estimator's relative variance per sample times its cost per sample.
   double withLightPaths = 0, withoutLightPaths = 0;
   double oneLightSample = 0, twoLightSamples = 0;
+  // The deepest interaction connected to the light vertex (RenderOptions::adjust.lightPathDepth;
+  // SceneView::lightPathDepth), whether a pilot decided it, and its two estimators' figures.
+  uint32_t lightPathDepth = kEveryInteraction;
+  bool depthPiloted = false;
+  double everyInteraction = 0, firstInteractions = 0;
 };
 
 // Each pixel channel's weight in the relative MSE that the bench judges images by (images over
@@ -84,13 +104,20 @@ bool pilotKeepsLightPaths(double withLightPaths, double withoutLightPaths);
 
 // Decides for the scene last given to `renderer` (it must be `scene`), whose render will take
 // `options` (threads and cancellation are the pilot's too). No pilot unless the scene's
-// light_paths is "auto" and it has lights that start subpaths, or its first_hit_light_samples is
-// "auto" and a light is picked at the first interaction (takesFirstHitLightSamples).
+// light_paths is "auto" and it has lights that start subpaths, or its light_path_depth is "auto"
+// with the connections on and max_depth above 3, or its first_hit_light_samples is "auto" and a
+// light is picked at the first interaction (takesFirstHitLightSamples).
 PilotChoice choosePilot(Renderer& renderer, const SceneData& scene, const RenderOptions& options);
 
 // Whether two light samples at the first interaction win: their variance times cost under
 // one's (a NaN, an image without light, keeps one).
 bool pilotTakesTwoLightSamples(double oneLightSample, double twoLightSamples);
+
+// Whether connections at the first kPilotLightPathDepth interactions alone win: their variance
+// times cost under every interaction's (a NaN keeps every interaction). No margin: the pilot's
+// figure varies by a few percent with its seed, and where the two are that close either does
+// (docs/performance.md, *Connections at the first two interactions*).
+bool pilotLimitsLightPathDepth(double everyInteraction, double firstInteractions);
 
 // Renders the scene last given to `renderer` (it must be `scene`) as choosePilot decides,
 // which it returns in *choice where given. The pilot's seconds count in the result's (its rays,

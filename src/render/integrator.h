@@ -519,7 +519,8 @@ CANDELA_HDI_ALWAYS bool interact(const SceneView& scene, PathState* path, bool f
     if (scene.settings.integrator == IntegratorType::Direct) st.maxDepth = depth;
   }
   // A light vertex connected to here is the path's interaction depth + 1.
-  st.connectable = smooth && scene.lightPathLights > 0 && depth < st.maxDepth;
+  st.connectable =
+      smooth && scene.lightPathLights > 0 && depth < st.maxDepth && depth <= scene.lightPathDepth;
   if (st.connectable && st.lightVertex.valid) {
     connectLightVertex(scene, &st.lightVertex, bsdf, sp, st.throughput,
                        rayKeyFor(scene, rng, kConnectionRay), connect);

@@ -22,6 +22,9 @@ constexpr const char* lightPathsName(LightPaths lightPaths) {
 // render/shadow_query.h holds that many queries).
 constexpr uint32_t kMaxFirstHitLightSamples = 4;
 
+// RenderSettings::lightPathDepth for connections at every interaction ("all").
+constexpr uint32_t kEveryInteraction = UINT32_MAX;
+
 struct RenderSettings {
   uint32_t spp = 64;  // samples per pixel (the scene's camera.spp)
   uint32_t maxDepth = 8;
@@ -32,6 +35,10 @@ struct RenderSettings {
   // How many lights next-event estimation samples at a path's first interaction, 1 to
   // kMaxFirstHitLightSamples; 0 ("auto"): a pilot render decides (backends/render_pilot.h).
   uint32_t firstHitLightSamples = 0;
+  // The deepest interaction of a camera path that is connected to its sample's light vertex
+  // (render/light_path.h), from 1; kEveryInteraction for all; 0 ("auto"): a pilot render decides
+  // between all and the first two (backends/render_pilot.h).
+  uint32_t lightPathDepth = 0;
   // Next-event estimation at smooth-shaded faces follows their smooth surface near the shadow
   // terminator (render/shadow_ray_origin.h).
   bool smoothTerminator = true;

@@ -27,6 +27,7 @@ SceneView SceneData::view() const {
                               settings.lightPaths != LightPaths::Off
                           ? lightsStartingPaths
                           : 0;
+  v.lightPathDepth = settings.lightPathDepth == 0 ? kEveryInteraction : settings.lightPathDepth;
   v.glassSplitDepth = kGlassSplitDepth;
   v.infiniteLightShare = infiniteLightShare;
   v.sunDiscs = sunDiscs;

@@ -94,6 +94,9 @@ struct SceneView : GeometryView {
   // none. Where some of them have a surface, each subpath draws two numbers for its point.
   uint32_t lightPathLights = 0;
   bool areaLightPaths = false;
+  // A camera path's interactions up to this depth are connected to the light vertex
+  // (RenderSettings::lightPathDepth, resolved: "auto" as kEveryInteraction).
+  uint32_t lightPathDepth = UINT32_MAX;
   // Paths follow both lobes of smooth glass at interactions up to this depth (0: at none), the
   // reflection as a branch (render/path_branch.h).
   uint32_t glassSplitDepth = 0;

@@ -27,6 +27,8 @@ struct ViewAdjustment {
   // > 0: the light samples of a path's first interaction, instead of the scene's, where a light is
   // picked there (takesFirstHitLightSamples).
   uint32_t firstHitLightSamples = 0;
+  // > 0: the deepest interaction connected to the light vertex, instead of the scene's.
+  uint32_t lightPathDepth = 0;
   bool reseed = false;     // true: render with `seed` instead of the scene's
   uint64_t seed = 0;
   uint32_t spp = 0;  // > 0: the render's samples per pixel instead of the scene's
@@ -52,6 +54,7 @@ inline SceneView adjustedView(SceneView view, const ViewAdjustment& adjust) {
   if (!adjust.lightPaths || adjust.seenOnly) view.lightPathLights = 0;
   if (adjust.firstHitLightSamples > 0 && takesFirstHitLightSamples(view))
     view.firstHitLightSamples = adjust.firstHitLightSamples;
+  if (adjust.lightPathDepth > 0) view.lightPathDepth = adjust.lightPathDepth;
   if (adjust.seenOnly) view.settings.maxDepth = 0;
   if (adjust.reseed) view.settings.seed = adjust.seed;
   if (adjust.spp > 0) view.settings.spp = adjust.spp;

@@ -15,6 +15,13 @@ namespace {
 // JSON has no inf or nan; a rate over a zero time is written as 0.
 double finiteOrZero(double v) { return std::isfinite(v) ? v : 0.0; }
 
+// A light path depth as the scene file spells it: "auto" (0), "all" or the interaction.
+nlohmann::ordered_json depthName(uint32_t depth) {
+  if (depth == 0) return "auto";
+  if (depth == kEveryInteraction) return "all";
+  return depth;
+}
+
 template <class T, class Allocator>
 uint64_t bytesOf(const std::vector<T, Allocator>& v) {
   return uint64_t(v.size()) * sizeof(T);
@@ -80,7 +87,12 @@ std::string renderStatsJson(const RenderStats& info, const SceneData& scene,
                       {"pilot_seconds", finiteOrZero(pilot.seconds)},
                       {"pilot_rays", pilot.rays.total()},
                       {"pilot_with", finiteOrZero(pilot.withLightPaths)},
-                      {"pilot_without", finiteOrZero(pilot.withoutLightPaths)}};
+                      {"pilot_without", finiteOrZero(pilot.withoutLightPaths)},
+                      {"depth_setting", depthName(s.lightPathDepth)},
+                      {"depth", depthName(pilot.lightPathDepth)},
+                      {"depth_piloted", pilot.depthPiloted},
+                      {"pilot_every_interaction", finiteOrZero(pilot.everyInteraction)},
+                      {"pilot_first_interactions", finiteOrZero(pilot.firstInteractions)}};
   o["first_hit_light_samples"] = {
       {"setting", s.firstHitLightSamples == 0 ? nlohmann::ordered_json("auto")
                                               : nlohmann::ordered_json(s.firstHitLightSamples)},

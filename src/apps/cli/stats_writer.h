@@ -14,9 +14,14 @@
 //   memory_bytes {nodes, prim_indices, positions, normals, triangles, engine, total}; engine:
 //                      what Embree holds (its BVH; it shares the scene's vertices)
 //   bytes_per_triangle  memory_bytes.total / triangles (0 without triangles)
-//   light_paths {setting, on, piloted, pilot_seconds, pilot_rays, pilot_with, pilot_without}:
+//   light_paths {setting, on, piloted, pilot_seconds, pilot_rays, pilot_with, pilot_without,
+//                depth_setting, depth, depth_piloted, pilot_every_interaction,
+//                pilot_first_interactions}:
 //                      whether samples started light subpaths (backends/render_pilot.h);
-//                      pilot_with and pilot_without are the pilot's variance x cost of either
+//                      pilot_with and pilot_without are the pilot's variance x cost of either;
+//                      depth the deepest interaction joined to them ("all" or a number), and
+//                      the pilot's two figures for it (every interaction, the first two)
+//   first_hit_light_samples {setting, count, piloted, pilot_one, pilot_two}
 //   render_seconds, samples, samples_per_second (render_seconds includes pilot_seconds; rays
 //                      and rays_per_second count the image's rays alone)
 //   rays {camera, bounce, shadow, total}, rays_per_second

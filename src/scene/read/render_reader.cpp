@@ -1,6 +1,7 @@
 // Reading render settings; see render_reader.h.
 #include "scene/read/render_reader.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -54,9 +55,9 @@ PixelFilter readFilter(const JsonValue& value) {
 }  // namespace
 
 void readRender(const JsonValue& value, RenderSettings& render, OutputDesc& output) {
-  JsonObject fields(
-      value, {"max_depth", "integrator", "light_paths", "first_hit_light_samples", "antialiasing",
-              "filter", "smooth_terminator", "seed", "gamma", "exposure", "tone_map"});
+  JsonObject fields(value, {"max_depth", "integrator", "light_paths", "light_path_depth",
+                            "first_hit_light_samples", "antialiasing", "filter",
+                            "smooth_terminator", "seed", "gamma", "exposure", "tone_map"});
   if (std::optional<JsonValue> depth = fields.get("max_depth"))
     render.maxDepth = static_cast<uint32_t>(depth->integer(1, UINT32_MAX, "a positive integer"));
   if (std::optional<JsonValue> integrator = fields.get("integrator"))
@@ -64,6 +65,17 @@ void readRender(const JsonValue& value, RenderSettings& render, OutputDesc& outp
         integrator->choice({"path", "direct"}) == 0 ? IntegratorType::Path : IntegratorType::Direct;
   if (std::optional<JsonValue> lightPaths = fields.get("light_paths"))
     render.lightPaths = LightPaths(lightPaths->choice({"auto", "on", "off"}));
+  if (std::optional<JsonValue> depth = fields.get("light_path_depth")) {
+    const std::string expected = "\"auto\", \"all\" or a positive integer";
+    const Json& json = depth->json();
+    if (json.is_string() && (json == "auto" || json == "all")) {
+      render.lightPathDepth = json == "auto" ? 0 : kEveryInteraction;
+    } else {
+      const uint64_t interaction = depth->integer(1, UINT64_MAX, expected);
+      // Deeper than any path: every interaction.
+      render.lightPathDepth = uint32_t(std::min<uint64_t>(interaction, kEveryInteraction));
+    }
+  }
   if (std::optional<JsonValue> samples = fields.get("first_hit_light_samples")) {
     const std::string expected =
         "\"auto\" or an integer from 1 to " + std::to_string(kMaxFirstHitLightSamples);
