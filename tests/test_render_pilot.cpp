@@ -38,6 +38,12 @@ std::string lampHighAboveAnOpenFloor(const std::string& render = "") {
     "lights": [{"position": [0, 50, 0], "intensity": 4000}]})";
 }
 
+RenderOptions twoSamplesAPixel() {
+  RenderOptions o;
+  o.samples = {0, 2};
+  return o;
+}
+
 PilotChoice choose(const SceneData& scene, int threads = 0) {
   CpuRenderer renderer(CpuEngine::Bvh);
   renderer.setScene(scene, SceneChange::Structure);
@@ -264,16 +270,19 @@ TEST(LightSamplePilot, IsSkippedWhereTheSceneSetsThemOrNoLightIsPicked) {
   EXPECT_EQ(lone.firstHitLightSamples, 1u);
 }
 
+// Two samples a pixel of `scene`, as the pilot chooses, on `renderer`: *choice is its choice.
+RenderResult renderAsPiloted(CpuRenderer& renderer, const SceneData& scene, PilotChoice* choice) {
+  renderer.setScene(scene, SceneChange::Structure);
+  return renderWithPilot(renderer, scene, twoSamplesAPixel(), choice);
+}
+
 TEST(LightSamplePilot, TheRenderTakesTheChosenSamples) {
   const SceneData scene = test::loadTestScene(roomUnderATorusLamp());
   CpuRenderer renderer(CpuEngine::Bvh);
-  renderer.setScene(scene, SceneChange::Structure);
   PilotChoice choice;
-  RenderOptions small;
-  small.samples = {0, 2};
-  const RenderResult chosen = renderWithPilot(renderer, scene, small, &choice);
+  const RenderResult chosen = renderAsPiloted(renderer, scene, &choice);
   ASSERT_EQ(choice.firstHitLightSamples, 2u);
-  RenderOptions two = small;
+  RenderOptions two = twoSamplesAPixel();
   two.adjust.lightPaths = choice.lightPaths;
   two.adjust.firstHitLightSamples = 2;
   const RenderResult plain = renderer.render(two);
@@ -324,7 +333,7 @@ TEST(LightPathDepthPilot, LimitsThemToTheFirstTwoInteractionsWhereLightsHangInTh
   EXPECT_TRUE(c.lightPaths);
   EXPECT_TRUE(c.depthPiloted);
   EXPECT_EQ(c.lightPathDepth, 2u);
-  EXPECT_LT(c.firstInteractions, 0.95 * c.everyInteraction);
+  EXPECT_LT(c.firstInteractions, kPilotDepthMargin * c.everyInteraction);
 }
 
 // The small room whose lamp brightens a patch of its ceiling: the paths reach that patch after
@@ -337,8 +346,11 @@ TEST(LightPathDepthPilot, KeepsThemAtEveryInteractionWhereALampLightsTheCeiling)
   EXPECT_GT(c.firstInteractions, 1.05 * c.everyInteraction);
 }
 
-TEST(LightPathDepthPilot, LimitsThemOnlyWhereCheaper) {
-  EXPECT_TRUE(pilotLimitsLightPathDepth(1.0, 0.99));
+// Only where at least 8% cheaper: the pilot's 16 samples a pixel understate the deeper
+// connections' gain in renders of more.
+TEST(LightPathDepthPilot, LimitsThemOnlyWhereClearlyCheaper) {
+  EXPECT_TRUE(pilotLimitsLightPathDepth(1.0, 0.91));
+  EXPECT_FALSE(pilotLimitsLightPathDepth(1.0, 0.93));
   EXPECT_FALSE(pilotLimitsLightPathDepth(1.0, 1.0));
   EXPECT_FALSE(pilotLimitsLightPathDepth(1.0, 1.2));
   EXPECT_FALSE(pilotLimitsLightPathDepth(std::nan(""), std::nan("")));  // an image without light
@@ -366,13 +378,10 @@ TEST(LightPathDepthPilot, IsSkippedWhereTheSceneSetsItOrPathsAreShort) {
 TEST(LightPathDepthPilot, TheRenderConnectsAsChosen) {
   const SceneData scene = test::loadTestScene(lightsInTheOpen());
   CpuRenderer renderer(CpuEngine::Bvh);
-  renderer.setScene(scene, SceneChange::Structure);
   PilotChoice choice;
-  RenderOptions small;
-  small.samples = {0, 2};
-  const RenderResult chosen = renderWithPilot(renderer, scene, small, &choice);
+  const RenderResult chosen = renderAsPiloted(renderer, scene, &choice);
   ASSERT_EQ(choice.lightPathDepth, 2u);
-  RenderOptions first = small;
+  RenderOptions first = twoSamplesAPixel();
   first.adjust.lightPathDepth = 2;
   const RenderResult plain = renderer.render(first);
   EXPECT_EQ(chosen.image.pixels, plain.image.pixels);

@@ -2,6 +2,8 @@
 #include "backends/render_pilot.h"
 
 #include <algorithm>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include "core/rng.h"
@@ -31,6 +33,20 @@ struct PilotImages {
 double raysPerSample(const PilotImages& p) {
   const double samples = double(p.a.image.width) * p.a.image.height * p.spp;
   return double(p.a.rays.total() + p.b.rays.total()) / (2 * samples);
+}
+
+}  // namespace
+
+namespace {
+
+// Two estimators' relative variance per sample times their costs, each pixel weighed alike by
+// the weights of all four images.
+std::pair<double, double> varianceTimesCost(const PilotImages& x, double costX,
+                                            const PilotImages& y, double costY) {
+  const std::vector<double> weights =
+      relativeErrorWeights({&x.a.image, &x.b.image, &y.a.image, &y.b.image});
+  return {relativeVariance(x.a.image, x.b.image, weights) * costX,
+          relativeVariance(y.a.image, y.b.image, weights) * costY};
 }
 
 }  // namespace
@@ -77,7 +93,7 @@ bool pilotTakesTwoLightSamples(double oneLightSample, double twoLightSamples) {
 }
 
 bool pilotLimitsLightPathDepth(double everyInteraction, double firstInteractions) {
-  return firstInteractions < everyInteraction;
+  return firstInteractions < kPilotDepthMargin * everyInteraction;
 }
 
 PilotChoice choosePilot(Renderer& renderer, const SceneData& scene, const RenderOptions& options) {
@@ -145,11 +161,8 @@ PilotChoice choosePilot(Renderer& renderer, const SceneData& scene, const Render
     const double raysWith = raysPerSample(with), raysWithout = raysPerSample(without);
     const double costWith = raysWith + (kLightPathRayCost - 1) * (raysWith - raysWithout);
     choice.piloted = true;
-    const std::vector<double> weights =
-        relativeErrorWeights({&with.a.image, &with.b.image, &without.a.image, &without.b.image});
-    choice.withLightPaths = relativeVariance(with.a.image, with.b.image, weights) * costWith;
-    choice.withoutLightPaths =
-        relativeVariance(without.a.image, without.b.image, weights) * raysWithout;
+    std::tie(choice.withLightPaths, choice.withoutLightPaths) =
+        varianceTimesCost(with, costWith, without, raysWithout);
     choice.lightPaths = pilotKeepsLightPaths(choice.withLightPaths, choice.withoutLightPaths);
   }
 
@@ -164,10 +177,8 @@ PilotChoice choosePilot(Renderer& renderer, const SceneData& scene, const Render
     used += pilotsLightPaths ? 2 : 4;
     const double raysOne = raysPerSample(one), raysTwo = raysPerSample(two);
     choice.lightSamplesPiloted = true;
-    const std::vector<double> weights =
-        relativeErrorWeights({&one.a.image, &one.b.image, &two.a.image, &two.b.image});
-    choice.oneLightSample = relativeVariance(one.a.image, one.b.image, weights) * raysOne;
-    choice.twoLightSamples = relativeVariance(two.a.image, two.b.image, weights) * raysTwo;
+    std::tie(choice.oneLightSample, choice.twoLightSamples) =
+        varianceTimesCost(one, raysOne, two, raysTwo);
     choice.firstHitLightSamples =
         pilotTakesTwoLightSamples(choice.oneLightSample, choice.twoLightSamples) ? 2 : 1;
   }
@@ -190,10 +201,8 @@ PilotChoice choosePilot(Renderer& renderer, const SceneData& scene, const Render
     // The rays the deeper connections add are theirs, each with its two BSDF evaluations.
     const double costEvery = raysEvery + (kLightPathRayCost - 1) * (raysEvery - raysFirst);
     choice.depthPiloted = true;
-    const std::vector<double> weights =
-        relativeErrorWeights({&every.a.image, &every.b.image, &first.a.image, &first.b.image});
-    choice.everyInteraction = relativeVariance(every.a.image, every.b.image, weights) * costEvery;
-    choice.firstInteractions = relativeVariance(first.a.image, first.b.image, weights) * raysFirst;
+    std::tie(choice.everyInteraction, choice.firstInteractions) =
+        varianceTimesCost(every, costEvery, first, raysFirst);
     if (pilotLimitsLightPathDepth(choice.everyInteraction, choice.firstInteractions))
       choice.lightPathDepth = kPilotLightPathDepth;
   }

@@ -17,7 +17,7 @@
 // subpath adds weigh kLightPathRayCost, for the shading each connection also does), with a
 // margin (kPilotOffMargin) for the connections. With the connections on and
 // `light_path_depth: "auto"` (the default), a third part renders twice with them at every
-// interaction and twice at the first two alone, and keeps the cheaper:
+// interaction and twice at the first two alone, and keeps the cheaper (kPilotDepthMargin):
 // connections deeper in a path pay where a light brightens patches of the walls that paths
 // reach after bounces (a point light beside a wall) and cost a tenth of the rays where they do
 // not (lights hung in the open). What the deeper connections gain depends on what the
@@ -56,6 +56,13 @@ constexpr double kPilotShare = 1.0 / 16.0;
 constexpr uint32_t kPilotDepthSamples = 16;
 // The deepest interaction connected where the depth part limits them.
 constexpr uint32_t kPilotLightPathDepth = 2;
+// They are limited only where the pilot finds that cheaper than this share of every
+// interaction's variance x cost: what the deeper connections gain grows with a pixel's samples
+// (the Cornell box: 1.005, 1.031 and 1.072 of the variance without them at 4, 16 and 64 spp), so
+// a render of more than the pilot's 16 finds the limit a few percent dearer than the pilot does,
+// whose figure also varies by a few percent with its seed (docs/performance.md, *Connections at
+// the first two interactions*).
+constexpr double kPilotDepthMargin = 0.92;
 
 // The cost of a ray a light subpath adds, relative to the others: its connection's two BSDF
 // evaluations and weight come with it.
@@ -114,9 +121,7 @@ PilotChoice choosePilot(Renderer& renderer, const SceneData& scene, const Render
 bool pilotTakesTwoLightSamples(double oneLightSample, double twoLightSamples);
 
 // Whether connections at the first kPilotLightPathDepth interactions alone win: their variance
-// times cost under every interaction's (a NaN keeps every interaction). No margin: the pilot's
-// figure varies by a few percent with its seed, and where the two are that close either does
-// (docs/performance.md, *Connections at the first two interactions*).
+// times cost under kPilotDepthMargin of every interaction's (a NaN keeps every interaction).
 bool pilotLimitsLightPathDepth(double everyInteraction, double firstInteractions);
 
 // Renders the scene last given to `renderer` (it must be `scene`) as choosePilot decides,
