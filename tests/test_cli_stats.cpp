@@ -253,7 +253,7 @@ TEST_F(CliStatsTest, APilotedRenderReportsItsChoiceAndCountsItsTime) {
   EXPECT_GE(s["render_seconds"].get<double>(), lp["pilot_seconds"].get<double>());
   EXPECT_EQ(s["rays"]["camera"], 256 * 256 * 16);  // the image's rays alone
   // Without connections there is no depth of theirs to choose.
-  EXPECT_EQ(lp["depth_setting"], "auto");
+  EXPECT_EQ(lp["depth_setting"], "all");
   EXPECT_EQ(lp["depth"], "all");
   EXPECT_EQ(lp["depth_piloted"], false);
   // Its lone point light is sampled without a pick: one light sample, no pilot for them.

@@ -241,13 +241,17 @@ TEST(LightPaths, ConnectionsAtTheFirstInteractionsAloneRenderTheSameImage) {
   }
 }
 
-// render.light_path_depth: "auto" (the pilot's), "all", or the deepest interaction connected;
+// render.light_path_depth: "all" (the default), "auto" (the pilot's), or the deepest interaction
+// connected;
 // anything else is one error naming the field and what it takes.
 TEST(LightPaths, TheSceneSetsTheirDepth) {
   const auto withDepth = [](const std::string& depth) {
     return R"({"camera": {"width": 4, "height": 4, "spp": 1}, "render": {"light_path_depth": )" +
            depth + R"(}, "lights": [{"position": [0, 1, 0], "intensity": 10}]})";
   };
+  const std::string unset =
+      R"({"camera": {"width": 4, "height": 4, "spp": 1}, "lights": [{"position": [0, 1, 0], "intensity": 10}]})";
+  EXPECT_EQ(test::loadTestScene(unset).settings.lightPathDepth, kEveryInteraction);  // the default
   EXPECT_EQ(test::loadTestScene(withDepth("\"auto\"")).settings.lightPathDepth, 0u);
   EXPECT_EQ(test::loadTestScene(withDepth("\"auto\"")).view().lightPathDepth, kEveryInteraction);
   EXPECT_EQ(test::loadTestScene(withDepth("\"all\"")).view().lightPathDepth, kEveryInteraction);

@@ -328,8 +328,11 @@ std::string lightsInTheOpen(const std::string& render = "", int maxDepth = 5) {
                {"position": [30, 15, 10], "intensity": 4e9}]})";
 }
 
+// The depth of the connections is the pilot's only where the scene asks (its default is "all").
+constexpr const char* kDepthByPilot = R"(, "light_path_depth": "auto")";
+
 TEST(LightPathDepthPilot, LimitsThemToTheFirstTwoInteractionsWhereLightsHangInTheOpen) {
-  const PilotChoice c = choose(test::loadTestScene(lightsInTheOpen()));
+  const PilotChoice c = choose(test::loadTestScene(lightsInTheOpen(kDepthByPilot)));
   EXPECT_TRUE(c.lightPaths);
   EXPECT_TRUE(c.depthPiloted);
   EXPECT_EQ(c.lightPathDepth, 2u);
@@ -339,7 +342,7 @@ TEST(LightPathDepthPilot, LimitsThemToTheFirstTwoInteractionsWhereLightsHangInTh
 // The small room whose lamp brightens a patch of its ceiling: the paths reach that patch after
 // bounces too, and connections there pay at every interaction.
 TEST(LightPathDepthPilot, KeepsThemAtEveryInteractionWhereALampLightsTheCeiling) {
-  const PilotChoice c = choose(test::loadTestScene(lampUnderTheCeiling(256, 32)));
+  const PilotChoice c = choose(test::loadTestScene(lampUnderTheCeiling(256, 32, kDepthByPilot)));
   EXPECT_TRUE(c.lightPaths);
   EXPECT_TRUE(c.depthPiloted);
   EXPECT_EQ(c.lightPathDepth, kEveryInteraction);
@@ -357,6 +360,9 @@ TEST(LightPathDepthPilot, LimitsThemOnlyWhereClearlyCheaper) {
 }
 
 TEST(LightPathDepthPilot, IsSkippedWhereTheSceneSetsItOrPathsAreShort) {
+  const PilotChoice byDefault = choose(test::loadTestScene(lightsInTheOpen()));
+  EXPECT_FALSE(byDefault.depthPiloted);
+  EXPECT_EQ(byDefault.lightPathDepth, kEveryInteraction);
   const PilotChoice set =
       choose(test::loadTestScene(lightsInTheOpen(R"(, "light_path_depth": 3)")));
   EXPECT_FALSE(set.depthPiloted);
@@ -366,17 +372,18 @@ TEST(LightPathDepthPilot, IsSkippedWhereTheSceneSetsItOrPathsAreShort) {
   EXPECT_FALSE(all.depthPiloted);
   EXPECT_EQ(all.lightPathDepth, kEveryInteraction);
   // With three interactions at most, the first two are all that connect anyway.
-  const PilotChoice shallow = choose(test::loadTestScene(lightsInTheOpen("", 3)));
+  const PilotChoice shallow = choose(test::loadTestScene(lightsInTheOpen(kDepthByPilot, 3)));
   EXPECT_TRUE(shallow.piloted);
   EXPECT_FALSE(shallow.depthPiloted);
   // Without connections there is no depth to choose.
-  const PilotChoice off = choose(test::loadTestScene(lightsInTheOpen(R"(, "light_paths": "off")")));
+  const PilotChoice off = choose(test::loadTestScene(
+      lightsInTheOpen(std::string(kDepthByPilot) + R"(, "light_paths": "off")")));
   EXPECT_FALSE(off.depthPiloted);
   EXPECT_EQ(off.rays.total(), 0u);
 }
 
 TEST(LightPathDepthPilot, TheRenderConnectsAsChosen) {
-  const SceneData scene = test::loadTestScene(lightsInTheOpen());
+  const SceneData scene = test::loadTestScene(lightsInTheOpen(kDepthByPilot));
   CpuRenderer renderer(CpuEngine::Bvh);
   PilotChoice choice;
   const RenderResult chosen = renderAsPiloted(renderer, scene, &choice);

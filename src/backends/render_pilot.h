@@ -16,11 +16,11 @@
 // relative to its value as the bench's relMSE weighs it, and cost the rays traced (those a light
 // subpath adds weigh kLightPathRayCost, for the shading each connection also does), with a
 // margin (kPilotOffMargin) for the connections. With the connections on and
-// `light_path_depth: "auto"` (the default), a third part renders twice with them at every
-// interaction and twice at the first two alone, and keeps the cheaper (kPilotDepthMargin):
-// connections deeper in a path pay where a light brightens patches of the walls that paths
-// reach after bounces (a point light beside a wall) and cost a tenth of the rays where they do
-// not (lights hung in the open). What the deeper connections gain depends on what the
+// `light_path_depth: "auto"` (not the default: docs/performance.md), a third part renders twice
+// with them at every interaction and twice at the first two alone, and keeps the cheaper
+// (kPilotDepthMargin): connections deeper in a path pay where a light brightens patches of the
+// walls that paths reach after bounces (a point light beside a wall) and cost a tenth of the rays
+// where they do not (lights hung in the open). What the deeper connections gain depends on what the
 // stratification of a pixel's many samples leaves them (one sample a pixel shows them a third
 // to a half less useful than a 16-spp render finds them), so this part renders fewer pixels
 // with the render's samples per pixel, up to kPilotDepthSamples. Then, with the

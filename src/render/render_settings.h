@@ -36,9 +36,11 @@ struct RenderSettings {
   // kMaxFirstHitLightSamples; 0 ("auto"): a pilot render decides (backends/render_pilot.h).
   uint32_t firstHitLightSamples = 0;
   // The deepest interaction of a camera path that is connected to its sample's light vertex
-  // (render/light_path.h), from 1; kEveryInteraction for all; 0 ("auto"): a pilot render decides
-  // between all and the first two (backends/render_pilot.h).
-  uint32_t lightPathDepth = 0;
+  // (render/light_path.h), from 1; kEveryInteraction for all (the default); 0 ("auto"): a pilot
+  // render decides between all and the first two (backends/render_pilot.h), which is not the
+  // default since the bench's renders of more samples than the pilot's found the limit dearer
+  // than it did (docs/performance.md, *Connections at the first two interactions*).
+  uint32_t lightPathDepth = kEveryInteraction;
   // Next-event estimation at smooth-shaded faces follows their smooth surface near the shadow
   // terminator (render/shadow_ray_origin.h).
   bool smoothTerminator = true;
