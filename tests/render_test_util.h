@@ -192,10 +192,11 @@ constexpr const char* kSmallRoomWalls =
        {"position": [0, -1000, 0], "radius": 1000, "color": 0.6},
        {"position": [0, 1006, 0], "radius": 1000, "color": 0.8})";
 
-// The small room lit by a point light half a unit below its ceiling, whose bright patch there
-// lights the rest (the case light-vertex connections are for), with a ball on its floor; `camera`
-// and `render` are the JSON objects' inner fields.
-inline std::string lampUnderTheCeiling(const std::string& camera, const std::string& render) {
+// The small room of kSmallRoomWalls with a ball on its floor, seen from its open side, lit by
+// `lighting` (a "lights" or "objects" member); `camera` and `render` are the JSON objects' inner
+// fields.
+inline std::string smallRoomLitBy(const std::string& camera, const std::string& render,
+                                  const std::string& lighting) {
   return R"({
     "camera": {"fov": 70, "position": [0, 2, 9], "look_at": [0, 2, 0], )" +
          camera + R"(},
@@ -204,24 +205,26 @@ inline std::string lampUnderTheCeiling(const std::string& camera, const std::str
     "spheres": [)" +
          kSmallRoomWalls + R"(,
                 {"position": [1, 1, -1], "radius": 1, "color": 0.5}],
-    "lights": [{"position": [-3, 5.5, -3], "intensity": 400}]})";
+    )" + lighting +
+         "}";
+}
+
+// The small room lit by a point light half a unit below its ceiling, whose bright patch there
+// lights the rest (the case light-vertex connections are for); `camera` and `render` as for
+// smallRoomLitBy.
+inline std::string lampUnderTheCeiling(const std::string& camera, const std::string& render) {
+  return smallRoomLitBy(camera, render,
+                        R"("lights": [{"position": [-3, 5.5, -3], "intensity": 400}])");
 }
 
 // The same room lit instead by a torus of 3,072 emitting triangles under its ceiling (the bench's
 // lamp room in small), where two light samples at the first interaction pay
-// (render.first_hit_light_samples); `camera` and `render` as for lampUnderTheCeiling.
+// (render.first_hit_light_samples); `camera` and `render` as for smallRoomLitBy.
 inline std::string torusUnderTheCeiling(const std::string& camera, const std::string& render) {
   const std::string torus = writeTorusObj("torus_lamp.obj", 0, 3, -1, 2, 0.5, 64, 24);
-  return R"({
-    "camera": {"fov": 70, "position": [0, 2, 9], "look_at": [0, 2, 0], )" +
-         camera + R"(},
-    "render": {)" +
-         render + R"(},
-    "spheres": [)" +
-         kSmallRoomWalls + R"(,
-                {"position": [1, 1, -1], "radius": 1, "color": 0.5}],
-    "objects": [{"file": ")" +
-         torus + R"(", "material": {"type": "emissive", "radiance": 20}}]})";
+  return smallRoomLitBy(camera, render,
+                        R"("objects": [{"file": ")" + torus +
+                            R"(", "material": {"type": "emissive", "radiance": 20}}])");
 }
 
 // One estimator's renders of an image with two seeds.

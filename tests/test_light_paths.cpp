@@ -217,16 +217,11 @@ TEST(LightPaths, ConnectionsAtTheFirstInteractionsAloneRenderTheSameImage) {
     const auto renderPair = [&](const char* depth) {
       test::SeedPair p;
       for (int seed : {1, 2}) {
-        const SceneData data =
-            test::loadTestScene(R"({
-          "camera": {"fov": 70, "position": [0, 2, 9], "look_at": [0, 2, 0], "width": 48,
-                     "height": 32, "spp": 32},
-          "render": {"max_depth": 5, "light_paths": "on", "light_path_depth": )" +
-                                std::string(depth) + R"(, "seed": )" + std::to_string(seed) + R"(},
-          "spheres": [)" + std::string(test::kSmallRoomWalls) +
-                                R"(,
-                      {"position": [1, 1, -1], "radius": 1, "color": 0.5}],
-          "lights": )" + lamp + "}");
+        const SceneData data = test::loadTestScene(
+            test::smallRoomLitBy(R"("width": 48, "height": 32, "spp": 32)",
+                                 R"("max_depth": 5, "light_paths": "on", "light_path_depth": )" +
+                                     std::string(depth) + ", \"seed\": " + std::to_string(seed),
+                                 R"("lights": )" + lamp));
         (seed == 1 ? p.a : p.b) = renderCpu(data.view(), RenderOptions{});
       }
       return p;

@@ -30,6 +30,12 @@ struct PilotImages {
   uint32_t spp = 1;   // the samples per pixel of each
 };
 
+// The cost of an estimator that traces `more` rays a sample than one without some of its
+// connections (`fewer`): the rays those add weigh kLightPathRayCost, for their shading.
+double costWithConnections(double more, double fewer) {
+  return more + (kLightPathRayCost - 1) * (more - fewer);
+}
+
 double raysPerSample(const PilotImages& p) {
   const double samples = double(p.a.image.width) * p.a.image.height * p.spp;
   return double(p.a.rays.total() + p.b.rays.total()) / (2 * samples);
@@ -159,10 +165,9 @@ PilotChoice choosePilot(Renderer& renderer, const SceneData& scene, const Render
       return choice;
     used += 4;
     const double raysWith = raysPerSample(with), raysWithout = raysPerSample(without);
-    const double costWith = raysWith + (kLightPathRayCost - 1) * (raysWith - raysWithout);
     choice.piloted = true;
     std::tie(choice.withLightPaths, choice.withoutLightPaths) =
-        varianceTimesCost(with, costWith, without, raysWithout);
+        varianceTimesCost(with, costWithConnections(raysWith, raysWithout), without, raysWithout);
     choice.lightPaths = pilotKeepsLightPaths(choice.withLightPaths, choice.withoutLightPaths);
   }
 
@@ -198,11 +203,9 @@ PilotChoice choosePilot(Renderer& renderer, const SceneData& scene, const Render
       return choice;
     used += 4;
     const double raysEvery = raysPerSample(every), raysFirst = raysPerSample(first);
-    // The rays the deeper connections add are theirs, each with its two BSDF evaluations.
-    const double costEvery = raysEvery + (kLightPathRayCost - 1) * (raysEvery - raysFirst);
     choice.depthPiloted = true;
     std::tie(choice.everyInteraction, choice.firstInteractions) =
-        varianceTimesCost(every, costEvery, first, raysFirst);
+        varianceTimesCost(every, costWithConnections(raysEvery, raysFirst), first, raysFirst);
     if (pilotLimitsLightPathDepth(choice.everyInteraction, choice.firstInteractions))
       choice.lightPathDepth = kPilotLightPathDepth;
   }
